@@ -1,0 +1,41 @@
+// The library's entry point: resolves the engine interface and registers our classes at
+// the scene level (they use scene-level types such as Dictionary only through Variants,
+// but their users live in scenes).
+#include "godot/class_db.h"
+#include "godot/haptics_server.h"
+#include "godot/interface.h"
+
+namespace {
+
+void initialize(void * /*p_userdata*/, GDExtensionInitializationLevel p_level) {
+	if (p_level != GDEXTENSION_INITIALIZATION_SCENE) {
+		return;
+	}
+	gd::register_class<haptics::godot::HapticsServer>("HapticsServer", "RefCounted");
+}
+
+void deinitialize(void * /*p_userdata*/, GDExtensionInitializationLevel p_level) {
+	if (p_level != GDEXTENSION_INITIALIZATION_SCENE) {
+		return;
+	}
+	gd::unregister_classes();
+}
+
+} // namespace
+
+extern "C" {
+
+__attribute__((visibility("default"))) GDExtensionBool haptics_library_init(
+		GDExtensionInterfaceGetProcAddress p_get_proc_address, GDExtensionClassLibraryPtr p_library,
+		GDExtensionInitialization *r_initialization) {
+	if (!gd::load_interface(p_get_proc_address, p_library)) {
+		return 0;
+	}
+	r_initialization->minimum_initialization_level = GDEXTENSION_INITIALIZATION_SCENE;
+	r_initialization->userdata = nullptr;
+	r_initialization->initialize = &initialize;
+	r_initialization->deinitialize = &deinitialize;
+	return 1;
+}
+
+} // extern "C"

@@ -1,0 +1,96 @@
+#!/usr/bin/env bash
+# Provisions a project-local Godot 4 engine (plus export templates and Mesa) from Debian's
+# `testing` suite, falling back to `unstable`, using a private apt state so that the
+# system's apt configuration is never read or written. Idempotent: a finished root is
+# marked by a stamp file and reused at no cost.
+#
+# Usage: tools/provision-engine.sh [ROOT]      (default: .engine in the project)
+# Prints the provisioned version on its last line.
+set -euo pipefail
+
+project=$(cd "$(dirname "$0")/.." && pwd)
+engine_dir=${1:-"$project/.engine"}
+root="$engine_dir/root"
+stamp="$engine_dir/.provisioned"
+
+# Godot itself, the export templates and the Mesa stack the engine's GL loader expects to
+# find beside it (mixing the host's older Mesa with the suite's libgl fails under Xvfb).
+packages=(godot godot-template-debug godot-template-release
+  libgl1-mesa-dri libegl-mesa0 libglx-mesa0 libgl1 libegl1 libgles2 libglx0)
+
+if [[ -f "$stamp" && -x "$root/usr/bin/godot" ]]; then
+  cat "$stamp"
+  exit 0
+fi
+
+die() { echo "provision-engine: $*" >&2; exit 1; }
+
+if [[ $(uname -s) != Linux || $(uname -m) != x86_64 ]] || ! command -v apt-get >/dev/null \
+  || ! command -v dpkg >/dev/null; then
+  die "cannot provision Godot here (needs Debian/Ubuntu x86_64 with apt).
+Install Godot 4.5 or newer yourself and run again with GODOT=/path/to/godot."
+fi
+
+keyring=/usr/share/keyrings/debian-archive-keyring.gpg
+[[ -r $keyring ]] || die "missing $keyring: install the 'debian-archive-keyring' package
+(or install Godot 4.5+ yourself and set GODOT)."
+
+# Same Debian mirror the system uses where it names one (active lines only); deb.debian.org
+# otherwise.
+mirror=$(cat /etc/apt/sources.list /etc/apt/sources.list.d/*.list \
+  /etc/apt/sources.list.d/*.sources 2>/dev/null \
+  | sed -nE 's,^(deb[[:space:]]+(\[[^]]*\][[:space:]]+)?|URIs:[[:space:]]+)(https?://[^[:space:]]+/debian)/?([[:space:]].*)?$,\3,p' \
+  | head -n 1 || true)
+mirror=${mirror:-http://deb.debian.org/debian}
+
+start=$(date +%s.%N)
+apt_state="$engine_dir/apt"
+rm -rf "$apt_state" "$root"
+mkdir -p "$apt_state/lists/partial" "$apt_state/cache/archives/partial" "$apt_state/etc" "$root"
+: >"$apt_state/status"
+
+fetch() {
+  local suite=$1
+  echo "deb [signed-by=$keyring] $mirror $suite main" >"$apt_state/etc/sources.list"
+  local opts=(
+    -o "Dir::Etc::SourceList=$apt_state/etc/sources.list"
+    -o "Dir::Etc::SourceParts=/dev/null"
+    -o "Dir::Etc::Preferences=/dev/null"
+    -o "Dir::Etc::PreferencesParts=/dev/null"
+    -o "Dir::State::Lists=$apt_state/lists"
+    -o "Dir::State::status=$apt_state/status"
+    -o "Dir::Cache=$apt_state/cache"
+    -o "APT::Architecture=amd64"
+    -o "APT::Architectures::=amd64"
+    -o "APT::Get::List-Cleanup=0"
+    -o "Debug::NoLocking=1"
+  )
+  # Root would otherwise hand downloads to the _apt user, who cannot write our folders.
+  [[ $(id -u) -eq 0 ]] && opts+=(-o "APT::Sandbox::User=root")
+  echo "provision-engine: resolving ${packages[*]} from Debian '$suite' ($mirror)"
+  apt-get "${opts[@]}" -qq update &&
+    apt-get "${opts[@]}" -qq -y --download-only --no-install-recommends install "${packages[@]}" \
+      >/dev/null
+}
+
+if ! fetch testing; then
+  echo "provision-engine: 'testing' could not resolve the packages; trying 'unstable'" >&2
+  rm -rf "$apt_state/lists" "$apt_state/cache/archives"/*.deb
+  mkdir -p "$apt_state/lists/partial"
+  fetch unstable || die "neither testing nor unstable could provide Godot; install Godot 4.5+
+yourself and set GODOT=/path/to/godot"
+fi
+
+debs=("$apt_state/cache/archives"/*.deb)
+echo "provision-engine: unpacking ${#debs[@]} packages into $root"
+for deb in "${debs[@]}"; do dpkg-deb -x "$deb" "$root"; done
+rm -rf "$apt_state/cache/archives"
+
+[[ -x "$root/usr/bin/godot" ]] || die "the unpacked root has no usr/bin/godot"
+loader="$root/usr/lib64/ld-linux-x86-64.so.2"
+[[ -e $loader ]] || loader="$root/lib64/ld-linux-x86-64.so.2"
+libs="$root/usr/lib/x86_64-linux-gnu:$root/usr/lib/x86_64-linux-gnu/pulseaudio"
+version=$("$loader" --library-path "$libs" "$root/usr/bin/godot" --version 2>/dev/null | tail -n 1)
+[[ $version == 4.* ]] || die "the unpacked engine did not report a 4.x version ('$version')"
+elapsed=$(echo "$(date +%s.%N) - $start" | bc 2>/dev/null || echo "?")
+echo "Godot $version (Debian, ${#debs[@]} packages, ${elapsed}s)" | tee "$stamp"
