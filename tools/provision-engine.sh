@@ -43,7 +43,7 @@ mirror=$(cat /etc/apt/sources.list /etc/apt/sources.list.d/*.list \
   | head -n 1 || true)
 mirror=${mirror:-http://deb.debian.org/debian}
 
-start=$(date +%s.%N)
+start=$(date +%s%N)
 apt_state="$engine_dir/apt"
 rm -rf "$apt_state" "$root"
 mkdir -p "$apt_state/lists/partial" "$apt_state/cache/archives/partial" "$apt_state/etc" "$root"
@@ -92,5 +92,6 @@ loader="$root/usr/lib64/ld-linux-x86-64.so.2"
 libs="$root/usr/lib/x86_64-linux-gnu:$root/usr/lib/x86_64-linux-gnu/pulseaudio"
 version=$("$loader" --library-path "$libs" "$root/usr/bin/godot" --version 2>/dev/null | tail -n 1)
 [[ $version == 4.* ]] || die "the unpacked engine did not report a 4.x version ('$version')"
-elapsed=$(echo "$(date +%s.%N) - $start" | bc 2>/dev/null || echo "?")
+ms=$((($(date +%s%N) - start) / 1000000))
+elapsed="$((ms / 1000)).$(printf %03d $((ms % 1000)))"
 echo "Godot $version (Debian, ${#debs[@]} packages, ${elapsed}s)" | tee "$stamp"

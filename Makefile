@@ -1,0 +1,112 @@
+# Two commands matter: `make play` and `make test`. Everything they need (OS packages, the
+# engine, the extension, the import) is set up on the way, and skipped when already done.
+SHELL := bash
+.SHELLFLAGS := -eu -o pipefail -c
+.DEFAULT_GOAL := play
+
+# Godot writes settings and caches under XDG folders: keep them inside the project.
+export XDG_CONFIG_HOME := $(CURDIR)/.xdg/config
+export XDG_DATA_HOME := $(CURDIR)/.xdg/data
+export XDG_CACHE_HOME := $(CURDIR)/.xdg/cache
+
+GODOT := tools/godot
+BUILD := .build
+CMAKE_GENERATOR := $(shell command -v ninja >/dev/null 2>&1 && echo Ninja || echo "Unix Makefiles")
+CMAKE_CONFIGURE = cmake -S gdextension -G "$(CMAKE_GENERATOR)" -Wno-dev
+JOBS := $(shell nproc 2>/dev/null || echo 2)
+# Extra arguments for the game after `--`, e.g. make play ARGS=--autopilot-seconds=20
+ARGS ?=
+# Extra arguments for the Godot test runner, e.g. make test-godot TEST_ARGS=--filter=binding
+TEST_ARGS ?=
+# Seconds the benchmark runs each loop.
+BENCH_SECONDS ?= 10
+
+.PHONY: play test deps engine build build-release import test-native test-godot lint \
+	export test-export bench sanitize clean distclean
+
+## deps: install missing OS packages (apt-get; sudo when not root)
+deps:
+	@tools/install-deps.sh
+
+## engine: resolve (and if needed provision) Godot 4.5+ and print which one
+engine: deps
+	@$(GODOT) --which
+
+## build: the extension (RelWithDebInfo, loaded by the editor and debug runs) and doctests
+build: engine
+	@$(CMAKE_CONFIGURE) -B $(BUILD)/debug -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+		-DHAPTICS_TARGET=template_debug >/dev/null
+	@cmake --build $(BUILD)/debug -j $(JOBS)
+
+## build-release: the optimised library bundled by release exports
+build-release: engine
+	@$(CMAKE_CONFIGURE) -B $(BUILD)/release -DCMAKE_BUILD_TYPE=Release \
+		-DHAPTICS_TARGET=template_release -DHAPTICS_BUILD_TESTS=OFF -DHAPTICS_BUILD_BENCH=OFF >/dev/null
+	@cmake --build $(BUILD)/release -j $(JOBS) --target haptics
+
+## import: let the engine import the project (the extension is listed first: see
+## DESIGN.md, a fresh import that registers a class otherwise crashes, Godot #111048)
+import: build
+	@mkdir -p .godot
+	@echo "res://gdextension/haptics.gdextension" > .godot/extension_list.cfg
+	@$(GODOT) --headless --path . --import >$(BUILD)/import.log 2>&1 || \
+		{ tail -n 30 $(BUILD)/import.log; echo "import failed (log: $(BUILD)/import.log)"; exit 1; }
+
+## play: the game; headless with an autopilot when there is no display
+play: import
+	@if [[ -n "$${DISPLAY:-}" || -n "$${WAYLAND_DISPLAY:-}" ]]; then \
+		$(GODOT) --path . -- $(ARGS); \
+	else \
+		echo "No display: running the level headless under the autopilot."; \
+		$(GODOT) --headless --path . -- --autopilot $(ARGS); \
+	fi
+
+## test: every suite; any failure fails the target
+test: import test-native test-godot lint test-export
+	@echo "make test: all suites passed"
+
+## test-native: the C++ doctest suite through CTest
+test-native: build
+	@ctest --test-dir $(BUILD)/debug --output-on-failure -j $(JOBS)
+
+## test-godot: the headless GDScript suite with the real extension loaded
+test-godot: import
+	@$(GODOT) --headless --path . res://tests/runner/runner.tscn -- --junit=$(BUILD)/godot-tests.xml $(TEST_ARGS)
+
+## lint: gdlint and gdformat --check over scripts/ and tests/ (gdtoolkit, pinned, in .venv)
+lint:
+	@tools/gdtoolkit.sh gdlint scripts tests
+	@tools/gdtoolkit.sh gdformat --check scripts tests
+
+## export: a Linux x86_64 release build of the game in .export/linux/
+export: import build-release
+	@tools/export.sh
+
+## test-export: export, then start the exported game headless and check it exits cleanly
+test-export: export
+	@tools/test-export.sh
+
+## bench: servo loop vs naive loop, and the force model's tick cost (numbers, not tests)
+bench: deps
+	@$(CMAKE_CONFIGURE) -B $(BUILD)/bench -DCMAKE_BUILD_TYPE=Release -DHAPTICS_BUILD_EXTENSION=OFF \
+		-DHAPTICS_BUILD_TESTS=OFF >/dev/null
+	@cmake --build $(BUILD)/bench -j $(JOBS) --target haptics_bench
+	@mkdir -p .bench
+	@$(BUILD)/bench/haptics_bench --seconds $(BENCH_SECONDS) --json .bench/servo.json
+
+## sanitize: the doctest suite under ThreadSanitizer, then AddressSanitizer+UBSan
+sanitize: deps
+	@for s in thread address; do \
+		$(CMAKE_CONFIGURE) -B $(BUILD)/sanitize-$$s -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+			-DHAPTICS_BUILD_EXTENSION=OFF -DHAPTICS_BUILD_BENCH=OFF -DHAPTICS_SANITIZE=$$s >/dev/null; \
+		cmake --build $(BUILD)/sanitize-$$s -j $(JOBS); \
+		ctest --test-dir $(BUILD)/sanitize-$$s --output-on-failure; \
+	done
+
+## clean: build outputs (keeps the provisioned engine and Python tools)
+clean:
+	rm -rf $(BUILD) gdextension/bin .export .bench
+
+## distclean: everything the project created, including the engine and .godot
+distclean: clean
+	rm -rf .engine .xdg .venv .godot

@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Installs the OS packages the build and tests need, only those missing, with apt-get
+# (through sudo when not root). A no-op costing one dpkg-query when all are present.
+set -euo pipefail
+
+packages=(build-essential cmake ninja-build pkg-config libhidapi-dev libusb-1.0-0-dev
+  doctest-dev python3 python3-venv debian-archive-keyring ca-certificates)
+
+if ! command -v dpkg-query >/dev/null || ! command -v apt-get >/dev/null; then
+  echo "install-deps: no apt here; install yourself: a C++20 compiler, CMake 3.22+, Ninja," \
+    "pkg-config, hidapi, libusb-1.0, doctest, Python 3 with venv; and Godot 4.5+ (GODOT=...)." >&2
+  exit 0
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+  status=$(dpkg-query -W -f='${db:Status-Status}' "$p" 2>/dev/null || true)
+  [[ $status == installed ]] || missing+=("$p")
+done
+if ((${#missing[@]} == 0)); then
+  exit 0
+fi
+
+sudo=()
+if [[ $(id -u) -ne 0 ]]; then
+  command -v sudo >/dev/null || {
+    echo "install-deps: need root or sudo to install: ${missing[*]}" >&2
+    exit 1
+  }
+  sudo=(sudo)
+fi
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+"${sudo[@]}" apt-get update -qq
+"${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
