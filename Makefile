@@ -71,7 +71,8 @@ test-native: build
 
 ## test-godot: the headless GDScript suite with the real extension loaded
 test-godot: import
-	@$(GODOT) --headless --path . res://tests/runner/runner.tscn -- --junit=$(BUILD)/godot-tests.xml $(TEST_ARGS)
+	@$(GODOT) --headless --path . res://tests/runner/runner.tscn -- --warnings-as-errors \
+		--junit=$(BUILD)/godot-tests.xml $(TEST_ARGS)
 
 ## lint: gdlint and gdformat --check over scripts/ and tests/ (gdtoolkit, pinned, in .venv)
 lint:

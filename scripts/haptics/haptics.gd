@@ -15,11 +15,13 @@ var server: RefCounted = null
 
 func _init() -> void:
 	if ClassDB.class_exists(SERVER_CLASS):
-		server = ClassDB.instantiate(SERVER_CLASS) as RefCounted
+		server = ClassDB.instantiate(SERVER_CLASS)
 	else:
 		push_warning(
-			"Haptics extension not loaded: playing without force feedback. "
-			+ "Build it with 'make build' (see README)."
+			(
+				"Haptics extension not loaded: playing without force feedback. "
+				+ "Build it with 'make build' (see README)."
+			)
 		)
 
 
@@ -34,8 +36,8 @@ func list_devices() -> Array[Dictionary]:
 	var out: Array[Dictionary] = []
 	if server == null:
 		return out
-	for entry: Variant in server.call(&"list_devices"):
-		out.append(entry as Dictionary)
+	var entries: Array = server.call(&"list_devices")
+	out.assign(entries)
 	return out
 
 

@@ -1,3 +1,4 @@
+class_name TestRoom
 extends Node2D
 ## A closed room with a slanted block: the smallest real level, used by the foundation
 ## tests and by [code]make play[/code] until the full level exists.

@@ -26,8 +26,12 @@ func _ready() -> void:
 			autopilot_seconds = arg.get_slice("=", 1).to_float()
 	if _autopilot:
 		_player.use_keyboard = false
-		print("Autopilot on (no display): %s; %d device(s) found" % [
-			Haptics.get_version(), Haptics.list_devices().size()])
+		print(
+			(
+				"Autopilot on (no display): %s; %d device(s) found"
+				% [Haptics.get_version(), Haptics.list_devices().size()]
+			)
+		)
 
 
 func _physics_process(delta: float) -> void:
@@ -46,6 +50,14 @@ func _physics_process(delta: float) -> void:
 
 func _status_line() -> String:
 	var iv: Vector2 = _player.input_vector
-	return "t=%4.1fs input=(%+.2f, %+.2f) pos=(%4.0f, %4.0f) contacts=%d" % [
-		_elapsed, iv.x, iv.y, _player.position.x, _player.position.y,
-		_player.get_slide_collision_count()]
+	return (
+		"t=%4.1fs input=(%+.2f, %+.2f) pos=(%4.0f, %4.0f) contacts=%d"
+		% [
+			_elapsed,
+			iv.x,
+			iv.y,
+			_player.position.x,
+			_player.position.y,
+			_player.get_slide_collision_count()
+		]
+	)

@@ -1,0 +1,105 @@
+// Tick-cost micro-benchmarks: how long the pieces of one servo tick take, without the
+// thread, the sleep or the scheduler in the way.
+
+#include "bench_report.h"
+
+#include "core/force_model.h"
+#include "core/haptics_engine.h"
+#include "core/smoothing_filter.h"
+#include "core/transients.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace haptics::bench {
+
+namespace {
+
+constexpr int BATCHES = 2000;
+constexpr int PER_BATCH = 200;
+
+volatile double g_sink = 0.0; // Keeps results alive so the optimiser cannot drop the work.
+
+template <typename Work>
+MicroResult measure(const char *p_name, Work p_work) {
+	std::vector<double> per_call_ns;
+	per_call_ns.reserve(BATCHES);
+	for (int b = 0; b < BATCHES; ++b) {
+		const auto begin = std::chrono::steady_clock::now();
+		for (int n = 0; n < PER_BATCH; ++n) {
+			p_work(n);
+		}
+		const auto end = std::chrono::steady_clock::now();
+		per_call_ns.push_back(std::chrono::duration<double, std::nano>(end - begin).count() / PER_BATCH);
+	}
+	std::sort(per_call_ns.begin(), per_call_ns.end());
+	MicroResult result;
+	result.name = p_name;
+	result.median_ns = per_call_ns[per_call_ns.size() / 2];
+	result.p99_ns = per_call_ns[per_call_ns.size() * 99 / 100];
+	return result;
+}
+
+// A busy frame: a corner (two contacts, one with its own material), a crate on the head,
+// water.
+Frame busy_frame() {
+	Frame frame;
+	frame.add_contact({ 0.0, 1.0, 0.0 });
+	frame.add_contact({ -1.0, 0.0, 0.0 }, ContactMaterial{ 3.0, 0.5 });
+	frame.add_contact({ -0.7, 0.7, 0.0 });
+	frame.add_resting({ 0.0, -1.0, 0.0 }, 0.8);
+	frame.water = WaterState{ true, 0.4, 0.3 };
+	frame.player_velocity = { 1.2, -0.3, 0.0 };
+	return frame;
+}
+
+} // namespace
+
+std::vector<MicroResult> run_micro_benchmarks() {
+	std::vector<MicroResult> results;
+	const Frame frame = busy_frame();
+	const ForceModelConfig config;
+
+	results.push_back(measure("force model (input vector + 5 components)", [&](int p_n) {
+		const Vec3 position{ 0.03 + 1e-6 * p_n, -0.02, 0.01 };
+		const Vec3 i = input_vector(position, 0.1, config.dead_zone);
+		g_sink = g_sink + compute_forces(frame, i, config).continuous.x;
+	}));
+
+	SmoothingFilter filter;
+	filter.configure(SmoothingConfig{}, 0.001);
+	results.push_back(measure("smoothing filter (3 axes)", [&](int p_n) {
+		g_sink = g_sink + filter.process({ 1.0 + 1e-6 * p_n, 0.5, 0.0 }).x;
+	}));
+
+	TransientBank bank;
+	results.push_back(measure("transients (3 active)", [&](int p_n) {
+		if (bank.active_count() < 3) {
+			ImpactEvent event;
+			event.direction = { 0.0, 1.0, 0.0 };
+			event.speed = 3.0 + 1e-3 * p_n;
+			bank.add(event, ImpactMaterial{}, 3.0);
+		}
+		g_sink = g_sink + bank.advance(0.001).y;
+	}));
+
+	HapticsEngine engine;
+	engine.open_simulated_device();
+	engine.set_hand_target({ 0.03, -0.02, 0.0 });
+	engine.submit_frame(frame);
+	results.push_back(measure("full tick, manual step (device, model, filter, safety, publish)", [&](int p_n) {
+		if (p_n % 20 == 0) {
+			engine.submit_frame(frame); // 50 Hz at 1 kHz: keeps the watchdog quiet.
+		}
+		engine.step(0.001);
+		if (p_n % 100 == 0) {
+			float telemetry[100 * 32];
+			engine.drain_telemetry(telemetry, 100);
+		}
+	}));
+	g_sink = g_sink + engine.forces().total.x;
+	return results;
+}
+
+} // namespace haptics::bench

@@ -1,0 +1,144 @@
+// haptics_bench: the servo loop under load, against a naive baseline, in one run.
+//
+//   haptics_bench [--duration S] [--json PATH] [--rate HZ]
+//   (positional forms also work: haptics_bench 10 .bench/servo.json)
+//
+// For each loop (absolute deadlines, then sleep_for(period) with no deadline tracking) the
+// servo runs for S seconds (default 10) on the simulated device while a 50 Hz producer
+// thread, standing in for the game, submits frames, pushes an impact every 100 ms, moves the
+// hand and drains telemetry. Prints a side-by-side table with ratios and the targets, then
+// the tick-cost micro-benchmarks, and writes everything as JSON (default .bench/servo.json).
+// Reports; never asserts: timing depends on the machine.
+
+#include "bench_report.h"
+
+#include "core/haptics_engine.h"
+#include "core/realtime.h"
+#include "core/telemetry.h"
+
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <thread>
+#include <vector>
+
+using namespace haptics;
+using namespace haptics::bench;
+
+namespace {
+
+struct Options {
+	double duration_s = 10.0;
+	double rate_hz = 1000.0;
+	std::string json_path = ".bench/servo.json";
+};
+
+bool parse(int p_argc, char **p_argv, Options &r_options) {
+	bool have_positional_duration = false;
+	for (int a = 1; a < p_argc; ++a) {
+		const std::string arg = p_argv[a];
+		const bool has_value = a + 1 < p_argc;
+		if (arg == "--duration" && has_value) {
+			r_options.duration_s = std::atof(p_argv[++a]);
+		} else if (arg == "--rate" && has_value) {
+			r_options.rate_hz = std::atof(p_argv[++a]);
+		} else if (arg == "--json" && has_value) {
+			r_options.json_path = p_argv[++a];
+		} else if (arg == "--help" || arg == "-h") {
+			return false;
+		} else if (!have_positional_duration && std::strtod(arg.c_str(), nullptr) > 0.0) {
+			r_options.duration_s = std::atof(arg.c_str());
+			have_positional_duration = true;
+		} else {
+			r_options.json_path = arg;
+		}
+	}
+	return r_options.duration_s > 0.0 && std::isfinite(r_options.duration_s);
+}
+
+// The game's side for one run: 50 Hz on absolute deadlines, like a physics tick.
+void produce(HapticsEngine &r_engine, double p_duration_s, LoopResult &r_result) {
+	constexpr int64_t FRAME_NS = 20'000'000;
+	std::vector<float> telemetry(512 * TELEMETRY_STRIDE);
+	const int64_t begin = monotonic_now_ns();
+	const int64_t end = begin + static_cast<int64_t>(p_duration_s * 1e9);
+	int64_t deadline = begin;
+	for (uint64_t frame_index = 0; deadline < end; ++frame_index) {
+		const double phase = static_cast<double>(frame_index) * 0.05;
+		Frame frame;
+		frame.sequence = frame_index;
+		frame.timestamp_s = static_cast<double>(deadline - begin) * 1e-9;
+		frame.add_contact({ 0.0, 1.0, 0.0 });
+		frame.add_contact({ -std::cos(phase), 0.3, 0.0 }, ContactMaterial{ 2.5, 0.8 });
+		frame.add_resting({ 0.0, -1.0, 0.0 }, 0.6);
+		frame.water = WaterState{ (frame_index / 50) % 2 == 1, 0.4, 0.3 };
+		frame.player_velocity = { std::sin(phase), -0.2, 0.0 };
+		r_engine.submit_frame(frame);
+		++r_result.frames_submitted;
+		r_engine.set_hand_target({ 0.06 * std::sin(phase * 0.7), -0.03 + 0.02 * std::cos(phase), 0.0 });
+		if (frame_index % 5 == 0) {
+			ImpactEvent event;
+			event.direction = { 0.0, 1.0, 0.0 };
+			event.speed = 2.0 + std::sin(phase);
+			r_engine.push_impact(event);
+			++r_result.impacts_pushed;
+		}
+		r_result.telemetry_drained += r_engine.drain_telemetry(telemetry.data(), 512);
+		deadline += FRAME_NS;
+		sleep_until_ns(deadline);
+	}
+}
+
+LoopResult run_loop(const char *p_name, LoopScheduling p_scheduling, const Options &p_options) {
+	LoopResult result;
+	result.name = p_name;
+	result.duration_s = p_options.duration_s;
+	HapticsEngine engine;
+	if (!engine.open_simulated_device()) {
+		std::fprintf(stderr, "cannot open the simulated device\n");
+		std::exit(2);
+	}
+	ServoOptions servo;
+	servo.rate_hz = p_options.rate_hz;
+	servo.scheduling = p_scheduling;
+	const Status started = engine.start(servo);
+	if (!started) {
+		std::fprintf(stderr, "cannot start the servo: %s\n", started.message());
+		std::exit(2);
+	}
+	// The producer is the only thread calling the engine while the servo runs.
+	std::thread producer([&] { produce(engine, p_options.duration_s, result); });
+	producer.join();
+	engine.stop();
+	result.stats = engine.stats();
+	return result;
+}
+
+} // namespace
+
+int main(int p_argc, char **p_argv) {
+	Options options;
+	if (!parse(p_argc, p_argv, options)) {
+		std::fprintf(stderr, "usage: %s [--duration S] [--json PATH] [--rate HZ]\n", p_argv[0]);
+		return 1;
+	}
+	if (!validate_rate(options.rate_hz)) {
+		std::fprintf(stderr, "%s\n", validate_rate(options.rate_hz).message());
+		return 1;
+	}
+	std::printf("haptics_bench: %.1f s per loop at %.0f Hz, %u hardware threads\n", options.duration_s, options.rate_hz,
+			std::thread::hardware_concurrency());
+	std::fflush(stdout);
+	const LoopResult deadline = run_loop("deadline", LoopScheduling::DEADLINE, options);
+	const LoopResult naive = run_loop("naive", LoopScheduling::NAIVE_SLEEP, options);
+	const std::vector<MicroResult> micro = run_micro_benchmarks();
+	print_report(deadline, naive, micro);
+	if (!write_json(options.json_path, deadline, naive, micro)) {
+		return 1;
+	}
+	std::printf("\nwrote %s\n", options.json_path.c_str());
+	return 0;
+}

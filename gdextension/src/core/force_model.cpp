@@ -1,0 +1,85 @@
+#include "core/force_model.h"
+
+#include "core/coordinates.h"
+
+#include <algorithm>
+
+namespace haptics {
+
+namespace {
+
+// Contact normals summing to less than this are treated as cancelling out: the combined
+// direction would be numerical noise.
+constexpr double NORMAL_SUM_EPSILON = 1e-6;
+
+} // namespace
+
+Vec3 input_vector(const Vec3 &p_position_m, double p_radius_m, double p_dead_zone) {
+	const Vec3 raw = p_position_m / p_radius_m;
+	const double magnitude = length(raw);
+	if (!(magnitude > p_dead_zone) || magnitude <= 0.0) {
+		return {};
+	}
+	const double clamped = std::min(magnitude, 1.0);
+	const double rescaled = (clamped - p_dead_zone) / (1.0 - p_dead_zone);
+	return raw * (rescaled / magnitude);
+}
+
+ContactResolution resolve_contacts(const Frame &p_frame, const ContactMaterial &p_default_material) {
+	ContactResolution result;
+	Vec3 sum;
+	for (uint32_t c = 0; c < p_frame.contact_count; ++c) {
+		sum += normalized_or_zero(p_frame.contacts[c].normal);
+	}
+	const double sum_length = length(sum);
+	if (sum_length < NORMAL_SUM_EPSILON) {
+		return result;
+	}
+	result.active = true;
+	result.normal = sum / sum_length;
+
+	double weight_total = 0.0;
+	for (uint32_t c = 0; c < p_frame.contact_count; ++c) {
+		const Contact &contact = p_frame.contacts[c];
+		const double share = std::max(0.0, dot(normalized_or_zero(contact.normal), result.normal));
+		const ContactMaterial &material = contact.use_default_material ? p_default_material : contact.material;
+		result.stiffness += share * material.stiffness;
+		result.damping += share * material.damping;
+		weight_total += share;
+	}
+	// weight_total >= sum_length > 0: the shares sum to at least n.(sum of normals).
+	result.stiffness /= weight_total;
+	result.damping /= weight_total;
+	return result;
+}
+
+ForceComponents compute_forces(const Frame &p_frame, const Vec3 &p_input, const ForceModelConfig &p_config) {
+	ForceComponents forces;
+
+	const ContactResolution contact = resolve_contacts(p_frame, p_config.default_contact);
+	if (contact.active) {
+		const Vec3 &n = contact.normal;
+		const Vec3 projection = n * (dot(p_input, n) / length_squared(n));
+		const Vec3 rejection = p_input - projection;
+		forces.normal = projection * -contact.stiffness;
+		forces.friction = rejection * -contact.damping;
+	}
+
+	for (uint32_t j = 0; j < p_frame.resting_count; ++j) {
+		const RestingObject &object = p_frame.resting[j];
+		const double n_dot_d = dot(normalized_or_zero(object.normal), DEVICE_DOWN);
+		if (n_dot_d > 0.0) {
+			forces.weight += DEVICE_DOWN * (object.mass * p_config.gravity * n_dot_d);
+		}
+	}
+
+	if (p_frame.water.inside) {
+		forces.drag = p_frame.player_velocity * -p_frame.water.drag;
+		forces.inertia = DEVICE_DOWN * p_frame.water.inertia;
+	}
+
+	forces.continuous = forces.normal + forces.friction + forces.weight + forces.drag + forces.inertia;
+	return forces;
+}
+
+} // namespace haptics

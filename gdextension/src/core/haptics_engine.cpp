@@ -1,0 +1,334 @@
+#include "core/haptics_engine.h"
+
+#include <cstring>
+#include <utility>
+
+namespace haptics {
+
+namespace {
+
+constexpr char UNPLUGGED_MESSAGE[] = "device '%s' disconnected: rendering stopped (zero force); reopen it to resume";
+constexpr char FAILED_MESSAGE[] = "device '%s' I/O failed: rendering stopped; reopen it to resume";
+
+Status device_io_status(DeviceIo p_io, const char *p_name) {
+	switch (p_io) {
+		case DeviceIo::OK:
+			return Status::success();
+		case DeviceIo::DISCONNECTED:
+			return Status::error(StatusCode::DEVICE_DISCONNECTED, UNPLUGGED_MESSAGE, p_name);
+		case DeviceIo::FAILED:
+			break;
+	}
+	return Status::error(StatusCode::DEVICE_ERROR, FAILED_MESSAGE, p_name);
+}
+
+} // namespace
+
+struct HapticsEngine::Impl {
+	// Declaration order is destruction order reversed: the loop (and its thread) goes
+	// first, before the pipeline, channels and device it uses.
+	ServoChannels channels;
+	ServoPipeline pipeline{ channels };
+	std::unique_ptr<HapticDevice> device;
+	SimulatedDevice *simulated = nullptr; // View of `device` when it is simulated.
+	ServoLoop loop{ pipeline, channels };
+
+	RenderConfig config;
+	bool manual_session = false;
+	DeviceIo manual_fault = DeviceIo::OK;
+	uint64_t frames_rejected = 0;
+
+	Status publish_config(const RenderConfig &p_config) {
+		const Status valid = validate_render_config(p_config);
+		if (valid) {
+			config = p_config;
+			channels.config.store(config);
+		}
+		return valid;
+	}
+
+	void end_session() {
+		loop.stop();
+		if (manual_session && device) {
+			device->write_force(Vec3{});
+		}
+		manual_session = false;
+		// Stale impacts must not fire in a burst when rendering resumes.
+		channels.impacts.clear();
+	}
+};
+
+HapticsEngine::HapticsEngine() :
+		impl_(std::make_unique<Impl>()) {
+	impl_->channels.config.store(impl_->config);
+}
+
+HapticsEngine::~HapticsEngine() {
+	close_device();
+}
+
+Status HapticsEngine::open_device(std::unique_ptr<HapticDevice> p_device) {
+	if (!p_device) {
+		return Status::error(StatusCode::INVALID_ARGUMENT, "device: null");
+	}
+	// The new device is opened before the current one is touched, so a failure changes
+	// nothing; only then does the servo stop (zero force, join) and the old device close.
+	const Status opened = p_device->open();
+	if (!opened) {
+		return opened;
+	}
+	const DeviceLimits limits = p_device->limits();
+	if (!(limits.max_force_n > 0.0) || !(limits.workspace_radius_m > 0.0)) {
+		p_device->close();
+		return Status::error(StatusCode::DEVICE_ERROR, "device '%s' reports invalid limits (max force %g N, radius %g m)",
+				p_device->name(), limits.max_force_n, limits.workspace_radius_m);
+	}
+	p_device->write_force(Vec3{});
+	impl_->end_session();
+	if (impl_->device) {
+		impl_->device->close();
+	}
+	impl_->simulated = dynamic_cast<SimulatedDevice *>(p_device.get());
+	impl_->device = std::move(p_device);
+	impl_->manual_fault = DeviceIo::OK;
+	return Status::success();
+}
+
+Status HapticsEngine::open_simulated_device(const SimulatedDeviceConfig &p_config) {
+	const Status valid = validate_simulated_device_config(p_config);
+	if (!valid) {
+		return valid;
+	}
+	return open_device(std::make_unique<SimulatedDevice>(p_config));
+}
+
+void HapticsEngine::close_device() {
+	impl_->end_session();
+	if (impl_->device) {
+		impl_->device->close();
+		impl_->device.reset();
+	}
+	impl_->simulated = nullptr;
+}
+
+bool HapticsEngine::has_device() const {
+	return impl_->device != nullptr;
+}
+
+const char *HapticsEngine::device_name() const {
+	return impl_->device ? impl_->device->name() : "";
+}
+
+DeviceLimits HapticsEngine::device_limits() const {
+	return impl_->device ? impl_->device->limits() : DeviceLimits{};
+}
+
+SimulatedDevice *HapticsEngine::simulated_device() {
+	return impl_->simulated;
+}
+
+Status HapticsEngine::calibrate() {
+	if (!impl_->device) {
+		return Status::error(StatusCode::NO_DEVICE, "calibrate: no device open");
+	}
+	if (is_running()) {
+		return Status::error(StatusCode::INVALID_STATE, "calibrate: stop rendering first");
+	}
+	return impl_->device->calibrate();
+}
+
+Status HapticsEngine::start(double p_rate_hz) {
+	ServoOptions options;
+	options.rate_hz = p_rate_hz;
+	return start(options);
+}
+
+Status HapticsEngine::start(const ServoOptions &p_options) {
+	const Status rate = validate_rate(p_options.rate_hz);
+	if (!rate) {
+		return rate;
+	}
+	if (!impl_->device) {
+		return Status::error(StatusCode::NO_DEVICE, "start: no device open");
+	}
+	if (is_running()) {
+		return Status::error(StatusCode::INVALID_STATE, "start: already running at %g Hz; stop first",
+				impl_->loop.options().rate_hz);
+	}
+	impl_->end_session();
+	impl_->manual_fault = DeviceIo::OK;
+	return impl_->loop.start(impl_->device.get(), p_options);
+}
+
+void HapticsEngine::stop() {
+	impl_->end_session();
+}
+
+bool HapticsEngine::is_running() const {
+	return impl_->loop.state() == ServoState::RUNNING;
+}
+
+Status HapticsEngine::step(double p_dt_s) {
+	const Status dt = validate_step_dt(p_dt_s);
+	if (!dt) {
+		return dt;
+	}
+	if (!impl_->device) {
+		return Status::error(StatusCode::NO_DEVICE, "step: no device open");
+	}
+	if (is_running()) {
+		return Status::error(StatusCode::INVALID_STATE, "step: the servo thread is running; stop it first");
+	}
+	impl_->loop.stop(); // Joins a thread that ended on a fault; no-op otherwise.
+	if (!impl_->manual_session) {
+		impl_->pipeline.begin_session(impl_->device.get(), p_dt_s);
+		impl_->channels.stats.reset(1.0 / p_dt_s);
+		impl_->manual_session = true;
+		impl_->manual_fault = DeviceIo::OK;
+	}
+	const int64_t begin_ns = monotonic_now_ns();
+	const DeviceIo io = impl_->pipeline.tick(p_dt_s);
+	const int64_t end_ns = monotonic_now_ns();
+	impl_->channels.stats.record_tick(impl_->pipeline.time_s(), impl_->pipeline.ticks() > 1 ? p_dt_s : -1.0, 0.0,
+			static_cast<double>(end_ns - begin_ns) * 1e-9);
+	if (io != DeviceIo::OK) {
+		impl_->device->write_force(Vec3{});
+		impl_->manual_session = false;
+		impl_->manual_fault = io;
+		return device_io_status(io, impl_->device->name());
+	}
+	return Status::success();
+}
+
+Status HapticsEngine::servo_status() const {
+	const char *name = device_name();
+	if (impl_->loop.state() == ServoState::FAULTED) {
+		return device_io_status(impl_->loop.fault(), name);
+	}
+	return device_io_status(impl_->manual_fault, name);
+}
+
+Status HapticsEngine::submit_frame(const Frame &p_frame) {
+	const Status valid = validate_frame(p_frame);
+	if (!valid) {
+		++impl_->frames_rejected;
+		return valid;
+	}
+	impl_->channels.frame.store(p_frame);
+	return Status::success();
+}
+
+Status HapticsEngine::push_impact(const ImpactEvent &p_event) {
+	const Status valid = validate_impact(p_event);
+	if (!valid) {
+		return valid;
+	}
+	if (!impl_->channels.impacts.try_push(p_event)) {
+		impl_->channels.queue_drops.fetch_add(1, std::memory_order_relaxed);
+	}
+	return Status::success();
+}
+
+Status HapticsEngine::set_hand_target(const Vec3 &p_target_m) {
+	if (!impl_->device) {
+		return Status::error(StatusCode::NO_DEVICE, "set_hand_target: no device open");
+	}
+	return impl_->device->set_hand_target(p_target_m);
+}
+
+Vec3 HapticsEngine::input_vector() const {
+	return impl_->channels.output.load().input;
+}
+
+Vec3 HapticsEngine::device_position() const {
+	return impl_->channels.output.load().position_m;
+}
+
+ForceComponents HapticsEngine::forces() const {
+	return impl_->channels.output.load().forces;
+}
+
+ServoOutput HapticsEngine::output() const {
+	return impl_->channels.output.load();
+}
+
+ServoStats HapticsEngine::stats() const {
+	ServoStats stats;
+	impl_->channels.stats.fill(stats);
+	const ServoOutput output = impl_->channels.output.load();
+	const RealtimeResult scheduler = impl_->loop.scheduler();
+	const bool threaded = impl_->loop.state() != ServoState::STOPPED || !impl_->manual_session;
+	stats.running = is_running();
+	stats.scheduler = threaded ? scheduler.kind : SchedulerKind::MANUAL;
+	stats.realtime_priority = threaded ? scheduler.priority : 0;
+	stats.frames_received = output.frames_received;
+	stats.frames_rejected = impl_->frames_rejected;
+	stats.frame_age_s = output.frame_age_s;
+	stats.watchdog_tripped = (output.flags & TELEMETRY_FLAG_WATCHDOG) != 0;
+	stats.transient_drops = output.bank_drops + impl_->channels.queue_drops.load(std::memory_order_relaxed);
+	stats.telemetry_drops = output.telemetry_drops;
+	stats.clamped_ticks = output.clamped_ticks;
+	stats.non_finite_ticks = output.non_finite_ticks;
+	return stats;
+}
+
+size_t HapticsEngine::drain_telemetry(float *r_out, size_t p_max_samples) {
+	if (!r_out) {
+		return 0;
+	}
+	size_t count = 0;
+	TelemetrySample sample;
+	while (count < p_max_samples && impl_->channels.telemetry.try_pop(sample)) {
+		std::memcpy(r_out + count * TELEMETRY_STRIDE, sample.values, sizeof(sample.values));
+		++count;
+	}
+	return count;
+}
+
+Status HapticsEngine::configure_force_model(const ForceModelConfig &p_config) {
+	RenderConfig config = impl_->config;
+	config.force_model = p_config;
+	return impl_->publish_config(config);
+}
+
+Status HapticsEngine::configure_smoothing(const SmoothingConfig &p_config) {
+	RenderConfig config = impl_->config;
+	config.smoothing = p_config;
+	return impl_->publish_config(config);
+}
+
+Status HapticsEngine::configure_safety(const SafetyConfig &p_config) {
+	RenderConfig config = impl_->config;
+	config.safety = p_config;
+	return impl_->publish_config(config);
+}
+
+Status HapticsEngine::configure_telemetry(const TelemetryConfig &p_config) {
+	RenderConfig config = impl_->config;
+	config.telemetry = p_config;
+	return impl_->publish_config(config);
+}
+
+Status HapticsEngine::set_default_contact_material(const ContactMaterial &p_material) {
+	RenderConfig config = impl_->config;
+	config.force_model.default_contact = p_material;
+	return impl_->publish_config(config);
+}
+
+Status HapticsEngine::set_default_impact_material(const ImpactMaterial &p_material) {
+	RenderConfig config = impl_->config;
+	config.force_model.default_impact = p_material;
+	return impl_->publish_config(config);
+}
+
+Status HapticsEngine::set_workspace_radius(double p_radius_m) {
+	RenderConfig config = impl_->config;
+	config.force_model.input_radius_m = p_radius_m;
+	return impl_->publish_config(config);
+}
+
+const RenderConfig &HapticsEngine::config() const {
+	return impl_->config;
+}
+
+} // namespace haptics

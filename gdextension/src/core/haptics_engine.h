@@ -1,0 +1,114 @@
+#pragma once
+
+// The facade the Godot binding wraps: one object owning a device, the servo thread and the
+// lock-free channels between them. Engine-free and exception-free; every fallible call
+// returns a Status whose message names the offending parameter, and a rejected call leaves
+// the previous state (frame, configuration, device) untouched.
+//
+// Threading: call every method from ONE thread (the game's main thread). The servo thread is
+// internal; nothing here blocks on it except stop()/close_device() (which join it).
+//
+// Units and spaces: device space (coordinates.h: x right, y up, z toward the user), metres,
+// newtons, seconds. The binding converts game vectors with game_to_device_direction() and
+// game_to_device_scaled().
+//
+// Typical use:
+//   HapticsEngine engine;
+//   engine.open_simulated_device();
+//   engine.start(1000.0);                 // or engine.step(0.001) in tests
+//   each physics tick:  engine.submit_frame(frame);  engine.push_impact(...) on collisions
+//   each frame:         engine.input_vector(), engine.forces(), engine.drain_telemetry(...)
+//   engine.stop();  engine.close_device();  // also done by the destructor
+
+#include "core/config.h"
+#include "core/force_model.h"
+#include "core/frame.h"
+#include "core/servo_loop.h"
+#include "core/servo_pipeline.h"
+#include "core/servo_stats.h"
+#include "core/status.h"
+#include "core/validation.h"
+#include "core/vec3.h"
+#include "devices/device.h"
+#include "devices/simulated_device.h"
+
+#include <cstddef>
+#include <memory>
+
+namespace haptics {
+
+class HapticsEngine {
+public:
+	HapticsEngine();
+	~HapticsEngine(); // stop() then close_device(): zero force is written before the join.
+
+	HapticsEngine(const HapticsEngine &) = delete;
+	HapticsEngine &operator=(const HapticsEngine &) = delete;
+
+	// --- Devices -------------------------------------------------------------------------
+	// Opens p_device and makes it current. If it fails to open, the current device (if
+	// any) stays open and rendering is untouched; if it opens, rendering is stopped and the
+	// previous device closed first. Every (re)open starts with the start-up ramp.
+	Status open_device(std::unique_ptr<HapticDevice> p_device);
+	Status open_simulated_device(const SimulatedDeviceConfig &p_config = {});
+	// Stops rendering (zero force, join) and closes the device. Idempotent.
+	void close_device();
+	bool has_device() const;
+	const char *device_name() const; // "" without a device.
+	DeviceLimits device_limits() const; // Zeros without a device.
+	// The current device if it is the simulated one (to unplug it in tests), else nullptr.
+	SimulatedDevice *simulated_device();
+	Status calibrate(); // Not while rendering.
+
+	// --- Rendering -----------------------------------------------------------------------
+	// Starts the servo thread at p_rate_hz in [250, 4000] (default 1000).
+	Status start(double p_rate_hz = DEFAULT_RATE_HZ);
+	Status start(const ServoOptions &p_options);
+	// Zero force is written by the servo thread before it exits, then it is joined.
+	// Idempotent; also ends a manual-step session.
+	void stop();
+	bool is_running() const;
+	// Manual mode: one tick of p_dt_s in [1/4000, 1/250] s on the calling thread; no
+	// thread, exactly deterministic. The first step after open/start/stop begins a session
+	// (start-up ramp from zero). Not while the thread runs.
+	Status step(double p_dt_s);
+	// OK, or why rendering stopped on its own (e.g. the device was unplugged).
+	Status servo_status() const;
+
+	// --- Game -> servo -------------------------------------------------------------------
+	// The latest frame; validated, then published lock-free. Rejected frames are counted in
+	// stats().frames_rejected and the previous frame stays in force.
+	Status submit_frame(const Frame &p_frame);
+	// Queues an impact transient. A full queue is not an error: the drop is counted in
+	// stats().transient_drops and OK is returned.
+	Status push_impact(const ImpactEvent &p_event);
+	// Target of the simulated hand, m (finite, |target| <= 1).
+	Status set_hand_target(const Vec3 &p_target_m);
+
+	// --- Servo -> game (latest tick) -----------------------------------------------------
+	Vec3 input_vector() const;
+	Vec3 device_position() const;
+	ForceComponents forces() const;
+	ServoOutput output() const; // Everything above plus gains, flags and counters.
+	ServoStats stats() const;
+	// Pops up to p_max_samples telemetry samples into r_out, which must hold
+	// p_max_samples * TELEMETRY_STRIDE floats (layout in telemetry.h); returns how many.
+	size_t drain_telemetry(float *r_out, size_t p_max_samples);
+
+	// --- Configuration (any time, also while rendering) ----------------------------------
+	Status configure_force_model(const ForceModelConfig &p_config);
+	Status configure_smoothing(const SmoothingConfig &p_config);
+	Status configure_safety(const SafetyConfig &p_config);
+	Status configure_telemetry(const TelemetryConfig &p_config);
+	Status set_default_contact_material(const ContactMaterial &p_material);
+	Status set_default_impact_material(const ImpactMaterial &p_material);
+	// Radius (m) mapped to |input| = 1; 0 = the device's workspace radius.
+	Status set_workspace_radius(double p_radius_m);
+	const RenderConfig &config() const;
+
+private:
+	struct Impl;
+	std::unique_ptr<Impl> impl_;
+};
+
+} // namespace haptics

@@ -1,0 +1,82 @@
+#pragma once
+
+// The servo thread: ticks a ServoPipeline at a fixed rate on absolute deadlines.
+//
+// Each iteration sleeps until the next deadline (clock_nanosleep TIMER_ABSTIME on
+// CLOCK_MONOTONIC), ticks, records timing, and moves the deadline on by exactly one period,
+// so the rate does not drift however late a wake-up is. After a stall of more than a whole
+// period the missed deadlines are skipped (and counted) rather than replayed in a burst:
+// a burst of ticks renders nothing a hand could feel and delays the next real one.
+//
+// The thread asks for SCHED_FIFO and quietly keeps SCHED_OTHER when refused; stats say which.
+//
+// Stopping: stop() raises a flag, the thread finishes its tick, writes ZERO force to the
+// device itself, and only then exits; stop() joins it. So the last thing the device receives
+// from a stopping servo is always zero, before anyone can close it (the classic crash on
+// exit is a device closed under a running I/O thread). A device I/O failure (unplugged)
+// ends the thread the same way and leaves state() == FAULTED until stop() or start().
+
+#include "core/realtime.h"
+#include "core/servo_pipeline.h"
+#include "core/status.h"
+#include "devices/device.h"
+
+#include <atomic>
+#include <cstdint>
+#include <thread>
+
+namespace haptics {
+
+enum class ServoState : int32_t {
+	STOPPED = 0,
+	RUNNING = 1,
+	FAULTED = 2, // The thread ended itself on a device error; join with stop().
+};
+
+enum class LoopScheduling : int32_t {
+	DEADLINE = 0, // Absolute deadlines: the product.
+	NAIVE_SLEEP = 1, // sleep_for(period) after each tick: the benchmark's baseline only.
+};
+
+struct ServoOptions {
+	double rate_hz = 1000.0; // [250, 4000]
+	int32_t realtime_priority = 50; // SCHED_FIFO priority to ask for; 0 = do not ask.
+	LoopScheduling scheduling = LoopScheduling::DEADLINE;
+};
+
+class ServoLoop {
+public:
+	ServoLoop(ServoPipeline &r_pipeline, ServoChannels &r_channels);
+	~ServoLoop(); // Stops (zero force, join).
+
+	ServoLoop(const ServoLoop &) = delete;
+	ServoLoop &operator=(const ServoLoop &) = delete;
+
+	// Game thread. Begins a pipeline session on p_device and spawns the thread. Options must
+	// be valid; the loop must not be running (a FAULTED loop is joined first).
+	Status start(HapticDevice *p_device, const ServoOptions &p_options);
+	// Game thread. Idempotent; returns once the thread has written zero and exited.
+	void stop();
+
+	ServoState state() const { return state_.load(std::memory_order_acquire); }
+	// The I/O status that ended the last run (OK unless FAULTED).
+	DeviceIo fault() const { return fault_.load(std::memory_order_acquire); }
+	RealtimeResult scheduler() const;
+	const ServoOptions &options() const { return options_; }
+
+private:
+	void run();
+
+	ServoPipeline &pipeline_;
+	ServoChannels &channels_;
+	HapticDevice *device_ = nullptr;
+	ServoOptions options_;
+	std::thread thread_;
+	std::atomic<bool> stop_requested_{ false };
+	std::atomic<ServoState> state_{ ServoState::STOPPED };
+	std::atomic<DeviceIo> fault_{ DeviceIo::OK };
+	std::atomic<SchedulerKind> scheduler_kind_{ SchedulerKind::NORMAL };
+	std::atomic<int32_t> scheduler_priority_{ 0 };
+};
+
+} // namespace haptics

@@ -1,0 +1,164 @@
+#include "core/servo_pipeline.h"
+
+#include <limits>
+
+namespace haptics {
+
+namespace {
+
+// Seqlock's constructor publishes a default value: version 1 means "nothing submitted yet".
+constexpr uint64_t UNTOUCHED_VERSION = 1;
+
+} // namespace
+
+ServoPipeline::ServoPipeline(ServoChannels &r_channels) :
+		channels_(r_channels) {}
+
+void ServoPipeline::begin_session(HapticDevice *p_device, double p_dt_s) {
+	device_ = p_device;
+	limits_ = p_device->limits();
+	dt_s_ = p_dt_s;
+	time_s_ = 0.0;
+	tick_ = 0;
+
+	config_version_ = 0;
+	config_ = channels_.config.load();
+	channels_.config.try_load(config_, &config_version_);
+	apply_config(config_);
+	filter_.reset();
+	safety_.reset();
+	transients_ = TransientBank{};
+
+	// The latest frame, even one submitted before this session, is picked up by the first
+	// tick as if it had just arrived; the watchdog takes over if no newer one follows.
+	frame_ = Frame{};
+	frame_version_ = UNTOUCHED_VERSION;
+	have_frame_ = false;
+	last_frame_time_s_ = 0.0;
+	new_frame_ = false;
+	frames_received_ = 0;
+
+	telemetry_drops_ = 0;
+	clamped_ticks_ = 0;
+	non_finite_ticks_ = 0;
+	telemetry_countdown_ = 0;
+}
+
+void ServoPipeline::apply_config(const RenderConfig &p_config) {
+	config_ = p_config;
+	input_radius_m_ = config_.force_model.input_radius_m > 0.0 ? config_.force_model.input_radius_m : limits_.workspace_radius_m;
+	filter_.configure(config_.smoothing, dt_s_);
+	safety_.configure(config_.safety, limits_.max_force_n);
+}
+
+void ServoPipeline::pick_up_inputs() {
+	if (channels_.config.version() != config_version_) {
+		RenderConfig config;
+		uint64_t version = 0;
+		if (channels_.config.try_load(config, &version)) {
+			config_version_ = version;
+			apply_config(config);
+		}
+	}
+	new_frame_ = false;
+	if (channels_.frame.version() != frame_version_) {
+		uint64_t version = 0;
+		if (channels_.frame.try_load(frame_, &version)) {
+			frame_version_ = version;
+			have_frame_ = true;
+			new_frame_ = true;
+			last_frame_time_s_ = time_s_;
+			++frames_received_;
+		}
+	}
+	// Bounded by the queue's capacity.
+	ImpactEvent event;
+	while (channels_.impacts.try_pop(event)) {
+		transients_.add(event, config_.force_model.default_impact, config_.safety.max_impact_force_n);
+	}
+}
+
+DeviceIo ServoPipeline::tick(double p_dt_s) {
+	if (p_dt_s != dt_s_) { // Manual stepping may change the period; the filter follows.
+		dt_s_ = p_dt_s;
+		filter_.configure(config_.smoothing, dt_s_);
+	}
+	device_->begin_tick(p_dt_s);
+	DeviceState state;
+	const DeviceIo read = device_->read_state(state);
+	if (read != DeviceIo::OK) {
+		return read;
+	}
+	++tick_;
+	time_s_ += p_dt_s;
+	pick_up_inputs();
+
+	const Vec3 input = input_vector(state.position_m, input_radius_m_, config_.force_model.dead_zone);
+	ForceComponents forces = compute_forces(frame_, input, config_.force_model);
+
+	Vec3 smoothed;
+	if (is_finite(forces.continuous)) {
+		smoothed = filter_.process(forces.continuous);
+	} else {
+		filter_.reset(); // Never let a NaN live on in the filter state.
+		smoothed = forces.continuous;
+	}
+	const Vec3 impact = transients_.advance(p_dt_s);
+	const double frame_age = have_frame_ ? time_s_ - last_frame_time_s_ : std::numeric_limits<double>::infinity();
+	const SafetyResult safety = safety_.apply(smoothed, impact, frame_age, p_dt_s);
+	forces.smoothed = safety.continuous;
+	forces.impact = impact;
+	forces.total = safety.total;
+
+	const DeviceIo written = device_->write_force(safety.total);
+	if (written != DeviceIo::OK) {
+		return written;
+	}
+	clamped_ticks_ += safety.clamped ? 1 : 0;
+	non_finite_ticks_ += safety.non_finite ? 1 : 0;
+	publish(state, input, forces, safety, new_frame_, frame_.contact_count > 0);
+	return DeviceIo::OK;
+}
+
+void ServoPipeline::publish(const DeviceState &p_state, const Vec3 &p_input, const ForceComponents &p_forces,
+		const SafetyResult &p_safety, bool p_new_frame, bool p_contact) {
+	uint32_t flags = 0;
+	flags |= p_contact ? TELEMETRY_FLAG_CONTACT : 0u;
+	flags |= frame_.water.inside ? TELEMETRY_FLAG_IN_WATER : 0u;
+	flags |= p_safety.watchdog_tripped ? TELEMETRY_FLAG_WATCHDOG : 0u;
+	flags |= p_safety.clamped ? TELEMETRY_FLAG_CLAMPED : 0u;
+	flags |= p_safety.ramp_gain < 1.0 ? TELEMETRY_FLAG_RAMPING : 0u;
+	flags |= p_safety.non_finite ? TELEMETRY_FLAG_NON_FINITE : 0u;
+	flags |= p_new_frame ? TELEMETRY_FLAG_NEW_FRAME : 0u;
+
+	if (config_.telemetry.enabled) {
+		if (telemetry_countdown_ == 0) {
+			const TelemetrySample sample = make_telemetry_sample(time_s_, p_input, p_state.position_m, p_forces, flags);
+			if (!channels_.telemetry.try_push(sample)) {
+				++telemetry_drops_;
+			}
+			telemetry_countdown_ = config_.telemetry.decimation;
+		}
+		--telemetry_countdown_;
+	}
+
+	ServoOutput output;
+	output.time_s = time_s_;
+	output.tick = tick_;
+	output.input = p_input;
+	output.position_m = p_state.position_m;
+	output.buttons = p_state.buttons;
+	output.flags = flags;
+	output.forces = p_forces;
+	output.frame_age_s = have_frame_ ? time_s_ - last_frame_time_s_ : -1.0;
+	output.ramp_gain = p_safety.ramp_gain;
+	output.watchdog_gain = p_safety.watchdog_gain;
+	output.frames_received = frames_received_;
+	output.bank_drops = transients_.drops();
+	output.telemetry_drops = telemetry_drops_;
+	output.clamped_ticks = clamped_ticks_;
+	output.non_finite_ticks = non_finite_ticks_;
+	channels_.output.store(output);
+}
+
+} // namespace haptics
