@@ -1,6 +1,6 @@
 // haptics_bench: the servo loop under load, against a naive baseline, in one run.
 //
-//   haptics_bench [--duration S] [--json PATH] [--rate HZ]
+//   haptics_bench [--duration S | --seconds S] [--json PATH] [--rate HZ]
 //   (positional forms also work: haptics_bench 10 .bench/servo.json)
 //
 // For each loop (absolute deadlines, then sleep_for(period) with no deadline tracking) the
@@ -41,14 +41,14 @@ bool parse(int p_argc, char **p_argv, Options &r_options) {
 	for (int a = 1; a < p_argc; ++a) {
 		const std::string arg = p_argv[a];
 		const bool has_value = a + 1 < p_argc;
-		if (arg == "--duration" && has_value) {
+		if ((arg == "--duration" || arg == "--seconds") && has_value) {
 			r_options.duration_s = std::atof(p_argv[++a]);
 		} else if (arg == "--rate" && has_value) {
 			r_options.rate_hz = std::atof(p_argv[++a]);
 		} else if (arg == "--json" && has_value) {
 			r_options.json_path = p_argv[++a];
-		} else if (arg == "--help" || arg == "-h") {
-			return false;
+		} else if (arg == "--help" || arg == "-h" || arg.rfind("--", 0) == 0) {
+			return false; // Help, an unknown flag, or a flag missing its value.
 		} else if (!have_positional_duration && std::strtod(arg.c_str(), nullptr) > 0.0) {
 			r_options.duration_s = std::atof(arg.c_str());
 			have_positional_duration = true;
@@ -122,7 +122,7 @@ LoopResult run_loop(const char *p_name, LoopScheduling p_scheduling, const Optio
 int main(int p_argc, char **p_argv) {
 	Options options;
 	if (!parse(p_argc, p_argv, options)) {
-		std::fprintf(stderr, "usage: %s [--duration S] [--json PATH] [--rate HZ]\n", p_argv[0]);
+		std::fprintf(stderr, "usage: %s [--duration S | --seconds S] [--json PATH] [--rate HZ]\n", p_argv[0]);
 		return 1;
 	}
 	if (!validate_rate(options.rate_hz)) {

@@ -76,7 +76,7 @@ TEST_CASE("spsc queue: two threads, every item exactly once and in order") {
 	CHECK_FALSE(queue.try_pop(extra));
 }
 
-TEST_CASE("seqlock: a single thread reads what it stored; versions count stores") {
+TEST_CASE("seqlock: a single thread reads what it stored, versions count stores") {
 	Seqlock<Payload> snapshot;
 	CHECK(snapshot.version() == 1); // The constructor publishes a default value.
 	Payload in;

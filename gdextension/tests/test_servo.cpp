@@ -196,7 +196,7 @@ TEST_CASE("servo thread: 1000 start/stop cycles while rendering, zero force afte
 	CHECK(engine.servo_status());
 }
 
-TEST_CASE("servo thread: unplugging stops rendering with a clear error; state survives") {
+TEST_CASE("servo thread: unplugging stops rendering with a clear error, state survives") {
 	auto log = std::make_shared<DeviceLog>();
 	HapticsEngine engine;
 	RecordingDevice *device = open_recording(engine, log);
@@ -218,10 +218,11 @@ TEST_CASE("servo thread: unplugging stops rendering with a clear error; state su
 
 	// Plugged back in, rendering can start again and the retained frame is felt.
 	device->inner().set_plugged(true);
+	CHECK(engine.servo_status().code() == StatusCode::DEVICE_DISCONNECTED); // Until a new device.
 	REQUIRE(engine.open_device(std::make_unique<RecordingDevice>(log, SimulatedDeviceConfig{})));
+	CHECK(engine.servo_status());
 	REQUIRE(engine.set_hand_target({ 0.08, 0.0, 0.0 }));
 	REQUIRE(engine.start(1000.0));
-	CHECK(engine.servo_status());
 	REQUIRE(wait_for([&] { return log->last_magnitude.load() > 1.0; }));
 	engine.stop();
 	CHECK(log->last_magnitude.load() == 0.0);

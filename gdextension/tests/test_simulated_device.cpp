@@ -112,7 +112,7 @@ TEST_CASE("simulated device: deterministic under the same script") {
 	CHECK(std::memcmp(&a, &b, sizeof(Vec3)) == 0);
 }
 
-TEST_CASE("simulated device: unplugging gives clear errors; plugging back in works") {
+TEST_CASE("simulated device: unplugging gives clear errors, plugging back in works") {
 	SimulatedDevice device;
 	REQUIRE(device.open());
 	device.set_plugged(false);

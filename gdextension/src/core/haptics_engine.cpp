@@ -85,6 +85,7 @@ Status HapticsEngine::open_device(std::unique_ptr<HapticDevice> p_device) {
 	}
 	p_device->write_force(Vec3{});
 	impl_->end_session();
+	impl_->loop.clear_fault();
 	if (impl_->device) {
 		impl_->device->close();
 	}
@@ -179,8 +180,8 @@ Status HapticsEngine::step(double p_dt_s) {
 	if (is_running()) {
 		return Status::error(StatusCode::INVALID_STATE, "step: the servo thread is running; stop it first");
 	}
-	impl_->loop.stop(); // Joins a thread that ended on a fault; no-op otherwise.
 	if (!impl_->manual_session) {
+		impl_->loop.clear_fault(); // Joins a thread that ended on a fault.
 		impl_->pipeline.begin_session(impl_->device.get(), p_dt_s);
 		impl_->channels.stats.reset(1.0 / p_dt_s);
 		impl_->manual_session = true;

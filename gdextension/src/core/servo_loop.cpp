@@ -58,6 +58,12 @@ void ServoLoop::stop() {
 	state_.compare_exchange_strong(expected, ServoState::STOPPED, std::memory_order_acq_rel);
 }
 
+void ServoLoop::clear_fault() {
+	stop();
+	state_.store(ServoState::STOPPED, std::memory_order_release);
+	fault_.store(DeviceIo::OK, std::memory_order_release);
+}
+
 void ServoLoop::run() {
 	const RealtimeResult realtime = try_make_current_thread_realtime(options_.realtime_priority);
 	scheduler_kind_.store(realtime.kind, std::memory_order_release);

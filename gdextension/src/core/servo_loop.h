@@ -55,8 +55,11 @@ public:
 	// Game thread. Begins a pipeline session on p_device and spawns the thread. Options must
 	// be valid; the loop must not be running (a FAULTED loop is joined first).
 	Status start(HapticDevice *p_device, const ServoOptions &p_options);
-	// Game thread. Idempotent; returns once the thread has written zero and exited.
+	// Game thread. Idempotent; returns once the thread has written zero and exited. A
+	// FAULTED state survives stop() so the game can still ask why rendering ended.
 	void stop();
+	// Game thread: stop(), then forget a fault (a new device or a manual session).
+	void clear_fault();
 
 	ServoState state() const { return state_.load(std::memory_order_acquire); }
 	// The I/O status that ended the last run (OK unless FAULTED).

@@ -22,9 +22,9 @@ void ServoPipeline::begin_session(HapticDevice *p_device, double p_dt_s) {
 	tick_ = 0;
 
 	config_version_ = 0;
-	config_ = channels_.config.load();
-	channels_.config.try_load(config_, &config_version_);
-	apply_config(config_);
+	RenderConfig config = channels_.config.load();
+	channels_.config.try_load(config, &config_version_);
+	apply_config(config, true);
 	filter_.reset();
 	safety_.reset();
 	transients_ = TransientBank{};
@@ -44,10 +44,16 @@ void ServoPipeline::begin_session(HapticDevice *p_device, double p_dt_s) {
 	telemetry_countdown_ = 0;
 }
 
-void ServoPipeline::apply_config(const RenderConfig &p_config) {
+void ServoPipeline::apply_config(const RenderConfig &p_config, bool p_force_filter) {
+	// Re-designing the filter resets its state to rest (at its last output); do it only when
+	// the smoothing itself changed, so tuning a material mid-step keeps the filter's motion.
+	const bool smoothing_changed = p_force_filter || p_config.smoothing.type != config_.smoothing.type ||
+			p_config.smoothing.cutoff_hz != config_.smoothing.cutoff_hz;
 	config_ = p_config;
 	input_radius_m_ = config_.force_model.input_radius_m > 0.0 ? config_.force_model.input_radius_m : limits_.workspace_radius_m;
-	filter_.configure(config_.smoothing, dt_s_);
+	if (smoothing_changed) {
+		filter_.configure(config_.smoothing, dt_s_);
+	}
 	safety_.configure(config_.safety, limits_.max_force_n);
 }
 
@@ -57,7 +63,7 @@ void ServoPipeline::pick_up_inputs() {
 		uint64_t version = 0;
 		if (channels_.config.try_load(config, &version)) {
 			config_version_ = version;
-			apply_config(config);
+			apply_config(config, false);
 		}
 	}
 	new_frame_ = false;

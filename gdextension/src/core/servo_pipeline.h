@@ -77,7 +77,7 @@ public:
 	uint64_t ticks() const { return tick_; }
 
 private:
-	void apply_config(const RenderConfig &p_config);
+	void apply_config(const RenderConfig &p_config, bool p_force_filter);
 	void pick_up_inputs();
 	void publish(const DeviceState &p_state, const Vec3 &p_input, const ForceComponents &p_forces,
 			const SafetyResult &p_safety, bool p_new_frame, bool p_contact);

@@ -170,7 +170,10 @@ std::string usb_port_path(libusb_device *p_device) {
 		return path + "root";
 	}
 	for (int i = 0; i < count; ++i) {
-		path += (i == 0 ? "" : ".") + std::to_string(ports[static_cast<size_t>(i)]);
+		if (i > 0) {
+			path += '.';
+		}
+		path += std::to_string(ports[static_cast<size_t>(i)]);
 	}
 	return path;
 }
