@@ -1,13 +1,18 @@
 #include "godot/haptics_server.h"
 
+#include <algorithm>
+
+#include "core/coordinates.h"
+#include "core/telemetry.h"
 #include "devices/device_enumeration.h"
+#include "godot/conversions.h"
 #include "godot/log.h"
 
 namespace haptics::godot {
 
 namespace {
 
-constexpr const char *EXTENSION_VERSION = "0.1.0";
+constexpr const char *EXTENSION_VERSION = "0.2.0";
 
 gd::Dictionary to_dictionary(const DeviceInfo &p_device) {
 	gd::Dictionary d;
@@ -29,10 +34,44 @@ gd::Dictionary to_dictionary(const DeviceInfo &p_device) {
 } // namespace
 
 void HapticsServer::bind_methods(gd::ClassBinder<HapticsServer> &r_binder) {
-	r_binder.bind_method("list_devices", &HapticsServer::list_devices);
-	r_binder.bind_method("get_device", &HapticsServer::get_device, { "id" });
-	r_binder.bind_method("get_device_warnings", &HapticsServer::get_device_warnings);
-	r_binder.bind_method("get_version", &HapticsServer::get_version);
+	using S = HapticsServer;
+	r_binder.bind_method("list_devices", &S::list_devices);
+	r_binder.bind_method("get_device", &S::get_device, { "id" });
+	r_binder.bind_method("get_device_warnings", &S::get_device_warnings);
+	r_binder.bind_method("open_device", &S::open_device, { "id" });
+	r_binder.bind_method("close_device", &S::close_device);
+	r_binder.bind_method("get_device_id", &S::get_device_id);
+	r_binder.bind_method("get_device_name", &S::get_device_name);
+	r_binder.bind_method("get_device_limits", &S::get_device_limits);
+	r_binder.bind_method("calibrate", &S::calibrate);
+	r_binder.bind_method("set_hand_target", &S::set_hand_target, { "target_m" });
+	r_binder.bind_method("get_hand_target", &S::get_hand_target);
+	r_binder.bind_method("set_simulated_plugged", &S::set_simulated_plugged, { "plugged" });
+	r_binder.bind_method("start", &S::start, { "rate_hz" }, { gd::Variant(DEFAULT_RATE_HZ) });
+	r_binder.bind_method("stop", &S::stop);
+	r_binder.bind_method("is_running", &S::is_running);
+	r_binder.bind_method("step", &S::step, { "dt" });
+	r_binder.bind_method("get_servo_status", &S::get_servo_status);
+	r_binder.bind_method("submit_frame", &S::submit_frame, { "frame" });
+	r_binder.bind_method("push_impact", &S::push_impact, { "impact" });
+	r_binder.bind_method("get_input_vector", &S::get_input_vector);
+	r_binder.bind_method("get_device_position", &S::get_device_position);
+	r_binder.bind_method("get_forces", &S::get_forces);
+	r_binder.bind_method("get_stats", &S::get_stats);
+	r_binder.bind_method("drain_telemetry", &S::drain_telemetry, { "max_samples" },
+			{ gd::Variant(static_cast<int64_t>(TELEMETRY_QUEUE_CAPACITY)) });
+	r_binder.bind_method("get_telemetry_stride", &S::get_telemetry_stride);
+	r_binder.bind_method("get_telemetry_columns", &S::get_telemetry_columns);
+	r_binder.bind_method("set_config", &S::set_config, { "section", "values" });
+	r_binder.bind_method("get_config", &S::get_config);
+	r_binder.bind_method("get_version", &S::get_version);
+}
+
+bool HapticsServer::report(const char *p_method, const Status &p_status) const {
+	if (!p_status.ok()) {
+		gd::print_error(std::string(p_method) + ": " + p_status.message(), p_method, __FILE__, __LINE__);
+	}
+	return p_status.ok();
 }
 
 gd::Array HapticsServer::list_devices() {
@@ -63,6 +102,191 @@ gd::Array HapticsServer::get_device_warnings() const {
 		out.append(warning);
 	}
 	return out;
+}
+
+bool HapticsServer::open_device(const std::string &p_id) {
+	if (p_id == SIMULATED_DEVICE_ID) {
+		if (!report("open_device", engine_.open_simulated_device())) {
+			return false;
+		}
+		device_id_ = p_id;
+		hand_target_ = {};
+		return true;
+	}
+	const DeviceList found = haptics::list_devices();
+	for (const DeviceInfo &device : found.devices) {
+		if (device.id == p_id) {
+			// Enumeration is real; drivers for physical devices are not written yet, and
+			// pretending otherwise would render nothing while claiming success.
+			HAPTICS_ERROR("open_device: no driver yet for '" + p_id + "' (" +
+					(device.model.empty() ? device.product : device.model) +
+					"); the current device stays open.");
+			return false;
+		}
+	}
+	HAPTICS_ERROR("open_device: no device with id '" + p_id + "'; the current device stays open.");
+	return false;
+}
+
+void HapticsServer::close_device() {
+	engine_.close_device();
+	device_id_.clear();
+}
+
+std::string HapticsServer::get_device_id() const {
+	return engine_.has_device() ? device_id_ : std::string();
+}
+
+std::string HapticsServer::get_device_name() const {
+	return engine_.device_name();
+}
+
+gd::Dictionary HapticsServer::get_device_limits() const {
+	return limits_to_dictionary(engine_.device_limits());
+}
+
+bool HapticsServer::calibrate() {
+	return report("calibrate", engine_.calibrate());
+}
+
+bool HapticsServer::set_hand_target(gd::Vector2 p_target_m) {
+	const Vec3 target = game_to_device_scaled(p_target_m.x, p_target_m.y, 1.0);
+	if (!report("set_hand_target", engine_.set_hand_target(target))) {
+		return false;
+	}
+	hand_target_ = p_target_m;
+	return true;
+}
+
+gd::Vector2 HapticsServer::get_hand_target() const {
+	return hand_target_;
+}
+
+bool HapticsServer::set_simulated_plugged(bool p_plugged) {
+	SimulatedDevice *device = engine_.simulated_device();
+	if (device == nullptr) {
+		HAPTICS_ERROR("set_simulated_plugged: the current device is not the simulated one.");
+		return false;
+	}
+	device->set_plugged(p_plugged);
+	return true;
+}
+
+bool HapticsServer::start(double p_rate_hz) {
+	return report("start", engine_.start(p_rate_hz));
+}
+
+void HapticsServer::stop() {
+	engine_.stop();
+}
+
+bool HapticsServer::is_running() const {
+	return engine_.is_running();
+}
+
+bool HapticsServer::step(double p_dt) {
+	return report("step", engine_.step(p_dt));
+}
+
+std::string HapticsServer::get_servo_status() const {
+	return engine_.servo_status().message();
+}
+
+bool HapticsServer::submit_frame(const gd::Dictionary &p_frame) {
+	Frame frame;
+	std::string error;
+	if (!frame_from_dictionary(p_frame, frame, error)) {
+		HAPTICS_ERROR("submit_frame: " + error + "; the previous frame stays in force.");
+		return false;
+	}
+	return report("submit_frame", engine_.submit_frame(frame));
+}
+
+bool HapticsServer::push_impact(const gd::Dictionary &p_impact) {
+	ImpactEvent event;
+	std::string error;
+	if (!impact_from_dictionary(p_impact, event, error)) {
+		HAPTICS_ERROR("push_impact: " + error);
+		return false;
+	}
+	return report("push_impact", engine_.push_impact(event));
+}
+
+gd::Vector2 HapticsServer::get_input_vector() const {
+	return to_game(engine_.input_vector());
+}
+
+gd::Vector2 HapticsServer::get_device_position() const {
+	return to_game(engine_.device_position());
+}
+
+gd::Dictionary HapticsServer::get_forces() const {
+	return forces_to_dictionary(engine_.forces());
+}
+
+gd::Dictionary HapticsServer::get_stats() const {
+	return stats_to_dictionary(engine_.stats());
+}
+
+gd::PackedFloat32Array HapticsServer::drain_telemetry(int64_t p_max_samples) {
+	gd::PackedFloat32Array out;
+	if (p_max_samples <= 0) {
+		return out;
+	}
+	const size_t max_samples =
+			std::min(static_cast<size_t>(p_max_samples), static_cast<size_t>(TELEMETRY_QUEUE_CAPACITY));
+	if (!out.resize(static_cast<int64_t>(max_samples * TELEMETRY_STRIDE))) {
+		return gd::PackedFloat32Array();
+	}
+	const size_t count = engine_.drain_telemetry(out.ptrw(), max_samples);
+	out.resize(static_cast<int64_t>(count * TELEMETRY_STRIDE));
+	return out;
+}
+
+int64_t HapticsServer::get_telemetry_stride() const {
+	return static_cast<int64_t>(TELEMETRY_STRIDE);
+}
+
+gd::Array HapticsServer::get_telemetry_columns() const {
+	gd::Array names;
+	names.append("t");
+	for (const char *vector : { "input", "position", "normal", "friction", "weight", "drag",
+				 "inertia", "smoothed", "impact", "total" }) {
+		for (const char *axis : { "_x", "_y", "_z" }) {
+			names.append(std::string(vector) + axis);
+		}
+	}
+	names.append("flags");
+	return names;
+}
+
+bool HapticsServer::set_config(const std::string &p_section, const gd::Dictionary &p_values) {
+	if (p_section != "force_model" && p_section != "smoothing" && p_section != "safety" &&
+			p_section != "telemetry") {
+		HAPTICS_ERROR("set_config: unknown section '" + p_section +
+				"' (known: force_model, smoothing, safety, telemetry)");
+		return false;
+	}
+	RenderConfig config = engine_.config();
+	std::string error;
+	if (!apply_config_section(p_section, p_values, config, error)) {
+		HAPTICS_ERROR("set_config: " + error + "; the previous settings stay in force.");
+		return false;
+	}
+	if (p_section == "force_model") {
+		return report("set_config", engine_.configure_force_model(config.force_model));
+	}
+	if (p_section == "smoothing") {
+		return report("set_config", engine_.configure_smoothing(config.smoothing));
+	}
+	if (p_section == "safety") {
+		return report("set_config", engine_.configure_safety(config.safety));
+	}
+	return report("set_config", engine_.configure_telemetry(config.telemetry));
+}
+
+gd::Dictionary HapticsServer::get_config() const {
+	return config_to_dictionary(engine_.config());
 }
 
 std::string HapticsServer::get_version() const {

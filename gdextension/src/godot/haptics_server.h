@@ -1,11 +1,15 @@
-// HapticsServer: the one class GDScript talks to. A thin adapter: it converts engine
-// values to the core's plain structs and back, and reports bad input through the engine's
-// error printer. All behaviour lives in the engine-free core.
+// HapticsServer: the one class GDScript talks to. A thin adapter over the engine-free
+// core's HapticsEngine: it converts engine values to the core's plain structs and back
+// (conversions.h) and reports rejected input through the engine's error printer, naming
+// the offending field; a rejected call changes nothing. All behaviour lives in the core.
+//
+// Vectors are in game axes (x right, y down). Lengths are metres, forces newtons.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "core/haptics_engine.h"
 #include "godot/class_db.h"
 #include "godot/containers.h"
 
@@ -15,6 +19,7 @@ class HapticsServer : public gd::ExtensionObject {
 public:
 	static void bind_methods(gd::ClassBinder<HapticsServer> &r_binder);
 
+	// --- Devices ---
 	// Every device present: the simulated one first, then hidapi and libusb devices, each a
 	// Dictionary (id, backend, vendor_id, product_id, path, product, manufacturer, serial,
 	// usage_page, usage, known_haptic, model).
@@ -23,9 +28,59 @@ public:
 	gd::Dictionary get_device(const std::string &p_id);
 	// Why the last enumeration could not look everywhere (no USB bus, no permission...).
 	gd::Array get_device_warnings() const;
+	// Opens a device by id ("simulated", or an id from list_devices()). On failure the
+	// current device stays open and rendering is untouched.
+	bool open_device(const std::string &p_id);
+	void close_device();
+	std::string get_device_id() const;
+	std::string get_device_name() const;
+	// max_force (N), max_continuous_force (N), max_stiffness (N/m), workspace_radius (m).
+	gd::Dictionary get_device_limits() const;
+	bool calibrate();
+	// Simulated device only: where its hand pulls the stylus, in metres (game axes).
+	bool set_hand_target(gd::Vector2 p_target_m);
+	gd::Vector2 get_hand_target() const;
+	// Simulated device only: unplug (false) or replug it, to exercise disconnect handling.
+	bool set_simulated_plugged(bool p_plugged);
+
+	// --- Rendering ---
+	bool start(double p_rate_hz);
+	void stop();
+	bool is_running() const;
+	// Manual mode: one servo tick of p_dt seconds on the calling thread (deterministic).
+	bool step(double p_dt);
+	// "" while rendering is healthy, else why it stopped (e.g. the device was unplugged).
+	std::string get_servo_status() const;
+
+	// --- Game -> servo --- (dictionary layouts: conversions.h)
+	bool submit_frame(const gd::Dictionary &p_frame);
+	bool push_impact(const gd::Dictionary &p_impact);
+
+	// --- Servo -> game ---
+	gd::Vector2 get_input_vector() const;
+	gd::Vector2 get_device_position() const;
+	// normal, friction, weight, drag, inertia, continuous, smoothed, impact, total: Vector2 N.
+	gd::Dictionary get_forces() const;
+	gd::Dictionary get_stats() const;
+	// Up to p_max_samples samples of get_telemetry_stride() floats each, oldest first, in
+	// DEVICE axes (y up); get_telemetry_columns() names the floats.
+	gd::PackedFloat32Array drain_telemetry(int64_t p_max_samples);
+	int64_t get_telemetry_stride() const;
+	gd::Array get_telemetry_columns() const;
+
+	// --- Configuration --- sections force_model, smoothing, safety, telemetry; only the
+	// keys given change. get_config() returns every section with every key.
+	bool set_config(const std::string &p_section, const gd::Dictionary &p_values);
+	gd::Dictionary get_config() const;
+
 	std::string get_version() const;
 
 private:
+	bool report(const char *p_method, const Status &p_status) const;
+
+	HapticsEngine engine_;
+	std::string device_id_;
+	gd::Vector2 hand_target_;
 	std::vector<std::string> last_warnings_;
 };
 

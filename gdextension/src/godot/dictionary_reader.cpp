@@ -1,0 +1,147 @@
+#include "godot/dictionary_reader.h"
+
+#include <utility>
+
+namespace haptics::godot {
+
+DictionaryReader::DictionaryReader(const gd::Dictionary &p_dictionary, std::string p_path) :
+		dictionary_(p_dictionary), path_(std::move(p_path)) {}
+
+bool DictionaryReader::has(const char *p_key) const {
+	return dictionary_.has(gd::Variant(p_key));
+}
+
+bool DictionaryReader::fetch(const char *p_key, gd::VariantType p_type, const char *p_expected,
+		bool p_required, gd::Variant &r_value) {
+	gd::Variant value;
+	if (!dictionary_.get(gd::Variant(p_key), value)) {
+		if (p_required) {
+			error_ = path_ + "." + p_key + ": missing (expected " + p_expected + ")";
+			return false;
+		}
+		return true;
+	}
+	if (!value.convert_strict(p_type, r_value)) {
+		error_ = path_ + "." + p_key + ": expected " + p_expected + ", got " +
+				variant_type_name(value.get_type());
+		return false;
+	}
+	return true;
+}
+
+bool DictionaryReader::read_number(const char *p_key, double &r_value, bool p_required) {
+	gd::Variant value;
+	if (!fetch(p_key, gd::VariantType::FLOAT, "a number", p_required, value)) {
+		return false;
+	}
+	if (!value.is_nil()) {
+		r_value = value.as_float();
+	}
+	return true;
+}
+
+bool DictionaryReader::read_bool(const char *p_key, bool &r_value, bool p_required) {
+	gd::Variant value;
+	if (!fetch(p_key, gd::VariantType::BOOL, "a bool", p_required, value)) {
+		return false;
+	}
+	if (!value.is_nil()) {
+		r_value = value.as_bool();
+	}
+	return true;
+}
+
+bool DictionaryReader::read_int(const char *p_key, int64_t &r_value, bool p_required) {
+	gd::Variant value;
+	if (!fetch(p_key, gd::VariantType::INT, "an int", p_required, value)) {
+		return false;
+	}
+	if (!value.is_nil()) {
+		r_value = value.as_int();
+	}
+	return true;
+}
+
+bool DictionaryReader::read_vector2(const char *p_key, gd::Vector2 &r_value, bool p_required) {
+	gd::Variant value;
+	if (!fetch(p_key, gd::VariantType::VECTOR2, "a Vector2", p_required, value)) {
+		return false;
+	}
+	if (!value.is_nil()) {
+		r_value = value.as_vector2();
+	}
+	return true;
+}
+
+bool DictionaryReader::read_array(const char *p_key, gd::Array &r_value, bool p_required) {
+	gd::Variant value;
+	if (!fetch(p_key, gd::VariantType::ARRAY, "an Array", p_required, value)) {
+		return false;
+	}
+	if (!value.is_nil()) {
+		r_value = gd::Array(std::move(value));
+	}
+	return true;
+}
+
+bool DictionaryReader::read_dictionary(const char *p_key, gd::Dictionary &r_value, bool p_required) {
+	gd::Variant value;
+	if (!fetch(p_key, gd::VariantType::DICTIONARY, "a Dictionary", p_required, value)) {
+		return false;
+	}
+	if (!value.is_nil()) {
+		r_value = gd::Dictionary(std::move(value));
+	}
+	return true;
+}
+
+bool DictionaryReader::only_keys(std::initializer_list<const char *> p_allowed) {
+	const gd::Array keys = dictionary_.keys();
+	for (int64_t i = 0; i < keys.size(); ++i) {
+		const gd::Variant key = keys.get(i);
+		const std::string name = key.as_string();
+		bool known = false;
+		for (const char *allowed : p_allowed) {
+			known = known || name == allowed;
+		}
+		if (!known) {
+			std::string list;
+			for (const char *allowed : p_allowed) {
+				list += list.empty() ? "" : ", ";
+				list += allowed;
+			}
+			error_ = path_ + ": unknown key '" + name + "' (known: " + list + ")";
+			return false;
+		}
+	}
+	return true;
+}
+
+std::string variant_type_name(gd::VariantType p_type) {
+	switch (p_type) {
+		case gd::VariantType::NIL:
+			return "null";
+		case gd::VariantType::BOOL:
+			return "bool";
+		case gd::VariantType::INT:
+			return "int";
+		case gd::VariantType::FLOAT:
+			return "float";
+		case gd::VariantType::STRING:
+			return "String";
+		case gd::VariantType::VECTOR2:
+			return "Vector2";
+		case gd::VariantType::VECTOR3:
+			return "Vector3";
+		case gd::VariantType::STRING_NAME:
+			return "StringName";
+		case gd::VariantType::DICTIONARY:
+			return "Dictionary";
+		case gd::VariantType::ARRAY:
+			return "Array";
+		default:
+			return "type " + std::to_string(static_cast<int>(p_type));
+	}
+}
+
+} // namespace haptics::godot

@@ -1,0 +1,46 @@
+// Reads typed fields out of a GDScript Dictionary, naming the offending field in the error
+// ("frame.contacts[2].stiffness: expected a number, got String"). Unknown keys are errors
+// too, so a typo in GDScript is reported instead of silently ignored.
+#pragma once
+
+#include <initializer_list>
+#include <string>
+
+#include "godot/containers.h"
+
+namespace haptics::godot {
+
+class DictionaryReader {
+public:
+	// p_path names the dictionary in messages, e.g. "frame" or "frame.contacts[2]".
+	DictionaryReader(const gd::Dictionary &p_dictionary, std::string p_path);
+
+	// Each returns false (with error() set) if the key is present with the wrong type or,
+	// for required reads, missing. An absent optional key leaves r_value untouched.
+	bool read_number(const char *p_key, double &r_value, bool p_required = false);
+	bool read_bool(const char *p_key, bool &r_value, bool p_required = false);
+	bool read_int(const char *p_key, int64_t &r_value, bool p_required = false);
+	bool read_vector2(const char *p_key, gd::Vector2 &r_value, bool p_required = false);
+	bool read_array(const char *p_key, gd::Array &r_value, bool p_required = false);
+	bool read_dictionary(const char *p_key, gd::Dictionary &r_value, bool p_required = false);
+	bool has(const char *p_key) const;
+
+	// False (with error() set) if the dictionary holds a key outside p_allowed.
+	bool only_keys(std::initializer_list<const char *> p_allowed);
+
+	const std::string &error() const { return error_; }
+	const std::string &path() const { return path_; }
+
+private:
+	bool fetch(const char *p_key, gd::VariantType p_type, const char *p_expected, bool p_required,
+			gd::Variant &r_value);
+
+	const gd::Dictionary &dictionary_;
+	std::string path_;
+	std::string error_;
+};
+
+// The name of a Variant type as GDScript prints it ("float", "Vector2"...).
+std::string variant_type_name(gd::VariantType p_type);
+
+} // namespace haptics::godot

@@ -1,0 +1,210 @@
+class_name HapticProbe
+extends Node
+## Drop-in haptics for any 2D body: add this node as a child of a [CharacterBody2D] or
+## [RigidBody2D] and the body's contacts are felt.
+##
+## At every physics tick it gathers the body's contacts (normals and each touched body's
+## [HapticMaterial]), dynamic bodies resting on it (mass and normal), the water volume it
+## is in, its velocity, and the speed of new contacts; converts pixels to metres; and
+## submits the frame and impact events to the haptics server. With [member drive_input] it
+## also feeds the device's input vector to the body's [code]input_vector[/code] property
+## before the body moves (acceleration control).
+##
+## Water volumes are [Area2D]s with [code]drag_coefficient[/code] and
+## [code]inertia_force[/code] properties (see [WaterVolume]).
+
+## Emitted after each frame is submitted, with the frame as sent.
+signal frame_submitted(frame: Dictionary)
+## Emitted when a new contact begins, with the approach speed in metres per second.
+signal impact(collider: Object, normal: Vector2, speed: float)
+
+## World scale: how many pixels make one metre.
+@export_range(1.0, 10000.0, 1.0, "suffix:px/m") var pixels_per_metre: float = 100.0
+## Material for bodies that declare none; [code]null[/code] uses the server's default.
+@export var default_material: HapticMaterial = null
+## Feed the device's input vector to the body's [code]input_vector[/code] property when
+## the control mode is "device".
+@export var drive_input: bool = true
+## How far above the body to look for objects resting on it, in pixels.
+@export_range(0.5, 16.0, 0.5, "suffix:px") var resting_probe_distance: float = 2.0
+## Impacts slower than this are not played, in metres per second.
+@export_range(0.0, 10.0, 0.01, "suffix:m/s") var min_impact_speed: float = 0.2
+
+## The server to talk to; defaults to the [code]Haptics[/code] autoload's. Tests set their
+## own server (stepped manually) here.
+var server: RefCounted = null
+## The last frame submitted (for HUDs and tests).
+var last_frame: Dictionary = {}
+## Frames submitted so far.
+var frames_submitted: int = 0
+
+var _body: PhysicsBody2D = null
+var _sequence: int = 0
+var _velocity_before: Vector2 = Vector2.ZERO
+var _touching: Dictionary[int, bool] = {}
+var _query: PhysicsPointQueryParameters2D = PhysicsPointQueryParameters2D.new()
+var _rest_collision: KinematicCollision2D = KinematicCollision2D.new()
+
+
+func _ready() -> void:
+	_body = get_parent() as PhysicsBody2D
+	if _body == null:
+		push_error("HapticProbe must be a child of a CharacterBody2D or RigidBody2D.")
+		set_physics_process(false)
+		return
+	if server == null and Haptics.is_available():
+		server = Haptics.server
+	if _body is RigidBody2D:
+		var rigid: RigidBody2D = _body
+		rigid.contact_monitor = true
+		rigid.max_contacts_reported = maxi(rigid.max_contacts_reported, 8)
+	_query.collide_with_areas = true
+	_query.collide_with_bodies = false
+	get_tree().physics_frame.connect(_before_bodies_move)
+
+
+func _exit_tree() -> void:
+	if get_tree().physics_frame.is_connected(_before_bodies_move):
+		get_tree().physics_frame.disconnect(_before_bodies_move)
+
+
+# Runs before any node's _physics_process: the body reads this tick's input vector, and the
+# velocity it arrives with is what new contacts are hit at.
+func _before_bodies_move() -> void:
+	_velocity_before = _body_velocity()
+	if not drive_input or server == null or not (&"input_vector" in _body):
+		return
+	var device_driven: bool = Haptics.control_mode == Haptics.CONTROL_DEVICE
+	if &"use_keyboard" in _body:
+		_body.set(&"use_keyboard", not device_driven)
+	if device_driven:
+		_body.set(&"input_vector", server.call(&"get_input_vector"))
+
+
+func _physics_process(_delta: float) -> void:
+	var frame: Dictionary = build_frame()
+	if server != null:
+		server.call(&"submit_frame", frame)
+	last_frame = frame
+	frames_submitted += 1
+	frame_submitted.emit(frame)
+
+
+## Gathers this tick's haptic frame (the layout HapticsServer.submit_frame takes), and
+## pushes impacts for contacts that began this tick.
+func build_frame() -> Dictionary:
+	var scale: float = Haptics.force_scale
+	var above: KinematicCollision2D = _object_above()
+	var contacts: Array[Dictionary] = []
+	var now_touching: Dictionary[int, bool] = {}
+	for collision: Dictionary in _collisions(above):
+		var collider: Object = collision["collider"]
+		var normal: Vector2 = collision["normal"]
+		var id: int = collider.get_instance_id() if collider != null else 0
+		if now_touching.has(id) or contacts.size() >= 16:
+			continue
+		now_touching[id] = true
+		var material: HapticMaterial = _material_of(collider)
+		var contact: Dictionary = {"normal": normal}
+		if material != null:
+			contact["stiffness"] = material.stiffness * scale
+			contact["damping"] = material.damping * scale
+		contacts.append(contact)
+		if not _touching.has(id):
+			_report_impact(collider, normal, material)
+	_touching = now_touching
+	_sequence += 1
+	return {
+		"contacts": contacts,
+		"resting": _resting_objects(above, scale),
+		"water": _water_state(scale),
+		"velocity": _body_velocity() / pixels_per_metre,
+		"sequence": _sequence,
+		"time": Time.get_ticks_msec() / 1000.0,
+	}
+
+
+# Each entry: collider and normal (from the surface toward the body).
+func _collisions(above: KinematicCollision2D) -> Array[Dictionary]:
+	var out: Array[Dictionary] = []
+	if _body is CharacterBody2D:
+		var character: CharacterBody2D = _body
+		for i: int in character.get_slide_collision_count():
+			var collision: KinematicCollision2D = character.get_slide_collision(i)
+			out.append({"collider": collision.get_collider(), "normal": collision.get_normal()})
+	elif _body is RigidBody2D:
+		var state: PhysicsDirectBodyState2D = PhysicsServer2D.body_get_direct_state(_body.get_rid())
+		for i: int in state.get_contact_count():
+			out.append(
+				{
+					"collider": state.get_contact_collider_object(i),
+					"normal": state.get_contact_local_normal(i),
+				}
+			)
+	if above != null:
+		out.append({"collider": above.get_collider(), "normal": above.get_normal()})
+	return out
+
+
+# A rigid body touching the top of the body, found by a short test move upward.
+func _object_above() -> KinematicCollision2D:
+	var motion: Vector2 = Vector2.UP * resting_probe_distance
+	if not _body.test_move(_body.global_transform, motion, _rest_collision, 0.08, true):
+		return null
+	if not _rest_collision.get_collider() is RigidBody2D:
+		return null
+	return _rest_collision
+
+
+func _resting_objects(above: KinematicCollision2D, scale: float) -> Array[Dictionary]:
+	var out: Array[Dictionary] = []
+	if above != null:
+		var rigid: RigidBody2D = above.get_collider()
+		out.append({"normal": above.get_normal(), "mass": rigid.mass * scale})
+	return out
+
+
+func _water_state(scale: float) -> Dictionary:
+	_query.position = _body.global_position
+	_query.collision_mask = 0xFFFFFFFF
+	var space: PhysicsDirectSpaceState2D = _body.get_world_2d().direct_space_state
+	for hit: Dictionary in space.intersect_point(_query, 8):
+		var area: Object = hit.get("collider")
+		if area != null and &"drag_coefficient" in area and &"inertia_force" in area:
+			return {
+				"inside": true,
+				"drag": float(area.get(&"drag_coefficient")) * scale,
+				"inertia": float(area.get(&"inertia_force")) * scale,
+			}
+	return {"inside": false}
+
+
+func _report_impact(collider: Object, normal: Vector2, material: HapticMaterial) -> void:
+	var other_velocity: Vector2 = Vector2.ZERO
+	if collider is RigidBody2D:
+		other_velocity = (collider as RigidBody2D).linear_velocity
+	var speed: float = (other_velocity - _velocity_before).dot(normal) / pixels_per_metre
+	if speed < min_impact_speed:
+		return
+	impact.emit(collider, normal, speed)
+	if server == null:
+		return
+	var event: Dictionary = {"direction": normal, "speed": speed}
+	if material != null:
+		event["gain"] = material.impact_gain * Haptics.force_scale
+		event["frequency"] = material.impact_frequency
+		event["decay"] = material.impact_decay
+	server.call(&"push_impact", event)
+
+
+func _material_of(collider: Object) -> HapticMaterial:
+	var declared: HapticMaterial = HapticMaterial.of(collider)
+	return declared if declared != null else default_material
+
+
+func _body_velocity() -> Vector2:
+	if _body is CharacterBody2D:
+		return (_body as CharacterBody2D).velocity
+	if _body is RigidBody2D:
+		return (_body as RigidBody2D).linear_velocity
+	return Vector2.ZERO
