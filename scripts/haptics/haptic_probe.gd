@@ -43,7 +43,8 @@ var _sequence: int = 0
 var _velocity_before: Vector2 = Vector2.ZERO
 var _touching: Dictionary[int, bool] = {}
 var _query: PhysicsPointQueryParameters2D = PhysicsPointQueryParameters2D.new()
-var _rest_collision: KinematicCollision2D = KinematicCollision2D.new()
+var _shape_query: PhysicsShapeQueryParameters2D = PhysicsShapeQueryParameters2D.new()
+var _shape: CollisionShape2D = null
 
 
 func _ready() -> void:
@@ -58,6 +59,16 @@ func _ready() -> void:
 		var rigid: RigidBody2D = _body
 		rigid.contact_monitor = true
 		rigid.max_contacts_reported = maxi(rigid.max_contacts_reported, 8)
+	for child: Node in _body.get_children():
+		if child is CollisionShape2D and _shape == null:
+			_shape = child
+	if _shape == null:
+		push_warning(
+			(
+				"HapticProbe: no CollisionShape2D on %s; objects resting on it are not felt."
+				% _body.name
+			)
+		)
 	_query.collide_with_areas = true
 	_query.collide_with_bodies = false
 	get_tree().physics_frame.connect(_before_bodies_move)
@@ -94,7 +105,7 @@ func _physics_process(_delta: float) -> void:
 ## pushes impacts for contacts that began this tick.
 func build_frame() -> Dictionary:
 	var scale: float = Haptics.force_scale
-	var above: KinematicCollision2D = _object_above()
+	var above: Array[Dictionary] = _objects_above()
 	var contacts: Array[Dictionary] = []
 	var now_touching: Dictionary[int, bool] = {}
 	for collision: Dictionary in _collisions(above):
@@ -125,7 +136,7 @@ func build_frame() -> Dictionary:
 
 
 # Each entry: collider and normal (from the surface toward the body).
-func _collisions(above: KinematicCollision2D) -> Array[Dictionary]:
+func _collisions(above: Array[Dictionary]) -> Array[Dictionary]:
 	var out: Array[Dictionary] = []
 	if _body is CharacterBody2D:
 		var character: CharacterBody2D = _body
@@ -135,32 +146,57 @@ func _collisions(above: KinematicCollision2D) -> Array[Dictionary]:
 	elif _body is RigidBody2D:
 		var state: PhysicsDirectBodyState2D = PhysicsServer2D.body_get_direct_state(_body.get_rid())
 		for i: int in state.get_contact_count():
-			out.append(
-				{
-					"collider": state.get_contact_collider_object(i),
-					"normal": state.get_contact_local_normal(i),
-				}
+			(
+				out
+				. append(
+					{
+						"collider": state.get_contact_collider_object(i),
+						"normal": state.get_contact_local_normal(i),
+					}
+				)
 			)
-	if above != null:
-		out.append({"collider": above.get_collider(), "normal": above.get_normal()})
+	out.append_array(above)
 	return out
 
 
-# A rigid body touching the top of the body, found by a short test move upward.
-func _object_above() -> KinematicCollision2D:
-	var motion: Vector2 = Vector2.UP * resting_probe_distance
-	if not _body.test_move(_body.global_transform, motion, _rest_collision, 0.08, true):
-		return null
-	if not _rest_collision.get_collider() is RigidBody2D:
-		return null
-	return _rest_collision
-
-
-func _resting_objects(above: KinematicCollision2D, scale: float) -> Array[Dictionary]:
+# Rigid bodies touching the top of the body: the body's shape swept a little upward finds
+# them, then each one is asked alone (all others excluded) for its surface normal, which
+# points from it toward the body. Each entry: collider, normal.
+func _objects_above() -> Array[Dictionary]:
 	var out: Array[Dictionary] = []
-	if above != null:
-		var rigid: RigidBody2D = above.get_collider()
-		out.append({"normal": above.get_normal(), "mass": rigid.mass * scale})
+	if _shape == null:
+		return out
+	_shape_query.shape = _shape.shape
+	_shape_query.transform = _shape.global_transform
+	_shape_query.motion = Vector2.UP * resting_probe_distance
+	_shape_query.collision_mask = _body.collision_mask
+	_shape_query.exclude = [_body.get_rid()]
+	var space: PhysicsDirectSpaceState2D = _body.get_world_2d().direct_space_state
+	var hits: Array[Dictionary] = space.intersect_shape(_shape_query, 8)
+	var all_rids: Array[RID] = [_body.get_rid()]
+	for hit: Dictionary in hits:
+		all_rids.append(hit["rid"])
+	for hit: Dictionary in hits:
+		var collider: Object = hit["collider"]
+		var rigid: RigidBody2D = collider as RigidBody2D
+		if rigid == null:
+			continue
+		var others: Array[RID] = all_rids.duplicate()
+		others.erase(hit["rid"])
+		_shape_query.exclude = others
+		var info: Dictionary = space.get_rest_info(_shape_query)
+		var normal: Vector2 = info.get("normal", Vector2.ZERO)
+		if not normal.is_zero_approx():
+			out.append({"collider": rigid, "normal": normal})
+	return out
+
+
+func _resting_objects(above: Array[Dictionary], scale: float) -> Array[Dictionary]:
+	var out: Array[Dictionary] = []
+	for entry: Dictionary in above:
+		var rigid: RigidBody2D = entry["collider"]
+		if out.size() < 8:
+			out.append({"normal": entry["normal"], "mass": rigid.mass * scale})
 	return out
 
 
@@ -171,11 +207,9 @@ func _water_state(scale: float) -> Dictionary:
 	for hit: Dictionary in space.intersect_point(_query, 8):
 		var area: Object = hit.get("collider")
 		if area != null and &"drag_coefficient" in area and &"inertia_force" in area:
-			return {
-				"inside": true,
-				"drag": float(area.get(&"drag_coefficient")) * scale,
-				"inertia": float(area.get(&"inertia_force")) * scale,
-			}
+			var drag: float = area.get(&"drag_coefficient")
+			var inertia: float = area.get(&"inertia_force")
+			return {"inside": true, "drag": drag * scale, "inertia": inertia * scale}
 	return {"inside": false}
 
 

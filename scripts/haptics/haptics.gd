@@ -141,17 +141,26 @@ func stop() -> void:
 
 ## True while the servo thread renders.
 func is_running() -> bool:
-	return server != null and bool(server.call(&"is_running"))
+	if server == null:
+		return false
+	var running: bool = server.call(&"is_running")
+	return running
 
 
 ## Sends the latest haptic frame (layout in gdextension/src/godot/conversions.h).
 func submit_frame(frame: Dictionary) -> bool:
-	return server != null and bool(server.call(&"submit_frame", frame))
+	if server == null:
+		return false
+	var accepted: bool = server.call(&"submit_frame", frame)
+	return accepted
 
 
 ## Queues an impact transient: direction, speed (m/s) and optionally gain, frequency, decay.
 func push_impact(impact: Dictionary) -> bool:
-	return server != null and bool(server.call(&"push_impact", impact))
+	if server == null:
+		return false
+	var accepted: bool = server.call(&"push_impact", impact)
+	return accepted
 
 
 ## The device's input vector (length ≤ 1); zero without a device.
@@ -180,7 +189,8 @@ func get_max_force() -> float:
 	if server == null:
 		return 0.0
 	var limits: Dictionary = server.call(&"get_device_limits")
-	return float(limits.get("max_force", 0.0))
+	var max_force: float = limits.get("max_force", 0.0)
+	return max_force
 
 
 ## Moves the simulated device's hand to a normalised workspace position.
@@ -242,7 +252,8 @@ func _workspace_radius() -> float:
 	if server == null:
 		return 0.0
 	var limits: Dictionary = server.call(&"get_device_limits")
-	return float(limits.get("workspace_radius", 0.0))
+	var radius: float = limits.get("workspace_radius", 0.0)
+	return radius
 
 
 # Keyboard/gamepad deflection wins; otherwise the mouse's offset from the window centre,

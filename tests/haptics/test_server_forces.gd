@@ -106,7 +106,13 @@ func test_an_impact_is_a_raw_decaying_transient() -> void:
 	_push(Vector2.ZERO, {}, 5)
 	assert_true(
 		server.push_impact(
-			{"direction": Vector2.LEFT, "speed": 2.0, "gain": 0.5, "frequency": 100.0, "decay": 0.02}
+			{
+				"direction": Vector2.LEFT,
+				"speed": 2.0,
+				"gain": 0.5,
+				"frequency": 100.0,
+				"decay": 0.02
+			}
 		)
 	)
 	var peak: float = 0.0
@@ -159,7 +165,9 @@ func test_bad_settings_are_refused_and_the_old_ones_kept() -> void:
 
 
 func test_force_output_never_exceeds_the_device_limit() -> void:
-	var stiff: Dictionary = {"contacts": [{"normal": Vector2.LEFT, "stiffness": 90.0, "damping": 0.0}]}
+	var stiff: Dictionary = {
+		"contacts": [{"normal": Vector2.LEFT, "stiffness": 90.0, "damping": 0.0}]
+	}
 	_push(Vector2(0.1, 0.0), stiff)
 	var limit: float = server.get_device_limits()["max_force"]
 	assert_almost_eq(limit, 3.3, 1e-6)
