@@ -22,7 +22,7 @@ TEST_ARGS ?=
 BENCH_SECONDS ?= 10
 
 .PHONY: play test deps engine build build-release import test-native test-godot lint \
-	export test-export bench sanitize clean distclean
+	export test-export bench sanitize analyze export-study test-analysis clean distclean
 
 ## deps: install missing OS packages (apt-get; sudo when not root)
 deps:
@@ -62,7 +62,7 @@ play: import
 	fi
 
 ## test: every suite; any failure fails the target
-test: import test-native test-godot lint test-export
+test: import test-native test-godot lint test-analysis test-export
 	@echo "make test: all suites passed"
 
 ## test-native: the C++ doctest suite through CTest
@@ -103,6 +103,21 @@ sanitize: deps
 		cmake --build $(BUILD)/sanitize-$$s -j $(JOBS); \
 		ctest --test-dir $(BUILD)/sanitize-$$s --output-on-failure; \
 	done
+
+## analyze: figures, report.md and summary.json of a study (into STUDY/analysis)
+analyze:
+	@if [[ -z "$(STUDY)" ]]; then \
+		echo "usage: make analyze STUDY=<study folder> [ANALYZE_ARGS=--skip-invalid]" >&2; exit 2; fi
+	@tools/analysis/run.sh analyze.py "$(STUDY)" $(ANALYZE_ARGS)
+
+## export-study: every participant of STUDY in one CSV (OUT, default STUDY/all.csv)
+export-study:
+	@if [[ -z "$(STUDY)" ]]; then echo "usage: make export-study STUDY=<folder> [OUT=file.csv]" >&2; exit 2; fi
+	@tools/analysis/run.sh export_csv.py "$(STUDY)" "$(or $(OUT),$(STUDY)/all.csv)"
+
+## test-analysis: the study analysis tool's pytest suite (hand-computed statistics)
+test-analysis:
+	@tools/analysis/run.sh -m pytest tools/analysis/tests -q
 
 ## clean: build outputs (keeps the provisioned engine and Python tools)
 clean:
