@@ -1,63 +1,121 @@
+class_name Main
 extends Node
-## Entry scene: loads the level and, on a machine without a display (or with
-## [code]-- --autopilot[/code]), drives the player with an autopilot for a bounded time,
-## printing one status line per second, then quits with exit code 0.
+## Entry scene: the main menu and the screens it leads to (Play, Maze study, Settings).
+##
+## On a machine without a display, or with [code]-- --autopilot[/code], it skips the menu
+## and plays level 1 under the [Autopilot], printing one status line per second, and quits
+## with exit code 0 at the goal or after [code]--autopilot-seconds=N[/code] (default 5).
 
-## Level to load.
-@export var level_scene: PackedScene = preload("res://scenes/levels/test_room.tscn")
-## How long the autopilot runs before quitting, in seconds (0: forever).
+## The title screen.
+const MENU_SCENE: PackedScene = preload("res://scenes/ui/main_menu.tscn")
+## The settings screen.
+const SETTINGS_SCENE: PackedScene = preload("res://scenes/ui/settings_screen.tscn")
+## The maze study placeholder.
+const MAZE_SCENE: PackedScene = preload("res://scenes/ui/maze_placeholder.tscn")
+## One run of a level.
+const GAME_SCENE: PackedScene = preload("res://scenes/main/game.tscn")
+
+## Whether [method _ready] looks at the display and the command line to start the
+## autopilot (tests turn it off, then drive the screens themselves).
+@export var detect_autopilot: bool = true
+## Game seconds the autopilot runs (0: until the goal); [code]--autopilot-seconds=N[/code].
 @export var autopilot_seconds: float = 5.0
 
-var _level: Node = null
-var _player: Player = null
-var _autopilot: bool = false
-var _elapsed: float = 0.0
-var _next_report: float = 1.0
+var _screen: Node = null
+
+@onready var _background: MenuBackground = $Background
 
 
 func _ready() -> void:
-	_level = level_scene.instantiate()
-	add_child(_level)
-	_player = _level.get_node(^"Player") as Player
+	if not detect_autopilot:
+		show_menu()
+		return
 	var args: PackedStringArray = OS.get_cmdline_user_args()
-	_autopilot = DisplayServer.get_name() == "headless" or args.has("--autopilot")
 	for arg: String in args:
 		if arg.begins_with("--autopilot-seconds="):
 			autopilot_seconds = arg.get_slice("=", 1).to_float()
-	if _autopilot:
-		_player.use_keyboard = false
+	var headless: bool = DisplayServer.get_name() == "headless"
+	if headless or args.has("--autopilot"):
 		print(
 			(
-				"Autopilot on (no display): %s; %d device(s) found"
-				% [Haptics.get_version(), Haptics.list_devices().size()]
+				"Autopilot on (%s): %s; %d device(s) found; %s; level %s"
+				% [
+					"no display" if headless else "--autopilot",
+					_haptics_version(),
+					HapticsLink.list_devices().size(),
+					MainMenu.device_status_text(),
+					Game.default_level_path(),
+				]
 			)
 		)
+		start_game(true)
+	else:
+		show_menu()
 
 
-func _physics_process(delta: float) -> void:
-	if not _autopilot:
-		return
-	_elapsed += delta
-	# Sweep the input around a circle so the body meets every wall and the slope.
-	var angle: float = _elapsed * 0.9
-	_player.input_vector = Vector2(cos(angle), sin(angle * 1.3))
-	if _elapsed >= _next_report:
-		_next_report += 1.0
-		print(_status_line())
-	if autopilot_seconds > 0.0 and _elapsed >= autopilot_seconds:
-		get_tree().quit(0)
+## The screen showing now (a [MainMenu], [SettingsScreen], [MazePlaceholder] or [Game]).
+func get_screen() -> Node:
+	return _screen
 
 
-func _status_line() -> String:
-	var iv: Vector2 = _player.input_vector
-	return (
-		"t=%4.1fs input=(%+.2f, %+.2f) pos=(%4.0f, %4.0f) contacts=%d"
-		% [
-			_elapsed,
-			iv.x,
-			iv.y,
-			_player.position.x,
-			_player.position.y,
-			_player.get_slide_collision_count()
-		]
-	)
+## Shows the title screen.
+func show_menu() -> void:
+	var menu: MainMenu = _switch_to(MENU_SCENE) as MainMenu
+	menu.play_requested.connect(start_game.bind(false))
+	menu.maze_requested.connect(show_maze)
+	menu.settings_requested.connect(show_settings)
+	menu.quit_requested.connect(_on_quit_requested)
+
+
+## Shows the settings screen; Back returns to the title screen.
+func show_settings() -> void:
+	var screen: SettingsScreen = _switch_to(SETTINGS_SCENE) as SettingsScreen
+	screen.closed.connect(show_menu)
+
+
+## Shows the maze study placeholder; Back returns to the title screen.
+func show_maze() -> void:
+	var screen: MazePlaceholder = _switch_to(MAZE_SCENE) as MazePlaceholder
+	screen.closed.connect(show_menu)
+
+
+## Starts a run of the level, under the autopilot when [param with_autopilot].
+func start_game(with_autopilot: bool = false) -> void:
+	var game: Game = GAME_SCENE.instantiate() as Game
+	game.autopilot = with_autopilot
+	game.autopilot_seconds = autopilot_seconds
+	game.menu_requested.connect(show_menu)
+	game.restart_requested.connect(start_game.bind(with_autopilot))
+	game.autopilot_finished.connect(_on_autopilot_finished)
+	_switch_to_node(game)
+
+
+func _switch_to(scene: PackedScene) -> Node:
+	var node: Node = scene.instantiate()
+	_switch_to_node(node)
+	return node
+
+
+func _switch_to_node(node: Node) -> void:
+	get_tree().paused = false
+	if _screen != null:
+		remove_child(_screen)
+		_screen.queue_free()
+	_screen = node
+	_background.visible = not node is Game
+	add_child(node)
+
+
+func _on_autopilot_finished(_reason: String) -> void:
+	get_tree().quit(0)
+
+
+func _on_quit_requested() -> void:
+	get_tree().quit(0)
+
+
+static func _haptics_version() -> String:
+	var haptics: Node = HapticsLink.node()
+	if haptics != null and haptics.has_method(&"get_version"):
+		return str(haptics.call(&"get_version"))
+	return "haptics autoload missing"

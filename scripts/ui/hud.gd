@@ -1,0 +1,185 @@
+class_name Hud
+extends CanvasLayer
+## The in-game overlay: the rendered force as arrows by component around a small avatar
+## glyph (and at the player's screen position), with a colour legend; a scrolling plot of
+## |total force| over the last 5 s; the device name and servo rate; the simulated device's
+## stylus against the hand target; the run's time and items.
+##
+## Every control ignores the mouse, which moves the simulated device's hand target. With
+## [member live] on, the HUD polls the [code]Haptics[/code] autoload each frame; tests turn
+## it off and call [method show_forces] directly.
+
+## Components listed in the legend, in order.
+const LEGEND_ORDER: Array[String] = [
+	"normal", "friction", "weight", "drag", "inertia", "impact", "total"
+]
+## Magnification of the diagram around the avatar glyph: its ring stands for the device's
+## maximum force divided by this (game forces are mostly well below the maximum); the
+## arrows at the player use the plain scale (ring = maximum force).
+const DIAGRAM_ZOOM: float = 2.0
+## Seconds between refreshes of the text labels.
+const LABEL_PERIOD: float = 0.25
+
+## Poll the haptics every frame (off in tests, which feed [method show_forces]).
+@export var live: bool = true
+## Draw the force arrows at the player's screen position too.
+@export var arrows_at_player: bool = true
+
+var _player: Node2D = null
+var _legend_values: Dictionary[String, Label] = {}
+var _total_magnitude: float = 0.0
+var _label_timer: float = 0.0
+
+@onready var _arrows: ForceArrows = %ForceArrows
+@onready var _world_arrows: ForceArrows = %WorldArrows
+@onready var _plot: ForcePlot = %ForcePlot
+@onready var _stylus: StylusWidget = %StylusWidget
+@onready var _legend: VBoxContainer = %Legend
+@onready var _magnitude: Label = %Magnitude
+@onready var _forces_caption: Label = %ForcesCaption
+@onready var _plot_scale: Label = %PlotScale
+@onready var _device_name: Label = %DeviceName
+@onready var _servo: Label = %Servo
+@onready var _control: Label = %Control
+@onready var _time: Label = %TimeValue
+@onready var _items: Label = %ItemsValue
+
+
+func _ready() -> void:
+	_build_legend()
+	_ignore_mouse(self)
+	set_max_force(HapticsLink.get_max_force())
+	set_run_info(0.0, 0, -1)
+	_refresh_labels()
+
+
+func _process(delta: float) -> void:
+	if live:
+		show_forces(HapticsLink.get_forces())
+		_stylus.set_positions(HapticsLink.get_stylus_position(), HapticsLink.get_hand_target())
+		_label_timer -= delta
+		if _label_timer <= 0.0:
+			_label_timer = LABEL_PERIOD
+			_refresh_labels()
+	_plot.advance(delta, _total_magnitude)
+	_follow_player()
+
+
+## Shows a forces [Dictionary] (component → [Vector2] newtons, game axes) as
+## [code]Haptics.get_forces()[/code] returns it: arrows, legend values and |total|.
+func show_forces(forces: Dictionary) -> void:
+	_arrows.set_forces(forces)
+	_world_arrows.set_forces(forces)
+	for component: String in _legend_values:
+		var magnitude: float = HapticsLink.force_of(forces, component).length()
+		_legend_values[component].text = "%.2f N" % magnitude
+	_total_magnitude = HapticsLink.force_of(forces, "total").length()
+	_magnitude.text = "%.2f N" % _total_magnitude
+
+
+## Scales arrows and plot so that [param newtons] (the device's maximum force) fills them.
+func set_max_force(newtons: float) -> void:
+	_arrows.max_force = newtons / DIAGRAM_ZOOM
+	_world_arrows.max_force = newtons
+	_plot.y_max = newtons
+	_plot_scale.text = "top = %.1f N (device max)" % newtons
+	_forces_caption.text = "FORCE ON THE HAND  ·  ring = %.2f N" % _arrows.max_force
+
+
+## Shows the arrows at [param player]'s screen position as well (null to stop).
+func set_player(player: Node2D) -> void:
+	_player = player
+	_follow_player()
+
+
+## Shows the run's elapsed time and items; [param total] below 0 means unknown.
+func set_run_info(seconds: float, collected: int, total: int) -> void:
+	_time.text = GoalScreen.format_time(seconds)
+	_items.text = GoalScreen.format_items(collected, total)
+
+
+## Shows how the player steers (e.g. "haptic device (mouse)", "keyboard", "autopilot").
+func set_control_text(text: String) -> void:
+	_control.text = "control: %s" % text
+
+
+## The arrows drawn around the avatar glyph.
+func get_force_arrows() -> ForceArrows:
+	return _arrows
+
+
+## The arrows drawn at the player.
+func get_world_arrows() -> ForceArrows:
+	return _world_arrows
+
+
+## The |total force| plot.
+func get_plot() -> ForcePlot:
+	return _plot
+
+
+## The stylus / hand target widget.
+func get_stylus_widget() -> StylusWidget:
+	return _stylus
+
+
+## The legend's value label of [param component] (null if unknown).
+func get_legend_value(component: String) -> Label:
+	return _legend_values.get(component, null)
+
+
+func _follow_player() -> void:
+	var follow: bool = arrows_at_player and _player != null and is_instance_valid(_player)
+	_world_arrows.visible = follow
+	if follow:
+		_world_arrows.position = _player.get_global_transform_with_canvas().origin
+
+
+func _refresh_labels() -> void:
+	var device: String = HapticsLink.get_device_name()
+	if not HapticsLink.is_available():
+		device = "No haptics extension"
+	elif device.is_empty():
+		device = "No device open"
+	_device_name.text = device
+	var rate: float = HapticsLink.get_rate_hz()
+	if rate > 0.0:
+		var stats: Dictionary = HapticsLink.get_stats()
+		var p99: float = stats.get("period_p99_ms", 0.0)
+		var realtime: bool = stats.get("realtime", false) == true
+		_servo.text = (
+			"servo %d Hz  ·  p99 %.2f ms%s" % [roundi(rate), p99, "  ·  RT" if realtime else ""]
+		)
+	else:
+		_servo.text = "servo off"
+
+
+func _build_legend() -> void:
+	for component: String in LEGEND_ORDER:
+		var row: HBoxContainer = HBoxContainer.new()
+		row.add_theme_constant_override(&"separation", 8)
+		var swatch: ColorRect = ColorRect.new()
+		swatch.color = ForceArrows.COLORS[component]
+		swatch.custom_minimum_size = Vector2(16, 5)
+		swatch.size_flags_vertical = Control.SIZE_SHRINK_CENTER
+		var name_label: Label = Label.new()
+		name_label.theme_type_variation = &"HudLabel"
+		name_label.text = ForceArrows.LABELS[component]
+		name_label.custom_minimum_size = Vector2(100, 0)
+		var value_label: Label = Label.new()
+		value_label.theme_type_variation = &"HudLabel"
+		value_label.text = "0.00 N"
+		value_label.custom_minimum_size = Vector2(62, 0)
+		value_label.horizontal_alignment = HORIZONTAL_ALIGNMENT_RIGHT
+		row.add_child(swatch)
+		row.add_child(name_label)
+		row.add_child(value_label)
+		_legend.add_child(row)
+		_legend_values[component] = value_label
+
+
+static func _ignore_mouse(node: Node) -> void:
+	if node is Control:
+		(node as Control).mouse_filter = Control.MOUSE_FILTER_IGNORE
+	for child: Node in node.get_children():
+		_ignore_mouse(child)

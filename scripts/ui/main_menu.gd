@@ -1,0 +1,55 @@
+class_name MainMenu
+extends Control
+## The title screen: Play, Maze study, Settings, Quit. Navigable with keyboard or gamepad
+## (the first button takes focus) and clickable with the mouse. It only emits signals; the
+## main scene decides what each one does.
+
+## The player chose Play.
+signal play_requested
+## The player chose Maze study.
+signal maze_requested
+## The player chose Settings.
+signal settings_requested
+## The player chose Quit.
+signal quit_requested
+
+var _status_timer: float = 0.0
+
+## The Play button.
+@onready var play_button: Button = %PlayButton
+## The Maze study button.
+@onready var maze_button: Button = %MazeButton
+## The Settings button.
+@onready var settings_button: Button = %SettingsButton
+## The Quit button.
+@onready var quit_button: Button = %QuitButton
+@onready var _status: Label = %Status
+
+
+func _ready() -> void:
+	play_button.pressed.connect(play_requested.emit)
+	maze_button.pressed.connect(maze_requested.emit)
+	settings_button.pressed.connect(settings_requested.emit)
+	quit_button.pressed.connect(quit_requested.emit)
+	_status.text = device_status_text()
+	UiFocus.grab_later(play_button)
+
+
+func _process(delta: float) -> void:
+	_status_timer -= delta
+	if _status_timer <= 0.0:
+		_status_timer = 0.5
+		_status.text = device_status_text()
+
+
+## One line describing the haptic device: its name and servo rate, or why there is none.
+static func device_status_text() -> String:
+	if not HapticsLink.is_available():
+		return "Haptics extension not loaded: playing without force feedback"
+	var device_name: String = HapticsLink.get_device_name()
+	if device_name.is_empty():
+		return "No haptic device open"
+	var rate: float = HapticsLink.get_rate_hz()
+	if rate > 0.0:
+		return "%s  ·  servo %d Hz" % [device_name, roundi(rate)]
+	return device_name

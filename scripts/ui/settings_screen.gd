@@ -1,0 +1,181 @@
+class_name SettingsScreen
+extends Control
+## Edits a [GameSettings] (the [code]Settings[/code] autoload unless [member settings] is
+## set before the screen enters the tree): device, force scale, smoothing and control mode.
+## Changes apply to the haptics at once; [b]Back[/b] (or [code]ui_cancel[/code]) saves
+## them when anything changed and emits [signal closed].
+
+## The player left the screen.
+signal closed
+
+## Text of the device list's only entry when the extension is missing.
+const NO_EXTENSION_TEXT: String = "No haptics extension: playing without force feedback"
+
+## The settings edited; the [code]Settings[/code] autoload when left null.
+var settings: GameSettings = null
+## Whether to dim what is behind the screen (set when shown over the game).
+var dim_background: bool = false
+
+var _device_ids: PackedStringArray = PackedStringArray()
+var _dirty: bool = false
+var _refreshing: bool = false
+
+## Device choice.
+@onready var device_option: OptionButton = %DeviceOption
+## Force scale, 0–2.
+@onready var force_slider: HSlider = %ForceSlider
+## Smoothing on/off.
+@onready var smoothing_check: CheckButton = %SmoothingCheck
+## Control mode: index 0 device, 1 keyboard.
+@onready var control_option: OptionButton = %ControlOption
+## Restores the defaults.
+@onready var defaults_button: Button = %DefaultsButton
+## Saves and closes.
+@onready var back_button: Button = %BackButton
+@onready var _device_info: Label = %DeviceInfo
+@onready var _force_value: Label = %ForceValue
+@onready var _warning: Label = %Warning
+@onready var _dim: ColorRect = %Dim
+
+
+func _ready() -> void:
+	if settings == null:
+		settings = get_node_or_null(^"/root/Settings") as GameSettings
+	if settings == null:
+		settings = GameSettings.new()
+		settings.load_on_ready = false
+		settings.path = "user://settings_unregistered.cfg"
+		add_child(settings)
+	_dim.visible = dim_background
+	control_option.clear()
+	control_option.add_item("Haptic device (the mouse moves the hand)")
+	control_option.add_item("Keyboard / gamepad")
+	_populate_devices()
+	refresh()
+	device_option.item_selected.connect(_on_device_selected)
+	force_slider.value_changed.connect(_on_force_changed)
+	smoothing_check.toggled.connect(_on_smoothing_toggled)
+	control_option.item_selected.connect(_on_control_selected)
+	defaults_button.pressed.connect(_on_defaults_pressed)
+	back_button.pressed.connect(close)
+	UiFocus.grab_later(device_option)
+
+
+func _unhandled_input(event: InputEvent) -> void:
+	if event.is_action_pressed(&"ui_cancel"):
+		get_viewport().set_input_as_handled()
+		close()
+
+
+## Saves the settings when they changed and emits [signal closed].
+func close() -> void:
+	if _dirty:
+		settings.save_settings()
+		_dirty = false
+	closed.emit()
+
+
+## Shows the current values of [member settings].
+func refresh() -> void:
+	_refreshing = true
+	var index: int = _device_ids.find(settings.device_id)
+	if index >= 0:
+		device_option.select(index)
+	force_slider.value = settings.force_scale
+	_force_value.text = "%.2f×" % settings.force_scale
+	smoothing_check.button_pressed = settings.smoothing_enabled
+	control_option.select(1 if settings.control_mode == GameSettings.CONTROL_KEYBOARD else 0)
+	_show_device_info()
+	_show_warning(settings.last_warning)
+	_refreshing = false
+
+
+## Label of a device entry: the model (or product) and a mark on known haptic devices.
+static func device_label(device: Dictionary) -> String:
+	var model: String = str(device.get("model", ""))
+	if model.is_empty():
+		model = str(device.get("product", ""))
+	if model.is_empty():
+		model = str(device.get("id", "?"))
+	var haptic: bool = device.get("known_haptic", false) == true
+	return ("◆ %s" if haptic else "   %s") % model
+
+
+func _populate_devices() -> void:
+	device_option.clear()
+	_device_ids.clear()
+	var devices: Array[Dictionary] = settings.list_devices()
+	for device: Dictionary in devices:
+		device_option.add_item(device_label(device))
+		_device_ids.append(str(device.get("id", "")))
+	if devices.is_empty():
+		device_option.add_item(NO_EXTENSION_TEXT)
+		device_option.disabled = true
+
+
+func _show_device_info() -> void:
+	var index: int = device_option.selected
+	var devices: Array[Dictionary] = settings.list_devices()
+	if index < 0 or index >= devices.size():
+		_device_info.text = "Force feedback needs the native extension (make build)."
+		return
+	var device: Dictionary = devices[index]
+	var parts: PackedStringArray = PackedStringArray()
+	var product: String = str(device.get("product", ""))
+	if not product.is_empty() and product != str(device.get("model", "")):
+		parts.append(product)
+	parts.append("%s backend" % str(device.get("backend", "?")))
+	var haptic: bool = device.get("known_haptic", false) == true
+	parts.append("◆ known haptic device" if haptic else "not a known haptic device")
+	_device_info.text = "  ·  ".join(parts)
+
+
+func _show_warning(text: String) -> void:
+	_warning.text = text
+	_warning.visible = not text.is_empty()
+
+
+func _changed() -> void:
+	_dirty = true
+	settings.apply()
+	_show_warning(settings.last_warning)
+
+
+func _on_device_selected(index: int) -> void:
+	if _refreshing or index < 0 or index >= _device_ids.size():
+		return
+	settings.last_warning = ""
+	settings.device_id = _device_ids[index]
+	_changed()
+	refresh()
+
+
+func _on_force_changed(value: float) -> void:
+	_force_value.text = "%.2f×" % value
+	if _refreshing:
+		return
+	settings.force_scale = value
+	_changed()
+
+
+func _on_smoothing_toggled(on: bool) -> void:
+	if _refreshing:
+		return
+	settings.smoothing_enabled = on
+	_changed()
+
+
+func _on_control_selected(index: int) -> void:
+	if _refreshing:
+		return
+	settings.control_mode = (
+		GameSettings.CONTROL_KEYBOARD if index == 1 else GameSettings.CONTROL_DEVICE
+	)
+	_changed()
+
+
+func _on_defaults_pressed() -> void:
+	settings.last_warning = ""
+	settings.reset_to_defaults()
+	_changed()
+	refresh()

@@ -1,0 +1,134 @@
+extends TestSuite
+## The HUD fed with forces directly (not polling the haptics): arrow lengths and
+## directions by component, the legend, the cap on long arrows, the mouse left to the game,
+## the arrows following the player, and the stylus widget.
+
+const HUD_SCENE: PackedScene = preload("res://scenes/ui/hud.tscn")
+const MAX_FORCE: float = 3.3
+
+var _hud: Hud = null
+
+
+func before_each() -> void:
+	_hud = HUD_SCENE.instantiate() as Hud
+	_hud.live = false
+	add_child_autofree(_hud)
+	_hud.set_max_force(MAX_FORCE)
+
+
+func test_each_component_becomes_an_arrow_along_its_force() -> void:
+	var arrows: ForceArrows = _hud.get_world_arrows()
+	var full: float = arrows.full_length
+	(
+		_hud
+		. show_forces(
+			{
+				"normal": Vector2(-MAX_FORCE, 0.0),
+				"friction": Vector2(0.0, -MAX_FORCE * 0.25),
+				"weight": Vector2(0.0, MAX_FORCE * 0.5),
+				"drag": Vector2(MAX_FORCE * 0.1, MAX_FORCE * 0.1),
+				"inertia": Vector2(0.0, 0.33),
+				"impact": Vector2(0.0, -1.65),
+				"total": Vector2(-MAX_FORCE, 0.2),
+			}
+		)
+	)
+	assert_almost_eq(arrows.get_arrow("normal"), Vector2(-full, 0.0), 1e-3, "full force, left")
+	assert_almost_eq(arrows.get_arrow("friction"), Vector2(0.0, -full * 0.25), 1e-3)
+	assert_almost_eq(arrows.get_arrow("weight"), Vector2(0.0, full * 0.5), 1e-3, "y down")
+	assert_almost_eq(arrows.get_arrow("drag"), Vector2(full, full) * 0.1, 1e-3)
+	assert_almost_eq(arrows.get_arrow("inertia"), Vector2(0.0, full * 0.1), 1e-3)
+	assert_almost_eq(arrows.get_arrow("impact"), Vector2(0.0, -full * 0.5), 1e-3)
+	assert_almost_eq(arrows.get_arrow("total"), Vector2(-MAX_FORCE, 0.2) * full / MAX_FORCE, 1e-3)
+
+
+func test_the_arrows_at_the_player_show_the_same_forces() -> void:
+	_hud.show_forces({"normal": Vector2(0.0, -1.0)})
+	var world: ForceArrows = _hud.get_world_arrows()
+	assert_almost_eq(world.get_arrow("normal"), Vector2(0.0, -world.full_length / MAX_FORCE), 1e-3)
+
+
+func test_missing_components_draw_nothing_and_unknown_ones_are_ignored() -> void:
+	_hud.show_forces({"weight": Vector2(0.0, 1.0), "mystery": Vector2(5.0, 5.0)})
+	var arrows: ForceArrows = _hud.get_world_arrows()
+	assert_eq(arrows.get_arrow("normal"), Vector2.ZERO)
+	assert_eq(arrows.get_arrow("total"), Vector2.ZERO)
+	assert_eq(arrows.get_arrow("mystery"), Vector2.ZERO)
+	_hud.show_forces({})
+	assert_eq(arrows.get_arrow("weight"), Vector2.ZERO, "a later frame without it clears it")
+
+
+func test_forces_beyond_the_device_maximum_are_capped_but_keep_their_direction() -> void:
+	var arrows: ForceArrows = _hud.get_world_arrows()
+	_hud.show_forces({"impact": Vector2(30.0, -40.0)})
+	var arrow: Vector2 = arrows.get_arrow("impact")
+	assert_almost_eq(arrow.length(), arrows.full_length * arrows.max_length_ratio, 1e-3)
+	assert_almost_eq(arrow.normalized(), Vector2(0.6, -0.8), 1e-4)
+
+
+func test_the_scale_follows_the_device_maximum_force() -> void:
+	_hud.set_max_force(8.0)
+	var arrows: ForceArrows = _hud.get_world_arrows()
+	_hud.show_forces({"normal": Vector2(4.0, 0.0)})
+	assert_almost_eq(arrows.get_arrow("normal"), Vector2(arrows.full_length * 0.5, 0.0), 1e-3)
+	assert_eq(_hud.get_plot().y_max, 8.0)
+
+
+func test_the_legend_shows_each_magnitude() -> void:
+	_hud.show_forces({"normal": Vector2(3.0, 4.0), "total": Vector2(0.0, -1.234)})
+	assert_eq(_hud.get_legend_value("normal").text, "5.00 N")
+	assert_eq(_hud.get_legend_value("friction").text, "0.00 N")
+	assert_eq(_hud.get_legend_value("total").text, "1.23 N")
+	for component: String in Hud.LEGEND_ORDER:
+		assert_not_null(_hud.get_legend_value(component), component)
+
+
+func test_every_hud_control_lets_the_mouse_through() -> void:
+	var blocking: Array[String] = []
+	_collect_blocking(_hud, blocking)
+	assert_eq(blocking, [] as Array[String])
+
+
+func test_the_plot_samples_the_total_magnitude_each_frame() -> void:
+	_hud.show_forces({"total": Vector2(0.0, 2.0)})
+	await wait_process_frames(12)
+	var plot: ForcePlot = _hud.get_plot()
+	assert_gt(plot.buffer.size(), 0)
+	assert_almost_eq(plot.buffer.last(), 2.0, 1e-6)
+
+
+func test_the_world_arrows_sit_on_the_player() -> void:
+	var body: Node2D = Node2D.new()
+	body.position = Vector2(321.0, 123.0)
+	add_child_autofree(body)
+	_hud.set_player(body)
+	await wait_process_frames(2)
+	var world: ForceArrows = _hud.get_world_arrows()
+	assert_true(world.visible)
+	assert_almost_eq(world.position, body.get_global_transform_with_canvas().origin, 0.01)
+	_hud.set_player(null)
+	assert_false(world.visible)
+
+
+func test_the_stylus_widget_places_both_dots() -> void:
+	var widget: StylusWidget = _hud.get_stylus_widget()
+	widget.set_positions(Vector2(0.5, 0.0), Vector2(-1.0, 0.0))
+	var centre: Vector2 = widget.size * 0.5
+	assert_gt(widget.to_local_point(Vector2(0.5, 0.0)).x, centre.x)
+	assert_lt(widget.to_local_point(Vector2(-1.0, 0.0)).x, centre.x)
+	assert_almost_eq(widget.to_local_point(Vector2.ZERO), centre, 1e-4)
+
+
+func test_run_info_shows_time_and_items() -> void:
+	_hud.set_run_info(75.25, 2, 5)
+	var time_label: Label = _hud.find_child("TimeValue", true, false) as Label
+	var items_label: Label = _hud.find_child("ItemsValue", true, false) as Label
+	assert_eq(time_label.text, "01:15.2")
+	assert_eq(items_label.text, "2 / 5")
+
+
+func _collect_blocking(node: Node, out: Array[String]) -> void:
+	if node is Control and (node as Control).mouse_filter != Control.MOUSE_FILTER_IGNORE:
+		out.append(str(node.get_path()))
+	for child: Node in node.get_children():
+		_collect_blocking(child, out)

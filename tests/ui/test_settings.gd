@@ -1,0 +1,134 @@
+extends TestSuite
+## The Settings autoload's persistence: a round trip through a temporary user:// file,
+## defaults for a missing, corrupt or out-of-range file, and the fallback to the simulated
+## device when the saved one is gone. The player's own settings file is never touched.
+
+var _path: String = ""
+
+
+func before_each() -> void:
+	_path = "user://test_settings_%d.cfg" % Time.get_ticks_usec()
+
+
+func after_each() -> void:
+	if FileAccess.file_exists(_path):
+		DirAccess.remove_absolute(_path)
+	# Put the game-wide haptics back as the player's settings say.
+	var settings: GameSettings = get_node_or_null(^"/root/Settings") as GameSettings
+	if settings != null:
+		settings.apply()
+
+
+func test_the_autoload_is_registered_and_uses_the_documented_file() -> void:
+	var settings: GameSettings = get_node_or_null(^"/root/Settings") as GameSettings
+	if not assert_not_null(settings, "a Settings autoload of type GameSettings"):
+		return
+	assert_eq(settings.path, "user://settings.cfg")
+	assert_eq(GameSettings.DEFAULT_PATH, "user://settings.cfg")
+	assert_true(GameSettings.is_test_run(), "the runner's scene is under res://tests/")
+	_assert_defaults(settings)
+
+
+func test_values_survive_a_save_and_a_reload() -> void:
+	var written: GameSettings = _make()
+	written.device_id = "hid:0403:cb48"
+	written.force_scale = 0.65
+	written.smoothing_enabled = false
+	written.control_mode = GameSettings.CONTROL_KEYBOARD
+	assert_eq(written.save_settings(), OK)
+	var read: GameSettings = _make()
+	assert_eq(read.load_settings(), OK)
+	assert_eq(read.device_id, "hid:0403:cb48")
+	assert_almost_eq(read.force_scale, 0.65, 1e-6)
+	assert_false(read.smoothing_enabled)
+	assert_eq(read.control_mode, GameSettings.CONTROL_KEYBOARD)
+	assert_eq(read.last_warning, "")
+
+
+func test_a_missing_file_means_defaults() -> void:
+	var settings: GameSettings = _make()
+	settings.force_scale = 1.7
+	assert_eq(settings.load_settings(), ERR_FILE_NOT_FOUND)
+	_assert_defaults(settings)
+	assert_eq(settings.last_warning, "", "a first start is not worth a warning")
+
+
+func test_a_corrupt_file_is_reported_and_defaults_are_used() -> void:
+	var file: FileAccess = FileAccess.open(_path, FileAccess.WRITE)
+	file.store_string("[haptics\nforce_scale = ((garbage")
+	file.close()
+	var settings: GameSettings = _make()
+	settings.force_scale = 1.7
+	expect_error("ConfigFile parse error")
+	assert_eq(settings.load_settings(), ERR_PARSE_ERROR)
+	_assert_defaults(settings)
+	assert_has(settings.last_warning, "unreadable")
+	assert_has(settings.last_warning, _path)
+
+
+func test_wrong_types_and_out_of_range_values_fall_back() -> void:
+	var file: ConfigFile = ConfigFile.new()
+	file.set_value(GameSettings.SECTION, "device", 42)
+	file.set_value(GameSettings.SECTION, "force_scale", 7.5)
+	file.set_value(GameSettings.SECTION, "smoothing", "yes please")
+	file.set_value(GameSettings.SECTION, "control_mode", "telepathy")
+	assert_eq(file.save(_path), OK)
+	var settings: GameSettings = _make()
+	assert_eq(settings.load_settings(), OK)
+	assert_eq(settings.device_id, GameSettings.SIMULATED_DEVICE)
+	assert_eq(settings.force_scale, GameSettings.FORCE_SCALE_MAX, "clamped to 2")
+	assert_true(settings.smoothing_enabled)
+	assert_eq(settings.control_mode, GameSettings.CONTROL_DEVICE)
+
+
+func test_setters_emit_changed_only_on_a_real_change() -> void:
+	var settings: GameSettings = _make()
+	var count: Array[int] = [0]
+	settings.changed.connect(func() -> void: count[0] += 1)
+	settings.force_scale = 1.0
+	settings.smoothing_enabled = true
+	assert_eq(count[0], 0)
+	settings.force_scale = 0.5
+	settings.control_mode = GameSettings.CONTROL_KEYBOARD
+	assert_eq(count[0], 2)
+
+
+func test_a_saved_device_that_is_gone_falls_back_to_the_simulated_one() -> void:
+	if not HapticsLink.is_available():
+		skip("needs the haptics extension")
+		return
+	var settings: GameSettings = _make()
+	settings.device_id = "usb:dead:beef:unplugged"
+	settings.apply()
+	assert_has(settings.last_warning, "usb:dead:beef:unplugged")
+	assert_eq(settings.device_id, GameSettings.SIMULATED_DEVICE)
+	assert_eq(HapticsLink.get_device_id(), GameSettings.SIMULATED_DEVICE)
+
+
+func test_apply_sets_the_haptics_properties() -> void:
+	if not HapticsLink.is_available():
+		skip("needs the haptics extension")
+		return
+	var settings: GameSettings = _make()
+	settings.force_scale = 0.4
+	settings.smoothing_enabled = false
+	settings.control_mode = GameSettings.CONTROL_KEYBOARD
+	settings.apply()
+	assert_almost_eq(float(Haptics.force_scale), 0.4, 1e-6)
+	assert_false(Haptics.smoothing_enabled)
+	assert_eq(Haptics.control_mode, &"keyboard")
+
+
+func _make() -> GameSettings:
+	var settings: GameSettings = GameSettings.new()
+	settings.load_on_ready = false
+	settings.path = _path
+	add_child_autofree(settings)
+	return settings
+
+
+func _assert_defaults(settings: GameSettings) -> void:
+	assert_eq(settings.device_id, GameSettings.SIMULATED_DEVICE)
+	assert_eq(settings.force_scale, 1.0)
+	assert_true(settings.smoothing_enabled)
+	assert_eq(settings.control_mode, GameSettings.CONTROL_DEVICE)
