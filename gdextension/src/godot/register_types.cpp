@@ -2,6 +2,7 @@
 // the scene level (they use scene-level types such as Dictionary only through Variants,
 // but their users live in scenes).
 #include "godot/class_db.h"
+#include "godot/durable_file_binding.h"
 #include "godot/haptics_server.h"
 #include "godot/interface.h"
 
@@ -12,6 +13,7 @@ void initialize(void * /*p_userdata*/, GDExtensionInitializationLevel p_level) {
 		return;
 	}
 	gd::register_class<haptics::godot::HapticsServer>("HapticsServer", "RefCounted");
+	gd::register_class<haptics::godot::DurableFile>("DurableFile", "RefCounted");
 }
 
 void deinitialize(void * /*p_userdata*/, GDExtensionInitializationLevel p_level) {

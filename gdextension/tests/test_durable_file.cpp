@@ -1,0 +1,84 @@
+// Durable writes on a real file system: bytes on disk, never overwritten, folders created.
+#include <doctest/doctest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "storage/durable_file.h"
+
+using namespace haptics;
+
+namespace {
+
+std::string make_temp_dir() {
+	char pattern[] = "/tmp/haptics-durable-XXXXXX";
+	const char *dir = ::mkdtemp(pattern);
+	REQUIRE(dir != nullptr);
+	return dir;
+}
+
+std::string read_file(const std::string &p_path) {
+	std::ifstream in(p_path, std::ios::binary);
+	std::stringstream contents;
+	contents << in.rdbuf();
+	return contents.str();
+}
+
+} // namespace
+
+TEST_CASE("durable_append: creates, then appends without touching earlier bytes") {
+	const std::string dir = make_temp_dir();
+	const std::string path = dir + "/ratings.csv";
+	REQUIRE(durable_append(path, "header\n").ok());
+	REQUIRE(durable_append(path, "a,1\n").ok());
+	REQUIRE(durable_append(path, "b,2\n").ok());
+	CHECK(read_file(path) == "header\na,1\nb,2\n");
+	bool complete = false;
+	REQUIRE(check_complete_lines(path, complete).ok());
+	CHECK(complete);
+}
+
+TEST_CASE("check_complete_lines: a record cut short is detected") {
+	const std::string dir = make_temp_dir();
+	const std::string path = dir + "/trials.csv";
+	REQUIRE(durable_append(path, "header\nrow,1\nrow,").ok());
+	bool complete = true;
+	REQUIRE(check_complete_lines(path, complete).ok());
+	CHECK_FALSE(complete);
+	CHECK_FALSE(check_complete_lines(dir + "/missing.csv", complete).ok());
+}
+
+TEST_CASE("durable_write: never overwrites unless asked, and replaces atomically") {
+	const std::string dir = make_temp_dir();
+	const std::string path = dir + "/participant.json";
+	REQUIRE(durable_write(path, "{\"v\":1}", false).ok());
+	const Status refused = durable_write(path, "{\"v\":2}", false);
+	CHECK_FALSE(refused.ok());
+	CHECK(std::string(refused.message()).find("never overwritten") != std::string::npos);
+	CHECK(read_file(path) == "{\"v\":1}");
+	REQUIRE(durable_write(path, "{\"v\":3}", true).ok());
+	CHECK(read_file(path) == "{\"v\":3}");
+	struct stat info {};
+	CHECK(::stat((path + ".tmp").c_str(), &info) != 0); // no temporary left behind
+}
+
+TEST_CASE("make_directories: nested folders, existing ones fine, errors named") {
+	const std::string dir = make_temp_dir();
+	REQUIRE(make_directories(dir + "/study/P01/telemetry").ok());
+	REQUIRE(make_directories(dir + "/study/P01/telemetry").ok());
+	REQUIRE(durable_append(dir + "/study/P01/telemetry/x.csv", "t\n").ok());
+	REQUIRE(durable_append(dir + "/file", "x").ok());
+	const Status blocked = make_directories(dir + "/file/sub");
+	CHECK_FALSE(blocked.ok());
+	CHECK(std::string(blocked.message()).find("file/sub") != std::string::npos);
+}
+
+TEST_CASE("durable_append: an unwritable place is a clear error") {
+	const Status status = durable_append("/proc/haptics-cannot-write-here", "x");
+	CHECK_FALSE(status.ok());
+	CHECK(std::string(status.message()).find("/proc/haptics-cannot-write-here") != std::string::npos);
+}
