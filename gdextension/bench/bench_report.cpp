@@ -82,8 +82,58 @@ void print_report(const LoopResult &p_deadline, const LoopResult &p_naive, const
 			static_cast<unsigned long long>(p_naive.telemetry_drained));
 }
 
-bool write_json(const std::string &p_path, const LoopResult &p_deadline, const LoopResult &p_naive,
-		const std::vector<MicroResult> &p_micro) {
+void print_proxy_report(const std::vector<ProxyBenchResult> &p_proxy) {
+	std::printf("\nFinite proxy update cost (per update; grid vs brute force, same run, same paths)\n");
+	std::printf("%8s %6s %9s %10s %10s %11s %11s %9s %9s %7s %8s %s\n", "walls", "path", "grid", "grid p50",
+			"grid p99", "brute p50", "brute p99", "p50 x", "p99 x", "sweeps", "contact", "same path");
+	for (const ProxyBenchResult &r : p_proxy) {
+		char grid[32];
+		std::snprintf(grid, sizeof(grid), "%dx%d", r.grid_columns, r.grid_rows);
+		std::printf("%8zu %6s %9s %7.0f ns %7.0f ns %8.0f ns %8.0f ns %8.1fx %8.1fx %7.2f %7.0f%% %s\n", r.segments,
+				r.path.c_str(), grid, r.grid_p50_ns, r.grid_p99_ns, r.brute_p50_ns, r.brute_p99_ns,
+				r.brute_p50_ns / r.grid_p50_ns, r.brute_p99_ns / r.grid_p99_ns, r.mean_sweeps, 100.0 * r.contact_fraction,
+				r.identical ? "yes" : "NO");
+	}
+	for (const char *path : { "sweep", "local" }) {
+		const ProxyBenchResult *fewest = nullptr;
+		const ProxyBenchResult *most = nullptr;
+		for (const ProxyBenchResult &r : p_proxy) {
+			if (r.path == path) {
+				fewest = fewest ? fewest : &r;
+				most = &r;
+			}
+		}
+		if (fewest && most != fewest) {
+			std::printf("%s path, p50 at %zu walls / p50 at %zu walls: grid %.2f (flat = 1), brute force %.1f\n", path,
+					most->segments, fewest->segments, most->grid_p50_ns / fewest->grid_p50_ns,
+					most->brute_p50_ns / fewest->brute_p50_ns);
+		}
+	}
+}
+
+namespace {
+
+void write_proxy_array(std::ofstream &r_out, const std::vector<ProxyBenchResult> &p_proxy) {
+	r_out << "[";
+	for (size_t p = 0; p < p_proxy.size(); ++p) {
+		const ProxyBenchResult &r = p_proxy[p];
+		r_out << (p ? ",\n    " : "\n    ") << "{\"segments\": " << r.segments << ", \"path\": \"" << r.path
+			  << "\", \"grid_cells\": [" << r.grid_columns << ", " << r.grid_rows << "]"
+			  << ", \"grid_ns\": {\"p50\": " << r.grid_p50_ns << ", \"p99\": " << r.grid_p99_ns
+			  << ", \"max\": " << r.grid_max_ns << "}, \"brute_force_ns\": {\"p50\": " << r.brute_p50_ns
+			  << ", \"p99\": " << r.brute_p99_ns << ", \"max\": " << r.brute_max_ns << "}"
+			  << ", \"ratio_brute_over_grid\": {\"p50\": " << r.brute_p50_ns / r.grid_p50_ns
+			  << ", \"p99\": " << r.brute_p99_ns / r.grid_p99_ns << "}, \"mean_sweeps\": " << r.mean_sweeps
+			  << ", \"contact_fraction\": " << r.contact_fraction
+			  << ", \"identical_paths\": " << (r.identical ? "true" : "false") << "}";
+	}
+	r_out << "]";
+}
+
+} // namespace
+
+bool write_json(const std::string &p_path, const LoopResult *p_deadline_loop, const LoopResult *p_naive_loop,
+		const std::vector<MicroResult> &p_micro, const std::vector<ProxyBenchResult> &p_proxy) {
 	std::error_code error;
 	const std::filesystem::path path(p_path);
 	if (path.has_parent_path()) {
@@ -94,6 +144,14 @@ bool write_json(const std::string &p_path, const LoopResult &p_deadline, const L
 		std::fprintf(stderr, "cannot write %s\n", p_path.c_str());
 		return false;
 	}
+	if (p_deadline_loop == nullptr || p_naive_loop == nullptr) {
+		out << "{\n  \"proxy\": ";
+		write_proxy_array(out, p_proxy);
+		out << "\n}\n";
+		return static_cast<bool>(out);
+	}
+	const LoopResult &p_deadline = *p_deadline_loop;
+	const LoopResult &p_naive = *p_naive_loop;
 	const auto loop = [&out](const LoopResult &p_result) {
 		const ServoStats &s = p_result.stats;
 		out << "{\"scheduler\": \"" << scheduler_kind_name(s.scheduler) << "\", \"priority\": " << s.realtime_priority
@@ -134,7 +192,9 @@ bool write_json(const std::string &p_path, const LoopResult &p_deadline, const L
 		out << (m ? ", " : "") << "{\"name\": \"" << p_micro[m].name << "\", \"median\": " << p_micro[m].median_ns
 			<< ", \"p99\": " << p_micro[m].p99_ns << "}";
 	}
-	out << "]\n}\n";
+	out << "],\n  \"proxy\": ";
+	write_proxy_array(out, p_proxy);
+	out << "\n}\n";
 	return static_cast<bool>(out);
 }
 

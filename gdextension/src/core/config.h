@@ -59,11 +59,44 @@ struct TelemetryConfig {
 	bool enabled = true;
 };
 
+// Which renderer the servo runs. Both go through the same safety stage.
+enum class RenderMode : int32_t {
+	// The paper's method: acceleration control, forces from the frame's contacts.
+	MOVEMENT = 0,
+	// Position control against the maze's walls: a finite proxy (finite_proxy.h) in the
+	// geometry set with set_constraint_geometry, F = k_c (proxy - device). The game still
+	// submits a frame every physics tick (contacts may be empty): it is the watchdog's
+	// heartbeat, and the clock of the FRAME_RATE proxy.
+	CONSTRAINT = 1,
+};
+
+enum class ProxyUpdate : int32_t {
+	SERVO_RATE = 0, // The proxy moves every servo tick (1 kHz): the product.
+	// The proxy moves only on ticks that pick up a new frame (50 Hz), as in the paper's
+	// study; between frames it is held and the force still follows the device at the servo
+	// rate.
+	FRAME_RATE = 1,
+};
+
+struct ConstraintConfig {
+	// k_c, N/m, [0, 5000]. Keep it at or below the device's max_stiffness_n_per_m (the
+	// force is clamped by the safety stage either way).
+	double stiffness_n_per_m = 300.0;
+	// Radius of the proxy disc in MAZE units (the avatar's collision radius), [1e-6, 1e6].
+	// Changing it re-places the proxy (see FiniteProxy::reset).
+	double proxy_radius = 8.0;
+	ProxyUpdate update = ProxyUpdate::SERVO_RATE;
+	// Sweeps per proxy update, [1, 16]: a corner needs 2-3, a dead end 3-4.
+	uint32_t max_iterations = 6;
+};
+
 struct RenderConfig {
 	ForceModelConfig force_model;
 	SmoothingConfig smoothing;
 	SafetyConfig safety;
 	TelemetryConfig telemetry;
+	RenderMode render_mode = RenderMode::MOVEMENT;
+	ConstraintConfig constraint;
 };
 
 static_assert(std::is_trivially_copyable_v<RenderConfig>);

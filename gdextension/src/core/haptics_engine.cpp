@@ -55,6 +55,7 @@ struct HapticsEngine::Impl {
 		manual_session = false;
 		// Stale impacts must not fire in a burst when rendering resumes.
 		channels.impacts.clear();
+		channels.geometry.collect();
 	}
 };
 
@@ -198,6 +199,7 @@ Status HapticsEngine::step(double p_dt_s) {
 		impl_->manual_fault = io;
 		return device_io_status(io, impl_->device->name());
 	}
+	impl_->channels.geometry.collect(); // This thread is the servo here: free what it retired.
 	return Status::success();
 }
 
@@ -216,6 +218,8 @@ Status HapticsEngine::submit_frame(const Frame &p_frame) {
 		return valid;
 	}
 	impl_->channels.frame.store(p_frame);
+	// At 50 Hz: frees walls the servo has replaced, so the next swap is never held up.
+	impl_->channels.geometry.collect();
 	return Status::success();
 }
 
@@ -330,6 +334,36 @@ Status HapticsEngine::set_workspace_radius(double p_radius_m) {
 
 const RenderConfig &HapticsEngine::config() const {
 	return impl_->config;
+}
+
+Status HapticsEngine::set_render_mode(RenderMode p_mode) {
+	RenderConfig config = impl_->config;
+	config.render_mode = p_mode;
+	return impl_->publish_config(config);
+}
+
+RenderMode HapticsEngine::render_mode() const {
+	return impl_->config.render_mode;
+}
+
+Status HapticsEngine::configure_constraint(const ConstraintConfig &p_config) {
+	RenderConfig config = impl_->config;
+	config.constraint = p_config;
+	return impl_->publish_config(config);
+}
+
+Status HapticsEngine::set_constraint_geometry(const Segment2 *p_segments, size_t p_count, const MazeMapping &p_mapping) {
+	std::unique_ptr<ConstraintGeometry> geometry;
+	const Status built = ConstraintGeometry::build(p_segments, p_count, p_mapping, BroadPhase::UNIFORM_GRID, geometry);
+	if (!built) {
+		return built;
+	}
+	impl_->channels.geometry.publish(std::move(geometry));
+	return Status::success();
+}
+
+Vec2 HapticsEngine::proxy_position() const {
+	return impl_->channels.output.load().proxy_maze;
 }
 
 } // namespace haptics

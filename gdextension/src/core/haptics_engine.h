@@ -19,15 +19,24 @@
 //   each physics tick:  engine.submit_frame(frame);  engine.push_impact(...) on collisions
 //   each frame:         engine.input_vector(), engine.forces(), engine.drain_telemetry(...)
 //   engine.stop();  engine.close_device();  // also done by the destructor
+//
+// Constraint-based condition (position control against the maze's walls):
+//   at level load:      engine.set_constraint_geometry(walls, count, mapping);
+//                       engine.configure_constraint(config);  engine.set_render_mode(CONSTRAINT);
+//   each physics tick:  engine.submit_frame(frame)  (empty contacts are fine: heartbeat)
+//   each frame:         draw the avatar at engine.proxy_position()
 
 #include "core/config.h"
+#include "core/constraint_geometry.h"
 #include "core/force_model.h"
 #include "core/frame.h"
+#include "core/maze_mapping.h"
 #include "core/servo_loop.h"
 #include "core/servo_pipeline.h"
 #include "core/servo_stats.h"
 #include "core/status.h"
 #include "core/validation.h"
+#include "core/vec2.h"
 #include "core/vec3.h"
 #include "devices/device.h"
 #include "devices/simulated_device.h"
@@ -105,6 +114,26 @@ public:
 	// Radius (m) mapped to |input| = 1; 0 = the device's workspace radius.
 	Status set_workspace_radius(double p_radius_m);
 	const RenderConfig &config() const;
+
+	// --- Constraint-based rendering (god-object / finite proxy) --------------------------
+	// MOVEMENT (default) or CONSTRAINT; any time, also while rendering. Each switch starts
+	// the new renderer from rest (the proxy is re-placed); the slew limit smooths the change.
+	Status set_render_mode(RenderMode p_mode);
+	RenderMode render_mode() const;
+	// k_c (N/m), proxy radius (maze units), proxy update rate (SERVO_RATE = every tick, or
+	// FRAME_RATE = on each new frame, the paper's 50 Hz variant), sweeps per update.
+	Status configure_constraint(const ConstraintConfig &p_config);
+	// The maze's static walls (maze units; polygons as closed chains, see
+	// append_closed_chain) and how the device's workspace maps onto the maze. Validated
+	// (finite, non-degenerate, count <= MAX_CONSTRAINT_SEGMENTS: the message names the
+	// index), copied and indexed here, on this thread; then handed to the servo lock-free,
+	// which switches to it at its next tick. On error the previous geometry stays in force.
+	// p_count == 0 is a maze without walls. Any time, also while rendering.
+	Status set_constraint_geometry(const Segment2 *p_segments, size_t p_count, const MazeMapping &p_mapping);
+	// The proxy after the latest tick, maze units: where to draw the avatar. While the proxy
+	// is not placed (no geometry yet, or the device maps into a wall) this is the goal, the
+	// device mapped into the maze; output().proxy_placed tells which.
+	Vec2 proxy_position() const;
 
 private:
 	struct Impl;

@@ -28,6 +28,9 @@ void ServoPipeline::begin_session(HapticDevice *p_device, double p_dt_s) {
 	filter_.reset();
 	safety_.reset();
 	transients_ = TransientBank{};
+	constraint_.reset();
+	constraint_output_ = ConstraintOutput{};
+	proxy_updates_ = 0;
 
 	// The latest frame, even one submitted before this session, is picked up by the first
 	// tick as if it had just arrived; the watchdog takes over if no newer one follows.
@@ -49,6 +52,12 @@ void ServoPipeline::apply_config(const RenderConfig &p_config, bool p_force_filt
 	// the smoothing itself changed, so tuning a material mid-step keeps the filter's motion.
 	const bool smoothing_changed = p_force_filter || p_config.smoothing.type != config_.smoothing.type ||
 			p_config.smoothing.cutoff_hz != config_.smoothing.cutoff_hz;
+	if (p_config.render_mode != config_.render_mode) {
+		// Each mode starts from rest; the slew limiter smooths the hand-over.
+		constraint_.reset();
+		filter_.reset();
+	}
+	constraint_.configure(p_config.constraint);
 	config_ = p_config;
 	input_radius_m_ = config_.force_model.input_radius_m > 0.0 ? config_.force_model.input_radius_m : limits_.workspace_radius_m;
 	if (smoothing_changed) {
@@ -98,12 +107,16 @@ DeviceIo ServoPipeline::tick(double p_dt_s) {
 	++tick_;
 	time_s_ += p_dt_s;
 	pick_up_inputs();
+	channels_.geometry.acquire(); // Also in MOVEMENT mode, so the game's pending walls are taken.
 
 	const Vec3 input = input_vector(state.position_m, input_radius_m_, config_.force_model.dead_zone);
-	ForceComponents forces = compute_forces(frame_, input, config_.force_model);
+	const bool constraint = config_.render_mode == RenderMode::CONSTRAINT;
+	ForceComponents forces = constraint ? render_constraint(state) : compute_forces(frame_, input, config_.force_model);
 
 	Vec3 smoothed;
-	if (is_finite(forces.continuous)) {
+	if (constraint) {
+		smoothed = forces.continuous; // Not filtered: see the header.
+	} else if (is_finite(forces.continuous)) {
 		smoothed = filter_.process(forces.continuous);
 	} else {
 		filter_.reset(); // Never let a NaN live on in the filter state.
@@ -126,6 +139,18 @@ DeviceIo ServoPipeline::tick(double p_dt_s) {
 	return DeviceIo::OK;
 }
 
+ForceComponents ServoPipeline::render_constraint(const DeviceState &p_state) {
+	const GeometryExchange::Current geometry = channels_.geometry.current();
+	const bool step = config_.constraint.update == ProxyUpdate::SERVO_RATE || new_frame_;
+	constraint_output_ = constraint_.render(geometry.geometry, geometry.generation, p_state.position_m,
+			limits_.workspace_radius_m, step);
+	proxy_updates_ += constraint_output_.stepped ? 1 : 0;
+	ForceComponents forces;
+	forces.normal = constraint_output_.force;
+	forces.continuous = constraint_output_.force;
+	return forces;
+}
+
 void ServoPipeline::publish(const DeviceState &p_state, const Vec3 &p_input, const ForceComponents &p_forces,
 		const SafetyResult &p_safety, bool p_new_frame, bool p_contact) {
 	uint32_t flags = 0;
@@ -136,6 +161,9 @@ void ServoPipeline::publish(const DeviceState &p_state, const Vec3 &p_input, con
 	flags |= p_safety.ramp_gain < 1.0 ? TELEMETRY_FLAG_RAMPING : 0u;
 	flags |= p_safety.non_finite ? TELEMETRY_FLAG_NON_FINITE : 0u;
 	flags |= p_new_frame ? TELEMETRY_FLAG_NEW_FRAME : 0u;
+	const bool constraint = config_.render_mode == RenderMode::CONSTRAINT;
+	flags |= constraint ? TELEMETRY_FLAG_CONSTRAINT_MODE : 0u;
+	flags |= constraint && constraint_output_.active_constraints > 0 ? TELEMETRY_FLAG_PROXY_CONTACT : 0u;
 
 	if (config_.telemetry.enabled) {
 		if (telemetry_countdown_ == 0) {
@@ -164,6 +192,17 @@ void ServoPipeline::publish(const DeviceState &p_state, const Vec3 &p_input, con
 	output.telemetry_drops = telemetry_drops_;
 	output.clamped_ticks = clamped_ticks_;
 	output.non_finite_ticks = non_finite_ticks_;
+	output.render_mode = config_.render_mode;
+	if (constraint) {
+		output.proxy_maze = constraint_output_.proxy;
+		output.goal_maze = constraint_output_.goal;
+		output.proxy_constraints = constraint_output_.active_constraints;
+		output.proxy_placed = constraint_output_.placed;
+	}
+	output.proxy_updates = proxy_updates_;
+	const GeometryExchange::Current geometry = channels_.geometry.current();
+	output.geometry_generation = geometry.generation;
+	output.geometry_segments = geometry.geometry ? static_cast<uint32_t>(geometry.geometry->segment_count()) : 0;
 	channels_.output.store(output);
 }
 

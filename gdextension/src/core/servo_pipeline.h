@@ -2,18 +2,27 @@
 
 // One servo tick, shared by the servo thread and manual step(dt):
 //
-//   device: advance + read  ->  pick up new config / frame, take impacts off the queue
-//   -> input vector -> force model -> smoothing (continuous part) -> transients (raw)
-//   -> safety (slew, watchdog, ramp, finite, clamp) -> device: write
+//   device: advance + read  ->  pick up new config / frame / wall geometry, take impacts
+//   off the queue -> input vector -> force model -> smoothing (continuous part)
+//   -> transients (raw) -> safety (slew, watchdog, ramp, finite, clamp) -> device: write
 //   -> publish output snapshot, push telemetry, record nothing slow.
+//
+// In RenderMode::CONSTRAINT the force model and smoothing are replaced by the constraint
+// renderer (finite proxy against the walls, F = k_c (proxy - device), reported as the
+// `normal` component). It is not low-pass filtered: a filter inside a position-feedback
+// loop adds phase lag, which makes a stiff wall spongy and can make it unstable, and the
+// force is already continuous at the servo rate. Transients and the whole safety stage
+// apply unchanged.
 //
 // ServoChannels is everything the game thread and the servo share; every member is
 // lock-free and allocation-free after construction. The pipeline itself is owned by the
 // servo while it runs and touched by the game thread only while it does not.
 
 #include "core/config.h"
+#include "core/constraint_renderer.h"
 #include "core/force_model.h"
 #include "core/frame.h"
+#include "core/geometry_exchange.h"
 #include "core/safety.h"
 #include "core/seqlock.h"
 #include "core/servo_stats.h"
@@ -48,6 +57,18 @@ struct ServoOutput {
 	uint64_t telemetry_drops = 0;
 	uint64_t clamped_ticks = 0;
 	uint64_t non_finite_ticks = 0;
+	// Constraint renderer (RenderMode::CONSTRAINT); maze units. Before the proxy is placed
+	// (or in MOVEMENT mode) proxy_maze is the goal, i.e. the device mapped into the maze.
+	RenderMode render_mode = RenderMode::MOVEMENT;
+	Vec2 proxy_maze;
+	Vec2 goal_maze;
+	uint32_t proxy_constraints = 0; // Walls holding the proxy: 0 free, 1 sliding, 2+ stopped.
+	bool proxy_placed = false;
+	uint64_t proxy_updates = 0; // Proxy updates this session (1 per tick, or 1 per frame).
+	// The walls the servo holds: how many geometries it has picked up since the engine was
+	// made (a set_constraint_geometry has taken effect once this moves), and their count.
+	uint64_t geometry_generation = 0;
+	uint32_t geometry_segments = 0;
 };
 
 struct ServoChannels {
@@ -58,6 +79,7 @@ struct ServoChannels {
 	SpscQueue<TelemetrySample, TELEMETRY_QUEUE_CAPACITY> telemetry; // Servo -> game.
 	ServoStatsRecorder stats; // Servo -> game.
 	std::atomic<uint64_t> queue_drops{ 0 }; // Impacts refused by a full queue (game side).
+	GeometryExchange geometry; // Game -> servo walls; servo -> game the ones to free.
 };
 
 class ServoPipeline {
@@ -81,6 +103,8 @@ private:
 	void pick_up_inputs();
 	void publish(const DeviceState &p_state, const Vec3 &p_input, const ForceComponents &p_forces,
 			const SafetyResult &p_safety, bool p_new_frame, bool p_contact);
+	// The constraint renderer's forces for this tick (normal and continuous filled).
+	ForceComponents render_constraint(const DeviceState &p_state);
 
 	ServoChannels &channels_;
 	HapticDevice *device_ = nullptr;
@@ -103,6 +127,10 @@ private:
 	SmoothingFilter filter_;
 	TransientBank transients_;
 	SafetyStage safety_;
+
+	ConstraintRenderer constraint_;
+	ConstraintOutput constraint_output_;
+	uint64_t proxy_updates_ = 0;
 
 	uint64_t telemetry_drops_ = 0;
 	uint64_t clamped_ticks_ = 0;

@@ -9,7 +9,7 @@
 //    0       t            servo time since rendering started, s
 //    1..3    input        input vector i, dimensionless
 //    4..6    position     device position, m
-//    7..9    normal       F_n, N
+//    7..9    normal       F_n, N (in RenderMode::CONSTRAINT: k_c (proxy - device))
 //   10..12   friction     F_f, N
 //   13..15   weight       W, N
 //   16..18   drag         water drag, N
@@ -53,6 +53,8 @@ enum TelemetryFlag : uint32_t {
 	TELEMETRY_FLAG_RAMPING = 1u << 4, // Start-up ramp below 1.
 	TELEMETRY_FLAG_NON_FINITE = 1u << 5, // A non-finite value was replaced by zero.
 	TELEMETRY_FLAG_NEW_FRAME = 1u << 6, // This tick picked up a new frame.
+	TELEMETRY_FLAG_CONSTRAINT_MODE = 1u << 7, // RenderMode::CONSTRAINT (force in `normal`).
+	TELEMETRY_FLAG_PROXY_CONTACT = 1u << 8, // The proxy is held by at least one wall.
 };
 
 struct TelemetrySample {

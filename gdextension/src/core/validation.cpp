@@ -1,5 +1,7 @@
 #include "core/validation.h"
 
+#include "core/finite_proxy.h"
+
 #include <cmath>
 #include <cstdio>
 
@@ -144,11 +146,34 @@ Status validate_telemetry_config(const TelemetryConfig &p_config) {
 	return Status::success();
 }
 
+Status validate_render_mode(RenderMode p_mode) {
+	if (p_mode != RenderMode::MOVEMENT && p_mode != RenderMode::CONSTRAINT) {
+		return Status::error(StatusCode::INVALID_ARGUMENT, "render_mode: unknown mode %d", static_cast<int>(p_mode));
+	}
+	return Status::success();
+}
+
+Status validate_constraint_config(const ConstraintConfig &p_config) {
+	HAPTICS_RETURN_IF_ERROR(check_range("constraint.stiffness_n_per_m", p_config.stiffness_n_per_m, 0.0, 5000.0));
+	HAPTICS_RETURN_IF_ERROR(check_range("constraint.proxy_radius", p_config.proxy_radius, 1e-6, 1e6));
+	if (p_config.update != ProxyUpdate::SERVO_RATE && p_config.update != ProxyUpdate::FRAME_RATE) {
+		return Status::error(StatusCode::INVALID_ARGUMENT, "constraint.update: unknown proxy update %d",
+				static_cast<int>(p_config.update));
+	}
+	if (p_config.max_iterations < 1 || p_config.max_iterations > MAX_PROXY_ITERATIONS) {
+		return Status::error(StatusCode::OUT_OF_RANGE, "constraint.max_iterations must be in [1, %u] (got %u)",
+				MAX_PROXY_ITERATIONS, p_config.max_iterations);
+	}
+	return Status::success();
+}
+
 Status validate_render_config(const RenderConfig &p_config) {
 	HAPTICS_RETURN_IF_ERROR(validate_force_model_config(p_config.force_model));
 	HAPTICS_RETURN_IF_ERROR(validate_smoothing_config(p_config.smoothing));
 	HAPTICS_RETURN_IF_ERROR(validate_safety_config(p_config.safety));
-	return validate_telemetry_config(p_config.telemetry);
+	HAPTICS_RETURN_IF_ERROR(validate_telemetry_config(p_config.telemetry));
+	HAPTICS_RETURN_IF_ERROR(validate_render_mode(p_config.render_mode));
+	return validate_constraint_config(p_config.constraint);
 }
 
 Status validate_rate(double p_rate_hz) {

@@ -24,6 +24,8 @@ Status validate_force_model_config(const ForceModelConfig &p_config);
 Status validate_smoothing_config(const SmoothingConfig &p_config);
 Status validate_safety_config(const SafetyConfig &p_config);
 Status validate_telemetry_config(const TelemetryConfig &p_config);
+Status validate_render_mode(RenderMode p_mode);
+Status validate_constraint_config(const ConstraintConfig &p_config);
 Status validate_render_config(const RenderConfig &p_config);
 // Servo rate in Hz, [MIN_RATE_HZ, MAX_RATE_HZ].
 Status validate_rate(double p_rate_hz);
