@@ -11,6 +11,8 @@ func before_each() -> void:
 	_room = add_child_autofree(TEST_ROOM.instantiate()) as TestRoom
 	_player = _room.get_node(^"Player") as Player
 	_player.use_keyboard = false
+	# The test steers the body itself, not through the haptic device.
+	(_player.get_node(^"HapticProbe") as HapticProbe).drive_input = false
 
 
 func test_physics_runs_at_fifty_hertz() -> void:
@@ -28,7 +30,9 @@ func test_input_accelerates_the_body_up_to_its_top_speed() -> void:
 
 func test_steering_right_stops_at_the_right_wall() -> void:
 	var bumps: Array[Vector2] = []
-	_room.player_bumped.connect(func(normal: Vector2, _speed: float) -> void: bumps.append(normal))
+	_room.player_bumped.connect(
+		func(_collider: Object, normal: Vector2, _speed: float) -> void: bumps.append(normal)
+	)
 	_player.input_vector = Vector2.RIGHT
 	await wait_physics_frames(250)
 	# Outline wall centre line is x = 1240, drawn 8 px wide; the body's radius is 18.

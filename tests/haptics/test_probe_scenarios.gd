@@ -20,13 +20,14 @@ func before_each() -> void:
 	assert_true(server.set_config("safety", {"startup_ramp": 0.0}))
 	room = TEST_ROOM.instantiate() as TestRoom
 	player = room.get_node(^"Player") as Player
-	probe = HapticProbe.new()
+	# The player scene's own probe, pointed at this test's manually stepped server before
+	# it enters the tree.
+	probe = player.get_node(^"HapticProbe") as HapticProbe
 	probe.server = server
 	var material: HapticMaterial = HapticMaterial.new()
 	material.stiffness = K
 	material.damping = B
 	probe.default_material = material
-	player.add_child(probe)
 	add_child_autofree(room)
 
 
