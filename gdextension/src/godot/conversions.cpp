@@ -198,7 +198,29 @@ bool apply_config_section(const std::string &p_section, const gd::Dictionary &p_
 				}
 			}
 		}
-		if (p_section == "smoothing" && key == "enabled") {
+		if (p_section == "constraint" && key == "stiffness") {
+			handled = reader.read_number("stiffness", r_config.constraint.stiffness_n_per_m);
+		} else if (p_section == "constraint" && key == "proxy_radius") {
+			handled = reader.read_number("proxy_radius", r_config.constraint.proxy_radius);
+		} else if (p_section == "constraint" && key == "max_iterations") {
+			int64_t iterations = r_config.constraint.max_iterations;
+			handled = reader.read_int("max_iterations", iterations);
+			if (handled && (iterations < 1 || iterations > 16)) {
+				r_error = "constraint.max_iterations must be in [1, 16] (got " + std::to_string(iterations) + ")";
+				return false;
+			}
+			r_config.constraint.max_iterations = static_cast<uint32_t>(iterations);
+		} else if (p_section == "constraint" && key == "update") {
+			gd::Variant value;
+			p_values.get(gd::Variant("update"), value);
+			const std::string mode = value.as_string();
+			if (value.get_type() != gd::VariantType::STRING || (mode != "servo" && mode != "frame")) {
+				r_error = "constraint.update must be \"servo\" or \"frame\" (got " + value.stringify() + ")";
+				return false;
+			}
+			r_config.constraint.update = mode == "servo" ? ProxyUpdate::SERVO_RATE : ProxyUpdate::FRAME_RATE;
+			handled = true;
+		} else if (p_section == "smoothing" && key == "enabled") {
 			bool enabled = r_config.smoothing.type != SmoothingType::OFF;
 			handled = reader.read_bool("enabled", enabled);
 			r_config.smoothing.type = enabled ? SmoothingType::BUTTERWORTH2 : SmoothingType::OFF;
@@ -224,7 +246,7 @@ bool apply_config_section(const std::string &p_section, const gd::Dictionary &p_
 gd::Dictionary config_to_dictionary(const RenderConfig &p_config) {
 	RenderConfig config = p_config;
 	gd::Dictionary sections;
-	for (const char *section : { "force_model", "smoothing", "safety", "telemetry" }) {
+	for (const char *section : { "force_model", "smoothing", "safety", "telemetry", "constraint" }) {
 		gd::Dictionary values;
 		for (const NumberField &field : NUMBER_FIELDS) {
 			if (std::string(field.section) == section) {
@@ -236,10 +258,74 @@ gd::Dictionary config_to_dictionary(const RenderConfig &p_config) {
 		} else if (std::string(section) == "telemetry") {
 			values.set("enabled", config.telemetry.enabled);
 			values.set("decimation", static_cast<int64_t>(config.telemetry.decimation));
+		} else if (std::string(section) == "constraint") {
+			values.set("stiffness", config.constraint.stiffness_n_per_m);
+			values.set("proxy_radius", config.constraint.proxy_radius);
+			values.set("max_iterations", static_cast<int64_t>(config.constraint.max_iterations));
+			values.set("update", config.constraint.update == ProxyUpdate::SERVO_RATE ? "servo" : "frame");
 		}
 		sections.set(section, values.variant());
 	}
 	return sections;
+}
+
+bool segments_from_points(const gd::PackedVector2Array &p_points, std::vector<Segment2> &r_segments,
+		std::string &r_error) {
+	const int64_t count = p_points.size();
+	if (count % 2 != 0) {
+		r_error = "segments: " + std::to_string(count) + " points; walls are point pairs, so it must be even";
+		return false;
+	}
+	const gd::Vector2 *points = p_points.ptr();
+	r_segments.clear();
+	r_segments.reserve(static_cast<size_t>(count / 2));
+	for (int64_t i = 0; i + 1 < count; i += 2) {
+		r_segments.push_back({ { points[i].x, points[i].y }, { points[i + 1].x, points[i + 1].y } });
+	}
+	return true;
+}
+
+bool mapping_from_dictionary(const gd::Dictionary &p_dictionary, MazeMapping &r_mapping,
+		std::string &r_error) {
+	MazeMapping mapping;
+	DictionaryReader reader(p_dictionary, "mapping");
+	gd::Vector2 maze_min;
+	gd::Vector2 maze_max;
+	gd::Vector2 centre;
+	if (!reader.only_keys({ "maze_min", "maze_max", "workspace", "half_extent", "centre" }) ||
+			!reader.read_vector2("maze_min", maze_min, true) || !reader.read_vector2("maze_max", maze_max, true) ||
+			!reader.read_number("half_extent", mapping.workspace_half_extent_m) ||
+			!reader.read_vector2("centre", centre)) {
+		r_error = reader.error();
+		return false;
+	}
+	gd::Variant shape;
+	if (p_dictionary.get(gd::Variant("workspace"), shape)) {
+		const std::string name = shape.as_string();
+		if (shape.get_type() != gd::VariantType::STRING || (name != "disc" && name != "square")) {
+			r_error = "mapping.workspace must be \"disc\" or \"square\" (got " + shape.stringify() + ")";
+			return false;
+		}
+		mapping.workspace_shape = name == "disc" ? WorkspaceShape::DISC : WorkspaceShape::SQUARE;
+	}
+	mapping.maze_min = { maze_min.x, maze_min.y };
+	mapping.maze_max = { maze_max.x, maze_max.y };
+	mapping.maze_y_down = true;
+	// The centre is a device-plane point given in game axes like every other vector here.
+	mapping.workspace_centre_m = { centre.x, -static_cast<double>(centre.y) };
+	r_mapping = mapping;
+	return true;
+}
+
+gd::Dictionary proxy_state_to_dictionary(const ServoOutput &p_output) {
+	gd::Dictionary d;
+	d.set("position", gd::Vector2{ static_cast<float>(p_output.proxy_maze.x), static_cast<float>(p_output.proxy_maze.y) });
+	d.set("goal", gd::Vector2{ static_cast<float>(p_output.goal_maze.x), static_cast<float>(p_output.goal_maze.y) });
+	d.set("constraints", static_cast<int64_t>(p_output.proxy_constraints));
+	d.set("placed", p_output.proxy_placed);
+	d.set("updates", static_cast<int64_t>(p_output.proxy_updates));
+	d.set("geometry_segments", static_cast<int64_t>(p_output.geometry_segments));
+	return d;
 }
 
 gd::Vector2 to_game(const Vec3 &p_device) {

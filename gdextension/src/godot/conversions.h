@@ -15,7 +15,11 @@
 
 #include <string>
 
+#include <vector>
+
 #include "core/config.h"
+#include "core/constraint_geometry.h"
+#include "core/maze_mapping.h"
 #include "core/frame.h"
 #include "core/servo_pipeline.h"
 #include "core/servo_stats.h"
@@ -33,6 +37,15 @@ bool impact_from_dictionary(const gd::Dictionary &p_dictionary, ImpactEvent &r_e
 bool apply_config_section(const std::string &p_section, const gd::Dictionary &p_values,
 		RenderConfig &r_config, std::string &r_error);
 gd::Dictionary config_to_dictionary(const RenderConfig &p_config);
+
+// Walls as consecutive point pairs (a0, b0, a1, b1, ...) in maze units (the level's pixels).
+bool segments_from_points(const gd::PackedVector2Array &p_points, std::vector<Segment2> &r_segments,
+		std::string &r_error);
+// { maze_min: Vector2, maze_max: Vector2, workspace: "disc"|"square", half_extent: float m,
+//   centre: Vector2 m }; maze_min and maze_max are required.
+bool mapping_from_dictionary(const gd::Dictionary &p_dictionary, MazeMapping &r_mapping,
+		std::string &r_error);
+gd::Dictionary proxy_state_to_dictionary(const ServoOutput &p_output);
 
 gd::Vector2 to_game(const Vec3 &p_device);
 gd::Dictionary forces_to_dictionary(const ForceComponents &p_forces);

@@ -62,6 +62,10 @@ void HapticsServer::bind_methods(gd::ClassBinder<HapticsServer> &r_binder) {
 			{ gd::Variant(static_cast<int64_t>(TELEMETRY_QUEUE_CAPACITY)) });
 	r_binder.bind_method("get_telemetry_stride", &S::get_telemetry_stride);
 	r_binder.bind_method("get_telemetry_columns", &S::get_telemetry_columns);
+	r_binder.bind_method("set_render_mode", &S::set_render_mode, { "mode" });
+	r_binder.bind_method("get_render_mode", &S::get_render_mode);
+	r_binder.bind_method("set_constraint_geometry", &S::set_constraint_geometry, { "segments", "mapping" });
+	r_binder.bind_method("get_proxy_state", &S::get_proxy_state);
 	r_binder.bind_method("set_config", &S::set_config, { "section", "values" });
 	r_binder.bind_method("get_config", &S::get_config);
 	r_binder.bind_method("get_version", &S::get_version);
@@ -262,9 +266,9 @@ gd::Array HapticsServer::get_telemetry_columns() const {
 
 bool HapticsServer::set_config(const std::string &p_section, const gd::Dictionary &p_values) {
 	if (p_section != "force_model" && p_section != "smoothing" && p_section != "safety" &&
-			p_section != "telemetry") {
+			p_section != "telemetry" && p_section != "constraint") {
 		HAPTICS_ERROR("set_config: unknown section '" + p_section +
-				"' (known: force_model, smoothing, safety, telemetry)");
+				"' (known: force_model, smoothing, safety, telemetry, constraint)");
 		return false;
 	}
 	RenderConfig config = engine_.config();
@@ -282,7 +286,41 @@ bool HapticsServer::set_config(const std::string &p_section, const gd::Dictionar
 	if (p_section == "safety") {
 		return report("set_config", engine_.configure_safety(config.safety));
 	}
+	if (p_section == "constraint") {
+		return report("set_config", engine_.configure_constraint(config.constraint));
+	}
 	return report("set_config", engine_.configure_telemetry(config.telemetry));
+}
+
+bool HapticsServer::set_render_mode(const std::string &p_mode) {
+	if (p_mode != "movement" && p_mode != "constraint") {
+		HAPTICS_ERROR("set_render_mode: unknown mode '" + p_mode + "' (movement or constraint)");
+		return false;
+	}
+	return report("set_render_mode",
+			engine_.set_render_mode(p_mode == "movement" ? RenderMode::MOVEMENT : RenderMode::CONSTRAINT));
+}
+
+std::string HapticsServer::get_render_mode() const {
+	return engine_.render_mode() == RenderMode::MOVEMENT ? "movement" : "constraint";
+}
+
+bool HapticsServer::set_constraint_geometry(const gd::PackedVector2Array &p_segments,
+		const gd::Dictionary &p_mapping) {
+	std::vector<Segment2> segments;
+	MazeMapping mapping;
+	std::string error;
+	if (!segments_from_points(p_segments, segments, error) ||
+			!mapping_from_dictionary(p_mapping, mapping, error)) {
+		HAPTICS_ERROR("set_constraint_geometry: " + error + "; the previous walls stay.");
+		return false;
+	}
+	return report("set_constraint_geometry",
+			engine_.set_constraint_geometry(segments.data(), segments.size(), mapping));
+}
+
+gd::Dictionary HapticsServer::get_proxy_state() const {
+	return proxy_state_to_dictionary(engine_.output());
 }
 
 gd::Dictionary HapticsServer::get_config() const {

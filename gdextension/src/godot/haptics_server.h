@@ -68,7 +68,18 @@ public:
 	int64_t get_telemetry_stride() const;
 	gd::Array get_telemetry_columns() const;
 
-	// --- Configuration --- sections force_model, smoothing, safety, telemetry; only the
+	// --- Constraint-based rendering (position control against a maze's walls) ---
+	// "movement" (the default) or "constraint".
+	bool set_render_mode(const std::string &p_mode);
+	std::string get_render_mode() const;
+	// Walls as point pairs in maze units and how the maze maps onto the workspace
+	// (conversions.h). On error the previous walls stay.
+	bool set_constraint_geometry(const gd::PackedVector2Array &p_segments, const gd::Dictionary &p_mapping);
+	// position (where to draw the avatar), goal (the device in maze units), constraints
+	// (walls holding the proxy), placed, updates, geometry_segments.
+	gd::Dictionary get_proxy_state() const;
+
+	// --- Configuration --- sections force_model, smoothing, safety, telemetry, constraint; only the
 	// keys given change. get_config() returns every section with every key.
 	bool set_config(const std::string &p_section, const gd::Dictionary &p_values);
 	gd::Dictionary get_config() const;
