@@ -218,6 +218,46 @@ func get_stylus_position() -> Vector2:
 	return position / radius
 
 
+## Renderer: "movement" (acceleration control, the default) or "constraint" (position
+## control against walls set with [method set_constraint_geometry]).
+func set_render_mode(mode: String) -> bool:
+	if server == null:
+		return false
+	var accepted: bool = server.call(&"set_render_mode", mode)
+	status_changed.emit()
+	return accepted
+
+
+## The current renderer's name ("" without the extension).
+func get_render_mode() -> String:
+	return str(server.call(&"get_render_mode")) if server != null else ""
+
+
+## Walls for the constraint renderer as point pairs in maze units (pixels), and how the
+## maze maps onto the workspace: {maze_min, maze_max, workspace ("disc"/"square"),
+## half_extent (m, 0 = the device's radius)}.
+func set_constraint_geometry(segments: PackedVector2Array, mapping: Dictionary) -> bool:
+	if server == null:
+		return false
+	var accepted: bool = server.call(&"set_constraint_geometry", segments, mapping)
+	return accepted
+
+
+## The constraint proxy: position (maze units), goal, constraints, placed; empty without
+## the extension.
+func get_proxy_state() -> Dictionary:
+	return server.call(&"get_proxy_state") if server != null else {}
+
+
+## Changes settings of one section (force_model, smoothing, safety, telemetry, constraint);
+## only the keys given change. Refused settings are reported and change nothing.
+func configure(section: String, values: Dictionary) -> bool:
+	if server == null:
+		return false
+	var accepted: bool = server.call(&"set_config", section, values)
+	return accepted
+
+
 ## The extension's version line, or an explanation of why there is none.
 func get_version() -> String:
 	if server == null:
