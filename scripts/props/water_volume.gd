@@ -19,7 +19,7 @@ extends Area2D
 ## surface.
 
 ## Drag coefficient c in F = −c·v, newtons per metre per second of player velocity.
-@export_range(0.0, 100.0, 0.01, "suffix:N·s/m") var drag_coefficient: float = 6.0
+@export_range(0.0, 100.0, 0.01, "suffix:N·s/m") var drag_coefficient: float = 0.8
 ## Constant force along "down" while inside, newtons (negative: felt as lift).
 @export_range(-100.0, 100.0, 0.01, "suffix:N") var inertia_force: float = 0.4
 ## Water density relative to the props' densities: a crate with lower density floats.
