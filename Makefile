@@ -87,13 +87,16 @@ export: import build-release
 test-export: export
 	@tools/test-export.sh
 
-## bench: servo loop vs naive loop, and the force model's tick cost (numbers, not tests)
-bench: deps
+## bench: servo loop vs naive loop, the force model's and the proxy's tick cost, and the
+## game's physics-frame and probe cost (numbers and ratios, not tests; JSON in .bench/)
+bench: import
 	@$(CMAKE_CONFIGURE) -B $(BUILD)/bench -DCMAKE_BUILD_TYPE=Release -DHAPTICS_BUILD_EXTENSION=OFF \
 		-DHAPTICS_BUILD_TESTS=OFF >/dev/null
 	@cmake --build $(BUILD)/bench -j $(JOBS) --target haptics_bench
 	@mkdir -p .bench
 	@$(BUILD)/bench/haptics_bench --seconds $(BENCH_SECONDS) --json .bench/servo.json
+	@$(GODOT) --headless --path . --fixed-fps 50 res://tests/bench/game_bench.tscn -- \
+		--frames=1500 --json=.bench/game.json 2>&1 | grep -vE "leaked|still in use|^ +at: " || true
 
 ## sanitize: the doctest suite under ThreadSanitizer, then AddressSanitizer+UBSan
 sanitize: deps
