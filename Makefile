@@ -96,7 +96,7 @@ bench: import
 	@mkdir -p .bench
 	@$(BUILD)/bench/haptics_bench --seconds $(BENCH_SECONDS) --json .bench/servo.json
 	@$(GODOT) --headless --path . --fixed-fps 50 res://tests/bench/game_bench.tscn -- \
-		--frames=1500 --json=.bench/game.json 2>&1 | grep -vE "leaked|still in use|^ +at: " || true
+		--frames=1500 --json=.bench/game.json
 
 ## sanitize: the doctest suite under ThreadSanitizer, then AddressSanitizer+UBSan
 sanitize: deps

@@ -45,8 +45,9 @@ func _run(with_probe: bool) -> Dictionary:
 			Haptics.submit_frame(probe.build_frame())
 			probe_us.append(float(Time.get_ticks_usec() - before))
 	var wall_s: float = (Time.get_ticks_usec() - start_us) / 1e6
-	level.queue_free()
 	await get_tree().process_frame
+	remove_child(level)
+	level.free()
 	probe_us.sort()
 	var game_s: float = float(_frames) / Engine.physics_ticks_per_second
 	return {
