@@ -50,8 +50,6 @@ struct ProxyBenchResult {
 std::vector<MicroResult> run_micro_benchmarks();
 // Proxy update cost for 100 / 1 000 / 10 000 walls, grid vs brute force.
 std::vector<ProxyBenchResult> run_proxy_benchmarks();
-// A random perfect maze of p_cells x p_cells cells of p_cell units: (p_cells + 1)^2 walls.
-std::vector<Segment2> perfect_maze(int p_cells, double p_cell, uint32_t p_seed);
 
 void print_report(const LoopResult &p_deadline, const LoopResult &p_naive, const std::vector<MicroResult> &p_micro);
 void print_proxy_report(const std::vector<ProxyBenchResult> &p_proxy);

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include "../tests/test_proxy_geometry.h"
 
 namespace haptics::bench {
 
@@ -105,7 +106,7 @@ std::vector<MicroResult> run_micro_benchmarks() {
 	SimulatedDeviceConfig hand;
 	hand.rigid_hand = true;
 	maze_engine.open_simulated_device(hand);
-	const std::vector<Segment2> walls = perfect_maze(99, 10.0, 2024);
+	const std::vector<Segment2> walls = haptics::test::perfect_maze(99, 10.0, 2024);
 	MazeMapping mapping;
 	mapping.maze_max = { 990.0, 990.0 };
 	maze_engine.set_constraint_geometry(walls.data(), walls.size(), mapping);

@@ -26,6 +26,9 @@
 #include <utility>
 #include <vector>
 
+// The same random perfect mazes the proxy tests use.
+#include "../tests/test_proxy_geometry.h"
+
 namespace haptics::bench {
 
 namespace {
@@ -86,68 +89,11 @@ PathRun run_path(const ConstraintGeometry &p_geometry, const MazeTransform &p_tr
 
 } // namespace
 
-std::vector<Segment2> perfect_maze(int p_cells, double p_cell, uint32_t p_seed) {
-	// Iterative randomised depth-first search: every cell reachable, one path between two.
-	const int n = p_cells;
-	std::vector<char> east(static_cast<size_t>(n * n), 1);
-	std::vector<char> north(static_cast<size_t>(n * n), 1);
-	std::vector<char> seen(static_cast<size_t>(n * n), 0);
-	std::mt19937 random(p_seed);
-	std::vector<std::pair<int, int>> stack{ { 0, 0 } };
-	seen[0] = 1;
-	while (!stack.empty()) {
-		const auto [x, y] = stack.back();
-		std::pair<int, int> options[4];
-		int count = 0;
-		for (const auto &[dx, dy] : { std::pair{ 1, 0 }, std::pair{ -1, 0 }, std::pair{ 0, 1 }, std::pair{ 0, -1 } }) {
-			const int nx = x + dx;
-			const int ny = y + dy;
-			if (nx >= 0 && ny >= 0 && nx < n && ny < n && !seen[static_cast<size_t>(nx + ny * n)]) {
-				options[count++] = { nx, ny };
-			}
-		}
-		if (count == 0) {
-			stack.pop_back();
-			continue;
-		}
-		const auto [nx, ny] = options[random() % static_cast<uint32_t>(count)];
-		if (nx != x) {
-			east[static_cast<size_t>(std::min(x, nx) + y * n)] = 0;
-		} else {
-			north[static_cast<size_t>(x + std::min(y, ny) * n)] = 0;
-		}
-		seen[static_cast<size_t>(nx + ny * n)] = 1;
-		stack.push_back({ nx, ny });
-	}
-	std::vector<Segment2> walls;
-	const double size = n * p_cell;
-	for (int i = 0; i < n; ++i) {
-		const double a = i * p_cell;
-		const double b = (i + 1) * p_cell;
-		walls.push_back({ { a, 0.0 }, { b, 0.0 } });
-		walls.push_back({ { a, size }, { b, size } });
-		walls.push_back({ { 0.0, a }, { 0.0, b } });
-		walls.push_back({ { size, a }, { size, b } });
-	}
-	for (int y = 0; y < n; ++y) {
-		for (int x = 0; x < n; ++x) {
-			const double x0 = x * p_cell;
-			const double y0 = y * p_cell;
-			if (x + 1 < n && east[static_cast<size_t>(x + y * n)]) {
-				walls.push_back({ { x0 + p_cell, y0 }, { x0 + p_cell, y0 + p_cell } });
-			}
-			if (y + 1 < n && north[static_cast<size_t>(x + y * n)]) {
-				walls.push_back({ { x0, y0 + p_cell }, { x0 + p_cell, y0 + p_cell } });
-			}
-		}
-	}
-	return walls;
-}
 
 std::vector<ProxyBenchResult> run_proxy_benchmarks() {
 	std::vector<ProxyBenchResult> results;
 	for (const int cells : { 9, 31, 99 }) {
-		const std::vector<Segment2> walls = perfect_maze(cells, CELL, 2024);
+		const std::vector<Segment2> walls = haptics::test::perfect_maze(cells, CELL, 2024);
 		MazeMapping mapping;
 		mapping.maze_max = { cells * CELL, cells * CELL };
 		mapping.workspace_half_extent_m = 0.1;
