@@ -14,8 +14,8 @@ set -euo pipefail
 
 project=$(cd "$(dirname "$0")/.." && pwd)
 requirements="$project/tools/requirements-gdtoolkit.txt"
-venv="$project/.venv/gdtoolkit"
-python=${PYTHON:-python3}
+# shellcheck source=tools/venv.sh
+source "$project/tools/venv.sh"
 
 tool=${1:-}
 case $tool in
@@ -26,26 +26,5 @@ case $tool in
     ;;
 esac
 
-# What the installed virtualenv must match: the requirements and the interpreter chosen.
-# (A venv whose base interpreter vanished has a dangling bin/python: -x catches that.)
-hash=$(sha256sum "$requirements" 2>/dev/null || shasum -a 256 "$requirements")
-wanted="${hash%% *} $python"
-stamp="$venv/.installed"
-
-if [[ ! -x $venv/bin/python || ! -x $venv/bin/$tool || ! -f $stamp || $(<"$stamp") != "$wanted" ]]; then
-  mkdir -p "$project/.venv"
-  # One installer at a time (parallel make jobs); the others wait and then re-check.
-  exec 9>"$project/.venv/gdtoolkit.lock"
-  if command -v flock >/dev/null; then flock 9; fi
-  if [[ ! -x $venv/bin/python || ! -x $venv/bin/$tool || ! -f $stamp || $(<"$stamp") != "$wanted" ]]; then
-    echo "tools/gdtoolkit.sh: installing gdtoolkit into .venv/gdtoolkit" >&2
-    rm -rf "$venv"
-    "$python" -m venv "$venv"
-    "$venv/bin/python" -m pip install --quiet --disable-pip-version-check \
-      --no-input -r "$requirements" >&2
-    echo "$wanted" >"$stamp"
-  fi
-  exec 9>&-
-fi
-
+venv=$(ensure_venv gdtoolkit "$requirements" "$tool")
 exec "$venv/bin/$tool" "$@"

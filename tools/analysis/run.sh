@@ -16,35 +16,15 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 project=$(cd "$here/../.." && pwd)
 requirements="$project/tools/requirements-analysis.txt"
-venv="$project/.venv/analysis"
-python=${PYTHON:-python3}
+# shellcheck source=tools/venv.sh
+source "$project/tools/venv.sh"
 
 if [[ $# -eq 0 ]]; then
   echo "usage: tools/analysis/run.sh SCRIPT.py [ARGS...] | -m MODULE [ARGS...]" >&2
   exit 2
 fi
 
-# What the installed virtualenv must match: the requirements and the interpreter chosen.
-# (A venv whose base interpreter vanished has a dangling bin/python: -x catches that.)
-hash=$(sha256sum "$requirements" 2>/dev/null || shasum -a 256 "$requirements")
-wanted="${hash%% *} $python"
-stamp="$venv/.installed"
-
-if [[ ! -x $venv/bin/python || ! -f $stamp || $(<"$stamp") != "$wanted" ]]; then
-  mkdir -p "$project/.venv"
-  # One installer at a time (parallel make jobs); the others wait and then re-check.
-  exec 9>"$project/.venv/analysis.lock"
-  if command -v flock >/dev/null; then flock 9; fi
-  if [[ ! -x $venv/bin/python || ! -f $stamp || $(<"$stamp") != "$wanted" ]]; then
-    echo "tools/analysis/run.sh: installing the analysis packages into .venv/analysis" >&2
-    rm -rf "$venv"
-    "$python" -m venv "$venv"
-    "$venv/bin/python" -m pip install --quiet --disable-pip-version-check \
-      --no-input -r "$requirements" >&2
-    echo "$wanted" >"$stamp"
-  fi
-  exec 9>&-
-fi
+venv=$(ensure_venv analysis "$requirements")
 
 # No display needed; caches (bytecode, matplotlib's font cache) stay inside the virtualenv
 # so nothing appears in the source tree.
