@@ -32,5 +32,13 @@ fail() { echo "test-export: FAIL: $1"; tail -n 20 "$log"; exit 1; }
 ((status == 0)) || fail "exit status $status"
 grep -q "haptics [0-9.]* (Godot" "$log" || fail "the bundled extension did not load"
 grep -q "^t= 1.0s" "$log" || fail "the autopilot did not run"
-if grep -E "^(ERROR|SCRIPT ERROR)" "$log"; then fail "errors were printed"; fi
+# Debian's release template (not the debug one, and with or without our library) reports
+# every Container child's engine-internal signal connection as missing when the tree is
+# freed: "Attempt to disconnect a nonexistent connection ... callable: ''" (release builds
+# drop callable_mp names, hence the empty callable). That one engine message is set aside;
+# any other error fails the test.
+engine_noise="Attempt to disconnect a nonexistent connection from .*callable: ''\\.$"
+if grep -E "^(ERROR|SCRIPT ERROR)" "$log" | grep -vE "$engine_noise"; then
+  fail "errors were printed"
+fi
 echo "test-export: exported game ran headless, extension loaded, exit 0"
