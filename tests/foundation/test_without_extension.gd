@@ -1,0 +1,17 @@
+extends TestSuite
+## The game without its native library: a separate engine runs a copy of the project with
+## gdextension/ removed. It must parse, warn once, and play (no force feedback).
+
+
+func test_the_game_plays_without_the_extension_and_says_so() -> void:
+	var script: String = ProjectSettings.globalize_path("res://tools/run-without-extension.sh")
+	var output: Array = []
+	var code: int = OS.execute(
+		"bash", [script, "--", "--autopilot", "--autopilot-seconds=2"], output, true
+	)
+	var text: String = "\n".join(output)
+	assert_eq(code, 0, text)
+	assert_has(text, "Haptics extension not loaded: playing without force feedback")
+	assert_has(text, "t= 2.0s", "the level ran under the autopilot")
+	assert_false(text.contains("SCRIPT ERROR"), "no script failed to parse or run")
+	assert_false(text.contains("Parse Error"), "no parse errors")
