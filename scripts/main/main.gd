@@ -10,8 +10,8 @@ extends Node
 const MENU_SCENE: PackedScene = preload("res://scenes/ui/main_menu.tscn")
 ## The settings screen.
 const SETTINGS_SCENE: PackedScene = preload("res://scenes/ui/settings_screen.tscn")
-## The maze study placeholder.
-const MAZE_SCENE: PackedScene = preload("res://scenes/ui/maze_placeholder.tscn")
+## The maze user study.
+const STUDY_SCENE: PackedScene = preload("res://scenes/study/study.tscn")
 ## One run of a level.
 const GAME_SCENE: PackedScene = preload("res://scenes/main/game.tscn")
 
@@ -53,7 +53,7 @@ func _ready() -> void:
 		show_menu()
 
 
-## The screen showing now (a [MainMenu], [SettingsScreen], [MazePlaceholder] or [Game]).
+## The screen showing now (a [MainMenu], [SettingsScreen], [StudyRunner] or [Game]).
 func get_screen() -> Node:
 	return _screen
 
@@ -73,10 +73,10 @@ func show_settings() -> void:
 	screen.closed.connect(show_menu)
 
 
-## Shows the maze study placeholder; Back returns to the title screen.
+## Opens the maze user study; leaving it returns to the title screen.
 func show_maze() -> void:
-	var screen: MazePlaceholder = _switch_to(MAZE_SCENE) as MazePlaceholder
-	screen.closed.connect(show_menu)
+	var study: StudyRunner = _switch_to(STUDY_SCENE) as StudyRunner
+	study.closed.connect(show_menu)
 
 
 ## Starts a run of the level, under the autopilot when [param with_autopilot].

@@ -1,6 +1,6 @@
 extends TestSuite
 ## The main scene's screens, driven as a player would: the title screen's buttons (pressed
-## with pressed.emit()), keyboard focus, Settings and Maze study and back, Play, the pause
+## with pressed.emit()), keyboard focus, Settings and the maze study and back, Play, the pause
 ## menu's Quit to menu, and the goal screen's Play again / Menu.
 
 const MAIN_SCENE: PackedScene = preload("res://scenes/main/main.tscn")
@@ -64,13 +64,16 @@ func test_escape_leaves_the_settings_screen() -> void:
 	assert_true(_main.get_screen() is MainMenu)
 
 
-func test_maze_study_shows_the_placeholder_and_back_returns() -> void:
-	(_main.get_screen() as MainMenu).maze_button.pressed.emit()
-	var screen: MazePlaceholder = _main.get_screen() as MazePlaceholder
-	if not assert_not_null(screen, "Maze study shows its placeholder"):
+func test_maze_study_opens_the_study_and_back_returns_to_the_menu() -> void:
+	var menu: MainMenu = _main.get_screen() as MainMenu
+	menu.maze_button.pressed.emit()
+	var study: StudyRunner = _main.get_screen() as StudyRunner
+	if not assert_not_null(study, "Maze study opens the study"):
 		return
-	screen.back_button.pressed.emit()
-	assert_true(_main.get_screen() is MainMenu)
+	assert_true(study.get_screen() is StartScreen, "the study starts on its start screen")
+	(study.get_screen() as StartScreen).back_button.pressed.emit()
+	await wait_process_frames(2)
+	assert_true(_main.get_screen() is MainMenu, "Back returns to the title screen")
 
 
 func test_quit_asks_to_quit() -> void:

@@ -1,0 +1,303 @@
+class_name ConditionRig
+extends Node
+## Puts one study condition into effect on a [StudyLevel]: the control scheme, the renderer
+## and the forces, through the [code]Haptics[/code] autoload's server.
+## [br][br]
+## [b]none[/b] and [b]movement[/b]: acceleration control; the render mode is
+## [code]movement[/code]; a [StudyProbe] on the player submits the frames with the forces
+## the condition enables (none: [code]Haptics.force_scale[/code] 0, so nothing is felt).
+## [b]constraint[/b]: position control; the level's wall outlines and the [MazeMap] go to
+## the native finite-proxy renderer, the render mode is [code]constraint[/code], and the
+## player becomes a follower drawn where the proxy is (its own physics is off; the probe
+## only sends heartbeat frames). With the simulated device, the mouse (pointing into the
+## maze) or the arrow keys move its hand in this condition.
+## [br][br]
+## Call [method setup] once per level and condition, then [method hold] (avatar frozen, no
+## force: before a trial starts) or [method go] (live), and [method release] before the
+## level goes away or the condition changes. The caller saves and restores the autoload's
+## settings around the study ([method save_haptics], [method restore_haptics]).
+
+## Speed of the simulated hand under the arrow keys in position control, maze units/s.
+const KEY_SPEED: float = 420.0
+## Below this force (newtons) the device counts as settled (see [method is_settled]).
+const SETTLED_FORCE_N: float = 0.005
+
+## The condition in effect ([code]none[/code], [code]movement[/code], [code]constraint[/code]).
+var condition: String = ""
+## Its settings ([method StudyConfig.condition]).
+var settings: Dictionary = {}
+## The level.
+var level: StudyLevel = null
+## The level's avatar.
+var player: Player = null
+## The probe added to the avatar.
+var probe: StudyProbe = null
+## Maze ↔ workspace map (position control; also valid for the others).
+var map: MazeMap = null
+## Whether the condition is live (see [method go]).
+var is_live: bool = false
+## When true a script steers the simulated hand ([method set_hand]); the mouse and keys do
+## not.
+var piloted: bool = false:
+	set(value):
+		piloted = value
+		if level != null:
+			_update_hand_following()
+## Where the mouse points in the level (maze units); the simulated hand follows it in
+## position control. Unset: the level's own idea of the mouse position.
+var pointer: Callable = Callable()
+
+var _server: RefCounted = null
+var _hand_point: Vector2 = Vector2.ZERO
+var _mouse_moved: bool = false
+var _last_proxy: Vector2 = Vector2.ZERO
+
+
+func _ready() -> void:
+	process_physics_priority = -10
+	if Haptics.is_available():
+		_server = Haptics.server
+
+
+## The autoload's settings the study changes, to give back with [method restore_haptics].
+static func save_haptics() -> Dictionary:
+	var saved: Dictionary = {
+		"force_scale": Haptics.force_scale,
+		"smoothing": Haptics.smoothing_enabled,
+		"control_mode": Haptics.control_mode,
+		"hand_follows_input": Haptics.hand_follows_input,
+	}
+	if Haptics.is_available():
+		saved["render_mode"] = str(Haptics.server.call(&"get_render_mode"))
+		var config: Dictionary = Haptics.server.call(&"get_config")
+		saved["telemetry"] = config.get("telemetry", {})
+		saved["constraint"] = config.get("constraint", {})
+	return saved
+
+
+## Gives back what [method save_haptics] saved.
+static func restore_haptics(saved: Dictionary) -> void:
+	if saved.is_empty():
+		return
+	var force_scale: float = saved["force_scale"]
+	var smoothing: bool = saved["smoothing"]
+	var follows: bool = saved["hand_follows_input"]
+	Haptics.force_scale = force_scale
+	Haptics.smoothing_enabled = smoothing
+	Haptics.control_mode = StringName(str(saved["control_mode"]))
+	Haptics.hand_follows_input = follows
+	if Haptics.is_available() and saved.has("render_mode"):
+		Haptics.server.call(&"set_render_mode", str(saved["render_mode"]))
+		Haptics.server.call(&"set_config", "telemetry", saved["telemetry"])
+		Haptics.server.call(&"set_config", "constraint", saved["constraint"])
+
+
+## Whether [param condition_name] is position control.
+static func is_position_control(condition_name: String) -> bool:
+	return condition_name == "constraint"
+
+
+## Prepares [param p_condition] on [param p_level] with [param p_settings]; the avatar is
+## held (see [method hold]). Returns false when the native server refused something.
+func setup(p_level: StudyLevel, p_condition: String, p_settings: Dictionary) -> bool:
+	level = p_level
+	player = level.player
+	condition = p_condition
+	settings = p_settings
+	var radius: float = 0.1
+	if _server != null:
+		var limits: Dictionary = _server.call(&"get_device_limits")
+		radius = limits.get("workspace_radius", 0.1)
+	var half_extent: float = settings.get("half_extent", 0.0)
+	map = MazeMap.new(
+		level.get_bounds(), str(settings.get("workspace", "disc")), half_extent, radius
+	)
+	probe = StudyProbe.new()
+	probe.name = "StudyProbe"
+	probe.configure(settings)
+	player.add_child(probe)
+	player.use_keyboard = false
+	Haptics.control_mode = Haptics.CONTROL_DEVICE
+	_hand_point = level.get_spawn_position()
+	var ok: bool = true
+	if _server != null:
+		ok = _server.call(&"set_config", "telemetry", {"enabled": true, "decimation": 1})
+		if is_position_control(condition):
+			ok = _send_constraint() and ok
+	hold()
+	return ok
+
+
+## Freezes the avatar and renders no force (movement renderer, no contacts, smoothing off
+## so nothing lingers: the next condition starts from exactly zero).
+func hold() -> void:
+	is_live = false
+	_set_render_mode("movement")
+	Haptics.force_scale = 0.0
+	Haptics.smoothing_enabled = false
+	probe.heartbeat_only = true
+	probe.drive_input = false
+	player.set_physics_process(false)
+	player.velocity = Vector2.ZERO
+	player.input_vector = Vector2.ZERO
+	player.physics_interpolation_mode = Node.PHYSICS_INTERPOLATION_MODE_INHERIT
+	_update_hand_following()
+
+
+## Makes the condition live: forces on, the avatar moves.
+func go() -> void:
+	is_live = true
+	var smoothing: bool = settings.get("smoothing", true)
+	Haptics.smoothing_enabled = smoothing
+	if is_position_control(condition):
+		Haptics.force_scale = 1.0
+		_set_render_mode("constraint")
+		probe.heartbeat_only = true
+		probe.drive_input = false
+		player.set_physics_process(false)
+		player.physics_interpolation_mode = Node.PHYSICS_INTERPOLATION_MODE_OFF
+		_last_proxy = player.global_position
+	else:
+		var force_scale: float = settings.get("force_scale", 1.0)
+		Haptics.force_scale = force_scale
+		_set_render_mode("movement")
+		probe.heartbeat_only = false
+		probe.drive_input = true
+		player.set_physics_process(true)
+		player.reset_physics_interpolation()
+	_update_hand_following()
+
+
+## Undoes [method setup]: the probe goes, the avatar is an ordinary body again, the movement
+## renderer is back and the mouse moves the simulated hand again.
+func release() -> void:
+	is_live = false
+	_set_render_mode("movement")
+	if is_instance_valid(probe):
+		probe.queue_free()
+	probe = null
+	if is_instance_valid(player):
+		player.set_physics_process(true)
+		player.physics_interpolation_mode = Node.PHYSICS_INTERPOLATION_MODE_INHERIT
+	if not piloted:
+		Haptics.hand_follows_input = true
+
+
+## Puts the avatar back on the level's start, at rest (acceleration control).
+func respawn() -> void:
+	player.global_position = level.get_spawn_position()
+	player.velocity = Vector2.ZERO
+	player.reset_physics_interpolation()
+
+
+## Where the avatar is, in maze units (in position control: the proxy).
+func avatar_position() -> Vector2:
+	return player.global_position
+
+
+## Proxy state from the server ({} outside position control or without the extension).
+func proxy_state() -> Dictionary:
+	if _server == null or not is_position_control(condition) or not is_live:
+		return {}
+	var state: Dictionary = _server.call(&"get_proxy_state")
+	return state
+
+
+## The normalised hand position a trial starts from: the centre (acceleration control) or
+## the point over the level's start (position control).
+func start_hand() -> Vector2:
+	if is_position_control(condition):
+		return map.hand_of(level.get_spawn_position())
+	return Vector2.ZERO
+
+
+## Whether the device renders (next to) no force: a trial starts only then, so nothing
+## felt before it (a wall at the end of the previous trial) carries over.
+func is_settled() -> bool:
+	var forces: Dictionary = Haptics.get_forces()
+	var total: Vector2 = forces.get("total", Vector2.ZERO)
+	return total.length() < SETTLED_FORCE_N
+
+
+## The device's current normalised position (game axes).
+func hand_position() -> Vector2:
+	return Haptics.get_stylus_position()
+
+
+## Moves the simulated hand to [param normalised] (the scripted participant).
+func set_hand(normalised: Vector2) -> void:
+	Haptics.set_hand_target(normalised)
+
+
+func _process(delta: float) -> void:
+	if level == null or probe == null:
+		return
+	if is_position_control(condition):
+		_drive_simulated_hand(delta)
+		if is_live:
+			_follow_proxy(delta)
+
+
+func _physics_process(delta: float) -> void:
+	if probe != null and is_live and is_position_control(condition):
+		_follow_proxy(delta)
+
+
+func _input(event: InputEvent) -> void:
+	if event is InputEventMouseMotion:
+		_mouse_moved = true
+
+
+# The follower: the avatar is drawn where the proxy is, its velocity estimated for the
+# hull's pose.
+func _follow_proxy(delta: float) -> void:
+	var state: Dictionary = proxy_state()
+	if state.is_empty():
+		return
+	var proxy: Vector2 = state.get("position", player.global_position)
+	player.global_position = proxy
+	if delta > 0.0:
+		player.velocity = player.velocity.lerp((proxy - _last_proxy) / delta, 0.3)
+	_last_proxy = proxy
+
+
+# Position control with the simulated device: the mouse points into the maze, the arrow
+# keys push the hand; the real devices move by themselves.
+func _drive_simulated_hand(delta: float) -> void:
+	if piloted or not Haptics.is_simulated():
+		return
+	var keys: Vector2 = Input.get_vector(&"move_left", &"move_right", &"move_up", &"move_down")
+	if not keys.is_zero_approx():
+		_hand_point += keys * KEY_SPEED * delta
+		_mouse_moved = false
+	elif _mouse_moved:
+		var point: Variant = pointer.call() if pointer.is_valid() else null
+		_hand_point = point if point is Vector2 else level.get_global_mouse_position()
+	var area: Rect2 = map.bounds
+	_hand_point = _hand_point.clamp(area.position, area.end)
+	Haptics.set_hand_target(map.hand_of(_hand_point))
+
+
+func _update_hand_following() -> void:
+	var own_hand: bool = piloted or (is_position_control(condition) and Haptics.is_simulated())
+	Haptics.hand_follows_input = not own_hand
+
+
+func _send_constraint() -> bool:
+	var stiffness: float = settings.get("stiffness", 300.0)
+	var iterations: int = settings.get("max_iterations", 6)
+	var constraint: Dictionary = {
+		"stiffness": stiffness,
+		"proxy_radius": Player.RADIUS,
+		"update": str(settings.get("update", "servo")),
+		"max_iterations": iterations,
+	}
+	var ok: bool = _server.call(&"set_config", "constraint", constraint)
+	var segments: PackedVector2Array = level.get_wall_segments()
+	var sent: bool = _server.call(&"set_constraint_geometry", segments, map.to_dictionary())
+	return ok and sent
+
+
+func _set_render_mode(mode: String) -> void:
+	if _server != null and str(_server.call(&"get_render_mode")) != mode:
+		_server.call(&"set_render_mode", mode)

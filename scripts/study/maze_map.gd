@@ -1,0 +1,66 @@
+class_name MazeMap
+extends RefCounted
+## Position control's map between the maze (level pixels, y down) and the device's
+## workspace, the same affine map the native constraint renderer resolves from the mapping
+## handed to [code]set_constraint_geometry[/code]
+## ([code]gdextension/src/core/maze_mapping.h[/code]): one scale for both axes, chosen so
+## the maze rectangle fits the workspace shape (disc: its diagonal spans the diameter;
+## square: its longer side does), the maze centre on the workspace centre.
+## [br][br]
+## "Hand" positions are normalised like [code]Haptics.set_hand_target[/code]'s: metres over
+## the device's workspace radius, game axes (x right, y down).
+
+## The maze rectangle, maze units.
+var bounds: Rect2 = Rect2(0.0, 0.0, 1.0, 1.0)
+## [code]disc[/code] or [code]square[/code].
+var workspace: String = "disc"
+## Half extent of the workspace the maze maps onto, metres (0: the device's radius).
+var half_extent_m: float = 0.0
+## The device's workspace radius, metres.
+var device_radius_m: float = 0.1
+
+
+func _init(
+	p_bounds: Rect2 = Rect2(0.0, 0.0, 1.0, 1.0),
+	p_workspace: String = "disc",
+	p_half_extent_m: float = 0.0,
+	p_device_radius_m: float = 0.1
+) -> void:
+	bounds = p_bounds
+	workspace = p_workspace
+	half_extent_m = p_half_extent_m
+	device_radius_m = p_device_radius_m
+
+
+## The mapping dictionary [code]HapticsServer.set_constraint_geometry[/code] takes.
+func to_dictionary() -> Dictionary:
+	return {
+		"maze_min": bounds.position,
+		"maze_max": bounds.end,
+		"workspace": workspace,
+		"half_extent": half_extent_m,
+	}
+
+
+## Metres of device travel per maze unit.
+func metres_per_unit() -> float:
+	var half: float = half_extent_m if half_extent_m > 0.0 else device_radius_m
+	var span: float = (
+		bounds.size.length() if workspace == "disc" else maxf(bounds.size.x, bounds.size.y)
+	)
+	return 2.0 * half / maxf(span, 1e-9)
+
+
+## The normalised hand position that puts the device on maze point [param point].
+func hand_of(point: Vector2) -> Vector2:
+	return (point - bounds.get_center()) * metres_per_unit() / maxf(device_radius_m, 1e-9)
+
+
+## The maze point under the normalised hand position [param hand].
+func point_of_hand(hand: Vector2) -> Vector2:
+	return bounds.get_center() + hand * device_radius_m / metres_per_unit()
+
+
+## The maze point of a device position given in metres, game axes.
+func point_of_metres(metres: Vector2) -> Vector2:
+	return bounds.get_center() + metres / metres_per_unit()

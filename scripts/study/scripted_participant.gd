@@ -1,0 +1,131 @@
+class_name ScriptedParticipant
+extends Node
+## Plays a whole study session through the real screens, as a participant and researcher
+## would (fields filled, buttons pressed), for tests and unattended demonstrations. Added as
+## a child of a [StudyRunner] (see its [code]--scripted-participant[/code] option); the
+## runner's [member StudyRunner.autopilot] steers the simulated hand in the levels.
+## Ratings are drawn from a generator seeded with the id, so a run is reproducible.
+
+## Emitted when the session ended (the thank-you is showing).
+signal finished
+
+## Id to start (or resume).
+var participant_id: String = "SCRIPTED"
+## Resume [member participant_id] instead of starting it.
+var resume: bool = false
+## Demographics entered on the start screen.
+var demographics: Dictionary = {
+	"age_band": "20-29",
+	"gender": "undisclosed",
+	"handedness": "right",
+	"hand_used": "left",
+	"gaming_experience": "some",
+}
+## Seconds spent on each demonstration level / method before moving on.
+var practice_seconds: float = 0.4
+## Favourite methods by presentation position (0-based).
+var favourite: PackedInt32Array = PackedInt32Array([2])
+## Free text entered at the end.
+var differences_text: String = "Scripted run: the methods felt different."
+
+var _runner: StudyRunner = null
+var _rng: RandomNumberGenerator = RandomNumberGenerator.new()
+var _practice_steps: int = -1
+var _practice_left: float = 0.0
+
+
+func _ready() -> void:
+	_runner = get_parent() as StudyRunner
+	if _runner == null:
+		push_error("ScriptedParticipant must be a child of a StudyRunner.")
+		return
+	_rng.seed = hash(participant_id)
+	_runner.phase_changed.connect(_on_phase_changed)
+	if _runner.phase == StudyRunner.Phase.START and _runner.get_screen() is StartScreen:
+		_on_phase_changed.call_deferred(StudyRunner.Phase.START)
+
+
+func _on_phase_changed(phase: StudyRunner.Phase) -> void:
+	match phase:
+		StudyRunner.Phase.START:
+			_fill_start.call_deferred()
+		StudyRunner.Phase.PRACTICE:
+			_practise()
+		StudyRunner.Phase.INTRO:
+			_press_start.call_deferred()
+		StudyRunner.Phase.RATING:
+			_rate.call_deferred()
+		StudyRunner.Phase.FINAL:
+			_answer_final.call_deferred()
+		StudyRunner.Phase.DONE:
+			finished.emit()
+
+
+func _fill_start() -> void:
+	var screen: StartScreen = _runner.get_screen() as StartScreen
+	if screen == null:
+		return
+	screen.id_edit.text = participant_id
+	if resume:
+		screen.resume_button.pressed.emit()
+		return
+	for key: String in demographics:
+		screen.set_demographic(key, str(demographics[key]))
+	screen.consent_check.button_pressed = true
+	screen.start_button.pressed.emit()
+
+
+# Tries the next method, then the next level, then says ready, practice_seconds apart.
+func _practise() -> void:
+	_practice_steps = 0
+	_practice_left = practice_seconds
+
+
+func _process(delta: float) -> void:
+	if _practice_steps < 0 or _runner == null or _runner.phase != StudyRunner.Phase.PRACTICE:
+		return
+	_practice_left -= delta
+	if _practice_left > 0.0:
+		return
+	_practice_left = practice_seconds
+	var stage: StudyStage = _runner.get_stage()
+	match _practice_steps:
+		0:
+			stage.next_method_pressed.emit()
+		1:
+			stage.next_level_pressed.emit()
+		_:
+			_practice_steps = -1
+			stage.ready_button.pressed.emit()
+			return
+	_practice_steps += 1
+
+
+func _press_start() -> void:
+	var stage: StudyStage = _runner.get_stage()
+	if _still(stage, StudyRunner.Phase.INTRO):
+		stage.start_button.pressed.emit()
+
+
+func _rate() -> void:
+	var screen: RatingScreen = _runner.get_screen() as RatingScreen
+	if screen == null:
+		return
+	for criterion: String in StudyFormat.CRITERIA:
+		screen.set_rating(
+			criterion, _rng.randi_range(StudyFormat.RATING_MIN, StudyFormat.RATING_MAX)
+		)
+	screen.submit_button.pressed.emit()
+
+
+func _answer_final() -> void:
+	var screen: FinalScreen = _runner.get_screen() as FinalScreen
+	if screen == null:
+		return
+	screen.text_edit.text = differences_text
+	screen.set_favourite(favourite)
+	screen.submit_button.pressed.emit()
+
+
+func _still(stage: StudyStage, phase: StudyRunner.Phase) -> bool:
+	return is_instance_valid(stage) and is_inside_tree() and _runner.phase == phase
