@@ -186,7 +186,7 @@ func _write_json(relative: String, data: Dictionary, replace: bool) -> bool:
 	var path: String = path_of(relative)
 	if not replace and FileAccess.file_exists(path):
 		return _failed("%s exists and is never overwritten" % path)
-	var text: String = JSON.stringify(data, "  ", false) + "\n"
+	var text: String = JSON.stringify(json_ready(data), "  ", false) + "\n"
 	if not _call_bool(&"write", [native_path(path), text, replace]):
 		return _failed("cannot write %s" % path)
 	last_error = ""
@@ -205,3 +205,26 @@ func _failed(message: String) -> bool:
 	if _durable == null:
 		last_error += " (the DurableFile class is missing: haptics extension not loaded)"
 	return false
+
+
+## [param value] with every integral float turned into an int, recursively. Godot's JSON
+## parser reads every number as a float, so a record read back on resume would otherwise
+## be rewritten with "seed": 12345.0, which FORMAT.md's integer fields do not allow.
+static func json_ready(value: Variant) -> Variant:
+	if value is Dictionary:
+		var out: Dictionary = {}
+		var source: Dictionary = value
+		for key: Variant in source:
+			out[key] = json_ready(source[key])
+		return out
+	if value is Array:
+		var items: Array = []
+		var source_items: Array = value
+		for item: Variant in source_items:
+			items.append(json_ready(item))
+		return items
+	if value is float:
+		var number: float = value
+		if is_finite(number) and number == floorf(number) and absf(number) < 9.0e15:
+			return int(number)
+	return value

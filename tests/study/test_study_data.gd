@@ -223,6 +223,20 @@ func test_a_finished_session_replaces_only_participant_json() -> void:
 	assert_false(FileAccess.file_exists(store.path_of("participant.json.tmp")))
 
 
+func test_a_resumed_record_keeps_its_integers() -> void:
+	# A resumed session re-reads participant.json, where Godot's JSON parser turns every
+	# number into a float; writing it back must not produce "seed": 12345.0.
+	var store: StudyStore = StudyStore.new(_root, "P09")
+	assert_true(store.create(_meta("P09")))
+	var reread: Dictionary = Support.json_of(store.path_of("participant.json"))
+	assert_eq(typeof(reread["seed"]), TYPE_FLOAT, "what the parser gives back")
+	reread["finished"] = StudyFormat.timestamp()
+	assert_true(store.replace_participant(reread), store.last_error)
+	var text: String = FileAccess.get_file_as_string(store.path_of("participant.json"))
+	assert_false(text.contains(".0,") or text.contains(".0\n"), text)
+	assert_has(text, '"format_version": 1,')
+
+
 func test_a_scan_finds_where_to_resume() -> void:
 	var store: StudyStore = StudyStore.new(_root, "P03")
 	assert_true(store.create(_meta("P03", ["movement", "none", "constraint"])))
