@@ -63,3 +63,26 @@ static func json_of(path: String) -> Dictionary:
 		var data: Dictionary = parsed
 		return data
 	return {}
+
+
+## A valid participant.json record (FORMAT.md) for participant [param id].
+static func meta(id: String, order: Array = ["none", "movement", "constraint"]) -> Dictionary:
+	return {
+		"format_version": 1,
+		"participant_id": id,
+		"demographics":
+		{
+			"age_band": "20-29",
+			"gender": "male",
+			"handedness": "right",
+			"hand_used": "left",
+			"gaming_experience": "some",
+		},
+		"seed": 1,
+		"condition_order": order,
+		"counterbalancing": "random",
+		"app_version": "test",
+		"extension_version": "test",
+		"started": StudyFormat.timestamp(),
+		"finished": null,
+	}

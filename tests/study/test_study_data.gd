@@ -192,9 +192,9 @@ func test_settings_merge_and_report_bad_values() -> void:
 func test_the_store_writes_each_header_once_and_never_overwrites() -> void:
 	var store: StudyStore = StudyStore.new(_root, "P01")
 	assert_false(store.has_data())
-	assert_true(store.create(_meta("P01")), store.last_error)
+	assert_true(store.create(Support.meta("P01")), store.last_error)
 	assert_true(store.has_data())
-	assert_false(store.create(_meta("P01")), "participant.json is never written twice")
+	assert_false(store.create(Support.meta("P01")), "participant.json is never written twice")
 	assert_has(store.last_error, "never overwritten")
 	assert_true(store.append_rating("none", 0, _ratings(5)), store.last_error)
 	assert_true(store.append_rating("movement", 1, _ratings(7)), store.last_error)
@@ -214,7 +214,7 @@ func test_the_store_writes_each_header_once_and_never_overwrites() -> void:
 
 func test_a_finished_session_replaces_only_participant_json() -> void:
 	var store: StudyStore = StudyStore.new(_root, "P02")
-	var meta: Dictionary = _meta("P02")
+	var meta: Dictionary = Support.meta("P02")
 	assert_true(store.create(meta))
 	meta["finished"] = StudyFormat.timestamp()
 	assert_true(store.replace_participant(meta), store.last_error)
@@ -227,7 +227,7 @@ func test_a_resumed_record_keeps_its_integers() -> void:
 	# A resumed session re-reads participant.json, where Godot's JSON parser turns every
 	# number into a float; writing it back must not produce "seed": 12345.0.
 	var store: StudyStore = StudyStore.new(_root, "P09")
-	assert_true(store.create(_meta("P09")))
+	assert_true(store.create(Support.meta("P09")))
 	var reread: Dictionary = Support.json_of(store.path_of("participant.json"))
 	assert_eq(typeof(reread["seed"]), TYPE_FLOAT, "what the parser gives back")
 	reread["finished"] = StudyFormat.timestamp()
@@ -239,7 +239,7 @@ func test_a_resumed_record_keeps_its_integers() -> void:
 
 func test_a_scan_finds_where_to_resume() -> void:
 	var store: StudyStore = StudyStore.new(_root, "P03")
-	assert_true(store.create(_meta("P03", ["movement", "none", "constraint"])))
+	assert_true(store.create(Support.meta("P03", ["movement", "none", "constraint"])))
 	var state: ParticipantState = ParticipantState.scan(_root, "P03")
 	assert_true(state.can_resume(), "\n".join(state.report_lines()))
 	assert_eq(state.next_step(1)["step"], ParticipantState.Step.PRACTICE, "nothing done yet")
@@ -257,7 +257,7 @@ func test_a_scan_finds_where_to_resume() -> void:
 
 func test_an_interrupted_trial_never_gets_its_index_again() -> void:
 	var store: StudyStore = StudyStore.new(_root, "P04")
-	assert_true(store.create(_meta("P04")))
+	assert_true(store.create(Support.meta("P04")))
 	assert_true(store.append_telemetry("telemetry/none_0.csv", "0,0,0,1,1,0,0,0\n"))
 	assert_true(store.append_trial(_trial("none", 0)))
 	assert_true(store.append_rating("none", 0, _ratings(4)))
@@ -272,7 +272,7 @@ func test_an_interrupted_trial_never_gets_its_index_again() -> void:
 
 func test_a_truncated_or_corrupt_file_is_reported() -> void:
 	var store: StudyStore = StudyStore.new(_root, "P05")
-	assert_true(store.create(_meta("P05")))
+	assert_true(store.create(Support.meta("P05")))
 	assert_true(store.append_rating("none", 0, _ratings(4)))
 	var durable: RefCounted = ClassDB.instantiate(&"DurableFile")
 	var native: String = StudyStore.native_path(store.path_of("ratings.csv"))
@@ -346,28 +346,6 @@ func test_the_maze_map_matches_the_disc_mapping() -> void:
 	assert_almost_eq(map.point_of_hand(map.hand_of(Vector2(10, 20))), Vector2(10, 20), 1e-3)
 	var square: MazeMap = MazeMap.new(Rect2(0.0, 0.0, 300.0, 400.0), "square", 0.05, 0.1)
 	assert_almost_eq(square.metres_per_unit(), 0.1 / 400.0, 1e-9, "the longer side spans 2R")
-
-
-func _meta(id: String, order: Array = ["none", "movement", "constraint"]) -> Dictionary:
-	return {
-		"format_version": 1,
-		"participant_id": id,
-		"demographics":
-		{
-			"age_band": "20-29",
-			"gender": "male",
-			"handedness": "right",
-			"hand_used": "left",
-			"gaming_experience": "some",
-		},
-		"seed": 1,
-		"condition_order": order,
-		"counterbalancing": "random",
-		"app_version": "test",
-		"extension_version": "test",
-		"started": StudyFormat.timestamp(),
-		"finished": null,
-	}
 
 
 func _ratings(value: int) -> Dictionary:

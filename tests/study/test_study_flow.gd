@@ -74,7 +74,7 @@ func test_a_duplicate_id_is_refused() -> void:
 func test_a_truncated_ratings_file_is_reported_at_resume() -> void:
 	var store: StudyStore = StudyStore.new(_root, "P03")
 	var order: Array = ["movement", "none", "constraint"]
-	assert_true(store.create(_meta("P03", order)))
+	assert_true(store.create(Support.meta("P03", order)))
 	assert_true(store.append_telemetry("telemetry/movement_0.csv", "0,0,0,1,1,0,0,0\n"))
 	var trial: TrialResult = TrialResult.new()
 	trial.condition = "movement"
@@ -275,25 +275,3 @@ func _check_with_the_analysis_tool() -> void:
 	assert_eq(summary.get("warnings"), [], "and has no warnings about it")
 	assert_true(FileAccess.file_exists(out.path_join("report.md")))
 	assert_true(FileAccess.file_exists(out.path_join("fig7_total.png")))
-
-
-func _meta(id: String, order: Array) -> Dictionary:
-	return {
-		"format_version": 1,
-		"participant_id": id,
-		"demographics":
-		{
-			"age_band": "20-29",
-			"gender": "male",
-			"handedness": "right",
-			"hand_used": "left",
-			"gaming_experience": "some",
-		},
-		"seed": 1,
-		"condition_order": order,
-		"counterbalancing": "random",
-		"app_version": "test",
-		"extension_version": "test",
-		"started": StudyFormat.timestamp(),
-		"finished": null,
-	}

@@ -180,6 +180,23 @@ const NumberField NUMBER_FIELDS[] = {
 	{ "safety", "watchdog_fade", [](RenderConfig &c) -> double & { return c.safety.watchdog_fade_s; } },
 };
 
+// An integer setting within [p_min, p_max]; false with r_error set when out of range or
+// not an integer (the reader's message).
+bool read_count(DictionaryReader &r_reader, const char *p_key, int64_t p_min, int64_t p_max,
+		uint32_t &r_value, std::string &r_error) {
+	int64_t value = r_value;
+	if (!r_reader.read_int(p_key, value)) {
+		return false;
+	}
+	if (value < p_min || value > p_max) {
+		r_error = r_reader.path() + "." + p_key + " must be in [" + std::to_string(p_min) + ", " +
+				std::to_string(p_max) + "] (got " + std::to_string(value) + ")";
+		return false;
+	}
+	r_value = static_cast<uint32_t>(value);
+	return true;
+}
+
 } // namespace
 
 bool apply_config_section(const std::string &p_section, const gd::Dictionary &p_values,
@@ -203,13 +220,7 @@ bool apply_config_section(const std::string &p_section, const gd::Dictionary &p_
 		} else if (p_section == "constraint" && key == "proxy_radius") {
 			handled = reader.read_number("proxy_radius", r_config.constraint.proxy_radius);
 		} else if (p_section == "constraint" && key == "max_iterations") {
-			int64_t iterations = r_config.constraint.max_iterations;
-			handled = reader.read_int("max_iterations", iterations);
-			if (handled && (iterations < 1 || iterations > 16)) {
-				r_error = "constraint.max_iterations must be in [1, 16] (got " + std::to_string(iterations) + ")";
-				return false;
-			}
-			r_config.constraint.max_iterations = static_cast<uint32_t>(iterations);
+			handled = read_count(reader, "max_iterations", 1, 16, r_config.constraint.max_iterations, r_error);
 		} else if (p_section == "constraint" && key == "update") {
 			gd::Variant value;
 			p_values.get(gd::Variant("update"), value);
@@ -227,16 +238,12 @@ bool apply_config_section(const std::string &p_section, const gd::Dictionary &p_
 		} else if (p_section == "telemetry" && key == "enabled") {
 			handled = reader.read_bool("enabled", r_config.telemetry.enabled);
 		} else if (p_section == "telemetry" && key == "decimation") {
-			int64_t decimation = r_config.telemetry.decimation;
-			handled = reader.read_int("decimation", decimation);
-			if (handled && (decimation < 1 || decimation > 1000)) {
-				r_error = "telemetry.decimation must be in [1, 1000] (got " + std::to_string(decimation) + ")";
-				return false;
-			}
-			r_config.telemetry.decimation = static_cast<uint32_t>(decimation);
+			handled = read_count(reader, "decimation", 1, 1000, r_config.telemetry.decimation, r_error);
 		}
 		if (!handled) {
-			r_error = reader.error().empty() ? p_section + ": unknown setting '" + key + "'" : reader.error();
+			if (r_error.empty()) {
+				r_error = reader.error().empty() ? p_section + ": unknown setting '" + key + "'" : reader.error();
+			}
 			return false;
 		}
 	}
