@@ -184,28 +184,8 @@ func test_default_discovery_skips_fixtures_and_runner() -> void:
 
 
 func test_own_scripts_have_no_gdscript_warnings() -> void:
-	var raised: Dictionary[String, int] = {}
-	var enabled: int = 0
-	for property: Dictionary in ProjectSettings.get_property_list():
-		var setting: String = property["name"]
-		var level: Variant = ProjectSettings.get_setting(setting)
-		if setting.begins_with("debug/gdscript/warnings/") and typeof(level) == TYPE_INT:
-			enabled += 1 if level != 0 else 0
-			if level == 1:
-				raised[setting] = 1
-				ProjectSettings.set_setting(setting, 2)
+	var enabled: int = await assert_scripts_compile_without_warnings(OWN_SCRIPTS)
 	assert_gt(enabled, 0, "project.godot enables some GDScript warnings")
-	await wait_process_frames(1)
-	# Compile fresh copies: reloading the live scripts (CACHE_MODE_IGNORE) would recompile
-	# them in place and break the running instances if they failed.
-	var class_name_line: RegEx = RegEx.create_from_string("(?m)^class_name\\s+\\w+\\s*$")
-	for path: String in OWN_SCRIPTS:
-		var copy: GDScript = GDScript.new()
-		copy.source_code = class_name_line.sub(FileAccess.get_file_as_string(path), "")
-		assert_eq(copy.reload(), OK, "%s compiles with warnings as errors" % path)
-	for setting: String in raised:
-		ProjectSettings.set_setting(setting, raised[setting])
-	await wait_process_frames(1)
 
 
 func test_passing_fixture_exits_zero() -> void:

@@ -236,6 +236,34 @@ func wait_seconds(seconds: float) -> void:
 	await get_tree().create_timer(seconds).timeout
 
 
+## Asserts that each script in [param paths] compiles with every GDScript warning the
+## project enables raised to an error. Fresh copies are compiled (class_name removed), so
+## the live scripts are never recompiled in place. Returns how many warnings the project
+## enables (0 would make the check vacuous).
+func assert_scripts_compile_without_warnings(paths: PackedStringArray) -> int:
+	var raised: Dictionary[String, int] = {}
+	var enabled: int = 0
+	for property: Dictionary in ProjectSettings.get_property_list():
+		var setting: String = property["name"]
+		var level: Variant = ProjectSettings.get_setting(setting)
+		if setting.begins_with("debug/gdscript/warnings/") and typeof(level) == TYPE_INT:
+			enabled += 1 if level != 0 else 0
+			if level == 1:
+				raised[setting] = 1
+				ProjectSettings.set_setting(setting, 2)
+	# The raised levels apply from the next frame on.
+	await wait_process_frames(1)
+	var class_name_line: RegEx = RegEx.create_from_string("(?m)^class_name\\s+\\w+\\s*$")
+	for path: String in paths:
+		var copy: GDScript = GDScript.new()
+		copy.source_code = class_name_line.sub(FileAccess.get_file_as_string(path), "")
+		assert_eq(copy.reload(), OK, "%s compiles with warnings as errors" % path)
+	for setting: String in raised:
+		ProjectSettings.set_setting(setting, raised[setting])
+	await wait_process_frames(1)
+	return enabled
+
+
 ## Waits until [param condition] (a Callable returning bool) holds, checking once per
 ## physics frame, for at most [param max_seconds]. Returns whether it held.
 func wait_until(condition: Callable, max_seconds: float) -> bool:

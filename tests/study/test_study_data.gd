@@ -47,23 +47,8 @@ func after_each() -> void:
 
 
 func test_every_study_script_compiles_without_warnings() -> void:
-	var raised: Dictionary[String, int] = {}
-	for property: Dictionary in ProjectSettings.get_property_list():
-		var setting: String = property["name"]
-		var level: Variant = ProjectSettings.get_setting(setting)
-		if setting.begins_with("debug/gdscript/warnings/") and typeof(level) == TYPE_INT:
-			if level == 1:
-				raised[setting] = 1
-				ProjectSettings.set_setting(setting, 2)
-	await wait_process_frames(1)
-	var class_name_line: RegEx = RegEx.create_from_string("(?m)^class_name\\s+\\w+\\s*$")
-	for path: String in STUDY_SCRIPTS:
-		var copy: GDScript = GDScript.new()
-		copy.source_code = class_name_line.sub(FileAccess.get_file_as_string(path), "")
-		assert_eq(copy.reload(), OK, "%s compiles with warnings as errors" % path)
-	for setting: String in raised:
-		ProjectSettings.set_setting(setting, raised[setting])
-	await wait_process_frames(1)
+	var enabled: int = await assert_scripts_compile_without_warnings(STUDY_SCRIPTS)
+	assert_gt(enabled, 0, "project.godot enables some GDScript warnings")
 
 
 func test_numbers_and_timestamps_follow_the_format() -> void:
