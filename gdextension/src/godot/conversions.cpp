@@ -1,5 +1,7 @@
 #include "godot/conversions.h"
 
+#include <utility>
+
 #include "core/coordinates.h"
 #include "godot/dictionary_reader.h"
 
@@ -16,14 +18,9 @@ Vec3 velocity_from(const gd::Vector2 &p_game) {
 	return game_to_device_scaled(p_game.x, p_game.y, 1.0);
 }
 
-bool read_contact(const gd::Variant &p_entry, const std::string &p_path, Contact &r_contact,
+bool read_contact(const gd::Dictionary &p_entry, const std::string &p_path, Contact &r_contact,
 		std::string &r_error) {
-	if (p_entry.get_type() != gd::VariantType::DICTIONARY) {
-		r_error = p_path + ": expected a Dictionary, got " + variant_type_name(p_entry.get_type());
-		return false;
-	}
-	const gd::Dictionary entry(p_entry);
-	DictionaryReader reader(entry, p_path);
+	DictionaryReader reader(p_entry, p_path);
 	gd::Vector2 normal;
 	const bool has_material = reader.has("stiffness") || reader.has("damping");
 	r_contact.use_default_material = !has_material;
@@ -38,14 +35,9 @@ bool read_contact(const gd::Variant &p_entry, const std::string &p_path, Contact
 	return ok;
 }
 
-bool read_resting(const gd::Variant &p_entry, const std::string &p_path, Frame &r_frame,
+bool read_resting(const gd::Dictionary &p_entry, const std::string &p_path, Frame &r_frame,
 		std::string &r_error) {
-	if (p_entry.get_type() != gd::VariantType::DICTIONARY) {
-		r_error = p_path + ": expected a Dictionary, got " + variant_type_name(p_entry.get_type());
-		return false;
-	}
-	const gd::Dictionary entry(p_entry);
-	DictionaryReader reader(entry, p_path);
+	DictionaryReader reader(p_entry, p_path);
 	gd::Vector2 normal;
 	double mass = 0.0;
 	if (!reader.only_keys({ "normal", "mass" }) || !reader.read_vector2("normal", normal, true) ||
@@ -73,7 +65,13 @@ bool read_list(DictionaryReader &r_reader, const char *p_key, size_t p_capacity,
 		return false;
 	}
 	for (int64_t i = 0; i < count; ++i) {
-		if (!p_read_one(list.get(i), path + "[" + std::to_string(i) + "]")) {
+		const std::string entry_path = path + "[" + std::to_string(i) + "]";
+		gd::Variant entry = list.get(i);
+		if (entry.get_type() != gd::VariantType::DICTIONARY) {
+			r_error = entry_path + ": expected a Dictionary, got " + variant_type_name(entry.get_type());
+			return false;
+		}
+		if (!p_read_one(gd::Dictionary(std::move(entry)), entry_path)) {
 			return false;
 		}
 	}
@@ -90,7 +88,7 @@ bool frame_from_dictionary(const gd::Dictionary &p_dictionary, Frame &r_frame, s
 		return false;
 	}
 	const bool contacts_ok = read_list(reader, "contacts", MAX_CONTACTS,
-			[&](const gd::Variant &p_entry, const std::string &p_path) {
+			[&](const gd::Dictionary &p_entry, const std::string &p_path) {
 				Contact &contact = frame.contacts[frame.contact_count];
 				if (!read_contact(p_entry, p_path, contact, r_error)) {
 					return false;
@@ -101,7 +99,7 @@ bool frame_from_dictionary(const gd::Dictionary &p_dictionary, Frame &r_frame, s
 			r_error);
 	const bool resting_ok = contacts_ok &&
 			read_list(reader, "resting", MAX_RESTING_OBJECTS,
-					[&](const gd::Variant &p_entry, const std::string &p_path) {
+					[&](const gd::Dictionary &p_entry, const std::string &p_path) {
 						return read_resting(p_entry, p_path, frame, r_error);
 					},
 					r_error);
