@@ -112,8 +112,10 @@ std::vector<MicroResult> run_micro_benchmarks() {
 	maze_engine.set_constraint_geometry(walls.data(), walls.size(), mapping);
 	ConstraintConfig constraint;
 	constraint.proxy_radius = 3.0;
-	maze_engine.configure_constraint(constraint);
-	maze_engine.set_render_mode(RenderMode::CONSTRAINT);
+	RenderConfig maze_config = maze_engine.config();
+	maze_config.constraint = constraint;
+	maze_config.render_mode = RenderMode::CONSTRAINT;
+	maze_engine.configure(maze_config);
 	int tick = 0;
 	results.push_back(measure("full tick, manual step, constraint mode, 10 000 walls", [&](int p_n) {
 		if (p_n % 20 == 0) {

@@ -7,6 +7,7 @@
 
 #include "core/haptics_engine.h"
 #include "test_proxy_geometry.h"
+#include "engine_config.h"
 
 #include <doctest/doctest.h>
 
@@ -46,14 +47,14 @@ TEST_CASE("constraint tick allocates nothing: 1 kHz and 50 Hz proxy, walls swapp
 	device.rigid_hand = true;
 	REQUIRE(engine.open_simulated_device(device));
 	REQUIRE(engine.set_constraint_geometry(walls.data(), walls.size(), mapping));
-	REQUIRE(engine.set_render_mode(RenderMode::CONSTRAINT));
+	REQUIRE(reconfigure(engine, [](RenderConfig &c) { c.render_mode = RenderMode::CONSTRAINT; }));
 	ConstraintConfig config;
 	config.proxy_radius = 3.0;
 	unsigned long allocations = 0;
 	for (int k = 0; k < 4000; ++k) {
 		if (k == 2000) {
 			config.update = ProxyUpdate::FRAME_RATE;
-			REQUIRE(engine.configure_constraint(config));
+			REQUIRE(reconfigure(engine, [&](RenderConfig &c) { c.constraint = config; }));
 		}
 		if (k % 500 == 250) { // New walls (built here, outside the watched step).
 			REQUIRE(engine.set_constraint_geometry(walls.data(), walls.size() - static_cast<size_t>(k / 500), mapping));

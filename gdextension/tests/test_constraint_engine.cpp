@@ -8,6 +8,7 @@
 #include "core/realtime.h"
 #include "core/telemetry.h"
 #include "test_proxy_geometry.h"
+#include "engine_config.h"
 
 #include <doctest/doctest.h>
 
@@ -58,10 +59,10 @@ void set_up(HapticsEngine &r_engine, ProxyUpdate p_update) {
 	SafetyConfig safety;
 	safety.startup_ramp_s = 0.0;
 	safety.slew_rate_n_per_s = 0.0;
-	REQUIRE(r_engine.configure_safety(safety));
-	REQUIRE(r_engine.configure_constraint(constraint_config(p_update)));
+	REQUIRE(reconfigure(r_engine, [&](RenderConfig &c) { c.safety = safety; }));
+	REQUIRE(reconfigure(r_engine, [&](RenderConfig &c) { c.constraint = constraint_config(p_update); }));
 	REQUIRE(r_engine.set_constraint_geometry(maze().data(), maze().size(), maze_mapping()));
-	REQUIRE(r_engine.set_render_mode(RenderMode::CONSTRAINT));
+	REQUIRE(reconfigure(r_engine, [](RenderConfig &c) { c.render_mode = RenderMode::CONSTRAINT; }));
 }
 
 Vec3 hand_path(int p_tick) {
@@ -75,7 +76,7 @@ void compare_with_proxy_alone(ProxyUpdate p_update) {
 	set_up(engine, p_update);
 	std::unique_ptr<ConstraintGeometry> geometry;
 	REQUIRE(ConstraintGeometry::build(maze().data(), maze().size(), maze_mapping(), BroadPhase::UNIFORM_GRID, geometry));
-	ConstraintRenderer alone;
+	ConstraintSolver alone;
 	alone.configure(constraint_config(p_update));
 	int differences = 0;
 	int pushing = 0;
@@ -162,11 +163,11 @@ TEST_CASE("constraint engine: clamp, start-up ramp and watchdog still apply") {
 	set_up(engine, ProxyUpdate::SERVO_RATE);
 	ConstraintConfig stiff = constraint_config(ProxyUpdate::SERVO_RATE);
 	stiff.stiffness_n_per_m = 5000.0;
-	REQUIRE(engine.configure_constraint(stiff));
+	REQUIRE(reconfigure(engine, [&](RenderConfig &c) { c.constraint = stiff; }));
 	SafetyConfig safety;
 	safety.slew_rate_n_per_s = 0.0;
 	safety.startup_ramp_s = 0.01;
-	REQUIRE(engine.configure_safety(safety));
+	REQUIRE(reconfigure(engine, [&](RenderConfig &c) { c.safety = safety; }));
 	const Segment2 wall{ { 120.0, 0.0 }, { 120.0, 180.0 } };
 	REQUIRE(engine.set_constraint_geometry(&wall, 1, maze_mapping()));
 	REQUIRE(engine.set_hand_target({ 0.0, 0.0, 0.0 }));
@@ -200,8 +201,8 @@ TEST_CASE("constraint engine: clamp, start-up ramp and watchdog still apply") {
 TEST_CASE("constraint engine: switching modes hands over between the renderers") {
 	HapticsEngine engine;
 	set_up(engine, ProxyUpdate::SERVO_RATE);
-	REQUIRE(engine.configure_smoothing(SmoothingConfig{ SmoothingType::OFF, 13.0 }));
-	REQUIRE(engine.set_render_mode(RenderMode::MOVEMENT));
+	REQUIRE(reconfigure(engine, [](RenderConfig &c) { c.smoothing = SmoothingConfig{ false, 13.0 }; }));
+	REQUIRE(reconfigure(engine, [](RenderConfig &c) { c.render_mode = RenderMode::MOVEMENT; }));
 	const Segment2 wall{ { 120.0, 0.0 }, { 120.0, 180.0 } };
 	REQUIRE(engine.set_constraint_geometry(&wall, 1, maze_mapping()));
 	Frame floor;
@@ -213,12 +214,12 @@ TEST_CASE("constraint engine: switching modes hands over between the renderers")
 	REQUIRE(engine.step(DT));
 	const Vec3 movement = engine.forces().normal;
 	CHECK(movement.y > 0.0); // The movement model's floor force.
-	CHECK(engine.render_mode() == RenderMode::MOVEMENT);
+	CHECK(engine.config().render_mode == RenderMode::MOVEMENT);
 	CHECK_FALSE(engine.output().proxy_placed);
 
-	REQUIRE(engine.set_render_mode(RenderMode::CONSTRAINT));
+	REQUIRE(reconfigure(engine, [](RenderConfig &c) { c.render_mode = RenderMode::CONSTRAINT; }));
 	REQUIRE(engine.step(DT)); // The device maps inside the wall: the proxy waits.
-	CHECK(engine.render_mode() == RenderMode::CONSTRAINT);
+	CHECK(engine.config().render_mode == RenderMode::CONSTRAINT);
 	CHECK_FALSE(engine.output().proxy_placed);
 	CHECK(engine.forces().total == Vec3{});
 	CHECK(engine.proxy_position() == engine.output().goal_maze);
@@ -232,11 +233,11 @@ TEST_CASE("constraint engine: switching modes hands over between the renderers")
 	REQUIRE(engine.set_hand_target(on_the_wall));
 	CHECK(engine.forces().normal.y == doctest::Approx(0.0).epsilon(1e-9));
 
-	REQUIRE(engine.set_render_mode(RenderMode::MOVEMENT));
+	REQUIRE(reconfigure(engine, [](RenderConfig &c) { c.render_mode = RenderMode::MOVEMENT; }));
 	REQUIRE(engine.step(DT));
 	CHECK(engine.forces().normal == movement);
-	CHECK(engine.set_render_mode(static_cast<RenderMode>(9)).code() == StatusCode::INVALID_ARGUMENT);
-	CHECK(engine.render_mode() == RenderMode::MOVEMENT);
+	CHECK(reconfigure(engine, [](RenderConfig &c) { c.render_mode = static_cast<RenderMode>(9); }).code() == StatusCode::INVALID_ARGUMENT);
+	CHECK(engine.config().render_mode == RenderMode::MOVEMENT);
 }
 
 TEST_CASE("constraint engine: rejected geometry or config names the problem and keeps the previous one") {
@@ -263,14 +264,14 @@ TEST_CASE("constraint engine: rejected geometry or config names the problem and 
 	CHECK(std::strstr(status.message(), "constraint.segments[3]: degenerate") != nullptr);
 	ConstraintConfig wild = constraint_config(ProxyUpdate::SERVO_RATE);
 	wild.proxy_radius = 0.0;
-	status = engine.configure_constraint(wild);
+	status = reconfigure(engine, [&](RenderConfig &c) { c.constraint = wild; });
 	CHECK(std::strstr(status.message(), "constraint.proxy_radius") != nullptr);
 	wild = constraint_config(ProxyUpdate::SERVO_RATE);
 	wild.stiffness_n_per_m = NaN;
-	CHECK(std::strstr(engine.configure_constraint(wild).message(), "constraint.stiffness_n_per_m") != nullptr);
+	CHECK(std::strstr(reconfigure(engine, [&](RenderConfig &c) { c.constraint = wild; }).message(), "constraint.stiffness_n_per_m") != nullptr);
 	wild = constraint_config(ProxyUpdate::SERVO_RATE);
 	wild.max_iterations = 0;
-	CHECK(std::strstr(engine.configure_constraint(wild).message(), "constraint.max_iterations") != nullptr);
+	CHECK(std::strstr(reconfigure(engine, [&](RenderConfig &c) { c.constraint = wild; }).message(), "constraint.max_iterations") != nullptr);
 	for (int k = 0; k < 10; ++k) {
 		REQUIRE(engine.step(DT));
 	}
@@ -284,8 +285,8 @@ TEST_CASE("constraint engine: walls swapped while the servo thread runs") {
 	SimulatedDeviceConfig device;
 	device.rigid_hand = true;
 	REQUIRE(engine.open_simulated_device(device));
-	REQUIRE(engine.configure_constraint(constraint_config(ProxyUpdate::SERVO_RATE)));
-	REQUIRE(engine.set_render_mode(RenderMode::CONSTRAINT));
+	REQUIRE(reconfigure(engine, [&](RenderConfig &c) { c.constraint = constraint_config(ProxyUpdate::SERVO_RATE); }));
+	REQUIRE(reconfigure(engine, [](RenderConfig &c) { c.render_mode = RenderMode::CONSTRAINT; }));
 	ServoOptions options;
 	options.realtime_priority = 0;
 	REQUIRE(engine.start(options));

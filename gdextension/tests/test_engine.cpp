@@ -3,6 +3,7 @@
 
 #include "core/haptics_engine.h"
 #include "core/telemetry.h"
+#include "engine_config.h"
 
 #include <doctest/doctest.h>
 
@@ -30,12 +31,12 @@ void set_up(HapticsEngine &r_engine) {
 	REQUIRE(r_engine.set_hand_target({ 0.03, -0.05, 0.0 }));
 	ForceModelConfig model;
 	model.dead_zone = 0.0;
-	REQUIRE(r_engine.configure_force_model(model));
-	REQUIRE(r_engine.configure_smoothing(SmoothingConfig{ SmoothingType::OFF, 13.0 }));
+	REQUIRE(reconfigure(r_engine, [&](RenderConfig &c) { c.force_model = model; }));
+	REQUIRE(reconfigure(r_engine, [](RenderConfig &c) { c.smoothing = SmoothingConfig{ false, 13.0 }; }));
 	SafetyConfig safety;
 	safety.startup_ramp_s = 0.0;
 	safety.slew_rate_n_per_s = 0.0;
-	REQUIRE(r_engine.configure_safety(safety));
+	REQUIRE(reconfigure(r_engine, [&](RenderConfig &c) { c.safety = safety; }));
 }
 
 Frame floor_frame() {
@@ -139,16 +140,14 @@ TEST_CASE("engine: every bad parameter is named") {
 		{ engine.submit_frame(stiff), StatusCode::OUT_OF_RANGE, "frame.contacts[0].material.stiffness" },
 		{ engine.push_impact(no_direction), StatusCode::INVALID_ARGUMENT, "impact.direction" },
 		{ engine.push_impact(nan_speed), StatusCode::INVALID_ARGUMENT, "impact.speed" },
-		{ engine.configure_smoothing(SmoothingConfig{ SmoothingType::BUTTERWORTH2, NaN }), StatusCode::INVALID_ARGUMENT,
+		{ reconfigure(engine, [&](RenderConfig &c) { c.smoothing = SmoothingConfig{ true, NaN }; }), StatusCode::INVALID_ARGUMENT,
 				"smoothing.cutoff_hz" },
-		{ engine.configure_smoothing(SmoothingConfig{ static_cast<SmoothingType>(7), 10.0 }), StatusCode::INVALID_ARGUMENT,
-				"smoothing.type" },
-		{ engine.configure_safety(slow_fade), StatusCode::OUT_OF_RANGE, "safety.watchdog_fade_s" },
-		{ engine.configure_force_model(soft), StatusCode::OUT_OF_RANGE, "force_model.default_contact.stiffness" },
-		{ engine.set_default_impact_material(ImpactMaterial{ 1.0, 5000.0, 0.01 }), StatusCode::OUT_OF_RANGE,
-				"force_model.default_impact.frequency_hz" },
-		{ engine.set_workspace_radius(-1.0), StatusCode::OUT_OF_RANGE, "force_model.input_radius_m" },
-		{ engine.configure_telemetry(TelemetryConfig{ 0, true }), StatusCode::OUT_OF_RANGE, "telemetry.decimation" },
+		{ reconfigure(engine, [&](RenderConfig &c) { c.safety = slow_fade; }), StatusCode::OUT_OF_RANGE, "safety.watchdog_fade_s" },
+		{ reconfigure(engine, [&](RenderConfig &c) { c.force_model = soft; }), StatusCode::OUT_OF_RANGE, "force_model.contact_stiffness_n" },
+		{ reconfigure(engine, [](RenderConfig &c) { c.force_model.default_impact = ImpactMaterial{ 1.0, 5000.0, 0.01 }; }), StatusCode::OUT_OF_RANGE,
+				"force_model.impact_frequency_hz" },
+		{ reconfigure(engine, [](RenderConfig &c) { c.force_model.input_radius_m = -1.0; }), StatusCode::OUT_OF_RANGE, "force_model.input_radius_m" },
+		{ reconfigure(engine, [](RenderConfig &c) { c.telemetry = TelemetryConfig{ 0, true }; }), StatusCode::OUT_OF_RANGE, "telemetry.decimation" },
 		{ engine.set_hand_target({ 0.0, NaN, 0.0 }), StatusCode::INVALID_ARGUMENT, "hand_target" },
 		{ engine.start(100.0), StatusCode::OUT_OF_RANGE, "rate_hz" },
 		{ engine.start(NaN), StatusCode::INVALID_ARGUMENT, "rate_hz" },
@@ -162,7 +161,7 @@ TEST_CASE("engine: every bad parameter is named") {
 	}
 	// Nothing rejected reached the configuration.
 	const RenderConfig &config = engine.config();
-	CHECK(config.smoothing.type == SmoothingType::OFF);
+	CHECK_FALSE(config.smoothing.enabled);
 	CHECK(config.safety.watchdog_fade_s == SafetyConfig{}.watchdog_fade_s);
 	CHECK(config.force_model.default_contact.stiffness == ContactMaterial{}.stiffness);
 	CHECK(config.force_model.input_radius_m == 0.0);
@@ -175,11 +174,11 @@ TEST_CASE("engine: configuration changes take effect on the next tick") {
 	REQUIRE(engine.submit_frame(floor_frame()));
 	REQUIRE(engine.step(DT));
 	CHECK(engine.forces().normal.y == doctest::Approx(1.0));
-	REQUIRE(engine.set_default_contact_material(ContactMaterial{ 4.0, 0.0 }));
+	REQUIRE(reconfigure(engine, [](RenderConfig &c) { c.force_model.default_contact = ContactMaterial{ 4.0, 0.0 }; }));
 	REQUIRE(engine.step(DT));
 	CHECK(engine.forces().normal.y == doctest::Approx(2.0));
 	CHECK(engine.forces().friction == Vec3{});
-	REQUIRE(engine.set_workspace_radius(0.2)); // Same position, half the input.
+	REQUIRE(reconfigure(engine, [](RenderConfig &c) { c.force_model.input_radius_m = 0.2; })); // Same position, half the input.
 	REQUIRE(engine.step(DT));
 	CHECK(engine.input_vector().y == doctest::Approx(-0.25));
 	CHECK(engine.forces().normal.y == doctest::Approx(1.0));
@@ -225,14 +224,14 @@ TEST_CASE("engine: telemetry has the documented layout") {
 TEST_CASE("engine: telemetry decimation, and overflow is counted") {
 	HapticsEngine engine;
 	set_up(engine);
-	REQUIRE(engine.configure_telemetry(TelemetryConfig{ 5, true }));
+	REQUIRE(reconfigure(engine, [](RenderConfig &c) { c.telemetry = TelemetryConfig{ 5, true }; }));
 	for (int k = 0; k < 100; ++k) {
 		REQUIRE(engine.step(DT));
 	}
 	std::vector<float> samples(TELEMETRY_QUEUE_CAPACITY * TELEMETRY_STRIDE);
 	CHECK(engine.drain_telemetry(samples.data(), TELEMETRY_QUEUE_CAPACITY) == 20);
 	CHECK(samples[TELEMETRY_STRIDE + TELEMETRY_TIME] == doctest::Approx(0.006)); // Ticks 1, 6, 11...
-	REQUIRE(engine.configure_telemetry(TelemetryConfig{ 1, true }));
+	REQUIRE(reconfigure(engine, [](RenderConfig &c) { c.telemetry = TelemetryConfig{ 1, true }; }));
 	for (size_t k = 0; k < TELEMETRY_QUEUE_CAPACITY + 100; ++k) {
 		REQUIRE(engine.step(DT));
 	}

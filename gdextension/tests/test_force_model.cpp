@@ -24,7 +24,7 @@ void check_vec(const Vec3 &p_actual, const Vec3 &p_expected, double p_tolerance 
 ForceModelConfig config_with(double p_k, double p_b, double p_gravity = 1.0) {
 	ForceModelConfig config;
 	config.dead_zone = 0.0;
-	config.gravity = p_gravity;
+	config.gravity_n_per_kg = p_gravity;
 	config.default_contact = ContactMaterial{ p_k, p_b };
 	return config;
 }
@@ -109,7 +109,7 @@ TEST_CASE("several contacts: normalised sum of normals, materials weighted by sh
 	REQUIRE(resolved.active);
 	check_vec(resolved.normal, Vec3{ -1.0, 1.0, 0.0 } / std::sqrt(2.0));
 	CHECK(resolved.stiffness == doctest::Approx(3.0)); // Equal shares.
-	CHECK(resolved.damping == doctest::Approx(2.0));
+	CHECK(resolved.friction == doctest::Approx(2.0));
 	// i = (0.6, -0.2, 0): i.n = -0.8/sqrt2 -> p = (0.4, -0.4, 0), r = (0.2, 0.2, 0).
 	const ForceComponents f = compute_forces(frame, { 0.6, -0.2, 0.0 }, config_with(0.0, 0.0));
 	check_vec(f.normal, { -1.2, 1.2, 0.0 });
@@ -124,7 +124,7 @@ TEST_CASE("several contacts: a contact facing away from the combined normal has 
 	const ContactResolution resolved = resolve_contacts(frame, ContactMaterial{});
 	check_vec(resolved.normal, { 1.0, 0.0, 0.0 });
 	CHECK(resolved.stiffness == doctest::Approx(2.0));
-	CHECK(resolved.damping == doctest::Approx(1.0));
+	CHECK(resolved.friction == doctest::Approx(1.0));
 	const ForceComponents f = compute_forces(frame, { -0.5, 0.25, 0.0 }, config_with(0.0, 0.0));
 	check_vec(f.normal, { 1.0, 0.0, 0.0 });
 	check_vec(f.friction, { 0.0, -0.25, 0.0 });

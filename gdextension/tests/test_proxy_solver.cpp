@@ -325,8 +325,8 @@ TEST_CASE("proxy: stable at 1 kHz for 5 s through a 10 000-wall maze (grid == br
 	ConstraintConfig config;
 	config.stiffness_n_per_m = 300.0;
 	config.proxy_radius = 3.0;
-	ConstraintRenderer fast;
-	ConstraintRenderer reference;
+	ConstraintSolver fast;
+	ConstraintSolver reference;
 	fast.configure(config);
 	reference.configure(config);
 	const double radius = config.proxy_radius;

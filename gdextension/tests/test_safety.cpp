@@ -3,6 +3,7 @@
 
 #include "core/haptics_engine.h"
 #include "core/safety.h"
+#include "engine_config.h"
 
 #include <doctest/doctest.h>
 
@@ -32,9 +33,9 @@ void set_up_wall(HapticsEngine &r_engine, const SafetyConfig &p_safety) {
 	ForceModelConfig model;
 	model.dead_zone = 0.0;
 	model.default_contact = ContactMaterial{ 4.0, 0.0 };
-	REQUIRE(r_engine.configure_force_model(model));
-	REQUIRE(r_engine.configure_smoothing(SmoothingConfig{ SmoothingType::OFF, 13.0 }));
-	REQUIRE(r_engine.configure_safety(p_safety));
+	REQUIRE(reconfigure(r_engine, [&](RenderConfig &c) { c.force_model = model; }));
+	REQUIRE(reconfigure(r_engine, [](RenderConfig &c) { c.smoothing = SmoothingConfig{ false, 13.0 }; }));
+	REQUIRE(reconfigure(r_engine, [&](RenderConfig &c) { c.safety = p_safety; }));
 }
 
 Frame wall_frame() {
@@ -133,7 +134,7 @@ TEST_CASE("engine: force clamped to the simulated device's 3.3 N, direction kept
 	set_up_wall(engine, plain_safety());
 	ForceModelConfig model = engine.config().force_model;
 	model.default_contact = ContactMaterial{ 20.0, 20.0 }; // 10 N normal, 4 N friction.
-	REQUIRE(engine.configure_force_model(model));
+	REQUIRE(reconfigure(engine, [&](RenderConfig &c) { c.force_model = model; }));
 	REQUIRE(engine.set_hand_target({ 0.05, 0.02, 0.0 })); // i = (0.5, 0.2, 0)
 	REQUIRE(engine.submit_frame(wall_frame()));
 	REQUIRE(engine.step(DT));

@@ -3,6 +3,7 @@
 
 #include "core/haptics_engine.h"
 #include "devices/simulated_device.h"
+#include "engine_config.h"
 
 #include <doctest/doctest.h>
 
@@ -148,7 +149,7 @@ TEST_CASE("engine + simulated device: pushing into a wall moves the stylus back 
 	ForceModelConfig model;
 	model.dead_zone = 0.0;
 	model.default_contact = ContactMaterial{ 2.0, 1.0 };
-	REQUIRE(engine.configure_force_model(model)); // Default smoothing and safety.
+	REQUIRE(reconfigure(engine, [&](RenderConfig &c) { c.force_model = model; })); // Default smoothing and safety.
 	REQUIRE(engine.set_hand_target({ 0.05, 0.0, 0.0 }));
 	Frame wall;
 	wall.add_contact({ -1.0, 0.0, 0.0 }); // A wall on the right; normal points back at the player.

@@ -19,9 +19,9 @@ namespace {
 
 constexpr double FRAME_PERIOD_S = 0.02; // 50 Hz physics.
 
-SmoothingFilter make_filter(double p_rate_hz, SmoothingType p_type = SmoothingType::BUTTERWORTH2, double p_cutoff_hz = SmoothingConfig{}.cutoff_hz) {
+SmoothingFilter make_filter(double p_rate_hz, bool p_enabled = true, double p_cutoff_hz = SmoothingConfig{}.cutoff_hz) {
 	SmoothingFilter filter;
-	filter.configure(SmoothingConfig{ p_type, p_cutoff_hz }, 1.0 / p_rate_hz);
+	filter.configure(SmoothingConfig{ p_enabled, p_cutoff_hz }, 1.0 / p_rate_hz);
 	filter.reset();
 	return filter;
 }
@@ -92,8 +92,8 @@ RippleResult measure_ripple(double p_rate_hz) {
 }
 
 // Seconds from a 0 -> 1 N step (applied at a frame boundary) to the first output >= 0.9 N.
-double rise_time_90(double p_rate_hz, SmoothingType p_type = SmoothingType::BUTTERWORTH2) {
-	SmoothingFilter filter = make_filter(p_rate_hz, p_type);
+double rise_time_90(double p_rate_hz, bool p_enabled = true) {
+	SmoothingFilter filter = make_filter(p_rate_hz, p_enabled);
 	const size_t step_at = static_cast<size_t>(std::lround(0.1 * p_rate_hz));
 	for (size_t n = 0; n < static_cast<size_t>(p_rate_hz); ++n) {
 		const double input = n >= step_at ? 1.0 : 0.0;
@@ -136,13 +136,13 @@ TEST_CASE("smoothing spec holds at every servo rate from 250 to 4000 Hz") {
 }
 
 TEST_CASE("smoothing off passes the staircase through unchanged") {
-	SmoothingFilter filter = make_filter(1000.0, SmoothingType::OFF);
+	SmoothingFilter filter = make_filter(1000.0, false);
 	CHECK_FALSE(filter.enabled());
 	for (int n = 0; n < 100; ++n) {
 		const Vec3 input{ 0.02 * (n / 20), -0.5, 3.0 };
 		CHECK(filter.process(input) == input);
 	}
-	CHECK(rise_time_90(1000.0, SmoothingType::OFF) == 0.0);
+	CHECK(rise_time_90(1000.0, false) == 0.0);
 }
 
 TEST_CASE("smoothing has unit DC gain on each axis independently") {
@@ -161,9 +161,9 @@ TEST_CASE("changing the cutoff while rendering does not kick") {
 	for (int n = 0; n < 2000; ++n) {
 		filter.process({ 2.0, 0.0, 0.0 });
 	}
-	filter.configure(SmoothingConfig{ SmoothingType::BUTTERWORTH2, 40.0 }, 0.001);
+	filter.configure(SmoothingConfig{ true, 40.0 }, 0.001);
 	CHECK(filter.process({ 2.0, 0.0, 0.0 }).x == doctest::Approx(2.0).epsilon(1e-9));
-	filter.configure(SmoothingConfig{ SmoothingType::BUTTERWORTH2, 3.0 }, 0.00025);
+	filter.configure(SmoothingConfig{ true, 3.0 }, 0.00025);
 	CHECK(filter.process({ 2.0, 0.0, 0.0 }).x == doctest::Approx(2.0).epsilon(1e-9));
 }
 

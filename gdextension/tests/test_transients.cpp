@@ -3,6 +3,7 @@
 
 #include "core/haptics_engine.h"
 #include "core/transients.h"
+#include "engine_config.h"
 
 #include <doctest/doctest.h>
 
@@ -170,11 +171,11 @@ TEST_CASE("engine: impacts are overlaid raw on the smoothed continuous force") {
 	ForceModelConfig model;
 	model.dead_zone = 0.0;
 	model.default_contact = ContactMaterial{ 2.0, 1.0 };
-	REQUIRE(engine.configure_force_model(model));
+	REQUIRE(reconfigure(engine, [&](RenderConfig &c) { c.force_model = model; }));
 	SafetyConfig safety;
 	safety.startup_ramp_s = 0.0;
 	safety.slew_rate_n_per_s = 0.0;
-	REQUIRE(engine.configure_safety(safety));
+	REQUIRE(reconfigure(engine, [&](RenderConfig &c) { c.safety = safety; }));
 
 	Frame frame;
 	frame.add_contact({ 0.0, 1.0, 0.0 }); // Landing on a floor: continuous force steps to 1 N up.

@@ -11,13 +11,21 @@ extends Resource
 ## workspace straight into the surface is resisted with this force.
 @export_range(0.0, 100.0, 0.01, "suffix:N") var stiffness: float = 2.0
 ## Friction gain b, in newtons per unit input, against the input's tangential part.
-@export_range(0.0, 100.0, 0.01, "suffix:N") var damping: float = 1.0
+@export_range(0.0, 100.0, 0.01, "suffix:N") var friction: float = 1.0
 ## Impact amplitude per metre per second of impact speed.
 @export_range(0.0, 100.0, 0.01, "suffix:N·s/m") var impact_gain: float = 0.5
 ## Frequency of the impact transient.
 @export_range(1.0, 1000.0, 1.0, "suffix:Hz") var impact_frequency: float = 150.0
 ## Decay time constant of the impact transient.
 @export_range(0.001, 1.0, 0.001, "suffix:s") var impact_decay: float = 0.03
+## The name [member friction] had before 0.3.0: materials saved with it still load (with a
+## deprecation warning) until 0.4.0.
+var damping: float:
+	get:
+		return friction
+	set(value):
+		push_warning("HapticMaterial.damping is deprecated: use friction (accepted until 0.4.0).")
+		friction = value
 
 
 ## The material a body declares (property first, then metadata), or [code]null[/code].

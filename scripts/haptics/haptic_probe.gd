@@ -30,9 +30,9 @@ signal impact(collider: Object, normal: Vector2, speed: float)
 ## Impacts slower than this are not played, in metres per second.
 @export_range(0.0, 10.0, 0.01, "suffix:m/s") var min_impact_speed: float = 0.2
 
-## The server to talk to; defaults to the [code]Haptics[/code] autoload's. Tests set their
-## own server (stepped manually) here.
-var server: RefCounted = null
+## A [code]HapticsServer[/code] of your own (a test steps one manually) to talk to instead
+## of the [code]Haptics[/code] autoload's; set it before the probe enters the tree.
+var server: Object = null
 ## The last frame submitted (for HUDs and tests).
 var last_frame: Dictionary = {}
 ## Frames submitted so far.
@@ -45,6 +45,8 @@ var _touching: Dictionary[int, bool] = {}
 var _query: PhysicsPointQueryParameters2D = PhysicsPointQueryParameters2D.new()
 var _shape_query: PhysicsShapeQueryParameters2D = PhysicsShapeQueryParameters2D.new()
 var _shape: CollisionShape2D = null
+var _max_contacts: int = 0
+var _max_resting: int = 0
 
 
 func _ready() -> void:
@@ -53,8 +55,10 @@ func _ready() -> void:
 		push_error("HapticProbe must be a child of a CharacterBody2D or RigidBody2D.")
 		set_physics_process(false)
 		return
-	if server == null and Haptics.is_available():
-		server = Haptics.server
+	if server == null:
+		server = Haptics.get_server()
+	_max_contacts = Haptics.get_constant(&"MAX_CONTACTS")
+	_max_resting = Haptics.get_constant(&"MAX_RESTING_OBJECTS")
 	if _body is RigidBody2D:
 		var rigid: RigidBody2D = _body
 		rigid.contact_monitor = true
@@ -93,6 +97,12 @@ func _before_bodies_move() -> void:
 
 
 func _physics_process(_delta: float) -> void:
+	submit()
+
+
+## Gathers this tick's frame and sends it to the server (what the probe does every physics
+## tick), pushing impacts for contacts that began.
+func submit() -> void:
 	var frame: Dictionary = build_frame()
 	if server != null:
 		server.call(&"submit_frame", frame)
@@ -104,7 +114,6 @@ func _physics_process(_delta: float) -> void:
 ## Gathers this tick's haptic frame (the layout HapticsServer.submit_frame takes), and
 ## pushes impacts for contacts that began this tick.
 func build_frame() -> Dictionary:
-	var scale: float = Haptics.force_scale
 	var above: Array[Dictionary] = _objects_above()
 	var contacts: Array[Dictionary] = []
 	var now_touching: Dictionary[int, bool] = {}
@@ -112,14 +121,14 @@ func build_frame() -> Dictionary:
 		var collider: Object = collision["collider"]
 		var normal: Vector2 = collision["normal"]
 		var id: int = collider.get_instance_id() if collider != null else 0
-		if now_touching.has(id) or contacts.size() >= 16:
+		if now_touching.has(id) or contacts.size() >= _max_contacts:
 			continue
 		now_touching[id] = true
 		var material: HapticMaterial = _material_of(collider)
 		var contact: Dictionary = {"normal": normal}
 		if material != null:
-			contact["stiffness"] = material.stiffness * scale
-			contact["damping"] = material.damping * scale
+			contact["stiffness_n"] = material.stiffness
+			contact["friction_n"] = material.friction
 		contacts.append(contact)
 		if not _touching.has(id):
 			_report_impact(collider, normal, material)
@@ -127,11 +136,11 @@ func build_frame() -> Dictionary:
 	_sequence += 1
 	return {
 		"contacts": contacts,
-		"resting": _resting_objects(above, scale),
-		"water": _water_state(scale),
-		"velocity": _body_velocity() / pixels_per_metre,
+		"resting": _resting_objects(above),
+		"water": _water_state(),
+		"velocity_m_per_s": _body_velocity() / pixels_per_metre,
 		"sequence": _sequence,
-		"time": Time.get_ticks_msec() / 1000.0,
+		"time_s": Time.get_ticks_msec() / 1000.0,
 	}
 
 
@@ -191,16 +200,16 @@ func _objects_above() -> Array[Dictionary]:
 	return out
 
 
-func _resting_objects(above: Array[Dictionary], scale: float) -> Array[Dictionary]:
+func _resting_objects(above: Array[Dictionary]) -> Array[Dictionary]:
 	var out: Array[Dictionary] = []
 	for entry: Dictionary in above:
 		var rigid: RigidBody2D = entry["collider"]
-		if out.size() < 8:
-			out.append({"normal": entry["normal"], "mass": rigid.mass * scale})
+		if out.size() < _max_resting:
+			out.append({"normal": entry["normal"], "mass_kg": rigid.mass})
 	return out
 
 
-func _water_state(scale: float) -> Dictionary:
+func _water_state() -> Dictionary:
 	_query.position = _body.global_position
 	_query.collision_mask = 0xFFFFFFFF
 	var space: PhysicsDirectSpaceState2D = _body.get_world_2d().direct_space_state
@@ -209,7 +218,7 @@ func _water_state(scale: float) -> Dictionary:
 		if area != null and &"drag_coefficient" in area and &"inertia_force" in area:
 			var drag: float = area.get(&"drag_coefficient")
 			var inertia: float = area.get(&"inertia_force")
-			return {"inside": true, "drag": drag * scale, "inertia": inertia * scale}
+			return {"inside": true, "drag_n_s_per_m": drag, "inertia_n": inertia}
 	return {"inside": false}
 
 
@@ -223,11 +232,11 @@ func _report_impact(collider: Object, normal: Vector2, material: HapticMaterial)
 	impact.emit(collider, normal, speed)
 	if server == null:
 		return
-	var event: Dictionary = {"direction": normal, "speed": speed}
+	var event: Dictionary = {"direction": normal, "speed_m_per_s": speed}
 	if material != null:
-		event["gain"] = material.impact_gain * Haptics.force_scale
-		event["frequency"] = material.impact_frequency
-		event["decay"] = material.impact_decay
+		event["gain_n_s_per_m"] = material.impact_gain
+		event["frequency_hz"] = material.impact_frequency
+		event["decay_s"] = material.impact_decay
 	server.call(&"push_impact", event)
 
 

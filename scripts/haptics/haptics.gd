@@ -1,54 +1,88 @@
 extends Node
-## Autoload that owns the native [code]HapticsServer[/code] and the game-wide haptic
-## settings.
+## The one door from GDScript to the native [code]HapticsServer[/code] (registered as the
+## [code]Haptics[/code] autoload), and the owner of the game-wide haptic settings: the force
+## scale and smoothing (kept in the servo's configuration), the control mode and whether the
+## simulated hand follows the user's input.
 ##
 ## On start it opens the simulated device and starts the 1 kHz servo thread. The game works
 ## without the extension: when the native library is missing, [method is_available] is
 ## false, a warning is printed once, and every query returns a neutral answer (zero
-## vectors, empty dictionaries) instead of failing to parse or crash.
+## vectors, empty dictionaries, [code]false[/code]). Scripts never name
+## [code]HapticsServer[/code] (they must parse without the library): its constants come
+## through [method get_constant], its renderers by name ([code]&"constraint"[/code]).
 ##
-## Vectors are in game axes (x right, y down). "Normalised" positions are fractions of the
-## device's workspace radius, each axis in [-1, 1].
+## Besides its own methods the door has two rooms: [member device] (the devices, the open
+## one, the simulated hand) and [member servo] (the rendering thread, its statistics and
+## telemetry). Vectors are in game axes (x right, y down); forces are in newtons.
 
 ## Emitted when the device, the servo state or a setting changes.
 signal status_changed
 
 ## Class name the extension registers.
 const SERVER_CLASS := &"HapticsServer"
-## Device opened at start and used when a requested device cannot be opened.
-const DEFAULT_DEVICE := "simulated"
-## Control modes: the device's input vector drives the player, or the keyboard/gamepad.
+## The device's input vector drives the player (acceleration control).
 const CONTROL_DEVICE := &"device"
-## See [constant CONTROL_DEVICE].
+## The keyboard or gamepad drives the player.
 const CONTROL_KEYBOARD := &"keyboard"
 ## Force names reported by [method get_forces].
 const FORCE_NAMES: Array[String] = [
 	"normal", "friction", "weight", "drag", "inertia", "continuous", "smoothed", "impact", "total"
 ]
+# The servo's settings while there is no server to keep them (nothing is rendered then),
+# starting from the defaults.
+const _OFFLINE_DEFAULTS: Dictionary = {"safety.force_scale": 1.0, "smoothing.enabled": true}
 
-## Multiplies every force the game asks for (0 = off, 1 = as designed, up to 2).
-var force_scale: float = 1.0:
-	set = set_force_scale
-## Low-pass smoothing of the continuous force (50 Hz frames → 1 kHz output).
-var smoothing_enabled: bool = true:
-	set = set_smoothing_enabled
-## [constant CONTROL_DEVICE] or [constant CONTROL_KEYBOARD].
+## The player's strength preference, a gain on everything rendered. Kept by the servo;
+## finite values are clamped to its range ([method get_force_scale_range]), NaN is refused.
+var force_scale: float:
+	get:
+		return float(_setting("safety", "force_scale"))
+	set(value):
+		if is_nan(value):
+			push_error("Haptics.force_scale: not a number; keeping %s." % force_scale)
+			return
+		var scale_range: Vector2 = get_force_scale_range()
+		_set_setting("safety", "force_scale", clampf(value, scale_range.x, scale_range.y))
+## Low-pass smoothing of the continuous force (50 Hz frames → 1 kHz output); kept by the
+## servo.
+var smoothing_enabled: bool:
+	get:
+		return bool(_setting("smoothing", "enabled"))
+	set(value):
+		_set_setting("smoothing", "enabled", value)
+## [constant CONTROL_DEVICE] or [constant CONTROL_KEYBOARD]; anything else is refused.
 var control_mode: StringName = CONTROL_DEVICE:
-	set = set_control_mode
+	set(value):
+		if not is_control_mode(value):
+			push_error("Haptics.control_mode: unknown mode '%s' (device or keyboard)" % value)
+			return
+		control_mode = value
+		status_changed.emit()
 ## When true (the default), the mouse, keyboard and gamepad move the simulated device's
-## hand; an autopilot or a test turns it off and calls [method set_hand_target] itself.
+## hand; an autopilot or a test turns it off and moves the hand itself.
 var hand_follows_input: bool = true
+## The devices, the open one and the simulated hand.
+var device: HapticsDevice = null
+## The rendering thread, its statistics and telemetry.
+var servo: HapticsServo = null
 
-## The native server, or [code]null[/code] when the extension is not loaded. Typed as
-## [RefCounted] so that this script parses even without the extension.
-var server: RefCounted = null
-
+# Typed as Object so that this script parses without the extension.
+var _server: Object = null
+var _constants: Dictionary[StringName, int] = {}
+var _config_fields: Dictionary[String, Dictionary] = {}
+var _offline: Dictionary = _OFFLINE_DEFAULTS.duplicate()
 var _mouse_seen: bool = false
 
 
 func _init() -> void:
 	if ClassDB.class_exists(SERVER_CLASS):
-		server = ClassDB.instantiate(SERVER_CLASS)
+		_server = ClassDB.instantiate(SERVER_CLASS)
+		for constant_name: String in ClassDB.class_get_integer_constant_list(SERVER_CLASS, true):
+			_constants[constant_name] = ClassDB.class_get_integer_constant(
+				SERVER_CLASS, constant_name
+			)
+		for field: Dictionary in _server.call(&"get_config_fields"):
+			_config_fields["%s.%s" % [field["section"], field["key"]]] = field
 	else:
 		push_warning(
 			(
@@ -56,18 +90,21 @@ func _init() -> void:
 				+ "Build it with 'make build' (see README)."
 			)
 		)
+	servo = HapticsServo.new(_server, get_constant(&"DEFAULT_RATE_HZ"))
+	device = HapticsDevice.new(_server, servo)
+	servo.changed.connect(status_changed.emit)
+	device.changed.connect(status_changed.emit)
 
 
 func _ready() -> void:
 	process_mode = Node.PROCESS_MODE_ALWAYS
-	if server != null and open_device(DEFAULT_DEVICE):
-		start()
+	if _server != null and device.open(device.get_simulated_id()):
+		servo.start()
 
 
 func _exit_tree() -> void:
 	# Zero force is written before the servo thread is joined (the core guarantees it).
-	if server != null:
-		server.call(&"stop")
+	servo.stop()
 
 
 func _input(event: InputEvent) -> void:
@@ -76,224 +113,149 @@ func _input(event: InputEvent) -> void:
 
 
 func _process(_delta: float) -> void:
-	if hand_follows_input and control_mode == CONTROL_DEVICE and is_simulated():
-		set_hand_target(_hand_from_user_input())
+	if hand_follows_input and control_mode == CONTROL_DEVICE and device.is_simulated():
+		device.set_hand_target(_hand_from_user_input())
 
 
 ## True when the native extension is loaded and its server exists.
 func is_available() -> bool:
-	return server != null
+	return _server != null
 
 
-## Every device present (the simulated one first), each a [Dictionary]; empty without the
-## extension.
-func list_devices() -> Array[Dictionary]:
-	var out: Array[Dictionary] = []
-	if server != null:
-		var entries: Array = server.call(&"list_devices")
-		out.assign(entries)
-	return out
+## The native server itself, for a [HapticProbe]; game code uses this door.
+func get_server() -> Object:
+	return _server
 
 
-## Opens the device with this id and keeps rendering if it was. On failure the current
-## device stays open.
-func open_device(id: String) -> bool:
-	if server == null:
-		return false
-	var was_running: bool = is_running()
-	var opened: bool = server.call(&"open_device", id)
-	if opened and was_running:
-		start()
-	status_changed.emit()
-	return opened
+## A [code]HapticsServer[/code] integer constant by name ([code]&"MAX_CONTACTS"[/code],
+## [code]&"TELEMETRY_FLAG_CONTACT"[/code]…); 0 without the extension.
+func get_constant(constant_name: StringName) -> int:
+	if _server != null and not _constants.has(constant_name):
+		push_error("Haptics: HapticsServer has no constant '%s'." % constant_name)
+	return _constants.get(constant_name, 0)
 
 
-## Id of the open device ("" when none).
-func get_device_id() -> String:
-	return str(server.call(&"get_device_id")) if server != null else ""
-
-
-## Name of the open device ("" when none).
-func get_device_name() -> String:
-	return str(server.call(&"get_device_name")) if server != null else ""
-
-
-## True when the open device is the simulated one (its hand can be moved).
-func is_simulated() -> bool:
-	return get_device_id() == DEFAULT_DEVICE
-
-
-## Starts the servo thread at [param rate_hz] (250–4000).
-func start(rate_hz: float = 1000.0) -> bool:
-	if server == null:
-		return false
-	var started: bool = server.call(&"start", rate_hz)
-	status_changed.emit()
-	return started
-
-
-## Stops the servo thread; the device is left at zero force.
-func stop() -> void:
-	if server != null:
-		server.call(&"stop")
-		status_changed.emit()
-
-
-## True while the servo thread renders.
-func is_running() -> bool:
-	if server == null:
-		return false
-	var running: bool = server.call(&"is_running")
-	return running
-
-
-## Sends the latest haptic frame (layout in gdextension/src/godot/conversions.h).
-func submit_frame(frame: Dictionary) -> bool:
-	if server == null:
-		return false
-	var accepted: bool = server.call(&"submit_frame", frame)
-	return accepted
-
-
-## Queues an impact transient: direction, speed (m/s) and optionally gain, frequency, decay.
-func push_impact(impact: Dictionary) -> bool:
-	if server == null:
-		return false
-	var accepted: bool = server.call(&"push_impact", impact)
-	return accepted
+## The extension's version line, or why there is none.
+func get_version() -> String:
+	return str(_server.call(&"get_version")) if _server != null else "haptics extension not loaded"
 
 
 ## The device's input vector (length ≤ 1); zero without a device.
 func get_input_vector() -> Vector2:
-	return server.call(&"get_input_vector") if server != null else Vector2.ZERO
+	return _server.call(&"get_input_vector") if _server != null else Vector2.ZERO
 
 
 ## Rendered force components in newtons, one [Vector2] per name in [constant FORCE_NAMES].
 func get_forces() -> Dictionary:
-	if server != null:
-		return server.call(&"get_forces")
+	if _server != null:
+		return _server.call(&"get_forces")
 	var zeros: Dictionary = {}
 	for force_name: String in FORCE_NAMES:
 		zeros[force_name] = Vector2.ZERO
 	return zeros
 
 
-## Servo loop statistics (rate_hz, period_p99_ms, late_ticks, realtime…); empty without
-## the extension.
-func get_stats() -> Dictionary:
-	return server.call(&"get_stats") if server != null else {}
+## One component of a [method get_forces] result (zero when absent).
+func force_of(forces: Dictionary, component: String) -> Vector2:
+	var value: Variant = forces.get(component, Vector2.ZERO)
+	return value if value is Vector2 else Vector2.ZERO
 
 
-## The open device's force limit in newtons (0 without a device).
-func get_max_force() -> float:
-	if server == null:
-		return 0.0
-	var limits: Dictionary = server.call(&"get_device_limits")
-	var max_force: float = limits.get("max_force", 0.0)
-	return max_force
-
-
-## Moves the simulated device's hand to a normalised workspace position.
-func set_hand_target(normalized: Vector2) -> void:
-	var radius: float = _workspace_radius()
-	if radius > 0.0:
-		server.call(&"set_hand_target", normalized.limit_length(1.0) * radius)
-
-
-## The simulated hand's target, normalised.
-func get_hand_target() -> Vector2:
-	var radius: float = _workspace_radius()
-	if radius <= 0.0:
-		return Vector2.ZERO
-	var target: Vector2 = server.call(&"get_hand_target")
-	return target / radius
-
-
-## The device's stylus position, normalised.
-func get_stylus_position() -> Vector2:
-	var radius: float = _workspace_radius()
-	if radius <= 0.0:
-		return Vector2.ZERO
-	var position: Vector2 = server.call(&"get_device_position")
-	return position / radius
-
-
-## Renderer: "movement" (acceleration control, the default) or "constraint" (position
-## control against walls set with [method set_constraint_geometry]).
-func set_render_mode(mode: String) -> bool:
-	if server == null:
+## The renderer: [code]&"movement"[/code] (acceleration control, the default) or
+## [code]&"constraint"[/code] (position control against walls set with
+## [method set_constraint_geometry]). Unknown names are refused with an error.
+func set_render_mode(mode: StringName) -> bool:
+	var constant_name: StringName = "RENDER_MODE_" + mode.to_upper()
+	if _server == null:
 		return false
-	var accepted: bool = server.call(&"set_render_mode", mode)
+	if not _constants.has(constant_name):
+		push_error("Haptics.set_render_mode: unknown renderer '%s'." % mode)
+		return false
+	if get_render_mode() == mode:
+		return true
+	var accepted: bool = _server.call(&"set_render_mode", _constants[constant_name])
 	status_changed.emit()
 	return accepted
 
 
 ## The current renderer's name ("" without the extension).
-func get_render_mode() -> String:
-	return str(server.call(&"get_render_mode")) if server != null else ""
+func get_render_mode() -> StringName:
+	if _server == null:
+		return &""
+	var mode: int = _server.call(&"get_render_mode")
+	for constant_name: StringName in _constants:
+		if constant_name.begins_with("RENDER_MODE_") and _constants[constant_name] == mode:
+			return StringName(constant_name.trim_prefix("RENDER_MODE_").to_lower())
+	return &""
 
 
 ## Walls for the constraint renderer as point pairs in maze units (pixels), and how the
-## maze maps onto the workspace: {maze_min, maze_max, workspace ("disc"/"square"),
-## half_extent (m, 0 = the device's radius)}.
+## maze maps onto the workspace (layout: HapticsServer.set_constraint_geometry).
 func set_constraint_geometry(segments: PackedVector2Array, mapping: Dictionary) -> bool:
-	if server == null:
-		return false
-	var accepted: bool = server.call(&"set_constraint_geometry", segments, mapping)
-	return accepted
+	return _server != null and _server.call(&"set_constraint_geometry", segments, mapping)
 
 
-## The constraint proxy: position (maze units), goal, constraints, placed; empty without
-## the extension.
+## The constraint proxy: position (maze units), goal, constraints, placed, updates; empty
+## without the extension.
 func get_proxy_state() -> Dictionary:
-	return server.call(&"get_proxy_state") if server != null else {}
+	return _server.call(&"get_proxy_state") if _server != null else {}
 
 
-## Changes settings of one section (force_model, smoothing, safety, telemetry, constraint);
-## only the keys given change. Refused settings are reported and change nothing.
+## Changes settings of one section (HapticsServer.get_config_fields lists them); only the
+## keys given change. Refused settings are reported and change nothing.
 func configure(section: String, values: Dictionary) -> bool:
-	if server == null:
+	if _server == null:
 		return false
-	var accepted: bool = server.call(&"set_config", section, values)
+	var accepted: bool = _server.call(&"set_config", section, values)
+	status_changed.emit()
 	return accepted
 
 
-## The extension's version line, or an explanation of why there is none.
-func get_version() -> String:
-	if server == null:
-		return "haptics extension not loaded"
-	return str(server.call(&"get_version"))
+## Every section of the servo's configuration with every key; empty without the extension.
+func get_config() -> Dictionary:
+	return _server.call(&"get_config") if _server != null else {}
 
 
-## Setter of [member force_scale], clamped to [0, 2].
-func set_force_scale(value: float) -> void:
-	force_scale = clampf(value, 0.0, 2.0) if is_finite(value) else force_scale
-	status_changed.emit()
+## The force scale's allowed range (from the servo's field table; without the extension
+## anything finite and not negative).
+func get_force_scale_range() -> Vector2:
+	var field: Dictionary = _config_fields.get("safety.force_scale", {})
+	return Vector2(field.get("min", 0.0), field.get("max", INF))
 
 
-## Setter of [member smoothing_enabled].
-func set_smoothing_enabled(value: bool) -> void:
-	smoothing_enabled = value
-	if server != null:
-		server.call(&"set_config", "smoothing", {"enabled": value})
-	status_changed.emit()
+## Whether [param mode] is a control mode ([constant CONTROL_DEVICE],
+## [constant CONTROL_KEYBOARD]).
+func is_control_mode(mode: StringName) -> bool:
+	return mode == CONTROL_DEVICE or mode == CONTROL_KEYBOARD
 
 
-## Setter of [member control_mode]; unknown modes are refused with an error.
-func set_control_mode(value: StringName) -> void:
-	if value != CONTROL_DEVICE and value != CONTROL_KEYBOARD:
-		push_error("Haptics.control_mode: unknown mode '%s' (device or keyboard)" % value)
-		return
-	control_mode = value
-	status_changed.emit()
+## Puts the force scale, smoothing and control mode back to their defaults (the servo's
+## defaults for the first two).
+func reset_settings() -> void:
+	force_scale = float(_default("safety.force_scale"))
+	smoothing_enabled = bool(_default("smoothing.enabled"))
+	control_mode = CONTROL_DEVICE
 
 
-func _workspace_radius() -> float:
-	if server == null:
-		return 0.0
-	var limits: Dictionary = server.call(&"get_device_limits")
-	var radius: float = limits.get("workspace_radius", 0.0)
-	return radius
+func _setting(section: String, key: String) -> Variant:
+	if _server == null:
+		return _offline["%s.%s" % [section, key]]
+	var config: Dictionary = _server.call(&"get_config")
+	return config[section][key]
+
+
+func _set_setting(section: String, key: String, value: Variant) -> void:
+	if _server != null:
+		configure(section, {key: value})
+	else:
+		_offline["%s.%s" % [section, key]] = value
+		status_changed.emit()
+
+
+func _default(field_name: String) -> Variant:
+	return (
+		_config_fields[field_name]["default"] if _server != null else _OFFLINE_DEFAULTS[field_name]
+	)
 
 
 # Keyboard/gamepad deflection wins; otherwise the mouse's offset from the window centre,

@@ -69,7 +69,7 @@ func _ready() -> void:
 	player = level.player
 	level.goal_reached.connect(_on_goal_reached)
 	level.item_collected.connect(_on_item_collected)
-	total_items = _item_total(level)
+	total_items = level.get_item_total()
 	hud.set_player(player)
 	hud.set_run_info(0.0, 0, total_items)
 	pause_menu.quit_requested.connect(menu_requested.emit)
@@ -78,13 +78,13 @@ func _ready() -> void:
 	if autopilot:
 		_pilot = Autopilot.new(level.get_autopilot_path())
 		player.use_keyboard = false
-		HapticsLink.set_hand_follows_input(false)
+		Haptics.hand_follows_input = false
 
 
 func _exit_tree() -> void:
 	if _pilot != null:
-		HapticsLink.set_hand_target(Vector2.ZERO)
-		HapticsLink.set_hand_follows_input(true)
+		Haptics.device.set_hand_target(Vector2.ZERO)
+		Haptics.hand_follows_input = true
 
 
 func _physics_process(delta: float) -> void:
@@ -111,15 +111,15 @@ static func default_level_path() -> String:
 
 ## Whether the player steers with the haptic device (rather than keys or the autopilot).
 func uses_device_control() -> bool:
-	return _pilot == null and HapticsLink.get_control_mode() == GameSettings.CONTROL_DEVICE
+	return _pilot == null and Haptics.control_mode == Haptics.CONTROL_DEVICE
 
 
 ## The autopilot's once-a-second line: time, servo rate, input, total force, contacts.
 func status_line() -> String:
-	var rate: float = HapticsLink.get_rate_hz()
+	var rate: float = Haptics.servo.get_rate_hz()
 	var servo: String = "%d Hz" % roundi(rate) if rate > 0.0 else "off"
 	var input: Vector2 = player.input_vector
-	var force: Vector2 = HapticsLink.force_of(HapticsLink.get_forces(), "total")
+	var force: Vector2 = Haptics.force_of(Haptics.get_forces(), "total")
 	return (
 		"t=%4.1fs servo=%s input=(%+.2f, %+.2f) force=(%+.2f, %+.2f) N |F|=%.2f N contacts=%d"
 		% [
@@ -151,26 +151,13 @@ func _steer(delta: float) -> void:
 			_pilot.drive(player, delta)
 		player.use_keyboard = false
 		# The simulated hand follows, so the device agrees with what the autopilot does.
-		HapticsLink.set_hand_target(player.input_vector)
+		Haptics.device.set_hand_target(player.input_vector)
 		text = "autopilot"
 	elif uses_device_control():
-		text = "haptic device" if HapticsLink.is_running() else "device (not running)"
+		text = "haptic device" if Haptics.servo.is_running() else "device (not running)"
 	if text != _control_text:
 		_control_text = text
 		hud.set_control_text(text)
-
-
-# Items in the level: get_item_total() when the level has it, else its "total" property.
-static func _item_total(p_level: Level) -> int:
-	var value: Variant = null
-	if p_level.has_method(&"get_item_total"):
-		value = p_level.call(&"get_item_total")
-	elif &"total" in p_level:
-		value = p_level.get(&"total")
-	if typeof(value) == TYPE_INT:
-		var total: int = value
-		return total
-	return -1
 
 
 # Rounds what prints as ±0.00 to a plain zero, so the lines never show "-0.00".

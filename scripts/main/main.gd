@@ -41,8 +41,8 @@ func _ready() -> void:
 				"Autopilot on (%s): %s; %d device(s) found; %s; level %s"
 				% [
 					"no display" if headless else "--autopilot",
-					_haptics_version(),
-					HapticsLink.list_devices().size(),
+					Haptics.get_version(),
+					Haptics.device.list_present().size(),
 					MainMenu.device_status_text(),
 					Game.default_level_path(),
 				]
@@ -112,10 +112,3 @@ func _on_autopilot_finished(_reason: String) -> void:
 
 func _on_quit_requested() -> void:
 	get_tree().quit(0)
-
-
-static func _haptics_version() -> String:
-	var haptics: Node = HapticsLink.node()
-	if haptics != null and haptics.has_method(&"get_version"):
-		return str(haptics.call(&"get_version"))
-	return "haptics autoload missing"

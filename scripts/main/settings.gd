@@ -1,17 +1,21 @@
 class_name GameSettings
 extends Node
-## The player's settings, kept in [code]user://settings.cfg[/code] and applied to the
-## [code]Haptics[/code] autoload.
+## Keeps the player's haptic settings in [code]user://settings.cfg[/code]: the chosen
+## device, and the [code]Haptics[/code] autoload's force scale, smoothing and control mode.
+##
+## The values themselves, their defaults and their validation belong to [code]Haptics[/code]:
+## [member force_scale], [member smoothing_enabled] and [member control_mode] read and write
+## it, so every instance of this class sees the same values and only the file differs. The
+## device choice is this class's own: it is what the player picked, which may be gone.
 ##
 ## Registered as the [code]Settings[/code] autoload: on start it loads the file and applies
 ## it (opening the saved device, or the simulated one with a warning when the saved device
-## is gone). A missing file means defaults; an unreadable or corrupt one is reported with
-## a warning and defaults are used. When the engine starts on a test scene
+## is gone). A missing file means defaults; an unreadable or corrupt one is reported with a
+## warning and defaults are used. When the engine starts on a test scene
 ## ([method is_test_run]) the file is ignored and the defaults are applied. Other instances
 ## (tests) may use another [member path] and never touch the player's file.
 ## [codeblock]
 ## Settings.force_scale = 0.8
-## Settings.apply()
 ## Settings.save_settings()
 ## [/codeblock]
 
@@ -23,37 +27,42 @@ signal changed
 const DEFAULT_PATH: String = "user://settings.cfg"
 ## Section of the file holding the haptics settings.
 const SECTION: String = "haptics"
-## The device every installation has.
-const SIMULATED_DEVICE: String = "simulated"
-## Control by the haptic device's position (the simulated device follows the mouse).
-const CONTROL_DEVICE: StringName = &"device"
-## Control by keyboard arrows / WASD / gamepad stick.
-const CONTROL_KEYBOARD: StringName = &"keyboard"
-## Allowed range of [member force_scale].
-const FORCE_SCALE_MIN: float = 0.0
-## Allowed range of [member force_scale].
-const FORCE_SCALE_MAX: float = 2.0
 
 ## File this instance loads from and saves to.
 var path: String = DEFAULT_PATH
-## Id of the chosen device (a key [code]id[/code] of [code]Haptics.list_devices()[/code]).
-var device_id: String = SIMULATED_DEVICE:
+## Id of the chosen device (a key [code]id[/code] of [code]Haptics.device.list_present()[/code]);
+## empty means the simulated device.
+var device_id: String = "":
 	set = set_device_id
-## Multiplier on every rendered force, 0–2.
-var force_scale: float = 1.0:
-	set = set_force_scale
-## Whether the continuous force sum is smoothed (impacts stay raw).
-var smoothing_enabled: bool = true:
-	set = set_smoothing_enabled
-## [constant CONTROL_DEVICE] or [constant CONTROL_KEYBOARD].
-var control_mode: StringName = CONTROL_DEVICE:
-	set = set_control_mode
+## [code]Haptics.force_scale[/code].
+var force_scale: float:
+	get:
+		return Haptics.force_scale
+	set(value):
+		_change(func() -> void: Haptics.force_scale = value)
+## [code]Haptics.smoothing_enabled[/code].
+var smoothing_enabled: bool:
+	get:
+		return Haptics.smoothing_enabled
+	set(value):
+		_change(func() -> void: Haptics.smoothing_enabled = value)
+## [code]Haptics.control_mode[/code]; anything but a known mode means device control.
+var control_mode: StringName:
+	get:
+		return Haptics.control_mode
+	set(value):
+		var mode: StringName = value if Haptics.is_control_mode(value) else Haptics.CONTROL_DEVICE
+		_change(func() -> void: Haptics.control_mode = mode)
 ## Why the last [method load_settings] or [method apply] fell back to something; empty
 ## when all went well.
 var last_warning: String = ""
 ## Whether [method _ready] loads and applies the file (the autoload does; tests turn it
 ## off before adding an instance to the tree).
 var load_on_ready: bool = true
+
+
+func _init() -> void:
+	device_id = Haptics.device.get_simulated_id()
 
 
 func _ready() -> void:
@@ -78,49 +87,23 @@ static func is_test_run() -> bool:
 
 ## Sets [member device_id]; an empty id means the simulated device.
 func set_device_id(value: String) -> void:
-	var id: String = value if not value.is_empty() else SIMULATED_DEVICE
+	var id: String = value if not value.is_empty() else Haptics.device.get_simulated_id()
 	if id != device_id:
 		device_id = id
 		changed.emit()
 
 
-## Sets [member force_scale], clamped to 0–2.
-func set_force_scale(value: float) -> void:
-	var scale: float = clampf(value, FORCE_SCALE_MIN, FORCE_SCALE_MAX)
-	if is_nan(value):
-		scale = 1.0
-	if not is_equal_approx(scale, force_scale):
-		force_scale = scale
-		changed.emit()
-
-
-## Sets [member smoothing_enabled].
-func set_smoothing_enabled(value: bool) -> void:
-	if value != smoothing_enabled:
-		smoothing_enabled = value
-		changed.emit()
-
-
-## Sets [member control_mode]; anything but the two known modes means device control.
-func set_control_mode(value: StringName) -> void:
-	var mode: StringName = CONTROL_KEYBOARD if value == CONTROL_KEYBOARD else CONTROL_DEVICE
-	if mode != control_mode:
-		control_mode = mode
-		changed.emit()
-
-
 ## Restores every value to its default (does not save).
 func reset_to_defaults() -> void:
-	device_id = SIMULATED_DEVICE
-	force_scale = 1.0
-	smoothing_enabled = true
-	control_mode = CONTROL_DEVICE
+	device_id = Haptics.device.get_simulated_id()
+	_change(Haptics.reset_settings)
 
 
 ## Reads [member path]. A missing file keeps the defaults and returns
 ## [constant ERR_FILE_NOT_FOUND]; a corrupt one is reported (a warning and
 ## [member last_warning]), defaults are used and the error is returned. Values of the
-## wrong type or out of range fall back to their defaults, or are clamped.
+## wrong type fall back to their defaults; out-of-range ones are clamped by
+## [code]Haptics[/code].
 func load_settings() -> Error:
 	last_warning = ""
 	reset_to_defaults()
@@ -131,10 +114,10 @@ func load_settings() -> Error:
 	if err != OK:
 		_warn("Settings file %s is unreadable (%s): using defaults." % [path, error_string(err)])
 		return err
-	device_id = _read_string(file, "device", SIMULATED_DEVICE)
-	force_scale = _read_float(file, "force_scale", 1.0)
-	smoothing_enabled = _read_bool(file, "smoothing", true)
-	control_mode = StringName(_read_string(file, "control_mode", String(CONTROL_DEVICE)))
+	device_id = _read(file, "device", TYPE_STRING, device_id)
+	force_scale = _read(file, "force_scale", TYPE_FLOAT, force_scale)
+	smoothing_enabled = _read(file, "smoothing", TYPE_BOOL, smoothing_enabled)
+	control_mode = StringName(_read(file, "control_mode", TYPE_STRING, String(control_mode)))
 	changed.emit()
 	return OK
 
@@ -152,40 +135,37 @@ func save_settings() -> Error:
 	return err
 
 
-## Applies the values to the [code]Haptics[/code] autoload: opens [member device_id]
-## unless it is already open (falling back to the simulated device with a warning when it
-## is gone or fails to open) and sets the force scale, smoothing and control mode. Does
-## nothing without the native extension.
+## Opens [member device_id] unless it is already open, falling back to the simulated
+## device with a warning when it is gone or fails to open. Does nothing without the native
+## extension.
 func apply() -> void:
-	HapticsLink.set_force_scale(force_scale)
-	HapticsLink.set_smoothing_enabled(smoothing_enabled)
-	HapticsLink.set_control_mode(control_mode)
-	if not HapticsLink.is_available():
-		return
-	if HapticsLink.get_device_id() == device_id:
+	if not Haptics.is_available() or Haptics.device.get_id() == device_id:
 		return
 	if not _device_present(device_id):
 		_warn("Haptic device '%s' is gone: using the simulated device." % device_id)
 		_open_simulated()
-	elif not HapticsLink.open_device(device_id):
+	elif not Haptics.device.open(device_id):
 		_warn("Haptic device '%s' did not open: using the simulated device." % device_id)
 		_open_simulated()
 
 
-## Every device present ([code]Haptics.list_devices()[/code]); empty without the extension.
-func list_devices() -> Array[Dictionary]:
-	return HapticsLink.list_devices()
+# Runs a change of the Haptics settings and emits `changed` if it changed anything.
+func _change(change: Callable) -> void:
+	var before: Array = [force_scale, smoothing_enabled, control_mode]
+	change.call()
+	if [force_scale, smoothing_enabled, control_mode] != before:
+		changed.emit()
 
 
 func _open_simulated() -> void:
-	if device_id != SIMULATED_DEVICE:
-		device_id = SIMULATED_DEVICE
-	if HapticsLink.get_device_id() != SIMULATED_DEVICE:
-		HapticsLink.open_device(SIMULATED_DEVICE)
+	var simulated: String = Haptics.device.get_simulated_id()
+	device_id = simulated
+	if Haptics.device.get_id() != simulated:
+		Haptics.device.open(simulated)
 
 
 func _device_present(id: String) -> bool:
-	for device: Dictionary in HapticsLink.list_devices():
+	for device: Dictionary in Haptics.device.list_present():
 		if str(device.get("id", "")) == id:
 			return true
 	return false
@@ -196,24 +176,13 @@ func _warn(message: String) -> void:
 	push_warning(message)
 
 
-static func _read_string(file: ConfigFile, key: String, fallback: String) -> String:
+# The file's value of [param key] if it has [param type] (an int counts as a float), else
+# [param fallback].
+static func _read(file: ConfigFile, key: String, type: Variant.Type, fallback: Variant) -> Variant:
 	var value: Variant = file.get_value(SECTION, key, fallback)
-	if typeof(value) == TYPE_STRING or typeof(value) == TYPE_STRING_NAME:
+	var found: Variant.Type = typeof(value)
+	if found == type or (type == TYPE_FLOAT and found == TYPE_INT):
+		return value
+	if type == TYPE_STRING and found == TYPE_STRING_NAME:
 		return str(value)
-	return fallback
-
-
-static func _read_float(file: ConfigFile, key: String, fallback: float) -> float:
-	var value: Variant = file.get_value(SECTION, key, fallback)
-	if typeof(value) == TYPE_FLOAT or typeof(value) == TYPE_INT:
-		var number: float = value
-		return number
-	return fallback
-
-
-static func _read_bool(file: ConfigFile, key: String, fallback: bool) -> bool:
-	var value: Variant = file.get_value(SECTION, key, fallback)
-	if typeof(value) == TYPE_BOOL:
-		var flag: bool = value
-		return flag
 	return fallback

@@ -18,14 +18,14 @@ var buoyancy: float = 0.0
 
 var _last_velocity: Vector2 = Vector2.ZERO
 var _impact_cooldown: float = 0.0
-var _effects: Node = null
+var _effects: LevelEffects = null
 
 
 func _ready() -> void:
 	contact_monitor = true
 	max_contacts_reported = 4
 	body_entered.connect(_on_body_entered)
-	_effects = get_tree().get_first_node_in_group(&"effects")
+	_effects = get_tree().get_first_node_in_group(&"effects") as LevelEffects
 
 
 func _physics_process(delta: float) -> void:
@@ -46,4 +46,4 @@ func _on_body_entered(body: Node) -> void:
 	if body is Player:
 		(body as Player).knock(speed / 400.0)
 	_impact_cooldown = 0.12
-	_effects.call(&"impact", global_position, speed, haptic_material)
+	_effects.impact(global_position, speed, haptic_material)

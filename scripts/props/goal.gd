@@ -36,7 +36,7 @@ func _on_body_entered(body: Node2D) -> void:
 	is_reached = true
 	if _burst != null:
 		_burst.restart()
-	var effects: Node = get_tree().get_first_node_in_group(&"effects")
+	var effects: LevelEffects = get_tree().get_first_node_in_group(&"effects") as LevelEffects
 	if effects != null:
-		effects.call(&"play", &"goal", global_position, 1.0, 1.0)
+		effects.play(&"goal", global_position, 1.0, 1.0)
 	reached.emit()

@@ -35,9 +35,9 @@ func _on_body_entered(body: Node2D) -> void:
 	is_collected = true
 	set_deferred(&"monitoring", false)
 	collected.emit(self)
-	var effects: Node = get_tree().get_first_node_in_group(&"effects")
+	var effects: LevelEffects = get_tree().get_first_node_in_group(&"effects") as LevelEffects
 	if effects != null:
-		effects.call(&"play", &"pearl", global_position, 0.8, 1.0)
+		effects.play(&"pearl", global_position, 0.8, 1.0)
 	var tween: Tween = create_tween().set_parallel()
 	if _pearl != null:
 		tween.tween_property(_pearl, ^"position:y", -70.0, 0.5).set_ease(Tween.EASE_OUT)

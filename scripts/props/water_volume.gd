@@ -36,7 +36,7 @@ extends Area2D
 var _bodies: Array[RigidBody2D] = []
 var _shapes: Array[CollisionShape2D] = []
 var _gravity: float = 980.0
-var _effects: Node = null
+var _effects: LevelEffects = null
 var _rect: Rect2 = Rect2()
 
 
@@ -52,7 +52,7 @@ func _ready() -> void:
 	angular_damp = body_damping
 	body_entered.connect(_on_body_entered)
 	body_exited.connect(_on_body_exited)
-	_effects = get_tree().get_first_node_in_group(&"effects")
+	_effects = get_tree().get_first_node_in_group(&"effects") as LevelEffects
 
 
 ## Sets [member size] and resizes the collision rectangle and the visuals.
@@ -134,7 +134,7 @@ func _splash(body: Node2D, velocity: Vector2) -> void:
 	var surface: float = get_surface_y()
 	if absf(body.global_position.y - surface) > 48.0:
 		return
-	_effects.call(&"splash", Vector2(body.global_position.x, surface), absf(velocity.y))
+	_effects.splash(Vector2(body.global_position.x, surface), absf(velocity.y))
 
 
 func _find_rect() -> Rect2:

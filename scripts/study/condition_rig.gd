@@ -221,7 +221,7 @@ func is_settled() -> bool:
 
 ## The device's current normalised position (game axes).
 func hand_position() -> Vector2:
-	return Haptics.get_stylus_position()
+	return Haptics.get_device_position()
 
 
 ## Moves the simulated hand to [param normalised] (the scripted participant).

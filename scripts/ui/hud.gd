@@ -3,7 +3,7 @@ extends CanvasLayer
 ## The in-game overlay: the rendered force as arrows by component around a small avatar
 ## glyph (and at the player's screen position), with a colour legend; a scrolling plot of
 ## |total force| over the last 5 s; the device name and servo rate; the simulated device's
-## stylus against the hand target; the run's time and items.
+## device position against the hand target; the run's time and items.
 ##
 ## Every control ignores the mouse, which moves the simulated device's hand target. With
 ## [member live] on, the HUD polls the [code]Haptics[/code] autoload each frame; tests turn
@@ -19,6 +19,8 @@ const LEGEND_ORDER: Array[String] = [
 const DIAGRAM_ZOOM: float = 2.0
 ## Seconds between refreshes of the text labels.
 const LABEL_PERIOD: float = 0.25
+## Scale used while no device reports a force limit (the Touch / Omni peak), newtons.
+const FALLBACK_MAX_FORCE: float = 3.3
 
 ## Poll the haptics every frame (off in tests, which feed [method show_forces]).
 @export var live: bool = true
@@ -33,7 +35,7 @@ var _label_timer: float = 0.0
 @onready var _arrows: ForceArrows = %ForceArrows
 @onready var _world_arrows: ForceArrows = %WorldArrows
 @onready var _plot: ForcePlot = %ForcePlot
-@onready var _stylus: StylusWidget = %StylusWidget
+@onready var _device: DeviceWidget = %DeviceWidget
 @onready var _legend: VBoxContainer = %Legend
 @onready var _magnitude: Label = %Magnitude
 @onready var _forces_caption: Label = %ForcesCaption
@@ -48,15 +50,16 @@ var _label_timer: float = 0.0
 func _ready() -> void:
 	_build_legend()
 	_ignore_mouse(self)
-	set_max_force(HapticsLink.get_max_force())
+	var max_force: float = Haptics.device.get_max_force()
+	set_max_force(max_force if max_force > 0.0 else FALLBACK_MAX_FORCE)
 	set_run_info(0.0, 0, -1)
 	_refresh_labels()
 
 
 func _process(delta: float) -> void:
 	if live:
-		show_forces(HapticsLink.get_forces())
-		_stylus.set_positions(HapticsLink.get_stylus_position(), HapticsLink.get_hand_target())
+		show_forces(Haptics.get_forces())
+		_device.set_positions(Haptics.device.get_position(), Haptics.device.get_hand_target())
 		_label_timer -= delta
 		if _label_timer <= 0.0:
 			_label_timer = LABEL_PERIOD
@@ -71,9 +74,9 @@ func show_forces(forces: Dictionary) -> void:
 	_arrows.set_forces(forces)
 	_world_arrows.set_forces(forces)
 	for component: String in _legend_values:
-		var magnitude: float = HapticsLink.force_of(forces, component).length()
+		var magnitude: float = Haptics.force_of(forces, component).length()
 		_legend_values[component].text = "%.2f N" % magnitude
-	_total_magnitude = HapticsLink.force_of(forces, "total").length()
+	_total_magnitude = Haptics.force_of(forces, "total").length()
 	_magnitude.text = "%.2f N" % _total_magnitude
 
 
@@ -118,9 +121,9 @@ func get_plot() -> ForcePlot:
 	return _plot
 
 
-## The stylus / hand target widget.
-func get_stylus_widget() -> StylusWidget:
-	return _stylus
+## The device position / hand target widget.
+func get_device_widget() -> DeviceWidget:
+	return _device
 
 
 ## The legend's value label of [param component] (null if unknown).
@@ -136,22 +139,23 @@ func _follow_player() -> void:
 
 
 func _refresh_labels() -> void:
-	var device: String = HapticsLink.get_device_name()
-	if not HapticsLink.is_available():
+	var device: String = Haptics.device.get_name()
+	if not Haptics.is_available():
 		device = "No haptics extension"
 	elif device.is_empty():
 		device = "No device open"
 	_device_name.text = device
-	var rate: float = HapticsLink.get_rate_hz()
+	var rate: float = Haptics.servo.get_rate_hz()
 	if rate > 0.0:
-		var stats: Dictionary = HapticsLink.get_stats()
+		var stats: Dictionary = Haptics.servo.get_stats()
 		var p99: float = stats.get("period_p99_ms", 0.0)
 		var realtime: bool = stats.get("realtime", false) == true
 		_servo.text = (
 			"servo %d Hz  ·  p99 %.2f ms%s" % [roundi(rate), p99, "  ·  RT" if realtime else ""]
 		)
 	else:
-		_servo.text = "servo off"
+		var status: String = Haptics.servo.get_status()
+		_servo.text = "servo off" if status.is_empty() else "servo stopped: %s" % status
 
 
 func _build_legend() -> void:

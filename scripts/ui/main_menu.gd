@@ -44,12 +44,12 @@ func _process(delta: float) -> void:
 
 ## One line describing the haptic device: its name and servo rate, or why there is none.
 static func device_status_text() -> String:
-	if not HapticsLink.is_available():
+	if not Haptics.is_available():
 		return "Haptics extension not loaded: playing without force feedback"
-	var device_name: String = HapticsLink.get_device_name()
+	var device_name: String = Haptics.device.get_name()
 	if device_name.is_empty():
 		return "No haptic device open"
-	var rate: float = HapticsLink.get_rate_hz()
+	var rate: float = Haptics.servo.get_rate_hz()
 	if rate > 0.0:
 		return "%s  ·  servo %d Hz" % [device_name, roundi(rate)]
 	return device_name

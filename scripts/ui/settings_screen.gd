@@ -47,6 +47,10 @@ func _ready() -> void:
 		settings.path = "user://settings_unregistered.cfg"
 		add_child(settings)
 	_dim.visible = dim_background
+	var scale_range: Vector2 = Haptics.get_force_scale_range()
+	if is_finite(scale_range.y):
+		force_slider.min_value = scale_range.x
+		force_slider.max_value = scale_range.y
 	control_option.clear()
 	control_option.add_item("Haptic device (the mouse moves the hand)")
 	control_option.add_item("Keyboard / gamepad")
@@ -84,7 +88,7 @@ func refresh() -> void:
 	force_slider.value = settings.force_scale
 	_force_value.text = "%.2f×" % settings.force_scale
 	smoothing_check.button_pressed = settings.smoothing_enabled
-	control_option.select(1 if settings.control_mode == GameSettings.CONTROL_KEYBOARD else 0)
+	control_option.select(1 if settings.control_mode == Haptics.CONTROL_KEYBOARD else 0)
 	_show_device_info()
 	_show_warning(settings.last_warning)
 	_refreshing = false
@@ -104,7 +108,7 @@ static func device_label(device: Dictionary) -> String:
 func _populate_devices() -> void:
 	device_option.clear()
 	_device_ids.clear()
-	var devices: Array[Dictionary] = settings.list_devices()
+	var devices: Array[Dictionary] = Haptics.device.list_present()
 	for device: Dictionary in devices:
 		device_option.add_item(device_label(device))
 		_device_ids.append(str(device.get("id", "")))
@@ -115,7 +119,7 @@ func _populate_devices() -> void:
 
 func _show_device_info() -> void:
 	var index: int = device_option.selected
-	var devices: Array[Dictionary] = settings.list_devices()
+	var devices: Array[Dictionary] = Haptics.device.list_present()
 	if index < 0 or index >= devices.size():
 		_device_info.text = "Force feedback needs the native extension (make build)."
 		return
@@ -168,9 +172,7 @@ func _on_smoothing_toggled(on: bool) -> void:
 func _on_control_selected(index: int) -> void:
 	if _refreshing:
 		return
-	settings.control_mode = (
-		GameSettings.CONTROL_KEYBOARD if index == 1 else GameSettings.CONTROL_DEVICE
-	)
+	settings.control_mode = Haptics.CONTROL_KEYBOARD if index == 1 else Haptics.CONTROL_DEVICE
 	_changed()
 
 

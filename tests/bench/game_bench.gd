@@ -42,7 +42,7 @@ func _run(with_probe: bool) -> Dictionary:
 		pilot.drive(level.player, 1.0 / Engine.physics_ticks_per_second)
 		if with_probe:
 			var before: int = Time.get_ticks_usec()
-			Haptics.submit_frame(probe.build_frame())
+			probe.submit()
 			probe_us.append(float(Time.get_ticks_usec() - before))
 	var wall_s: float = (Time.get_ticks_usec() - start_us) / 1e6
 	await get_tree().process_frame

@@ -44,7 +44,7 @@ func test_simulated_device_is_listed_first_with_documented_keys() -> void:
 
 func test_ids_are_unique() -> void:
 	var seen: Dictionary[String, bool] = {}
-	for device: Dictionary in Haptics.list_devices():
+	for device: Dictionary in Haptics.device.list_present():
 		assert_false(seen.has(device["id"]), "duplicate id %s" % device["id"])
 		seen[device["id"]] = true
 

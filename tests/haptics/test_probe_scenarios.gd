@@ -17,7 +17,7 @@ var probe: HapticProbe = null
 func before_each() -> void:
 	server = HapticsServer.new()
 	assert_true(server.open_device("simulated"))
-	assert_true(server.set_config("safety", {"startup_ramp": 0.0}))
+	assert_true(server.set_config("safety", {"startup_ramp_s": 0.0}))
 	room = TEST_ROOM.instantiate() as TestRoom
 	player = room.get_node(^"Player") as Player
 	# The player scene's own probe, pointed at this test's manually stepped server before
@@ -26,7 +26,7 @@ func before_each() -> void:
 	probe.server = server
 	var material: HapticMaterial = HapticMaterial.new()
 	material.stiffness = K
-	material.damping = B
+	material.friction = B
 	probe.default_material = material
 	add_child_autofree(room)
 
@@ -81,6 +81,23 @@ func test_pushing_right_into_the_wall_is_pushed_back_left_with_k_p() -> void:
 	assert_almost_eq(_contact_normal(), Vector2.LEFT, 0.01)
 	assert_lt(f_n.x, -0.1, "pushed back left")
 	assert_almost_eq(f_n, -K * _projection(i, Vector2.LEFT), 1e-3)
+
+
+func test_the_force_scale_reaches_a_wall_without_any_material() -> void:
+	# No material on the wall and none on the probe: the servo's default material, and
+	# still the servo's force scale (it used to be multiplied into materials only).
+	probe.default_material = null
+	var default_k: float = server.get_config()["force_model"]["contact_stiffness_n"]
+	assert_true(server.set_config("safety", {"force_scale": 0.5}))
+	_hand(Vector2.RIGHT)
+	await _run_frames(200)
+	var contacts: Array = probe.last_frame["contacts"]
+	var first: Dictionary = contacts[0]
+	assert_false(first.has("stiffness_n"), "the frame names no material")
+	var i: Vector2 = server.get_input_vector()
+	var f_n: Vector2 = server.get_forces()["normal"]
+	assert_lt(f_n.x, -0.1, "pushed back left")
+	assert_almost_eq(f_n, -0.5 * default_k * _projection(i, Vector2.LEFT), 1e-3)
 
 
 func test_walls_at_thirty_forty_five_and_one_hundred_thirty_five_degrees() -> void:

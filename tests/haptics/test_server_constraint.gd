@@ -14,16 +14,24 @@ var server: HapticsServer = null
 func before_each() -> void:
 	server = HapticsServer.new()
 	assert_true(server.open_device("simulated"))
-	assert_true(server.set_config("safety", {"startup_ramp": 0.0, "slew_rate": 0.0}))
+	assert_true(server.set_config("safety", {"startup_ramp_s": 0.0, "slew_rate_n_per_s": 0.0}))
 	assert_true(
-		server.set_config(
-			"constraint", {"stiffness": K_C, "proxy_radius": RADIUS, "update": "servo"}
+		(
+			server
+			. set_config(
+				"constraint",
+				{
+					"stiffness_n_per_m": K_C,
+					"proxy_radius": RADIUS,
+					"update": HapticsServer.PROXY_UPDATE_SERVO_RATE,
+				}
+			)
 		)
 	)
 	var wall: PackedVector2Array = [Vector2(20.0, -90.0), Vector2(20.0, 90.0)]
 	assert_true(server.set_constraint_geometry(wall, {"maze_min": MAZE_MIN, "maze_max": MAZE_MAX}))
-	assert_true(server.set_render_mode("constraint"))
-	assert_eq(server.get_render_mode(), "constraint")
+	assert_true(server.set_render_mode(HapticsServer.RENDER_MODE_CONSTRAINT))
+	assert_eq(server.get_render_mode(), HapticsServer.RENDER_MODE_CONSTRAINT)
 
 
 func after_each() -> void:
@@ -105,16 +113,16 @@ func test_bad_geometry_is_refused_and_the_old_walls_stay() -> void:
 
 
 func test_unknown_modes_and_settings_are_refused() -> void:
-	expect_error("unknown mode 'joystick'")
-	assert_false(server.set_render_mode("joystick"))
-	assert_eq(server.get_render_mode(), "constraint")
+	expect_error("unknown mode 9")
+	assert_false(server.set_render_mode(9))
+	assert_eq(server.get_render_mode(), HapticsServer.RENDER_MODE_CONSTRAINT)
 	expect_error("constraint.update must be")
 	assert_false(server.set_config("constraint", {"update": "sometimes"}))
-	assert_eq(server.get_config()["constraint"]["update"], "servo")
+	assert_eq(server.get_config()["constraint"]["update"], HapticsServer.PROXY_UPDATE_SERVO_RATE)
 
 
 func test_back_to_movement_mode() -> void:
-	assert_true(server.set_render_mode("movement"))
+	assert_true(server.set_render_mode(HapticsServer.RENDER_MODE_MOVEMENT))
 	assert_true(server.set_hand_target(Vector2(0.05, 0.0)))
 	_steps(100)
 	assert_almost_eq(server.get_forces()["total"], Vector2.ZERO, 1e-4, "no contacts, no force")

@@ -14,9 +14,9 @@ func before_each() -> void:
 	server = HapticsServer.new()
 	assert_true(server.open_device("simulated"))
 	# No ramp, slew or smoothing: the rendered force is the model's force at every tick.
-	assert_true(server.set_config("safety", {"startup_ramp": 0.0, "slew_rate": 0.0}))
+	assert_true(server.set_config("safety", {"startup_ramp_s": 0.0, "slew_rate_n_per_s": 0.0}))
 	assert_true(server.set_config("smoothing", {"enabled": false}))
-	assert_true(server.set_config("force_model", {"dead_zone": 0.0, "gravity": 1.0}))
+	assert_true(server.set_config("force_model", {"dead_zone": 0.0, "gravity_n_per_kg": 1.0}))
 
 
 func after_each() -> void:
@@ -31,7 +31,7 @@ func _push(hand_target_m: Vector2, frame: Dictionary, ticks: int = 200) -> void:
 
 
 func _wall(normal: Vector2) -> Dictionary:
-	return {"contacts": [{"normal": normal, "stiffness": K, "damping": B}]}
+	return {"contacts": [{"normal": normal, "stiffness_n": K, "friction_n": B}]}
 
 
 func _projection(input: Vector2, normal: Vector2) -> Vector2:
@@ -73,24 +73,24 @@ func test_sliding_along_the_floor_feels_friction_against_the_tangential_input() 
 
 
 func test_a_crate_on_top_is_felt_but_not_one_underneath() -> void:
-	var on_top: Dictionary = {"resting": [{"normal": Vector2.DOWN, "mass": 1.2}]}
+	var on_top: Dictionary = {"resting": [{"normal": Vector2.DOWN, "mass_kg": 1.2}]}
 	_push(Vector2.ZERO, on_top, 5)
 	assert_almost_eq(server.get_forces()["weight"], Vector2(0.0, 1.2), TOL)
-	var underneath: Dictionary = {"resting": [{"normal": Vector2.UP, "mass": 1.2}]}
+	var underneath: Dictionary = {"resting": [{"normal": Vector2.UP, "mass_kg": 1.2}]}
 	_push(Vector2.ZERO, underneath, 5)
 	assert_almost_eq(server.get_forces()["weight"], Vector2.ZERO, TOL)
 
 
 func test_water_drag_opposes_velocity_and_inertia_points_down() -> void:
 	var in_water: Dictionary = {
-		"water": {"inside": true, "drag": 0.5, "inertia": 0.4},
-		"velocity": Vector2(1.0, -0.5),
+		"water": {"inside": true, "drag_n_s_per_m": 0.5, "inertia_n": 0.4},
+		"velocity_m_per_s": Vector2(1.0, -0.5),
 	}
 	_push(Vector2.ZERO, in_water, 5)
 	var forces: Dictionary = server.get_forces()
 	assert_almost_eq(forces["drag"], Vector2(-0.5, 0.25), TOL)
 	assert_almost_eq(forces["inertia"], Vector2(0.0, 0.4), TOL)
-	_push(Vector2.ZERO, {"velocity": Vector2(1.0, -0.5)}, 5)
+	_push(Vector2.ZERO, {"velocity_m_per_s": Vector2(1.0, -0.5)}, 5)
 	forces = server.get_forces()
 	assert_almost_eq(forces["drag"], Vector2.ZERO, TOL, "out of the water")
 	assert_almost_eq(forces["inertia"], Vector2.ZERO, TOL)
@@ -108,10 +108,10 @@ func test_an_impact_is_a_raw_decaying_transient() -> void:
 		server.push_impact(
 			{
 				"direction": Vector2.LEFT,
-				"speed": 2.0,
-				"gain": 0.5,
-				"frequency": 100.0,
-				"decay": 0.02
+				"speed_m_per_s": 2.0,
+				"gain_n_s_per_m": 0.5,
+				"frequency_hz": 100.0,
+				"decay_s": 0.02
 			}
 		)
 	)
@@ -166,10 +166,10 @@ func test_bad_settings_are_refused_and_the_old_ones_kept() -> void:
 
 func test_force_output_never_exceeds_the_device_limit() -> void:
 	var stiff: Dictionary = {
-		"contacts": [{"normal": Vector2.LEFT, "stiffness": 90.0, "damping": 0.0}]
+		"contacts": [{"normal": Vector2.LEFT, "stiffness_n": 90.0, "friction_n": 0.0}]
 	}
 	_push(Vector2(0.1, 0.0), stiff)
-	var limit: float = server.get_device_limits()["max_force"]
+	var limit: float = server.get_device_limits()["max_force_n"]
 	assert_almost_eq(limit, 3.3, 1e-6)
 	var total: Vector2 = server.get_forces()["total"]
 	assert_lt(total.length(), limit + 1e-4)

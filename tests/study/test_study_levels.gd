@@ -74,7 +74,7 @@ func test_the_scripted_hand_solves_the_real_maze_in_both_control_schemes() -> vo
 		var start: Vector2 = rig.start_hand()
 		Haptics.set_hand_target(start)
 		await wait_until(
-			func() -> bool: return Haptics.get_stylus_position().distance_to(start) < 0.03, 3.0
+			func() -> bool: return Haptics.get_device_position().distance_to(start) < 0.03, 3.0
 		)
 		rig.go()
 		var pilot: StudyPilot = StudyPilot.new(level.get_autopilot_path(), config.autopilot_speed())

@@ -105,7 +105,7 @@ func _push(condition: String, hand: Vector2, point: Vector2 = Vector2.ZERO) -> T
 	Haptics.set_hand_target(_rig.start_hand())
 	var start: Vector2 = _rig.start_hand()
 	var centred: bool = await wait_until(
-		func() -> bool: return Haptics.get_stylus_position().distance_to(start) < 0.03, 3.0
+		func() -> bool: return Haptics.get_device_position().distance_to(start) < 0.03, 3.0
 	)
 	assert_true(centred, "the simulated hand reaches the start")
 	var settled: bool = await wait_until(func() -> bool: return _rig.is_settled(), 3.0)

@@ -110,8 +110,8 @@ func test_the_world_arrows_sit_on_the_player() -> void:
 	assert_false(world.visible)
 
 
-func test_the_stylus_widget_places_both_dots() -> void:
-	var widget: StylusWidget = _hud.get_stylus_widget()
+func test_the_device_widget_places_both_dots() -> void:
+	var widget: DeviceWidget = _hud.get_device_widget()
 	widget.set_positions(Vector2(0.5, 0.0), Vector2(-1.0, 0.0))
 	var centre: Vector2 = widget.size * 0.5
 	assert_gt(widget.to_local_point(Vector2(0.5, 0.0)).x, centre.x)

@@ -13,9 +13,10 @@ func before_each() -> void:
 func after_each() -> void:
 	if FileAccess.file_exists(_path):
 		DirAccess.remove_absolute(_path)
-	# Put the game-wide haptics back as the player's settings say.
+	# Every GameSettings shares the Haptics values: put the test defaults back.
 	var settings: GameSettings = get_node_or_null(^"/root/Settings") as GameSettings
 	if settings != null:
+		settings.reset_to_defaults()
 		settings.apply()
 
 
@@ -34,14 +35,14 @@ func test_values_survive_a_save_and_a_reload() -> void:
 	written.device_id = "hid:0403:cb48"
 	written.force_scale = 0.65
 	written.smoothing_enabled = false
-	written.control_mode = GameSettings.CONTROL_KEYBOARD
+	written.control_mode = Haptics.CONTROL_KEYBOARD
 	assert_eq(written.save_settings(), OK)
 	var read: GameSettings = _make()
 	assert_eq(read.load_settings(), OK)
 	assert_eq(read.device_id, "hid:0403:cb48")
 	assert_almost_eq(read.force_scale, 0.65, 1e-6)
 	assert_false(read.smoothing_enabled)
-	assert_eq(read.control_mode, GameSettings.CONTROL_KEYBOARD)
+	assert_eq(read.control_mode, Haptics.CONTROL_KEYBOARD)
 	assert_eq(read.last_warning, "")
 
 
@@ -75,10 +76,10 @@ func test_wrong_types_and_out_of_range_values_fall_back() -> void:
 	assert_eq(file.save(_path), OK)
 	var settings: GameSettings = _make()
 	assert_eq(settings.load_settings(), OK)
-	assert_eq(settings.device_id, GameSettings.SIMULATED_DEVICE)
-	assert_eq(settings.force_scale, GameSettings.FORCE_SCALE_MAX, "clamped to 2")
+	assert_eq(settings.device_id, Haptics.device.get_simulated_id())
+	assert_eq(settings.force_scale, Haptics.get_force_scale_range().y, "clamped to 2")
 	assert_true(settings.smoothing_enabled)
-	assert_eq(settings.control_mode, GameSettings.CONTROL_DEVICE)
+	assert_eq(settings.control_mode, Haptics.CONTROL_DEVICE)
 
 
 func test_setters_emit_changed_only_on_a_real_change() -> void:
@@ -89,30 +90,30 @@ func test_setters_emit_changed_only_on_a_real_change() -> void:
 	settings.smoothing_enabled = true
 	assert_eq(count[0], 0)
 	settings.force_scale = 0.5
-	settings.control_mode = GameSettings.CONTROL_KEYBOARD
+	settings.control_mode = Haptics.CONTROL_KEYBOARD
 	assert_eq(count[0], 2)
 
 
 func test_a_saved_device_that_is_gone_falls_back_to_the_simulated_one() -> void:
-	if not HapticsLink.is_available():
+	if not Haptics.is_available():
 		skip("needs the haptics extension")
 		return
 	var settings: GameSettings = _make()
 	settings.device_id = "usb:dead:beef:unplugged"
 	settings.apply()
 	assert_has(settings.last_warning, "usb:dead:beef:unplugged")
-	assert_eq(settings.device_id, GameSettings.SIMULATED_DEVICE)
-	assert_eq(HapticsLink.get_device_id(), GameSettings.SIMULATED_DEVICE)
+	assert_eq(settings.device_id, Haptics.device.get_simulated_id())
+	assert_eq(Haptics.device.get_id(), Haptics.device.get_simulated_id())
 
 
 func test_apply_sets_the_haptics_properties() -> void:
-	if not HapticsLink.is_available():
+	if not Haptics.is_available():
 		skip("needs the haptics extension")
 		return
 	var settings: GameSettings = _make()
 	settings.force_scale = 0.4
 	settings.smoothing_enabled = false
-	settings.control_mode = GameSettings.CONTROL_KEYBOARD
+	settings.control_mode = Haptics.CONTROL_KEYBOARD
 	settings.apply()
 	assert_almost_eq(float(Haptics.force_scale), 0.4, 1e-6)
 	assert_false(Haptics.smoothing_enabled)
@@ -128,7 +129,7 @@ func _make() -> GameSettings:
 
 
 func _assert_defaults(settings: GameSettings) -> void:
-	assert_eq(settings.device_id, GameSettings.SIMULATED_DEVICE)
+	assert_eq(settings.device_id, Haptics.device.get_simulated_id())
 	assert_eq(settings.force_scale, 1.0)
 	assert_true(settings.smoothing_enabled)
-	assert_eq(settings.control_mode, GameSettings.CONTROL_DEVICE)
+	assert_eq(settings.control_mode, Haptics.CONTROL_DEVICE)

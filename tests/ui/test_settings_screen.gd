@@ -25,13 +25,15 @@ func before_each() -> void:
 func after_each() -> void:
 	if FileAccess.file_exists(_path):
 		DirAccess.remove_absolute(_path)
+	# Every GameSettings shares the Haptics values: put the test defaults back.
 	var settings: GameSettings = get_node_or_null(^"/root/Settings") as GameSettings
 	if settings != null:
+		settings.reset_to_defaults()
 		settings.apply()
 
 
 func test_every_device_is_listed_and_known_haptic_ones_are_marked() -> void:
-	var devices: Array[Dictionary] = HapticsLink.list_devices()
+	var devices: Array[Dictionary] = Haptics.device.list_present()
 	if devices.is_empty():
 		assert_eq(_screen.device_option.item_count, 1)
 		assert_true(_screen.device_option.disabled, "nothing to choose without the extension")
@@ -58,7 +60,7 @@ func test_the_slider_sets_the_force_scale_and_applies_it() -> void:
 	assert_almost_eq(_settings.force_scale, 0.5, 1e-6)
 	var value_label: Label = _screen.find_child("ForceValue", true, false) as Label
 	assert_eq(value_label.text, "0.50×")
-	if HapticsLink.is_available():
+	if Haptics.is_available():
 		assert_almost_eq(float(Haptics.force_scale), 0.5, 1e-6, "applied at once")
 
 
@@ -67,10 +69,10 @@ func test_smoothing_and_control_mode() -> void:
 	assert_false(_settings.smoothing_enabled)
 	_screen.control_option.select(1)
 	_screen.control_option.item_selected.emit(1)
-	assert_eq(_settings.control_mode, GameSettings.CONTROL_KEYBOARD)
+	assert_eq(_settings.control_mode, Haptics.CONTROL_KEYBOARD)
 	_screen.control_option.select(0)
 	_screen.control_option.item_selected.emit(0)
-	assert_eq(_settings.control_mode, GameSettings.CONTROL_DEVICE)
+	assert_eq(_settings.control_mode, Haptics.CONTROL_DEVICE)
 
 
 func test_back_saves_the_changes_and_closes() -> void:

@@ -6,19 +6,25 @@
 //   goal  = to_maze(device.xy)
 //   F.xy  = k_c (to_device(proxy) - device.xy),   F.z = 0
 // Only the normal force, as in the study: the proxy is frictionless, so the force is always
-// along the normals of the walls holding it. z is left free (the maze is planar).
+// along the normals of the walls holding it; it is reported as the `normal` component. z is
+// left free (the maze is planar). The force is not low-pass filtered: a filter inside a
+// position-feedback loop adds phase lag, which makes a stiff wall spongy and can make it
+// unstable, and the force is already continuous at the servo rate.
 //
-// The renderer follows the geometry the servo currently holds (GeometryExchange). When the
-// geometry changes, the proxy keeps its place if the disc still fits there in the new walls
-// (re-sending the same maze must not teleport the avatar through a wall), and is re-placed
-// otherwise. It is re-placed too on reset() (a new session, a switch of render mode) and when
-// the radius changes. Until it is placed the force is zero.
+// The renderer follows the geometry the servo currently holds (GeometryExchange, picked up
+// every tick whatever the render mode). When the geometry changes, the proxy keeps its place
+// if the disc still fits there in the new walls (re-sending the same maze must not teleport
+// the avatar through a wall), and is re-placed otherwise. It is re-placed too on reset() (a
+// new session, a switch of render mode) and when the radius changes. Until it is placed the
+// force is zero.
 //
 // No allocation; state is the proxy, the resolved mapping and the last configuration.
 
 #include "core/config.h"
 #include "core/finite_proxy.h"
+#include "core/geometry_exchange.h"
 #include "core/maze_mapping.h"
+#include "core/renderer.h"
 #include "core/vec3.h"
 
 #include <cstdint>
@@ -35,7 +41,9 @@ struct ConstraintOutput {
 	bool stepped = false; // The proxy was updated this tick.
 };
 
-class ConstraintRenderer {
+// The proxy and the force law alone, without the servo's channels: what tests compare the
+// engine against.
+class ConstraintSolver {
 public:
 	void reset();
 	void configure(const ConstraintConfig &p_config);
@@ -55,6 +63,25 @@ private:
 	MazeTransform transform_;
 	uint64_t generation_ = 0; // Of the geometry transform_ was resolved for; 0 = none.
 	double device_radius_m_ = 0.0;
+};
+
+class ConstraintRenderer final : public Renderer {
+public:
+	explicit ConstraintRenderer(GeometryExchange &r_geometry);
+
+	void begin_session(double p_dt_s) override;
+	void configure(const RenderConfig &p_config, double p_dt_s) override;
+	void reset() override;
+	void pick_up() override;
+	RenderResult render(const RenderInput &p_input) override;
+	void publish(ServoOutput &r_output, bool p_active) const override;
+
+private:
+	GeometryExchange &geometry_;
+	ConstraintSolver solver_;
+	ProxyUpdate update_ = ProxyUpdate::SERVO_RATE;
+	ConstraintOutput last_;
+	uint64_t updates_ = 0;
 };
 
 // The force law, exposed so tests can compare the engine against the proxy alone.

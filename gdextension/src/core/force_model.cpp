@@ -44,12 +44,12 @@ ContactResolution resolve_contacts(const Frame &p_frame, const ContactMaterial &
 		const double share = std::max(0.0, dot(normalized_or_zero(contact.normal), result.normal));
 		const ContactMaterial &material = contact.use_default_material ? p_default_material : contact.material;
 		result.stiffness += share * material.stiffness;
-		result.damping += share * material.damping;
+		result.friction += share * material.friction;
 		weight_total += share;
 	}
 	// weight_total >= sum_length > 0: the shares sum to at least n.(sum of normals).
 	result.stiffness /= weight_total;
-	result.damping /= weight_total;
+	result.friction /= weight_total;
 	return result;
 }
 
@@ -62,14 +62,14 @@ ForceComponents compute_forces(const Frame &p_frame, const Vec3 &p_input, const 
 		const Vec3 projection = n * (dot(p_input, n) / length_squared(n));
 		const Vec3 rejection = p_input - projection;
 		forces.normal = projection * -contact.stiffness;
-		forces.friction = rejection * -contact.damping;
+		forces.friction = rejection * -contact.friction;
 	}
 
 	for (uint32_t j = 0; j < p_frame.resting_count; ++j) {
 		const RestingObject &object = p_frame.resting[j];
 		const double n_dot_d = dot(normalized_or_zero(object.normal), DEVICE_DOWN);
 		if (n_dot_d > 0.0) {
-			forces.weight += DEVICE_DOWN * (object.mass * p_config.gravity * n_dot_d);
+			forces.weight += DEVICE_DOWN * (object.mass * p_config.gravity_n_per_kg * n_dot_d);
 		}
 	}
 

@@ -53,7 +53,7 @@ struct ContactResolution {
 	bool active = false; // False without contacts or when their normals cancel out.
 	Vec3 normal; // Unit combined normal n (zero when !active).
 	double stiffness = 0.0; // Combined k, N per unit input.
-	double damping = 0.0; // Combined b, N per unit input.
+	double friction = 0.0; // Combined b, N per unit input.
 };
 
 // Device position (m) -> input vector. Divides by p_radius_m, clamps to the unit ball, then

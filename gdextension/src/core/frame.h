@@ -18,20 +18,30 @@ namespace haptics {
 inline constexpr size_t MAX_CONTACTS = 16;
 inline constexpr size_t MAX_RESTING_OBJECTS = 8;
 
+// Upper bound of every gain the game may send (k and b in N per unit input, impact gains in
+// N per m/s, water drag in N per m/s, water inertia in N).
+inline constexpr double MAX_GAIN = 100.0;
+inline constexpr double MIN_IMPACT_FREQUENCY_HZ = 1.0;
+inline constexpr double MAX_IMPACT_FREQUENCY_HZ = 1000.0;
+inline constexpr double MIN_IMPACT_DECAY_S = 0.001;
+inline constexpr double MAX_IMPACT_DECAY_S = 1.0;
+
 // Movement-based gains act on the dimensionless input vector, so they are in newtons per
 // unit input: k = 2 means pushing the stylus to the edge of the workspace straight into a
 // wall is resisted with 2 N.
 struct ContactMaterial {
-	double stiffness = 2.0; // k, N per unit input, [0, 100].
-	double damping = 1.0; // b, N per unit input, [0, 100].
+	double stiffness = 2.0; // k, N per unit input, [0, MAX_GAIN].
+	double friction = 1.0; // b, N per unit input, [0, MAX_GAIN].
 };
 
 // An impact is rendered as A(v) e^(-t/decay) sin(2 pi frequency t) with A(v) = gain * speed,
 // capped by SafetyConfig::max_impact_force.
 struct ImpactMaterial {
-	double gain = 0.5; // N per (m/s) of impact speed, [0, 100].
-	double frequency_hz = 150.0; // [1, 1000]; vibrotactile sensitivity peaks near 200-300 Hz.
-	double decay_s = 0.03; // Time constant tau, [0.001, 1].
+	double gain = 0.5; // N per (m/s) of impact speed, [0, MAX_GAIN].
+	// [MIN_IMPACT_FREQUENCY_HZ, MAX_IMPACT_FREQUENCY_HZ]; vibrotactile sensitivity peaks
+	// near 200-300 Hz.
+	double frequency_hz = 150.0;
+	double decay_s = 0.03; // Time constant tau, [MIN_IMPACT_DECAY_S, MAX_IMPACT_DECAY_S].
 };
 
 struct Contact {
@@ -53,8 +63,8 @@ struct RestingObject {
 
 struct WaterState {
 	bool inside = false;
-	double drag = 0.0; // c in F = -c v, N per (m/s), [0, 100].
-	double inertia = 0.0; // w in F = w d (d = down), N, [-100, 100]; negative = buoyancy.
+	double drag = 0.0; // c in F = -c v, N per (m/s), [0, MAX_GAIN].
+	double inertia = 0.0; // w in F = w d (d = down), N, [-MAX_GAIN, MAX_GAIN]; negative = buoyancy.
 };
 
 struct Frame {

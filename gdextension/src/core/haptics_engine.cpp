@@ -38,15 +38,6 @@ struct HapticsEngine::Impl {
 	DeviceIo manual_fault = DeviceIo::OK;
 	uint64_t frames_rejected = 0;
 
-	Status publish_config(const RenderConfig &p_config) {
-		const Status valid = validate_render_config(p_config);
-		if (valid) {
-			config = p_config;
-			channels.config.store(config);
-		}
-		return valid;
-	}
-
 	void end_session() {
 		loop.stop();
 		if (manual_session && device) {
@@ -290,66 +281,17 @@ size_t HapticsEngine::drain_telemetry(float *r_out, size_t p_max_samples) {
 	return count;
 }
 
-Status HapticsEngine::configure_force_model(const ForceModelConfig &p_config) {
-	RenderConfig config = impl_->config;
-	config.force_model = p_config;
-	return impl_->publish_config(config);
-}
-
-Status HapticsEngine::configure_smoothing(const SmoothingConfig &p_config) {
-	RenderConfig config = impl_->config;
-	config.smoothing = p_config;
-	return impl_->publish_config(config);
-}
-
-Status HapticsEngine::configure_safety(const SafetyConfig &p_config) {
-	RenderConfig config = impl_->config;
-	config.safety = p_config;
-	return impl_->publish_config(config);
-}
-
-Status HapticsEngine::configure_telemetry(const TelemetryConfig &p_config) {
-	RenderConfig config = impl_->config;
-	config.telemetry = p_config;
-	return impl_->publish_config(config);
-}
-
-Status HapticsEngine::set_default_contact_material(const ContactMaterial &p_material) {
-	RenderConfig config = impl_->config;
-	config.force_model.default_contact = p_material;
-	return impl_->publish_config(config);
-}
-
-Status HapticsEngine::set_default_impact_material(const ImpactMaterial &p_material) {
-	RenderConfig config = impl_->config;
-	config.force_model.default_impact = p_material;
-	return impl_->publish_config(config);
-}
-
-Status HapticsEngine::set_workspace_radius(double p_radius_m) {
-	RenderConfig config = impl_->config;
-	config.force_model.input_radius_m = p_radius_m;
-	return impl_->publish_config(config);
+Status HapticsEngine::configure(const RenderConfig &p_config) {
+	const Status valid = validate_render_config(p_config);
+	if (valid) {
+		impl_->config = p_config;
+		impl_->channels.config.store(p_config);
+	}
+	return valid;
 }
 
 const RenderConfig &HapticsEngine::config() const {
 	return impl_->config;
-}
-
-Status HapticsEngine::set_render_mode(RenderMode p_mode) {
-	RenderConfig config = impl_->config;
-	config.render_mode = p_mode;
-	return impl_->publish_config(config);
-}
-
-RenderMode HapticsEngine::render_mode() const {
-	return impl_->config.render_mode;
-}
-
-Status HapticsEngine::configure_constraint(const ConstraintConfig &p_config) {
-	RenderConfig config = impl_->config;
-	config.constraint = p_config;
-	return impl_->publish_config(config);
 }
 
 Status HapticsEngine::set_constraint_geometry(const Segment2 *p_segments, size_t p_count, const MazeMapping &p_mapping) {

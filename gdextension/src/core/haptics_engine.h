@@ -22,7 +22,8 @@
 //
 // Constraint-based condition (position control against the maze's walls):
 //   at level load:      engine.set_constraint_geometry(walls, count, mapping);
-//                       engine.configure_constraint(config);  engine.set_render_mode(CONSTRAINT);
+//                       engine.configure(config)  with config.constraint and
+//                       config.render_mode = RenderMode::CONSTRAINT;
 //   each physics tick:  engine.submit_frame(frame)  (empty contacts are fine: heartbeat)
 //   each frame:         draw the avatar at engine.proxy_position()
 
@@ -105,24 +106,16 @@ public:
 	size_t drain_telemetry(float *r_out, size_t p_max_samples);
 
 	// --- Configuration (any time, also while rendering) ----------------------------------
-	Status configure_force_model(const ForceModelConfig &p_config);
-	Status configure_smoothing(const SmoothingConfig &p_config);
-	Status configure_safety(const SafetyConfig &p_config);
-	Status configure_telemetry(const TelemetryConfig &p_config);
-	Status set_default_contact_material(const ContactMaterial &p_material);
-	Status set_default_impact_material(const ImpactMaterial &p_material);
-	// Radius (m) mapped to |input| = 1; 0 = the device's workspace radius.
-	Status set_workspace_radius(double p_radius_m);
+	// Validates the whole configuration (validation.h) and hands it to the servo, which
+	// picks it up at its next tick; on error nothing changes. To change one field:
+	//   RenderConfig config = engine.config();  config.safety.force_scale = 0.5;
+	//   engine.configure(config);
+	// A change of render_mode starts the new renderer from rest (the proxy is re-placed);
+	// the slew limit smooths the change.
+	Status configure(const RenderConfig &p_config);
 	const RenderConfig &config() const;
 
 	// --- Constraint-based rendering (god-object / finite proxy) --------------------------
-	// MOVEMENT (default) or CONSTRAINT; any time, also while rendering. Each switch starts
-	// the new renderer from rest (the proxy is re-placed); the slew limit smooths the change.
-	Status set_render_mode(RenderMode p_mode);
-	RenderMode render_mode() const;
-	// k_c (N/m), proxy radius (maze units), proxy update rate (SERVO_RATE = every tick, or
-	// FRAME_RATE = on each new frame, the paper's 50 Hz variant), sweeps per update.
-	Status configure_constraint(const ConstraintConfig &p_config);
 	// The maze's static walls (maze units; polygons as closed chains, see
 	// append_closed_chain) and how the device's workspace maps onto the maze. Validated
 	// (finite, non-degenerate, count <= MAX_CONSTRAINT_SEGMENTS: the message names the

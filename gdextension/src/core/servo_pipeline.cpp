@@ -9,10 +9,19 @@ namespace {
 // Seqlock's constructor publishes a default value: version 1 means "nothing submitted yet".
 constexpr uint64_t UNTOUCHED_VERSION = 1;
 
+void scale_forces(ForceComponents &r_forces, double p_scale) {
+	r_forces.normal = r_forces.normal * p_scale;
+	r_forces.friction = r_forces.friction * p_scale;
+	r_forces.weight = r_forces.weight * p_scale;
+	r_forces.drag = r_forces.drag * p_scale;
+	r_forces.inertia = r_forces.inertia * p_scale;
+	r_forces.continuous = r_forces.continuous * p_scale;
+}
+
 } // namespace
 
 ServoPipeline::ServoPipeline(ServoChannels &r_channels) :
-		channels_(r_channels) {}
+		channels_(r_channels), constraint_(r_channels.geometry) {}
 
 void ServoPipeline::begin_session(HapticDevice *p_device, double p_dt_s) {
 	device_ = p_device;
@@ -24,13 +33,12 @@ void ServoPipeline::begin_session(HapticDevice *p_device, double p_dt_s) {
 	config_version_ = 0;
 	RenderConfig config = channels_.config.load();
 	channels_.config.try_load(config, &config_version_);
-	apply_config(config, true);
-	filter_.reset();
+	apply_config(config);
+	for (Renderer *renderer : renderers_) {
+		renderer->begin_session(dt_s_);
+	}
 	safety_.reset();
 	transients_ = TransientBank{};
-	constraint_.reset();
-	constraint_output_ = ConstraintOutput{};
-	proxy_updates_ = 0;
 
 	// The latest frame, even one submitted before this session, is picked up by the first
 	// tick as if it had just arrived; the watchdog takes over if no newer one follows.
@@ -47,22 +55,16 @@ void ServoPipeline::begin_session(HapticDevice *p_device, double p_dt_s) {
 	telemetry_countdown_ = 0;
 }
 
-void ServoPipeline::apply_config(const RenderConfig &p_config, bool p_force_filter) {
-	// Re-designing the filter resets its state to rest (at its last output); do it only when
-	// the smoothing itself changed, so tuning a material mid-step keeps the filter's motion.
-	const bool smoothing_changed = p_force_filter || p_config.smoothing.type != config_.smoothing.type ||
-			p_config.smoothing.cutoff_hz != config_.smoothing.cutoff_hz;
-	if (p_config.render_mode != config_.render_mode) {
-		// Each mode starts from rest; the slew limiter smooths the hand-over.
-		constraint_.reset();
-		filter_.reset();
-	}
-	constraint_.configure(p_config.constraint);
+void ServoPipeline::apply_config(const RenderConfig &p_config) {
+	const bool switched = p_config.render_mode != config_.render_mode;
 	config_ = p_config;
-	input_radius_m_ = config_.force_model.input_radius_m > 0.0 ? config_.force_model.input_radius_m : limits_.workspace_radius_m;
-	if (smoothing_changed) {
-		filter_.configure(config_.smoothing, dt_s_);
+	for (Renderer *renderer : renderers_) {
+		renderer->configure(config_, dt_s_);
 	}
+	if (switched) {
+		active().reset(); // Each mode starts from rest; the slew limiter smooths the hand-over.
+	}
+	input_radius_m_ = config_.force_model.input_radius_m > 0.0 ? config_.force_model.input_radius_m : limits_.workspace_radius_m;
 	safety_.configure(config_.safety, limits_.max_force_n);
 }
 
@@ -72,7 +74,7 @@ void ServoPipeline::pick_up_inputs() {
 		uint64_t version = 0;
 		if (channels_.config.try_load(config, &version)) {
 			config_version_ = version;
-			apply_config(config, false);
+			apply_config(config);
 		}
 	}
 	new_frame_ = false;
@@ -89,14 +91,20 @@ void ServoPipeline::pick_up_inputs() {
 	// Bounded by the queue's capacity.
 	ImpactEvent event;
 	while (channels_.impacts.try_pop(event)) {
-		transients_.add(event, config_.force_model.default_impact, config_.safety.max_impact_force_n);
+		transients_.add(event, config_.force_model.default_impact, config_.safety.max_impact_force_n,
+				config_.safety.force_scale);
+	}
+	for (Renderer *renderer : renderers_) {
+		renderer->pick_up();
 	}
 }
 
 DeviceIo ServoPipeline::tick(double p_dt_s) {
-	if (p_dt_s != dt_s_) { // Manual stepping may change the period; the filter follows.
+	if (p_dt_s != dt_s_) { // Manual stepping may change the period; the renderers follow.
 		dt_s_ = p_dt_s;
-		filter_.configure(config_.smoothing, dt_s_);
+		for (Renderer *renderer : renderers_) {
+			renderer->configure(config_, dt_s_);
+		}
 	}
 	device_->begin_tick(p_dt_s);
 	DeviceState state;
@@ -107,24 +115,17 @@ DeviceIo ServoPipeline::tick(double p_dt_s) {
 	++tick_;
 	time_s_ += p_dt_s;
 	pick_up_inputs();
-	channels_.geometry.acquire(); // Also in MOVEMENT mode, so the game's pending walls are taken.
 
 	const Vec3 input = input_vector(state.position_m, input_radius_m_, config_.force_model.dead_zone);
-	const bool constraint = config_.render_mode == RenderMode::CONSTRAINT;
-	ForceComponents forces = constraint ? render_constraint(state) : compute_forces(frame_, input, config_.force_model);
+	const RenderInput render_input{ state, input, frame_, new_frame_, p_dt_s, limits_.workspace_radius_m };
+	RenderResult rendered = active().render(render_input);
+	const double scale = config_.safety.force_scale;
+	scale_forces(rendered.forces, scale);
 
-	Vec3 smoothed;
-	if (constraint) {
-		smoothed = forces.continuous; // Not filtered: see the header.
-	} else if (is_finite(forces.continuous)) {
-		smoothed = filter_.process(forces.continuous);
-	} else {
-		filter_.reset(); // Never let a NaN live on in the filter state.
-		smoothed = forces.continuous;
-	}
+	ForceComponents &forces = rendered.forces;
 	const Vec3 impact = transients_.advance(p_dt_s);
 	const double frame_age = have_frame_ ? time_s_ - last_frame_time_s_ : std::numeric_limits<double>::infinity();
-	const SafetyResult safety = safety_.apply(smoothed, impact, frame_age, p_dt_s);
+	const SafetyResult safety = safety_.apply(rendered.continuous * scale, impact, frame_age, p_dt_s);
 	forces.smoothed = safety.continuous;
 	forces.impact = impact;
 	forces.total = safety.total;
@@ -135,35 +136,20 @@ DeviceIo ServoPipeline::tick(double p_dt_s) {
 	}
 	clamped_ticks_ += safety.clamped ? 1 : 0;
 	non_finite_ticks_ += safety.non_finite ? 1 : 0;
-	publish(state, input, forces, safety, new_frame_, frame_.contact_count > 0);
+	publish(state, input, forces, safety, rendered.flags);
 	return DeviceIo::OK;
 }
 
-ForceComponents ServoPipeline::render_constraint(const DeviceState &p_state) {
-	const GeometryExchange::Current geometry = channels_.geometry.current();
-	const bool step = config_.constraint.update == ProxyUpdate::SERVO_RATE || new_frame_;
-	constraint_output_ = constraint_.render(geometry.geometry, geometry.generation, p_state.position_m,
-			limits_.workspace_radius_m, step);
-	proxy_updates_ += constraint_output_.stepped ? 1 : 0;
-	ForceComponents forces;
-	forces.normal = constraint_output_.force;
-	forces.continuous = constraint_output_.force;
-	return forces;
-}
-
 void ServoPipeline::publish(const DeviceState &p_state, const Vec3 &p_input, const ForceComponents &p_forces,
-		const SafetyResult &p_safety, bool p_new_frame, bool p_contact) {
-	uint32_t flags = 0;
-	flags |= p_contact ? TELEMETRY_FLAG_CONTACT : 0u;
+		const SafetyResult &p_safety, uint32_t p_renderer_flags) {
+	uint32_t flags = p_renderer_flags;
+	flags |= frame_.contact_count > 0 ? TELEMETRY_FLAG_CONTACT : 0u;
 	flags |= frame_.water.inside ? TELEMETRY_FLAG_IN_WATER : 0u;
 	flags |= p_safety.watchdog_tripped ? TELEMETRY_FLAG_WATCHDOG : 0u;
 	flags |= p_safety.clamped ? TELEMETRY_FLAG_CLAMPED : 0u;
 	flags |= p_safety.ramp_gain < 1.0 ? TELEMETRY_FLAG_RAMPING : 0u;
 	flags |= p_safety.non_finite ? TELEMETRY_FLAG_NON_FINITE : 0u;
-	flags |= p_new_frame ? TELEMETRY_FLAG_NEW_FRAME : 0u;
-	const bool constraint = config_.render_mode == RenderMode::CONSTRAINT;
-	flags |= constraint ? TELEMETRY_FLAG_CONSTRAINT_MODE : 0u;
-	flags |= constraint && constraint_output_.active_constraints > 0 ? TELEMETRY_FLAG_PROXY_CONTACT : 0u;
+	flags |= new_frame_ ? TELEMETRY_FLAG_NEW_FRAME : 0u;
 
 	if (config_.telemetry.enabled) {
 		if (telemetry_countdown_ == 0) {
@@ -193,16 +179,9 @@ void ServoPipeline::publish(const DeviceState &p_state, const Vec3 &p_input, con
 	output.clamped_ticks = clamped_ticks_;
 	output.non_finite_ticks = non_finite_ticks_;
 	output.render_mode = config_.render_mode;
-	if (constraint) {
-		output.proxy_maze = constraint_output_.proxy;
-		output.goal_maze = constraint_output_.goal;
-		output.proxy_constraints = constraint_output_.active_constraints;
-		output.proxy_placed = constraint_output_.placed;
+	for (size_t mode = 0; mode < RENDER_MODE_COUNT; ++mode) {
+		renderers_[mode]->publish(output, mode == static_cast<size_t>(config_.render_mode));
 	}
-	output.proxy_updates = proxy_updates_;
-	const GeometryExchange::Current geometry = channels_.geometry.current();
-	output.geometry_generation = geometry.generation;
-	output.geometry_segments = geometry.geometry ? static_cast<uint32_t>(geometry.geometry->segment_count()) : 0;
 	channels_.output.store(output);
 }
 

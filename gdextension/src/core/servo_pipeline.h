@@ -2,17 +2,10 @@
 
 // One servo tick, shared by the servo thread and manual step(dt):
 //
-//   device: advance + read  ->  pick up new config / frame / wall geometry, take impacts
-//   off the queue -> input vector -> force model -> smoothing (continuous part)
-//   -> transients (raw) -> safety (slew, watchdog, ramp, finite, clamp) -> device: write
-//   -> publish output snapshot, push telemetry, record nothing slow.
-//
-// In RenderMode::CONSTRAINT the force model and smoothing are replaced by the constraint
-// renderer (finite proxy against the walls, F = k_c (proxy - device), reported as the
-// `normal` component). It is not low-pass filtered: a filter inside a position-feedback
-// loop adds phase lag, which makes a stiff wall spongy and can make it unstable, and the
-// force is already continuous at the servo rate. Transients and the whole safety stage
-// apply unchanged.
+//   device: advance + read  ->  pick up new config / frame, take impacts off the queue,
+//   every renderer picks up its own inputs -> input vector -> the active renderer
+//   (renderer.h) -> force scale -> transients (raw) -> safety (slew, watchdog, ramp,
+//   finite, clamp) -> device: write -> publish output snapshot, push telemetry.
 //
 // ServoChannels is everything the game thread and the servo share; every member is
 // lock-free and allocation-free after construction. The pipeline itself is owned by the
@@ -23,10 +16,12 @@
 #include "core/force_model.h"
 #include "core/frame.h"
 #include "core/geometry_exchange.h"
+#include "core/movement_renderer.h"
+#include "core/renderer.h"
 #include "core/safety.h"
 #include "core/seqlock.h"
+#include "core/servo_output.h"
 #include "core/servo_stats.h"
-#include "core/smoothing_filter.h"
 #include "core/spsc_queue.h"
 #include "core/telemetry.h"
 #include "core/transients.h"
@@ -39,37 +34,6 @@ namespace haptics {
 
 inline constexpr size_t IMPACT_QUEUE_CAPACITY = 64;
 inline constexpr size_t TELEMETRY_QUEUE_CAPACITY = 4096; // 4 s at 1 kHz.
-
-// Servo -> game, republished every tick.
-struct ServoOutput {
-	double time_s = 0.0; // Servo time since the session started.
-	uint64_t tick = 0;
-	Vec3 input; // Input vector i.
-	Vec3 position_m; // Device position.
-	uint32_t buttons = 0;
-	uint32_t flags = 0; // TelemetryFlag bits of this tick.
-	ForceComponents forces;
-	double frame_age_s = -1.0; // -1 before the first frame.
-	double ramp_gain = 0.0;
-	double watchdog_gain = 0.0;
-	uint64_t frames_received = 0;
-	uint64_t bank_drops = 0; // Transients dropped because the bank was full.
-	uint64_t telemetry_drops = 0;
-	uint64_t clamped_ticks = 0;
-	uint64_t non_finite_ticks = 0;
-	// Constraint renderer (RenderMode::CONSTRAINT); maze units. Before the proxy is placed
-	// (or in MOVEMENT mode) proxy_maze is the goal, i.e. the device mapped into the maze.
-	RenderMode render_mode = RenderMode::MOVEMENT;
-	Vec2 proxy_maze;
-	Vec2 goal_maze;
-	uint32_t proxy_constraints = 0; // Walls holding the proxy: 0 free, 1 sliding, 2+ stopped.
-	bool proxy_placed = false;
-	uint64_t proxy_updates = 0; // Proxy updates this session (1 per tick, or 1 per frame).
-	// The walls the servo holds: how many geometries it has picked up since the engine was
-	// made (a set_constraint_geometry has taken effect once this moves), and their count.
-	uint64_t geometry_generation = 0;
-	uint32_t geometry_segments = 0;
-};
 
 struct ServoChannels {
 	Seqlock<Frame> frame; // Game -> servo, written by submit_frame only.
@@ -99,12 +63,11 @@ public:
 	uint64_t ticks() const { return tick_; }
 
 private:
-	void apply_config(const RenderConfig &p_config, bool p_force_filter);
+	void apply_config(const RenderConfig &p_config);
 	void pick_up_inputs();
+	Renderer &active() { return *renderers_[static_cast<size_t>(config_.render_mode)]; }
 	void publish(const DeviceState &p_state, const Vec3 &p_input, const ForceComponents &p_forces,
-			const SafetyResult &p_safety, bool p_new_frame, bool p_contact);
-	// The constraint renderer's forces for this tick (normal and continuous filled).
-	ForceComponents render_constraint(const DeviceState &p_state);
+			const SafetyResult &p_safety, uint32_t p_renderer_flags);
 
 	ServoChannels &channels_;
 	HapticDevice *device_ = nullptr;
@@ -124,13 +87,12 @@ private:
 	double last_frame_time_s_ = 0.0;
 	uint64_t frames_received_ = 0;
 
-	SmoothingFilter filter_;
+	MovementRenderer movement_;
+	ConstraintRenderer constraint_;
+	// Indexed by RenderMode.
+	Renderer *const renderers_[RENDER_MODE_COUNT] = { &movement_, &constraint_ };
 	TransientBank transients_;
 	SafetyStage safety_;
-
-	ConstraintRenderer constraint_;
-	ConstraintOutput constraint_output_;
-	uint64_t proxy_updates_ = 0;
 
 	uint64_t telemetry_drops_ = 0;
 	uint64_t clamped_ticks_ = 0;

@@ -19,7 +19,7 @@ BiquadCoefficients butterworth_lowpass(double p_cutoff_hz, double p_dt_s) {
 }
 
 void SmoothingFilter::configure(const SmoothingConfig &p_config, double p_dt_s) {
-	enabled_ = p_config.type == SmoothingType::BUTTERWORTH2;
+	enabled_ = p_config.enabled;
 	if (enabled_) {
 		coefficients_ = butterworth_lowpass(p_config.cutoff_hz, p_dt_s);
 	} else {

@@ -5,28 +5,6 @@
 
 namespace haptics {
 
-const char *status_code_name(StatusCode p_code) {
-	switch (p_code) {
-		case StatusCode::OK:
-			return "ok";
-		case StatusCode::INVALID_ARGUMENT:
-			return "invalid argument";
-		case StatusCode::OUT_OF_RANGE:
-			return "out of range";
-		case StatusCode::INVALID_STATE:
-			return "invalid state";
-		case StatusCode::NO_DEVICE:
-			return "no device";
-		case StatusCode::DEVICE_ERROR:
-			return "device error";
-		case StatusCode::DEVICE_DISCONNECTED:
-			return "device disconnected";
-		case StatusCode::UNSUPPORTED:
-			return "unsupported";
-	}
-	return "unknown";
-}
-
 Status Status::error(StatusCode p_code, const char *p_format, ...) {
 	Status status;
 	status.code_ = p_code;

@@ -22,8 +22,6 @@ enum class StatusCode : int32_t {
 	UNSUPPORTED = 7, // E.g. a hand target on a real device.
 };
 
-const char *status_code_name(StatusCode p_code);
-
 class Status {
 public:
 	static constexpr size_t MESSAGE_CAPACITY = 224;

@@ -3,7 +3,7 @@
 // Impact transients: decaying sinusoids (Okamura & al.'s "reality-based" vibration model,
 // the paper's ref. [7]) rendered raw on top of the smoothed continuous force.
 //
-//   s(t) = A(v) e^(-t/tau) sin(2 pi f t) * direction,   A(v) = min(gain * v, max_amplitude)
+//   s(t) = A(v) e^(-t/tau) sin(2 pi f t) * direction,   A(v) = min(scale * gain * v, max_amplitude)
 //
 // t is counted in servo ticks from when the servo took the event off the queue: the k-th
 // tick after that (k = 1, 2, ...) renders s(k dt). Starting at sin(0) = 0 means an impact
@@ -28,8 +28,10 @@ public:
 	static constexpr double EXPIRY_N = 1e-4;
 
 	// p_event must be valid (validate_impact); p_default is used when the event asks for
-	// the default material. Returns false when a drop was counted.
-	bool add(const ImpactEvent &p_event, const ImpactMaterial &p_default, double p_max_amplitude_n);
+	// the default material; p_gain_scale (the force scale) multiplies its gain before the
+	// cap. Returns false when a drop was counted.
+	bool add(const ImpactEvent &p_event, const ImpactMaterial &p_default, double p_max_amplitude_n,
+			double p_gain_scale = 1.0);
 	// Advances every transient by p_dt_s, then returns the sum of their values.
 	Vec3 advance(double p_dt_s);
 	void clear();

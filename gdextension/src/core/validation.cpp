@@ -1,6 +1,6 @@
 #include "core/validation.h"
 
-#include "core/finite_proxy.h"
+#include "core/config_fields.h"
 
 #include <cmath>
 #include <cstdio>
@@ -9,7 +9,6 @@ namespace haptics {
 
 namespace {
 
-constexpr double MAX_GAIN = 100.0; // N per unit input, or N per m/s.
 constexpr double MAX_MASS_KG = 1000.0;
 constexpr double MAX_SPEED_M_PER_S = 1000.0;
 // Normals shorter than this carry no direction.
@@ -54,8 +53,8 @@ Status validate_contact_material(const char *p_name, const ContactMaterial &p_ma
 	char name[96];
 	std::snprintf(name, sizeof(name), "%s.stiffness", p_name);
 	HAPTICS_RETURN_IF_ERROR(check_range(name, p_material.stiffness, 0.0, MAX_GAIN));
-	std::snprintf(name, sizeof(name), "%s.damping", p_name);
-	return check_range(name, p_material.damping, 0.0, MAX_GAIN);
+	std::snprintf(name, sizeof(name), "%s.friction", p_name);
+	return check_range(name, p_material.friction, 0.0, MAX_GAIN);
 }
 
 Status validate_impact_material(const char *p_name, const ImpactMaterial &p_material) {
@@ -63,9 +62,9 @@ Status validate_impact_material(const char *p_name, const ImpactMaterial &p_mate
 	std::snprintf(name, sizeof(name), "%s.gain", p_name);
 	HAPTICS_RETURN_IF_ERROR(check_range(name, p_material.gain, 0.0, MAX_GAIN));
 	std::snprintf(name, sizeof(name), "%s.frequency_hz", p_name);
-	HAPTICS_RETURN_IF_ERROR(check_range(name, p_material.frequency_hz, 1.0, 1000.0));
+	HAPTICS_RETURN_IF_ERROR(check_range(name, p_material.frequency_hz, MIN_IMPACT_FREQUENCY_HZ, MAX_IMPACT_FREQUENCY_HZ));
 	std::snprintf(name, sizeof(name), "%s.decay_s", p_name);
-	return check_range(name, p_material.decay_s, 0.001, 1.0);
+	return check_range(name, p_material.decay_s, MIN_IMPACT_DECAY_S, MAX_IMPACT_DECAY_S);
 }
 
 Status validate_frame(const Frame &p_frame) {
@@ -109,71 +108,16 @@ Status validate_impact(const ImpactEvent &p_event) {
 	return Status::success();
 }
 
-Status validate_force_model_config(const ForceModelConfig &p_config) {
-	HAPTICS_RETURN_IF_ERROR(check_range("force_model.dead_zone", p_config.dead_zone, 0.0, 0.5));
-	HAPTICS_RETURN_IF_ERROR(check_range("force_model.gravity", p_config.gravity, 0.0, 100.0));
-	if (p_config.input_radius_m != 0.0) {
-		HAPTICS_RETURN_IF_ERROR(check_range("force_model.input_radius_m", p_config.input_radius_m, 0.001, 1.0));
-	}
-	HAPTICS_RETURN_IF_ERROR(validate_contact_material("force_model.default_contact", p_config.default_contact));
-	return validate_impact_material("force_model.default_impact", p_config.default_impact);
-}
-
-Status validate_smoothing_config(const SmoothingConfig &p_config) {
-	if (p_config.type != SmoothingType::OFF && p_config.type != SmoothingType::BUTTERWORTH2) {
-		return Status::error(StatusCode::INVALID_ARGUMENT, "smoothing.type: unknown filter type %d",
-				static_cast<int>(p_config.type));
-	}
-	return check_range("smoothing.cutoff_hz", p_config.cutoff_hz, 0.5, 60.0);
-}
-
-Status validate_safety_config(const SafetyConfig &p_config) {
-	HAPTICS_RETURN_IF_ERROR(check_range("safety.max_force_n", p_config.max_force_n, 0.0, 100.0));
-	HAPTICS_RETURN_IF_ERROR(check_range("safety.max_impact_force_n", p_config.max_impact_force_n, 0.0, 100.0));
-	if (p_config.slew_rate_n_per_s != 0.0) {
-		HAPTICS_RETURN_IF_ERROR(check_range("safety.slew_rate_n_per_s", p_config.slew_rate_n_per_s, 1.0, 1e6));
-	}
-	HAPTICS_RETURN_IF_ERROR(check_range("safety.startup_ramp_s", p_config.startup_ramp_s, 0.0, 5.0));
-	HAPTICS_RETURN_IF_ERROR(check_range("safety.watchdog_timeout_s", p_config.watchdog_timeout_s, 0.005, 10.0));
-	return check_range("safety.watchdog_fade_s", p_config.watchdog_fade_s, 0.0, 0.05);
-}
-
-Status validate_telemetry_config(const TelemetryConfig &p_config) {
-	if (p_config.decimation < 1 || p_config.decimation > 1000) {
-		return Status::error(StatusCode::OUT_OF_RANGE, "telemetry.decimation must be in [1, 1000] (got %u)",
-				p_config.decimation);
-	}
-	return Status::success();
-}
-
-Status validate_render_mode(RenderMode p_mode) {
-	if (p_mode != RenderMode::MOVEMENT && p_mode != RenderMode::CONSTRAINT) {
-		return Status::error(StatusCode::INVALID_ARGUMENT, "render_mode: unknown mode %d", static_cast<int>(p_mode));
-	}
-	return Status::success();
-}
-
-Status validate_constraint_config(const ConstraintConfig &p_config) {
-	HAPTICS_RETURN_IF_ERROR(check_range("constraint.stiffness_n_per_m", p_config.stiffness_n_per_m, 0.0, 5000.0));
-	HAPTICS_RETURN_IF_ERROR(check_range("constraint.proxy_radius", p_config.proxy_radius, 1e-6, 1e6));
-	if (p_config.update != ProxyUpdate::SERVO_RATE && p_config.update != ProxyUpdate::FRAME_RATE) {
-		return Status::error(StatusCode::INVALID_ARGUMENT, "constraint.update: unknown proxy update %d",
-				static_cast<int>(p_config.update));
-	}
-	if (p_config.max_iterations < 1 || p_config.max_iterations > MAX_PROXY_ITERATIONS) {
-		return Status::error(StatusCode::OUT_OF_RANGE, "constraint.max_iterations must be in [1, %u] (got %u)",
-				MAX_PROXY_ITERATIONS, p_config.max_iterations);
-	}
-	return Status::success();
-}
-
 Status validate_render_config(const RenderConfig &p_config) {
-	HAPTICS_RETURN_IF_ERROR(validate_force_model_config(p_config.force_model));
-	HAPTICS_RETURN_IF_ERROR(validate_smoothing_config(p_config.smoothing));
-	HAPTICS_RETURN_IF_ERROR(validate_safety_config(p_config.safety));
-	HAPTICS_RETURN_IF_ERROR(validate_telemetry_config(p_config.telemetry));
-	HAPTICS_RETURN_IF_ERROR(validate_render_mode(p_config.render_mode));
-	return validate_constraint_config(p_config.constraint);
+	for (const ConfigField &field : config_fields()) {
+		HAPTICS_RETURN_IF_ERROR(check_config_value(field, field.get(p_config)));
+	}
+	const auto mode = static_cast<size_t>(p_config.render_mode);
+	if (mode >= RENDER_MODE_COUNT) {
+		return Status::error(StatusCode::INVALID_ARGUMENT, "render_mode: unknown mode %d",
+				static_cast<int>(p_config.render_mode));
+	}
+	return Status::success();
 }
 
 Status validate_rate(double p_rate_hz) {

@@ -3,7 +3,8 @@
 // Validation of everything the game hands to the core. A rejected value never reaches the
 // servo: the caller keeps its last good frame or configuration. Messages name the
 // parameter as the game spells it, e.g. "frame.contacts[3].normal: not finite (nan, 1, 0)"
-// or "smoothing.cutoff_hz must be in [0.5, 60] (got 200)".
+// or "smoothing.cutoff_hz must be in [0.5, 60] (got 200)": configuration fields by the key
+// the game sets them with (config_fields.h).
 // Non-finite values give INVALID_ARGUMENT, finite values outside a range OUT_OF_RANGE.
 
 #include "core/config.h"
@@ -20,12 +21,7 @@ Status validate_frame(const Frame &p_frame);
 Status validate_impact(const ImpactEvent &p_event);
 Status validate_contact_material(const char *p_name, const ContactMaterial &p_material);
 Status validate_impact_material(const char *p_name, const ImpactMaterial &p_material);
-Status validate_force_model_config(const ForceModelConfig &p_config);
-Status validate_smoothing_config(const SmoothingConfig &p_config);
-Status validate_safety_config(const SafetyConfig &p_config);
-Status validate_telemetry_config(const TelemetryConfig &p_config);
-Status validate_render_mode(RenderMode p_mode);
-Status validate_constraint_config(const ConstraintConfig &p_config);
+// Every field against the field table (config_fields.h), and the render mode.
 Status validate_render_config(const RenderConfig &p_config);
 // Servo rate in Hz, [MIN_RATE_HZ, MAX_RATE_HZ].
 Status validate_rate(double p_rate_hz);

@@ -29,6 +29,8 @@ struct DeviceLimits {
 
 struct DeviceState {
 	Vec3 position_m; // Stylus tip, relative to the workspace centre.
+	// Renderers receive it (RenderInput::device); none reads it yet. Kept for what comes
+	// next: Haptic Battle Pong's paddle swing and the real devices that report a velocity.
 	Vec3 velocity_m_per_s;
 	uint32_t buttons = 0; // Bit b set when button b is pressed.
 };

@@ -180,7 +180,7 @@ void register_method(const char *p_class, MethodBind *p_bind) {
 }
 
 void register_integer_constant(const char *p_class, const char *p_enum, const char *p_name,
-		int64_t p_value) {
+		int64_t p_value, bool p_bitfield) {
 	ClassRecord *record = find_class(p_class);
 	if (record == nullptr) {
 		return;
@@ -188,7 +188,7 @@ void register_integer_constant(const char *p_class, const char *p_enum, const ch
 	StringName enum_name(p_enum);
 	StringName constant_name(p_name);
 	api.classdb_register_extension_class_integer_constant(api.library, record->name->ptr(),
-			enum_name.ptr(), constant_name.ptr(), p_value, 0);
+			enum_name.ptr(), constant_name.ptr(), p_value, p_bitfield ? 1 : 0);
 }
 
 void unregister_classes() {

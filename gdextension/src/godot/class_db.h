@@ -112,7 +112,7 @@ private:
 // Hands a bound method to the engine (and keeps it alive until unregister_classes()).
 void register_method(const char *p_class, MethodBind *p_bind);
 void register_integer_constant(const char *p_class, const char *p_enum, const char *p_name,
-		int64_t p_value);
+		int64_t p_value, bool p_bitfield);
 
 // Passed to a class's static bind_methods(), like godot-cpp's ClassDB.
 template <typename C>
@@ -134,8 +134,9 @@ public:
 		bind<R (C::*)(A...) const, R, A...>(p_name, p_fn, true, p_arg_names, p_defaults);
 	}
 
-	void bind_constant(const char *p_enum, const char *p_name, int64_t p_value) {
-		register_integer_constant(class_, p_enum, p_name, p_value);
+	// p_enum "" for a plain constant; p_bitfield for flags meant to be combined.
+	void bind_constant(const char *p_enum, const char *p_name, int64_t p_value, bool p_bitfield = false) {
+		register_integer_constant(class_, p_enum, p_name, p_value, p_bitfield);
 	}
 
 private:

@@ -5,7 +5,7 @@
 #include "core/coordinates.h"
 #include "godot/dictionary_reader.h"
 
-namespace haptics::godot {
+namespace haptics::binding {
 
 namespace {
 
@@ -21,13 +21,15 @@ Vec3 velocity_from(const gd::Vector2 &p_game) {
 bool read_contact(const gd::Dictionary &p_entry, const std::string &p_path, Contact &r_contact,
 		std::string &r_error) {
 	DictionaryReader reader(p_entry, p_path);
+	reader.accept_old_key("stiffness", "stiffness_n");
+	reader.accept_old_key("damping", "friction_n");
 	gd::Vector2 normal;
-	const bool has_material = reader.has("stiffness") || reader.has("damping");
+	const bool has_material = reader.has("stiffness_n") || reader.has("friction_n");
 	r_contact.use_default_material = !has_material;
-	bool ok = reader.only_keys({ "normal", "stiffness", "damping" }) &&
+	bool ok = reader.only_keys({ "normal", "stiffness_n", "friction_n" }) &&
 			reader.read_vector2("normal", normal, true) &&
-			reader.read_number("stiffness", r_contact.material.stiffness, has_material) &&
-			reader.read_number("damping", r_contact.material.damping, has_material);
+			reader.read_number("stiffness_n", r_contact.material.stiffness, has_material) &&
+			reader.read_number("friction_n", r_contact.material.friction, has_material);
 	r_contact.normal = direction_from(normal);
 	if (!ok) {
 		r_error = reader.error();
@@ -38,10 +40,11 @@ bool read_contact(const gd::Dictionary &p_entry, const std::string &p_path, Cont
 bool read_resting(const gd::Dictionary &p_entry, const std::string &p_path, Frame &r_frame,
 		std::string &r_error) {
 	DictionaryReader reader(p_entry, p_path);
+	reader.accept_old_key("mass", "mass_kg");
 	gd::Vector2 normal;
 	double mass = 0.0;
-	if (!reader.only_keys({ "normal", "mass" }) || !reader.read_vector2("normal", normal, true) ||
-			!reader.read_number("mass", mass, true)) {
+	if (!reader.only_keys({ "normal", "mass_kg" }) || !reader.read_vector2("normal", normal, true) ||
+			!reader.read_number("mass_kg", mass, true)) {
 		r_error = reader.error();
 		return false;
 	}
@@ -83,7 +86,9 @@ bool read_list(DictionaryReader &r_reader, const char *p_key, size_t p_capacity,
 bool frame_from_dictionary(const gd::Dictionary &p_dictionary, Frame &r_frame, std::string &r_error) {
 	Frame frame;
 	DictionaryReader reader(p_dictionary, "frame");
-	if (!reader.only_keys({ "contacts", "resting", "water", "velocity", "sequence", "time" })) {
+	reader.accept_old_key("velocity", "velocity_m_per_s");
+	reader.accept_old_key("time", "time_s");
+	if (!reader.only_keys({ "contacts", "resting", "water", "velocity_m_per_s", "sequence", "time_s" })) {
 		r_error = reader.error();
 		return false;
 	}
@@ -110,16 +115,18 @@ bool frame_from_dictionary(const gd::Dictionary &p_dictionary, Frame &r_frame, s
 	gd::Dictionary water;
 	gd::Vector2 velocity;
 	int64_t sequence = 0;
-	if (!reader.read_dictionary("water", water) || !reader.read_vector2("velocity", velocity) ||
-			!reader.read_int("sequence", sequence) || !reader.read_number("time", frame.timestamp_s)) {
+	if (!reader.read_dictionary("water", water) || !reader.read_vector2("velocity_m_per_s", velocity) ||
+			!reader.read_int("sequence", sequence) || !reader.read_number("time_s", frame.timestamp_s)) {
 		r_error = reader.error();
 		return false;
 	}
 	DictionaryReader water_reader(water, "frame.water");
-	if (!water_reader.only_keys({ "inside", "drag", "inertia" }) ||
+	water_reader.accept_old_key("drag", "drag_n_s_per_m");
+	water_reader.accept_old_key("inertia", "inertia_n");
+	if (!water_reader.only_keys({ "inside", "drag_n_s_per_m", "inertia_n" }) ||
 			!water_reader.read_bool("inside", frame.water.inside) ||
-			!water_reader.read_number("drag", frame.water.drag) ||
-			!water_reader.read_number("inertia", frame.water.inertia)) {
+			!water_reader.read_number("drag_n_s_per_m", frame.water.drag) ||
+			!water_reader.read_number("inertia_n", frame.water.inertia)) {
 		r_error = water_reader.error();
 		return false;
 	}
@@ -133,15 +140,19 @@ bool impact_from_dictionary(const gd::Dictionary &p_dictionary, ImpactEvent &r_e
 		std::string &r_error) {
 	ImpactEvent event;
 	DictionaryReader reader(p_dictionary, "impact");
+	reader.accept_old_key("speed", "speed_m_per_s");
+	reader.accept_old_key("gain", "gain_n_s_per_m");
+	reader.accept_old_key("frequency", "frequency_hz");
+	reader.accept_old_key("decay", "decay_s");
+	const bool has_material = reader.has("gain_n_s_per_m") || reader.has("frequency_hz") || reader.has("decay_s");
 	gd::Vector2 direction;
-	const bool has_material = reader.has("gain") || reader.has("frequency") || reader.has("decay");
 	event.use_default_material = !has_material;
-	const bool ok = reader.only_keys({ "direction", "speed", "gain", "frequency", "decay" }) &&
+	const bool ok = reader.only_keys({ "direction", "speed_m_per_s", "gain_n_s_per_m", "frequency_hz", "decay_s" }) &&
 			reader.read_vector2("direction", direction, true) &&
-			reader.read_number("speed", event.speed, true) &&
-			reader.read_number("gain", event.material.gain, has_material) &&
-			reader.read_number("frequency", event.material.frequency_hz, has_material) &&
-			reader.read_number("decay", event.material.decay_s, has_material);
+			reader.read_number("speed_m_per_s", event.speed, true) &&
+			reader.read_number("gain_n_s_per_m", event.material.gain, has_material) &&
+			reader.read_number("frequency_hz", event.material.frequency_hz, has_material) &&
+			reader.read_number("decay_s", event.material.decay_s, has_material);
 	if (!ok) {
 		r_error = reader.error();
 		return false;
@@ -149,129 +160,6 @@ bool impact_from_dictionary(const gd::Dictionary &p_dictionary, ImpactEvent &r_e
 	event.direction = direction_from(direction);
 	r_event = event;
 	return true;
-}
-
-namespace {
-
-struct NumberField {
-	const char *section;
-	const char *key;
-	double &(*field)(RenderConfig &);
-};
-
-// The numeric settings by section and name, as GDScript sees them.
-const NumberField NUMBER_FIELDS[] = {
-	{ "force_model", "dead_zone", [](RenderConfig &c) -> double & { return c.force_model.dead_zone; } },
-	{ "force_model", "gravity", [](RenderConfig &c) -> double & { return c.force_model.gravity; } },
-	{ "force_model", "input_radius", [](RenderConfig &c) -> double & { return c.force_model.input_radius_m; } },
-	{ "force_model", "contact_stiffness", [](RenderConfig &c) -> double & { return c.force_model.default_contact.stiffness; } },
-	{ "force_model", "contact_damping", [](RenderConfig &c) -> double & { return c.force_model.default_contact.damping; } },
-	{ "force_model", "impact_gain", [](RenderConfig &c) -> double & { return c.force_model.default_impact.gain; } },
-	{ "force_model", "impact_frequency", [](RenderConfig &c) -> double & { return c.force_model.default_impact.frequency_hz; } },
-	{ "force_model", "impact_decay", [](RenderConfig &c) -> double & { return c.force_model.default_impact.decay_s; } },
-	{ "smoothing", "cutoff_hz", [](RenderConfig &c) -> double & { return c.smoothing.cutoff_hz; } },
-	{ "safety", "max_force", [](RenderConfig &c) -> double & { return c.safety.max_force_n; } },
-	{ "safety", "max_impact_force", [](RenderConfig &c) -> double & { return c.safety.max_impact_force_n; } },
-	{ "safety", "slew_rate", [](RenderConfig &c) -> double & { return c.safety.slew_rate_n_per_s; } },
-	{ "safety", "startup_ramp", [](RenderConfig &c) -> double & { return c.safety.startup_ramp_s; } },
-	{ "safety", "watchdog_timeout", [](RenderConfig &c) -> double & { return c.safety.watchdog_timeout_s; } },
-	{ "safety", "watchdog_fade", [](RenderConfig &c) -> double & { return c.safety.watchdog_fade_s; } },
-};
-
-// An integer setting within [p_min, p_max]; false with r_error set when out of range or
-// not an integer (the reader's message).
-bool read_count(DictionaryReader &r_reader, const char *p_key, int64_t p_min, int64_t p_max,
-		uint32_t &r_value, std::string &r_error) {
-	int64_t value = r_value;
-	if (!r_reader.read_int(p_key, value)) {
-		return false;
-	}
-	if (value < p_min || value > p_max) {
-		r_error = r_reader.path() + "." + p_key + " must be in [" + std::to_string(p_min) + ", " +
-				std::to_string(p_max) + "] (got " + std::to_string(value) + ")";
-		return false;
-	}
-	r_value = static_cast<uint32_t>(value);
-	return true;
-}
-
-} // namespace
-
-bool apply_config_section(const std::string &p_section, const gd::Dictionary &p_values,
-		RenderConfig &r_config, std::string &r_error) {
-	DictionaryReader reader(p_values, p_section);
-	const gd::Array keys = p_values.keys();
-	for (int64_t i = 0; i < keys.size(); ++i) {
-		const std::string key = keys.get(i).as_string();
-		bool handled = false;
-		for (const NumberField &field : NUMBER_FIELDS) {
-			if (p_section == field.section && key == field.key) {
-				handled = true;
-				if (!reader.read_number(field.key, field.field(r_config))) {
-					r_error = reader.error();
-					return false;
-				}
-			}
-		}
-		if (p_section == "constraint" && key == "stiffness") {
-			handled = reader.read_number("stiffness", r_config.constraint.stiffness_n_per_m);
-		} else if (p_section == "constraint" && key == "proxy_radius") {
-			handled = reader.read_number("proxy_radius", r_config.constraint.proxy_radius);
-		} else if (p_section == "constraint" && key == "max_iterations") {
-			handled = read_count(reader, "max_iterations", 1, 16, r_config.constraint.max_iterations, r_error);
-		} else if (p_section == "constraint" && key == "update") {
-			gd::Variant value;
-			p_values.get(gd::Variant("update"), value);
-			const std::string mode = value.as_string();
-			if (value.get_type() != gd::VariantType::STRING || (mode != "servo" && mode != "frame")) {
-				r_error = "constraint.update must be \"servo\" or \"frame\" (got " + value.stringify() + ")";
-				return false;
-			}
-			r_config.constraint.update = mode == "servo" ? ProxyUpdate::SERVO_RATE : ProxyUpdate::FRAME_RATE;
-			handled = true;
-		} else if (p_section == "smoothing" && key == "enabled") {
-			bool enabled = r_config.smoothing.type != SmoothingType::OFF;
-			handled = reader.read_bool("enabled", enabled);
-			r_config.smoothing.type = enabled ? SmoothingType::BUTTERWORTH2 : SmoothingType::OFF;
-		} else if (p_section == "telemetry" && key == "enabled") {
-			handled = reader.read_bool("enabled", r_config.telemetry.enabled);
-		} else if (p_section == "telemetry" && key == "decimation") {
-			handled = read_count(reader, "decimation", 1, 1000, r_config.telemetry.decimation, r_error);
-		}
-		if (!handled) {
-			if (r_error.empty()) {
-				r_error = reader.error().empty() ? p_section + ": unknown setting '" + key + "'" : reader.error();
-			}
-			return false;
-		}
-	}
-	return true;
-}
-
-gd::Dictionary config_to_dictionary(const RenderConfig &p_config) {
-	RenderConfig config = p_config;
-	gd::Dictionary sections;
-	for (const char *section : { "force_model", "smoothing", "safety", "telemetry", "constraint" }) {
-		gd::Dictionary values;
-		for (const NumberField &field : NUMBER_FIELDS) {
-			if (std::string(field.section) == section) {
-				values.set(field.key, field.field(config));
-			}
-		}
-		if (std::string(section) == "smoothing") {
-			values.set("enabled", config.smoothing.type != SmoothingType::OFF);
-		} else if (std::string(section) == "telemetry") {
-			values.set("enabled", config.telemetry.enabled);
-			values.set("decimation", static_cast<int64_t>(config.telemetry.decimation));
-		} else if (std::string(section) == "constraint") {
-			values.set("stiffness", config.constraint.stiffness_n_per_m);
-			values.set("proxy_radius", config.constraint.proxy_radius);
-			values.set("max_iterations", static_cast<int64_t>(config.constraint.max_iterations));
-			values.set("update", config.constraint.update == ProxyUpdate::SERVO_RATE ? "servo" : "frame");
-		}
-		sections.set(section, values.variant());
-	}
-	return sections;
 }
 
 bool segments_from_points(const gd::PackedVector2Array &p_points, std::vector<Segment2> &r_segments,
@@ -294,24 +182,31 @@ bool mapping_from_dictionary(const gd::Dictionary &p_dictionary, MazeMapping &r_
 		std::string &r_error) {
 	MazeMapping mapping;
 	DictionaryReader reader(p_dictionary, "mapping");
+	reader.accept_old_key("half_extent", "half_extent_m");
+	reader.accept_old_key("centre", "centre_m");
 	gd::Vector2 maze_min;
 	gd::Vector2 maze_max;
 	gd::Vector2 centre;
-	if (!reader.only_keys({ "maze_min", "maze_max", "workspace", "half_extent", "centre" }) ||
+	if (!reader.only_keys({ "maze_min", "maze_max", "workspace", "half_extent_m", "centre_m" }) ||
 			!reader.read_vector2("maze_min", maze_min, true) || !reader.read_vector2("maze_max", maze_max, true) ||
-			!reader.read_number("half_extent", mapping.workspace_half_extent_m) ||
-			!reader.read_vector2("centre", centre)) {
+			!reader.read_number("half_extent_m", mapping.workspace_half_extent_m) ||
+			!reader.read_vector2("centre_m", centre)) {
 		r_error = reader.error();
 		return false;
 	}
 	gd::Variant shape;
 	if (p_dictionary.get(gd::Variant("workspace"), shape)) {
 		const std::string name = shape.as_string();
-		if (shape.get_type() != gd::VariantType::STRING || (name != "disc" && name != "square")) {
-			r_error = "mapping.workspace must be \"disc\" or \"square\" (got " + shape.stringify() + ")";
+		const bool named = shape.get_type() == gd::VariantType::STRING;
+		const int64_t index = named ? (name == "disc" ? 0 : name == "square" ? 1 : -1)
+				: shape.get_type() == gd::VariantType::INT ? shape.as_int()
+														  : -1;
+		if (index != static_cast<int64_t>(WorkspaceShape::DISC) && index != static_cast<int64_t>(WorkspaceShape::SQUARE)) {
+			r_error = "mapping.workspace must be WORKSPACE_DISC, WORKSPACE_SQUARE, \"disc\" or \"square\" (got " +
+					shape.stringify() + ")";
 			return false;
 		}
-		mapping.workspace_shape = name == "disc" ? WorkspaceShape::DISC : WorkspaceShape::SQUARE;
+		mapping.workspace_shape = static_cast<WorkspaceShape>(index);
 	}
 	mapping.maze_min = { maze_min.x, maze_min.y };
 	mapping.maze_max = { maze_max.x, maze_max.y };
@@ -390,11 +285,11 @@ gd::Dictionary stats_to_dictionary(const ServoStats &p_stats) {
 
 gd::Dictionary limits_to_dictionary(const DeviceLimits &p_limits) {
 	gd::Dictionary d;
-	d.set("max_force", p_limits.max_force_n);
-	d.set("max_continuous_force", p_limits.max_continuous_force_n);
-	d.set("max_stiffness", p_limits.max_stiffness_n_per_m);
-	d.set("workspace_radius", p_limits.workspace_radius_m);
+	d.set("max_force_n", p_limits.max_force_n);
+	d.set("max_continuous_force_n", p_limits.max_continuous_force_n);
+	d.set("max_stiffness_n_per_m", p_limits.max_stiffness_n_per_m);
+	d.set("workspace_radius_m", p_limits.workspace_radius_m);
 	return d;
 }
 
-} // namespace haptics::godot
+} // namespace haptics::binding

@@ -1,20 +1,71 @@
 #include "godot/dictionary_reader.h"
 
+#include <set>
 #include <utility>
 
-namespace haptics::godot {
+#include "godot/log.h"
+#include "godot/version.h"
+
+namespace haptics::binding {
 
 DictionaryReader::DictionaryReader(const gd::Dictionary &p_dictionary, std::string p_path) :
 		dictionary_(p_dictionary), path_(std::move(p_path)) {}
 
 bool DictionaryReader::has(const char *p_key) const {
-	return dictionary_.has(gd::Variant(p_key));
+	if (dictionary_.has(gd::Variant(p_key))) {
+		return true;
+	}
+	for (const auto &[old_key, key] : old_keys_) {
+		if (std::string_view(key) == p_key && dictionary_.has(gd::Variant(old_key))) {
+			return true;
+		}
+	}
+	return false;
+}
+
+namespace {
+
+// Without the indices of list entries: "frame.contacts[3]" -> "frame.contacts".
+std::string without_indices(const std::string &p_path) {
+	std::string out;
+	int depth = 0;
+	for (const char c : p_path) {
+		depth += c == '[' ? 1 : 0;
+		if (depth == 0) {
+			out += c;
+		}
+		depth -= c == ']' ? 1 : 0;
+	}
+	return out;
+}
+
+} // namespace
+
+void warn_old_key(const std::string &p_old_name, const std::string &p_new_name) {
+	static std::set<std::string> warned; // Main thread only, like every binding call.
+	if (warned.insert(p_old_name).second) {
+		HAPTICS_WARNING(p_old_name + " is deprecated: use " + p_new_name + " (the old name is accepted until " +
+				OLD_KEYS_REMOVED_IN + ")");
+	}
+}
+
+void DictionaryReader::accept_old_key(const char *p_old_key, const char *p_key) {
+	old_keys_.emplace_back(p_old_key, p_key);
 }
 
 bool DictionaryReader::fetch(const char *p_key, gd::VariantType p_type, const char *p_expected,
 		bool p_required, gd::Variant &r_value) {
 	gd::Variant value;
-	if (!dictionary_.get(gd::Variant(p_key), value)) {
+	bool found = dictionary_.get(gd::Variant(p_key), value);
+	for (const auto &[old_key, key] : old_keys_) {
+		if (!found && std::string_view(key) == p_key && dictionary_.get(gd::Variant(old_key), value)) {
+			found = true;
+			const std::string base = without_indices(path_);
+			warn_old_key(base + "." + old_key, base + "." + key);
+			p_key = old_key; // Errors name the key as the caller spelled it.
+		}
+	}
+	if (!found) {
 		if (p_required) {
 			error_ = path_ + "." + p_key + ": missing (expected " + p_expected + ")";
 			return false;
@@ -104,6 +155,9 @@ bool DictionaryReader::only_keys(std::initializer_list<const char *> p_allowed) 
 		for (const char *allowed : p_allowed) {
 			known = known || name == allowed;
 		}
+		for (const auto &renamed : old_keys_) {
+			known = known || name == renamed.first;
+		}
 		if (!known) {
 			std::string list;
 			for (const char *allowed : p_allowed) {
@@ -144,4 +198,4 @@ std::string variant_type_name(gd::VariantType p_type) {
 	}
 }
 
-} // namespace haptics::godot
+} // namespace haptics::binding

@@ -5,10 +5,12 @@
 
 #include <initializer_list>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "godot/containers.h"
 
-namespace haptics::godot {
+namespace haptics::binding {
 
 class DictionaryReader {
 public:
@@ -23,10 +25,14 @@ public:
 	bool read_vector2(const char *p_key, gd::Vector2 &r_value, bool p_required = false);
 	bool read_array(const char *p_key, gd::Array &r_value, bool p_required = false);
 	bool read_dictionary(const char *p_key, gd::Dictionary &r_value, bool p_required = false);
-	bool has(const char *p_key) const;
+	bool has(const char *p_key) const; // Also under its old name.
 
-	// False (with error() set) if the dictionary holds a key outside p_allowed.
+	// False (with error() set) if the dictionary holds a key outside p_allowed (or their
+	// old names, see accept_old_key).
 	bool only_keys(std::initializer_list<const char *> p_allowed);
+	// p_old_key was renamed p_key: when p_key is absent, reads of it take p_old_key instead,
+	// with a deprecation warning (once per process and key).
+	void accept_old_key(const char *p_old_key, const char *p_key);
 
 	const std::string &error() const { return error_; }
 	const std::string &path() const { return path_; }
@@ -38,9 +44,14 @@ private:
 	const gd::Dictionary &dictionary_;
 	std::string path_;
 	std::string error_;
+	std::vector<std::pair<const char *, const char *>> old_keys_; // (old, new)
 };
+
+// "X is deprecated, use Y" through the engine's warning printer, once per process for each
+// p_old_name (a name without indices, e.g. "frame.contacts.damping").
+void warn_old_key(const std::string &p_old_name, const std::string &p_new_name);
 
 // The name of a Variant type as GDScript prints it ("float", "Vector2"...).
 std::string variant_type_name(gd::VariantType p_type);
 
-} // namespace haptics::godot
+} // namespace haptics::binding

@@ -3,7 +3,7 @@
 #include "godot/log.h"
 #include "storage/durable_file.h"
 
-namespace haptics::godot {
+namespace haptics::binding {
 
 namespace {
 
@@ -45,4 +45,4 @@ int64_t DurableFile::check_complete(const std::string &p_path) {
 	return complete ? 1 : 0;
 }
 
-} // namespace haptics::godot
+} // namespace haptics::binding

@@ -6,7 +6,7 @@
 
 #include "godot/class_db.h"
 
-namespace haptics::godot {
+namespace haptics::binding {
 
 class DurableFile : public gd::ExtensionObject {
 public:
@@ -22,4 +22,4 @@ public:
 	int64_t check_complete(const std::string &p_path);
 };
 
-} // namespace haptics::godot
+} // namespace haptics::binding

@@ -2,17 +2,18 @@
 
 #include <algorithm>
 
+#include "core/config_fields.h"
 #include "core/coordinates.h"
 #include "core/telemetry.h"
 #include "devices/device_enumeration.h"
+#include "godot/config_dictionary.h"
 #include "godot/conversions.h"
 #include "godot/log.h"
+#include "godot/version.h"
 
-namespace haptics::godot {
+namespace haptics::binding {
 
 namespace {
-
-constexpr const char *EXTENSION_VERSION = "0.2.0";
 
 gd::Dictionary to_dictionary(const DeviceInfo &p_device) {
 	gd::Dictionary d;
@@ -38,6 +39,7 @@ void HapticsServer::bind_methods(gd::ClassBinder<HapticsServer> &r_binder) {
 	r_binder.bind_method("list_devices", &S::list_devices);
 	r_binder.bind_method("get_device", &S::get_device, { "id" });
 	r_binder.bind_method("get_device_warnings", &S::get_device_warnings);
+	r_binder.bind_method("get_simulated_device_id", &S::get_simulated_device_id);
 	r_binder.bind_method("open_device", &S::open_device, { "id" });
 	r_binder.bind_method("close_device", &S::close_device);
 	r_binder.bind_method("get_device_id", &S::get_device_id);
@@ -68,7 +70,38 @@ void HapticsServer::bind_methods(gd::ClassBinder<HapticsServer> &r_binder) {
 	r_binder.bind_method("get_proxy_state", &S::get_proxy_state);
 	r_binder.bind_method("set_config", &S::set_config, { "section", "values" });
 	r_binder.bind_method("get_config", &S::get_config);
+	r_binder.bind_method("get_config_fields", &S::get_config_fields);
 	r_binder.bind_method("get_version", &S::get_version);
+
+	r_binder.bind_constant("", "MAX_CONTACTS", static_cast<int64_t>(MAX_CONTACTS));
+	r_binder.bind_constant("", "MAX_RESTING_OBJECTS", static_cast<int64_t>(MAX_RESTING_OBJECTS));
+	r_binder.bind_constant("", "MIN_RATE_HZ", static_cast<int64_t>(MIN_RATE_HZ));
+	r_binder.bind_constant("", "MAX_RATE_HZ", static_cast<int64_t>(MAX_RATE_HZ));
+	r_binder.bind_constant("", "DEFAULT_RATE_HZ", static_cast<int64_t>(DEFAULT_RATE_HZ));
+	r_binder.bind_constant("", "TELEMETRY_QUEUE_CAPACITY", static_cast<int64_t>(TELEMETRY_QUEUE_CAPACITY));
+	r_binder.bind_constant("RenderMode", "RENDER_MODE_MOVEMENT", static_cast<int64_t>(RenderMode::MOVEMENT));
+	r_binder.bind_constant("RenderMode", "RENDER_MODE_CONSTRAINT", static_cast<int64_t>(RenderMode::CONSTRAINT));
+	r_binder.bind_constant("ProxyUpdate", "PROXY_UPDATE_SERVO_RATE", static_cast<int64_t>(ProxyUpdate::SERVO_RATE));
+	r_binder.bind_constant("ProxyUpdate", "PROXY_UPDATE_FRAME_RATE", static_cast<int64_t>(ProxyUpdate::FRAME_RATE));
+	r_binder.bind_constant("WorkspaceShape", "WORKSPACE_DISC", static_cast<int64_t>(WorkspaceShape::DISC));
+	r_binder.bind_constant("WorkspaceShape", "WORKSPACE_SQUARE", static_cast<int64_t>(WorkspaceShape::SQUARE));
+	const struct {
+		const char *name;
+		TelemetryFlag flag;
+	} flags[] = {
+		{ "TELEMETRY_FLAG_CONTACT", TELEMETRY_FLAG_CONTACT },
+		{ "TELEMETRY_FLAG_IN_WATER", TELEMETRY_FLAG_IN_WATER },
+		{ "TELEMETRY_FLAG_WATCHDOG", TELEMETRY_FLAG_WATCHDOG },
+		{ "TELEMETRY_FLAG_CLAMPED", TELEMETRY_FLAG_CLAMPED },
+		{ "TELEMETRY_FLAG_RAMPING", TELEMETRY_FLAG_RAMPING },
+		{ "TELEMETRY_FLAG_NON_FINITE", TELEMETRY_FLAG_NON_FINITE },
+		{ "TELEMETRY_FLAG_NEW_FRAME", TELEMETRY_FLAG_NEW_FRAME },
+		{ "TELEMETRY_FLAG_CONSTRAINT_MODE", TELEMETRY_FLAG_CONSTRAINT_MODE },
+		{ "TELEMETRY_FLAG_PROXY_CONTACT", TELEMETRY_FLAG_PROXY_CONTACT },
+	};
+	for (const auto &[name, flag] : flags) {
+		r_binder.bind_constant("TelemetryFlag", name, static_cast<int64_t>(flag), true);
+	}
 }
 
 bool HapticsServer::report(const char *p_method, const Status &p_status) const {
@@ -98,6 +131,10 @@ gd::Dictionary HapticsServer::get_device(const std::string &p_id) {
 	}
 	HAPTICS_ERROR("No device with id '" + p_id + "'; list_devices() shows what is present.");
 	return gd::Dictionary();
+}
+
+std::string HapticsServer::get_simulated_device_id() const {
+	return std::string(SIMULATED_DEVICE_ID);
 }
 
 gd::Array HapticsServer::get_device_warnings() const {
@@ -265,10 +302,14 @@ gd::Array HapticsServer::get_telemetry_columns() const {
 }
 
 bool HapticsServer::set_config(const std::string &p_section, const gd::Dictionary &p_values) {
-	if (p_section != "force_model" && p_section != "smoothing" && p_section != "safety" &&
-			p_section != "telemetry" && p_section != "constraint") {
-		HAPTICS_ERROR("set_config: unknown section '" + p_section +
-				"' (known: force_model, smoothing, safety, telemetry, constraint)");
+	std::string known;
+	bool found = false;
+	for (const char *section : config_sections()) {
+		found = found || p_section == section;
+		known += (known.empty() ? "" : ", ") + std::string(section);
+	}
+	if (!found) {
+		HAPTICS_ERROR("set_config: unknown section '" + p_section + "' (known: " + known + ")");
 		return false;
 	}
 	RenderConfig config = engine_.config();
@@ -277,32 +318,22 @@ bool HapticsServer::set_config(const std::string &p_section, const gd::Dictionar
 		HAPTICS_ERROR("set_config: " + error + "; the previous settings stay in force.");
 		return false;
 	}
-	if (p_section == "force_model") {
-		return report("set_config", engine_.configure_force_model(config.force_model));
-	}
-	if (p_section == "smoothing") {
-		return report("set_config", engine_.configure_smoothing(config.smoothing));
-	}
-	if (p_section == "safety") {
-		return report("set_config", engine_.configure_safety(config.safety));
-	}
-	if (p_section == "constraint") {
-		return report("set_config", engine_.configure_constraint(config.constraint));
-	}
-	return report("set_config", engine_.configure_telemetry(config.telemetry));
+	return report("set_config", engine_.configure(config));
 }
 
-bool HapticsServer::set_render_mode(const std::string &p_mode) {
-	if (p_mode != "movement" && p_mode != "constraint") {
-		HAPTICS_ERROR("set_render_mode: unknown mode '" + p_mode + "' (movement or constraint)");
+bool HapticsServer::set_render_mode(int64_t p_mode) {
+	if (p_mode < 0 || p_mode >= static_cast<int64_t>(RENDER_MODE_COUNT)) {
+		HAPTICS_ERROR("set_render_mode: unknown mode " + std::to_string(p_mode) +
+				" (RENDER_MODE_MOVEMENT or RENDER_MODE_CONSTRAINT); the current mode stays.");
 		return false;
 	}
-	return report("set_render_mode",
-			engine_.set_render_mode(p_mode == "movement" ? RenderMode::MOVEMENT : RenderMode::CONSTRAINT));
+	RenderConfig config = engine_.config();
+	config.render_mode = static_cast<RenderMode>(p_mode);
+	return report("set_render_mode", engine_.configure(config));
 }
 
-std::string HapticsServer::get_render_mode() const {
-	return engine_.render_mode() == RenderMode::MOVEMENT ? "movement" : "constraint";
+int64_t HapticsServer::get_render_mode() const {
+	return static_cast<int64_t>(engine_.config().render_mode);
 }
 
 bool HapticsServer::set_constraint_geometry(const gd::PackedVector2Array &p_segments,
@@ -327,10 +358,14 @@ gd::Dictionary HapticsServer::get_config() const {
 	return config_to_dictionary(engine_.config());
 }
 
+gd::Array HapticsServer::get_config_fields() const {
+	return config_fields_to_array();
+}
+
 std::string HapticsServer::get_version() const {
 	return std::string("haptics ") + EXTENSION_VERSION + " (Godot " +
 			std::to_string(gd::api.version_major) + "." + std::to_string(gd::api.version_minor) +
 			"." + std::to_string(gd::api.version_patch) + ")";
 }
 
-} // namespace haptics::godot
+} // namespace haptics::binding

@@ -13,7 +13,7 @@
 #include "godot/class_db.h"
 #include "godot/containers.h"
 
-namespace haptics::godot {
+namespace haptics::binding {
 
 class HapticsServer : public gd::ExtensionObject {
 public:
@@ -28,13 +28,15 @@ public:
 	gd::Dictionary get_device(const std::string &p_id);
 	// Why the last enumeration could not look everywhere (no USB bus, no permission...).
 	gd::Array get_device_warnings() const;
-	// Opens a device by id ("simulated", or an id from list_devices()). On failure the
-	// current device stays open and rendering is untouched.
+	// The id of the simulated device, which every installation has ("simulated").
+	std::string get_simulated_device_id() const;
+	// Opens a device by id (get_simulated_device_id(), or an id from list_devices()). On
+	// failure the current device stays open and rendering is untouched.
 	bool open_device(const std::string &p_id);
 	void close_device();
 	std::string get_device_id() const;
 	std::string get_device_name() const;
-	// max_force (N), max_continuous_force (N), max_stiffness (N/m), workspace_radius (m).
+	// max_force_n, max_continuous_force_n, max_stiffness_n_per_m, workspace_radius_m.
 	gd::Dictionary get_device_limits() const;
 	bool calibrate();
 	// Simulated device only: where its hand pulls the stylus, in metres (game axes).
@@ -69,9 +71,9 @@ public:
 	gd::Array get_telemetry_columns() const;
 
 	// --- Constraint-based rendering (position control against a maze's walls) ---
-	// "movement" (the default) or "constraint".
-	bool set_render_mode(const std::string &p_mode);
-	std::string get_render_mode() const;
+	// RENDER_MODE_MOVEMENT (the default) or RENDER_MODE_CONSTRAINT.
+	bool set_render_mode(int64_t p_mode);
+	int64_t get_render_mode() const;
 	// Walls as point pairs in maze units and how the maze maps onto the workspace
 	// (conversions.h). On error the previous walls stay.
 	bool set_constraint_geometry(const gd::PackedVector2Array &p_segments, const gd::Dictionary &p_mapping);
@@ -79,10 +81,12 @@ public:
 	// (walls holding the proxy), placed, updates, geometry_segments.
 	gd::Dictionary get_proxy_state() const;
 
-	// --- Configuration --- sections force_model, smoothing, safety, telemetry, constraint; only the
-	// keys given change. get_config() returns every section with every key.
+	// --- Configuration --- by section (core/config_fields.h); only the keys given change.
+	// get_config() returns every section with every key, get_config_fields() the table
+	// itself (kinds, ranges, units, defaults).
 	bool set_config(const std::string &p_section, const gd::Dictionary &p_values);
 	gd::Dictionary get_config() const;
+	gd::Array get_config_fields() const;
 
 	std::string get_version() const;
 
@@ -95,4 +99,4 @@ private:
 	std::vector<std::string> last_warnings_;
 };
 
-} // namespace haptics::godot
+} // namespace haptics::binding

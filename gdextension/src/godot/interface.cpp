@@ -24,11 +24,10 @@ bool resolve(GDExtensionInterfaceGetProcAddress p_get, const char *p_name, T &r_
 
 bool load_interface(GDExtensionInterfaceGetProcAddress p_get, GDExtensionClassLibraryPtr p_library) {
 	api.library = p_library;
+	api.get_proc_address = p_get;
 	bool ok = true;
 #define HAPTICS_RESOLVE(name) ok = resolve(p_get, #name, api.name) && ok
 	HAPTICS_RESOLVE(get_godot_version2);
-	HAPTICS_RESOLVE(mem_alloc2);
-	HAPTICS_RESOLVE(mem_free2);
 	HAPTICS_RESOLVE(print_error_with_message);
 	HAPTICS_RESOLVE(print_warning_with_message);
 	HAPTICS_RESOLVE(variant_new_copy);

@@ -10,13 +10,13 @@ namespace gd {
 // One pointer per interface function we use, named after the engine's own names.
 struct Interface {
 	GDExtensionClassLibraryPtr library = nullptr;
+	// For functions only some builds have (the editor's help), looked up when needed.
+	GDExtensionInterfaceGetProcAddress get_proc_address = nullptr;
 	uint32_t version_major = 0;
 	uint32_t version_minor = 0;
 	uint32_t version_patch = 0;
 
 	GDExtensionInterfaceGetGodotVersion2 get_godot_version2 = nullptr;
-	GDExtensionInterfaceMemAlloc2 mem_alloc2 = nullptr;
-	GDExtensionInterfaceMemFree2 mem_free2 = nullptr;
 	GDExtensionInterfacePrintErrorWithMessage print_error_with_message = nullptr;
 	GDExtensionInterfacePrintWarningWithMessage print_warning_with_message = nullptr;
 

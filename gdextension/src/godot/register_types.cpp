@@ -12,8 +12,8 @@ void initialize(void * /*p_userdata*/, GDExtensionInitializationLevel p_level) {
 	if (p_level != GDEXTENSION_INITIALIZATION_SCENE) {
 		return;
 	}
-	gd::register_class<haptics::godot::HapticsServer>("HapticsServer", "RefCounted");
-	gd::register_class<haptics::godot::DurableFile>("DurableFile", "RefCounted");
+	gd::register_class<haptics::binding::HapticsServer>("HapticsServer", "RefCounted");
+	gd::register_class<haptics::binding::DurableFile>("DurableFile", "RefCounted");
 }
 
 void deinitialize(void * /*p_userdata*/, GDExtensionInitializationLevel p_level) {

@@ -55,6 +55,8 @@ struct TypeInfo<Vector2> {
 	static void to_ptr(void *r_ptr, Vector2 p_v) { *static_cast<Vector2 *>(r_ptr) = p_v; }
 };
 
+// No method takes or returns one yet: Haptic Battle Pong (3D) passes its ball and paddle
+// poses as Vector3.
 template <>
 struct TypeInfo<Vector3> {
 	static constexpr VariantType type = VariantType::VECTOR3;
@@ -99,27 +101,6 @@ struct TypeInfo<std::string> {
 	}
 	static Variant to_variant(const std::string &p_v) { return Variant(p_v); }
 	static void to_ptr(void *r_ptr, const std::string &p_v) { Variant(p_v).to_native(type, r_ptr); }
-};
-
-// A StringName argument arrives as UTF-8 text too; only its engine type differs.
-struct StringNameArg {
-	std::string text;
-};
-template <>
-struct TypeInfo<StringNameArg> {
-	static constexpr VariantType type = VariantType::STRING_NAME;
-	static constexpr auto metadata = GDEXTENSION_METHOD_ARGUMENT_METADATA_NONE;
-	static StringNameArg from_variant(const Variant &p_v) { return { p_v.as_string() }; }
-	static StringNameArg from_ptr(const void *p_ptr) {
-		return { Variant::from_native(type, p_ptr).as_string() };
-	}
-	static Variant to_variant(const StringNameArg &p_v) {
-		Variant text(p_v.text);
-		Variant name;
-		text.convert_strict(type, name);
-		return name;
-	}
-	static void to_ptr(void *r_ptr, const StringNameArg &p_v) { to_variant(p_v).to_native(type, r_ptr); }
 };
 
 template <typename T>

@@ -1,0 +1,148 @@
+#include "core/config_fields.h"
+
+#include "core/finite_proxy.h"
+
+#include <cmath>
+#include <type_traits>
+
+namespace haptics {
+
+namespace {
+
+template <typename T>
+T from_number(double p_value) {
+	if constexpr (std::is_enum_v<T>) {
+		return static_cast<T>(static_cast<std::underlying_type_t<T>>(p_value));
+	} else if constexpr (std::is_same_v<T, bool>) {
+		return p_value != 0.0;
+	} else {
+		return static_cast<T>(p_value);
+	}
+}
+
+template <typename T>
+double to_number(T p_value) {
+	if constexpr (std::is_enum_v<T>) {
+		return static_cast<double>(static_cast<std::underlying_type_t<T>>(p_value));
+	} else {
+		return static_cast<double>(p_value);
+	}
+}
+
+// The getter and setter of one member path of RenderConfig.
+#define HAPTICS_FIELD(path) \
+	[](const RenderConfig &c) { return to_number(c.path); }, \
+			[](RenderConfig &c, double v) { c.path = from_number<decltype(c.path)>(v); }
+
+constexpr const char *PROXY_UPDATES[] = { "servo", "frame" }; // ProxyUpdate order.
+constexpr double MAX_STEP_RATE = 1e6; // Slew rate: above this the limiter does nothing.
+
+using K = FieldKind;
+
+const ConfigField FIELDS[] = {
+	{ "force_model", "dead_zone", K::NUMBER, 0.0, 0.5, "", nullptr, {}, nullptr, HAPTICS_FIELD(force_model.dead_zone) },
+	{ "force_model", "gravity_n_per_kg", K::NUMBER, 0.0, 100.0, "N/kg", nullptr, {}, "gravity",
+			HAPTICS_FIELD(force_model.gravity_n_per_kg) },
+	{ "force_model", "input_radius_m", K::NUMBER, 0.001, 1.0, "m", "the device's workspace radius", {}, "input_radius",
+			HAPTICS_FIELD(force_model.input_radius_m) },
+	{ "force_model", "contact_stiffness_n", K::NUMBER, 0.0, MAX_GAIN, "N", nullptr, {}, "contact_stiffness",
+			HAPTICS_FIELD(force_model.default_contact.stiffness) },
+	{ "force_model", "contact_friction_n", K::NUMBER, 0.0, MAX_GAIN, "N", nullptr, {}, "contact_damping",
+			HAPTICS_FIELD(force_model.default_contact.friction) },
+	{ "force_model", "impact_gain_n_s_per_m", K::NUMBER, 0.0, MAX_GAIN, "N·s/m", nullptr, {}, "impact_gain",
+			HAPTICS_FIELD(force_model.default_impact.gain) },
+	{ "force_model", "impact_frequency_hz", K::NUMBER, MIN_IMPACT_FREQUENCY_HZ, MAX_IMPACT_FREQUENCY_HZ, "Hz", nullptr,
+			{}, "impact_frequency", HAPTICS_FIELD(force_model.default_impact.frequency_hz) },
+	{ "force_model", "impact_decay_s", K::NUMBER, MIN_IMPACT_DECAY_S, MAX_IMPACT_DECAY_S, "s", nullptr, {},
+			"impact_decay", HAPTICS_FIELD(force_model.default_impact.decay_s) },
+	{ "smoothing", "enabled", K::FLAG, 0.0, 1.0, "", nullptr, {}, nullptr, HAPTICS_FIELD(smoothing.enabled) },
+	{ "smoothing", "cutoff_hz", K::NUMBER, 0.5, 60.0, "Hz", nullptr, {}, nullptr, HAPTICS_FIELD(smoothing.cutoff_hz) },
+	{ "safety", "force_scale", K::NUMBER, 0.0, 2.0, "", nullptr, {}, nullptr, HAPTICS_FIELD(safety.force_scale) },
+	{ "safety", "max_force_n", K::NUMBER, 0.0, 100.0, "N", nullptr, {}, "max_force",
+			HAPTICS_FIELD(safety.max_force_n) },
+	{ "safety", "max_impact_force_n", K::NUMBER, 0.0, 100.0, "N", nullptr, {}, "max_impact_force",
+			HAPTICS_FIELD(safety.max_impact_force_n) },
+	{ "safety", "slew_rate_n_per_s", K::NUMBER, 1.0, MAX_STEP_RATE, "N/s", "no slew limit", {}, "slew_rate",
+			HAPTICS_FIELD(safety.slew_rate_n_per_s) },
+	{ "safety", "startup_ramp_s", K::NUMBER, 0.0, 5.0, "s", nullptr, {}, "startup_ramp",
+			HAPTICS_FIELD(safety.startup_ramp_s) },
+	{ "safety", "watchdog_timeout_s", K::NUMBER, 0.005, 10.0, "s", nullptr, {}, "watchdog_timeout",
+			HAPTICS_FIELD(safety.watchdog_timeout_s) },
+	{ "safety", "watchdog_fade_s", K::NUMBER, 0.0, 0.05, "s", nullptr, {}, "watchdog_fade",
+			HAPTICS_FIELD(safety.watchdog_fade_s) },
+	{ "telemetry", "enabled", K::FLAG, 0.0, 1.0, "", nullptr, {}, nullptr, HAPTICS_FIELD(telemetry.enabled) },
+	{ "telemetry", "decimation", K::COUNT, 1.0, 1000.0, "", nullptr, {}, nullptr, HAPTICS_FIELD(telemetry.decimation) },
+	{ "constraint", "stiffness_n_per_m", K::NUMBER, 0.0, 5000.0, "N/m", nullptr, {}, "stiffness",
+			HAPTICS_FIELD(constraint.stiffness_n_per_m) },
+	{ "constraint", "proxy_radius", K::NUMBER, 1e-6, 1e6, "maze units", nullptr, {}, nullptr,
+			HAPTICS_FIELD(constraint.proxy_radius) },
+	{ "constraint", "update", K::CHOICE, 0.0, 1.0, "", nullptr, PROXY_UPDATES, nullptr, HAPTICS_FIELD(constraint.update) },
+	{ "constraint", "max_iterations", K::COUNT, 1.0, MAX_PROXY_ITERATIONS, "", nullptr, {}, nullptr,
+			HAPTICS_FIELD(constraint.max_iterations) },
+};
+
+#undef HAPTICS_FIELD
+
+constexpr const char *SECTIONS[] = { "force_model", "smoothing", "safety", "telemetry", "constraint" };
+
+} // namespace
+
+std::span<const ConfigField> config_fields() {
+	return FIELDS;
+}
+
+std::span<const char *const> config_sections() {
+	return SECTIONS;
+}
+
+const ConfigField *find_config_field(std::string_view p_section, std::string_view p_key) {
+	for (const ConfigField &field : FIELDS) {
+		if (p_section == field.section && (p_key == field.key || (field.old_key && p_key == field.old_key))) {
+			return &field;
+		}
+	}
+	return nullptr;
+}
+
+Status check_config_value(const ConfigField &p_field, double p_value) {
+	const char *section = p_field.section;
+	const char *key = p_field.key;
+	if (!std::isfinite(p_value)) {
+		return Status::error(StatusCode::INVALID_ARGUMENT, "%s.%s: not finite (%g)", section, key, p_value);
+	}
+	switch (p_field.kind) {
+		case FieldKind::NUMBER:
+			if (p_field.zero_means && p_value == 0.0) {
+				return Status::success();
+			}
+			break;
+		case FieldKind::COUNT:
+			if (p_value != std::floor(p_value)) {
+				return Status::error(StatusCode::INVALID_ARGUMENT, "%s.%s must be a whole number (got %g)", section, key,
+						p_value);
+			}
+			break;
+		case FieldKind::FLAG:
+			if (p_value != 0.0 && p_value != 1.0) {
+				return Status::error(StatusCode::INVALID_ARGUMENT, "%s.%s must be true or false (got %g)", section, key,
+						p_value);
+			}
+			return Status::success();
+		case FieldKind::CHOICE:
+			if (p_value != std::floor(p_value) || p_value < 0.0 || p_value >= static_cast<double>(p_field.choices.size())) {
+				return Status::error(StatusCode::INVALID_ARGUMENT, "%s.%s: unknown value %g", section, key, p_value);
+			}
+			return Status::success();
+	}
+	if (p_value < p_field.min || p_value > p_field.max) {
+		if (p_field.zero_means) {
+			return Status::error(StatusCode::OUT_OF_RANGE, "%s.%s must be 0 (%s) or in [%g, %g] (got %g)", section, key,
+					p_field.zero_means, p_field.min, p_field.max, p_value);
+		}
+		return Status::error(StatusCode::OUT_OF_RANGE, "%s.%s must be in [%g, %g] (got %g)", section, key, p_field.min,
+				p_field.max, p_value);
+	}
+	return Status::success();
+}
+
+} // namespace haptics

@@ -1,0 +1,69 @@
+extends TestSuite
+## The Haptics autoload, the one door from GDScript to the native server: its settings are
+## the servo's (force scale and smoothing live in the servo's configuration), refused values
+## leave them as they were, and the native constants and renderers come through by name.
+
+var _force_scale: float = 1.0
+var _smoothing: bool = true
+var _control_mode: StringName = &""
+var _render_mode: StringName = &""
+
+
+func before_each() -> void:
+	_force_scale = Haptics.force_scale
+	_smoothing = Haptics.smoothing_enabled
+	_control_mode = Haptics.control_mode
+	_render_mode = Haptics.get_render_mode()
+
+
+func after_each() -> void:
+	Haptics.force_scale = _force_scale
+	Haptics.smoothing_enabled = _smoothing
+	Haptics.control_mode = _control_mode
+	Haptics.set_render_mode(_render_mode)
+
+
+func test_the_force_scale_lives_in_the_servo() -> void:
+	Haptics.force_scale = 0.35
+	assert_almost_eq(Haptics.get_config()["safety"]["force_scale"], 0.35, 1e-9)
+	assert_almost_eq(Haptics.force_scale, 0.35, 1e-9)
+	Haptics.smoothing_enabled = false
+	assert_false(Haptics.get_config()["smoothing"]["enabled"])
+
+
+func test_out_of_range_is_clamped_and_nan_refused() -> void:
+	Haptics.force_scale = 0.5
+	Haptics.force_scale = 7.5
+	assert_eq(Haptics.force_scale, Haptics.get_force_scale_range().y)
+	assert_eq(Haptics.get_force_scale_range(), Vector2(0.0, 2.0), "the servo's own range")
+	Haptics.force_scale = 0.5
+	expect_error("not a number")
+	Haptics.force_scale = NAN
+	assert_eq(Haptics.force_scale, 0.5, "the old value stays")
+	expect_error("unknown mode 'telepathy'")
+	Haptics.control_mode = &"telepathy"
+	assert_true(Haptics.is_control_mode(Haptics.control_mode))
+
+
+func test_reset_settings_gives_the_servos_defaults() -> void:
+	Haptics.force_scale = 0.2
+	Haptics.smoothing_enabled = false
+	Haptics.control_mode = Haptics.CONTROL_KEYBOARD
+	Haptics.reset_settings()
+	assert_eq(Haptics.force_scale, 1.0)
+	assert_true(Haptics.smoothing_enabled)
+	assert_eq(Haptics.control_mode, Haptics.CONTROL_DEVICE)
+
+
+func test_native_constants_and_renderers_by_name() -> void:
+	assert_eq(Haptics.get_constant(&"MAX_CONTACTS"), HapticsServer.MAX_CONTACTS)
+	assert_eq(Haptics.get_constant(&"TELEMETRY_FLAG_CONTACT"), HapticsServer.TELEMETRY_FLAG_CONTACT)
+	expect_error("no constant 'NO_SUCH_THING'")
+	assert_eq(Haptics.get_constant(&"NO_SUCH_THING"), 0)
+	assert_true(Haptics.set_render_mode(&"constraint"))
+	assert_eq(Haptics.get_render_mode(), &"constraint")
+	assert_eq(Haptics.get_server().call(&"get_render_mode"), HapticsServer.RENDER_MODE_CONSTRAINT)
+	expect_error("unknown renderer 'joystick'")
+	assert_false(Haptics.set_render_mode(&"joystick"))
+	assert_eq(Haptics.get_render_mode(), &"constraint")
+	assert_eq(Haptics.device.get_simulated_id(), HapticsServer.new().get_simulated_device_id())
