@@ -1,7 +1,8 @@
 // The library's entry point: resolves the engine interface and registers our classes at
 // the scene level (they use scene-level types such as Dictionary only through Variants,
-// but their users live in scenes).
+// but their users live in scenes); in the editor, loads their class reference.
 #include "godot/class_db.h"
+#include "godot/doc_data.h"
 #include "godot/durable_file_binding.h"
 #include "godot/haptics_server.h"
 #include "godot/interface.h"
@@ -9,6 +10,9 @@
 namespace {
 
 void initialize(void * /*p_userdata*/, GDExtensionInitializationLevel p_level) {
+	if (p_level == GDEXTENSION_INITIALIZATION_EDITOR) {
+		haptics::binding::load_editor_help();
+	}
 	if (p_level != GDEXTENSION_INITIALIZATION_SCENE) {
 		return;
 	}
