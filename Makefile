@@ -74,10 +74,14 @@ test-godot: import
 	@$(GODOT) --headless --path . res://tests/runner/runner.tscn -- --warnings-as-errors \
 		--junit=$(BUILD)/godot-tests.xml $(TEST_ARGS)
 
-## lint: gdlint and gdformat --check over scripts/ and tests/ (gdtoolkit, pinned, in .venv)
-lint:
+## lint: gdlint and gdformat --check over scripts/ and tests/ (gdtoolkit, pinned, in .venv),
+## and clang-format (Debian's, .clang-format: Godot's style) over the extension's C++
+lint: deps
 	@tools/gdtoolkit.sh gdlint scripts tests
 	@tools/gdtoolkit.sh gdformat --check scripts tests
+	@find gdextension/src gdextension/tests gdextension/bench -name '*.h' -o -name '*.cpp' | \
+		sort | xargs clang-format --dry-run -Werror
+	@echo "clang-format: the C++ is formatted"
 
 ## export: a Linux x86_64 release build of the game in .export/linux/
 export: import build-release

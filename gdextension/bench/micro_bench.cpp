@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+
 #include "../tests/test_proxy_geometry.h"
 
 namespace haptics::bench {

@@ -89,7 +89,6 @@ PathRun run_path(const ConstraintGeometry &p_geometry, const MazeTransform &p_tr
 
 } // namespace
 
-
 std::vector<ProxyBenchResult> run_proxy_benchmarks() {
 	std::vector<ProxyBenchResult> results;
 	for (const int cells : { 9, 31, 99 }) {

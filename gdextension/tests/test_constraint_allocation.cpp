@@ -6,8 +6,8 @@
 // sanitizers, which bring their own allocator.
 
 #include "core/haptics_engine.h"
-#include "test_proxy_geometry.h"
 #include "engine_config.h"
+#include "test_proxy_geometry.h"
 
 #include <doctest/doctest.h>
 

@@ -7,8 +7,8 @@
 #include "core/haptics_engine.h"
 #include "core/realtime.h"
 #include "core/telemetry.h"
-#include "test_proxy_geometry.h"
 #include "engine_config.h"
+#include "test_proxy_geometry.h"
 
 #include <doctest/doctest.h>
 

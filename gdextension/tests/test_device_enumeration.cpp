@@ -14,7 +14,8 @@ using namespace haptics;
 namespace {
 
 // Spelled as bytes so the expectation does not depend on the compiler's source charset.
-const std::string UBERHAPTIK_UTF8 = "\xC3\x9C" "berhaptik \xE2\x9C\x93";
+const std::string UBERHAPTIK_UTF8 = "\xC3\x9C"
+									"berhaptik \xE2\x9C\x93";
 const std::string REPLACEMENT_UTF8 = "\xEF\xBF\xBD";
 
 std::set<std::string> ids_of(const DeviceList &p_list) {

@@ -109,9 +109,9 @@ double rise_time_90(double p_rate_hz, bool p_enabled = true) {
 TEST_CASE("smoothing spec at 1 kHz: 50 Hz staircase ripple down >= 20 dB") {
 	const RippleResult ripple = measure_ripple(1000.0);
 	MESSAGE("1 kHz: ripple RMS attenuation " << ripple.rms_attenuation_db << " dB, 50 Hz fundamental "
-										   << ripple.fundamental_attenuation_db << " dB, peak-to-peak "
-										   << ripple.staircase_peak_to_peak_n << " N -> "
-										   << ripple.residual_peak_to_peak_n << " N");
+											 << ripple.fundamental_attenuation_db << " dB, peak-to-peak "
+											 << ripple.staircase_peak_to_peak_n << " N -> "
+											 << ripple.residual_peak_to_peak_n << " N");
 	CHECK(ripple.staircase_peak_to_peak_n == doctest::Approx(2.0 * 0.019)); // Sanity: 19 samples of rise.
 	CHECK(ripple.rms_attenuation_db >= 20.0);
 	CHECK(ripple.fundamental_attenuation_db >= 20.0);

@@ -135,9 +135,7 @@ bool FiniteProxy::sweep(const ConstraintGeometry &p_geometry, const Vec2 &p_from
 			!clip_to_box(p_from, p_motion, p_geometry.bounds_min() - margin, p_geometry.bounds_max() + margin, begin, end)) {
 		return false; // Nothing to touch along the way.
 	}
-	const double piece = p_geometry.broad_phase() == BroadPhase::UNIFORM_GRID ?
-			std::max(p_geometry.cell_size(), 2.0 * p_radius) :
-			INFINITY;
+	const double piece = p_geometry.broad_phase() == BroadPhase::UNIFORM_GRID ? std::max(p_geometry.cell_size(), 2.0 * p_radius) : INFINITY;
 	const double pieces = std::clamp(std::ceil((end - begin) * length(p_motion) / piece), 1.0, 1e6);
 	const int64_t count = static_cast<int64_t>(pieces);
 	for (int64_t i = 0; i < count; ++i) {

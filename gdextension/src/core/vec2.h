@@ -30,20 +30,34 @@ struct Vec2 {
 	constexpr bool operator==(const Vec2 &p_other) const = default;
 };
 
-constexpr Vec2 operator*(double p_scale, const Vec2 &p_v) { return p_v * p_scale; }
+constexpr Vec2 operator*(double p_scale, const Vec2 &p_v) {
+	return p_v * p_scale;
+}
 
-constexpr double dot(const Vec2 &p_a, const Vec2 &p_b) { return p_a.x * p_b.x + p_a.y * p_b.y; }
+constexpr double dot(const Vec2 &p_a, const Vec2 &p_b) {
+	return p_a.x * p_b.x + p_a.y * p_b.y;
+}
 
 // z of the 3D cross product: > 0 when p_b is counter-clockwise from p_a.
-constexpr double cross(const Vec2 &p_a, const Vec2 &p_b) { return p_a.x * p_b.y - p_a.y * p_b.x; }
+constexpr double cross(const Vec2 &p_a, const Vec2 &p_b) {
+	return p_a.x * p_b.y - p_a.y * p_b.x;
+}
 
 // p_v turned 90 degrees counter-clockwise.
-constexpr Vec2 perpendicular(const Vec2 &p_v) { return { -p_v.y, p_v.x }; }
+constexpr Vec2 perpendicular(const Vec2 &p_v) {
+	return { -p_v.y, p_v.x };
+}
 
-constexpr double length_squared(const Vec2 &p_v) { return dot(p_v, p_v); }
+constexpr double length_squared(const Vec2 &p_v) {
+	return dot(p_v, p_v);
+}
 
-inline double length(const Vec2 &p_v) { return std::sqrt(length_squared(p_v)); }
+inline double length(const Vec2 &p_v) {
+	return std::sqrt(length_squared(p_v));
+}
 
-inline bool is_finite(const Vec2 &p_v) { return std::isfinite(p_v.x) && std::isfinite(p_v.y); }
+inline bool is_finite(const Vec2 &p_v) {
+	return std::isfinite(p_v.x) && std::isfinite(p_v.y);
+}
 
 } // namespace haptics

@@ -43,19 +43,29 @@ struct Vec3 {
 	constexpr bool operator==(const Vec3 &p_other) const = default;
 };
 
-constexpr Vec3 operator*(double p_scale, const Vec3 &p_v) { return p_v * p_scale; }
+constexpr Vec3 operator*(double p_scale, const Vec3 &p_v) {
+	return p_v * p_scale;
+}
 
-constexpr double dot(const Vec3 &p_a, const Vec3 &p_b) { return p_a.x * p_b.x + p_a.y * p_b.y + p_a.z * p_b.z; }
+constexpr double dot(const Vec3 &p_a, const Vec3 &p_b) {
+	return p_a.x * p_b.x + p_a.y * p_b.y + p_a.z * p_b.z;
+}
 
 constexpr Vec3 cross(const Vec3 &p_a, const Vec3 &p_b) {
 	return { p_a.y * p_b.z - p_a.z * p_b.y, p_a.z * p_b.x - p_a.x * p_b.z, p_a.x * p_b.y - p_a.y * p_b.x };
 }
 
-constexpr double length_squared(const Vec3 &p_v) { return dot(p_v, p_v); }
+constexpr double length_squared(const Vec3 &p_v) {
+	return dot(p_v, p_v);
+}
 
-inline double length(const Vec3 &p_v) { return std::sqrt(length_squared(p_v)); }
+inline double length(const Vec3 &p_v) {
+	return std::sqrt(length_squared(p_v));
+}
 
-inline bool is_finite(const Vec3 &p_v) { return std::isfinite(p_v.x) && std::isfinite(p_v.y) && std::isfinite(p_v.z); }
+inline bool is_finite(const Vec3 &p_v) {
+	return std::isfinite(p_v.x) && std::isfinite(p_v.y) && std::isfinite(p_v.z);
+}
 
 // Returns the zero vector for vectors shorter than p_epsilon instead of dividing by ~0.
 inline Vec3 normalized_or_zero(const Vec3 &p_v, double p_epsilon = 1e-9) {

@@ -22,8 +22,7 @@ constexpr std::array CATALOG{
 	CatalogEntry{ .vendor_id = 0x0403, .product_id = 0xcb48, .model = "Novint Falcon" },
 	CatalogEntry{ .vendor_id = 0x054c, .product_id = 0x0ce6, .model = "Sony DualSense" },
 	// Usage pages exist only in HID report descriptors, so this row cannot match libusb.
-	CatalogEntry{ .backend = BACKEND_HIDAPI, .usage_page = HID_USAGE_PAGE_PID,
-			.model = "HID PID force-feedback device" },
+	CatalogEntry{ .backend = BACKEND_HIDAPI, .usage_page = HID_USAGE_PAGE_PID, .model = "HID PID force-feedback device" },
 };
 
 constexpr bool matches(const std::optional<uint16_t> &p_expected, uint16_t p_value) {

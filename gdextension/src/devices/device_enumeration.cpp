@@ -125,7 +125,6 @@ struct UsbClose {
 };
 using UsbHandle = std::unique_ptr<libusb_device_handle, UsbClose>;
 
-
 // Reads the UTF-16LE descriptor itself: libusb_get_string_descriptor_ascii() would turn
 // every non-ASCII character into '?'.
 std::string read_usb_string(libusb_device_handle *p_handle, uint16_t p_language, uint8_t p_index) {
@@ -195,8 +194,7 @@ DeviceInfo usb_device_info(libusb_device *p_device, DeviceList &r_list) {
 	if (open_result != 0) {
 		// Most devices are not ours to open; only say so for the ones the player wants.
 		if (info.known_haptic) {
-			add_warning(r_list, { "libusb: ", info.model, " at ", info.id, " cannot be opened (",
-					libusb_error_name(open_result), "); check its udev rules" });
+			add_warning(r_list, { "libusb: ", info.model, " at ", info.id, " cannot be opened (", libusb_error_name(open_result), "); check its udev rules" });
 		}
 		return info;
 	}
@@ -225,8 +223,7 @@ void append_usb_devices(DeviceList &r_list) {
 	libusb_device **raw_list = nullptr;
 	const ssize_t count = libusb_get_device_list(context.get(), &raw_list);
 	if (count < 0) {
-		add_warning(r_list, { "libusb: cannot list USB devices (",
-				libusb_error_name(static_cast<int>(count)), ")" });
+		add_warning(r_list, { "libusb: cannot list USB devices (", libusb_error_name(static_cast<int>(count)), ")" });
 		return;
 	}
 	const std::unique_ptr<libusb_device *, UsbFreeDeviceList> list(raw_list);

@@ -7,7 +7,9 @@
 namespace gd {
 
 struct CallCheck {
-	enum Error { OK, TOO_MANY, TOO_FEW };
+	enum Error { OK,
+		TOO_MANY,
+		TOO_FEW };
 	Error error = OK;
 	// For TOO_MANY the maximum, for TOO_FEW the minimum argument count (what the engine
 	// prints as "expected N").

@@ -66,7 +66,8 @@ struct PropertyDescription {
 	String hint_string;
 	GDExtensionPropertyInfo info{};
 
-	PropertyDescription(const std::string &p_name, VariantType p_type) : name(p_name) {
+	PropertyDescription(const std::string &p_name, VariantType p_type) :
+			name(p_name) {
 		info.type = static_cast<GDExtensionVariantType>(p_type);
 		info.name = name.ptr();
 		info.class_name = class_name.ptr();

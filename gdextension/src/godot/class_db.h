@@ -47,7 +47,8 @@ protected:
 template <typename C, typename F, typename R, typename... A>
 class MethodBindT final : public MethodBind {
 public:
-	explicit MethodBindT(F p_fn) : fn_(p_fn) {}
+	explicit MethodBindT(F p_fn) :
+			fn_(p_fn) {}
 
 	void call(void *p_instance, const GDExtensionConstVariantPtr *p_args, GDExtensionInt p_count,
 			GDExtensionVariantPtr r_ret, GDExtensionCallError *r_error) const override {
@@ -118,7 +119,8 @@ void register_integer_constant(const char *p_class, const char *p_enum, const ch
 template <typename C>
 class ClassBinder {
 public:
-	explicit ClassBinder(const char *p_class) : class_(p_class) {}
+	explicit ClassBinder(const char *p_class) :
+			class_(p_class) {}
 
 	template <typename R, typename... A>
 	void bind_method(const char *p_name, R (C::*p_fn)(A...),

@@ -23,7 +23,8 @@ int64_t size_of(const Variant &p_value) {
 
 } // namespace
 
-Dictionary::Dictionary() : value_(make_default(VariantType::DICTIONARY)) {}
+Dictionary::Dictionary() :
+		value_(make_default(VariantType::DICTIONARY)) {}
 
 void Dictionary::set(const Variant &p_key, const Variant &p_value) {
 	GDExtensionBool valid = 0;
@@ -67,7 +68,8 @@ Array Dictionary::keys() const {
 	return Array(std::move(ret));
 }
 
-Array::Array() : value_(make_default(VariantType::ARRAY)) {}
+Array::Array() :
+		value_(make_default(VariantType::ARRAY)) {}
 
 void Array::append(const Variant &p_value) {
 	Variant ret;
@@ -92,7 +94,8 @@ Variant Array::get(int64_t p_index) const {
 }
 
 template <typename T, VariantType TYPE>
-PackedArray<T, TYPE>::PackedArray() : value_(make_default(TYPE)) {}
+PackedArray<T, TYPE>::PackedArray() :
+		value_(make_default(TYPE)) {}
 
 template <typename T, VariantType TYPE>
 int64_t PackedArray<T, TYPE>::size() const {

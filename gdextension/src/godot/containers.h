@@ -16,7 +16,8 @@ class Dictionary {
 public:
 	Dictionary();
 	// Adopts p_value, which must hold a Dictionary (checked by the caller's type dispatch).
-	explicit Dictionary(Variant p_value) : value_(std::move(p_value)) {}
+	explicit Dictionary(Variant p_value) :
+			value_(std::move(p_value)) {}
 
 	void set(const Variant &p_key, const Variant &p_value);
 	// False, leaving r_value untouched, when the key is missing.
@@ -34,7 +35,8 @@ private:
 class Array {
 public:
 	Array();
-	explicit Array(Variant p_value) : value_(std::move(p_value)) {}
+	explicit Array(Variant p_value) :
+			value_(std::move(p_value)) {}
 
 	void append(const Variant &p_value);
 	int64_t size() const;
@@ -52,7 +54,8 @@ template <typename T, VariantType TYPE>
 class PackedArray {
 public:
 	PackedArray();
-	explicit PackedArray(Variant p_value) : value_(std::move(p_value)) {}
+	explicit PackedArray(Variant p_value) :
+			value_(std::move(p_value)) {}
 
 	int64_t size() const;
 	bool resize(int64_t p_size);

@@ -92,7 +92,8 @@ bool frame_from_dictionary(const gd::Dictionary &p_dictionary, Frame &r_frame, s
 		r_error = reader.error();
 		return false;
 	}
-	const bool contacts_ok = read_list(reader, "contacts", MAX_CONTACTS,
+	const bool contacts_ok = read_list(
+			reader, "contacts", MAX_CONTACTS,
 			[&](const gd::Dictionary &p_entry, const std::string &p_path) {
 				Contact &contact = frame.contacts[frame.contact_count];
 				if (!read_contact(p_entry, p_path, contact, r_error)) {
@@ -103,7 +104,8 @@ bool frame_from_dictionary(const gd::Dictionary &p_dictionary, Frame &r_frame, s
 			},
 			r_error);
 	const bool resting_ok = contacts_ok &&
-			read_list(reader, "resting", MAX_RESTING_OBJECTS,
+			read_list(
+					reader, "resting", MAX_RESTING_OBJECTS,
 					[&](const gd::Dictionary &p_entry, const std::string &p_path) {
 						return read_resting(p_entry, p_path, frame, r_error);
 					},
@@ -198,9 +200,10 @@ bool mapping_from_dictionary(const gd::Dictionary &p_dictionary, MazeMapping &r_
 	if (p_dictionary.get(gd::Variant("workspace"), shape)) {
 		const std::string name = shape.as_string();
 		const bool named = shape.get_type() == gd::VariantType::STRING;
-		const int64_t index = named ? (name == "disc" ? 0 : name == "square" ? 1 : -1)
+		const int64_t index = named						   ? (name == "disc" ? 0 : name == "square" ? 1
+																									: -1)
 				: shape.get_type() == gd::VariantType::INT ? shape.as_int()
-														  : -1;
+														   : -1;
 		if (index != static_cast<int64_t>(WorkspaceShape::DISC) && index != static_cast<int64_t>(WorkspaceShape::SQUARE)) {
 			r_error = "mapping.workspace must be WORKSPACE_DISC, WORKSPACE_SQUARE, \"disc\" or \"square\" (got " +
 					shape.stringify() + ")";
@@ -254,8 +257,8 @@ gd::Dictionary stats_to_dictionary(const ServoStats &p_stats) {
 	d.set("running", p_stats.running);
 	// Stable lowercase names for scripts: manual, normal, realtime_fifo.
 	const char *scheduler = p_stats.scheduler == SchedulerKind::MANUAL ? "manual"
-			: p_stats.scheduler == SchedulerKind::REALTIME_FIFO                ? "realtime_fifo"
-																				: "normal";
+			: p_stats.scheduler == SchedulerKind::REALTIME_FIFO		   ? "realtime_fifo"
+																	   : "normal";
 	d.set("scheduler", scheduler);
 	d.set("realtime", p_stats.scheduler == SchedulerKind::REALTIME_FIFO);
 	d.set("realtime_priority", static_cast<int64_t>(p_stats.realtime_priority));

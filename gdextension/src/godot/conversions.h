@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "core/constraint_geometry.h"
-#include "core/maze_mapping.h"
 #include "core/frame.h"
+#include "core/maze_mapping.h"
 #include "core/servo_pipeline.h"
 #include "core/servo_stats.h"
 #include "devices/device.h"

@@ -75,11 +75,14 @@ public:
 	Variant();
 	Variant(bool p_value);
 	Variant(int64_t p_value);
-	Variant(int p_value) : Variant(static_cast<int64_t>(p_value)) {}
+	Variant(int p_value) :
+			Variant(static_cast<int64_t>(p_value)) {}
 	Variant(double p_value);
 	Variant(std::string_view p_utf8);
-	Variant(const char *p_utf8) : Variant(std::string_view(p_utf8)) {}
-	Variant(const std::string &p_utf8) : Variant(std::string_view(p_utf8)) {}
+	Variant(const char *p_utf8) :
+			Variant(std::string_view(p_utf8)) {}
+	Variant(const std::string &p_utf8) :
+			Variant(std::string_view(p_utf8)) {}
 	Variant(Vector2 p_value);
 	Variant(Vector3 p_value);
 	Variant(const Variant &p_other);

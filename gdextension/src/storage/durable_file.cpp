@@ -12,7 +12,8 @@ namespace {
 
 class FileDescriptor {
 public:
-	explicit FileDescriptor(int p_fd) : fd_(p_fd) {}
+	explicit FileDescriptor(int p_fd) :
+			fd_(p_fd) {}
 	FileDescriptor(const FileDescriptor &) = delete;
 	FileDescriptor &operator=(const FileDescriptor &) = delete;
 	~FileDescriptor() {
