@@ -31,11 +31,9 @@ const OWN_SCRIPTS: PackedStringArray = [
 class Run:
 	extends RefCounted
 
-	## The runner's exit code.
 	var exit_code: int = -1
 	## Standard output, line by line.
 	var lines: PackedStringArray = PackedStringArray()
-	## Standard error.
 	var stderr: String = ""
 
 	## The last line printed, which must be the summary.

@@ -33,7 +33,6 @@ func stop() -> void:
 		changed.emit()
 
 
-## True while the servo thread renders.
 func is_running() -> bool:
 	return _server != null and _server.call(&"is_running")
 

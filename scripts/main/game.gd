@@ -48,11 +48,8 @@ var _ticks: int = 0
 var _autopilot_done: bool = false
 var _control_text: String = ""
 
-## The heads-up display.
 @onready var hud: Hud = $Hud
-## The pause menu.
 @onready var pause_menu: PauseMenu = $PauseMenu
-## The goal screen.
 @onready var goal_screen: GoalScreen = $GoalScreen
 
 
@@ -173,9 +170,9 @@ func _finish_autopilot(reason: String) -> void:
 	autopilot_finished.emit(reason)
 
 
-func _on_item_collected(p_collected: int, p_total: int) -> void:
+func _on_item_collected(p_collected: int, total: int) -> void:
 	collected = p_collected
-	total_items = p_total
+	total_items = total
 	hud.set_run_info(elapsed, collected, total_items)
 
 

@@ -6,9 +6,7 @@ extends Node
 ## and plays level 1 under the [Autopilot], printing one status line per second, and quits
 ## with exit code 0 at the goal or after [code]--autopilot-seconds=N[/code] (default 5).
 
-## The title screen.
 const MENU_SCENE: PackedScene = preload("res://scenes/ui/main_menu.tscn")
-## The settings screen.
 const SETTINGS_SCENE: PackedScene = preload("res://scenes/ui/settings_screen.tscn")
 ## The maze user study.
 const STUDY_SCENE: PackedScene = preload("res://scenes/study/study.tscn")
@@ -58,7 +56,6 @@ func get_screen() -> Node:
 	return _screen
 
 
-## Shows the title screen.
 func show_menu() -> void:
 	var menu: MainMenu = _switch_to(MENU_SCENE) as MainMenu
 	menu.play_requested.connect(start_game.bind(false))

@@ -157,7 +157,7 @@ func _process(delta: float) -> void:
 		_hum.volume_db = linear_to_db(0.05 + 0.25 * thrust)
 
 
-func _report_new_contacts(p_speed: float) -> void:
+func _report_new_contacts(speed: float) -> void:
 	_now_touching.clear()
 	for i: int in get_slide_collision_count():
 		var collision: KinematicCollision2D = get_slide_collision(i)
@@ -166,7 +166,7 @@ func _report_new_contacts(p_speed: float) -> void:
 			continue  # another shape of a body already reported this tick
 		_now_touching[id] = true
 		if not _touching.has(id):
-			bumped.emit(collision.get_collider(), collision.get_normal(), p_speed)
+			bumped.emit(collision.get_collider(), collision.get_normal(), speed)
 	# Swap the two dictionaries instead of allocating a new one each tick.
 	var previous: Dictionary[int, bool] = _touching
 	_touching = _now_touching

@@ -20,7 +20,6 @@ const _GENERATED_PREFIX: String = "_Drawn"
 	set(value):
 		fill_texture = value
 		_rebuild()
-## Tint of the fill.
 @export var fill_color: Color = Color.WHITE:
 	set(value):
 		fill_color = value

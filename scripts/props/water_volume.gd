@@ -73,11 +73,6 @@ func get_surface_y() -> float:
 	return _rect.position.y
 
 
-## Whether [param point] (world space) lies inside the volume.
-func contains_point(point: Vector2) -> bool:
-	return _rect.has_point(point)
-
-
 ## Buoyant force on [param body] right now as a fraction of its weight (0 when dry).
 func buoyancy_of(body: RigidBody2D, shape: CollisionShape2D) -> float:
 	if shape == null or shape.shape == null:

@@ -74,11 +74,6 @@ func set_forces(forces: Dictionary) -> void:
 	_recompute()
 
 
-## The force last given for [param component], in newtons.
-func get_force(component: String) -> Vector2:
-	return _forces.get(component, Vector2.ZERO)
-
-
 ## The arrow drawn for [param component]: a vector in pixels from the origin (y down),
 ## zero when the component is absent.
 func get_arrow(component: String) -> Vector2:

@@ -20,7 +20,6 @@ extends Control
 @export var line_color: Color = Color(1.0, 1.0, 1.0)
 ## Colour of the area under the curve.
 @export var fill_color: Color = Color(0.31, 0.76, 0.97, 0.28)
-## Colour of the grid lines.
 @export var grid_color: Color = Color(0.56, 0.70, 0.80, 0.18)
 
 ## The samples, oldest first.
@@ -65,14 +64,6 @@ func advance(delta: float, value: float) -> void:
 	if pushed > 0:
 		_pending_peak = value
 		queue_redraw()
-
-
-## Pushes one sample directly.
-func add_sample(value: float) -> void:
-	if buffer == null:
-		_allocate()
-	buffer.push(value)
-	queue_redraw()
 
 
 ## Forgets the history.

@@ -3,14 +3,10 @@ extends CanvasLayer
 ## Shown when the player reaches the goal: the time taken and the items collected, with
 ## Play again and Menu. Showing it pauses the tree; it processes while paused.
 
-## The player chose Play again.
 signal play_again_requested
-## The player chose Menu.
 signal menu_requested
 
-## The Play again button.
 @onready var play_again_button: Button = %PlayAgainButton
-## The Menu button.
 @onready var menu_button: Button = %MenuButton
 @onready var _time_value: Label = %TimeValue
 @onready var _items_value: Label = %ItemsValue

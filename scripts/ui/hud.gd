@@ -106,11 +106,6 @@ func set_control_text(text: String) -> void:
 	_control.text = "control: %s" % text
 
 
-## The arrows drawn around the avatar glyph.
-func get_force_arrows() -> ForceArrows:
-	return _arrows
-
-
 ## The arrows drawn at the player.
 func get_world_arrows() -> ForceArrows:
 	return _world_arrows

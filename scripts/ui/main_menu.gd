@@ -4,24 +4,16 @@ extends Control
 ## (the first button takes focus) and clickable with the mouse. It only emits signals; the
 ## main scene decides what each one does.
 
-## The player chose Play.
 signal play_requested
-## The player chose Maze study.
 signal maze_requested
-## The player chose Settings.
 signal settings_requested
-## The player chose Quit.
 signal quit_requested
 
 var _status_timer: float = 0.0
 
-## The Play button.
 @onready var play_button: Button = %PlayButton
-## The Maze study button.
 @onready var maze_button: Button = %MazeButton
-## The Settings button.
 @onready var settings_button: Button = %SettingsButton
-## The Quit button.
 @onready var quit_button: Button = %QuitButton
 @onready var _status: Label = %Status
 

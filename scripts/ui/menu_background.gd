@@ -7,7 +7,6 @@ extends Control
 @export var top_color: Color = Color(0.09, 0.28, 0.42)
 ## Colour at the bottom of the gradient.
 @export var bottom_color: Color = Color(0.02, 0.06, 0.12)
-## Number of bubbles.
 @export var bubble_count: int = 36
 
 var _time: float = 0.0

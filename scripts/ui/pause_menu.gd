@@ -15,11 +15,8 @@ var enabled: bool = true
 
 var _settings_screen: SettingsScreen = null
 
-## The Resume button.
 @onready var resume_button: Button = %ResumeButton
-## The Settings button.
 @onready var settings_button: Button = %SettingsButton
-## The Quit to menu button.
 @onready var quit_button: Button = %QuitButton
 @onready var _root: Control = %Root
 @onready var _panel: Control = %Center

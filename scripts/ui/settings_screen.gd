@@ -20,15 +20,11 @@ var _device_ids: PackedStringArray = PackedStringArray()
 var _dirty: bool = false
 var _refreshing: bool = false
 
-## Device choice.
 @onready var device_option: OptionButton = %DeviceOption
-## Force scale, 0–2.
 @onready var force_slider: HSlider = %ForceSlider
-## Smoothing on/off.
 @onready var smoothing_check: CheckButton = %SmoothingCheck
 ## Control mode: index 0 device, 1 keyboard.
 @onready var control_option: OptionButton = %ControlOption
-## Restores the defaults.
 @onready var defaults_button: Button = %DefaultsButton
 ## Saves and closes.
 @onready var back_button: Button = %BackButton

@@ -10,7 +10,6 @@ const ErrorCapture := preload("res://tests/runner/error_capture.gd")
 var suite_name: String = ""
 ## Name of the test method, or a phase name such as [code]<load>[/code].
 var test_name: String = ""
-## Path of the suite's script.
 var script_path: String = ""
 ## Failure messages, in the order they happened.
 var failures: PackedStringArray = PackedStringArray()
@@ -18,7 +17,6 @@ var failures: PackedStringArray = PackedStringArray()
 var notes: PackedStringArray = PackedStringArray()
 ## True once [method skip] was called.
 var skipped: bool = false
-## Why the test was skipped.
 var skip_reason: String = ""
 ## Wall-clock duration in seconds, set by [method finish].
 var duration_seconds: float = 0.0
@@ -44,7 +42,6 @@ func full_name() -> String:
 	return "%s::%s" % [suite_name, test_name]
 
 
-## True if anything failed.
 func is_failed() -> bool:
 	return not failures.is_empty()
 
@@ -54,12 +51,10 @@ func is_skipped() -> bool:
 	return skipped and failures.is_empty()
 
 
-## Records a failure message.
 func add_failure(message: String) -> void:
 	failures.append(message)
 
 
-## Marks the test skipped.
 func skip(reason: String) -> void:
 	skipped = true
 	skip_reason = reason

@@ -38,7 +38,6 @@ func before_all() -> void:
 	pass
 
 
-## Runs before each test.
 func before_each() -> void:
 	pass
 

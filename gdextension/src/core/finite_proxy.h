@@ -74,7 +74,6 @@ public:
 	// Walls holding the proxy back after the last update: the constraints it rests on
 	// (0 free, 1 sliding, 2+ stopped in a corner or dead end).
 	uint32_t active_constraints() const { return active_count_; }
-	uint32_t constraint_count() const { return constraint_count_; } // Found in the last update.
 	const ProxyConstraint &constraint(uint32_t p_index) const { return constraints_[p_index]; }
 	uint32_t last_sweeps() const { return last_sweeps_; }
 

@@ -65,13 +65,12 @@ public:
 	// Finite, |target| <= 1 m (beyond the workspace the stylus rests on the boundary).
 	Status set_hand_target(const Vec3 &p_target_m) override;
 
+	// Nothing presses them yet: for the device issue's button tests and Pong's fire button.
 	void set_buttons(uint32_t p_buttons) { buttons_.store(p_buttons, std::memory_order_relaxed); }
 	void set_plugged(bool p_plugged) { plugged_.store(p_plugged, std::memory_order_release); }
 	bool plugged() const { return plugged_.load(std::memory_order_acquire); }
 
 	const SimulatedDeviceConfig &config() const { return config_; }
-	// The last force written (servo thread / step() caller only).
-	const Vec3 &applied_force() const { return force_; }
 
 private:
 	Vec3 clamp_to_workspace(const Vec3 &p_position) const;

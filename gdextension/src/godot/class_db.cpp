@@ -39,7 +39,6 @@ GDExtensionObjectPtr create_instance(void *p_userdata, GDExtensionBool /*p_notif
 	auto *record = static_cast<ClassRecord *>(p_userdata);
 	GDExtensionObjectPtr object = api.classdb_construct_object2(record->parent->ptr());
 	ExtensionObject *instance = record->create();
-	instance->set_owner(object);
 	api.object_set_instance(object, record->name->ptr(), instance);
 	return object;
 }

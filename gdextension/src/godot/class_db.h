@@ -168,15 +168,10 @@ private:
 	const char *class_;
 };
 
-// Common base of exposed classes: knows the engine object that wraps it.
+// Common base of exposed classes: the engine deletes an instance through it.
 class ExtensionObject {
 public:
 	virtual ~ExtensionObject() = default;
-	GDExtensionObjectPtr owner() const { return owner_; }
-	void set_owner(GDExtensionObjectPtr p_owner) { owner_ = p_owner; }
-
-private:
-	GDExtensionObjectPtr owner_ = nullptr;
 };
 
 using CreateFunc = ExtensionObject *(*)();
