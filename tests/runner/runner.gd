@@ -38,45 +38,8 @@ const ErrorCapture := preload("res://tests/runner/error_capture.gd")
 const JUnit := preload("res://tests/runner/junit.gd")
 const Result := preload("res://tests/runner/result.gd")
 const SuiteBase := preload("res://tests/runner/test_suite.gd")
-
-const DEFAULT_ROOT: String = "res://tests"
-const DEFAULT_TIMEOUT_SECONDS: float = 30.0
-## Folders skipped unless the search starts inside them.
-const EXCLUDED_DIRS: PackedStringArray = ["res://tests/fixtures", "res://tests/runner"]
-## Printed by --help.
-const USAGE: String = """\
-usage: tools/godot --headless --path . res://tests/runner/runner.tscn -- [options]
-  --dir=PATH            folder or test_*.gd file to run (repeatable; default res://tests)
-  --filter=TEXT         only files whose path contains TEXT (repeatable)
-  --test=TEXT           only tests whose name or suite::test contains TEXT (repeatable)
-  --timeout=SECONDS     timeout of each hook and each test (default 30)
-  --junit=PATH          also write JUnit XML
-  --warnings-as-errors  GDScript warnings enabled in the project fail a suite's load
-  --help                print this help"""
-## Folders never searched (the runner's own files are named test_*.gd).
-const NEVER_SEARCHED: PackedStringArray = ["res://tests/runner"]
-
-
-## Parsed command-line options.
-class Options:
-	extends RefCounted
-
-	## Folders or files to search.
-	var roots: PackedStringArray = PackedStringArray()
-	## Path substrings; empty means every file.
-	var file_filters: PackedStringArray = PackedStringArray()
-	## Test name substrings; empty means every test.
-	var test_filters: PackedStringArray = PackedStringArray()
-	## Default timeout of each phase, in seconds.
-	var timeout_seconds: float = DEFAULT_TIMEOUT_SECONDS
-	## Where to write JUnit XML; empty for none.
-	var junit_path: String = ""
-	## Whether enabled GDScript warnings become errors while suites load.
-	var warnings_as_errors: bool = false
-	## Whether --help was given.
-	var help: bool = false
-	## Why the options are invalid; empty when they are fine.
-	var error: String = ""
+const Options := preload("res://tests/runner/options.gd")
+const Discovery := preload("res://tests/runner/discovery.gd")
 
 
 ## Completion flag of one invoked hook or test.
@@ -111,7 +74,7 @@ func _exit_tree() -> void:
 
 
 func _main() -> void:
-	var options: Options = _parse_options(OS.get_cmdline_user_args())
+	var options: Options = Options.parse(OS.get_cmdline_user_args())
 	if options.help or not options.error.is_empty():
 		if not options.error.is_empty():
 			print("error: " + options.error)
@@ -125,7 +88,7 @@ func _main() -> void:
 			print("error: --dir %s does not exist" % root)
 			_finish(2)
 			return
-		for path: String in _discover(root):
+		for path: String in Discovery.discover(root):
 			if not files.has(path) and _matches_any(path, options.file_filters):
 				files.append(path)
 
@@ -164,45 +127,7 @@ func _print_summary() -> void:
 
 
 func _print_usage() -> void:
-	print(USAGE)
-
-
-static func _parse_options(args: PackedStringArray) -> Options:
-	var options: Options = Options.new()
-	for arg: String in args:
-		var key: String = arg.get_slice("=", 0)
-		var value: String = arg.substr(key.length() + 1) if arg.contains("=") else ""
-		match key:
-			"--dir":
-				options.roots.append(_normalize_dir(value))
-			"--filter":
-				options.file_filters.append(value)
-			"--test":
-				options.test_filters.append(value)
-			"--timeout":
-				if not value.is_valid_float() or value.to_float() <= 0.0:
-					options.error = "--timeout needs a positive number of seconds"
-				options.timeout_seconds = value.to_float()
-			"--junit":
-				options.junit_path = value
-			"--warnings-as-errors":
-				options.warnings_as_errors = true
-			"--help", "-h":
-				options.help = true
-			_:
-				options.error = "unknown option " + arg
-		if (key in ["--dir", "--filter", "--test", "--junit"]) and value.is_empty():
-			options.error = "%s needs a value (%s=...)" % [key, key]
-	if options.roots.is_empty():
-		options.roots.append(DEFAULT_ROOT)
-	return options
-
-
-static func _normalize_dir(path: String) -> String:
-	var normalized: String = path.strip_edges()
-	while normalized.length() > 1 and normalized.ends_with("/") and not normalized.ends_with("://"):
-		normalized = normalized.left(-1)
-	return normalized
+	print(Options.USAGE)
 
 
 static func _matches_any(text: String, needles: PackedStringArray) -> bool:
@@ -210,45 +135,6 @@ static func _matches_any(text: String, needles: PackedStringArray) -> bool:
 		return true
 	for needle: String in needles:
 		if text.contains(needle):
-			return true
-	return false
-
-
-## Every test_*.gd below [param root] (or [param root] itself if it is a file), sorted.
-static func _discover(root: String) -> PackedStringArray:
-	var found: PackedStringArray = PackedStringArray()
-	if FileAccess.file_exists(root):
-		found.append(root)
-	else:
-		_walk(root, root, found)
-	return found
-
-
-static func _walk(dir_path: String, root: String, found: PackedStringArray) -> void:
-	var dir: DirAccess = DirAccess.open(dir_path)
-	if dir == null:
-		return
-	var files: PackedStringArray = dir.get_files()
-	files.sort()
-	for file_name: String in files:
-		if file_name.begins_with("test_") and file_name.ends_with(".gd"):
-			found.append(dir_path.path_join(file_name))
-	var subdirs: PackedStringArray = dir.get_directories()
-	subdirs.sort()
-	for subdir: String in subdirs:
-		var sub_path: String = dir_path.path_join(subdir)
-		if (
-			not _is_excluded(sub_path, root)
-			and not FileAccess.file_exists(sub_path.path_join(".gdignore"))
-		):
-			_walk(sub_path, root, found)
-
-
-static func _is_excluded(dir_path: String, root: String) -> bool:
-	if dir_path in NEVER_SEARCHED:
-		return true
-	for excluded: String in EXCLUDED_DIRS:
-		if dir_path == excluded and root != excluded and not root.begins_with(excluded + "/"):
 			return true
 	return false
 
