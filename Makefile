@@ -44,8 +44,8 @@ build-release: engine
 		-DHAPTICS_TARGET=template_release -DHAPTICS_BUILD_TESTS=OFF -DHAPTICS_BUILD_BENCH=OFF >/dev/null
 	@cmake --build $(BUILD)/release -j $(JOBS) --target haptics
 
-## import: let the engine import the project (the extension is listed first: see
-## DESIGN.md, a fresh import that registers a class otherwise crashes, Godot #111048)
+## import: let the engine import the project (the extension is listed first: a fresh import
+## that registers a class otherwise crashes, Godot #111048; README, Troubleshooting)
 import: build
 	@mkdir -p .godot
 	@echo "res://gdextension/haptics.gdextension" > .godot/extension_list.cfg
