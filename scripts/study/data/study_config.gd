@@ -3,13 +3,15 @@ extends RefCounted
 ## The maze study's settings: which levels, how many trials, counterbalancing, telemetry
 ## rate and, per condition, the control scheme and the forces rendered.
 ##
-## Layers, later ones winning: the built-in defaults, [constant DEFAULT_PATH] (shipped),
-## [code]<study root>/study_config.json[/code] (the researcher's, next to the data; the
-## analysis ignores files directly in the study folder) and any files or dictionaries
-## given to [method merge_file] / [method merge]. Dictionaries merge key by key (so a
-## file may change only [code]conditions.movement.forces.friction[/code]). Unknown keys and
-## values of the wrong type or range are collected in [member errors]; the study refuses
-## to start while there are any.
+## Layers, later ones winning: [constant DEFAULT_PATH] (shipped: every setting and its
+## default), [code]<study root>/study_config.json[/code] (the researcher's, next to the data;
+## the analysis ignores files directly in the study folder) and any files or dictionaries
+## given to [method merge_file] / [method merge]. Dictionaries merge key by key (so a file
+## may change only [code]conditions.movement.forces.friction[/code]). A setting takes its
+## type from the shipped file, except that numbers are whole or bounded only as
+## [member numbers] says; [constant CHOICES] lists the settings with a fixed set of values.
+## Unknown keys and values of the wrong type or range are collected in [member errors];
+## the study refuses to start while there are any.
 ## [codeblock]
 ## var config := StudyConfig.load_default()
 ## config.merge({"trials_per_condition": 2})
@@ -20,54 +22,71 @@ extends RefCounted
 const DEFAULT_PATH: String = "res://assets/study/study_config.json"
 ## Name of the researcher's settings file inside the study root.
 const ROOT_FILE: String = "study_config.json"
-## Forces the movement-based renderer can be asked for, each switchable per condition.
-const FORCES: PackedStringArray = ["normal", "friction", "impact", "weight", "water"]
 ## Servo rate, for the telemetry rate check (Hz).
 const SERVO_RATE_HZ: float = 1000.0
+## Settings (by path) that take one of a few strings.
+const CHOICES: Dictionary = {
+	"conditions.constraint.update": ["servo", "frame"],
+	"conditions.constraint.workspace": ["disc", "square"],
+}
+
+## The numeric settings that are whole numbers ([code]TYPE_INT[/code]) or bounded, by path:
+## [code][type, lowest, highest][/code], the bounds optional. Any other number may be any
+## number. The telemetry must keep at least the format's minimum rate.
+static var numbers: Dictionary = {
+	"trials_per_condition": [TYPE_INT, 1, 50],
+	"seed": [TYPE_INT],
+	"telemetry_decimation":
+	[TYPE_INT, 1, floori(SERVO_RATE_HZ / StudyFormat.telemetry_min_rate_hz)],
+	"trial_timeout_s": [TYPE_FLOAT, 1.0, 3600.0],
+	"telemetry_flush_s": [TYPE_FLOAT, 0.02, 10.0],
+	"contact_gap_s": [TYPE_FLOAT, 0.0, 1.0],
+	"centre_tolerance": [TYPE_FLOAT, 0.01, 1.0],
+	"autopilot_speed": [TYPE_FLOAT, 10.0, 5000.0],
+	"conditions.constraint.max_iterations": [TYPE_INT],
+}
 
 ## Problems found so far ("key: what"); empty when the settings are usable.
 var errors: PackedStringArray = PackedStringArray()
 ## The merged settings.
 var data: Dictionary = {}
 
+# The shipped settings: every key a setting may have, and the type of its value.
+var _shape: Dictionary = {}
 
-func _init() -> void:
-	data = _defaults()
 
-
-## The built-in defaults merged with [constant DEFAULT_PATH].
+## The shipped settings ([constant DEFAULT_PATH]), checked like any other layer.
 static func load_default() -> StudyConfig:
 	var config: StudyConfig = StudyConfig.new()
-	config.merge_file(DEFAULT_PATH)
+	config._shape = config._read_object(DEFAULT_PATH)
+	config.data = config._shape.duplicate(true)
+	config.merge(config._shape, DEFAULT_PATH)
 	return config
 
 
 ## Merges the JSON object in [param path] (res://, user:// or absolute). A missing file is
 ## an error unless [param optional].
 func merge_file(path: String, optional: bool = false) -> void:
-	if not FileAccess.file_exists(path):
-		if not optional:
-			errors.append("%s: file not found" % path)
+	if optional and not FileAccess.file_exists(path):
 		return
-	var text: String = FileAccess.get_file_as_string(path)
-	var json: JSON = JSON.new()
-	if json.parse(text) != OK:
-		errors.append(
-			"%s:%d: invalid JSON: %s" % [path, json.get_error_line(), json.get_error_message()]
-		)
-		return
-	if not json.data is Dictionary:
-		errors.append("%s: expected a JSON object" % path)
-		return
-	var values: Dictionary = json.data
-	merge(values, path)
+	var values: Dictionary = _read_object(path)
+	if not values.is_empty():
+		merge(values, path)
 
 
 ## Merges [param values] into the settings, checking each key; [param source] names where
 ## they came from in error messages.
 func merge(values: Dictionary, source: String = "settings") -> void:
-	_merge_into(data, values, _defaults(), source, "")
-	_check_ranges(source)
+	_merge_into(data, values, _shape, source, "")
+	if not _shape.is_empty():
+		_check_values(source)
+
+
+## The values the setting at [param path] may take, when they are few (see
+## [constant CHOICES]).
+static func choices(path: String) -> PackedStringArray:
+	var values: Array = CHOICES.get(path, [])
+	return PackedStringArray(values)
 
 
 ## Whether no problem was found.
@@ -78,7 +97,7 @@ func is_valid() -> bool:
 ## Folder the participant folders are written to (res:// is refused: it is read-only in
 ## exported games).
 func study_root() -> String:
-	return str(data["study_root"])
+	return str(data.get("study_root", ""))
 
 
 ## Scene of the maze evaluation level.
@@ -88,30 +107,29 @@ func maze_level() -> String:
 
 ## Scenes of the demonstration levels, in practice order.
 func demo_levels() -> PackedStringArray:
-	return _strings(data["demo_levels"])
+	var levels: Array = data["demo_levels"]
+	return PackedStringArray(levels)
 
 
 ## Conditions offered during practice, in order ("Next method" cycles through them).
 func practice_conditions() -> PackedStringArray:
-	return _strings(data["practice_conditions"])
+	var conditions: Array = data["practice_conditions"]
+	return PackedStringArray(conditions)
 
 
 ## Whether a resumed session starts with the practice again.
 func practice_on_resume() -> bool:
-	var value: bool = data["practice_on_resume"]
-	return value
+	return data["practice_on_resume"] == true
 
 
 ## Maze trials per condition.
 func trials_per_condition() -> int:
-	var value: int = data["trials_per_condition"]
-	return value
+	return _value("trials_per_condition")
 
 
 ## A trial that has not reached the goal after this many seconds ends (completed 0).
 func trial_timeout_s() -> float:
-	var value: float = data["trial_timeout_s"]
-	return value
+	return _value("trial_timeout_s")
 
 
 ## [code]random[/code] or [code]latin_square[/code].
@@ -121,57 +139,46 @@ func counterbalancing() -> String:
 
 ## Seed of the condition order; -1 draws a fresh one per participant (it is recorded).
 func order_seed() -> int:
-	var value: int = data["seed"]
-	return value
+	return _value("seed")
 
 
-## Keep every n-th servo sample in the telemetry files (1–4: 1000–250 Hz).
+## Keep every n-th servo sample in the telemetry files.
 func telemetry_decimation() -> int:
-	var value: int = data["telemetry_decimation"]
-	return value
+	return _value("telemetry_decimation")
 
 
 ## Telemetry is appended to its file at least this often, in seconds.
 func telemetry_flush_s() -> float:
-	var value: float = data["telemetry_flush_s"]
-	return value
+	return _value("telemetry_flush_s")
 
 
 ## Two contacts closer in time than this count as one wall collision, in seconds.
 func contact_gap_s() -> float:
-	var value: float = data["contact_gap_s"]
-	return value
+	return _value("contact_gap_s")
 
 
 ## How close to the centre (normalised workspace units) the handle must be to start a trial.
 func centre_tolerance() -> float:
-	var value: float = data["centre_tolerance"]
-	return value
+	return _value("centre_tolerance")
 
 
 ## Speed of the scripted participant's hand along the path in position control, px/s.
 func autopilot_speed() -> float:
-	var value: float = data["autopilot_speed"]
-	return value
+	return _value("autopilot_speed")
 
 
-## The settings of [param condition] (see the keys in [constant DEFAULT_PATH]).
+## The settings of [param name] (see the keys in [constant DEFAULT_PATH]).
 func condition(name: String) -> Dictionary:
 	var conditions: Dictionary = data["conditions"]
 	var settings: Dictionary = conditions.get(name, {})
 	return settings
 
 
-## Whether [param condition] renders force [param force] (one of [constant FORCES]).
+## Whether condition [param name] renders force [param force] (a key of its
+## [code]forces[/code] in [constant DEFAULT_PATH]).
 func force_enabled(name: String, force: String) -> bool:
 	var forces: Dictionary = condition(name).get("forces", {})
-	var value: bool = forces.get(force, false)
-	return value
-
-
-## The settings as JSON (recorded nowhere by default; useful in reports).
-func to_json() -> String:
-	return JSON.stringify(data, "  ")
+	return forces.get(force, false) == true
 
 
 func _merge_into(
@@ -193,71 +200,84 @@ func _merge_into(
 			var inner_values: Dictionary = value
 			var inner_shape: Dictionary = expected
 			_merge_into(inner_target, inner_values, inner_shape, source, path + ".")
-		elif not _same_kind(expected, value):
+			continue
+		var kind: int = _kind(path, expected)
+		if not _is_kind(kind, value):
 			errors.append(
 				(
 					"%s: '%s' must be %s, got %s"
-					% [source, path, _kind_name(expected), JSON.stringify(value)]
+					% [source, path, _kind_name(kind), JSON.stringify(value)]
 				)
 			)
-		elif typeof(expected) == TYPE_INT:
-			var whole: int = roundi(_as_float(value))
-			target[name] = whole
-		elif typeof(expected) == TYPE_FLOAT:
+		elif kind == TYPE_INT:
+			target[name] = roundi(_as_float(value))
+		elif kind == TYPE_FLOAT:
 			target[name] = _as_float(value)
 		else:
 			target[name] = value
 
 
-func _check_ranges(source: String) -> void:
-	_check_int(source, "trials_per_condition", 1, 50)
-	_check_int(source, "telemetry_decimation", 1, 4)
-	_check_float(source, "trial_timeout_s", 1.0, 3600.0)
-	_check_float(source, "telemetry_flush_s", 0.02, 10.0)
-	_check_float(source, "contact_gap_s", 0.0, 1.0)
-	_check_float(source, "centre_tolerance", 0.01, 1.0)
-	_check_float(source, "autopilot_speed", 10.0, 5000.0)
-	if not str(data["counterbalancing"]) in StudyFormat.COUNTERBALANCING:
-		errors.append("%s: 'counterbalancing' must be random or latin_square" % source)
+func _check_values(source: String) -> void:
+	for path: String in numbers:
+		var rule: Array = numbers[path]
+		if rule.size() == 3:
+			_check_range(source, path, _value(path), rule[1], rule[2])
+	for path: String in CHOICES:
+		var allowed: PackedStringArray = choices(path)
+		if not str(_value(path)) in allowed:
+			errors.append("%s: '%s' must be %s" % [source, path, " or ".join(allowed)])
+	var modes: PackedStringArray = StudyFormat.counterbalancing_modes
+	if not counterbalancing() in modes:
+		errors.append("%s: 'counterbalancing' must be %s" % [source, " or ".join(modes)])
 	if study_root().begins_with("res://"):
 		errors.append("%s: 'study_root' must not be under res:// (read-only)" % source)
 	for name: String in practice_conditions():
-		if not name in StudyFormat.CONDITIONS:
+		if not name in StudyFormat.conditions:
 			errors.append("%s: 'practice_conditions': unknown condition '%s'" % [source, name])
-	for name: String in StudyFormat.CONDITIONS:
-		var settings: Dictionary = condition(name)
-		var control: String = str(settings.get("control", ""))
-		if name == "constraint" and control != "position":
-			errors.append("%s: 'conditions.constraint.control' must be position" % source)
-		elif name != "constraint" and control != "acceleration":
-			errors.append("%s: 'conditions.%s.control' must be acceleration" % [source, name])
-	var constraint: Dictionary = condition("constraint")
-	if not str(constraint.get("update", "")) in ["servo", "frame"]:
-		errors.append("%s: 'conditions.constraint.update' must be servo or frame" % source)
-	if not str(constraint.get("workspace", "")) in ["disc", "square"]:
-		errors.append("%s: 'conditions.constraint.workspace' must be disc or square" % source)
+	for name: String in StudyFormat.conditions:
+		var control: String = str(condition(name).get("control", ""))
+		var wanted: String = (
+			"position" if ConditionRig.is_position_control(name) else "acceleration"
+		)
+		if control != wanted:
+			errors.append("%s: 'conditions.%s.control' must be %s" % [source, name, wanted])
 
 
-func _check_int(source: String, key: String, low: int, high: int) -> void:
-	var value: int = data[key]
-	if value < low or value > high:
-		errors.append("%s: '%s' must be within %d..%d (got %d)" % [source, key, low, high, value])
+func _check_range(
+	source: String, path: String, value: Variant, low: Variant, high: Variant
+) -> void:
+	if _as_float(value) >= _as_float(low) and _as_float(value) <= _as_float(high):
+		return
+	errors.append("%s: '%s' must be within %s..%s (got %s)" % [source, path, low, high, value])
 
 
-func _check_float(source: String, key: String, low: float, high: float) -> void:
-	var value: float = data[key]
-	if not (value >= low and value <= high):
-		errors.append("%s: '%s' must be within %s..%s (got %s)" % [source, key, low, high, value])
+# The value at a dotted path ("conditions.constraint.update").
+func _value(path: String) -> Variant:
+	var value: Variant = data
+	for key: String in path.split("."):
+		if not value is Dictionary:
+			return null
+		var inner: Dictionary = value
+		value = inner.get(key)
+	return value
 
 
-static func _same_kind(expected: Variant, value: Variant) -> bool:
-	match typeof(expected):
+# TYPE_INT or TYPE_FLOAT for a number (see [member numbers]), else the shipped value's type.
+static func _kind(path: String, expected: Variant) -> int:
+	if typeof(expected) == TYPE_FLOAT or typeof(expected) == TYPE_INT:
+		var rule: Array = numbers.get(path, [TYPE_FLOAT])
+		return rule[0]
+	return typeof(expected)
+
+
+static func _is_kind(kind: int, value: Variant) -> bool:
+	var is_number: bool = typeof(value) == TYPE_FLOAT or typeof(value) == TYPE_INT
+	match kind:
 		TYPE_FLOAT:
-			return typeof(value) == TYPE_FLOAT or typeof(value) == TYPE_INT
+			return is_number
 		TYPE_INT:
 			# JSON numbers arrive as floats: whole ones are fine.
-			var number_ok: bool = typeof(value) == TYPE_FLOAT or typeof(value) == TYPE_INT
-			return number_ok and is_equal_approx(_as_float(value), roundf(_as_float(value)))
+			return is_number and is_equal_approx(_as_float(value), roundf(_as_float(value)))
 		TYPE_ARRAY:
 			if not value is Array:
 				return false
@@ -265,7 +285,7 @@ static func _same_kind(expected: Variant, value: Variant) -> bool:
 				if typeof(item) != TYPE_STRING:
 					return false
 			return true
-	return typeof(value) == typeof(expected)
+	return typeof(value) == kind
 
 
 static func _as_float(value: Variant) -> float:
@@ -273,8 +293,8 @@ static func _as_float(value: Variant) -> float:
 	return number
 
 
-static func _kind_name(expected: Variant) -> String:
-	match typeof(expected):
+static func _kind_name(kind: int) -> String:
+	match kind:
 		TYPE_FLOAT:
 			return "a number"
 		TYPE_INT:
@@ -288,60 +308,18 @@ static func _kind_name(expected: Variant) -> String:
 	return "an object"
 
 
-static func _strings(value: Variant) -> PackedStringArray:
-	var out: PackedStringArray = PackedStringArray()
-	if value is Array:
-		for item: Variant in value:
-			out.append(str(item))
-	return out
-
-
-static func _acceleration(force_scale: float, normal: bool) -> Dictionary:
-	return {
-		"control": "acceleration",
-		"force_scale": force_scale,
-		"forces":
-		{"normal": normal, "friction": false, "impact": false, "weight": false, "water": false},
-		"stiffness": 2.0,
-		"friction": 1.0,
-		"impact_gain": 0.5,
-		"smoothing": true,
-	}
-
-
-static func _defaults() -> Dictionary:
-	return {
-		"format_version": 1,
-		"study_root": "user://study",
-		"maze_level": "res://scenes/study/levels/maze.tscn",
-		"demo_levels":
-		[
-			"res://scenes/study/levels/demo_open.tscn",
-			"res://scenes/study/levels/demo_corridors.tscn",
-		],
-		"practice_conditions": ["movement", "constraint", "none"],
-		"practice_on_resume": false,
-		"trials_per_condition": 1,
-		"trial_timeout_s": 180.0,
-		"counterbalancing": "random",
-		"seed": -1,
-		"telemetry_decimation": 2,
-		"telemetry_flush_s": 0.5,
-		"contact_gap_s": 0.04,
-		"centre_tolerance": 0.05,
-		"autopilot_speed": 260.0,
-		"conditions":
-		{
-			"none": _acceleration(0.0, false),
-			"movement": _acceleration(1.0, true),
-			"constraint":
-			{
-				"control": "position",
-				"stiffness": 300.0,
-				"update": "servo",
-				"workspace": "disc",
-				"half_extent": 0.0,
-				"max_iterations": 6,
-			},
-		},
-	}
+func _read_object(path: String) -> Dictionary:
+	if not FileAccess.file_exists(path):
+		errors.append("%s: file not found" % path)
+		return {}
+	var json: JSON = JSON.new()
+	if json.parse(FileAccess.get_file_as_string(path)) != OK:
+		errors.append(
+			"%s:%d: invalid JSON: %s" % [path, json.get_error_line(), json.get_error_message()]
+		)
+		return {}
+	if not json.data is Dictionary:
+		errors.append("%s: expected a JSON object" % path)
+		return {}
+	var values: Dictionary = json.data
+	return values

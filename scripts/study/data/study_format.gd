@@ -1,189 +1,139 @@
 class_name StudyFormat
 extends RefCounted
-## The maze study's data format, version 1 ([code]tools/analysis/FORMAT.md[/code]): file
-## names, CSV columns, the value lists of the demographics, the six criteria with the
-## paper's wording, and how numbers and timestamps are written.
+## The maze study's data format ([code]tools/analysis/FORMAT.md[/code]) as the game uses
+## it. The conditions, the criteria, the rating range, the demographics, the file names and
+## the CSV columns come from the schema [constant SCHEMA_PATH], which the analysis tool
+## reads too; how numbers and timestamps are written is defined here.
 ##
-## Everything here is static; the study runner, the resume scanner and the tests share it
-## so the format is spelled out once.
+## Everything here is static; the study runner, the resume scanner and the tests share it.
 
-## Written into participant.json; the analysis refuses other versions.
-const FORMAT_VERSION: int = 1
-## The three conditions, in the paper's order.
-const CONDITIONS: PackedStringArray = ["none", "movement", "constraint"]
-## Counterbalancing modes.
-const COUNTERBALANCING: PackedStringArray = ["random", "latin_square"]
-## The six criteria (CSV column names), in the paper's Table I order.
-const CRITERIA: PackedStringArray = [
-	"realism", "ease", "aptness", "intuitiveness", "enthusiasm", "partiality"
-]
-## Each criterion's title and question as shown to participants (the paper's wording);
-## read it through [method criterion_title] and [method criterion_question].
-const CRITERION_TEXT: Dictionary = {
-	"realism": ["Realism", "How realistic is the control scheme?"],
-	"ease": ["Ease", "How easy is it to control the character?"],
-	"aptness": ["Aptness", "How appropriate does the control feel?"],
-	"intuitiveness": ["Intuitiveness", "How natural is the control?"],
-	"enthusiasm": ["Enthusiasm", "How much did you enjoy this method?"],
-	"partiality": ["Partiality", "How much do you prefer this method?"],
-}
-## Lowest and highest rating.
-const RATING_MIN: int = 1
-## See [constant RATING_MIN].
-const RATING_MAX: int = 10
-## Demographic fields in participant.json and their allowed values, in display order
-## (read the values through [method demographic_values]).
-const DEMOGRAPHICS: Dictionary = {
-	"age_band": ["under_20", "20-29", "30-39", "40-49", "50-59", "60+", "undisclosed"],
-	"gender": ["female", "male", "non_binary", "other", "undisclosed"],
-	"handedness": ["left", "right", "ambidextrous", "undisclosed"],
-	"hand_used": ["left", "right"],
-	"gaming_experience": ["none", "little", "some", "extensive"],
-}
-## Labels of the demographic fields on the start screen.
-const DEMOGRAPHIC_TITLES: Dictionary = {
-	"age_band": "Age",
-	"gender": "Gender",
-	"handedness": "Handedness",
-	"hand_used": "Hand on the device",
-	"gaming_experience": "Gaming experience",
-}
+## The format's one machine-readable description.
+const SCHEMA_PATH: String = "res://assets/study/study_schema.json"
 
-## File names inside a participant folder.
-const PARTICIPANT_FILE: String = "participant.json"
-## See [constant PARTICIPANT_FILE].
-const TRIALS_FILE: String = "trials.csv"
-## See [constant PARTICIPANT_FILE].
-const RATINGS_FILE: String = "ratings.csv"
-## See [constant PARTICIPANT_FILE].
-const FINAL_FILE: String = "final.json"
-## Folder of the per-trial telemetry files.
-const TELEMETRY_DIR: String = "telemetry"
-
-## Columns of ratings.csv.
-const RATINGS_COLUMNS: PackedStringArray = [
-	"participant_id",
-	"condition",
-	"order_index",
-	"realism",
-	"ease",
-	"aptness",
-	"intuitiveness",
-	"enthusiasm",
-	"partiality",
-	"timestamp",
-]
-## Columns of trials.csv.
-const TRIALS_COLUMNS: PackedStringArray = [
-	"participant_id",
-	"condition",
-	"level",
-	"trial_index",
-	"time_to_goal_s",
-	"completed",
-	"wall_collisions",
-	"contact_time_s",
-	"path_length_px",
-	"mean_force_n",
-	"max_force_n",
-	"telemetry_file",
-	"timestamp",
-]
-## Columns of a telemetry file.
-const TELEMETRY_COLUMNS: PackedStringArray = [
-	"time_s", "input_x", "input_y", "avatar_x", "avatar_y", "force_x", "force_y", "in_contact"
-]
-
-const _ID_PATTERN: String = "^[A-Za-z0-9][A-Za-z0-9_-]*$"
-const _LEVEL_PATTERN: String = "^[A-Za-z0-9][A-Za-z0-9_.-]*$"
-const _INT_PATTERN: String = "^[+-]?[0-9]+$"
-const _NUMBER_PATTERN: String = "^[+-]?([0-9]+(\\.[0-9]*)?|\\.[0-9]+)([eE][+-]?[0-9]+)?$"
-const _TIMESTAMP_PATTERN: String = (
-	"^[0-9]{4}-[0-9]{2}-[0-9]{2}T[0-9]{2}:[0-9]{2}:[0-9]{2}(\\.[0-9]{1,9})?"
-	+ "(Z|[+-][0-9]{2}:[0-9]{2})$"
-)
-
+static var _schema: Dictionary = _load_schema()
 static var _regexes: Dictionary[String, RegEx] = {}
 
+## Written into participant.json; the analysis refuses other versions.
+static var format_version: int = _schema.get("format_version", 0)
+## The three conditions, in the paper's order.
+static var conditions: PackedStringArray = _ids("conditions", "id")
+## The ways of ordering the conditions: [code]random[/code], [code]latin_square[/code].
+static var counterbalancing_modes: PackedStringArray = _strings(_schema.get("counterbalancing"))
+## The six criteria (CSV column names), in the paper's Table I order.
+static var criteria: PackedStringArray = _ids("criteria", "id")
+## Lowest and highest rating.
+static var rating_min: int = _section("rating").get("min", 0)
+static var rating_max: int = _section("rating").get("max", 0)
+## File names inside a participant folder.
+static var participant_file: String = _section("files").get("participant", "")
+static var trials_file: String = _section("files").get("trials", "")
+static var ratings_file: String = _section("files").get("ratings", "")
+static var final_file: String = _section("files").get("final", "")
+## Folder of the per-trial telemetry files.
+static var telemetry_dir: String = str(_section("files").get("telemetry", "")).get_base_dir()
+## Subfolders of a study folder that are not participants.
+static var reserved_folders: PackedStringArray = _strings(_section("files").get("reserved_folders"))
+## The lowest effective sample rate a telemetry file should have, Hz.
+static var telemetry_min_rate_hz: float = _schema.get("telemetry_min_rate_hz", 0.0)
+static var ratings_columns: PackedStringArray = _names(columns("ratings"))
+static var trials_columns: PackedStringArray = _names(columns("trials"))
+static var telemetry_columns: PackedStringArray = _names(columns("telemetry"))
 
-## The allowed values of the demographic field [param key], in display order.
-static func demographic_values(key: String) -> PackedStringArray:
-	var values: Array = DEMOGRAPHICS.get(key, [])
-	return PackedStringArray(values)
+
+## The columns of the CSV table [param table] ([code]ratings[/code], [code]trials[/code] or
+## [code]telemetry[/code]) in file order, each a dictionary with [code]name[/code],
+## [code]type[/code] and, for numbers, [code]min[/code] and [code]max[/code] when bounded.
+static func columns(table: String) -> Array[Dictionary]:
+	var out: Array[Dictionary] = []
+	for column: Dictionary in _dictionaries(_section("tables").get(table)):
+		if not column.has("each"):
+			out.append(column)
+			continue
+		for name: String in _ids(str(column["each"]), "id"):
+			var copy: Dictionary = column.duplicate()
+			copy.erase("each")
+			copy["name"] = name
+			out.append(copy)
+	return out
+
+
+## Why [param value] is not a valid field of [param column] (one of [method columns]), e.g.
+## "is not an integer 1-10"; empty when it is valid. A telemetry file name is only checked
+## against its trial by the caller.
+static func field_problem(column: Dictionary, value: String) -> String:
+	var type: String = str(column.get("type", ""))
+	match type:
+		"id":
+			return "" if is_valid_id(value) else "is not a valid participant id"
+		"level":
+			return "" if is_valid_level(value) else "is not a valid level id"
+		"condition":
+			return "" if value in conditions else "is unknown"
+		"timestamp":
+			return "" if is_timestamp(value) else "is not a timestamp"
+		"rating":
+			return _range_problem(true, value, rating_min, rating_max)
+		"integer", "number":
+			var low: float = column.get("min", -INF)
+			var high: float = column.get("max", INF)
+			return _range_problem(type == "integer", value, low, high)
+	return ""
 
 
 ## The demographic fields, in display order.
 static func demographic_keys() -> PackedStringArray:
-	var keys: Array = DEMOGRAPHICS.keys()
-	return PackedStringArray(keys)
+	return _ids("demographics", "key")
 
 
-## The label of the demographic field [param key].
+## The allowed values of the demographic field [param key], in display order.
+static func demographic_values(key: String) -> PackedStringArray:
+	return _strings(_demographic(key).get("values"))
+
+
+## The label of the demographic field [param key] on the start screen.
 static func demographic_title(key: String) -> String:
-	return str(DEMOGRAPHIC_TITLES.get(key, key))
+	return str(_demographic(key).get("title", key))
+
+
+## A demographic value as shown on the start screen ("non_binary" is "Non-binary").
+static func value_label(value: String) -> String:
+	return str(_section("value_labels").get(value, value))
 
 
 ## The title of [param criterion] ("Realism").
 static func criterion_title(criterion: String) -> String:
-	var text: Array = CRITERION_TEXT.get(criterion, [criterion, ""])
-	return str(text[0])
+	return str(_criterion(criterion).get("title", criterion))
 
 
-## The question of [param criterion], the paper's wording ("How realistic is the control
-## scheme?").
+## The question of [param criterion] as asked on screen: the paper's wording, capitalised,
+## with a question mark ("How realistic is the control scheme?").
 static func criterion_question(criterion: String) -> String:
-	var text: Array = CRITERION_TEXT.get(criterion, [criterion, ""])
-	return str(text[1])
+	var wording: String = str(_criterion(criterion).get("wording", ""))
+	return wording.left(1).to_upper() + wording.substr(1) + "?"
 
 
 ## Whether [param id] is a valid participant id ([code][A-Za-z0-9][A-Za-z0-9_-]*[/code]).
 static func is_valid_id(id: String) -> bool:
-	return _matches(_ID_PATTERN, id)
+	return _matches("id", id)
 
 
-## Whether [param level] is a valid level id.
 static func is_valid_level(level: String) -> bool:
-	return _matches(_LEVEL_PATTERN, level)
+	return _matches("level", level)
 
 
 ## Whether [param text] is a CSV integer (optional sign and digits).
 static func is_integer(text: String) -> bool:
-	return _matches(_INT_PATTERN, text)
+	return _matches("integer", text)
 
 
 ## Whether [param text] is a CSV number (decimal, optional exponent; no nan/inf).
 static func is_number(text: String) -> bool:
-	return _matches(_NUMBER_PATTERN, text)
+	return _matches("number", text)
 
 
 ## Whether [param text] is an RFC 3339 timestamp with a time zone.
 static func is_timestamp(text: String) -> bool:
-	return _matches(_TIMESTAMP_PATTERN, text)
-
-
-## The condition's name for people (never shown to participants, who see "Method N").
-static func condition_label(condition: String) -> String:
-	match condition:
-		"none":
-			return "No feedback"
-		"movement":
-			return "Movement-based"
-		"constraint":
-			return "Constraint-based"
-	return condition
-
-
-## A demographic value as shown on the start screen ("20-29" stays, "non_binary" becomes
-## "Non-binary", "under_20" becomes "Under 20").
-static func value_label(value: String) -> String:
-	match value:
-		"under_20":
-			return "Under 20"
-		"non_binary":
-			return "Non-binary"
-		"undisclosed":
-			return "Prefer not to say"
-	return value.capitalize() if not value[0].is_valid_int() else value
+	return _matches("timestamp", text)
 
 
 ## [param unix_seconds] (default: now) as an RFC 3339 UTC timestamp with milliseconds,
@@ -217,10 +167,87 @@ static func is_csv_safe(field: String) -> bool:
 
 ## The telemetry file of a trial, relative to the participant folder.
 static func telemetry_name(condition: String, trial_index: int) -> String:
-	return "%s/%s_%d.csv" % [TELEMETRY_DIR, condition, trial_index]
+	var pattern: String = str(_section("files").get("telemetry", ""))
+	return pattern.format({"condition": condition, "trial_index": trial_index})
+
+
+# "is not an integer 1-10" (or "a number", or ">= 0" when only the low bound is finite)
+# when text is not such a value within the bounds, else "".
+static func _range_problem(whole: bool, text: String, low: float, high: float) -> String:
+	var bounds: String = ""
+	if is_finite(low) and is_finite(high):
+		bounds = " %s-%s" % [number(low), number(high)]
+	elif is_finite(low):
+		bounds = " >= %s" % number(low)
+	var valid: bool = is_integer(text) if whole else is_number(text)
+	if valid and text.to_float() >= low and text.to_float() <= high:
+		return ""
+	return "is not %s%s" % ["an integer" if whole else "a number", bounds]
+
+
+static func _load_schema() -> Dictionary:
+	var parsed: Variant = JSON.parse_string(FileAccess.get_file_as_string(SCHEMA_PATH))
+	if parsed is Dictionary:
+		return parsed
+	push_error("The study's data schema %s is missing or not a JSON object." % SCHEMA_PATH)
+	return {}
+
+
+static func _section(key: String) -> Dictionary:
+	var value: Variant = _schema.get(key)
+	if value is Dictionary:
+		return value
+	return {}
+
+
+static func _demographic(key: String) -> Dictionary:
+	for entry: Dictionary in _dictionaries(_schema.get("demographics")):
+		if entry.get("key") == key:
+			return entry
+	return {}
+
+
+static func _criterion(criterion: String) -> Dictionary:
+	for entry: Dictionary in _dictionaries(_schema.get("criteria")):
+		if entry.get("id") == criterion:
+			return entry
+	return {}
+
+
+# The field [param field] of each entry of the schema's list [param key].
+static func _ids(key: String, field: String) -> PackedStringArray:
+	var out: PackedStringArray = PackedStringArray()
+	for entry: Dictionary in _dictionaries(_schema.get(key)):
+		out.append(str(entry.get(field, "")))
+	return out
+
+
+static func _names(table_columns: Array[Dictionary]) -> PackedStringArray:
+	var out: PackedStringArray = PackedStringArray()
+	for column: Dictionary in table_columns:
+		out.append(str(column.get("name", "")))
+	return out
+
+
+static func _dictionaries(value: Variant) -> Array[Dictionary]:
+	var out: Array[Dictionary] = []
+	if value is Array:
+		for item: Variant in value:
+			if item is Dictionary:
+				out.append(item)
+	return out
+
+
+static func _strings(value: Variant) -> PackedStringArray:
+	var out: PackedStringArray = PackedStringArray()
+	if value is Array:
+		for item: Variant in value:
+			out.append(str(item))
+	return out
 
 
 static func _matches(pattern: String, text: String) -> bool:
 	if not _regexes.has(pattern):
-		_regexes[pattern] = RegEx.create_from_string(pattern)
+		var source: String = str(_section("patterns").get(pattern, "$^"))
+		_regexes[pattern] = RegEx.create_from_string(source)
 	return _regexes[pattern].search(text) != null
