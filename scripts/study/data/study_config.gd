@@ -127,9 +127,14 @@ func trials_per_condition() -> int:
 	return _value("trials_per_condition")
 
 
-## A trial that has not reached the goal after this many seconds ends (completed 0).
-func trial_timeout_s() -> float:
-	return _value("trial_timeout_s")
+## A fractional setting of [member numbers] by name, e.g. [code]trial_timeout_s[/code]
+## (what each means: [code]assets/study/README.md[/code]).
+func number(key: String) -> float:
+	var rule: Array = numbers.get(key, [])
+	if rule.is_empty() or rule[0] != TYPE_FLOAT:
+		push_error("StudyConfig: '%s' is not a fractional setting." % key)
+		return 0.0
+	return _value(key)
 
 
 ## [code]random[/code] or [code]latin_square[/code].
@@ -145,26 +150,6 @@ func order_seed() -> int:
 ## Keep every n-th servo sample in the telemetry files.
 func telemetry_decimation() -> int:
 	return _value("telemetry_decimation")
-
-
-## Telemetry is appended to its file at least this often, in seconds.
-func telemetry_flush_s() -> float:
-	return _value("telemetry_flush_s")
-
-
-## Two contacts closer in time than this count as one wall collision, in seconds.
-func contact_gap_s() -> float:
-	return _value("contact_gap_s")
-
-
-## How close to the centre (normalised workspace units) the handle must be to start a trial.
-func centre_tolerance() -> float:
-	return _value("centre_tolerance")
-
-
-## Speed of the scripted participant's hand along the path in position control, px/s.
-func autopilot_speed() -> float:
-	return _value("autopilot_speed")
 
 
 ## The settings of [param name] (see the keys in [constant DEFAULT_PATH]).
@@ -289,8 +274,8 @@ static func _is_kind(kind: int, value: Variant) -> bool:
 
 
 static func _as_float(value: Variant) -> float:
-	var number: float = value
-	return number
+	var converted: float = value
+	return converted
 
 
 static func _kind_name(kind: int) -> String:

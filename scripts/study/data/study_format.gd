@@ -176,13 +176,17 @@ static func telemetry_name(condition: String, trial_index: int) -> String:
 static func _range_problem(whole: bool, text: String, low: float, high: float) -> String:
 	var bounds: String = ""
 	if is_finite(low) and is_finite(high):
-		bounds = " %s-%s" % [number(low), number(high)]
+		bounds = " %s-%s" % [_bound(low), _bound(high)]
 	elif is_finite(low):
-		bounds = " >= %s" % number(low)
+		bounds = " >= %s" % _bound(low)
 	var valid: bool = is_integer(text) if whole else is_number(text)
 	if valid and text.to_float() >= low and text.to_float() <= high:
 		return ""
 	return "is not %s%s" % ["an integer" if whole else "a number", bounds]
+
+
+static func _bound(value: float) -> String:
+	return str(int(value)) if value == floorf(value) else str(value)
 
 
 static func _load_schema() -> Dictionary:

@@ -238,14 +238,14 @@ func load_level(scene: PackedScene, condition: String) -> bool:
 		fatal("the haptics server refused the settings of the condition '%s'" % condition)
 		return false
 	if autopilot:
-		pilot = StudyPilot.new(level.get_autopilot_path(), config.autopilot_speed())
+		pilot = StudyPilot.new(level.get_autopilot_path(), config.number("autopilot_speed"))
 	return true
 
 
 ## The card that asks for the handle at the start position (the gauge shows where it is).
 func show_centring() -> void:
 	_centre_held = 0.0
-	_stage.gauge.tolerance = config.centre_tolerance()
+	_stage.gauge.tolerance = config.number("centre_tolerance")
 	_stage.gauge.target = rig.start_hand()
 	_stage.gauge.progress = 0.0
 	var then: String = "the trial begins" if phase != Phase.PRACTICE else "you can move"
@@ -266,7 +266,7 @@ func centre(delta: float) -> bool:
 	var hand: Vector2 = rig.hand_position()
 	var position_control: bool = ConditionRig.is_position_control(rig.condition)
 	_stage.show_hand(rig.map.point_of_hand(hand), position_control)
-	if hand.distance_to(target) <= config.centre_tolerance() and rig.is_settled():
+	if hand.distance_to(target) <= config.number("centre_tolerance") and rig.is_settled():
 		_centre_held += delta
 	else:
 		_centre_held = 0.0

@@ -58,13 +58,13 @@ func begin_trial() -> void:
 		_runner.store, condition, level.level_id, index, rig.map, stiffness
 	)
 	_recorder.decimation = config.telemetry_decimation()
-	_recorder.flush_s = config.telemetry_flush_s()
-	_recorder.contact_gap_s = config.contact_gap_s()
+	_recorder.flush_s = config.number("telemetry_flush_s")
+	_recorder.contact_gap_s = config.number("contact_gap_s")
 	rig.go()
 	if not _recorder.begin(rig.avatar_position()):
 		_runner.fatal(_recorder.error)
 		return
-	_runner.pilot = StudyPilot.new(level.get_autopilot_path(), config.autopilot_speed())
+	_runner.pilot = StudyPilot.new(level.get_autopilot_path(), config.number("autopilot_speed"))
 	_runner.pilot.hold_s = _runner.scripted_hold_s
 	_ticks = 0
 	_runner.get_stage().hide_card()
@@ -81,7 +81,7 @@ func tick(delta: float) -> void:
 	if not _recorder.tick(rig.avatar_position(), delta):
 		_runner.fatal(_recorder.error)
 		return
-	if _ticks * delta >= _runner.config.trial_timeout_s():
+	if _ticks * delta >= _runner.config.number("trial_timeout_s"):
 		end_trial(false)
 
 
