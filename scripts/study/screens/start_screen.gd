@@ -1,8 +1,8 @@
 class_name StartScreen
 extends Control
 ## The study's first screen, for the researcher and the participant: participant id,
-## demographics (the value lists of FORMAT.md), the consent text (editable by the
-## researcher, see [StudyRunner]), and the researcher's options for this session. Start
+## demographics (the value lists of the study schema), the consent text (editable by the
+## researcher, see [StudyLaunch]), and the researcher's options for this session. Start
 ## begins a new participant; Resume continues one whose session was interrupted. The screen
 ## checks its own fields; the runner checks the data folder and answers with
 ## [method show_problem] when it refuses.
