@@ -31,8 +31,8 @@ const CHOICES: Dictionary = {
 }
 
 ## The numeric settings that are whole numbers ([code]TYPE_INT[/code]) or bounded, by path:
-## [code][type, lowest, highest][/code], the bounds optional. Any other number may be any
-## number. The telemetry must keep at least the format's minimum rate.
+## [code][type, lowest, highest][/code], the bounds optional; a number not listed may be
+## fractional and is unbounded. The telemetry keeps at least the format's minimum rate.
 static var numbers: Dictionary = {
 	"trials_per_condition": [TYPE_INT, 1, 50],
 	"seed": [TYPE_INT],
