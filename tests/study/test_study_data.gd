@@ -7,30 +7,35 @@ const Support := preload("res://tests/study/study_test_support.gd")
 
 ## Every study script, compiled with the project's warnings raised to errors.
 const STUDY_SCRIPTS: PackedStringArray = [
-	"res://scripts/study/centre_gauge.gd",
-	"res://scripts/study/condition_order.gd",
-	"res://scripts/study/condition_rig.gd",
-	"res://scripts/study/final_screen.gd",
-	"res://scripts/study/maze_map.gd",
-	"res://scripts/study/maze_walls.gd",
-	"res://scripts/study/message_screen.gd",
-	"res://scripts/study/participant_state.gd",
-	"res://scripts/study/rating_screen.gd",
-	"res://scripts/study/scripted_participant.gd",
-	"res://scripts/study/start_screen.gd",
-	"res://scripts/study/study_config.gd",
-	"res://scripts/study/study_format.gd",
-	"res://scripts/study/study_goal.gd",
-	"res://scripts/study/study_level.gd",
-	"res://scripts/study/study_pilot.gd",
-	"res://scripts/study/study_probe.gd",
-	"res://scripts/study/study_runner.gd",
-	"res://scripts/study/study_stage.gd",
-	"res://scripts/study/study_store.gd",
-	"res://scripts/study/study_theme.gd",
-	"res://scripts/study/trial_recorder.gd",
-	"res://scripts/study/trial_result.gd",
-	"res://scripts/study/wall_segments.gd",
+	"res://scripts/study/data/participant_state.gd",
+	"res://scripts/study/data/study_config.gd",
+	"res://scripts/study/data/study_format.gd",
+	"res://scripts/study/data/study_store.gd",
+	"res://scripts/study/levels/maze_walls.gd",
+	"res://scripts/study/levels/study_goal.gd",
+	"res://scripts/study/levels/study_level.gd",
+	"res://scripts/study/levels/wall_segments.gd",
+	"res://scripts/study/screens/centre_gauge.gd",
+	"res://scripts/study/screens/final_screen.gd",
+	"res://scripts/study/screens/message_screen.gd",
+	"res://scripts/study/screens/rating_screen.gd",
+	"res://scripts/study/screens/start_screen.gd",
+	"res://scripts/study/screens/study_stage.gd",
+	"res://scripts/study/screens/study_theme.gd",
+	"res://scripts/study/session/answer_flow.gd",
+	"res://scripts/study/session/condition_order.gd",
+	"res://scripts/study/session/scripted_participant.gd",
+	"res://scripts/study/session/session_start.gd",
+	"res://scripts/study/session/study_launch.gd",
+	"res://scripts/study/session/study_runner.gd",
+	"res://scripts/study/trials/condition_rig.gd",
+	"res://scripts/study/trials/maze_map.gd",
+	"res://scripts/study/trials/practice_flow.gd",
+	"res://scripts/study/trials/study_pilot.gd",
+	"res://scripts/study/trials/study_probe.gd",
+	"res://scripts/study/trials/trial_flow.gd",
+	"res://scripts/study/trials/trial_recorder.gd",
+	"res://scripts/study/trials/trial_result.gd",
 	"res://tests/study/study_test_support.gd",
 	"res://tests/study/tour/study_tour.gd",
 ]
@@ -76,7 +81,7 @@ func test_the_criteria_have_the_papers_wording() -> void:
 		"enthusiasm": ["Enthusiasm", "How much did you enjoy this method?"],
 		"partiality": ["Partiality", "How much do you prefer this method?"],
 	}
-	assert_eq(StudyFormat.CRITERIA, PackedStringArray(expected.keys()))
+	assert_eq(StudyFormat.criteria, PackedStringArray(expected.keys()))
 	for criterion: String in expected:
 		var text: Array = expected[criterion]
 		assert_eq(StudyFormat.criterion_title(criterion), text[0])
@@ -185,7 +190,7 @@ func test_the_store_writes_each_header_once_and_never_overwrites() -> void:
 	assert_true(store.append_rating("movement", 1, _ratings(7)), store.last_error)
 	var lines: PackedStringArray = Support.lines_of(store.path_of("ratings.csv"))
 	assert_eq(lines.size(), 3, "header + two records")
-	assert_eq(lines[0], ",".join(StudyFormat.RATINGS_COLUMNS))
+	assert_eq(lines[0], ",".join(StudyFormat.ratings_columns))
 	assert_true(lines[1].begins_with("P01,none,0,5,5,5,5,5,5,"))
 	assert_false(store.append_rating("constraint", 2, _ratings(11)), "out of range is refused")
 	assert_eq(Support.lines_of(store.path_of("ratings.csv")).size(), 3, "and nothing written")
@@ -267,7 +272,7 @@ func test_a_truncated_or_corrupt_file_is_reported() -> void:
 	assert_has("\n".join(state.problems), "P05/ratings.csv:3: truncated record")
 	# A record with a bad value is a problem too, with its line.
 	var trials: String = StudyStore.native_path(store.path_of("trials.csv"))
-	var header: String = ",".join(StudyFormat.TRIALS_COLUMNS) + "\n"
+	var header: String = ",".join(StudyFormat.trials_columns) + "\n"
 	durable.call(&"append", trials, header + "P05,none,maze,0,-1,1,0,0,0,0,0,,x\n")
 	state = ParticipantState.scan(_root, "P05")
 	var text: String = "\n".join(state.problems)
@@ -335,7 +340,7 @@ func test_the_maze_map_matches_the_disc_mapping() -> void:
 
 func _ratings(value: int) -> Dictionary:
 	var out: Dictionary = {}
-	for criterion: String in StudyFormat.CRITERIA:
+	for criterion: String in StudyFormat.criteria:
 		out[criterion] = value
 	return out
 

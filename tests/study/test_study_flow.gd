@@ -82,7 +82,7 @@ func test_a_truncated_ratings_file_is_reported_at_resume() -> void:
 	trial.telemetry_file = "telemetry/movement_0.csv"
 	assert_true(store.append_trial(trial))
 	var ratings: Dictionary = {}
-	for criterion: String in StudyFormat.CRITERIA:
+	for criterion: String in StudyFormat.criteria:
 		ratings[criterion] = 6
 	assert_true(store.append_rating("movement", 0, ratings))
 	var durable: RefCounted = ClassDB.instantiate(&"DurableFile")
@@ -206,14 +206,14 @@ func _study(id: String, resume: bool = false) -> StudyRunner:
 
 func _check_ratings(folder: String, order: PackedStringArray) -> void:
 	var path: String = folder.path_join("ratings.csv")
-	assert_eq(Support.lines_of(path)[0], ",".join(StudyFormat.RATINGS_COLUMNS))
+	assert_eq(Support.lines_of(path)[0], ",".join(StudyFormat.ratings_columns))
 	var records: Array[Dictionary] = Support.records_of(path)
 	assert_eq(records.size(), 3, "one rating record per condition")
 	for i: int in records.size():
 		var record: Dictionary = records[i]
 		assert_eq(record["condition"], order[i], "rated in the order presented")
 		assert_eq(record["order_index"], str(i))
-		for criterion: String in StudyFormat.CRITERIA:
+		for criterion: String in StudyFormat.criteria:
 			var value: String = record[criterion]
 			assert_true(StudyFormat.is_integer(value) and value.to_int() in range(1, 11), value)
 		assert_true(StudyFormat.is_timestamp(str(record["timestamp"])))
@@ -221,7 +221,7 @@ func _check_ratings(folder: String, order: PackedStringArray) -> void:
 
 func _check_trials(folder: String, order: PackedStringArray, recorded: Array[TrialResult]) -> void:
 	var path: String = folder.path_join("trials.csv")
-	assert_eq(Support.lines_of(path)[0], ",".join(StudyFormat.TRIALS_COLUMNS))
+	assert_eq(Support.lines_of(path)[0], ",".join(StudyFormat.trials_columns))
 	var records: Array[Dictionary] = Support.records_of(path)
 	assert_eq(records.size(), 3, "one maze trial per condition")
 	assert_eq(recorded.size(), 3, "trial_recorded for each")
@@ -241,7 +241,7 @@ func _check_trials(folder: String, order: PackedStringArray, recorded: Array[Tri
 		var telemetry: String = record["telemetry_file"]
 		assert_eq(telemetry, "telemetry/%s_0.csv" % condition)
 		var rows: PackedStringArray = Support.lines_of(folder.path_join(telemetry))
-		assert_eq(rows[0], ",".join(StudyFormat.TELEMETRY_COLUMNS))
+		assert_eq(rows[0], ",".join(StudyFormat.telemetry_columns))
 		var seconds: float = str(record["time_to_goal_s"]).to_float()
 		assert_gt(rows.size(), seconds * 250.0, "%s: at least 250 Hz" % telemetry)
 		assert_eq(rows[rows.size() - 1].split(",").size(), 8)

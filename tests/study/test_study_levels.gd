@@ -77,7 +77,9 @@ func test_the_scripted_hand_solves_the_real_maze_in_both_control_schemes() -> vo
 			func() -> bool: return Haptics.get_device_position().distance_to(start) < 0.03, 3.0
 		)
 		rig.go()
-		var pilot: StudyPilot = StudyPilot.new(level.get_autopilot_path(), config.autopilot_speed())
+		var pilot: StudyPilot = StudyPilot.new(
+			level.get_autopilot_path(), config.number("autopilot_speed")
+		)
 		var began: int = Time.get_ticks_msec()
 		var reached: bool = await wait_until(
 			func() -> bool:

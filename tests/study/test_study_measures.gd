@@ -130,7 +130,7 @@ func _push(condition: String, hand: Vector2, point: Vector2 = Vector2.ZERO) -> T
 func _telemetry(result: TrialResult) -> Array[Dictionary]:
 	var path: String = _root.path_join("M01").path_join(result.telemetry_file)
 	var lines: PackedStringArray = Support.lines_of(path)
-	assert_eq(lines[0], ",".join(StudyFormat.TELEMETRY_COLUMNS), "telemetry header")
+	assert_eq(lines[0], ",".join(StudyFormat.telemetry_columns), "telemetry header")
 	var rows: Array[Dictionary] = Support.records_of(path)
 	var previous: float = -1.0
 	for row: Dictionary in rows:

@@ -62,8 +62,8 @@ func test_ratings_need_all_six_answers() -> void:
 	screen.setup("Method 2 of 3")
 	assert_eq(screen.heading.text, "Method 2 of 3")
 	assert_true(screen.submit_button.disabled)
-	for i: int in StudyFormat.CRITERIA.size():
-		screen.set_rating(StudyFormat.CRITERIA[i], i + 3)
+	for i: int in StudyFormat.criteria.size():
+		screen.set_rating(StudyFormat.criteria[i], i + 3)
 		assert_eq(screen.submit_button.disabled, i < 5, "enabled only with all six")
 	screen.set_rating("realism", 10)
 	screen.submit_button.pressed.emit()

@@ -19,7 +19,8 @@ from statistics import fmean
 from pathlib import Path
 
 from analyze import EXIT_DATA, EXIT_OK, EXIT_USAGE, load_checked
-from studydata import CONDITIONS, CRITERIA, DEMOGRAPHICS, Participant
+from schema import CONDITIONS, CRITERIA, DEMOGRAPHICS
+from studydata import Participant
 
 TRIAL_AGGREGATES = ("time_to_goal_s", "wall_collisions", "contact_time_s", "path_length_px", "mean_force_n", "max_force_n")
 EXPORT_COLUMNS = (

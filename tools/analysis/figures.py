@@ -13,7 +13,7 @@ import numpy as np  # noqa: E402
 
 import stats  # noqa: E402
 from results import TRIAL_METRICS  # noqa: E402
-from studydata import CONDITION_LABELS, CONDITIONS, CRITERIA  # noqa: E402
+from schema import CONDITION_LABELS, CONDITIONS, CRITERIA  # noqa: E402
 
 DPI = 100
 FIG6_SIZE = (11.0, 5.5)  # inches -> 1100 x 550 px

@@ -6,7 +6,7 @@ import math
 
 from results import TRIAL_METRICS
 from stats import fmt_df, fmt_f, fmt_num, fmt_p
-from studydata import CONDITION_LABELS, CONDITIONS, CRITERIA, CRITERION_WORDING
+from schema import CONDITION_LABELS, CONDITIONS, CRITERIA, CRITERION_TITLES, CRITERION_WORDING, RATING_MAX, RATING_MIN
 
 L = CONDITION_LABELS
 
@@ -58,9 +58,9 @@ def render(res: dict, figures: dict[str, str]) -> str:
     rows += [[f"*counterbalancing: {mode}*", str(n)] for mode, n in res["counterbalancing"].items()]
     md += _table(["Condition order", "Participants"], rows)
 
-    md += ["## Ratings per criterion (Figure 6)", "", "Mean (SD) on the 1-10 scale.", ""]
+    md += ["## Ratings per criterion (Figure 6)", "", f"Mean (SD) on the {RATING_MIN}-{RATING_MAX} scale.", ""]
     header = ["Criterion"] + [f"{L[c]} (n = {res['ratings'][c]['n']})" for c in CONDITIONS]
-    rows = [[f"{k.capitalize()} ({CRITERION_WORDING[k]})"] + [_msd(res["ratings"][c]["criteria"][k]) for c in CONDITIONS]
+    rows = [[f"{CRITERION_TITLES[k]} ({CRITERION_WORDING[k]})"] + [_msd(res["ratings"][c]["criteria"][k]) for c in CONDITIONS]
             for k in CRITERIA]
     rows.append(["**Total** (mean of the six)"] + [_msd(res["ratings"][c]["total"]) for c in CONDITIONS])
     md += _table(header, rows)

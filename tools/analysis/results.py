@@ -9,7 +9,8 @@ import numpy as np
 import pandas as pd
 
 import stats
-from studydata import CONDITIONS, CRITERIA, DEMOGRAPHICS, RATINGS_COLUMNS, TRIALS_COLUMNS, Participant, Study
+from schema import CONDITIONS, CRITERIA, DEMOGRAPHICS, RATINGS_COLUMNS, TRIALS_COLUMNS
+from studydata import Participant, Study
 
 # (column, label, completed trials only)
 TRIAL_METRICS = (

@@ -11,7 +11,7 @@ import json
 import os
 from pathlib import Path
 
-from studydata import (
+from schema import (
     CONDITIONS,
     CRITERIA,
     FINAL_FILE,
@@ -20,9 +20,9 @@ from studydata import (
     RATINGS_COLUMNS,
     RATINGS_FILE,
     TELEMETRY_COLUMNS,
-    TELEMETRY_DIR,
     TRIALS_COLUMNS,
     TRIALS_FILE,
+    telemetry_name,
 )
 
 TIMESTAMP = "2025-05-01T10:00:00Z"
@@ -100,7 +100,7 @@ def append_trial(folder: Path, pid: str, condition: str, trial_index: int, *, le
                  max_force_n=1.2, telemetry: list | None = None, timestamp=TIMESTAMP) -> None:
     tel = ""
     if telemetry is not None:
-        tel = f"{TELEMETRY_DIR}/{condition}_{trial_index}.csv"
+        tel = telemetry_name(condition, trial_index)
         append_records(folder / tel, TELEMETRY_COLUMNS, telemetry)
     append_record(folder / TRIALS_FILE, TRIALS_COLUMNS,
                   [pid, condition, level, trial_index, time_to_goal_s, completed, wall_collisions, contact_time_s,

@@ -16,7 +16,7 @@ from pathlib import Path
 import numpy as np
 
 import studywriter as w
-from studydata import CONDITIONS, CRITERIA, DEMOGRAPHICS
+from schema import CONDITIONS, CRITERIA, DEMOGRAPHICS
 
 # Per condition: mean rating per criterion (roughly the paper's Figure 6 ordering).
 MEANS = {

@@ -64,7 +64,7 @@ func _tour() -> void:
 	study.autopilot = true
 	start.start_button.pressed.emit()
 	await _shot("practice_open", 1.5)
-	study.get_stage().next_method_pressed.emit()
+	study.get_stage().next_condition_pressed.emit()
 	await _shot("practice_open_constraint", 1.5)
 	study.get_stage().next_level_pressed.emit()
 	await _shot("practice_corridors", 1.5)
@@ -80,7 +80,7 @@ func _tour() -> void:
 		for criterion: String in ["realism", "ease", "aptness"]:
 			rating.set_rating(criterion, 7)
 		await _shot("rating_%d_partial" % i, 0.3)
-		for criterion: String in StudyFormat.CRITERIA:
+		for criterion: String in StudyFormat.criteria:
 			rating.set_rating(criterion, 3 + i * 3)
 		rating.submit_button.pressed.emit()
 		if i < 2:

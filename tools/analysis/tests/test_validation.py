@@ -9,6 +9,7 @@ from pathlib import Path
 import pytest
 
 import analyze
+import schema
 import studydata
 import studywriter as w
 from conftest import run_tool
@@ -177,7 +178,7 @@ def test_valid_variants_are_accepted(tmp_path, capsys):
     study = make_study(tmp_path / "study")
     p = study / "P03"
     (p / "ratings.csv").write_bytes((p / "ratings.csv").read_bytes().replace(b"\n", b"\r\n"))
-    (p / "trials.csv").write_text(",".join(studydata.TRIALS_COLUMNS) + "\n")
+    (p / "trials.csv").write_text(",".join(schema.TRIALS_COLUMNS) + "\n")
     (p / "telemetry").mkdir()
     (p / "telemetry" / "none_7.csv").write_text("time_s,inp")  # interrupted trial: ignored
     loaded = studydata.load_study(study)

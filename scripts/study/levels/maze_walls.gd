@@ -6,12 +6,10 @@ extends StaticBody2D
 ## so a maze is edited in one place (move a polygon's points in the editor and the picture
 ## follows). The constraint renderer gets the same outlines through [WallSegments].
 
-## Fill of the walls.
 @export var fill_color: Color = Color(0.2, 0.45, 0.55):
 	set(value):
 		fill_color = value
 		queue_redraw()
-## Outline of the walls.
 @export var edge_color: Color = Color(0.55, 0.85, 0.9):
 	set(value):
 		edge_color = value

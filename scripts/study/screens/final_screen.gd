@@ -8,12 +8,10 @@ extends Control
 ## [param differences_text] is the free text.
 signal submitted(favourite: PackedStringArray, differences_text: String)
 
-var _order: PackedStringArray = StudyFormat.CONDITIONS.duplicate()
+var _order: PackedStringArray = StudyFormat.conditions.duplicate()
 var _checks: Array[CheckBox] = []
 
-## The free text field.
 @onready var text_edit: TextEdit = %Differences
-## The finish button.
 @onready var submit_button: Button = %SubmitButton
 @onready var _choices: VBoxContainer = %Choices
 

@@ -20,7 +20,6 @@ extends Level
 	set(value):
 		bounds = value
 		queue_redraw()
-## Colour of the floor.
 @export var floor_color: Color = Color(0.05, 0.13, 0.2):
 	set(value):
 		floor_color = value
@@ -80,12 +79,6 @@ func reset_goal() -> void:
 	var goal: StudyGoal = get_goal()
 	if goal != null:
 		goal.reset()
-
-
-## Whether [param body] is one of this level's walls.
-func is_wall(body: Object) -> bool:
-	var walls: Node = get_node_or_null(^"Walls")
-	return body != null and walls != null and (body == walls or walls.is_ancestor_of(body as Node))
 
 
 func _draw() -> void:

@@ -48,17 +48,21 @@ static func native_path(path: String) -> String:
 
 
 ## Ids of the participant folders under [param study_root] that hold a participant.json,
-## sorted (the analysis' rules: not "analysis", not starting with "." or "_").
+## sorted (the analysis' rules: not a reserved folder, not starting with "." or "_").
 static func participant_ids(study_root: String) -> PackedStringArray:
 	var ids: PackedStringArray = PackedStringArray()
 	var dir: DirAccess = DirAccess.open(study_root)
 	if dir == null:
 		return ids
 	for entry: String in dir.get_directories():
-		if entry == "analysis" or entry.begins_with(".") or entry.begins_with("_"):
+		if (
+			entry in StudyFormat.reserved_folders
+			or entry.begins_with(".")
+			or entry.begins_with("_")
+		):
 			continue
 		if FileAccess.file_exists(
-			study_root.path_join(entry).path_join(StudyFormat.PARTICIPANT_FILE)
+			study_root.path_join(entry).path_join(StudyFormat.participant_file)
 		):
 			ids.append(entry)
 	ids.sort()
@@ -87,14 +91,14 @@ func has_data() -> bool:
 
 ## Creates the folder and writes participant.json from [param meta] (refused if it exists).
 func create(meta: Dictionary) -> bool:
-	if not _call_bool(&"make_dirs", [native_path(path_of(StudyFormat.TELEMETRY_DIR))]):
+	if not _call_bool(&"make_dirs", [native_path(path_of(StudyFormat.telemetry_dir))]):
 		return _failed("cannot create the folder %s" % folder())
-	return _write_json(StudyFormat.PARTICIPANT_FILE, meta, false)
+	return _write_json(StudyFormat.participant_file, meta, false)
 
 
 ## Replaces participant.json with [param meta] (used once, to set [code]finished[/code]).
 func replace_participant(meta: Dictionary) -> bool:
-	return _write_json(StudyFormat.PARTICIPANT_FILE, meta, true)
+	return _write_json(StudyFormat.participant_file, meta, true)
 
 
 ## Writes final.json (refused if it exists).
@@ -105,20 +109,25 @@ func write_final(favourite: PackedStringArray, differences_text: String) -> bool
 		"differences_text": differences_text,
 		"timestamp": StudyFormat.timestamp(),
 	}
-	return _write_json(StudyFormat.FINAL_FILE, data, false)
+	return _write_json(StudyFormat.final_file, data, false)
 
 
-## Appends one ratings.csv record: [param ratings] maps each of [constant StudyFormat.CRITERIA]
+## Appends one ratings.csv record: [param ratings] maps each of [member StudyFormat.criteria]
 ## to an integer 1–10.
 func append_rating(condition: String, order_index: int, ratings: Dictionary) -> bool:
 	var fields: PackedStringArray = [participant_id, condition, str(order_index)]
-	for criterion: String in StudyFormat.CRITERIA:
+	for criterion: String in StudyFormat.criteria:
 		var value: int = ratings.get(criterion, 0)
-		if value < StudyFormat.RATING_MIN or value > StudyFormat.RATING_MAX:
-			return _failed("rating %s=%d is outside 1..10" % [criterion, value])
+		if value < StudyFormat.rating_min or value > StudyFormat.rating_max:
+			return _failed(
+				(
+					"rating %s=%d is outside %d..%d"
+					% [criterion, value, StudyFormat.rating_min, StudyFormat.rating_max]
+				)
+			)
 		fields.append(str(value))
 	fields.append(StudyFormat.timestamp())
-	return _append_record(StudyFormat.RATINGS_FILE, StudyFormat.RATINGS_COLUMNS, fields)
+	return _append_record(StudyFormat.ratings_file, StudyFormat.ratings_columns, fields)
 
 
 ## Appends one trials.csv record built from [param result] (a [TrialResult]).
@@ -138,7 +147,7 @@ func append_trial(result: TrialResult) -> bool:
 		result.telemetry_file,
 		StudyFormat.timestamp(),
 	]
-	return _append_record(StudyFormat.TRIALS_FILE, StudyFormat.TRIALS_COLUMNS, fields)
+	return _append_record(StudyFormat.trials_file, StudyFormat.trials_columns, fields)
 
 
 ## Appends [param text] (complete lines) to the telemetry file [param relative], writing the
@@ -146,7 +155,7 @@ func append_trial(result: TrialResult) -> bool:
 func append_telemetry(relative: String, text: String) -> bool:
 	var path: String = path_of(relative)
 	if not FileAccess.file_exists(path):
-		text = StudyFormat.csv_line(StudyFormat.TELEMETRY_COLUMNS) + text
+		text = StudyFormat.csv_line(StudyFormat.telemetry_columns) + text
 	if text.is_empty():
 		return true
 	if not _call_bool(&"append", [native_path(path), text]):

@@ -36,7 +36,6 @@ var problems: PackedStringArray = PackedStringArray()
 var notes: PackedStringArray = PackedStringArray()
 
 var _store: StudyStore = null
-var _row_lines: PackedInt32Array = PackedInt32Array()
 
 
 ## Reads and checks the folder of [param id] under [param study_root].
@@ -44,7 +43,7 @@ static func scan(study_root: String, id: String) -> ParticipantState:
 	var state: ParticipantState = ParticipantState.new()
 	state.participant_id = id
 	state._store = StudyStore.new(study_root, id)
-	for condition: String in StudyFormat.CONDITIONS:
+	for condition: String in StudyFormat.conditions:
 		state.trial_counts[condition] = 0
 		state.next_index[condition] = 0
 	state._scan()
@@ -56,16 +55,11 @@ func can_resume() -> bool:
 	return exists and problems.is_empty()
 
 
-## Trials still to run for the condition at [param order_index].
-func trials_left(order_index: int, trials_per_condition: int) -> int:
-	return maxi(0, trials_per_condition - trial_counts[condition_order[order_index]])
-
-
 ## What to do next: [enum Step] and, for TRIALS and RATING, the order index, as
 ## [code]{"step": Step, "order_index": int}[/code].
 func next_step(trials_per_condition: int) -> Dictionary:
 	var any_data: bool = not rated.is_empty()
-	for condition: String in StudyFormat.CONDITIONS:
+	for condition: String in StudyFormat.conditions:
 		any_data = any_data or next_index[condition] > 0
 	if not any_data:
 		return {"step": Step.PRACTICE, "order_index": 0}
@@ -118,7 +112,7 @@ func _problem(name: String, line: int, what: String) -> void:
 
 
 func _check_participant() -> void:
-	var name: String = StudyFormat.PARTICIPANT_FILE
+	var name: String = StudyFormat.participant_file
 	if not FileAccess.file_exists(_store.path_of(name)):
 		if _store.has_data():
 			_problem(name, 0, "missing (the folder holds data without it)")
@@ -131,8 +125,8 @@ func _check_participant() -> void:
 	var version: Variant = data.get("format_version", -1)
 	if not StudyFormat.is_integer(str(version)) and typeof(version) != TYPE_FLOAT:
 		version = -1
-	if str(version).to_int() != StudyFormat.FORMAT_VERSION:
-		_problem(name, 0, "'format_version' is not %d" % StudyFormat.FORMAT_VERSION)
+	if str(version).to_int() != StudyFormat.format_version:
+		_problem(name, 0, "'format_version' is not %d" % StudyFormat.format_version)
 	if str(data.get("participant_id", "")) != participant_id:
 		_problem(name, 0, "'participant_id' does not match the folder name")
 	var order: Array = []
@@ -140,25 +134,20 @@ func _check_participant() -> void:
 		order = data["condition_order"]
 	var sorted_order: Array = order.duplicate()
 	sorted_order.sort()
-	var expected: Array = Array(StudyFormat.CONDITIONS)
+	var expected: Array = Array(StudyFormat.conditions)
 	expected.sort()
 	if sorted_order != expected:
-		_problem(name, 0, "'condition_order' is not an ordering of none, movement, constraint")
+		var conditions: String = ", ".join(StudyFormat.conditions)
+		_problem(name, 0, "'condition_order' is not an ordering of %s" % conditions)
 	else:
 		for condition: Variant in order:
 			condition_order.append(str(condition))
-	var demographics: Variant = data.get("demographics")
-	if not demographics is Dictionary:
-		_problem(name, 0, "'demographics' is missing")
-	else:
-		var values: Dictionary = demographics
-		for key: String in StudyFormat.demographic_keys():
-			if not str(values.get(key, "")) in StudyFormat.demographic_values(key):
-				_problem(name, 0, "'demographics.%s' is missing or not an allowed value" % key)
+	_check_demographics(name, data.get("demographics"))
 	if typeof(data.get("seed")) != TYPE_FLOAT and typeof(data.get("seed")) != TYPE_INT:
 		_problem(name, 0, "'seed' is not an integer")
-	if not str(data.get("counterbalancing", "")) in StudyFormat.COUNTERBALANCING:
-		_problem(name, 0, "'counterbalancing' is not random or latin_square")
+	var modes: PackedStringArray = StudyFormat.counterbalancing_modes
+	if not str(data.get("counterbalancing", "")) in modes:
+		_problem(name, 0, "'counterbalancing' is not %s" % " or ".join(modes))
 	if not StudyFormat.is_timestamp(str(data.get("started", ""))):
 		_problem(name, 0, "'started' is not a timestamp")
 	var finished: Variant = data.get("finished", "missing")
@@ -166,63 +155,48 @@ func _check_participant() -> void:
 		_problem(name, 0, "'finished' is neither null nor a timestamp")
 
 
+func _check_demographics(name: String, demographics: Variant) -> void:
+	if not demographics is Dictionary:
+		_problem(name, 0, "'demographics' is missing")
+		return
+	var values: Dictionary = demographics
+	for key: String in StudyFormat.demographic_keys():
+		if not str(values.get(key, "")) in StudyFormat.demographic_values(key):
+			_problem(name, 0, "'demographics.%s' is missing or not an allowed value" % key)
+
+
 func _check_ratings() -> void:
-	var name: String = StudyFormat.RATINGS_FILE
-	var rows: Array[PackedStringArray] = _read_csv(name, StudyFormat.RATINGS_COLUMNS)
-	for i: int in rows.size():
-		var row: PackedStringArray = rows[i]
-		var line: int = _row_lines[i]
-		if not _row_common(name, line, row):
+	var name: String = StudyFormat.ratings_file
+	var rows: Dictionary[int, Dictionary] = _read_csv(name, StudyFormat.columns("ratings"))
+	for line: int in rows:
+		var row: Dictionary = rows[line]
+		if not _is_own(name, line, row):
 			continue
-		var condition: String = row[1]
+		var condition: String = row["condition"]
 		if rated.has(condition):
 			_problem(name, line, "condition '%s' is rated twice" % condition)
 			continue
-		if not row[2] in ["0", "1", "2"]:
-			_problem(name, line, "order_index '%s' is not 0, 1 or 2" % row[2])
-			continue
-		var order_index: int = row[2].to_int()
-		if condition_order.size() == 3 and condition_order[order_index] != condition:
+		var order_index: int = str(row["order_index"]).to_int()
+		if order_index < condition_order.size() and condition_order[order_index] != condition:
 			_problem(
 				name,
 				line,
 				"order_index %d is not '%s' in condition_order" % [order_index, condition]
 			)
 			continue
-		var ok: bool = true
-		for c: int in range(3, 9):
-			var value: String = row[c]
-			if not StudyFormat.is_integer(value) or value.to_int() < 1 or value.to_int() > 10:
-				_problem(
-					name,
-					line,
-					"%s '%s' is not an integer 1-10" % [StudyFormat.RATINGS_COLUMNS[c], value]
-				)
-				ok = false
-		if not StudyFormat.is_timestamp(row[9]):
-			_problem(name, line, "timestamp '%s' is not a timestamp" % row[9])
-			ok = false
-		if ok:
-			rated[condition] = order_index
+		rated[condition] = order_index
 
 
 func _check_trials() -> void:
-	var name: String = StudyFormat.TRIALS_FILE
-	var rows: Array[PackedStringArray] = _read_csv(name, StudyFormat.TRIALS_COLUMNS)
+	var name: String = StudyFormat.trials_file
+	var rows: Dictionary[int, Dictionary] = _read_csv(name, StudyFormat.columns("trials"))
 	var seen: Dictionary[String, int] = {}
-	for i: int in rows.size():
-		var row: PackedStringArray = rows[i]
-		var line: int = _row_lines[i]
-		if not _row_common(name, line, row):
+	for line: int in rows:
+		var row: Dictionary = rows[line]
+		if not _is_own(name, line, row):
 			continue
-		var condition: String = row[1]
-		if not StudyFormat.is_valid_level(row[2]):
-			_problem(name, line, "level '%s' is not a valid level id" % row[2])
-			continue
-		if not StudyFormat.is_integer(row[3]) or row[3].to_int() < 0:
-			_problem(name, line, "trial_index '%s' is not an integer >= 0" % row[3])
-			continue
-		var index: int = row[3].to_int()
+		var condition: String = row["condition"]
+		var index: int = str(row["trial_index"]).to_int()
 		var key: String = "%s_%d" % [condition, index]
 		if seen.has(key):
 			_problem(
@@ -230,81 +204,53 @@ func _check_trials() -> void:
 			)
 			continue
 		seen[key] = line
-		if not _trial_values_ok(name, line, row):
+		var telemetry: String = row["telemetry_file"]
+		if not telemetry.is_empty() and not _telemetry_ok(name, line, telemetry, condition, index):
 			continue
-		var telemetry: String = row[11]
-		if not telemetry.is_empty():
-			if telemetry != StudyFormat.telemetry_name(condition, index):
-				_problem(name, line, "telemetry_file '%s' is not the expected name" % telemetry)
-				continue
-			if not FileAccess.file_exists(_store.path_of(telemetry)):
-				_problem(name, line, "telemetry file '%s' does not exist" % telemetry)
-				continue
-			if _store.check_complete(telemetry) != 1:
-				_problem(
-					telemetry,
-					0,
-					"truncated or unreadable (referenced on trials.csv line %d)" % line
-				)
-				continue
 		trial_counts[condition] += 1
 		next_index[condition] = maxi(next_index[condition], index + 1)
 	_check_telemetry_files(seen)
 
 
-func _trial_values_ok(name: String, line: int, row: PackedStringArray) -> bool:
-	var ok: bool = true
-	for c: int in [4, 7, 8, 9, 10]:
-		if not StudyFormat.is_number(row[c]) or row[c].to_float() < 0.0:
-			_problem(
-				name, line, "%s '%s' is not a number >= 0" % [StudyFormat.TRIALS_COLUMNS[c], row[c]]
-			)
-			ok = false
-	if not row[5] in ["0", "1"]:
-		_problem(name, line, "completed '%s' is not 0 or 1" % row[5])
-		ok = false
-	if not StudyFormat.is_integer(row[6]) or row[6].to_int() < 0:
-		_problem(name, line, "wall_collisions '%s' is not an integer >= 0" % row[6])
-		ok = false
-	if not StudyFormat.is_timestamp(row[12]):
-		_problem(name, line, "timestamp '%s' is not a timestamp" % row[12])
-		ok = false
-	return ok
+# Whether the telemetry file a trials.csv record names is the trial's and complete.
+func _telemetry_ok(
+	name: String, line: int, telemetry: String, condition: String, index: int
+) -> bool:
+	if telemetry != StudyFormat.telemetry_name(condition, index):
+		_problem(name, line, "telemetry_file '%s' is not the expected name" % telemetry)
+		return false
+	if not FileAccess.file_exists(_store.path_of(telemetry)):
+		_problem(name, line, "telemetry file '%s' does not exist" % telemetry)
+		return false
+	if _store.check_complete(telemetry) != 1:
+		_problem(telemetry, 0, "truncated or unreadable (referenced on trials.csv line %d)" % line)
+		return false
+	return true
 
 
 # Telemetry files no record references: the trial a crash interrupted. Their indices are
 # used up, so the resumed trial never writes over one.
 func _check_telemetry_files(referenced: Dictionary[String, int]) -> void:
-	var dir: DirAccess = DirAccess.open(_store.path_of(StudyFormat.TELEMETRY_DIR))
+	var dir: DirAccess = DirAccess.open(_store.path_of(StudyFormat.telemetry_dir))
 	if dir == null:
 		return
 	for file: String in dir.get_files():
+		var rel: String = _rel(StudyFormat.telemetry_dir.path_join(file))
 		var stem: String = file.get_basename()
 		var condition: String = stem.get_slice("_", 0)
 		var index_text: String = stem.trim_prefix(condition + "_")
-		if file.get_extension() != "csv" or not condition in StudyFormat.CONDITIONS:
-			notes.append(
-				"%s: unexpected file, ignored" % _rel(StudyFormat.TELEMETRY_DIR + "/" + file)
-			)
-			continue
-		if not StudyFormat.is_integer(index_text):
-			notes.append(
-				"%s: unexpected file, ignored" % _rel(StudyFormat.TELEMETRY_DIR + "/" + file)
-			)
+		var known: bool = file.get_extension() == "csv" and condition in StudyFormat.conditions
+		if not known or not StudyFormat.is_integer(index_text):
+			notes.append("%s: unexpected file, ignored" % rel)
 			continue
 		var index: int = index_text.to_int()
 		next_index[condition] = maxi(next_index[condition], index + 1)
 		if not referenced.has(stem):
-			notes.append(
-				(
-					"%s: no trials.csv record (an interrupted trial): kept, not reused"
-					% _rel(StudyFormat.TELEMETRY_DIR + "/" + file)
-				)
-			)
+			notes.append("%s: no trials.csv record (an interrupted trial): kept, not reused" % rel)
 
 
 func _check_final() -> void:
-	var name: String = StudyFormat.FINAL_FILE
+	var name: String = StudyFormat.final_file
 	if not FileAccess.file_exists(_store.path_of(name)):
 		return
 	var data: Dictionary = _read_json(name)
@@ -318,7 +264,7 @@ func _check_final() -> void:
 	else:
 		var favourite: Array = data["favourite"]
 		for condition: Variant in favourite:
-			if not str(condition) in StudyFormat.CONDITIONS:
+			if not str(condition) in StudyFormat.conditions:
 				_problem(name, 0, "'favourite' holds an unknown condition")
 
 
@@ -327,71 +273,93 @@ func _check_leftovers() -> void:
 	if dir == null:
 		return
 	var known: PackedStringArray = [
-		StudyFormat.PARTICIPANT_FILE,
-		StudyFormat.TRIALS_FILE,
-		StudyFormat.RATINGS_FILE,
-		StudyFormat.FINAL_FILE,
+		StudyFormat.participant_file,
+		StudyFormat.trials_file,
+		StudyFormat.ratings_file,
+		StudyFormat.final_file,
 	]
 	for file: String in dir.get_files():
 		if not file in known:
 			notes.append("%s: unexpected file, ignored" % _rel(file))
 
 
-# Checks shared by both tables: column count, participant id, condition.
-func _row_common(name: String, line: int, row: PackedStringArray) -> bool:
-	if row[0] != participant_id:
-		_problem(name, line, "participant_id '%s' is not '%s'" % [row[0], participant_id])
-		return false
-	if not row[1] in StudyFormat.CONDITIONS:
-		_problem(name, line, "condition '%s' is unknown" % row[1])
-		return false
-	return true
+# Whether a record is this participant's (its fields are valid already).
+func _is_own(name: String, line: int, row: Dictionary) -> bool:
+	if row["participant_id"] == participant_id:
+		return true
+	_problem(
+		name, line, "participant_id '%s' is not '%s'" % [row["participant_id"], participant_id]
+	)
+	return false
 
 
-# The records of a CSV file (header checked and dropped), each with the right number of
-# fields, their line numbers in _row_lines; problems are reported. A missing file has none.
-func _read_csv(name: String, columns: PackedStringArray) -> Array[PackedStringArray]:
-	var rows: Array[PackedStringArray] = []
-	_row_lines.clear()
+# The valid records of a CSV file by line number, each a dictionary column → field (the
+# header is checked against [param columns]); every problem is reported. A missing file
+# has none.
+func _read_csv(name: String, columns: Array[Dictionary]) -> Dictionary[int, Dictionary]:
+	var rows: Dictionary[int, Dictionary] = {}
+	var records: Array[PackedStringArray] = _csv_records(name)
+	if records.is_empty():
+		return rows
+	var names: PackedStringArray = PackedStringArray()
+	for column: Dictionary in columns:
+		names.append(str(column["name"]))
+	if records[0] != names:
+		_problem(name, 1, "bad header: expected '%s'" % ",".join(names))
+		return rows
+	for i: int in range(1, records.size()):
+		var fields: PackedStringArray = records[i]
+		var line: int = i + 1
+		if fields.size() == 1 and fields[0].is_empty():
+			_problem(name, line, "empty line")
+		elif fields.size() != columns.size():
+			_problem(name, line, "expected %d columns, found %d" % [columns.size(), fields.size()])
+		else:
+			var row: Dictionary = {}
+			var ok: bool = true
+			for c: int in columns.size():
+				var problem: String = StudyFormat.field_problem(columns[c], fields[c])
+				if not problem.is_empty():
+					_problem(name, line, "%s '%s' %s" % [names[c], fields[c], problem])
+					ok = false
+				row[names[c]] = fields[c]
+			if ok:
+				rows[line] = row
+	return rows
+
+
+# The complete records of a CSV file (header first; [] when missing or unusable). A cut-off
+# last record and quotes (the format has none) are reported.
+func _csv_records(name: String) -> Array[PackedStringArray]:
+	var records: Array[PackedStringArray] = []
 	var path: String = _store.path_of(name)
 	if not FileAccess.file_exists(path):
-		return rows
+		return records
 	var complete: int = _store.check_complete(name)
-	var bytes: PackedByteArray = FileAccess.get_file_as_bytes(path)
-	if complete < 0 or (bytes.is_empty() and FileAccess.get_open_error() != OK):
+	var file: FileAccess = FileAccess.open(path, FileAccess.READ)
+	if complete < 0 or file == null:
 		_problem(name, 0, "cannot be read")
-		return rows
-	var text: String = bytes.get_string_from_utf8()
+		return records
+	var text: String = file.get_as_text()
 	if text.is_empty():
 		_problem(name, 1, "empty file (the header row is missing)")
-		return rows
-	var lines: PackedStringArray = text.split("\n")
-	var last: String = lines[lines.size() - 1]
-	lines.remove_at(lines.size() - 1)
-	if complete == 0 or not last.is_empty():
+		return records
+	if text.contains('"'):
+		_problem(name, text.left(text.find('"')).count("\n") + 1, 'holds a quote (")')
+		return records
+	file.seek(0)
+	while file.get_position() < file.get_length():
+		records.append(file.get_csv_line())
+	if complete == 0 or not text.ends_with("\n"):
+		var last_fields: PackedStringArray = records.pop_back()
+		var last: String = ",".join(last_fields)
 		var shown: String = last if last.length() <= 60 else last.left(57) + "..."
 		_problem(
 			name,
-			lines.size() + 1,
+			records.size() + 1,
 			"truncated record: the last line has no terminating newline ('%s')" % shown
 		)
-	if lines.is_empty():
-		return rows
-	if lines[0].trim_suffix("\r") != ",".join(columns):
-		_problem(name, 1, "bad header: expected '%s'" % ",".join(columns))
-		return rows
-	for i: int in range(1, lines.size()):
-		var line: String = lines[i].trim_suffix("\r")
-		if line.is_empty():
-			_problem(name, i + 1, "empty line")
-			continue
-		var fields: PackedStringArray = line.split(",")
-		if fields.size() != columns.size():
-			_problem(name, i + 1, "expected %d columns, found %d" % [columns.size(), fields.size()])
-			continue
-		rows.append(fields)
-		_row_lines.append(i + 1)
-	return rows
+	return records
 
 
 func _read_json(name: String) -> Dictionary:

@@ -6,11 +6,9 @@ extends Control
 ## The button was pressed.
 signal closed
 
-## The heading.
 @onready var heading: Label = %Heading
 ## The message (scrolls when long).
 @onready var body: Label = %Body
-## The button.
 @onready var button: Button = %Button
 @onready var _scroll: ScrollContainer = %Scroll
 

@@ -15,7 +15,8 @@ extends RefCounted
 ## proxy = device + F/k_c), force the rendered total. Lines are appended in chunks every
 ## [member flush_s] seconds and at the end, each chunk one durable write.
 
-## Telemetry column indices used (see [code]HapticsServer.get_telemetry_columns()[/code]).
+## Bit of a telemetry sample's [code]flags[/code] column: the avatar touches a wall
+## (acceleration control; see [code]HapticsServer.get_telemetry_columns()[/code]).
 const FLAG_CONTACT: int = 1
 ## Proxy held by a wall (position control).
 const FLAG_PROXY_CONTACT: int = 1 << 8
@@ -130,7 +131,6 @@ func finish(avatar: Vector2, time_s: float, completed: bool) -> bool:
 	result.path_length_px = _path
 	result.mean_force_n = _force_sum / _force_samples if _force_samples > 0 else 0.0
 	result.max_force_n = _max_force
-	result.samples_seen = _sample_count
 	return flush()
 
 
@@ -198,7 +198,6 @@ func _process_samples(samples: PackedFloat32Array, avatar: Vector2) -> void:
 					)
 				)
 			)
-			result.samples_written += 1
 		_sample_count += 1
 
 

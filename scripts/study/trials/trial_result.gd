@@ -24,7 +24,3 @@ var mean_force_n: float = 0.0
 var max_force_n: float = 0.0
 ## The telemetry file relative to the participant folder, or empty.
 var telemetry_file: String = ""
-## Servo samples seen (before decimation) and written to the telemetry file.
-var samples_seen: int = 0
-## See [member samples_seen].
-var samples_written: int = 0

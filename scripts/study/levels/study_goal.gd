@@ -13,7 +13,6 @@ signal reached
 	set(value):
 		radius = value
 		queue_redraw()
-## Colour of the pad.
 @export var color: Color = Color(0.99, 0.62, 0.3):
 	set(value):
 		color = value

@@ -1,21 +1,20 @@
 class_name RatingScreen
 extends Control
-## After each condition: the six criteria of the paper, each rated 1–10 with the paper's
-## wording. Submit is enabled once all six have a value. Keyboard: the arrow keys move
-## between the numbers, Enter/Space picks one; the mouse clicks them.
+## After each condition: the six criteria of the paper, each rated on the format's scale
+## (1–10) with the paper's wording. Submit is enabled once all six have a value. Keyboard:
+## the arrow keys move between the numbers, Enter/Space picks one; the mouse clicks them.
 
 ## The participant submitted; [param ratings] maps each of
-## [constant StudyFormat.CRITERIA] to an integer 1–10.
+## [member StudyFormat.criteria] to its rating.
 signal submitted(ratings: Dictionary)
 
-## The number buttons: criterion → ten buttons (values 1–10).
+## The number buttons: criterion → one button per rating, lowest first.
 var buttons: Dictionary[String, Array] = {}
 
 var _groups: Dictionary[String, ButtonGroup] = {}
 
 ## The heading ("Method 2 of 3").
 @onready var heading: Label = %Heading
-## The submit button.
 @onready var submit_button: Button = %SubmitButton
 @onready var _grid: GridContainer = %Grid
 @onready var _hint: Label = %Hint
@@ -23,11 +22,11 @@ var _groups: Dictionary[String, ButtonGroup] = {}
 
 func _ready() -> void:
 	StudyTheme.apply(self)
-	for criterion: String in StudyFormat.CRITERIA:
+	for criterion: String in StudyFormat.criteria:
 		_add_row(criterion)
 	submit_button.pressed.connect(_on_submit_pressed)
 	_refresh()
-	var first: Button = buttons[StudyFormat.CRITERIA[0]][0]
+	var first: Button = buttons[StudyFormat.criteria[0]][0]
 	UiFocus.grab_later(first)
 
 
@@ -40,14 +39,15 @@ func setup(text: String) -> void:
 	_refresh()
 
 
-## Picks [param value] (1–10) for [param criterion], as a click would.
+## Picks [param value] (clamped to the scale) for [param criterion], as a click would.
 func set_rating(criterion: String, value: int) -> void:
-	var button: Button = buttons[criterion][clampi(value, 1, 10) - 1]
+	var lowest: int = StudyFormat.rating_min
+	var button: Button = buttons[criterion][clampi(value, lowest, StudyFormat.rating_max) - lowest]
 	button.button_pressed = true
 	_refresh()
 
 
-## The values picked so far: criterion → 1–10 (missing when not yet rated).
+## The values picked so far: criterion → rating (missing when not yet rated).
 func get_ratings() -> Dictionary:
 	var out: Dictionary = {}
 	for criterion: String in _groups:
@@ -60,7 +60,7 @@ func get_ratings() -> Dictionary:
 
 ## Whether all six criteria have a value.
 func is_complete() -> bool:
-	return get_ratings().size() == StudyFormat.CRITERIA.size()
+	return get_ratings().size() == StudyFormat.criteria.size()
 
 
 func _add_row(criterion: String) -> void:
@@ -83,7 +83,7 @@ func _add_row(criterion: String) -> void:
 	var group: ButtonGroup = ButtonGroup.new()
 	_groups[criterion] = group
 	var row_buttons: Array[Button] = []
-	for value: int in range(StudyFormat.RATING_MIN, StudyFormat.RATING_MAX + 1):
+	for value: int in range(StudyFormat.rating_min, StudyFormat.rating_max + 1):
 		var button: Button = Button.new()
 		button.theme_type_variation = &"RatingButton"
 		button.text = str(value)
@@ -101,7 +101,7 @@ func _add_row(criterion: String) -> void:
 
 
 func _refresh() -> void:
-	var missing: int = StudyFormat.CRITERIA.size() - get_ratings().size()
+	var missing: int = StudyFormat.criteria.size() - get_ratings().size()
 	submit_button.disabled = missing > 0
 	if missing > 0:
 		_hint.text = "%d still to rate" % missing if missing > 1 else "1 still to rate"

@@ -26,7 +26,6 @@ const SETTLED_FORCE_N: float = 0.005
 var condition: String = ""
 ## Its settings ([method StudyConfig.condition]).
 var settings: Dictionary = {}
-## The level.
 var level: StudyLevel = null
 ## The level's avatar.
 var player: Player = null

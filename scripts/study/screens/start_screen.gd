@@ -1,8 +1,8 @@
 class_name StartScreen
 extends Control
 ## The study's first screen, for the researcher and the participant: participant id,
-## demographics (the value lists of FORMAT.md), the consent text (editable by the
-## researcher, see [StudyRunner]), and the researcher's options for this session. Start
+## demographics (the value lists of the study schema), the consent text (editable by the
+## researcher, see [StudyLaunch]), and the researcher's options for this session. Start
 ## begins a new participant; Resume continues one whose session was interrupted. The screen
 ## checks its own fields; the runner checks the data folder and answers with
 ## [method show_problem] when it refuses.
@@ -14,17 +14,23 @@ signal resume_requested(participant_id: String, options: Dictionary)
 ## Leave the study.
 signal back_requested
 
-## Counterbalancing choices, in the option button's order.
-const ORDER_MODES: PackedStringArray = ["random", "latin_square"]
-## Constraint proxy update choices, in the option button's order.
-const PROXY_UPDATES: PackedStringArray = ["servo", "frame"]
+## What the researcher's option buttons show for each value.
+const OPTION_LABELS: Dictionary = {
+	"random": "Random (recorded seed)",
+	"latin_square": "Latin square (Williams)",
+	"servo": "1 kHz (servo thread)",
+	"frame": "50 Hz (physics frames, as the paper)",
+}
+## The setting behind the constraint proxy update option.
+const PROXY_UPDATE_SETTING: String = "conditions.constraint.update"
 
 ## One option button per demographic field.
 var demographic_options: Dictionary[String, OptionButton] = {}
 
-## Participant id field.
+var _order_modes: PackedStringArray = StudyFormat.counterbalancing_modes
+var _proxy_updates: PackedStringArray = StudyConfig.choices(PROXY_UPDATE_SETTING)
+
 @onready var id_edit: LineEdit = %IdEdit
-## Consent check box.
 @onready var consent_check: CheckBox = %ConsentCheck
 ## Counterbalancing option.
 @onready var order_option: OptionButton = %OrderOption
@@ -32,11 +38,8 @@ var demographic_options: Dictionary[String, OptionButton] = {}
 @onready var proxy_option: OptionButton = %ProxyOption
 ## Trials per condition.
 @onready var trials_spin: SpinBox = %TrialsSpin
-## Start button.
 @onready var start_button: Button = %StartButton
-## Resume button.
 @onready var resume_button: Button = %ResumeButton
-## Back button.
 @onready var back_button: Button = %BackButton
 ## Where refusals and problems are shown.
 @onready var problem_label: Label = %Problem
@@ -50,12 +53,8 @@ func _ready() -> void:
 	StudyTheme.apply(self)
 	for key: String in StudyFormat.demographic_keys():
 		_add_demographic(key)
-	order_option.clear()
-	order_option.add_item("Random (recorded seed)")
-	order_option.add_item("Latin square (Williams)")
-	proxy_option.clear()
-	proxy_option.add_item("1 kHz (servo thread)")
-	proxy_option.add_item("50 Hz (physics frames, as the paper)")
+	_fill(order_option, _order_modes)
+	_fill(proxy_option, _proxy_updates)
 	start_button.pressed.connect(_on_start_pressed)
 	resume_button.pressed.connect(_on_resume_pressed)
 	back_button.pressed.connect(back_requested.emit)
@@ -75,19 +74,18 @@ func set_data_folder(path: String) -> void:
 	_data_label.text = "Data: %s" % path
 
 
-## Presets the researcher's options (values of [constant ORDER_MODES],
-## [constant PROXY_UPDATES]).
+## Presets the researcher's options.
 func set_options(counterbalancing: String, proxy_update: String, trials: int) -> void:
-	order_option.select(maxi(0, ORDER_MODES.find(counterbalancing)))
-	proxy_option.select(maxi(0, PROXY_UPDATES.find(proxy_update)))
+	order_option.select(maxi(0, _order_modes.find(counterbalancing)))
+	proxy_option.select(maxi(0, _proxy_updates.find(proxy_update)))
 	trials_spin.value = trials
 
 
 ## The researcher's options as chosen.
 func get_options() -> Dictionary:
 	return {
-		"counterbalancing": ORDER_MODES[maxi(0, order_option.selected)],
-		"constraint_update": PROXY_UPDATES[maxi(0, proxy_option.selected)],
+		"counterbalancing": _order_modes[maxi(0, order_option.selected)],
+		"constraint_update": _proxy_updates[maxi(0, proxy_option.selected)],
 		"trials_per_condition": int(trials_spin.value),
 	}
 
@@ -115,6 +113,12 @@ func get_demographics() -> Dictionary:
 func show_problem(text: String) -> void:
 	problem_label.text = text
 	problem_label.visible = not text.is_empty()
+
+
+static func _fill(option: OptionButton, values: PackedStringArray) -> void:
+	option.clear()
+	for value: String in values:
+		option.add_item(str(OPTION_LABELS.get(value, value)))
 
 
 func _add_demographic(key: String) -> void:

@@ -21,9 +21,9 @@ var demographics: Dictionary = {
 	"hand_used": "left",
 	"gaming_experience": "some",
 }
-## Seconds spent on each demonstration level / method before moving on.
+## Seconds spent on each demonstration level / condition before moving on.
 var practice_seconds: float = 0.4
-## Favourite methods by presentation position (0-based).
+## Favourite conditions by presentation position (0-based; "Method 1" is 0).
 var favourite: PackedInt32Array = PackedInt32Array([2])
 ## Free text entered at the end.
 var differences_text: String = "Scripted run: the methods felt different."
@@ -75,7 +75,7 @@ func _fill_start() -> void:
 	screen.start_button.pressed.emit()
 
 
-# Tries the next method, then the next level, then says ready, practice_seconds apart.
+# Tries the next condition, then the next level, then says ready, practice_seconds apart.
 func _practise() -> void:
 	_practice_steps = 0
 	_practice_left = practice_seconds
@@ -91,7 +91,7 @@ func _process(delta: float) -> void:
 	var stage: StudyStage = _runner.get_stage()
 	match _practice_steps:
 		0:
-			stage.next_method_pressed.emit()
+			stage.next_condition_pressed.emit()
 		1:
 			stage.next_level_pressed.emit()
 		_:
@@ -111,9 +111,9 @@ func _rate() -> void:
 	var screen: RatingScreen = _runner.get_screen() as RatingScreen
 	if screen == null:
 		return
-	for criterion: String in StudyFormat.CRITERIA:
+	for criterion: String in StudyFormat.criteria:
 		screen.set_rating(
-			criterion, _rng.randi_range(StudyFormat.RATING_MIN, StudyFormat.RATING_MAX)
+			criterion, _rng.randi_range(StudyFormat.rating_min, StudyFormat.rating_max)
 		)
 	screen.submit_button.pressed.emit()
 

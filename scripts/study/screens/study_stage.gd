@@ -10,8 +10,8 @@ extends Control
 signal start_pressed
 ## Practice: the participant asked for the next demonstration level.
 signal next_level_pressed
-## Practice: the participant asked for the next control method.
-signal next_method_pressed
+## Practice: the participant asked for the next condition (the Next method button).
+signal next_condition_pressed
 ## Practice: the participant is ready for the study.
 signal ready_pressed
 
@@ -42,8 +42,8 @@ var _hand_marker: HandMarker = null
 @onready var info_label: Label = %Info
 ## Practice: next demonstration level.
 @onready var next_level_button: Button = %NextLevelButton
-## Practice: next control method.
-@onready var next_method_button: Button = %NextMethodButton
+## Practice: next condition.
+@onready var next_condition_button: Button = %NextConditionButton
 ## Practice: ready for the study.
 @onready var ready_button: Button = %ReadyButton
 ## The card's button.
@@ -65,7 +65,7 @@ var _hand_marker: HandMarker = null
 func _ready() -> void:
 	start_button.pressed.connect(start_pressed.emit)
 	next_level_button.pressed.connect(next_level_pressed.emit)
-	next_method_button.pressed.connect(next_method_pressed.emit)
+	next_condition_button.pressed.connect(next_condition_pressed.emit)
 	ready_button.pressed.connect(ready_pressed.emit)
 	_viewport.size_changed.connect(fit_camera)
 	show_practice_controls(false)
@@ -145,7 +145,7 @@ func set_status(title: String, info: String) -> void:
 ## Shows or hides the practice buttons.
 func show_practice_controls(shown: bool) -> void:
 	next_level_button.visible = shown
-	next_method_button.visible = shown
+	next_condition_button.visible = shown
 	ready_button.visible = shown
 	if shown:
 		UiFocus.grab_later(ready_button)
@@ -169,11 +169,6 @@ func show_card(heading: String, body: String, button_text: String, with_gauge: b
 ## Hides the card.
 func hide_card() -> void:
 	_card.hide()
-
-
-## Whether the card is showing.
-func is_card_visible() -> bool:
-	return _card.visible
 
 
 ## Shows [param text] big for [param seconds].

@@ -2,7 +2,7 @@ class_name ConditionOrder
 extends RefCounted
 ## The order in which a participant meets the three conditions.
 ##
-## [b]random[/b]: a Fisher–Yates shuffle of [constant StudyFormat.CONDITIONS] driven by a
+## [b]random[/b]: a Fisher–Yates shuffle of [member StudyFormat.conditions] driven by a
 ## [RandomNumberGenerator] seeded with the participant's recorded seed, so the order can be
 ## recomputed from participant.json. [b]latin_square[/b]: the six orders of a Williams
 ## design for three conditions (every condition in every position, and every condition
@@ -10,7 +10,7 @@ extends RefCounted
 ## study folder (counting from 0) gets row n mod 6.
 
 ## The Williams design for three conditions (rows), as indices into
-## [constant StudyFormat.CONDITIONS].
+## [member StudyFormat.conditions].
 const LATIN_SQUARE: Array = [
 	[0, 1, 2],
 	[1, 2, 0],
@@ -25,7 +25,7 @@ const LATIN_SQUARE: Array = [
 static func random_order(order_seed: int) -> PackedStringArray:
 	var rng: RandomNumberGenerator = RandomNumberGenerator.new()
 	rng.seed = order_seed
-	var order: PackedStringArray = StudyFormat.CONDITIONS.duplicate()
+	var order: PackedStringArray = StudyFormat.conditions.duplicate()
 	for i: int in range(order.size() - 1, 0, -1):
 		var j: int = rng.randi_range(0, i)
 		var swap: String = order[i]
@@ -40,7 +40,7 @@ static func latin_square_order(participant_number: int) -> PackedStringArray:
 	var order: PackedStringArray = PackedStringArray()
 	for index: Variant in row:
 		var position: int = index
-		order.append(StudyFormat.CONDITIONS[position])
+		order.append(StudyFormat.conditions[position])
 	return order
 
 
