@@ -16,7 +16,7 @@ func before_each() -> void:
 
 
 func after_each() -> void:
-	Haptics.set_hand_target(Vector2.ZERO)
+	Haptics.device.set_hand_target(Vector2.ZERO)
 	Support.remove_tree(_root)
 
 
@@ -85,8 +85,8 @@ func test_a_truncated_ratings_file_is_reported_at_resume() -> void:
 	for criterion: String in StudyFormat.criteria:
 		ratings[criterion] = 6
 	assert_true(store.append_rating("movement", 0, ratings))
-	var durable: RefCounted = ClassDB.instantiate(&"DurableFile")
-	durable.call(&"append", StudyStore.native_path(store.path_of("ratings.csv")), "P03,none,1,7,7")
+	var durable: DurableFile = DurableFile.new()
+	durable.append(StudyStore.native_path(store.path_of("ratings.csv")), "P03,none,1,7,7")
 	var before: String = FileAccess.get_file_as_string(store.path_of("ratings.csv"))
 	expect_error("P03/ratings.csv:3: truncated record")
 	var study: StudyRunner = _study("P03", true)
@@ -184,7 +184,7 @@ func test_leaving_the_study_gives_back_the_haptics_settings() -> void:
 	assert_almost_eq(Haptics.force_scale, 0.7, 1e-6, "force scale given back")
 	assert_true(Haptics.hand_follows_input, "the mouse moves the hand again")
 	assert_true(Haptics.smoothing_enabled)
-	assert_eq(str(Haptics.server.call(&"get_render_mode")), "movement")
+	assert_eq(str(Haptics.get_render_mode()), "movement")
 	Haptics.force_scale = saved
 
 

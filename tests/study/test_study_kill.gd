@@ -24,7 +24,7 @@ func after_each() -> void:
 	if _pid > 0 and OS.is_process_running(_pid):
 		OS.kill(_pid)
 	_pid = -1
-	Haptics.set_hand_target(Vector2.ZERO)
+	Haptics.device.set_hand_target(Vector2.ZERO)
 	Support.remove_tree(_root)
 
 

@@ -72,9 +72,9 @@ func test_the_scripted_hand_solves_the_real_maze_in_both_control_schemes() -> vo
 		rig.piloted = true
 		assert_true(rig.setup(level, condition, config.condition(condition)))
 		var start: Vector2 = rig.start_hand()
-		Haptics.set_hand_target(start)
+		Haptics.device.set_hand_target(start)
 		await wait_until(
-			func() -> bool: return Haptics.get_device_position().distance_to(start) < 0.03, 3.0
+			func() -> bool: return Haptics.device.get_position().distance_to(start) < 0.03, 3.0
 		)
 		rig.go()
 		var pilot: StudyPilot = StudyPilot.new(
@@ -92,7 +92,7 @@ func test_the_scripted_hand_solves_the_real_maze_in_both_control_schemes() -> vo
 		rig.release()
 		level.queue_free()
 	ConditionRig.restore_haptics(saved)
-	Haptics.set_hand_target(Vector2.ZERO)
+	Haptics.device.set_hand_target(Vector2.ZERO)
 
 
 func _load(path: String) -> StudyLevel:

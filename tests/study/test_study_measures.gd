@@ -31,7 +31,7 @@ func before_each() -> void:
 func after_each() -> void:
 	_rig.release()
 	ConditionRig.restore_haptics(_saved)
-	Haptics.set_hand_target(Vector2.ZERO)
+	Haptics.device.set_hand_target(Vector2.ZERO)
 	Support.remove_tree(_root)
 
 
@@ -84,9 +84,9 @@ func test_constraint_stops_the_proxy_at_the_wall_and_pulls_the_device_back() -> 
 
 func test_the_fifty_hertz_proxy_variant_moves_only_on_frames() -> void:
 	_config.merge({"conditions": {"constraint": {"update": "frame"}}})
-	var before: Dictionary = Haptics.server.call(&"get_proxy_state")
+	var before: Dictionary = Haptics.get_proxy_state()
 	var result: TrialResult = await _push("constraint", Vector2.INF, Vector2(330.0, 180.0))
-	var state: Dictionary = Haptics.server.call(&"get_proxy_state")
+	var state: Dictionary = Haptics.get_proxy_state()
 	var updates: int = state.get("updates", 0)
 	var earlier: int = before.get("updates", 0)
 	var moved: int = updates - earlier if updates >= earlier else updates
@@ -102,10 +102,10 @@ func _push(condition: String, hand: Vector2, point: Vector2 = Vector2.ZERO) -> T
 	set_timeout(20.0)
 	var settings: Dictionary = _config.condition(condition)
 	assert_true(_rig.setup(_level, condition, settings), "the server takes the condition")
-	Haptics.set_hand_target(_rig.start_hand())
+	Haptics.device.set_hand_target(_rig.start_hand())
 	var start: Vector2 = _rig.start_hand()
 	var centred: bool = await wait_until(
-		func() -> bool: return Haptics.get_device_position().distance_to(start) < 0.03, 3.0
+		func() -> bool: return Haptics.device.get_position().distance_to(start) < 0.03, 3.0
 	)
 	assert_true(centred, "the simulated hand reaches the start")
 	var settled: bool = await wait_until(func() -> bool: return _rig.is_settled(), 3.0)
@@ -120,7 +120,7 @@ func _push(condition: String, hand: Vector2, point: Vector2 = Vector2.ZERO) -> T
 	assert_true(recorder.begin(_rig.avatar_position()), recorder.error)
 	var target: Vector2 = hand if hand != Vector2.INF else _rig.map.hand_of(point)
 	for i: int in PUSH_TICKS:
-		Haptics.set_hand_target(target)
+		Haptics.device.set_hand_target(target)
 		await get_tree().physics_frame
 		assert_true(recorder.tick(_rig.avatar_position(), 1.0 / Engine.physics_ticks_per_second))
 	assert_true(recorder.finish(_rig.avatar_position(), PUSH_TICKS / 50.0, false))

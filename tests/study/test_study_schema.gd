@@ -60,12 +60,12 @@ func test_the_resume_scan_reads_records_by_column_name() -> void:
 	var ratings: String = StudyStore.native_path(store.path_of("ratings.csv"))
 	var header: String = ",".join(StudyFormat.ratings_columns)
 	var record: String = "P07,none,0,5,6,7,8,9,10,2025-05-01T10:00:00Z"
-	var durable: RefCounted = ClassDB.instantiate(&"DurableFile")
-	durable.call(&"append", ratings, "%s\r\n%s\r\n" % [header, record])
+	var durable: DurableFile = DurableFile.new()
+	durable.append(ratings, "%s\r\n%s\r\n" % [header, record])
 	var state: ParticipantState = ParticipantState.scan(_root, "P07")
 	assert_eq(state.problems, PackedStringArray(), "CRLF line ends are tolerated")
 	assert_eq(state.rated.get("none", -1), 0, "rated in position 0")
-	durable.call(&"append", ratings, 'P07,"movement",1,5,5,5,5,5,5,2025-05-01T10:01:00Z\n')
+	durable.append(ratings, 'P07,"movement",1,5,5,5,5,5,5,2025-05-01T10:01:00Z\n')
 	state = ParticipantState.scan(_root, "P07")
 	assert_has("\n".join(state.problems), "P07/ratings.csv:3: holds a quote")
 

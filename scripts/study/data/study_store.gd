@@ -4,15 +4,12 @@ extends RefCounted
 ## (format: [code]tools/analysis/FORMAT.md[/code], constants in [StudyFormat]).
 ##
 ## Every record is appended in one write followed by fsync through the native
-## [code]DurableFile[/code] class: a crash or kill at any moment loses at most the trial in
-## progress. A CSV file is created with its header in the same write as its first record,
-## so a file never lacks its header. participant.json and final.json are written whole
-## (temporary file, fsync, rename); only participant.json is ever replaced, once, to set
-## [code]finished[/code]. Methods return [code]false[/code] on failure and leave the reason in
-## [member last_error] (the engine has printed the native error too).
-
-## The native class doing the durable writes.
-const DURABLE_CLASS: StringName = &"DurableFile"
+## [code]DurableFile[/code] class ([DurableWriter]): a crash or kill at any moment loses at
+## most the trial in progress. A CSV file is created with its header in the same write as
+## its first record, so a file never lacks its header. participant.json and final.json are
+## written whole (temporary file, fsync, rename); only participant.json is ever replaced,
+## once, to set [code]finished[/code]. Methods return [code]false[/code] on failure and
+## leave the reason in [member last_error] (the engine has printed the native error too).
 
 ## Study folder holding one folder per participant (user:// or an absolute path).
 var root: String = ""
@@ -21,25 +18,17 @@ var participant_id: String = ""
 ## Why the last write failed; empty after a success.
 var last_error: String = ""
 
-var _durable: RefCounted = null
+var _durable: DurableWriter = DurableWriter.new()
 
 
 func _init(p_root: String = "", p_participant_id: String = "") -> void:
 	root = p_root
 	participant_id = p_participant_id
-	if is_available():
-		_durable = ClassDB.instantiate(DURABLE_CLASS)
 
 
-## Whether the native durable writer is there (the haptics extension is loaded and new
-## enough). Without it the study must not start.
+## Whether the native durable writer is there. Without it the study must not start.
 static func is_available() -> bool:
-	if not ClassDB.class_exists(DURABLE_CLASS):
-		return false
-	for method: StringName in [&"append", &"write", &"make_dirs", &"check_complete"]:
-		if not ClassDB.class_has_method(DURABLE_CLASS, method):
-			return false
-	return true
+	return DurableWriter.is_available()
 
 
 ## The native path of [param path] (user:// and res:// are globalised; absolute paths stay).
@@ -91,7 +80,7 @@ func has_data() -> bool:
 
 ## Creates the folder and writes participant.json from [param meta] (refused if it exists).
 func create(meta: Dictionary) -> bool:
-	if not _call_bool(&"make_dirs", [native_path(path_of(StudyFormat.telemetry_dir))]):
+	if not _durable.make_dirs(native_path(path_of(StudyFormat.telemetry_dir))):
 		return _failed("cannot create the folder %s" % folder())
 	return _write_json(StudyFormat.participant_file, meta, false)
 
@@ -158,7 +147,7 @@ func append_telemetry(relative: String, text: String) -> bool:
 		text = StudyFormat.csv_line(StudyFormat.telemetry_columns) + text
 	if text.is_empty():
 		return true
-	if not _call_bool(&"append", [native_path(path), text]):
+	if not _durable.append(native_path(path), text):
 		return _failed("cannot append to %s" % path)
 	last_error = ""
 	return true
@@ -167,10 +156,7 @@ func append_telemetry(relative: String, text: String) -> bool:
 ## 1 when every line of [param relative] ends with a newline, 0 when the last record is
 ## cut short, -1 when it cannot be read.
 func check_complete(relative: String) -> int:
-	if _durable == null:
-		return -1
-	var result: int = _durable.call(&"check_complete", native_path(path_of(relative)))
-	return result
+	return _durable.check_complete(native_path(path_of(relative)))
 
 
 func _append_record(
@@ -185,7 +171,7 @@ func _append_record(
 	var text: String = StudyFormat.csv_line(fields)
 	if not FileAccess.file_exists(path):
 		text = StudyFormat.csv_line(columns) + text
-	if not _call_bool(&"append", [native_path(path), text]):
+	if not _durable.append(native_path(path), text):
 		return _failed("cannot append to %s" % path)
 	last_error = ""
 	return true
@@ -196,22 +182,15 @@ func _write_json(relative: String, data: Dictionary, replace: bool) -> bool:
 	if not replace and FileAccess.file_exists(path):
 		return _failed("%s exists and is never overwritten" % path)
 	var text: String = JSON.stringify(json_ready(data), "  ", false) + "\n"
-	if not _call_bool(&"write", [native_path(path), text, replace]):
+	if not _durable.write(native_path(path), text, replace):
 		return _failed("cannot write %s" % path)
 	last_error = ""
 	return true
 
 
-func _call_bool(method: StringName, args: Array) -> bool:
-	if _durable == null:
-		return false
-	var ok: bool = _durable.callv(method, args)
-	return ok
-
-
 func _failed(message: String) -> bool:
 	last_error = message
-	if _durable == null:
+	if not is_available():
 		last_error += " (the DurableFile class is missing: haptics extension not loaded)"
 	return false
 

@@ -107,11 +107,11 @@ func _continue(next: Dictionary, id: String) -> void:
 			else:
 				_runner.begin_condition(_runner.order_index)
 		ParticipantState.Step.RATING:
-			_runner.show_rating()
+			_runner.answers.show_rating()
 		ParticipantState.Step.FINAL:
-			_runner.show_final()
+			_runner.answers.show_final()
 		ParticipantState.Step.FINISH:
-			_runner.finish_session()
+			_runner.answers.finish_session()
 		ParticipantState.Step.DONE:
 			var screen: StartScreen = _runner.get_screen() as StartScreen
 			screen.show_problem("%s has finished the study: there is nothing to resume." % id)

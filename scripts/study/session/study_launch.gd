@@ -68,7 +68,7 @@ static func refusal(config: StudyConfig) -> String:
 				+ "saved safely. Build it with 'make build' and restart."
 			)
 		)
-	elif not Haptics.is_running():
+	elif not Haptics.servo.is_running():
 		lines.append("The haptic device is not running: check the device in Settings.")
 	return "\n".join(lines)
 

@@ -79,6 +79,8 @@ var last_result: TrialResult = null
 ## Puts the conditions into effect on the level shown.
 var rig: ConditionRig = null
 
+## The ratings, the final questions and the end of the session.
+var answers: AnswerFlow = AnswerFlow.new()
 var _screen: Control = null
 var _stage: StudyStage = null
 var _saved_haptics: Dictionary = {}
@@ -86,7 +88,6 @@ var _centre_held: float = 0.0
 var _session_start: SessionStart = SessionStart.new()
 var _practice: PracticeFlow = PracticeFlow.new()
 var _trials: TrialFlow = TrialFlow.new()
-var _answers: AnswerFlow = AnswerFlow.new()
 
 
 func _ready() -> void:
@@ -97,7 +98,7 @@ func _ready() -> void:
 		for property: String in arguments:
 			set(property, arguments[property])
 	config = StudyLaunch.load_config(config_path, study_root)
-	for flow: Node in [_session_start, _practice, _trials, _answers]:
+	for flow: Node in [_session_start, _practice, _trials, answers]:
 		add_child(flow)
 	_saved_haptics = ConditionRig.save_haptics()
 	rig = ConditionRig.new()
@@ -190,24 +191,9 @@ func start_practice() -> void:
 func begin_condition(index: int) -> void:
 	order_index = index
 	if trial_counts[current_condition()] >= config.trials_per_condition():
-		show_rating()
+		answers.show_rating()
 	else:
 		_trials.show_intro()
-
-
-## Asks for the six ratings of the current condition.
-func show_rating() -> void:
-	_answers.show_rating()
-
-
-## Asks for the differences felt and the favourite.
-func show_final() -> void:
-	_answers.show_final()
-
-
-## Marks the session finished and thanks the participant.
-func finish_session() -> void:
-	_answers.finish_session()
 
 
 ## The stage, shown if it is not showing yet.

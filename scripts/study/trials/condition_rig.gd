@@ -46,7 +46,6 @@ var piloted: bool = false:
 ## position control. Unset: the level's own idea of the mouse position.
 var pointer: Callable = Callable()
 
-var _server: RefCounted = null
 var _hand_point: Vector2 = Vector2.ZERO
 var _mouse_moved: bool = false
 var _last_proxy: Vector2 = Vector2.ZERO
@@ -54,8 +53,6 @@ var _last_proxy: Vector2 = Vector2.ZERO
 
 func _ready() -> void:
 	process_physics_priority = -10
-	if Haptics.is_available():
-		_server = Haptics.server
 
 
 ## The autoload's settings the study changes, to give back with [method restore_haptics].
@@ -67,8 +64,8 @@ static func save_haptics() -> Dictionary:
 		"hand_follows_input": Haptics.hand_follows_input,
 	}
 	if Haptics.is_available():
-		saved["render_mode"] = str(Haptics.server.call(&"get_render_mode"))
-		var config: Dictionary = Haptics.server.call(&"get_config")
+		saved["render_mode"] = Haptics.get_render_mode()
+		var config: Dictionary = Haptics.get_config()
 		saved["telemetry"] = config.get("telemetry", {})
 		saved["constraint"] = config.get("constraint", {})
 	return saved
@@ -86,9 +83,11 @@ static func restore_haptics(saved: Dictionary) -> void:
 	Haptics.control_mode = StringName(str(saved["control_mode"]))
 	Haptics.hand_follows_input = follows
 	if Haptics.is_available() and saved.has("render_mode"):
-		Haptics.server.call(&"set_render_mode", str(saved["render_mode"]))
-		Haptics.server.call(&"set_config", "telemetry", saved["telemetry"])
-		Haptics.server.call(&"set_config", "constraint", saved["constraint"])
+		var telemetry: Dictionary = saved["telemetry"]
+		var constraint: Dictionary = saved["constraint"]
+		Haptics.set_render_mode(StringName(str(saved["render_mode"])))
+		Haptics.configure("telemetry", telemetry)
+		Haptics.configure("constraint", constraint)
 
 
 ## Whether [param condition_name] is position control.
@@ -104,9 +103,8 @@ func setup(p_level: StudyLevel, p_condition: String, p_settings: Dictionary) -> 
 	condition = p_condition
 	settings = p_settings
 	var radius: float = 0.1
-	if _server != null:
-		var limits: Dictionary = _server.call(&"get_device_limits")
-		radius = limits.get("workspace_radius", 0.1)
+	if Haptics.is_available():
+		radius = Haptics.device.get_workspace_radius()
 	var half_extent: float = settings.get("half_extent", 0.0)
 	map = MazeMap.new(
 		level.get_bounds(), str(settings.get("workspace", "disc")), half_extent, radius
@@ -119,8 +117,8 @@ func setup(p_level: StudyLevel, p_condition: String, p_settings: Dictionary) -> 
 	Haptics.control_mode = Haptics.CONTROL_DEVICE
 	_hand_point = level.get_spawn_position()
 	var ok: bool = true
-	if _server != null:
-		ok = _server.call(&"set_config", "telemetry", {"enabled": true, "decimation": 1})
+	if Haptics.is_available():
+		ok = Haptics.configure("telemetry", {"enabled": true, "decimation": 1})
 		if is_position_control(condition):
 			ok = _send_constraint() and ok
 	hold()
@@ -131,7 +129,7 @@ func setup(p_level: StudyLevel, p_condition: String, p_settings: Dictionary) -> 
 ## so nothing lingers: the next condition starts from exactly zero).
 func hold() -> void:
 	is_live = false
-	_set_render_mode("movement")
+	Haptics.set_render_mode(&"movement")
 	Haptics.force_scale = 0.0
 	Haptics.smoothing_enabled = false
 	probe.heartbeat_only = true
@@ -150,7 +148,7 @@ func go() -> void:
 	Haptics.smoothing_enabled = smoothing
 	if is_position_control(condition):
 		Haptics.force_scale = 1.0
-		_set_render_mode("constraint")
+		Haptics.set_render_mode(&"constraint")
 		probe.heartbeat_only = true
 		probe.drive_input = false
 		player.set_physics_process(false)
@@ -159,7 +157,7 @@ func go() -> void:
 	else:
 		var force_scale: float = settings.get("force_scale", 1.0)
 		Haptics.force_scale = force_scale
-		_set_render_mode("movement")
+		Haptics.set_render_mode(&"movement")
 		probe.heartbeat_only = false
 		probe.drive_input = true
 		player.set_physics_process(true)
@@ -171,7 +169,7 @@ func go() -> void:
 ## renderer is back and the mouse moves the simulated hand again.
 func release() -> void:
 	is_live = false
-	_set_render_mode("movement")
+	Haptics.set_render_mode(&"movement")
 	if is_instance_valid(probe):
 		probe.queue_free()
 	probe = null
@@ -196,9 +194,9 @@ func avatar_position() -> Vector2:
 
 ## Proxy state from the server ({} outside position control or without the extension).
 func proxy_state() -> Dictionary:
-	if _server == null or not is_position_control(condition) or not is_live:
+	if not is_position_control(condition) or not is_live:
 		return {}
-	var state: Dictionary = _server.call(&"get_proxy_state")
+	var state: Dictionary = Haptics.get_proxy_state()
 	return state
 
 
@@ -220,12 +218,12 @@ func is_settled() -> bool:
 
 ## The device's current normalised position (game axes).
 func hand_position() -> Vector2:
-	return Haptics.get_device_position()
+	return Haptics.device.get_position()
 
 
 ## Moves the simulated hand to [param normalised] (the scripted participant).
 func set_hand(normalised: Vector2) -> void:
-	Haptics.set_hand_target(normalised)
+	Haptics.device.set_hand_target(normalised)
 
 
 func _process(delta: float) -> void:
@@ -263,7 +261,7 @@ func _follow_proxy(delta: float) -> void:
 # Position control with the simulated device: the mouse points into the maze, the arrow
 # keys push the hand; the real devices move by themselves.
 func _drive_simulated_hand(delta: float) -> void:
-	if piloted or not Haptics.is_simulated():
+	if piloted or not Haptics.device.is_simulated():
 		return
 	var keys: Vector2 = Input.get_vector(&"move_left", &"move_right", &"move_up", &"move_down")
 	if not keys.is_zero_approx():
@@ -274,11 +272,13 @@ func _drive_simulated_hand(delta: float) -> void:
 		_hand_point = point if point is Vector2 else level.get_global_mouse_position()
 	var area: Rect2 = map.bounds
 	_hand_point = _hand_point.clamp(area.position, area.end)
-	Haptics.set_hand_target(map.hand_of(_hand_point))
+	Haptics.device.set_hand_target(map.hand_of(_hand_point))
 
 
 func _update_hand_following() -> void:
-	var own_hand: bool = piloted or (is_position_control(condition) and Haptics.is_simulated())
+	var own_hand: bool = (
+		piloted or (is_position_control(condition) and Haptics.device.is_simulated())
+	)
 	Haptics.hand_follows_input = not own_hand
 
 
@@ -286,17 +286,12 @@ func _send_constraint() -> bool:
 	var stiffness: float = settings.get("stiffness", 300.0)
 	var iterations: int = settings.get("max_iterations", 6)
 	var constraint: Dictionary = {
-		"stiffness": stiffness,
+		"stiffness_n_per_m": stiffness,
 		"proxy_radius": Player.RADIUS,
 		"update": str(settings.get("update", "servo")),
 		"max_iterations": iterations,
 	}
-	var ok: bool = _server.call(&"set_config", "constraint", constraint)
+	var ok: bool = Haptics.configure("constraint", constraint)
 	var segments: PackedVector2Array = level.get_wall_segments()
-	var sent: bool = _server.call(&"set_constraint_geometry", segments, map.to_dictionary())
+	var sent: bool = Haptics.set_constraint_geometry(segments, map.to_dictionary())
 	return ok and sent
-
-
-func _set_render_mode(mode: String) -> void:
-	if _server != null and str(_server.call(&"get_render_mode")) != mode:
-		_server.call(&"set_render_mode", mode)

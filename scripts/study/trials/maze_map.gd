@@ -7,7 +7,7 @@ extends RefCounted
 ## the maze rectangle fits the workspace shape (disc: its diagonal spans the diameter;
 ## square: its longer side does), the maze centre on the workspace centre.
 ## [br][br]
-## "Hand" positions are normalised like [code]Haptics.set_hand_target[/code]'s: metres over
+## "Hand" positions are normalised like [code]Haptics.device.set_hand_target[/code]'s: metres over
 ## the device's workspace radius, game axes (x right, y down).
 
 ## The maze rectangle, maze units.
@@ -38,7 +38,7 @@ func to_dictionary() -> Dictionary:
 		"maze_min": bounds.position,
 		"maze_max": bounds.end,
 		"workspace": workspace,
-		"half_extent": half_extent_m,
+		"half_extent_m": half_extent_m,
 	}
 
 

@@ -26,7 +26,7 @@ func configure(settings: Dictionary) -> void:
 	var impact_gain: float = settings.get("impact_gain", 0.5)
 	var material: HapticMaterial = HapticMaterial.new()
 	material.stiffness = stiffness if _on(forces, "normal") else 0.0
-	material.damping = friction if _on(forces, "friction") else 0.0
+	material.friction = friction if _on(forces, "friction") else 0.0
 	material.impact_gain = impact_gain if _on(forces, "impact") else 0.0
 	default_material = material
 	weight_enabled = _on(forces, "weight")

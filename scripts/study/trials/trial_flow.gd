@@ -115,7 +115,7 @@ func _after_trial(condition: String) -> void:
 	if _runner.trial_counts[condition] < _runner.config.trials_per_condition():
 		show_intro()
 	else:
-		_runner.show_rating()
+		_runner.answers.show_rating()
 
 
 func _maze_scene() -> PackedScene:

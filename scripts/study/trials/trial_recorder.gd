@@ -15,12 +15,6 @@ extends RefCounted
 ## proxy = device + F/k_c), force the rendered total. Lines are appended in chunks every
 ## [member flush_s] seconds and at the end, each chunk one durable write.
 
-## Bit of a telemetry sample's [code]flags[/code] column: the avatar touches a wall
-## (acceleration control; see [code]HapticsServer.get_telemetry_columns()[/code]).
-const FLAG_CONTACT: int = 1
-## Proxy held by a wall (position control).
-const FLAG_PROXY_CONTACT: int = 1 << 8
-
 ## The trial's measures, filled by [method finish].
 var result: TrialResult = null
 ## Keep every n-th servo sample in the file.
@@ -33,11 +27,13 @@ var contact_gap_s: float = 0.04
 var error: String = ""
 
 var _store: StudyStore = null
-var _server: RefCounted = null
 var _map: MazeMap = null
 var _position_control: bool = false
 var _stiffness: float = 0.0
-var _stride: int = 32
+var _stride: int = 0
+# The flags column's bit that says "touching a wall": the frame's contact (acceleration
+# control) or the proxy held by a wall (position control).
+var _contact_flag: int = 0
 var _col: Dictionary[String, int] = {}
 var _lines: PackedStringArray = PackedStringArray()
 var _since_flush: float = 0.0
@@ -73,12 +69,14 @@ func _init(
 	result.level = level_id
 	result.trial_index = trial_index
 	result.telemetry_file = StudyFormat.telemetry_name(condition, trial_index)
-	if Haptics.is_available():
-		_server = Haptics.server
-		_stride = _server.call(&"get_telemetry_stride")
-		var names: Array = _server.call(&"get_telemetry_columns")
-		for i: int in names.size():
-			_col[str(names[i])] = i
+	var flag: StringName = (
+		&"TELEMETRY_FLAG_PROXY_CONTACT" if _position_control else &"TELEMETRY_FLAG_CONTACT"
+	)
+	_contact_flag = Haptics.get_constant(flag)
+	var names: PackedStringArray = Haptics.servo.get_telemetry_columns()
+	_stride = names.size()
+	for i: int in names.size():
+		_col[names[i]] = i
 
 
 ## Starts the trial: discards older telemetry and creates the file with its header.
@@ -135,10 +133,7 @@ func finish(avatar: Vector2, time_s: float, completed: bool) -> bool:
 
 
 func _drain() -> PackedFloat32Array:
-	if _server == null:
-		return PackedFloat32Array()
-	var samples: PackedFloat32Array = _server.call(&"drain_telemetry", 4096)
-	return samples
+	return Haptics.servo.drain_telemetry(Haptics.get_constant(&"TELEMETRY_QUEUE_CAPACITY"))
 
 
 func _drain_all() -> void:
@@ -152,7 +147,6 @@ func _process_samples(samples: PackedFloat32Array, avatar: Vector2) -> void:
 	if count == 0 or _col.is_empty():
 		return
 	var radius: float = maxf(_map.device_radius_m, 1e-9)
-	var contact_flag: int = FLAG_PROXY_CONTACT if _position_control else FLAG_CONTACT
 	for i: int in count:
 		var base: int = i * _stride
 		var t: float = samples[base + _col["t"]]
@@ -167,7 +161,7 @@ func _process_samples(samples: PackedFloat32Array, avatar: Vector2) -> void:
 			samples[base + _col["total_x"]], -samples[base + _col["total_y"]]
 		)
 		var flags: int = roundi(samples[base + _col["flags"]])
-		var in_contact: bool = (flags & contact_flag) != 0
+		var in_contact: bool = (flags & _contact_flag) != 0
 		var magnitude: float = force.length()
 		_force_sum += magnitude
 		_force_samples += 1
