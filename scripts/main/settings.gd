@@ -66,8 +66,13 @@ func _init() -> void:
 
 
 func _ready() -> void:
-	if not load_on_ready:
-		return
+	if load_on_ready:
+		reload()
+
+
+## Loads the settings (the defaults in a test run, see [method is_test_run]; else
+## [member path]) and applies them.
+func reload() -> void:
 	if is_test_run():
 		# Test scenes get the defaults, whatever the developer last chose in the game.
 		reset_to_defaults()

@@ -14,10 +14,7 @@ func after_each() -> void:
 	if FileAccess.file_exists(_path):
 		DirAccess.remove_absolute(_path)
 	# Every GameSettings shares the Haptics values: put the test defaults back.
-	var settings: GameSettings = get_node_or_null(^"/root/Settings") as GameSettings
-	if settings != null:
-		settings.reset_to_defaults()
-		settings.apply()
+	(get_node(^"/root/Settings") as GameSettings).reload()
 
 
 func test_the_autoload_is_registered_and_uses_the_documented_file() -> void:

@@ -26,10 +26,7 @@ func after_each() -> void:
 	if FileAccess.file_exists(_path):
 		DirAccess.remove_absolute(_path)
 	# Every GameSettings shares the Haptics values: put the test defaults back.
-	var settings: GameSettings = get_node_or_null(^"/root/Settings") as GameSettings
-	if settings != null:
-		settings.reset_to_defaults()
-		settings.apply()
+	(get_node(^"/root/Settings") as GameSettings).reload()
 
 
 func test_every_device_is_listed_and_known_haptic_ones_are_marked() -> void:
