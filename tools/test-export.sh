@@ -41,4 +41,26 @@ engine_noise="Attempt to disconnect a nonexistent connection from .*callable: ''
 if grep -E "^(ERROR|SCRIPT ERROR)" "$log" | grep -vE "$engine_noise"; then
   fail "errors were printed"
 fi
-echo "test-export: exported game ran headless, extension loaded, exit 0"
+# Files the game reads as plain files, not resources, must be in the pack too: the engine
+# opens the pack alone (from a folder without a project) and looks for each.
+check=$(mktemp -d)
+trap 'rm -rf "$check"' EXIT
+cat >"$check/pack_check.gd" <<'GD'
+extends SceneTree
+
+
+func _initialize() -> void:
+	var missing: PackedStringArray = []
+	for path: String in OS.get_cmdline_user_args():
+		if not FileAccess.file_exists(path):
+			missing.append(path)
+	print("pack check: " + (", ".join(missing) + " missing" if not missing.is_empty() else "ok"))
+	quit(1 if not missing.is_empty() else 0)
+GD
+pack=$(pwd)/.export/linux/haptic-game.pck
+godot_runner=$(pwd)/tools/godot
+(cd "$check" && "$godot_runner" --headless --main-pack "$pack" -s "$check/pack_check.gd" -- \
+  res://assets/study/consent.txt res://assets/study/study_schema.json \
+  res://assets/study/study_config.json >"$check/log" 2>&1) ||
+  { grep "pack check" "$check/log"; fail "the pack lacks files the game reads"; }
+echo "test-export: exported game ran headless, extension loaded, study files packed, exit 0"

@@ -22,8 +22,6 @@ extends RefCounted
 const DEFAULT_PATH: String = "res://assets/study/study_config.json"
 ## Name of the researcher's settings file inside the study root.
 const ROOT_FILE: String = "study_config.json"
-## Servo rate, for the telemetry rate check (Hz).
-const SERVO_RATE_HZ: float = 1000.0
 ## Settings (by path) that take one of a few strings.
 const CHOICES: Dictionary = {
 	"conditions.constraint.update": ["servo", "frame"],
@@ -32,12 +30,12 @@ const CHOICES: Dictionary = {
 
 ## The numeric settings that are whole numbers ([code]TYPE_INT[/code]) or bounded, by path:
 ## [code][type, lowest, highest][/code], the bounds optional; a number not listed may be
-## fractional and is unbounded. The telemetry keeps at least the format's minimum rate.
+## fractional and is unbounded. The telemetry's decimation is also bounded by the servo's
+## default rate (the files keep the format's minimum rate).
 static var numbers: Dictionary = {
 	"trials_per_condition": [TYPE_INT, 1, 50],
 	"seed": [TYPE_INT],
-	"telemetry_decimation":
-	[TYPE_INT, 1, floori(SERVO_RATE_HZ / StudyFormat.telemetry_min_rate_hz)],
+	"telemetry_decimation": [TYPE_INT],
 	"trial_timeout_s": [TYPE_FLOAT, 1.0, 3600.0],
 	"telemetry_flush_s": [TYPE_FLOAT, 0.02, 10.0],
 	"contact_gap_s": [TYPE_FLOAT, 0.0, 1.0],
@@ -207,6 +205,10 @@ func _check_values(source: String) -> void:
 		var rule: Array = numbers[path]
 		if rule.size() == 3:
 			_check_range(source, path, _value(path), rule[1], rule[2])
+	# The telemetry keeps at least the format's minimum rate at the servo's default rate.
+	var servo_rate_hz: float = Haptics.get_constant(&"DEFAULT_RATE_HZ")
+	var decimation_max: int = maxi(1, floori(servo_rate_hz / StudyFormat.telemetry_min_rate_hz))
+	_check_range(source, "telemetry_decimation", _value("telemetry_decimation"), 1, decimation_max)
 	for path: String in CHOICES:
 		var allowed: PackedStringArray = choices(path)
 		if not str(_value(path)) in allowed:
