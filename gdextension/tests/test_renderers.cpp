@@ -22,7 +22,9 @@ Frame floor_frame() {
 
 RenderResult render_once(Renderer &r_renderer, const Frame &p_frame, const Vec3 &p_input) {
 	const DeviceState device;
-	return r_renderer.render(RenderInput{ device, p_input, p_frame, true, DT, 0.1 });
+	RenderResult result;
+	r_renderer.render(RenderInput{ device, p_input, p_frame, true, DT, 0.1 }, result);
+	return result;
 }
 
 } // namespace
@@ -47,6 +49,28 @@ TEST_CASE("movement renderer: the model's components, and the continuous sum smo
 	CHECK(result.forces.normal.y == doctest::Approx(1.0)); // Components stay raw...
 	CHECK(result.continuous.y > 0.0);
 	CHECK(result.continuous.y < 0.01); // ...the continuous force starts from rest.
+}
+
+TEST_CASE("movement renderer: writes every field it owns in place, over whatever was there") {
+	MovementRenderer renderer;
+	RenderConfig config;
+	config.smoothing.enabled = false;
+	renderer.begin_session(DT);
+	renderer.configure(config, DT);
+	RenderResult result;
+	result.forces.weight = { 5.0, 5.0, 5.0 };
+	result.forces.impact = { 7.0, 0.0, 0.0 }; // The pipeline's: left alone.
+	result.flags = 99;
+	Frame frame = floor_frame();
+	const DeviceState device;
+	renderer.render(RenderInput{ device, { 0.3, -0.5, 0.0 }, frame, true, DT, 0.1 }, result);
+	const ForceComponents fresh = compute_forces(frame, { 0.3, -0.5, 0.0 }, config.force_model);
+	CHECK(result.forces.normal == fresh.normal);
+	CHECK(result.forces.friction == fresh.friction);
+	CHECK(result.forces.weight == Vec3{});
+	CHECK(result.forces.continuous == fresh.continuous);
+	CHECK(result.forces.impact == Vec3{ 7.0, 0.0, 0.0 });
+	CHECK(result.flags == 0u);
 }
 
 TEST_CASE("movement renderer: a material change keeps the filter's motion, reset() does not") {
@@ -89,10 +113,13 @@ TEST_CASE("constraint renderer: takes the game's walls while inactive, and says 
 	CHECK_FALSE(output.proxy_placed); // Not the active renderer: no proxy to show.
 
 	DeviceState device;
-	RenderResult result = renderer.render(RenderInput{ device, {}, Frame{}, true, DT, 0.1 });
+	RenderResult result;
+	result.forces.weight = { 1.0, 2.0, 3.0 }; // Whatever was left there: every field is overwritten.
+	renderer.render(RenderInput{ device, {}, Frame{}, true, DT, 0.1 }, result);
+	CHECK(result.forces.weight == Vec3{});
 	CHECK(result.flags == TELEMETRY_FLAG_CONSTRAINT_MODE);
 	device.position_m = { 0.06, 0.0, 0.0 }; // Past the wall.
-	result = renderer.render(RenderInput{ device, {}, Frame{}, false, DT, 0.1 });
+	renderer.render(RenderInput{ device, {}, Frame{}, false, DT, 0.1 }, result);
 	CHECK(result.forces.normal.x < 0.0);
 	CHECK(result.continuous == result.forces.normal); // Never filtered.
 	CHECK(result.flags == (TELEMETRY_FLAG_CONSTRAINT_MODE | TELEMETRY_FLAG_PROXY_CONTACT));

@@ -80,18 +80,21 @@ void ConstraintRenderer::pick_up() {
 	geometry_.acquire(); // Also while inactive, so the game's pending walls are taken.
 }
 
-RenderResult ConstraintRenderer::render(const RenderInput &p_input) {
+void ConstraintRenderer::render(const RenderInput &p_input, RenderResult &r_result) {
 	const GeometryExchange::Current geometry = geometry_.current();
 	const bool step = update_ == ProxyUpdate::SERVO_RATE || p_input.new_frame;
 	last_ = solver_.render(geometry.geometry, geometry.generation, p_input.device.position_m, p_input.device_radius_m,
 			step);
 	updates_ += last_.stepped ? 1 : 0;
-	RenderResult result;
-	result.forces.normal = last_.force;
-	result.forces.continuous = last_.force;
-	result.continuous = last_.force; // Not filtered: see the header.
-	result.flags = TELEMETRY_FLAG_CONSTRAINT_MODE | (last_.active_constraints > 0 ? TELEMETRY_FLAG_PROXY_CONTACT : 0u);
-	return result;
+	ForceComponents &forces = r_result.forces;
+	forces.normal = last_.force;
+	forces.friction = Vec3{};
+	forces.weight = Vec3{};
+	forces.drag = Vec3{};
+	forces.inertia = Vec3{};
+	forces.continuous = last_.force;
+	r_result.continuous = last_.force; // Not filtered: see the header.
+	r_result.flags = TELEMETRY_FLAG_CONSTRAINT_MODE | (last_.active_constraints > 0 ? TELEMETRY_FLAG_PROXY_CONTACT : 0u);
 }
 
 void ConstraintRenderer::publish(ServoOutput &r_output, bool p_active) const {

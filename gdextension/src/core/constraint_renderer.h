@@ -73,7 +73,7 @@ public:
 	void configure(const RenderConfig &p_config, double p_dt_s) override;
 	void reset() override;
 	void pick_up() override;
-	RenderResult render(const RenderInput &p_input) override;
+	void render(const RenderInput &p_input, RenderResult &r_result) override;
 	void publish(ServoOutput &r_output, bool p_active) const override;
 
 private:

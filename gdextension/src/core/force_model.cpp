@@ -55,31 +55,40 @@ ContactResolution resolve_contacts(const Frame &p_frame, const ContactMaterial &
 
 ForceComponents compute_forces(const Frame &p_frame, const Vec3 &p_input, const ForceModelConfig &p_config) {
 	ForceComponents forces;
+	compute_forces(p_frame, p_input, p_config, forces);
+	return forces;
+}
 
+void compute_forces(const Frame &p_frame, const Vec3 &p_input, const ForceModelConfig &p_config,
+		ForceComponents &r_forces) {
+	r_forces.normal = Vec3{};
+	r_forces.friction = Vec3{};
 	const ContactResolution contact = resolve_contacts(p_frame, p_config.default_contact);
 	if (contact.active) {
 		const Vec3 &n = contact.normal;
 		const Vec3 projection = n * (dot(p_input, n) / length_squared(n));
 		const Vec3 rejection = p_input - projection;
-		forces.normal = projection * -contact.stiffness;
-		forces.friction = rejection * -contact.friction;
+		r_forces.normal = projection * -contact.stiffness;
+		r_forces.friction = rejection * -contact.friction;
 	}
 
+	r_forces.weight = Vec3{};
 	for (uint32_t j = 0; j < p_frame.resting_count; ++j) {
 		const RestingObject &object = p_frame.resting[j];
 		const double n_dot_d = dot(normalized_or_zero(object.normal), DEVICE_DOWN);
 		if (n_dot_d > 0.0) {
-			forces.weight += DEVICE_DOWN * (object.mass * p_config.gravity_n_per_kg * n_dot_d);
+			r_forces.weight += DEVICE_DOWN * (object.mass * p_config.gravity_n_per_kg * n_dot_d);
 		}
 	}
 
+	r_forces.drag = Vec3{};
+	r_forces.inertia = Vec3{};
 	if (p_frame.water.inside) {
-		forces.drag = p_frame.player_velocity * -p_frame.water.drag;
-		forces.inertia = DEVICE_DOWN * p_frame.water.inertia;
+		r_forces.drag = p_frame.player_velocity * -p_frame.water.drag;
+		r_forces.inertia = DEVICE_DOWN * p_frame.water.inertia;
 	}
 
-	forces.continuous = forces.normal + forces.friction + forces.weight + forces.drag + forces.inertia;
-	return forces;
+	r_forces.continuous = r_forces.normal + r_forces.friction + r_forces.weight + r_forces.drag + r_forces.inertia;
 }
 
 } // namespace haptics

@@ -67,5 +67,9 @@ ContactResolution resolve_contacts(const Frame &p_frame, const ContactMaterial &
 // Fills normal, friction, weight, drag, inertia and continuous of the result; the other
 // fields are zero. The frame must be valid (validate_frame); p_input is the input vector.
 ForceComponents compute_forces(const Frame &p_frame, const Vec3 &p_input, const ForceModelConfig &p_config);
+// The same, written over those six fields of r_forces in place (the others are left as they
+// are): what the servo tick uses, so it neither builds nor copies a whole ForceComponents.
+void compute_forces(const Frame &p_frame, const Vec3 &p_input, const ForceModelConfig &p_config,
+		ForceComponents &r_forces);
 
 } // namespace haptics

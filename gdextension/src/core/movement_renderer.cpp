@@ -18,16 +18,15 @@ void MovementRenderer::reset() {
 	filter_.reset();
 }
 
-RenderResult MovementRenderer::render(const RenderInput &p_input) {
-	RenderResult result;
-	result.forces = compute_forces(p_input.frame, p_input.input, model_);
-	if (is_finite(result.forces.continuous)) {
-		result.continuous = filter_.process(result.forces.continuous);
+void MovementRenderer::render(const RenderInput &p_input, RenderResult &r_result) {
+	compute_forces(p_input.frame, p_input.input, model_, r_result.forces);
+	r_result.flags = 0;
+	if (is_finite(r_result.forces.continuous)) {
+		r_result.continuous = filter_.process(r_result.forces.continuous);
 	} else {
 		filter_.reset(); // Never let a NaN live on in the filter state; safety zeroes it.
-		result.continuous = result.forces.continuous;
+		r_result.continuous = r_result.forces.continuous;
 	}
-	return result;
 }
 
 } // namespace haptics

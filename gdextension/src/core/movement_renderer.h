@@ -13,7 +13,7 @@ class MovementRenderer final : public Renderer {
 public:
 	void configure(const RenderConfig &p_config, double p_dt_s) override;
 	void reset() override;
-	RenderResult render(const RenderInput &p_input) override;
+	void render(const RenderInput &p_input, RenderResult &r_result) override;
 
 private:
 	ForceModelConfig model_;

@@ -17,7 +17,9 @@
 //   pick_up()           every tick, every renderer, first: take the renderer's own game
 //                       inputs off its lock-free channel, so a hand-over never waits for a
 //                       mode switch.
-//   render(input)       every tick, the active renderer only.
+//   render(in, out)     every tick, the active renderer only: it overwrites every field of
+//                       the result except forces.smoothed, .impact and .total (the
+//                       pipeline's), in place, so the tick builds no result of its own.
 //   publish(out, act)   every tick, every renderer: its state for the game (act: active).
 
 #include "core/config.h"
@@ -62,7 +64,7 @@ public:
 	virtual void configure(const RenderConfig &p_config, double p_dt_s) = 0;
 	virtual void reset() = 0;
 	virtual void pick_up() {}
-	virtual RenderResult render(const RenderInput &p_input) = 0;
+	virtual void render(const RenderInput &p_input, RenderResult &r_result) = 0;
 	virtual void publish(ServoOutput &r_output, bool p_active) const {
 		(void)r_output;
 		(void)p_active;

@@ -118,14 +118,17 @@ DeviceIo ServoPipeline::tick(double p_dt_s) {
 
 	const Vec3 input = input_vector(state.position_m, input_radius_m_, config_.force_model.dead_zone);
 	const RenderInput render_input{ state, input, frame_, new_frame_, p_dt_s, limits_.workspace_radius_m };
-	RenderResult rendered = active().render(render_input);
+	active().render(render_input, rendered_);
 	const double scale = config_.safety.force_scale;
-	scale_forces(rendered.forces, scale);
+	if (scale != 1.0) {
+		scale_forces(rendered_.forces, scale);
+	}
 
-	ForceComponents &forces = rendered.forces;
+	ForceComponents &forces = rendered_.forces;
 	const Vec3 impact = transients_.advance(p_dt_s);
 	const double frame_age = have_frame_ ? time_s_ - last_frame_time_s_ : std::numeric_limits<double>::infinity();
-	const SafetyResult safety = safety_.apply(rendered.continuous * scale, impact, frame_age, p_dt_s);
+	const SafetyResult safety = safety_.apply(scale != 1.0 ? rendered_.continuous * scale : rendered_.continuous,
+			impact, frame_age, p_dt_s);
 	forces.smoothed = safety.continuous;
 	forces.impact = impact;
 	forces.total = safety.total;
@@ -136,7 +139,7 @@ DeviceIo ServoPipeline::tick(double p_dt_s) {
 	}
 	clamped_ticks_ += safety.clamped ? 1 : 0;
 	non_finite_ticks_ += safety.non_finite ? 1 : 0;
-	publish(state, input, forces, safety, rendered.flags);
+	publish(state, input, forces, safety, rendered_.flags);
 	return DeviceIo::OK;
 }
 

@@ -91,6 +91,7 @@ private:
 	ConstraintRenderer constraint_;
 	// Indexed by RenderMode.
 	Renderer *const renderers_[RENDER_MODE_COUNT] = { &movement_, &constraint_ };
+	RenderResult rendered_; // The active renderer's result of this tick, written in place.
 	TransientBank transients_;
 	SafetyStage safety_;
 
