@@ -15,8 +15,9 @@ bool DictionaryReader::has(const char *p_key) const {
 	if (dictionary_.has(gd::Variant(p_key))) {
 		return true;
 	}
-	for (const auto &[old_key, key] : old_keys_) {
-		if (std::string_view(key) == p_key && dictionary_.has(gd::Variant(old_key))) {
+	for (size_t i = 0; i < old_key_count_; ++i) {
+		const auto &[old_key, key] = old_keys_[i];
+		if (may_have_old_key(i) && std::string_view(key) == p_key && dictionary_.has(gd::Variant(old_key))) {
 			return true;
 		}
 	}
@@ -50,15 +51,18 @@ void warn_old_key(const std::string &p_old_name, const std::string &p_new_name) 
 }
 
 void DictionaryReader::accept_old_key(const char *p_old_key, const char *p_key) {
-	old_keys_.emplace_back(p_old_key, p_key);
+	if (old_key_count_ < old_keys_.size()) {
+		old_keys_[old_key_count_++] = { p_old_key, p_key };
+	}
 }
 
 bool DictionaryReader::fetch(const char *p_key, gd::VariantType p_type, const char *p_expected,
 		bool p_required, gd::Variant &r_value) {
 	gd::Variant value;
 	bool found = dictionary_.get(gd::Variant(p_key), value);
-	for (const auto &[old_key, key] : old_keys_) {
-		if (!found && std::string_view(key) == p_key && dictionary_.get(gd::Variant(old_key), value)) {
+	for (size_t i = 0; i < old_key_count_ && !found; ++i) {
+		const auto &[old_key, key] = old_keys_[i];
+		if (may_have_old_key(i) && std::string_view(key) == p_key && dictionary_.get(gd::Variant(old_key), value)) {
 			found = true;
 			const std::string base = without_indices(path_);
 			warn_old_key(base + "." + old_key, base + "." + key);
@@ -155,8 +159,11 @@ bool DictionaryReader::only_keys(std::initializer_list<const char *> p_allowed) 
 		for (const char *allowed : p_allowed) {
 			known = known || name == allowed;
 		}
-		for (const auto &renamed : old_keys_) {
-			known = known || name == renamed.first;
+		for (size_t r = 0; r < old_key_count_; ++r) {
+			if (name == old_keys_[r].first) {
+				known = true;
+				old_present_ |= 1u << r;
+			}
 		}
 		if (!known) {
 			std::string list;
@@ -168,6 +175,7 @@ bool DictionaryReader::only_keys(std::initializer_list<const char *> p_allowed) 
 			return false;
 		}
 	}
+	keys_scanned_ = true;
 	return true;
 }
 

@@ -3,10 +3,12 @@
 // too, so a typo in GDScript is reported instead of silently ignored.
 #pragma once
 
+#include <array>
+#include <cstddef>
+#include <cstdint>
 #include <initializer_list>
 #include <string>
 #include <utility>
-#include <vector>
 
 #include "godot/containers.h"
 
@@ -31,7 +33,7 @@ public:
 	// old names, see accept_old_key).
 	bool only_keys(std::initializer_list<const char *> p_allowed);
 	// p_old_key was renamed p_key: when p_key is absent, reads of it take p_old_key instead,
-	// with a deprecation warning (once per process and key).
+	// with a deprecation warning (once per process and key). At most four per reader.
 	void accept_old_key(const char *p_old_key, const char *p_key);
 
 	const std::string &error() const { return error_; }
@@ -44,7 +46,15 @@ private:
 	const gd::Dictionary &dictionary_;
 	std::string path_;
 	std::string error_;
-	std::vector<std::pair<const char *, const char *>> old_keys_; // (old, new)
+	// (old, new); a fixed array: frames are read at 50 Hz and need no allocation for this.
+	std::array<std::pair<const char *, const char *>, 4> old_keys_{};
+	size_t old_key_count_ = 0;
+	// After only_keys() has seen every key: which old keys are there (bit i: old_keys_[i]),
+	// so reads never look up an old name that is absent.
+	bool keys_scanned_ = false;
+	uint32_t old_present_ = 0;
+
+	bool may_have_old_key(size_t p_index) const { return !keys_scanned_ || (old_present_ & (1u << p_index)) != 0; }
 };
 
 // "X is deprecated, use Y" through the engine's warning printer, once per process for each
