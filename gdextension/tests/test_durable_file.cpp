@@ -2,6 +2,7 @@
 #include <doctest/doctest.h>
 
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -14,12 +15,28 @@ using namespace haptics;
 
 namespace {
 
-std::string make_temp_dir() {
-	char pattern[] = "/tmp/haptics-durable-XXXXXX";
-	const char *dir = ::mkdtemp(pattern);
-	REQUIRE(dir != nullptr);
-	return dir;
-}
+// A fresh folder in the system's temporary directory, removed with everything in it when
+// the test ends, also when it fails (a failed REQUIRE unwinds through the destructor).
+class TempDir {
+public:
+	TempDir() {
+		std::string pattern = (std::filesystem::temp_directory_path() / "haptics-durable-XXXXXX").string();
+		REQUIRE(::mkdtemp(pattern.data()) != nullptr);
+		path_ = pattern;
+	}
+	~TempDir() {
+		std::error_code ignored;
+		std::filesystem::remove_all(path_, ignored);
+	}
+	TempDir(const TempDir &) = delete;
+	TempDir &operator=(const TempDir &) = delete;
+
+	// p_name inside the folder, e.g. "/ratings.csv".
+	std::string path(const char *p_name) const { return path_ + p_name; }
+
+private:
+	std::string path_;
+};
 
 std::string read_file(const std::string &p_path) {
 	std::ifstream in(p_path, std::ios::binary);
@@ -31,8 +48,8 @@ std::string read_file(const std::string &p_path) {
 } // namespace
 
 TEST_CASE("durable_append: creates, then appends without touching earlier bytes") {
-	const std::string dir = make_temp_dir();
-	const std::string path = dir + "/ratings.csv";
+	const TempDir dir;
+	const std::string path = dir.path("/ratings.csv");
 	REQUIRE(durable_append(path, "header\n").ok());
 	REQUIRE(durable_append(path, "a,1\n").ok());
 	REQUIRE(durable_append(path, "b,2\n").ok());
@@ -43,18 +60,18 @@ TEST_CASE("durable_append: creates, then appends without touching earlier bytes"
 }
 
 TEST_CASE("check_complete_lines: a record cut short is detected") {
-	const std::string dir = make_temp_dir();
-	const std::string path = dir + "/trials.csv";
+	const TempDir dir;
+	const std::string path = dir.path("/trials.csv");
 	REQUIRE(durable_append(path, "header\nrow,1\nrow,").ok());
 	bool complete = true;
 	REQUIRE(check_complete_lines(path, complete).ok());
 	CHECK_FALSE(complete);
-	CHECK_FALSE(check_complete_lines(dir + "/missing.csv", complete).ok());
+	CHECK_FALSE(check_complete_lines(dir.path("/missing.csv"), complete).ok());
 }
 
 TEST_CASE("durable_write: never overwrites unless asked, and replaces atomically") {
-	const std::string dir = make_temp_dir();
-	const std::string path = dir + "/participant.json";
+	const TempDir dir;
+	const std::string path = dir.path("/participant.json");
 	REQUIRE(durable_write(path, "{\"v\":1}", false).ok());
 	const Status refused = durable_write(path, "{\"v\":2}", false);
 	CHECK_FALSE(refused.ok());
@@ -67,12 +84,12 @@ TEST_CASE("durable_write: never overwrites unless asked, and replaces atomically
 }
 
 TEST_CASE("make_directories: nested folders, existing ones fine, errors named") {
-	const std::string dir = make_temp_dir();
-	REQUIRE(make_directories(dir + "/study/P01/telemetry").ok());
-	REQUIRE(make_directories(dir + "/study/P01/telemetry").ok());
-	REQUIRE(durable_append(dir + "/study/P01/telemetry/x.csv", "t\n").ok());
-	REQUIRE(durable_append(dir + "/file", "x").ok());
-	const Status blocked = make_directories(dir + "/file/sub");
+	const TempDir dir;
+	REQUIRE(make_directories(dir.path("/study/P01/telemetry")).ok());
+	REQUIRE(make_directories(dir.path("/study/P01/telemetry")).ok());
+	REQUIRE(durable_append(dir.path("/study/P01/telemetry/x.csv"), "t\n").ok());
+	REQUIRE(durable_append(dir.path("/file"), "x").ok());
+	const Status blocked = make_directories(dir.path("/file/sub"));
 	CHECK_FALSE(blocked.ok());
 	CHECK(std::string(blocked.message()).find("file/sub") != std::string::npos);
 }
