@@ -27,14 +27,19 @@ RenderResult render_once(Renderer &r_renderer, const Frame &p_frame, const Vec3 
 	return result;
 }
 
+// A renderer at the start of a session with p_config.
+void start(Renderer &r_renderer, const RenderConfig &p_config) {
+	r_renderer.begin_session(DT);
+	r_renderer.configure(p_config, DT);
+}
+
 } // namespace
 
 TEST_CASE("movement renderer: the model's components, and the continuous sum smoothed or not") {
 	MovementRenderer renderer;
 	RenderConfig config;
 	config.smoothing.enabled = false;
-	renderer.begin_session(DT);
-	renderer.configure(config, DT);
+	start(renderer, config);
 	const Frame frame = floor_frame();
 	RenderResult result = render_once(renderer, frame, { 0.3, -0.5, 0.0 });
 	CHECK(result.forces.normal.y == doctest::Approx(1.0)); // -k p with the default k = 2.
@@ -55,8 +60,7 @@ TEST_CASE("movement renderer: writes every field it owns in place, over whatever
 	MovementRenderer renderer;
 	RenderConfig config;
 	config.smoothing.enabled = false;
-	renderer.begin_session(DT);
-	renderer.configure(config, DT);
+	start(renderer, config);
 	RenderResult result;
 	result.forces.weight = { 5.0, 5.0, 5.0 };
 	result.forces.impact = { 7.0, 0.0, 0.0 }; // The pipeline's: left alone.
@@ -76,8 +80,7 @@ TEST_CASE("movement renderer: writes every field it owns in place, over whatever
 TEST_CASE("movement renderer: a material change keeps the filter's motion, reset() does not") {
 	MovementRenderer renderer;
 	RenderConfig config;
-	renderer.begin_session(DT);
-	renderer.configure(config, DT);
+	start(renderer, config);
 	const Frame frame = floor_frame();
 	Vec3 before;
 	for (int k = 0; k < 20; ++k) {
@@ -96,8 +99,7 @@ TEST_CASE("constraint renderer: takes the game's walls while inactive, and says 
 	ConstraintRenderer renderer(exchange);
 	RenderConfig config;
 	config.constraint.proxy_radius = 5.0;
-	renderer.begin_session(DT);
-	renderer.configure(config, DT);
+	start(renderer, config);
 	const Segment2 wall{ { 50.0, -100.0 }, { 50.0, 100.0 } };
 	MazeMapping mapping;
 	mapping.maze_min = { -100.0, -100.0 };

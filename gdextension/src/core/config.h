@@ -77,6 +77,8 @@ enum class ProxyUpdate : int32_t {
 	// rate.
 	FRAME_RATE = 1,
 };
+// Their names, in enum order (what set_config also accepts).
+inline constexpr const char *PROXY_UPDATE_NAMES[] = { "servo", "frame" };
 
 struct ConstraintConfig {
 	// k_c. Keep it at or below the device's max_stiffness_n_per_m (the force is clamped by

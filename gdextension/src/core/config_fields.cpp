@@ -34,7 +34,6 @@ double to_number(T p_value) {
 	[](const RenderConfig &c) { return to_number(c.path); }, \
 			[](RenderConfig &c, double v) { c.path = from_number<decltype(c.path)>(v); }
 
-constexpr const char *PROXY_UPDATES[] = { "servo", "frame" }; // ProxyUpdate order.
 constexpr double MAX_STEP_RATE = 1e6; // Slew rate: above this the limiter does nothing.
 
 using K = FieldKind;
@@ -76,7 +75,7 @@ const ConfigField FIELDS[] = {
 			HAPTICS_FIELD(constraint.stiffness_n_per_m) },
 	{ "constraint", "proxy_radius", K::NUMBER, 1e-6, 1e6, "maze units", nullptr, {}, nullptr,
 			HAPTICS_FIELD(constraint.proxy_radius) },
-	{ "constraint", "update", K::CHOICE, 0.0, 1.0, "", nullptr, PROXY_UPDATES, nullptr, HAPTICS_FIELD(constraint.update) },
+	{ "constraint", "update", K::CHOICE, 0.0, 1.0, "", nullptr, PROXY_UPDATE_NAMES, nullptr, HAPTICS_FIELD(constraint.update) },
 	{ "constraint", "max_iterations", K::COUNT, 1.0, MAX_PROXY_ITERATIONS, "", nullptr, {}, nullptr,
 			HAPTICS_FIELD(constraint.max_iterations) },
 };

@@ -29,6 +29,8 @@ enum class WorkspaceShape : int32_t {
 	DISC = 0,
 	SQUARE = 1,
 };
+// Their names, in enum order (what the binding also accepts).
+inline constexpr const char *WORKSPACE_SHAPE_NAMES[] = { "disc", "square" };
 
 struct MazeMapping {
 	Vec2 maze_min{ 0.0, 0.0 }; // Maze units; finite, |.| <= 1e9, min < max on both axes.

@@ -43,14 +43,13 @@ bool to_number(const ConfigField &p_field, const gd::Variant &p_value, const std
 	}
 	if (p_field.kind == FieldKind::CHOICE && (type == gd::VariantType::STRING || type == gd::VariantType::STRING_NAME)) {
 		const std::string name = p_value.as_string();
-		for (size_t i = 0; i < p_field.choices.size(); ++i) {
-			if (name == p_field.choices[i]) {
-				r_number = static_cast<double>(i);
-				return true;
-			}
+		const int64_t index = name_index(name, p_field.choices);
+		if (index < 0) {
+			r_error = p_name + " must be one of " + choice_list(p_field) + " (got \"" + name + "\")";
+			return false;
 		}
-		r_error = p_name + " must be one of " + choice_list(p_field) + " (got \"" + name + "\")";
-		return false;
+		r_number = static_cast<double>(index);
+		return true;
 	}
 	if (type != gd::VariantType::INT && type != gd::VariantType::FLOAT) {
 		r_error = p_name + ": expected a number, got " + variant_type_name(type);

@@ -1,5 +1,6 @@
 #include "godot/conversions.h"
 
+#include <iterator>
 #include <utility>
 
 #include "core/coordinates.h"
@@ -198,13 +199,13 @@ bool mapping_from_dictionary(const gd::Dictionary &p_dictionary, MazeMapping &r_
 	}
 	gd::Variant shape;
 	if (p_dictionary.get(gd::Variant("workspace"), shape)) {
-		const std::string name = shape.as_string();
-		const bool named = shape.get_type() == gd::VariantType::STRING;
-		const int64_t index = named						   ? (name == "disc" ? 0 : name == "square" ? 1
-																									: -1)
-				: shape.get_type() == gd::VariantType::INT ? shape.as_int()
-														   : -1;
-		if (index != static_cast<int64_t>(WorkspaceShape::DISC) && index != static_cast<int64_t>(WorkspaceShape::SQUARE)) {
+		int64_t index = -1; // The enum's value, or its name.
+		if (shape.get_type() == gd::VariantType::INT) {
+			index = shape.as_int();
+		} else if (shape.get_type() == gd::VariantType::STRING) {
+			index = name_index(shape.as_string(), WORKSPACE_SHAPE_NAMES);
+		}
+		if (index < 0 || index >= static_cast<int64_t>(std::size(WORKSPACE_SHAPE_NAMES))) {
 			r_error = "mapping.workspace must be WORKSPACE_DISC, WORKSPACE_SQUARE, \"disc\" or \"square\" (got " +
 					shape.stringify() + ")";
 			return false;

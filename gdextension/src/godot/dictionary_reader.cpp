@@ -179,6 +179,15 @@ bool DictionaryReader::only_keys(std::initializer_list<const char *> p_allowed) 
 	return true;
 }
 
+int64_t name_index(const std::string &p_name, std::span<const char *const> p_names) {
+	for (size_t i = 0; i < p_names.size(); ++i) {
+		if (p_name == p_names[i]) {
+			return static_cast<int64_t>(i);
+		}
+	}
+	return -1;
+}
+
 std::string variant_type_name(gd::VariantType p_type) {
 	switch (p_type) {
 		case gd::VariantType::NIL:

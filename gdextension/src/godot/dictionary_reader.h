@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <initializer_list>
+#include <span>
 #include <string>
 #include <utility>
 
@@ -60,6 +61,9 @@ private:
 // "X is deprecated, use Y" through the engine's warning printer, once per process for each
 // p_old_name (a name without indices, e.g. "frame.contacts.damping").
 void warn_old_key(const std::string &p_old_name, const std::string &p_new_name);
+
+// The position of p_name in p_names (an enum's names in value order), or -1.
+int64_t name_index(const std::string &p_name, std::span<const char *const> p_names);
 
 // The name of a Variant type as GDScript prints it ("float", "Vector2"...).
 std::string variant_type_name(gd::VariantType p_type);
