@@ -91,14 +91,16 @@ export: import build-release
 test-export: export
 	@tools/test-export.sh
 
-## bench: servo loop vs naive loop, the force model's and the proxy's tick cost, and the
+## bench: servo loop vs naive loop, the force model's and the proxy's tick cost, each device
+## backend's tick cost and protocol rate against its scripted transport, and the
 ## game's physics-frame and probe cost (numbers and ratios, not tests; JSON in .bench/)
 bench: import
 	@$(CMAKE_CONFIGURE) -B $(BUILD)/bench -DCMAKE_BUILD_TYPE=Release -DHAPTICS_BUILD_EXTENSION=OFF \
 		-DHAPTICS_BUILD_TESTS=OFF >/dev/null
-	@cmake --build $(BUILD)/bench -j $(JOBS) --target haptics_bench
+	@cmake --build $(BUILD)/bench -j $(JOBS) --target haptics_bench haptics_device_bench
 	@mkdir -p .bench
 	@$(BUILD)/bench/haptics_bench --seconds $(BENCH_SECONDS) --json .bench/servo.json
+	@$(BUILD)/bench/haptics_device_bench --seconds 1 --json .bench/devices.json
 	@$(GODOT) --headless --path . --fixed-fps 50 res://tests/bench/game_bench.tscn -- \
 		--frames=1500 --json=.bench/game.json
 

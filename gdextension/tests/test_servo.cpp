@@ -47,11 +47,12 @@ public:
 	}
 	bool is_open() const override { return inner_.is_open(); }
 	Status calibrate() override { return inner_.calibrate(); }
-	DeviceLimits limits() const override { return inner_.limits(); }
+	DeviceCapabilities capabilities() const override { return inner_.capabilities(); }
 	const char *name() const override { return "recording device"; }
 	void begin_tick(double p_dt_s) override { inner_.begin_tick(p_dt_s); }
 	DeviceIo read_state(DeviceState &r_state) override { return inner_.read_state(r_state); }
-	DeviceIo write_force(const Vec3 &p_force_n) override {
+	DeviceIo write_force(const ForceCommand &p_command) override {
+		const Vec3 &p_force_n = p_command.force_n;
 		if (log_->closed.load()) {
 			log_->written_after_close.store(true);
 		}
@@ -60,7 +61,7 @@ public:
 		log_->peak_magnitude.store(std::max(log_->peak_magnitude.load(), magnitude));
 		log_->last_writer.store(std::this_thread::get_id());
 		log_->writes.fetch_add(1);
-		return inner_.write_force(p_force_n);
+		return inner_.write_force(p_command);
 	}
 	bool has_hand() const override { return true; }
 	Status set_hand_target(const Vec3 &p_target_m) override { return inner_.set_hand_target(p_target_m); }

@@ -23,7 +23,7 @@ DeviceState run(SimulatedDevice &r_device, double p_rate_hz, double p_seconds, c
 	for (int k = 0; k < static_cast<int>(std::lround(p_seconds * p_rate_hz)); ++k) {
 		r_device.begin_tick(dt);
 		REQUIRE(r_device.read_state(state) == DeviceIo::OK);
-		REQUIRE(r_device.write_force(p_force) == DeviceIo::OK);
+		REQUIRE(r_device.write_force({ p_force, {} }) == DeviceIo::OK);
 		if (r_max_x) {
 			*r_max_x = std::max(*r_max_x, state.position_m.x);
 		}
@@ -104,7 +104,7 @@ TEST_CASE("simulated device: deterministic under the same script") {
 			}
 			device.begin_tick(0.001);
 			REQUIRE(device.read_state(state) == DeviceIo::OK);
-			REQUIRE(device.write_force({ -0.1 * std::sin(k * 0.01), 0.2, 0.0 }) == DeviceIo::OK);
+			REQUIRE(device.write_force({ { -0.1 * std::sin(k * 0.01), 0.2, 0.0 }, {} }) == DeviceIo::OK);
 		}
 		return state.position_m;
 	};
@@ -119,7 +119,7 @@ TEST_CASE("simulated device: unplugging gives clear errors, plugging back in wor
 	device.set_plugged(false);
 	DeviceState state;
 	CHECK(device.read_state(state) == DeviceIo::DISCONNECTED);
-	CHECK(device.write_force({}) == DeviceIo::DISCONNECTED);
+	CHECK(device.write_zero() == DeviceIo::DISCONNECTED);
 	device.close();
 	const Status reopen = device.open();
 	CHECK(reopen.code() == StatusCode::DEVICE_DISCONNECTED);

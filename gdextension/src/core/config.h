@@ -43,6 +43,12 @@ struct SafetyConfig {
 	// Output limit; 0 means the device's own limit, and a larger value is still capped by it.
 	double max_force_n = 0.0;
 	double max_impact_force_n = 3.0; // Cap on an impact's amplitude A(v).
+	// Cap on the continuous force; 0 means the physical device's continuous rating (motors
+	// overheat above it; a simulation has none). Transients may still reach the peak limit.
+	double max_continuous_force_n = 0.0;
+	// A physical device's session starts only once the rendered force is at most this
+	// (and the device is ready): opening a device inside a wall never throws the hand.
+	double start_force_n = 0.5;
 	double slew_rate_n_per_s = 200.0; // How fast the continuous force may change; 0 = off.
 	// Output gain ramps linearly 0 -> 1 over this time when rendering (re)starts.
 	double startup_ramp_s = 0.3;
@@ -50,6 +56,15 @@ struct SafetyConfig {
 	// Once tripped, the continuous force fades linearly to zero over this time, and fades
 	// back in over the same time when frames return.
 	double watchdog_fade_s = 0.04;
+};
+
+// 3-DOF devices (Falcon, Touch, the simulated stylus) in a 2D game: the depth axis z is held
+// at the workspace centre by a spring-damper, F_z = -k z - b v_z, so the stylus moves in the
+// game plane (the movement-based paper's Omni moved in its x-y plane). Planar renderers
+// only (the movement and constraint renderers); 0 stiffness turns it off.
+struct PlaneHoldConfig {
+	double stiffness_n_per_m = 200.0;
+	double damping_n_s_per_m = 1.0;
 };
 
 struct TelemetryConfig {
@@ -95,6 +110,7 @@ struct RenderConfig {
 	ForceModelConfig force_model;
 	SmoothingConfig smoothing;
 	SafetyConfig safety;
+	PlaneHoldConfig plane_hold;
 	TelemetryConfig telemetry;
 	RenderMode render_mode = RenderMode::MOVEMENT;
 	ConstraintConfig constraint;

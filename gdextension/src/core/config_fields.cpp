@@ -61,6 +61,13 @@ const ConfigField FIELDS[] = {
 			HAPTICS_FIELD(safety.max_force_n) },
 	{ "safety", "max_impact_force_n", K::NUMBER, 0.0, 100.0, "N", nullptr, {}, "max_impact_force",
 			HAPTICS_FIELD(safety.max_impact_force_n) },
+	{ "safety", "max_continuous_force_n", K::NUMBER, 0.0, 100.0, "N", "the device's continuous rating", {}, nullptr,
+			HAPTICS_FIELD(safety.max_continuous_force_n) },
+	{ "safety", "start_force_n", K::NUMBER, 0.0, 10.0, "N", "no wait", {}, nullptr, HAPTICS_FIELD(safety.start_force_n) },
+	{ "plane_hold", "stiffness_n_per_m", K::NUMBER, 0.0, 5000.0, "N/m", "off", {}, nullptr,
+			HAPTICS_FIELD(plane_hold.stiffness_n_per_m) },
+	{ "plane_hold", "damping_n_s_per_m", K::NUMBER, 0.0, 50.0, "N·s/m", nullptr, {}, nullptr,
+			HAPTICS_FIELD(plane_hold.damping_n_s_per_m) },
 	{ "safety", "slew_rate_n_per_s", K::NUMBER, 1.0, MAX_STEP_RATE, "N/s", "no slew limit", {}, "slew_rate",
 			HAPTICS_FIELD(safety.slew_rate_n_per_s) },
 	{ "safety", "startup_ramp_s", K::NUMBER, 0.0, 5.0, "s", nullptr, {}, "startup_ramp",
@@ -82,7 +89,7 @@ const ConfigField FIELDS[] = {
 
 #undef HAPTICS_FIELD
 
-constexpr const char *SECTIONS[] = { "force_model", "smoothing", "safety", "telemetry", "constraint" };
+constexpr const char *SECTIONS[] = { "force_model", "smoothing", "safety", "plane_hold", "telemetry", "constraint" };
 
 } // namespace
 

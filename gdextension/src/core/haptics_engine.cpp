@@ -7,19 +7,22 @@ namespace haptics {
 
 namespace {
 
-constexpr char UNPLUGGED_MESSAGE[] = "device '%s' disconnected: rendering stopped (zero force); reopen it to resume";
-constexpr char FAILED_MESSAGE[] = "device '%s' I/O failed: rendering stopped; reopen it to resume";
+constexpr char UNPLUGGED_MESSAGE[] = "device '%s' disconnected%s%s%s: rendering stopped (zero force); reopen it to resume";
+constexpr char FAILED_MESSAGE[] = "device '%s' I/O failed%s%s%s: rendering stopped; reopen it to resume";
 
-Status device_io_status(DeviceIo p_io, const char *p_name) {
+Status device_io_status(DeviceIo p_io, const char *p_name, const DeviceStatus &p_device) {
+	const char *reason = p_device.reason[0] != '\0' ? p_device.reason : "";
+	const char *separator = reason[0] != '\0' ? " (" : "";
+	const char *close = reason[0] != '\0' ? ")" : "";
 	switch (p_io) {
 		case DeviceIo::OK:
 			return Status::success();
 		case DeviceIo::DISCONNECTED:
-			return Status::error(StatusCode::DEVICE_DISCONNECTED, UNPLUGGED_MESSAGE, p_name);
+			return Status::error(StatusCode::DEVICE_DISCONNECTED, UNPLUGGED_MESSAGE, p_name, separator, reason, close);
 		case DeviceIo::FAILED:
 			break;
 	}
-	return Status::error(StatusCode::DEVICE_ERROR, FAILED_MESSAGE, p_name);
+	return Status::error(StatusCode::DEVICE_ERROR, FAILED_MESSAGE, p_name, separator, reason, close);
 }
 
 } // namespace
@@ -41,7 +44,7 @@ struct HapticsEngine::Impl {
 	void end_session() {
 		loop.stop();
 		if (manual_session && device) {
-			device->write_force(Vec3{});
+			device->write_zero();
 		}
 		manual_session = false;
 		// Stale impacts must not fire in a burst when rendering resumes.
@@ -75,7 +78,7 @@ Status HapticsEngine::open_device(std::unique_ptr<HapticDevice> p_device) {
 		return Status::error(StatusCode::DEVICE_ERROR, "device '%s' reports invalid limits (max force %g N, radius %g m)",
 				p_device->name(), limits.max_force_n, limits.workspace_radius_m);
 	}
-	p_device->write_force(Vec3{});
+	p_device->write_zero();
 	impl_->end_session();
 	impl_->loop.clear_fault();
 	if (impl_->device) {
@@ -185,10 +188,10 @@ Status HapticsEngine::step(double p_dt_s) {
 	impl_->channels.stats.record_tick(impl_->pipeline.time_s(), impl_->pipeline.ticks() > 1 ? p_dt_s : -1.0, 0.0,
 			static_cast<double>(end_ns - begin_ns) * 1e-9);
 	if (io != DeviceIo::OK) {
-		impl_->device->write_force(Vec3{});
+		impl_->device->write_zero();
 		impl_->manual_session = false;
 		impl_->manual_fault = io;
-		return device_io_status(io, impl_->device->name());
+		return device_io_status(io, impl_->device->name(), impl_->device->status());
 	}
 	impl_->channels.geometry.collect(); // This thread is the servo here: free what it retired.
 	return Status::success();
@@ -196,10 +199,19 @@ Status HapticsEngine::step(double p_dt_s) {
 
 Status HapticsEngine::servo_status() const {
 	const char *name = device_name();
+	const DeviceStatus device = device_status();
 	if (impl_->loop.state() == ServoState::FAULTED) {
-		return device_io_status(impl_->loop.fault(), name);
+		return device_io_status(impl_->loop.fault(), name, device);
 	}
-	return device_io_status(impl_->manual_fault, name);
+	return device_io_status(impl_->manual_fault, name, device);
+}
+
+DeviceStatus HapticsEngine::device_status() const {
+	return impl_->device ? impl_->device->status() : DeviceStatus{};
+}
+
+DeviceCapabilities HapticsEngine::device_capabilities() const {
+	return impl_->device ? impl_->device->capabilities() : DeviceCapabilities{};
 }
 
 Status HapticsEngine::submit_frame(const Frame &p_frame) {

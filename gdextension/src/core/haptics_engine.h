@@ -66,6 +66,9 @@ public:
 	bool has_device() const;
 	const char *device_name() const; // "" without a device.
 	DeviceLimits device_limits() const; // Zeros without a device.
+	DeviceCapabilities device_capabilities() const; // Defaults without a device.
+	// The device's own report (why it failed, e.g. the USB error); OK without a device.
+	DeviceStatus device_status() const;
 	// The current device if it is the simulated one (to unplug it in tests), else nullptr.
 	SimulatedDevice *simulated_device();
 	Status calibrate(); // Not while rendering.
@@ -82,7 +85,8 @@ public:
 	// thread, exactly deterministic. The first step after open/start/stop begins a session
 	// (start-up ramp from zero). Not while the thread runs.
 	Status step(double p_dt_s);
-	// OK, or why rendering stopped on its own (e.g. the device was unplugged).
+	// OK, or why rendering stopped on its own (e.g. the device was unplugged), with the
+	// device's own reason when it gave one.
 	Status servo_status() const;
 
 	// --- Game -> servo -------------------------------------------------------------------

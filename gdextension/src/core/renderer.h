@@ -64,6 +64,8 @@ public:
 	virtual void configure(const RenderConfig &p_config, double p_dt_s) = 0;
 	virtual void reset() = 0;
 	virtual void pick_up() {}
+	// A renderer of a 2D game: the servo holds a 3-DOF device's depth axis (PlaneHoldConfig).
+	virtual bool planar() const { return true; }
 	virtual void render(const RenderInput &p_input, RenderResult &r_result) = 0;
 	virtual void publish(ServoOutput &r_output, bool p_active) const {
 		(void)r_output;

@@ -107,7 +107,7 @@ void ServoLoop::run() {
 	}
 
 	// Zero force before the thread ends, whatever ended it. Harmless if the device is gone.
-	device_->write_force(Vec3{});
+	device_->write_zero();
 	fault_.store(io, std::memory_order_release);
 	state_.store(io == DeviceIo::OK ? ServoState::STOPPED : ServoState::FAULTED, std::memory_order_release);
 }

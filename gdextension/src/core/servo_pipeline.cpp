@@ -25,7 +25,8 @@ ServoPipeline::ServoPipeline(ServoChannels &r_channels) :
 
 void ServoPipeline::begin_session(HapticDevice *p_device, double p_dt_s) {
 	device_ = p_device;
-	limits_ = p_device->limits();
+	capabilities_ = p_device->capabilities();
+	limits_ = capabilities_.limits;
 	dt_s_ = p_dt_s;
 	time_s_ = 0.0;
 	tick_ = 0;
@@ -65,7 +66,11 @@ void ServoPipeline::apply_config(const RenderConfig &p_config) {
 		active().reset(); // Each mode starts from rest; the slew limiter smooths the hand-over.
 	}
 	input_radius_m_ = config_.force_model.input_radius_m > 0.0 ? config_.force_model.input_radius_m : limits_.workspace_radius_m;
-	safety_.configure(config_.safety, limits_.max_force_n);
+	// The continuous rating protects motors; a simulation has none, and its forces stay
+	// as the game was tuned (peak limit only).
+	const bool physical = capabilities_.physical;
+	safety_.configure(config_.safety,
+			SafetyDevice{ limits_.max_force_n, physical ? limits_.max_continuous_force_n : 0.0, physical });
 }
 
 void ServoPipeline::pick_up_inputs() {
@@ -126,14 +131,18 @@ DeviceIo ServoPipeline::tick(double p_dt_s) {
 
 	ForceComponents &forces = rendered_.forces;
 	const Vec3 impact = transients_.advance(p_dt_s);
+	Vec3 continuous = scale != 1.0 ? rendered_.continuous * scale : rendered_.continuous;
+	if (capabilities_.input_dof >= 3 && active().planar() && config_.plane_hold.stiffness_n_per_m > 0.0) {
+		continuous.z += -config_.plane_hold.stiffness_n_per_m * state.position_m.z -
+				config_.plane_hold.damping_n_s_per_m * state.velocity_m_per_s.z;
+	}
 	const double frame_age = have_frame_ ? time_s_ - last_frame_time_s_ : std::numeric_limits<double>::infinity();
-	const SafetyResult safety = safety_.apply(scale != 1.0 ? rendered_.continuous * scale : rendered_.continuous,
-			impact, frame_age, p_dt_s);
+	const SafetyResult safety = safety_.apply(continuous, impact, frame_age, p_dt_s, state.ready);
 	forces.smoothed = safety.continuous;
 	forces.impact = impact;
 	forces.total = safety.total;
 
-	const DeviceIo written = device_->write_force(safety.total);
+	const DeviceIo written = device_->write_force(ForceCommand{ safety.total, safety.impact });
 	if (written != DeviceIo::OK) {
 		return written;
 	}

@@ -78,6 +78,7 @@ private:
 	RenderConfig config_;
 	uint64_t config_version_ = 0;
 	DeviceLimits limits_;
+	DeviceCapabilities capabilities_;
 	double input_radius_m_ = 0.1;
 
 	Frame frame_;

@@ -33,6 +33,21 @@ struct DeviceInfo {
 	uint16_t usage = 0;
 	bool known_haptic = false;
 	std::string model; // Catalog name, e.g. "Novint Falcon"; empty when not in the catalog.
+	// Which driver would render it ("hid-pid", "evdev", "falcon", "openhaptics",
+	// "dualsense", "simulated"); empty when none does.
+	std::string driver;
+	// Whether open_device() can open it now; if not, why, in one sentence the player can act
+	// on (permissions and the udev rule, a kernel driver bound, the runtime library or the
+	// firmware file missing).
+	bool openable = false;
+	std::string unavailable_reason;
+};
+
+// A backend's verdict on one enumerated device (each backend's probe()).
+struct DeviceAvailability {
+	bool handled = false; // This backend drives the device.
+	bool openable = false;
+	std::string reason; // Why not, when !openable.
 };
 
 } // namespace haptics

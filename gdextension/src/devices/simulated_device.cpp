@@ -79,8 +79,16 @@ Status SimulatedDevice::calibrate() {
 	return Status::success(); // A simulation is always calibrated.
 }
 
-DeviceLimits SimulatedDevice::limits() const {
-	return { config_.max_force_n, config_.max_continuous_force_n, config_.max_stiffness_n_per_m, config_.workspace_radius_m };
+DeviceCapabilities SimulatedDevice::capabilities() const {
+	DeviceCapabilities capabilities;
+	capabilities.input_dof = 3;
+	capabilities.output_dof = 3;
+	capabilities.output = ForceOutput::DIRECTIONAL;
+	capabilities.limits = { config_.max_force_n, config_.max_continuous_force_n, config_.max_stiffness_n_per_m,
+		config_.workspace_radius_m };
+	capabilities.physical = false; // No hand to kick: tests and the game start forces at once.
+	capabilities.button_count = 32;
+	return capabilities;
 }
 
 const char *SimulatedDevice::name() const {
@@ -152,14 +160,14 @@ DeviceIo SimulatedDevice::read_state(DeviceState &r_state) {
 	return DeviceIo::OK;
 }
 
-DeviceIo SimulatedDevice::write_force(const Vec3 &p_force_n) {
+DeviceIo SimulatedDevice::write_force(const ForceCommand &p_command) {
 	if (!plugged()) {
 		return DeviceIo::DISCONNECTED;
 	}
 	if (!open_) {
 		return DeviceIo::FAILED;
 	}
-	force_ = p_force_n;
+	force_ = p_command.force_n;
 	return DeviceIo::OK;
 }
 

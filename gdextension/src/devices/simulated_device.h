@@ -54,12 +54,12 @@ public:
 	void close() override;
 	bool is_open() const override { return open_; }
 	Status calibrate() override;
-	DeviceLimits limits() const override;
+	DeviceCapabilities capabilities() const override;
 	const char *name() const override;
 
 	void begin_tick(double p_dt_s) override;
 	DeviceIo read_state(DeviceState &r_state) override;
-	DeviceIo write_force(const Vec3 &p_force_n) override;
+	DeviceIo write_force(const ForceCommand &p_command) override;
 
 	bool has_hand() const override { return true; }
 	// Finite, |target| <= 1 m (beyond the workspace the stylus rests on the boundary).
