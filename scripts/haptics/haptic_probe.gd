@@ -89,7 +89,10 @@ func _before_bodies_move() -> void:
 	_velocity_before = _body_velocity()
 	if not drive_input or server == null or not (&"input_vector" in _body):
 		return
-	var device_driven: bool = Haptics.control_mode == Haptics.CONTROL_DEVICE
+	# An unplugged device hands the player back to the keyboard until it returns.
+	var device_driven: bool = (
+		Haptics.control_mode == Haptics.CONTROL_DEVICE and not Haptics.device.is_lost()
+	)
 	if &"use_keyboard" in _body:
 		_body.set(&"use_keyboard", not device_driven)
 	if device_driven:

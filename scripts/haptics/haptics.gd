@@ -112,7 +112,8 @@ func _input(event: InputEvent) -> void:
 		_mouse_seen = true
 
 
-func _process(_delta: float) -> void:
+func _process(delta: float) -> void:
+	device.poll_reconnect(delta)
 	if hand_follows_input and control_mode == CONTROL_DEVICE and device.is_simulated():
 		device.set_hand_target(_hand_from_user_input())
 

@@ -8,8 +8,12 @@ extends RefCounted
 ## The open device changed.
 signal changed
 
+## Seconds between attempts to reopen a device that was unplugged.
+const RECONNECT_INTERVAL_S := 2.0
+
 var _server: Object = null
 var _servo: HapticsServo = null
+var _reconnect_countdown: float = 0.0
 
 
 func _init(server: Object, servo: HapticsServo) -> void:
@@ -18,7 +22,7 @@ func _init(server: Object, servo: HapticsServo) -> void:
 
 
 ## Every device present (the simulated one first), each a [Dictionary] (id, model,
-## known_haptic…); empty without the extension.
+## known_haptic, driver, openable, unavailable_reason…); empty without the extension.
 func list_present() -> Array[Dictionary]:
 	var out: Array[Dictionary] = []
 	if _server != null:
@@ -57,6 +61,43 @@ func get_name() -> String:
 ## True when the open device is the simulated one (its hand can be moved).
 func is_simulated() -> bool:
 	return _server != null and get_id() == get_simulated_id()
+
+
+## What the open device can feel and render (input_dof, output, native_rate_hz…; layout:
+## HapticsServer.get_device_capabilities); empty without a device.
+func get_capabilities() -> Dictionary:
+	return _server.call(&"get_device_capabilities") if _server != null else {}
+
+
+## The open device's own account of a fault: [code]{io, reason}[/code] with io
+## [code]"ok"[/code], [code]"disconnected"[/code] or [code]"failed"[/code].
+func get_status() -> Dictionary:
+	return _server.call(&"get_device_status") if _server != null else {"io": "ok", "reason": ""}
+
+
+## True while the open device has stopped rendering on its own (unplugged, I/O error):
+## the servo wrote zero force and the game plays on the keyboard until it is back.
+func is_lost() -> bool:
+	return _server != null and not _servo.get_status().is_empty()
+
+
+## Called every frame by [code]Haptics[/code]: reopens a lost physical device once it is
+## listed as openable again (replugged), and restarts rendering. The simulated device's
+## cable is its own and comes back only with HapticsServer.set_simulated_plugged.
+func poll_reconnect(delta: float) -> void:
+	if not is_lost() or is_simulated():
+		_reconnect_countdown = 0.0
+		return
+	_reconnect_countdown -= delta
+	if _reconnect_countdown > 0.0:
+		return
+	_reconnect_countdown = RECONNECT_INTERVAL_S
+	var id: String = get_id()
+	for present: Dictionary in list_present():
+		if str(present.get("id", "")) == id and present.get("openable", false) == true:
+			if open(id):
+				_servo.start()
+			return
 
 
 ## The open device's force limit in newtons (0 without a device).

@@ -126,6 +126,19 @@ func get_legend_value(component: String) -> Label:
 	return _legend_values.get(component, null)
 
 
+## The HUD's servo line when the servo is not running: why, and what happens now.
+static func servo_stopped_text(servo_status: String, device_status: Dictionary) -> String:
+	if servo_status.is_empty():
+		return "servo off"
+	var reason: String = str(device_status.get("reason", ""))
+	if device_status.get("io", "ok") == "disconnected":
+		return (
+			"device unplugged%s: zero force, playing on the keyboard; plug it back in to resume"
+			% ("" if reason.is_empty() else " (%s)" % reason)
+		)
+	return "servo stopped: %s" % servo_status
+
+
 func _follow_player() -> void:
 	var follow: bool = arrows_at_player and _player != null and is_instance_valid(_player)
 	_world_arrows.visible = follow
@@ -149,8 +162,7 @@ func _refresh_labels() -> void:
 			"servo %d Hz  ·  p99 %.2f ms%s" % [roundi(rate), p99, "  ·  RT" if realtime else ""]
 		)
 	else:
-		var status: String = Haptics.servo.get_status()
-		_servo.text = "servo off" if status.is_empty() else "servo stopped: %s" % status
+		_servo.text = servo_stopped_text(Haptics.servo.get_status(), Haptics.device.get_status())
 
 
 func _build_legend() -> void:

@@ -277,6 +277,12 @@ ServoStats HapticsEngine::stats() const {
 	stats.telemetry_drops = output.telemetry_drops;
 	stats.clamped_ticks = output.clamped_ticks;
 	stats.non_finite_ticks = output.non_finite_ticks;
+	if (impl_->device) {
+		const DeviceIoStats io = impl_->device->io_stats();
+		stats.device_io_cycles = io.cycles;
+		stats.device_command_age_mean_s = io.command_age_mean_s;
+		stats.device_command_age_max_s = io.command_age_max_s;
+	}
 	return stats;
 }
 

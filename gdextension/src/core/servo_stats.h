@@ -71,6 +71,11 @@ struct ServoStats {
 	uint64_t telemetry_drops = 0; // Telemetry ring full (the game drains too rarely).
 	uint64_t clamped_ticks = 0; // Ticks whose output was scaled to the force limit.
 	uint64_t non_finite_ticks = 0; // Ticks where a non-finite force was zeroed.
+	// Devices with their own I/O thread (device_exchange.h): transfers done, and how old the
+	// servo's force was when it went on the wire (the latency the hand-over adds).
+	uint64_t device_io_cycles = 0;
+	double device_command_age_mean_s = 0.0;
+	double device_command_age_max_s = 0.0;
 };
 
 class ServoStatsRecorder {

@@ -90,6 +90,15 @@ struct DeviceStatus {
 	char reason[REASON_CAPACITY] = {};
 };
 
+// A device with its own I/O thread (device_exchange.h): how its transfers keep up.
+struct DeviceIoStats {
+	uint64_t cycles = 0; // I/O transfers completed.
+	uint64_t commands_sent = 0; // Commands taken by the I/O side (a slow device skips some).
+	double command_age_mean_s = 0.0; // Servo write -> on the wire.
+	double command_age_max_s = 0.0;
+	double cycle_cost_max_s = 0.0; // Longest single I/O cycle.
+};
+
 class HapticDevice {
 public:
 	virtual ~HapticDevice() = default;
@@ -107,6 +116,8 @@ public:
 	// Game thread, any time. The default reports OK: devices whose I/O runs on the servo
 	// thread report faults through DeviceIo.
 	virtual DeviceStatus status() const { return {}; }
+	// Zeros for devices whose I/O runs inside the servo tick.
+	virtual DeviceIoStats io_stats() const { return {}; }
 
 	// Called once per servo tick before read_state with the tick's period: simulations
 	// integrate here, polled hardware can start a transfer.

@@ -27,14 +27,6 @@
 
 namespace haptics {
 
-struct DeviceIoStats {
-	uint64_t cycles = 0; // I/O transfers completed.
-	uint64_t commands_sent = 0; // Commands taken by the I/O side (a slow device skips some).
-	double command_age_mean_s = 0.0; // Servo write -> on the wire.
-	double command_age_max_s = 0.0;
-	double cycle_cost_max_s = 0.0; // Longest single I/O cycle.
-};
-
 // A servo command and when the servo wrote it (CLOCK_MONOTONIC ns; 0 = never).
 struct StampedCommand {
 	ForceCommand command;

@@ -3,6 +3,7 @@
 #include "devices/device_info.h"
 
 #include <cmath>
+#include <cstdio>
 
 namespace haptics {
 
@@ -89,6 +90,15 @@ DeviceCapabilities SimulatedDevice::capabilities() const {
 	capabilities.physical = false; // No hand to kick: tests and the game start forces at once.
 	capabilities.button_count = 32;
 	return capabilities;
+}
+
+DeviceStatus SimulatedDevice::status() const {
+	DeviceStatus status;
+	if (!plugged()) {
+		status.io = DeviceIo::DISCONNECTED;
+		std::snprintf(status.reason, DeviceStatus::REASON_CAPACITY, "simulated cable pulled");
+	}
+	return status;
 }
 
 const char *SimulatedDevice::name() const {

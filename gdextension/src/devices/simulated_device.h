@@ -61,6 +61,8 @@ public:
 	DeviceIo read_state(DeviceState &r_state) override;
 	DeviceIo write_force(const ForceCommand &p_command) override;
 
+	DeviceStatus status() const override;
+
 	bool has_hand() const override { return true; }
 	// Finite, |target| <= 1 m (beyond the workspace the stylus rests on the boundary).
 	Status set_hand_target(const Vec3 &p_target_m) override;

@@ -284,6 +284,34 @@ gd::Dictionary stats_to_dictionary(const ServoStats &p_stats) {
 	d.set("telemetry_drops", static_cast<int64_t>(p_stats.telemetry_drops));
 	d.set("clamped_ticks", static_cast<int64_t>(p_stats.clamped_ticks));
 	d.set("non_finite_ticks", static_cast<int64_t>(p_stats.non_finite_ticks));
+	d.set("device_io_cycles", static_cast<int64_t>(p_stats.device_io_cycles));
+	d.set("device_command_age_mean_ms", p_stats.device_command_age_mean_s * MS);
+	d.set("device_command_age_max_ms", p_stats.device_command_age_max_s * MS);
+	return d;
+}
+
+gd::Dictionary capabilities_to_dictionary(const DeviceCapabilities &p_capabilities) {
+	gd::Dictionary d = limits_to_dictionary(p_capabilities.limits);
+	d.set("input_dof", static_cast<int64_t>(p_capabilities.input_dof));
+	d.set("output_dof", static_cast<int64_t>(p_capabilities.output_dof));
+	const char *output = p_capabilities.output == ForceOutput::DIRECTIONAL ? "directional"
+			: p_capabilities.output == ForceOutput::VIBRATION			   ? "vibration"
+																		   : "none";
+	d.set("output", output);
+	d.set("native_rate_hz", p_capabilities.native_rate_hz);
+	d.set("has_orientation", p_capabilities.has_orientation);
+	d.set("needs_homing", p_capabilities.needs_homing);
+	d.set("physical", p_capabilities.physical);
+	d.set("button_count", static_cast<int64_t>(p_capabilities.button_count));
+	return d;
+}
+
+gd::Dictionary device_status_to_dictionary(const DeviceStatus &p_status) {
+	gd::Dictionary d;
+	const char *io = p_status.io == DeviceIo::OK ? "ok" : p_status.io == DeviceIo::DISCONNECTED ? "disconnected"
+																								: "failed";
+	d.set("io", io);
+	d.set("reason", std::string(p_status.reason));
 	return d;
 }
 

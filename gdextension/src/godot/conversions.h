@@ -37,5 +37,10 @@ gd::Vector2 to_game(const Vec3 &p_device);
 gd::Dictionary forces_to_dictionary(const ForceComponents &p_forces);
 gd::Dictionary stats_to_dictionary(const ServoStats &p_stats);
 gd::Dictionary limits_to_dictionary(const DeviceLimits &p_limits);
+// Limits plus input_dof, output_dof, output ("directional", "vibration", "none"),
+// native_rate_hz, has_orientation, needs_homing, physical, button_count.
+gd::Dictionary capabilities_to_dictionary(const DeviceCapabilities &p_capabilities);
+// {io: "ok" | "disconnected" | "failed", reason: String}.
+gd::Dictionary device_status_to_dictionary(const DeviceStatus &p_status);
 
 } // namespace haptics::binding

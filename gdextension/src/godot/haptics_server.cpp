@@ -5,7 +5,7 @@
 #include "core/config_fields.h"
 #include "core/coordinates.h"
 #include "core/telemetry.h"
-#include "devices/device_enumeration.h"
+#include "devices/device_factory.h"
 #include "godot/config_dictionary.h"
 #include "godot/conversions.h"
 #include "godot/log.h"
@@ -29,6 +29,9 @@ gd::Dictionary to_dictionary(const DeviceInfo &p_device) {
 	d.set("usage", static_cast<int64_t>(p_device.usage));
 	d.set("known_haptic", p_device.known_haptic);
 	d.set("model", p_device.model);
+	d.set("driver", p_device.driver);
+	d.set("openable", p_device.openable);
+	d.set("unavailable_reason", p_device.unavailable_reason);
 	return d;
 }
 
@@ -45,6 +48,8 @@ void HapticsServer::bind_methods(gd::ClassBinder<HapticsServer> &r_binder) {
 	r_binder.bind_method("get_device_id", &S::get_device_id);
 	r_binder.bind_method("get_device_name", &S::get_device_name);
 	r_binder.bind_method("get_device_limits", &S::get_device_limits);
+	r_binder.bind_method("get_device_capabilities", &S::get_device_capabilities);
+	r_binder.bind_method("get_device_status", &S::get_device_status);
 	r_binder.bind_method("calibrate", &S::calibrate);
 	r_binder.bind_method("set_hand_target", &S::set_hand_target, { "target_m" });
 	r_binder.bind_method("get_hand_target", &S::get_hand_target);
@@ -112,7 +117,7 @@ bool HapticsServer::report(const char *p_method, const Status &p_status) const {
 }
 
 gd::Array HapticsServer::list_devices() {
-	const DeviceList found = haptics::list_devices();
+	const DeviceList found = list_all_devices();
 	last_warnings_ = found.warnings;
 	gd::Array out;
 	for (const DeviceInfo &device : found.devices) {
@@ -122,7 +127,7 @@ gd::Array HapticsServer::list_devices() {
 }
 
 gd::Dictionary HapticsServer::get_device(const std::string &p_id) {
-	const DeviceList found = haptics::list_devices();
+	const DeviceList found = list_all_devices();
 	last_warnings_ = found.warnings;
 	for (const DeviceInfo &device : found.devices) {
 		if (device.id == p_id) {
@@ -154,16 +159,23 @@ bool HapticsServer::open_device(const std::string &p_id) {
 		hand_target_ = {};
 		return true;
 	}
-	const DeviceList found = haptics::list_devices();
+	const DeviceList found = list_all_devices();
 	for (const DeviceInfo &device : found.devices) {
-		if (device.id == p_id) {
-			// Enumeration is real; drivers for physical devices are not written yet, and
-			// pretending otherwise would render nothing while claiming success.
-			HAPTICS_ERROR("open_device: no driver yet for '" + p_id + "' (" +
-					(device.model.empty() ? device.product : device.model) +
-					"); the current device stays open.");
+		if (device.id != p_id) {
+			continue;
+		}
+		std::unique_ptr<HapticDevice> opened;
+		const Status status = open_listed_device(device, DeviceOpenOptions{}, opened);
+		if (!status) {
+			HAPTICS_ERROR("open_device: " + std::string(status.message()) + "; the current device stays open.");
 			return false;
 		}
+		if (!report("open_device", engine_.open_device(std::move(opened)))) {
+			return false;
+		}
+		device_id_ = p_id;
+		hand_target_ = {};
+		return true;
 	}
 	HAPTICS_ERROR("open_device: no device with id '" + p_id + "'; the current device stays open.");
 	return false;
@@ -184,6 +196,14 @@ std::string HapticsServer::get_device_name() const {
 
 gd::Dictionary HapticsServer::get_device_limits() const {
 	return limits_to_dictionary(engine_.device_limits());
+}
+
+gd::Dictionary HapticsServer::get_device_capabilities() const {
+	return engine_.has_device() ? capabilities_to_dictionary(engine_.device_capabilities()) : gd::Dictionary();
+}
+
+gd::Dictionary HapticsServer::get_device_status() const {
+	return device_status_to_dictionary(engine_.device_status());
 }
 
 bool HapticsServer::calibrate() {

@@ -20,9 +20,10 @@ public:
 	static void bind_methods(gd::ClassBinder<HapticsServer> &r_binder);
 
 	// --- Devices ---
-	// Every device present: the simulated one first, then hidapi and libusb devices, each a
-	// Dictionary (id, backend, vendor_id, product_id, path, product, manufacturer, serial,
-	// usage_page, usage, known_haptic, model).
+	// Every device present: the simulated one first, then hidapi, libusb, evdev and
+	// OpenHaptics devices, each a Dictionary (id, backend, vendor_id, product_id, path,
+	// product, manufacturer, serial, usage_page, usage, known_haptic, model, driver,
+	// openable, unavailable_reason).
 	gd::Array list_devices();
 	// The entry of list_devices() with this id; an empty Dictionary (and an error) if none.
 	gd::Dictionary get_device(const std::string &p_id);
@@ -38,6 +39,11 @@ public:
 	std::string get_device_name() const;
 	// max_force_n, max_continuous_force_n, max_stiffness_n_per_m, workspace_radius_m.
 	gd::Dictionary get_device_limits() const;
+	// Limits plus input/output DOF, output kind, native rate, orientation, homing, buttons;
+	// empty without a device.
+	gd::Dictionary get_device_capabilities() const;
+	// {io: "ok" | "disconnected" | "failed", reason}: the device's own account of a fault.
+	gd::Dictionary get_device_status() const;
 	bool calibrate();
 	// Simulated device only: where its hand pulls the stylus, in metres (game axes).
 	bool set_hand_target(gd::Vector2 p_target_m);
