@@ -146,8 +146,17 @@ func save_settings() -> Error:
 func apply() -> void:
 	if not Haptics.is_available() or Haptics.device.get_id() == device_id:
 		return
-	if not _device_present(device_id):
+	var listed: Dictionary = _listed(device_id)
+	if listed.is_empty():
 		_warn("Haptic device '%s' is gone: using the simulated device." % device_id)
+		_open_simulated()
+	elif listed.get("openable", true) != true:
+		_warn(
+			(
+				"Haptic device '%s' cannot be opened: %s. Using the simulated device."
+				% [device_id, listed.get("unavailable_reason", "")]
+			)
+		)
 		_open_simulated()
 	elif not Haptics.device.open(device_id):
 		_warn("Haptic device '%s' did not open: using the simulated device." % device_id)
@@ -169,11 +178,11 @@ func _open_simulated() -> void:
 		Haptics.device.open(simulated)
 
 
-func _device_present(id: String) -> bool:
+func _listed(id: String) -> Dictionary:
 	for device: Dictionary in Haptics.device.list_present():
 		if str(device.get("id", "")) == id:
-			return true
-	return false
+			return device
+	return {}
 
 
 func _warn(message: String) -> void:

@@ -17,6 +17,7 @@ var settings: GameSettings = null
 var dim_background: bool = false
 
 var _device_ids: PackedStringArray = PackedStringArray()
+var _devices: Array[Dictionary] = []
 var _dirty: bool = false
 var _refreshing: bool = false
 
@@ -90,7 +91,8 @@ func refresh() -> void:
 	_refreshing = false
 
 
-## Label of a device entry: the model (or product) and a mark on known haptic devices.
+## Label of a device entry: the model (or product), a mark on known haptic devices, and
+## "(unavailable)" on haptic devices that cannot be opened now (the info line says why).
 static func device_label(device: Dictionary) -> String:
 	var model: String = str(device.get("model", ""))
 	if model.is_empty():
@@ -98,35 +100,37 @@ static func device_label(device: Dictionary) -> String:
 	if model.is_empty():
 		model = str(device.get("id", "?"))
 	var haptic: bool = device.get("known_haptic", false) == true
-	return ("◆ %s" if haptic else "   %s") % model
+	var unavailable: bool = haptic and device.get("openable", true) != true
+	return ("◆ %s" if haptic else "   %s") % model + ("  (unavailable)" if unavailable else "")
 
 
 func _populate_devices() -> void:
 	device_option.clear()
 	_device_ids.clear()
-	var devices: Array[Dictionary] = Haptics.device.list_present()
-	for device: Dictionary in devices:
+	_devices = Haptics.device.list_present()
+	for device: Dictionary in _devices:
 		device_option.add_item(device_label(device))
 		_device_ids.append(str(device.get("id", "")))
-	if devices.is_empty():
+	if _devices.is_empty():
 		device_option.add_item(NO_EXTENSION_TEXT)
 		device_option.disabled = true
 
 
 func _show_device_info() -> void:
 	var index: int = device_option.selected
-	var devices: Array[Dictionary] = Haptics.device.list_present()
-	if index < 0 or index >= devices.size():
+	if index < 0 or index >= _devices.size():
 		_device_info.text = "Force feedback needs the native extension (make build)."
 		return
-	var device: Dictionary = devices[index]
+	var device: Dictionary = _devices[index]
 	var parts: PackedStringArray = PackedStringArray()
 	var product: String = str(device.get("product", ""))
 	if not product.is_empty() and product != str(device.get("model", "")):
 		parts.append(product)
 	parts.append("%s backend" % str(device.get("backend", "?")))
-	var haptic: bool = device.get("known_haptic", false) == true
-	parts.append("◆ known haptic device" if haptic else "not a known haptic device")
+	var driver: String = str(device.get("driver", ""))
+	parts.append("%s driver" % driver if not driver.is_empty() else "no force-feedback driver")
+	if not driver.is_empty() and device.get("openable", false) != true:
+		parts.append("cannot be opened: %s" % str(device.get("unavailable_reason", "")))
 	_device_info.text = "  ·  ".join(parts)
 
 

@@ -32,6 +32,7 @@ struct BackendSoakResult {
 	StatusCode status_after_unplug = StatusCode::OK;
 	DeviceStatus device_status_after_unplug; // What the HUD would show.
 	double peak_total_force_n = 0.0; // Largest |total| the game saw (output snapshots).
+	ServoStats stats_second; // The second run's loop and device I/O figures, before stop.
 };
 
 struct BackendSoakScript {
@@ -91,6 +92,7 @@ inline BackendSoakResult run_backend_soak(HapticsEngine &r_engine, const Backend
 	soak_frames(r_engine, p_script.contact_normal, p_script.seconds_each);
 	const double peak = length(r_engine.forces().total);
 	result.peak_total_force_n = peak > result.peak_total_force_n ? peak : result.peak_total_force_n;
+	result.stats_second = r_engine.stats();
 	r_engine.stop();
 	result.seconds_second = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
 	result.ticks_second = r_engine.stats().ticks;

@@ -169,8 +169,14 @@ TEST_CASE("device io thread: a 250 Hz device under the 1 kHz servo gets the late
 	CHECK(result.peak_total_force_n > 0.1); // The floor pushed back through the exchange.
 	CHECK(wire.zero_on_stop.load()); // Closing wrote zero on the I/O thread.
 	CHECK(wire.last_force_y.load() == 0.0);
+	// The hand-over's latency: how old the servo's force is when the device takes it. At
+	// 250 Hz it is at most one device period plus scheduling; never a queue of stale forces.
+	const ServoStats &stats = result.stats_second;
+	CHECK(stats.device_io_cycles > 0);
+	CHECK(stats.device_command_age_mean_s < 0.5); // Generous: a loaded CI machine.
 	MESSAGE("loopback soak: ", result.ticks_first, " + ", result.ticks_second, " ticks, ", wire.transfers.load(),
-			" transfers at 250 Hz");
+			" transfers at 250 Hz; command age mean ", stats.device_command_age_mean_s * 1e6, " us, max ",
+			stats.device_command_age_max_s * 1e6, " us");
 }
 
 } // namespace haptics
