@@ -1,0 +1,55 @@
+#pragma once
+
+// The Falcon backend's entry points, what device discovery and the binding call:
+//
+//   probe(info)          which enumerated devices this backend drives (libusb 0403:cb48) and
+//                        whether one can be opened now, with the reason the player can act on
+//                        (the udev rule; the firmware file);
+//   open_device(info)    an opened FalconDevice on the real bus (libusb_transport.h);
+//   make_scripted_device a FalconDevice on a ScriptedFalcon (tests, benchmark, headless game).
+//
+// The firmware file is the user's (Novint's license forbids shipping it, FACTS §3.5): a path
+// passed in, else the HAPTICS_FALCON_FIRMWARE environment variable. probe() cannot know
+// whether a Falcon still runs firmware from an earlier session without talking to it, so it
+// asks for the file whenever none is set; open_device() only needs it when the Falcon has
+// no firmware running.
+
+#include "core/status.h"
+#include "devices/device.h"
+#include "devices/device_info.h"
+#include "devices/falcon/falcon_device.h"
+#include "devices/falcon/scripted_falcon.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace haptics::falcon {
+
+inline constexpr const char *FALCON_NO_PERMISSION_REASON =
+		"no permission for the Falcon's USB node: install the udev rule (tools/udev, see README Devices)";
+
+// HAPTICS_FALCON_FIRMWARE, or "" when unset.
+std::string firmware_path_from_environment();
+
+// Handled for backend "libusb" with VID:PID 0403:cb48. p_firmware_path empty: the
+// environment variable.
+DeviceAvailability probe(const DeviceInfo &p_info);
+DeviceAvailability probe(const DeviceInfo &p_info, const std::string &p_firmware_path);
+
+// Opens the Falcon p_info names (uploading the firmware when it needs it) and starts its I/O.
+// r_device is set only on success.
+Status open_device(const DeviceInfo &p_info, std::unique_ptr<HapticDevice> &r_device);
+Status open_device(const DeviceInfo &p_info, const std::string &p_firmware_path, std::unique_ptr<HapticDevice> &r_device);
+
+// A synthetic image for scripted uploads: deterministic pseudo-random bytes, NOT Novint's
+// firmware (which the model never needs: it only echoes and then acts as the firmware).
+std::vector<uint8_t> make_test_firmware_image(size_t p_size = 7914, uint32_t p_seed = 1);
+// The scripted device's defaults: the synthetic image above, no file.
+FalconDeviceConfig scripted_device_config();
+// Not opened yet (HapticsEngine::open_device opens it). p_model must be held by a shared_ptr
+// (ScriptedFalcon hands out transports that share it).
+std::unique_ptr<FalconDevice> make_scripted_device(const std::shared_ptr<ScriptedFalcon> &p_model,
+		const FalconDeviceConfig &p_config = scripted_device_config());
+
+} // namespace haptics::falcon
