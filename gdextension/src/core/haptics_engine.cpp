@@ -123,6 +123,10 @@ SimulatedDevice *HapticsEngine::simulated_device() {
 	return impl_->simulated;
 }
 
+HapticDevice *HapticsEngine::current_device() {
+	return impl_->device.get();
+}
+
 Status HapticsEngine::calibrate() {
 	if (!impl_->device) {
 		return Status::error(StatusCode::NO_DEVICE, "calibrate: no device open");

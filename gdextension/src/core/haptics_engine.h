@@ -71,6 +71,8 @@ public:
 	DeviceStatus device_status() const;
 	// The current device if it is the simulated one (to unplug it in tests), else nullptr.
 	SimulatedDevice *simulated_device();
+	// The current device (nullptr without one); game thread, for what only its class offers.
+	HapticDevice *current_device();
 	Status calibrate(); // Not while rendering.
 
 	// --- Rendering -----------------------------------------------------------------------

@@ -1,5 +1,9 @@
 #include "devices/device_factory.h"
 
+#include "devices/falcon/falcon_backend.h"
+#include "devices/scripted_device.h"
+
+#include <atomic>
 #include <cstdlib>
 #include <string_view>
 
@@ -20,11 +24,82 @@ DeviceAvailability probe_simulated(const DeviceInfo &p_info) {
 	return availability;
 }
 
+Status open_falcon(const DeviceInfo &p_info, const DeviceOpenOptions &p_options, std::unique_ptr<HapticDevice> &r_device) {
+	return falcon::open_device(p_info, p_options.falcon_firmware_path, r_device);
+}
+
+// Scripted devices: each backend's device class over its software model (scripted_device.h).
+struct ScriptedRow {
+	std::string_view driver;
+	const char *model_name;
+	std::unique_ptr<HapticDevice> (*make)(ScriptedModelHooks &r_hooks);
+};
+
+std::unique_ptr<HapticDevice> make_scripted_falcon(ScriptedModelHooks &r_hooks) {
+	std::shared_ptr<falcon::ScriptedFalcon> model = std::make_shared<falcon::ScriptedFalcon>();
+	model->set_device_position(Vec3{});
+	r_hooks.set_position = [model](const Vec3 &p_position) { model->set_device_position(p_position); };
+	r_hooks.set_plugged = [model](bool p_plugged) { p_plugged ? model->replug() : model->unplug(); };
+	return falcon::make_scripted_device(model);
+}
+
+DeviceAvailability probe_scripted(const DeviceInfo &p_info);
+
 // The first row whose probe handles a device drives it; order matters only where two
 // backends could claim one device.
 constexpr BackendRow BACKENDS[] = {
 	{ DRIVER_SIMULATED, probe_simulated, nullptr },
+	{ "scripted", probe_scripted, nullptr }, // Opened through SCRIPTED below.
+	{ DRIVER_FALCON, falcon::probe, open_falcon },
 };
+
+constexpr ScriptedRow SCRIPTED[] = {
+	{ DRIVER_FALCON, "Novint Falcon (scripted)", make_scripted_falcon },
+};
+constexpr size_t SCRIPTED_COUNT = sizeof(SCRIPTED) / sizeof(SCRIPTED[0]);
+
+// One cable per scripted driver, for the whole process: unplugging survives a reopen.
+struct Cable {
+	std::atomic<bool> plugged{ true };
+};
+Cable scripted_cables[SCRIPTED_COUNT];
+
+const ScriptedRow *find_scripted(const DeviceInfo &p_info, size_t *r_index = nullptr) {
+	if (p_info.backend != BACKEND_SCRIPTED) {
+		return nullptr;
+	}
+	for (size_t i = 0; i < SCRIPTED_COUNT; ++i) {
+		if (p_info.id == std::string(SCRIPTED_ID_PREFIX) + std::string(SCRIPTED[i].driver)) {
+			if (r_index) {
+				*r_index = i;
+			}
+			return &SCRIPTED[i];
+		}
+	}
+	return nullptr;
+}
+
+DeviceAvailability probe_scripted(const DeviceInfo &p_info) {
+	DeviceAvailability availability;
+	size_t index = 0;
+	availability.handled = find_scripted(p_info, &index) != nullptr;
+	availability.openable = availability.handled && scripted_cables[index].plugged.load();
+	availability.reason = availability.openable ? "" : "unplugged (scripted cable)";
+	return availability;
+}
+
+void append_scripted_devices(std::vector<DeviceInfo> &r_devices) {
+	for (const ScriptedRow &row : SCRIPTED) {
+		DeviceInfo info;
+		info.id = std::string(SCRIPTED_ID_PREFIX) + std::string(row.driver);
+		info.backend = BACKEND_SCRIPTED;
+		info.path = info.id;
+		info.product = row.model_name;
+		info.model = row.model_name;
+		info.known_haptic = true;
+		r_devices.push_back(std::move(info));
+	}
+}
 
 } // namespace
 
@@ -52,12 +127,27 @@ void probe_devices(std::vector<DeviceInfo> &r_devices) {
 
 DeviceList list_all_devices() {
 	DeviceList list = list_devices();
+	if (scripted_devices_enabled()) {
+		append_scripted_devices(list.devices);
+	}
 	probe_devices(list.devices);
+	for (DeviceInfo &info : list.devices) {
+		if (info.backend == BACKEND_SCRIPTED) {
+			info.driver = info.id.substr(SCRIPTED_ID_PREFIX.size());
+		}
+	}
 	return list;
 }
 
 Status open_listed_device(const DeviceInfo &p_info, const DeviceOpenOptions &p_options,
 		std::unique_ptr<HapticDevice> &r_device) {
+	size_t index = 0;
+	if (const ScriptedRow *row = find_scripted(p_info, &index)) {
+		ScriptedModelHooks hooks;
+		std::unique_ptr<HapticDevice> inner = row->make(hooks);
+		r_device = std::make_unique<ScriptedDevice>(std::move(inner), std::move(hooks), scripted_cables[index].plugged);
+		return Status::success();
+	}
 	for (const BackendRow &backend : BACKENDS) {
 		if (backend.open == nullptr || !backend.probe(p_info).handled) {
 			continue;

@@ -19,7 +19,6 @@
 
 namespace haptics {
 
-inline constexpr std::string_view DRIVER_SIMULATED = "simulated";
 inline constexpr std::string_view SCRIPTED_ID_PREFIX = "scripted:";
 inline constexpr const char *SCRIPTED_DEVICES_VARIABLE = "HAPTICS_SCRIPTED_DEVICES";
 

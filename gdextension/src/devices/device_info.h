@@ -12,6 +12,15 @@ namespace haptics {
 inline constexpr std::string_view BACKEND_SIMULATED = "simulated";
 inline constexpr std::string_view BACKEND_HIDAPI = "hidapi";
 inline constexpr std::string_view BACKEND_LIBUSB = "libusb";
+inline constexpr std::string_view BACKEND_SCRIPTED = "scripted"; // device_factory.h
+
+// Driver names (DeviceInfo::driver): which code renders a device.
+inline constexpr std::string_view DRIVER_SIMULATED = "simulated";
+inline constexpr std::string_view DRIVER_HID_PID = "hid-pid";
+inline constexpr std::string_view DRIVER_EVDEV = "evdev";
+inline constexpr std::string_view DRIVER_FALCON = "falcon";
+inline constexpr std::string_view DRIVER_OPENHAPTICS = "openhaptics";
+inline constexpr std::string_view DRIVER_DUALSENSE = "dualsense";
 
 inline constexpr std::string_view SIMULATED_DEVICE_ID = "simulated";
 inline constexpr std::string_view SIMULATED_DEVICE_MODEL = "Simulated 3-DOF device (Omni-like)";

@@ -6,6 +6,7 @@
 #include "core/coordinates.h"
 #include "core/telemetry.h"
 #include "devices/device_factory.h"
+#include "devices/scripted_device.h"
 #include "godot/config_dictionary.h"
 #include "godot/conversions.h"
 #include "godot/log.h"
@@ -224,13 +225,18 @@ gd::Vector2 HapticsServer::get_hand_target() const {
 }
 
 bool HapticsServer::set_simulated_plugged(bool p_plugged) {
-	SimulatedDevice *device = engine_.simulated_device();
-	if (device == nullptr) {
-		HAPTICS_ERROR("set_simulated_plugged: the current device is not the simulated one.");
-		return false;
+	// The simulated device's cable, or a scripted device's (which stays unplugged across
+	// reopen attempts, like a real one).
+	if (SimulatedDevice *simulated = engine_.simulated_device()) {
+		simulated->set_plugged(p_plugged);
+		return true;
 	}
-	device->set_plugged(p_plugged);
-	return true;
+	if (auto *scripted = dynamic_cast<ScriptedDevice *>(engine_.current_device())) {
+		scripted->set_plugged(p_plugged);
+		return true;
+	}
+	HAPTICS_ERROR("set_simulated_plugged: the current device is neither simulated nor scripted.");
+	return false;
 }
 
 bool HapticsServer::start(double p_rate_hz) {

@@ -48,7 +48,8 @@ public:
 	// Simulated device only: where its hand pulls the stylus, in metres (game axes).
 	bool set_hand_target(gd::Vector2 p_target_m);
 	gd::Vector2 get_hand_target() const;
-	// Simulated device only: unplug (false) or replug it, to exercise disconnect handling.
+	// Simulated or scripted device only: unplug (false) or replug it, to exercise disconnect
+	// handling.
 	bool set_simulated_plugged(bool p_plugged);
 
 	// --- Rendering ---
