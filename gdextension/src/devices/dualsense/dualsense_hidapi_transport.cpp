@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <cstring>
 #include <cwchar>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
 #include <unistd.h>
 
 namespace haptics::dualsense {
@@ -34,6 +36,43 @@ bool is_disconnect_errno(int p_errno) {
 			p_errno == ENOENT;
 }
 
+enum class NodeCheck {
+	HIDRAW,
+	MISSING,
+	NO_PERMISSION,
+	NOT_HIDRAW,
+};
+
+// hidapi 0.13.1's hid_open_path crashes (SIGSEGV in free) when the path is a character
+// device that is not hidraw (seen with /dev/null on this machine), so a path that did not
+// come from enumeration is checked first: a character device whose sysfs subsystem is
+// "hidraw" (or, without sysfs, whose name starts with "hidraw").
+NodeCheck check_node(const char *p_path, int &r_errno) {
+	struct stat info {};
+	if (::stat(p_path, &info) != 0) {
+		r_errno = errno;
+		return errno == EACCES || errno == EPERM ? NodeCheck::NO_PERMISSION : NodeCheck::MISSING;
+	}
+	if (!S_ISCHR(info.st_mode)) {
+		return NodeCheck::NOT_HIDRAW;
+	}
+	char link_path[64];
+	std::snprintf(link_path, sizeof(link_path), "/sys/dev/char/%u:%u/subsystem", major(info.st_rdev), minor(info.st_rdev));
+	char target[256];
+	const ssize_t length = ::readlink(link_path, target, sizeof(target) - 1);
+	const char *name = p_path;
+	if (length > 0) {
+		target[length] = '\0';
+		name = target;
+	}
+	const char *slash = std::strrchr(name, '/');
+	const char *base = slash != nullptr ? slash + 1 : name;
+	if (length > 0) {
+		return std::strcmp(base, "hidraw") == 0 ? NodeCheck::HIDRAW : NodeCheck::NOT_HIDRAW;
+	}
+	return std::strncmp(base, "hidraw", 6) == 0 ? NodeCheck::HIDRAW : NodeCheck::NOT_HIDRAW;
+}
+
 } // namespace
 
 HidapiTransport::HidapiTransport(std::string p_path) :
@@ -47,6 +86,21 @@ Status HidapiTransport::open() {
 	close();
 	if (path_.empty()) {
 		return Status::error(StatusCode::INVALID_ARGUMENT, "DualSense: empty hidraw path");
+	}
+	int node_errno = 0;
+	switch (check_node(path_.c_str(), node_errno)) {
+		case NodeCheck::MISSING:
+			return Status::error(StatusCode::NO_DEVICE, "DualSense: no device at '%s' (%s)", path_.c_str(),
+					std::strerror(node_errno));
+		case NodeCheck::NO_PERMISSION: {
+			char reason[224];
+			std::snprintf(reason, sizeof(reason), PERMISSION_REASON_FORMAT, path_.c_str());
+			return Status::error(StatusCode::DEVICE_ERROR, "DualSense: %s", reason);
+		}
+		case NodeCheck::NOT_HIDRAW:
+			return Status::error(StatusCode::DEVICE_ERROR, "DualSense: '%s' is not a hidraw device node", path_.c_str());
+		case NodeCheck::HIDRAW:
+			break;
 	}
 	if (hid_init() != 0) {
 		narrow_into(hid_error(nullptr), "unknown error", error_, sizeof(error_));

@@ -13,6 +13,9 @@
 // anything else as FAILED. hidapi allocates its error text on failures only; a successful
 // call does not allocate.
 //
+// open() checks the path is a hidraw character device before handing it to hidapi: hidapi
+// 0.13.1 crashes in hid_open_path on other character devices (e.g. /dev/null).
+//
 // hid_init() is called at open; hid_exit() never (device enumeration calls it; on hidraw it
 // only frees hidapi's global error text).
 

@@ -108,7 +108,14 @@ ScriptedPadCounters ScriptedDualSense::counters() const {
 	counters.sequence_errors = sequence_errors_.load(std::memory_order_relaxed);
 	counters.input_reports = input_reports_.load(std::memory_order_relaxed);
 	counters.feature_reads = feature_reads_.load(std::memory_order_relaxed);
+	counters.max_motor = max_motor_.load(std::memory_order_relaxed);
+	counters.max_trigger_strength = max_trigger_strength_.load(std::memory_order_relaxed);
 	return counters;
+}
+
+void ScriptedDualSense::begin_session() {
+	have_sequence_ = false;
+	poll_burst_ = 0;
 }
 
 void ScriptedDualSense::inject_input(const uint8_t *p_report, size_t p_size) {
@@ -212,6 +219,16 @@ TransportIo ScriptedDualSense::receive_output(const uint8_t *p_report, size_t p_
 	std::memcpy(working_.last_report, p_report, p_size);
 	working_.last_report_size = p_size;
 	held_.store(working_);
+	// One writer at a time: load + store is enough for the maxima.
+	const uint32_t motor = std::max(working_.motor_left, working_.motor_right);
+	if (motor > max_motor_.load(std::memory_order_relaxed)) {
+		max_motor_.store(motor, std::memory_order_relaxed);
+	}
+	const uint32_t strength = static_cast<uint32_t>(
+			std::max(trigger_feedback_strength(working_.right_trigger), trigger_feedback_strength(working_.left_trigger)));
+	if (strength > max_trigger_strength_.load(std::memory_order_relaxed)) {
+		max_trigger_strength_.store(strength, std::memory_order_relaxed);
+	}
 	reports_accepted_.fetch_add(1, std::memory_order_relaxed);
 	bytes_accepted_.fetch_add(p_size, std::memory_order_relaxed);
 	return TransportIo::OK;
@@ -320,6 +337,7 @@ public:
 		if (!pad_->plugged()) {
 			return Status::error(StatusCode::NO_DEVICE, "DualSense: no device at '%s' (No such file or directory)", location_);
 		}
+		pad_->begin_session();
 		open_ = true;
 		return Status::success();
 	}

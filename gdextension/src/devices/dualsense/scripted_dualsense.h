@@ -16,6 +16,8 @@
 //    is exercised the way hidraw's queue would.
 //  - Feature report 0x20 (firmware info) carries the scripted update version at bytes 44..45
 //    (on BT with a seed-0xA3 CRC), or fails when scripted to.
+//  - The BT sequence nibble is checked within a session (from a transport's open): a new
+//    host process starts its own count, so a jump between sessions is not an error.
 //  - unplug(): every call then fails as hidapi does on hidraw (DISCONNECTED, its texts), and
 //    open() fails until replug().
 //
@@ -68,6 +70,8 @@ struct ScriptedPadCounters {
 	uint64_t sequence_errors = 0; // BT: byte 1 not the previous sequence + 1 (mod 16).
 	uint64_t input_reports = 0;
 	uint64_t feature_reads = 0;
+	uint32_t max_motor = 0; // Largest motor byte applied (either motor, as on the wire).
+	uint32_t max_trigger_strength = 0; // Largest feedback strength applied (either trigger).
 };
 
 class ScriptedDualSense {
@@ -107,6 +111,8 @@ public:
 	void clear_history();
 
 	// --- The pad's side of the transport (dualsense_transport.h) ------------------------------
+	// A transport opened the pad: a new host session (the BT sequence check starts over).
+	void begin_session();
 	TransportIo receive_output(const uint8_t *p_report, size_t p_size, const char *&r_error);
 	TransportIo produce_input(uint8_t *r_buffer, size_t p_capacity, size_t &r_size, const char *&r_error);
 	TransportIo produce_feature(uint8_t p_report_id, uint8_t *r_buffer, size_t p_capacity, size_t &r_size,
@@ -130,6 +136,8 @@ private:
 	std::atomic<uint64_t> sequence_errors_{ 0 };
 	std::atomic<uint64_t> input_reports_{ 0 };
 	std::atomic<uint64_t> feature_reads_{ 0 };
+	std::atomic<uint32_t> max_motor_{ 0 };
+	std::atomic<uint32_t> max_trigger_strength_{ 0 };
 	// Touched by the transport's caller only (one thread at a time).
 	ScriptedPadHeld working_;
 	bool have_sequence_ = false;
