@@ -37,8 +37,10 @@
 //
 // Reports: the pad holds what it was told, so a report goes out only when a motor level, a
 // trigger block or the lightbar changed, or every keep_alive_s (re-asserting everything in
-// case a Bluetooth report was lost). Rumble bits ride on every report; triggers and lights
-// only when they changed (re-applying a trigger effect may restart it on the pad).
+// case a Bluetooth report was lost). Rumble bits ride on every report (each one states the
+// motor levels, zero included); trigger and light fields only when they changed or at the
+// keep-alive, so a rumble decay does not re-apply the trigger effect 250 times a second
+// (whether re-sending an unchanged effect restarts it is unknown: a real pad would tell).
 //
 // INPUT: the left stick is the input vector. x = (raw - 128) / 127, y = -(raw - 128) / 127
 // (the pad's y grows downward, ours up), clamped to [-1, 1], times the nominal radius, so
