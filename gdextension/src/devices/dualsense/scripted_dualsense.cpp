@@ -123,7 +123,7 @@ void ScriptedDualSense::inject_input(const uint8_t *p_report, size_t p_size) {
 		return;
 	}
 	Injected &slot = injected_[(injected_next_ + injected_count_) % std::size(injected_)];
-	slot.size = std::min(p_size, sizeof(slot.bytes));
+	slot.size = p_report != nullptr ? std::min(p_size, sizeof(slot.bytes)) : 0;
 	if (slot.size > 0) {
 		std::memcpy(slot.bytes, p_report, slot.size);
 	}
