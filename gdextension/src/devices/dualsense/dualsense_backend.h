@@ -1,0 +1,59 @@
+#pragma once
+
+// Entry points of the DualSense backend (FACTS §5): which enumerated devices it drives,
+// opening one over hidapi, and a device over a scripted pad (tests, demos, CI).
+//
+//   probe(info)        handled: backend "hidapi", VID 054C, PID 0CE6 (DualSense) or 0DF2
+//                      (Edge). Openable unless the hidraw node is missing or we may not read
+//                      and write it (then the reason names the path and the udev rule).
+//   open_device(info)  probe, then a DualSenseDevice over a HidapiTransport on info.path,
+//                      opened. The caller hands it to HapticsEngine::open_device, whose
+//                      open() re-opens it cleanly (open() is idempotent: close, then open).
+//
+// Coexistence: with the kernel's hid-playstation bound (Linux >= 5.12) the kernel also
+// writes output reports through the same pad (LEDs at start-up, its own sequence on BT). Ours
+// go through hidraw beside it; the pad applies whichever came last, field by field.
+
+#include "core/status.h"
+#include "devices/device.h"
+#include "devices/device_info.h"
+#include "devices/dualsense/dualsense_device.h"
+#include "devices/dualsense/scripted_dualsense.h"
+
+#include <cstdint>
+#include <memory>
+
+namespace haptics::dualsense {
+
+inline constexpr uint16_t SONY_VENDOR_ID = 0x054C;
+inline constexpr uint16_t DUALSENSE_PRODUCT_ID = 0x0CE6;
+inline constexpr uint16_t DUALSENSE_EDGE_PRODUCT_ID = 0x0DF2;
+
+// True for the two pads; r_model (optional) says which.
+bool is_dualsense(uint16_t p_vendor_id, uint16_t p_product_id, DualSenseModel *r_model = nullptr);
+
+// The verdict given the result of access(path, R_OK | W_OK): 0, or the errno it failed with.
+// Pure, for tests (this machine runs the tests as root, where access() always succeeds).
+DeviceAvailability availability_for(const DeviceInfo &p_info, int p_access_errno);
+
+DeviceAvailability probe(const DeviceInfo &p_info);
+
+// UNSUPPORTED when probe() does not handle the device; the probe's reason (DEVICE_ERROR, or
+// NO_DEVICE when the node is gone) when it is not openable; else the open device or open()'s
+// Status. r_device is only set on success.
+Status open_device(const DeviceInfo &p_info, std::unique_ptr<HapticDevice> &r_device, const DualSenseConfig &p_config = {});
+
+// A DualSense device over p_pad (not opened; the engine opens it). The pad's options give
+// the link (USB or Bluetooth) and model (DualSense or Edge).
+std::unique_ptr<DualSenseDevice> make_scripted_device(std::shared_ptr<ScriptedDualSense> p_pad,
+		const DualSenseConfig &p_config = {});
+
+// Convenience: a new scripted pad on p_bus and a device over it.
+struct ScriptedDualSenseSetup {
+	std::shared_ptr<ScriptedDualSense> pad;
+	std::unique_ptr<DualSenseDevice> device;
+};
+ScriptedDualSenseSetup make_scripted_device(Bus p_bus, const ScriptedDualSenseOptions &p_options = {},
+		const DualSenseConfig &p_config = {});
+
+} // namespace haptics::dualsense

@@ -1,0 +1,65 @@
+#pragma once
+
+// The real transport: hidapi on Linux hidraw (HAPI-lib; FACTS §1.8). One hid_device opened
+// by path, set non-blocking; writes are output reports, reads poll the hidraw queue.
+//
+// Bus: hidapi 0.13 added hid_device_info::bus_type (and hid_get_device_info on an open
+// device); we use it when the headers have it, else bus() is UNKNOWN and the device infers
+// the link from the first input report (dualsense_input.h bus_from_input_report).
+//
+// Unplugged vs other errors: hidapi returns -1 and keeps a text (for hidraw, strerror of the
+// failed write or "unexpected poll error (device disconnected)" from a read). errno ENODEV,
+// EIO, ENXIO, ESHUTDOWN or EPIPE, or the hidraw node gone from /dev, counts as DISCONNECTED;
+// anything else as FAILED. hidapi allocates its error text on failures only; a successful
+// call does not allocate.
+//
+// open() checks the path is a hidraw character device before handing it to hidapi: hidapi
+// 0.13.1 crashes in hid_open_path on other character devices (e.g. /dev/null).
+//
+// hid_init() is called at open; hid_exit() never (device enumeration calls it; on hidraw it
+// only frees hidapi's global error text).
+
+#include "devices/dualsense/dualsense_transport.h"
+
+#include <string>
+
+struct hid_device_;
+
+namespace haptics::dualsense {
+
+// The reason shown when the hidraw node exists but we may not open it (FACTS §1.8: the
+// systemd uaccess rule covers input joysticks, not hidraw). printf format, one %s: the path.
+inline constexpr const char *PERMISSION_REASON_FORMAT =
+		"no permission for %s: install the udev rule (tools/udev, see README Devices)";
+
+class HidapiTransport final : public DualSenseTransport {
+public:
+	explicit HidapiTransport(std::string p_path);
+	~HidapiTransport() override;
+
+	HidapiTransport(const HidapiTransport &) = delete;
+	HidapiTransport &operator=(const HidapiTransport &) = delete;
+
+	Status open() override;
+	void close() override;
+	bool is_open() const override { return device_ != nullptr; }
+	Bus bus() const override { return bus_; }
+
+	TransportIo write_output(const uint8_t *p_report, size_t p_size) override;
+	TransportIo read_input(uint8_t *r_buffer, size_t p_capacity, size_t &r_size, int p_timeout_ms = 0) override;
+	TransportIo get_feature(uint8_t p_report_id, uint8_t *r_buffer, size_t p_capacity, size_t &r_size) override;
+
+	const char *error_text() const override { return error_; }
+	const char *location() const override { return path_.c_str(); }
+
+private:
+	// Records why p_call failed (hidapi's text, errno) and classifies it.
+	TransportIo fail(const char *p_call, int p_errno);
+
+	std::string path_;
+	hid_device_ *device_ = nullptr;
+	Bus bus_ = Bus::UNKNOWN;
+	char error_[160] = {};
+};
+
+} // namespace haptics::dualsense
