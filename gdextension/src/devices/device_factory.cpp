@@ -1,5 +1,6 @@
 #include "devices/device_factory.h"
 
+#include "devices/dualsense/dualsense_backend.h"
 #include "devices/falcon/falcon_backend.h"
 #include "devices/scripted_device.h"
 
@@ -43,6 +44,22 @@ std::unique_ptr<HapticDevice> make_scripted_falcon(ScriptedModelHooks &r_hooks) 
 	return falcon::make_scripted_device(model);
 }
 
+// A stick's deflection is its position over its nominal radius (capabilities()).
+std::unique_ptr<HapticDevice> make_scripted_dualsense(ScriptedModelHooks &r_hooks) {
+	dualsense::ScriptedDualSenseSetup setup = dualsense::make_scripted_device(dualsense::Bus::USB);
+	std::shared_ptr<dualsense::ScriptedDualSense> pad = setup.pad;
+	const double radius = setup.device->capabilities().limits.workspace_radius_m;
+	r_hooks.set_position = [pad, radius](const Vec3 &p_position) {
+		pad->set_stick_deflection(p_position.x / radius, p_position.y / radius);
+	};
+	r_hooks.set_plugged = [pad](bool p_plugged) { p_plugged ? pad->replug() : pad->unplug(); };
+	return std::move(setup.device);
+}
+
+Status open_dualsense(const DeviceInfo &p_info, const DeviceOpenOptions &, std::unique_ptr<HapticDevice> &r_device) {
+	return dualsense::open_device(p_info, r_device);
+}
+
 DeviceAvailability probe_scripted(const DeviceInfo &p_info);
 
 // The first row whose probe handles a device drives it; order matters only where two
@@ -51,10 +68,12 @@ constexpr BackendRow BACKENDS[] = {
 	{ DRIVER_SIMULATED, probe_simulated, nullptr },
 	{ "scripted", probe_scripted, nullptr }, // Opened through SCRIPTED below.
 	{ DRIVER_FALCON, falcon::probe, open_falcon },
+	{ DRIVER_DUALSENSE, dualsense::probe, open_dualsense },
 };
 
 constexpr ScriptedRow SCRIPTED[] = {
 	{ DRIVER_FALCON, "Novint Falcon (scripted)", make_scripted_falcon },
+	{ DRIVER_DUALSENSE, "Sony DualSense (scripted, USB)", make_scripted_dualsense },
 };
 constexpr size_t SCRIPTED_COUNT = sizeof(SCRIPTED) / sizeof(SCRIPTED[0]);
 

@@ -79,8 +79,8 @@ public:
 	DualSenseModel model() const { return model_; }
 	uint16_t update_version() const { return update_version_; } // 0 = unknown.
 	RumbleRecipe rumble_recipe_in_use() const { return recipe_; }
-	DualSenseIoStats io_stats() const { return io_.stats(); }
-	DeviceIoStats exchange_stats() const { return exchange_.stats(); }
+	DualSenseIoStats pad_io_stats() const { return io_.stats(); }
+	DeviceIoStats io_stats() const override { return exchange_.stats(); }
 
 private:
 	Status find_bus();
