@@ -11,7 +11,9 @@
 #include <thread>
 #include <vector>
 
-namespace haptics::evdev::test {
+namespace haptics::evdev_test {
+
+using namespace haptics::evdev;
 
 // struct ff_effect for FF_CONSTANT: type 0x52 @0, id @2, direction @4, replay.length @10,
 // level @16; everything else zero (FACTS §2).
@@ -77,4 +79,4 @@ bool wait_until(Condition p_condition, double p_timeout_s = 2.0) {
 	return p_condition();
 }
 
-} // namespace haptics::evdev::test
+} // namespace haptics::evdev_test

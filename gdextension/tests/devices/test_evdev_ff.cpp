@@ -56,7 +56,7 @@ TEST_CASE("evdev ff_effect: FF_CONSTANT, id -1, direction 0x4000, level 0x4000, 
 		0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, // union tail
 	};
 	CHECK(bytes_of(bytes) == golden);
-	CHECK(bytes_of(bytes) == test::expected_constant_effect(-1, 0x4000, 0x4000));
+	CHECK(bytes_of(bytes) == evdev_test::expected_constant_effect(-1, 0x4000, 0x4000));
 }
 
 TEST_CASE("evdev ff_effect: explicit bytes equal <linux/input.h>'s struct for every field") {
@@ -91,7 +91,7 @@ TEST_CASE("evdev ff_effect: explicit bytes equal <linux/input.h>'s struct for ev
 TEST_CASE("evdev input_event: play, stop and gain are 24 bytes with type/code/value at 16/18/20") {
 	InputEventBytes play;
 	encode_input_event(EVDEV_EV_FF, 3, 1, play);
-	CHECK(std::vector<uint8_t>(play.begin(), play.end()) == test::expected_event(0x15, 3, 1));
+	CHECK(std::vector<uint8_t>(play.begin(), play.end()) == evdev_test::expected_event(0x15, 3, 1));
 	const std::vector<uint8_t> gain_golden = { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, //
 		0x15, 0x00, 0x60, 0x00, 0xff, 0xff, 0x00, 0x00 };
 	InputEventBytes gain;

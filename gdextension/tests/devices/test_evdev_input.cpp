@@ -27,15 +27,15 @@ std::vector<uint8_t> events(std::initializer_list<std::vector<uint8_t>> p_events
 }
 
 std::vector<uint8_t> abs_event(uint16_t p_code, int32_t p_value) {
-	return test::expected_event(EVDEV_EV_ABS, p_code, p_value);
+	return evdev_test::expected_event(EVDEV_EV_ABS, p_code, p_value);
 }
 
 std::vector<uint8_t> key_event(uint16_t p_code, int32_t p_value) {
-	return test::expected_event(EVDEV_EV_KEY, p_code, p_value);
+	return evdev_test::expected_event(EVDEV_EV_KEY, p_code, p_value);
 }
 
 std::vector<uint8_t> syn(uint16_t p_code = EVDEV_SYN_REPORT) {
-	return test::expected_event(EVDEV_EV_SYN, p_code, 0);
+	return evdev_test::expected_event(EVDEV_EV_SYN, p_code, 0);
 }
 
 EvdevInputLayout stick_layout() {
@@ -149,8 +149,8 @@ TEST_CASE("evdev decoder: values commit at SYN_REPORT; y is negated; buttons pre
 TEST_CASE("evdev decoder: unknown types/codes are counted and skipped; a partial event is never read") {
 	EvdevInputDecoder decoder;
 	decoder.configure(stick_layout());
-	std::vector<uint8_t> bytes = events({ test::expected_event(0x04, 0x04, 589825), // EV_MSC MSC_SCAN
-			abs_event(0x05, 77), key_event(30, 1), test::expected_event(EVDEV_EV_SYN, 9, 0), abs_event(EVDEV_ABS_X, -32767),
+	std::vector<uint8_t> bytes = events({ evdev_test::expected_event(0x04, 0x04, 589825), // EV_MSC MSC_SCAN
+			abs_event(0x05, 77), key_event(30, 1), evdev_test::expected_event(EVDEV_EV_SYN, 9, 0), abs_event(EVDEV_ABS_X, -32767),
 			syn() });
 	bytes.resize(bytes.size() + 13, 0xee); // 13 bytes of a torn event.
 	decoder.feed(bytes.data(), bytes.size());

@@ -41,13 +41,13 @@ void start(Started &r_started, ScriptedEvdevScript p_script = scripted_joystick_
 void check_upload(const ScriptedEvdevCall &p_call, int16_t p_id, uint16_t p_direction, int16_t p_level) {
 	CHECK(p_call.kind == Kind::IOCTL);
 	CHECK(p_call.request == 0x40304580u);
-	CHECK(p_call.bytes == test::expected_constant_effect(p_id, p_direction, p_level));
+	CHECK(p_call.bytes == evdev_test::expected_constant_effect(p_id, p_direction, p_level));
 	CHECK(p_call.result == 0);
 }
 
 void check_write(const ScriptedEvdevCall &p_call, uint16_t p_code, int32_t p_value) {
 	CHECK(p_call.kind == Kind::WRITE);
-	CHECK(p_call.bytes == test::expected_event(0x15, p_code, p_value));
+	CHECK(p_call.bytes == evdev_test::expected_event(0x15, p_code, p_value));
 	CHECK(p_call.result == 24);
 }
 
@@ -65,7 +65,7 @@ TEST_CASE("evdev sequence: features of the PID joystick (constant, gain, no auto
 TEST_CASE("evdev sequence: start = gain 0xFFFF, upload id -1 level 0, play id 1 (no autocentre offered)") {
 	Started s;
 	start(s);
-	const auto calls = test::ff_calls(s.kernel->calls());
+	const auto calls = evdev_test::ff_calls(s.kernel->calls());
 	REQUIRE(calls.size() == 3);
 	check_write(calls[0], 0x60, 0xffff);
 	check_upload(calls[1], -1, 0, 0);
@@ -80,7 +80,7 @@ TEST_CASE("evdev sequence: start = gain 0xFFFF, upload id -1 level 0, play id 1 
 TEST_CASE("evdev sequence: a wheel offering FF_AUTOCENTER gets autocentre 0 before the upload") {
 	Started s;
 	start(s, scripted_wheel_script());
-	const auto calls = test::ff_calls(s.kernel->calls());
+	const auto calls = evdev_test::ff_calls(s.kernel->calls());
 	REQUIRE(calls.size() == 4);
 	check_write(calls[0], 0x60, 0xffff);
 	check_write(calls[1], 0x61, 0);
@@ -107,14 +107,14 @@ TEST_CASE("evdev sequence: the id the kernel writes back is used for play, updat
 	CHECK(s.effect.id() == 2);
 	REQUIRE(s.effect.update({ 0x4000, 0x1000 }) == 0);
 	REQUIRE(s.effect.stop_and_erase() == 0);
-	const auto calls = test::ff_calls(s.kernel->calls());
+	const auto calls = evdev_test::ff_calls(s.kernel->calls());
 	REQUIRE(calls.size() == 7);
 	check_write(calls[2], 2, 1);
 	check_upload(calls[3], 2, 0x4000, 0x1000);
 	check_upload(calls[4], 2, 0, 0);
 	check_write(calls[5], 2, 0);
 	CHECK(calls[6].request == 0x40044581u);
-	CHECK(calls[6].bytes == test::int_bytes(2));
+	CHECK(calls[6].bytes == evdev_test::int_bytes(2));
 	CHECK(s.kernel->effects_in_use() == 2); // The other client's stay.
 }
 
@@ -123,19 +123,19 @@ TEST_CASE("evdev sequence golden: a level update is ONE EVIOCSFF with the same i
 	start(s);
 	s.kernel->clear_calls();
 	REQUIRE(s.effect.update({ 0x4000, 0x2000 }) == 0);
-	auto calls = test::ff_calls(s.kernel->calls());
+	auto calls = evdev_test::ff_calls(s.kernel->calls());
 	REQUIRE(calls.size() == 1);
 	check_upload(calls[0], 0, 0x4000, 0x2000);
 
 	s.kernel->clear_calls();
 	REQUIRE(s.effect.update({ 0x4000, 0x2001 }) == 0); // Level only.
-	calls = test::ff_calls(s.kernel->calls());
+	calls = evdev_test::ff_calls(s.kernel->calls());
 	REQUIRE(calls.size() == 1);
 	check_upload(calls[0], 0, 0x4000, 0x2001);
 
 	s.kernel->clear_calls();
 	REQUIRE(s.effect.update({ 0xc000, 0x2001 }) == 0); // Direction only.
-	calls = test::ff_calls(s.kernel->calls());
+	calls = evdev_test::ff_calls(s.kernel->calls());
 	REQUIRE(calls.size() == 1);
 	check_upload(calls[0], 0, 0xc000, 0x2001);
 	CHECK(s.kernel->rendered().playing == 1); // Still playing: updated in place.
@@ -160,12 +160,12 @@ TEST_CASE("evdev sequence: stop = level 0 upload, EV_FF id value 0, EVIOCRMFF id
 	REQUIRE(s.effect.update({ 0x4000, 0x7fff }) == 0);
 	s.kernel->clear_calls();
 	CHECK(s.effect.stop_and_erase() == 0);
-	const auto calls = test::ff_calls(s.kernel->calls());
+	const auto calls = evdev_test::ff_calls(s.kernel->calls());
 	REQUIRE(calls.size() == 3);
 	check_upload(calls[0], 0, 0, 0);
 	check_write(calls[1], 0, 0);
 	CHECK(calls[2].request == 0x40044581u);
-	CHECK(calls[2].bytes == test::int_bytes(0));
+	CHECK(calls[2].bytes == evdev_test::int_bytes(0));
 	CHECK(calls[2].result == 0);
 	CHECK(s.kernel->effects_in_use() == 0);
 	CHECK(s.kernel->rendered().playing == 0);
@@ -220,7 +220,7 @@ TEST_CASE("evdev sequence: a failing play erases the uploaded effect; unplugged 
 	Status status = effect.start(*s.kernel, s.fd, s.features, "/dev/input/event7");
 	CHECK(std::string(status.message()) == "/dev/input/event7: playing the constant force failed: Input/output error (EIO)");
 	CHECK(s.kernel->effects_in_use() == 0);
-	const auto calls = test::ff_calls(s.kernel->calls());
+	const auto calls = evdev_test::ff_calls(s.kernel->calls());
 	REQUIRE(calls.size() >= 2);
 	CHECK(calls.back().request == EVDEV_EVIOCRMFF);
 
