@@ -120,8 +120,7 @@ TEST_CASE("evdev enumeration: lists FF_CONSTANT nodes only, in event order, with
 	CHECK(wheel.vendor_id == 0x1209);
 	CHECK(wheel.product_id == 0xffb0);
 	CHECK_FALSE(wheel.openable);
-	CHECK(wheel.unavailable_reason == (sysfs.dev_input() / "event12").string() +
-					" is not present (ENOENT): the device is unplugged or the path is stale");
+	CHECK(wheel.unavailable_reason == (sysfs.dev_input() / "event12").string() + " is not present (ENOENT): the device is unplugged or the path is stale");
 }
 
 TEST_CASE("evdev enumeration: ids are stable across calls") {

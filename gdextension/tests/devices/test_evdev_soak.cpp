@@ -91,8 +91,7 @@ TEST_CASE("evdev soak: 1 kHz servo through the scripted kernel, unplug, replug, 
 	// The end: zero, stop, erase, close on the second fd; nothing left rendering.
 	std::vector<ScriptedEvdevCall> tail;
 	for (const ScriptedEvdevCall &call : calls) {
-		if (call.fd == second_fd && (call.kind == Kind::WRITE || call.kind == Kind::CLOSE ||
-											(call.kind == Kind::IOCTL && (call.request == EVDEV_EVIOCSFF || call.request == EVDEV_EVIOCRMFF)))) {
+		if (call.fd == second_fd && (call.kind == Kind::WRITE || call.kind == Kind::CLOSE || (call.kind == Kind::IOCTL && (call.request == EVDEV_EVIOCSFF || call.request == EVDEV_EVIOCRMFF)))) {
 			tail.push_back(call);
 		}
 	}
