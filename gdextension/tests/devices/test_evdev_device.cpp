@@ -148,6 +148,21 @@ TEST_CASE("evdev device: unplug -> DISCONNECTED with a reason; reopen fails clea
 	REQUIRE(device->read_state(state) == DeviceIo::OK);
 }
 
+TEST_CASE("evdev device: open() after an unplug, without close(), starts afresh on the new node") {
+	auto kernel = std::make_shared<ScriptedEvdevKernel>();
+	auto device = make_scripted_device(kernel);
+	REQUIRE(device->open().ok());
+	kernel->set_plugged(false);
+	DeviceState state;
+	REQUIRE(evdev_test::wait_until([&] { return device->read_state(state) == DeviceIo::DISCONNECTED; }));
+	kernel->set_plugged(true);
+	REQUIRE(device->open().ok());
+	CHECK(device->status().io == DeviceIo::OK);
+	CHECK(kernel->open_fds() == 1); // The dead fd was closed, a new one opened.
+	CHECK(kernel->effects_in_use() == 1);
+	CHECK(device->read_state(state) == DeviceIo::OK);
+}
+
 TEST_CASE("evdev device: another I/O error -> FAILED with strerror, and the device is left at rest") {
 	auto kernel = std::make_shared<ScriptedEvdevKernel>();
 	auto device = make_scripted_device(kernel);

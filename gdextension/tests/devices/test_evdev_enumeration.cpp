@@ -123,10 +123,13 @@ TEST_CASE("evdev enumeration: lists FF_CONSTANT nodes only, in event order, with
 	CHECK(wheel.unavailable_reason == (sysfs.dev_input() / "event12").string() + " is not present (ENOENT): the device is unplugged or the path is stale");
 }
 
-TEST_CASE("evdev enumeration: ids are stable across calls") {
+TEST_CASE("evdev enumeration: ids are stable across calls; without phys, udev's by-path name") {
 	FakeSysfs sysfs;
 	sysfs.add(HID_PARENT, "input5", "event7", "300040000 0", "Stick", "usb-0000:00:14.0-2/input0");
 	sysfs.add("virtual", "input20", "event12", "300040000 0", "Virtual wheel", "");
+	fs::create_directories(sysfs.dev_input() / "by-path");
+	fs::create_symlink("../event12", sysfs.dev_input() / "by-path/platform-vhci-event-joystick");
+	fs::create_symlink("../event5", sysfs.dev_input() / "by-path/pci-0000:00:14.0-usb-0:9:1.0-event");
 	std::vector<DeviceInfo> first;
 	std::vector<DeviceInfo> second;
 	std::vector<std::string> warnings;
@@ -134,6 +137,8 @@ TEST_CASE("evdev enumeration: ids are stable across calls") {
 	enumerate_evdev_devices(second, warnings, sysfs.class_input().string(), sysfs.dev_input().string());
 	REQUIRE(first.size() == 2);
 	REQUIRE(second.size() == 2);
+	CHECK(first[0].id == "evdev:usb-0000:00:14.0-2/input0");
+	CHECK(first[1].id == "evdev:platform-vhci-event-joystick");
 	CHECK(first[0].id == second[0].id);
 	CHECK(first[1].id == second[1].id);
 	CHECK(first[0].id != first[1].id);

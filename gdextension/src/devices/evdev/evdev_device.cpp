@@ -74,9 +74,10 @@ EvdevDevice::~EvdevDevice() {
 }
 
 Status EvdevDevice::open() {
-	if (open_) {
+	if (open_ && exchange_.status().io == DeviceIo::OK) {
 		return Status::success();
 	}
+	release();
 	if (!sys_) {
 		return Status::error(StatusCode::INVALID_ARGUMENT, "evdev device '%s': no syscall layer", config_.path.c_str());
 	}

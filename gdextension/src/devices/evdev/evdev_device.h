@@ -70,8 +70,9 @@ public:
 	EvdevDevice(std::shared_ptr<EvdevSyscalls> p_sys, EvdevDeviceConfig p_config);
 	~EvdevDevice() override;
 
-	// Idempotent. Opens the node, checks FF_CONSTANT, reads the axes, starts the effect
-	// (evdev_effect.h) and the I/O thread.
+	// Opens the node, checks FF_CONSTANT, reads the axes, starts the effect (evdev_effect.h)
+	// and the I/O thread. Idempotent while healthy; after an I/O failure (unplugged) it
+	// closes and opens afresh.
 	Status open() override;
 	void close() override;
 	bool is_open() const override { return open_; }
@@ -88,8 +89,6 @@ public:
 	EvdevShape shape() const { return mapping_.shape; }
 	const EvdevDeviceConfig &config() const { return config_; }
 	DeviceIoStats io_stats() const { return exchange_.stats(); }
-	// For tests, while the I/O thread is stopped (before open or after close/failure).
-	const EvdevInputDecoder &input() const { return input_; }
 
 private:
 	DeviceIo io_cycle(DeviceExchange &r_exchange, double p_dt_s) override;

@@ -74,6 +74,26 @@ bool is_hid_device_dir(const fs::path &p_dir) {
 	return has_hid_device_name(p_dir.filename().string());
 }
 
+// udev's /dev/input/by-path link to p_event (e.g. "pci-0000:00:14.0-usb-0:2:1.0-event-joystick"):
+// as stable as phys, for the nodes whose driver set no phys. "" when there is none.
+std::string by_path_name(const std::string &p_dev_root, const std::string &p_event) {
+	std::error_code error;
+	fs::directory_iterator links(fs::path(p_dev_root) / "by-path", error);
+	if (error) {
+		return {};
+	}
+	std::string best;
+	for (const fs::directory_entry &link : links) {
+		const fs::path target = fs::read_symlink(link.path(), error);
+		const std::string name = link.path().filename().string();
+		// Sorted choice: the directory order is arbitrary, the id must not be.
+		if (!error && target.filename() == p_event && (best.empty() || name < best)) {
+			best = name;
+		}
+	}
+	return best;
+}
+
 } // namespace
 
 std::string evdev_hid_device_sysfs_dir(const std::string &p_sysfs_root, const std::string &p_event_name) {
@@ -126,8 +146,11 @@ void enumerate_evdev_devices(std::vector<DeviceInfo> &r_devices, std::vector<std
 			continue; // No force feedback, or rumble only.
 		}
 		DeviceInfo info;
-		const std::string phys = read_attribute(device / "phys");
-		info.id = "evdev:" + (phys.empty() ? event : phys);
+		std::string stable = read_attribute(device / "phys");
+		if (stable.empty()) {
+			stable = by_path_name(p_dev_root, event);
+		}
+		info.id = "evdev:" + (stable.empty() ? event : stable);
 		info.backend = BACKEND_EVDEV;
 		info.driver = DRIVER_EVDEV;
 		info.path = p_dev_root + "/" + event;

@@ -7,7 +7,8 @@
 //
 // Each DeviceInfo: backend and driver "evdev"; id "evdev:<phys>" (the kernel's physical
 // path, e.g. "usb-0000:00:14.0-2/input0": stable while the device stays in the same
-// port; "evdev:eventN" when the driver set none); path "<dev root>/eventN"; vendor/product
+// port), else "evdev:<udev's /dev/input/by-path name>", else "evdev:eventN" (not stable
+// across replugs: a last resort); path "<dev root>/eventN"; vendor/product
 // from device/id; product from device/name; serial from device/uniq; openable and
 // unavailable_reason from probe() (evdev_backend.h).
 
