@@ -63,31 +63,29 @@ Status EvdevConstantForce::start(EvdevSyscalls &r_sys, int p_fd, const EvdevFfFe
 	sys_ = &r_sys;
 	fd_ = p_fd;
 	uploads_ = 0;
-	int result = 0;
-	const char *step = "";
-	if (p_features.gain && (result = write_event(EVDEV_FF_GAIN, 0xffff)) < 0) {
-		step = "setting the gain (FF_GAIN)";
-	} else if (p_features.autocenter && (result = write_event(EVDEV_FF_AUTOCENTER, 0)) < 0) {
-		step = "turning autocentre off (FF_AUTOCENTER)";
-	} else {
-		FfConstantEffect effect;
-		if ((result = upload(effect)) < 0) {
-			step = "uploading the constant force (EVIOCSFF)";
-		} else if (effect.id < 0) {
-			result = -EINVAL;
-			step = "uploading the constant force (the kernel returned no effect id)";
-		} else {
-			effect_ = effect;
-			started_ = true;
-			if ((result = write_event(static_cast<uint16_t>(effect_.id), 1)) < 0) {
-				step = "playing the constant force";
-			}
-		}
-	}
-	if (result < 0) {
+	const auto failed = [&](int p_error, const char *p_step) {
 		stop_and_erase();
-		return Status::error(result == -ENODEV ? StatusCode::DEVICE_DISCONNECTED : StatusCode::DEVICE_ERROR,
-				"%s: %s failed: %s (%s)", p_path, step, errno_text(result), errno_name(result));
+		return Status::error(p_error == -ENODEV ? StatusCode::DEVICE_DISCONNECTED : StatusCode::DEVICE_ERROR,
+				"%s: %s failed: %s (%s)", p_path, p_step, errno_text(p_error), errno_name(p_error));
+	};
+	int result = 0;
+	if (p_features.gain && (result = write_event(EVDEV_FF_GAIN, 0xffff)) < 0) {
+		return failed(result, "setting the gain (FF_GAIN)");
+	}
+	if (p_features.autocenter && (result = write_event(EVDEV_FF_AUTOCENTER, 0)) < 0) {
+		return failed(result, "turning autocentre off (FF_AUTOCENTER)");
+	}
+	FfConstantEffect effect; // id -1, level 0, infinite: nothing felt until the first update.
+	if ((result = upload(effect)) < 0) {
+		return failed(result, "uploading the constant force (EVIOCSFF)");
+	}
+	if (effect.id < 0) {
+		return failed(-EINVAL, "uploading the constant force (the kernel returned no effect id)");
+	}
+	effect_ = effect;
+	started_ = true;
+	if ((result = write_event(static_cast<uint16_t>(effect_.id), 1)) < 0) {
+		return failed(result, "playing the constant force");
 	}
 	return Status::success();
 }
