@@ -1,0 +1,73 @@
+#include "devices/evdev/evdev_backend.h"
+
+namespace haptics::evdev {
+
+DeviceAvailability probe(const DeviceInfo &p_info, EvdevSyscalls &r_sys) {
+	DeviceAvailability availability;
+	if (p_info.backend != BACKEND_EVDEV) {
+		return availability;
+	}
+	availability.handled = true;
+	if (p_info.path.empty()) {
+		availability.reason = "no /dev/input/eventN path for this device";
+		return availability;
+	}
+	const char *path = p_info.path.c_str();
+	const int fd = r_sys.open_device(path);
+	if (fd < 0) {
+		availability.reason = evdev_open_error(fd, path).message();
+		return availability;
+	}
+	EvdevFfFeatures features;
+	Status status = query_ff_features(r_sys, fd, path, features);
+	if (status) {
+		status = require_constant_force(features, path);
+	}
+	r_sys.close(fd);
+	if (!status) {
+		availability.reason = status.message();
+		return availability;
+	}
+	availability.openable = true;
+	return availability;
+}
+
+DeviceAvailability probe(const DeviceInfo &p_info) {
+	return probe(p_info, *linux_evdev_syscalls());
+}
+
+EvdevDeviceConfig device_config_for(const DeviceInfo &p_info) {
+	EvdevDeviceConfig config;
+	config.path = p_info.path;
+	config.model = !p_info.model.empty() ? p_info.model : p_info.product;
+	return config;
+}
+
+Status open_device(const DeviceInfo &p_info, const std::shared_ptr<EvdevSyscalls> &p_sys,
+		std::unique_ptr<HapticDevice> &r_device) {
+	if (p_info.backend != BACKEND_EVDEV) {
+		return Status::error(StatusCode::INVALID_ARGUMENT, "device '%s' belongs to backend '%s', not evdev",
+				p_info.id.c_str(), p_info.backend.c_str());
+	}
+	auto device = std::make_unique<EvdevDevice>(p_sys, device_config_for(p_info));
+	const Status opened = device->open();
+	if (!opened) {
+		return opened;
+	}
+	r_device = std::move(device);
+	return Status::success();
+}
+
+Status open_device(const DeviceInfo &p_info, std::unique_ptr<HapticDevice> &r_device) {
+	return open_device(p_info, linux_evdev_syscalls(), r_device);
+}
+
+std::unique_ptr<HapticDevice> make_scripted_device(const std::shared_ptr<ScriptedEvdevKernel> &p_kernel,
+		EvdevDeviceConfig p_config) {
+	if (p_config.path.empty() && p_kernel) {
+		p_config.path = p_kernel->script().path;
+	}
+	return std::make_unique<EvdevDevice>(p_kernel, std::move(p_config));
+}
+
+} // namespace haptics::evdev

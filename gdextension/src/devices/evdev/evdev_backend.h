@@ -1,0 +1,42 @@
+#pragma once
+
+// The evdev backend's entry points, for enumeration, the binding and Settings: whether an
+// enumerated device is ours and openable (probe), opening it (open_device), and the same
+// device over the scripted kernel for tests, the headless Godot test and the benchmark.
+
+#include "core/status.h"
+#include "devices/device.h"
+#include "devices/device_info.h"
+#include "devices/evdev/evdev_device.h"
+#include "devices/evdev/scripted_evdev_kernel.h"
+
+#include <memory>
+#include <string_view>
+
+namespace haptics::evdev {
+
+inline constexpr std::string_view BACKEND_EVDEV = "evdev";
+inline constexpr std::string_view DRIVER_EVDEV = "evdev";
+
+// handled when p_info.backend is "evdev". Opens the node O_RDWR and checks FF_CONSTANT, so
+// `reason` says what the player can do: the udev rule / 'input' group (EACCES), unplugged
+// (ENOENT), "the kernel driver offers no constant force on this device". Closes it again.
+DeviceAvailability probe(const DeviceInfo &p_info);
+DeviceAvailability probe(const DeviceInfo &p_info, EvdevSyscalls &r_sys);
+
+// The device config enumeration implies: the path, the product name as the model.
+EvdevDeviceConfig device_config_for(const DeviceInfo &p_info);
+
+// Makes the device and opens it (EvdevDevice::open() is idempotent, so handing it to
+// HapticsEngine::open_device afterwards is fine). r_device is untouched on failure.
+Status open_device(const DeviceInfo &p_info, std::unique_ptr<HapticDevice> &r_device);
+Status open_device(const DeviceInfo &p_info, const std::shared_ptr<EvdevSyscalls> &p_sys,
+		std::unique_ptr<HapticDevice> &r_device);
+
+// An EvdevDevice over p_kernel, NOT yet opened (HapticsEngine::open_device opens it). An
+// empty p_config.path means the kernel script's path. The test keeps p_kernel to script
+// the stick, unplug it and read what was sent.
+std::unique_ptr<HapticDevice> make_scripted_device(const std::shared_ptr<ScriptedEvdevKernel> &p_kernel,
+		EvdevDeviceConfig p_config = {});
+
+} // namespace haptics::evdev

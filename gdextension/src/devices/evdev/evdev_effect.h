@@ -1,0 +1,77 @@
+#pragma once
+
+// One FF_CONSTANT effect driven through evdev, in the order ff.rst prescribes (FACTS §2):
+//
+//   start:  write {EV_FF, FF_GAIN, 0xFFFF}        if the driver offers FF_GAIN
+//           write {EV_FF, FF_AUTOCENTER, 0}        if it offers FF_AUTOCENTER
+//           EVIOCSFF {FF_CONSTANT, id -1, level 0, length 0 = infinite} -> the kernel's id
+//           write {EV_FF, id, 1}                   play (value = repeat count)
+//   update: EVIOCSFF with the SAME id, only when the quantised (direction, level) changed;
+//           a playing effect is updated in place ("normally not stopped and restarted"),
+//           so an update is one ioctl and no re-play.
+//   stop:   EVIOCSFF level 0, write {EV_FF, id, 0}, EVIOCRMFF id.
+//
+// Why gain 0xFFFF: gain is device-wide and scales every level, and our level is computed
+// as a fraction of the device's full force; a gain left low by another program would make
+// every newton weaker than promised. Why autocentre 0: wheels and some sticks run a
+// spring toward centre in the driver/firmware, which would add to (and fight) the game's
+// own forces. Neither is restored on stop: evdev cannot read the previous value; the
+// driver's default returns when the device is plugged in again.
+//
+// update() runs on the device's I/O thread: no allocation, no lock, no formatting; errors
+// come back as -errno for the caller to report.
+
+#include "core/status.h"
+#include "devices/evdev/evdev_ff.h"
+#include "devices/evdev/evdev_syscalls.h"
+
+#include <cstddef>
+#include <cstdint>
+
+namespace haptics::evdev {
+
+struct EvdevFfFeatures {
+	bool constant = false;
+	bool gain = false;
+	bool autocenter = false;
+	int32_t max_effects = 0; // EVIOCGEFFECTS; 0 when unknown.
+};
+
+// From an EVIOCGBIT(EV_FF) bitmap (either spelling, see evdev_bits.h).
+EvdevFfFeatures ff_features_from_bits(const uint8_t *p_bits, size_t p_size);
+
+// EVIOCGBIT(EV_FF) and EVIOCGEFFECTS on an open fd. Errors name p_path; a driver without
+// FF_CONSTANT is UNSUPPORTED: "the kernel driver offers no constant force on this device".
+Status query_ff_features(EvdevSyscalls &r_sys, int p_fd, const char *p_path, EvdevFfFeatures &r_features);
+Status require_constant_force(const EvdevFfFeatures &p_features, const char *p_path);
+
+class EvdevConstantForce {
+public:
+	// Gain, autocentre, upload, play (the header's sequence). On failure nothing stays
+	// uploaded. p_path only names the device in messages.
+	Status start(EvdevSyscalls &r_sys, int p_fd, const EvdevFfFeatures &p_features, const char *p_path);
+	// One EVIOCSFF with the started id when p_force differs from what the device renders;
+	// 0, or -errno (the device keeps the previous force).
+	int update(const FfConstantForce &p_force);
+	// Best effort, idempotent: zero, stop, erase; returns the first error (0 if none).
+	int stop_and_erase();
+
+	bool started() const { return started_; }
+	int16_t id() const { return effect_.id; }
+	FfConstantForce current() const { return { effect_.direction, effect_.level }; }
+	uint64_t uploads() const { return uploads_; } // EVIOCSFF calls that succeeded.
+
+private:
+	int upload(FfConstantEffect &r_effect);
+	int write_event(uint16_t p_code, int32_t p_value);
+
+	EvdevSyscalls *sys_ = nullptr;
+	int fd_ = -1;
+	FfConstantEffect effect_;
+	bool started_ = false;
+	uint64_t uploads_ = 0;
+	FfEffectBytes bytes_{};
+	InputEventBytes event_{};
+};
+
+} // namespace haptics::evdev
