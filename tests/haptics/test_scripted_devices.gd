@@ -6,7 +6,7 @@ extends TestSuite
 
 const VARIABLE := "HAPTICS_SCRIPTED_DEVICES"
 ## Every driver with a scripted model.
-const SCRIPTED_DRIVERS: Array[String] = ["falcon"]
+const SCRIPTED_DRIVERS: Array[String] = ["falcon", "dualsense", "evdev"]
 
 var server: HapticsServer = null
 

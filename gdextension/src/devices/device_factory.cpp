@@ -1,6 +1,8 @@
 #include "devices/device_factory.h"
 
 #include "devices/dualsense/dualsense_backend.h"
+#include "devices/evdev/evdev_backend.h"
+#include "devices/evdev/evdev_enumeration.h"
 #include "devices/falcon/falcon_backend.h"
 #include "devices/scripted_device.h"
 
@@ -56,6 +58,22 @@ std::unique_ptr<HapticDevice> make_scripted_dualsense(ScriptedModelHooks &r_hook
 	return std::move(setup.device);
 }
 
+std::unique_ptr<HapticDevice> make_scripted_evdev(ScriptedModelHooks &r_hooks) {
+	std::shared_ptr<evdev::ScriptedEvdevKernel> kernel = std::make_shared<evdev::ScriptedEvdevKernel>();
+	std::unique_ptr<HapticDevice> device = evdev::make_scripted_device(kernel);
+	const double radius = device->capabilities().limits.workspace_radius_m;
+	// The stick's axis frame has +y toward the user: our y up is its -y.
+	r_hooks.set_position = [kernel, radius](const Vec3 &p_position) {
+		kernel->set_stick_axes(p_position.x / radius, -p_position.y / radius);
+	};
+	r_hooks.set_plugged = [kernel](bool p_plugged) { kernel->set_plugged(p_plugged); };
+	return device;
+}
+
+Status open_evdev(const DeviceInfo &p_info, const DeviceOpenOptions &, std::unique_ptr<HapticDevice> &r_device) {
+	return evdev::open_device(p_info, r_device);
+}
+
 Status open_dualsense(const DeviceInfo &p_info, const DeviceOpenOptions &, std::unique_ptr<HapticDevice> &r_device) {
 	return dualsense::open_device(p_info, r_device);
 }
@@ -69,11 +87,13 @@ constexpr BackendRow BACKENDS[] = {
 	{ "scripted", probe_scripted, nullptr }, // Opened through SCRIPTED below.
 	{ DRIVER_FALCON, falcon::probe, open_falcon },
 	{ DRIVER_DUALSENSE, dualsense::probe, open_dualsense },
+	{ DRIVER_EVDEV, evdev::probe, open_evdev },
 };
 
 constexpr ScriptedRow SCRIPTED[] = {
 	{ DRIVER_FALCON, "Novint Falcon (scripted)", make_scripted_falcon },
 	{ DRIVER_DUALSENSE, "Sony DualSense (scripted, USB)", make_scripted_dualsense },
+	{ DRIVER_EVDEV, "Force-feedback joystick (scripted, evdev)", make_scripted_evdev },
 };
 constexpr size_t SCRIPTED_COUNT = sizeof(SCRIPTED) / sizeof(SCRIPTED[0]);
 
@@ -146,6 +166,9 @@ void probe_devices(std::vector<DeviceInfo> &r_devices) {
 
 DeviceList list_all_devices() {
 	DeviceList list = list_devices();
+	// The kernel's force-feedback drivers (hid-pidff, wheel drivers) own most FFB devices
+	// and expose them here, not on hidraw.
+	evdev::enumerate_evdev_devices(list.devices, list.warnings);
 	if (scripted_devices_enabled()) {
 		append_scripted_devices(list.devices);
 	}

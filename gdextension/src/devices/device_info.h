@@ -12,6 +12,7 @@ namespace haptics {
 inline constexpr std::string_view BACKEND_SIMULATED = "simulated";
 inline constexpr std::string_view BACKEND_HIDAPI = "hidapi";
 inline constexpr std::string_view BACKEND_LIBUSB = "libusb";
+inline constexpr std::string_view BACKEND_EVDEV = "evdev"; // Linux input event nodes.
 inline constexpr std::string_view BACKEND_SCRIPTED = "scripted"; // device_factory.h
 
 // Driver names (DeviceInfo::driver): which code renders a device.

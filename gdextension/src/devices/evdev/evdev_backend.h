@@ -15,9 +15,6 @@
 
 namespace haptics::evdev {
 
-inline constexpr std::string_view BACKEND_EVDEV = "evdev";
-inline constexpr std::string_view DRIVER_EVDEV = "evdev";
-
 // handled when p_info.backend is "evdev". Opens the node O_RDWR and checks FF_CONSTANT, so
 // `reason` says what the player can do: the udev rule / 'input' group (EACCES), unplugged
 // (ENOENT), "the kernel driver offers no constant force on this device". Closes it again.
