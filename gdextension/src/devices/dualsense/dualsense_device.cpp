@@ -176,19 +176,11 @@ DeviceCapabilities DualSenseDevice::capabilities() const {
 	return capabilities;
 }
 
-DeviceIo DualSenseDevice::read_state(DeviceState &r_state) {
-	if (!open_) {
-		return DeviceIo::FAILED;
-	}
-	return exchange_.read_state(r_state);
-}
-
 DeviceIo DualSenseDevice::write_force(const ForceCommand &p_command) {
-	if (!open_) {
-		return DeviceIo::FAILED;
+	if (open_) {
+		io_.offer_impact(p_command.impact_n); // The transients' peak, for the rumble.
 	}
-	io_.offer_impact(p_command.impact_n);
-	return exchange_.write_command(p_command);
+	return ExchangedDevice::write_force(p_command);
 }
 
 } // namespace haptics::dualsense

@@ -29,6 +29,7 @@
 #include "devices/dualsense/dualsense_io.h"
 #include "devices/dualsense/dualsense_mapping.h"
 #include "devices/dualsense/dualsense_transport.h"
+#include "devices/exchanged_device.h"
 
 #include <memory>
 
@@ -51,7 +52,7 @@ struct DualSenseConfig {
 
 Status validate_dualsense_config(const DualSenseConfig &p_config);
 
-class DualSenseDevice final : public HapticDevice {
+class DualSenseDevice final : public ExchangedDevice {
 public:
 	// p_transport may be null: open() then fails with INVALID_ARGUMENT.
 	DualSenseDevice(std::unique_ptr<DualSenseTransport> p_transport, DualSenseModel p_model,
@@ -64,14 +65,11 @@ public:
 	Status open() override;
 	// Stops the I/O thread (which writes the off report while the pad is reachable).
 	void close() override;
-	bool is_open() const override { return open_; }
 	// Nothing to home: the pad centres its own sticks. NO_DEVICE when not open.
 	Status calibrate() override;
 	DeviceCapabilities capabilities() const override;
 	const char *name() const override { return name_; }
-	DeviceStatus status() const override { return exchange_.status(); }
 
-	DeviceIo read_state(DeviceState &r_state) override;
 	DeviceIo write_force(const ForceCommand &p_command) override;
 
 	// Diagnostics (game thread).
@@ -80,7 +78,6 @@ public:
 	uint16_t update_version() const { return update_version_; } // 0 = unknown.
 	RumbleRecipe rumble_recipe_in_use() const { return recipe_; }
 	DualSenseIoStats pad_io_stats() const { return io_.stats(); }
-	DeviceIoStats io_stats() const override { return exchange_.stats(); }
 
 private:
 	Status find_bus();
@@ -91,9 +88,7 @@ private:
 	DualSenseModel model_;
 	DualSenseConfig config_;
 	DualSenseIo io_;
-	DeviceExchange exchange_;
 	DeviceIoThread thread_;
-	bool open_ = false;
 	Bus bus_ = Bus::UNKNOWN;
 	uint16_t update_version_ = 0;
 	RumbleRecipe recipe_ = RumbleRecipe::IMPROVED;

@@ -232,14 +232,6 @@ DeviceState EvdevDevice::state_from_input() const {
 	return state;
 }
 
-DeviceIo EvdevDevice::read_state(DeviceState &r_state) {
-	return open_ ? exchange_.read_state(r_state) : DeviceIo::FAILED;
-}
-
-DeviceIo EvdevDevice::write_force(const ForceCommand &p_command) {
-	return open_ ? exchange_.write_command(p_command) : DeviceIo::FAILED;
-}
-
 DeviceIo EvdevDevice::fail(DeviceExchange &r_exchange, int p_error, const char *p_doing) {
 	const char *path = config_.path.c_str();
 	if (p_error == -ENODEV) {

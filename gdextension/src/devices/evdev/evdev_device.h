@@ -30,6 +30,7 @@
 #include "devices/evdev/evdev_effect.h"
 #include "devices/evdev/evdev_input.h"
 #include "devices/evdev/evdev_syscalls.h"
+#include "devices/exchanged_device.h"
 
 #include <memory>
 #include <string>
@@ -65,7 +66,7 @@ Status validate_evdev_device_config(const EvdevDeviceConfig &p_config);
 // strerror (DEVICE_ERROR). p_error may be negative.
 Status evdev_open_error(int p_error, const char *p_path);
 
-class EvdevDevice final : public HapticDevice, private DeviceIoWorker {
+class EvdevDevice final : public ExchangedDevice, private DeviceIoWorker {
 public:
 	EvdevDevice(std::shared_ptr<EvdevSyscalls> p_sys, EvdevDeviceConfig p_config);
 	~EvdevDevice() override;
@@ -75,20 +76,14 @@ public:
 	// closes and opens afresh.
 	Status open() override;
 	void close() override;
-	bool is_open() const override { return open_; }
 	// Joysticks and wheels centre themselves (springs, or the driver's calibration): nothing
 	// to do but check the device is open.
 	Status calibrate() override;
 	DeviceCapabilities capabilities() const override;
 	const char *name() const override { return name_; }
-	DeviceStatus status() const override { return exchange_.status(); }
-
-	DeviceIo read_state(DeviceState &r_state) override;
-	DeviceIo write_force(const ForceCommand &p_command) override;
 
 	EvdevShape shape() const { return mapping_.shape; }
 	const EvdevDeviceConfig &config() const { return config_; }
-	DeviceIoStats io_stats() const { return exchange_.stats(); }
 
 private:
 	DeviceIo io_cycle(DeviceExchange &r_exchange, double p_dt_s) override;
@@ -104,13 +99,11 @@ private:
 	EvdevDeviceConfig config_;
 	char name_[128] = "evdev force-feedback device";
 	int fd_ = -1;
-	bool open_ = false;
 	EvdevFfFeatures features_;
 	FfForceMapping mapping_;
 	EvdevConstantForce effect_;
 	EvdevInputDecoder input_;
 	uint8_t read_buffer_[INPUT_READ_BUFFER_SIZE] = {};
-	DeviceExchange exchange_;
 	DeviceIoThread io_thread_;
 };
 

@@ -138,14 +138,6 @@ DeviceCapabilities FalconDevice::capabilities() const {
 	return capabilities;
 }
 
-DeviceIo FalconDevice::read_state(DeviceState &r_state) {
-	return open_ ? exchange_.read_state(r_state) : DeviceIo::FAILED;
-}
-
-DeviceIo FalconDevice::write_force(const ForceCommand &p_command) {
-	return open_ ? exchange_.write_command(p_command) : DeviceIo::FAILED;
-}
-
 FalconIoCounters FalconDevice::io_counters() const {
 	FalconIoCounters counters;
 	counters.cycles = counters_.cycles.load(std::memory_order_relaxed);

@@ -36,6 +36,7 @@
 #include "devices/device.h"
 #include "devices/device_exchange.h"
 #include "devices/device_io_thread.h"
+#include "devices/exchanged_device.h"
 #include "devices/falcon/falcon_codec.h"
 #include "devices/falcon/falcon_firmware_loader.h"
 #include "devices/usb/usb_transport.h"
@@ -79,7 +80,7 @@ struct FalconIoCounters {
 
 using UsbTransportOpener = std::function<Status(std::unique_ptr<usb::UsbTransport> &r_transport)>;
 
-class FalconDevice final : public HapticDevice, private DeviceIoWorker {
+class FalconDevice final : public ExchangedDevice, private DeviceIoWorker {
 public:
 	FalconDevice(UsbTransportOpener p_opener, FalconDeviceConfig p_config);
 	~FalconDevice() override;
@@ -90,20 +91,14 @@ public:
 	// Idempotent while open.
 	Status open() override;
 	void close() override;
-	bool is_open() const override { return open_; }
 	// The Falcon homes when the user moves the grip; this only reports whether it has.
 	Status calibrate() override;
 	DeviceCapabilities capabilities() const override;
 	const char *name() const override { return FALCON_MODEL_NAME; }
-	DeviceStatus status() const override { return exchange_.status(); }
-
-	DeviceIo read_state(DeviceState &r_state) override;
-	DeviceIo write_force(const ForceCommand &p_command) override;
 
 	const FirmwareLoadReport &firmware_report() const { return firmware_report_; }
 	bool firmware_uploaded() const { return firmware_uploaded_; } // By the last open().
 	FalconIoCounters io_counters() const;
-	DeviceIoStats io_stats() const { return exchange_.stats(); }
 
 private:
 	DeviceIo io_cycle(DeviceExchange &r_exchange, double p_dt_s) override;
@@ -117,9 +112,7 @@ private:
 	UsbTransportOpener opener_;
 	FalconDeviceConfig config_;
 	std::unique_ptr<usb::UsbTransport> transport_;
-	DeviceExchange exchange_;
 	DeviceIoThread io_thread_;
-	bool open_ = false;
 	FirmwareLoadReport firmware_report_;
 	bool firmware_uploaded_ = false;
 
