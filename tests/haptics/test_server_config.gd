@@ -73,7 +73,7 @@ func test_every_field_is_in_the_config_with_its_default_and_unit() -> void:
 		sections += 1
 		for key: String in config[section]:
 			assert_true(seen.has(section + "." + key), "%s.%s is in the table" % [section, key])
-	assert_eq(sections, 5)
+	assert_eq(sections, 6)
 
 
 func test_values_read_back_in_their_own_types() -> void:

@@ -3,7 +3,8 @@ extends TestSuite
 ## the issue's two measurements on a real device, a horizontal push into a wall while
 ## standing on a floor and an input pointing away from a wall that is still in contact, each
 ## under the per-contact default and under the paper's normalised sum. Game axes: x right,
-## y down; the floor's normal is UP, a wall on the right has LEFT.
+## y down; the floor's normal is UP, a wall on the right has LEFT. The simulated hand is a
+## relaxed grip, so a force moves it a little: expectations use the input the server reports.
 
 const K := 2.0
 const B := 1.0
@@ -81,17 +82,23 @@ func test_floor_and_wall_the_paper_sum_pushes_at_45_degrees() -> void:
 	_settle(Vector2(0.06, 0.0), _contacts([Vector2.UP, Vector2.LEFT]))
 	var i: Vector2 = server.get_input_vector()
 	var f_n: Vector2 = server.get_forces()["normal"]
-	assert_almost_eq(f_n, Vector2(-K * i.x / 2.0, -K * i.x / 2.0), TOL, "up and left, 45 degrees")
+	var n: Vector2 = (Vector2.UP + Vector2.LEFT).normalized()
+	assert_almost_eq(f_n, -K * n * i.dot(n), TOL, "-k p on the 45 degree normal")
+	assert_almost_eq(f_n.x, f_n.y, TOL, "up and left alike")
+	assert_lt(f_n.y, -0.25, "upward, though the hand pushed sideways")
+	assert_lt(i.y, 0.0, "it even lifts the relaxed hand")
 
 
 func test_pointing_away_from_a_wall_in_contact_pulls_only_under_the_paper_sum() -> void:
-	# The issue's measurement: |i| = 0.47 away from the wall on the right, k = 2.
+	# The issue's measurement: about |i| = 0.47 away from the wall on the right, k = 2.
 	var away: Vector2 = Vector2(-0.047, 0.0)
 	_use("paper_sum", false)
 	_settle(away, _contacts([Vector2.LEFT]))
-	assert_almost_eq(server.get_input_vector().length(), 0.47, 2e-3)
+	var i: Vector2 = server.get_input_vector()
+	assert_almost_eq(i.length(), 0.47, 0.05, "the pull draws the relaxed hand in a little")
 	var pull: Vector2 = server.get_forces()["normal"]
-	assert_almost_eq(pull.x, K * 0.47, 0.01, "paper_sum: +0.94 N into the wall")
+	assert_almost_eq(pull, Vector2(-K * i.x, 0.0), TOL, "paper_sum: k |i| into the wall")
+	assert_gt(pull.x, 0.8)
 	_use("per_contact", false)
 	_settle(away, _contacts([Vector2.LEFT]), 5)
 	assert_almost_eq(server.get_forces()["total"], Vector2.ZERO, TOL, "per_contact: nothing")
@@ -109,7 +116,8 @@ func test_one_physics_frame_of_contact_while_pointing_away_through_the_filter() 
 			var frame: Dictionary = _contacts([Vector2.LEFT]) if tick < TICKS_PER_FRAME else {}
 			assert_true(server.submit_frame(frame))
 			assert_true(server.step(0.001))
-			most = maxf(most, server.get_forces()["total"].x)
+			var total: Vector2 = server.get_forces()["total"]
+			most = maxf(most, total.x)
 		into_wall[model] = most
 	assert_gt(into_wall["paper_sum"], 0.3, "the paper's model pulls the hand into the wall")
 	assert_almost_eq(into_wall["per_contact"], 0.0, 1e-6, "the per-contact model does not")
