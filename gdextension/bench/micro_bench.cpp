@@ -68,6 +68,14 @@ std::vector<MicroResult> run_micro_benchmarks() {
 		const Vec3 i = input_vector(position, 0.1, config.dead_zone);
 		g_sink = g_sink + compute_forces(frame, i, config).continuous.x;
 	}));
+	// The same with the paper's normalised sum (the default above is per_contact).
+	ForceModelConfig paper = config;
+	paper.contact_model = ContactModel::PAPER_SUM;
+	results.push_back(measure("force model, paper_sum contacts", [&](int p_n) {
+		const Vec3 position{ 0.03 + 1e-6 * p_n, -0.02, 0.01 };
+		const Vec3 i = input_vector(position, 0.1, paper.dead_zone);
+		g_sink = g_sink + compute_forces(frame, i, paper).continuous.x;
+	}));
 
 	SmoothingFilter filter;
 	filter.configure(SmoothingConfig{}, 0.001);

@@ -91,4 +91,9 @@ TEST_CASE("config fields: out of range, not finite, wrong kind, each rejected by
 	const ConfigField &update = *find_config_field("constraint", "update");
 	CHECK(update.choices.size() == 2);
 	CHECK(std::string(update.choices[static_cast<size_t>(ProxyUpdate::FRAME_RATE)]) == "frame");
+	const ConfigField &contact_model = *find_config_field("force_model", "contact_model");
+	CHECK(contact_model.choices.size() == 2);
+	CHECK(std::string(contact_model.choices[static_cast<size_t>(ContactModel::PER_CONTACT)]) == "per_contact");
+	CHECK(std::string(contact_model.choices[static_cast<size_t>(ContactModel::PAPER_SUM)]) == "paper_sum");
+	CHECK(contact_model.get(RenderConfig{}) == 0.0); // per_contact is the default.
 }

@@ -1,4 +1,6 @@
-// The movement-based force model, equation by equation, with vectors computed by hand.
+// The movement-based force model, equation by equation, with vectors computed by hand: the
+// paper's literal contact model (PAPER_SUM) for eqs. 1-4, and weight and water, which both
+// models share. The per-contact model and the comparisons are in test_contact_models.cpp.
 
 #include "core/coordinates.h"
 #include "core/force_model.h"
@@ -21,11 +23,13 @@ void check_vec(const Vec3 &p_actual, const Vec3 &p_expected, double p_tolerance 
 	CHECK(std::abs(p_actual.z - p_expected.z) <= p_tolerance);
 }
 
-ForceModelConfig config_with(double p_k, double p_b, double p_gravity = 1.0) {
+ForceModelConfig config_with(double p_k, double p_b, double p_gravity = 1.0,
+		ContactModel p_model = ContactModel::PAPER_SUM) {
 	ForceModelConfig config;
 	config.dead_zone = 0.0;
 	config.gravity_n_per_kg = p_gravity;
 	config.default_contact = ContactMaterial{ p_k, p_b };
+	config.contact_model = p_model;
 	return config;
 }
 
@@ -221,25 +225,29 @@ TEST_CASE("orientation invariance: a wall at any angle gives the same forces alo
 	const double radius = 0.1;
 	const double k = 2.5;
 	const double b = 1.5;
-	for (const double degrees : { 0.0, 30.0, 45.0, 90.0, 135.0, 180.0 }) {
-		CAPTURE(degrees);
-		const double angle = degrees * std::numbers::pi / 180.0;
-		// The wall's normal, given in game space like the probe would.
-		const Vec3 n = game_to_device_direction(std::cos(angle), std::sin(angle));
-		const Vec3 t{ -n.y, n.x, 0.0 }; // Along the wall, in the screen plane.
-		const Vec3 z{ 0.0, 0.0, 1.0 };
-		// Push 0.6 into the wall, slide 0.3 along it and 0.2 in depth: the same motion
-		// relative to the wall at every angle, produced through the device position.
-		const Vec3 position = (n * -0.6 + t * 0.3 + z * 0.2) * radius;
-		const Vec3 i = input_vector(position, radius, 0.0);
-		Frame frame;
-		frame.add_contact(n, ContactMaterial{ k, b });
-		const ForceComponents f = compute_forces(frame, i, config_with(0.0, 0.0));
-		check_vec(f.normal, n * (0.6 * k), 1e-12);
-		check_vec(f.friction, t * (-0.3 * b) + z * (-0.2 * b), 1e-12);
-		CHECK(dot(f.normal, n) == doctest::Approx(1.5));
-		CHECK(length(f.normal) == doctest::Approx(1.5));
-		CHECK(length(f.friction) == doctest::Approx(std::sqrt(0.13) * b));
-		CHECK(std::abs(dot(f.normal, f.friction)) < 1e-12);
+	// One pressed contact: the per-contact model is the paper's (test_contact_models.cpp).
+	for (const ContactModel model : { ContactModel::PAPER_SUM, ContactModel::PER_CONTACT }) {
+		for (const double degrees : { 0.0, 30.0, 45.0, 90.0, 135.0, 180.0 }) {
+			CAPTURE(static_cast<int>(model));
+			CAPTURE(degrees);
+			const double angle = degrees * std::numbers::pi / 180.0;
+			// The wall's normal, given in game space like the probe would.
+			const Vec3 n = game_to_device_direction(std::cos(angle), std::sin(angle));
+			const Vec3 t{ -n.y, n.x, 0.0 }; // Along the wall, in the screen plane.
+			const Vec3 z{ 0.0, 0.0, 1.0 };
+			// Push 0.6 into the wall, slide 0.3 along it and 0.2 in depth: the same motion
+			// relative to the wall at every angle, produced through the device position.
+			const Vec3 position = (n * -0.6 + t * 0.3 + z * 0.2) * radius;
+			const Vec3 i = input_vector(position, radius, 0.0);
+			Frame frame;
+			frame.add_contact(n, ContactMaterial{ k, b });
+			const ForceComponents f = compute_forces(frame, i, config_with(0.0, 0.0, 1.0, model));
+			check_vec(f.normal, n * (0.6 * k), 1e-12);
+			check_vec(f.friction, t * (-0.3 * b) + z * (-0.2 * b), 1e-12);
+			CHECK(dot(f.normal, n) == doctest::Approx(1.5));
+			CHECK(length(f.normal) == doctest::Approx(1.5));
+			CHECK(length(f.friction) == doctest::Approx(std::sqrt(0.13) * b));
+			CHECK(std::abs(dot(f.normal, f.friction)) < 1e-12);
+		}
 	}
 }

@@ -217,6 +217,20 @@ func get_config() -> Dictionary:
 	return _server.call(&"get_config") if _server != null else {}
 
 
+## The name of the value a choice setting has now, e.g. [code]"per_contact"[/code] for
+## [code]get_choice("force_model", "contact_model")[/code]; empty without the extension.
+func get_choice(section: String, key: String) -> String:
+	if _server == null:
+		return ""
+	var field: Dictionary = _config_fields.get("%s.%s" % [section, key], {})
+	var choices: Array = field.get("choices", [])
+	var value: int = int(_setting(section, key))
+	if value < 0 or value >= choices.size():
+		push_error("Haptics.get_choice: %s.%s is not a choice setting." % [section, key])
+		return ""
+	return str(choices[value])
+
+
 ## The force scale's allowed range (from the servo's field table; without the extension
 ## anything finite and not negative).
 func get_force_scale_range() -> Vector2:

@@ -67,3 +67,13 @@ func test_native_constants_and_renderers_by_name() -> void:
 	assert_false(Haptics.set_render_mode(&"joystick"))
 	assert_eq(Haptics.get_render_mode(), &"constraint")
 	assert_eq(Haptics.device.get_simulated_id(), HapticsServer.new().get_simulated_device_id())
+
+
+func test_a_choice_setting_by_its_name() -> void:
+	assert_eq(Haptics.get_choice("force_model", "contact_model"), "per_contact", "the default")
+	assert_true(Haptics.configure("force_model", {"contact_model": "paper_sum"}))
+	assert_eq(Haptics.get_choice("force_model", "contact_model"), "paper_sum")
+	assert_true(Haptics.configure("force_model", {"contact_model": "per_contact"}))
+	assert_eq(Haptics.get_choice("constraint", "update"), "servo")
+	expect_error("not a choice setting")
+	assert_eq(Haptics.get_choice("safety", "force_scale"), "")

@@ -68,7 +68,7 @@ static func json_of(path: String) -> Dictionary:
 ## A valid participant.json record (FORMAT.md) for participant [param id].
 static func meta(id: String, order: Array = ["none", "movement", "constraint"]) -> Dictionary:
 	return {
-		"format_version": 1,
+		"format_version": StudyFormat.format_version,
 		"participant_id": id,
 		"demographics":
 		{

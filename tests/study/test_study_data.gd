@@ -150,6 +150,11 @@ func test_settings_merge_and_report_bad_values() -> void:
 	)
 	assert_eq(config.condition("none")["force_scale"], 0.0)
 	assert_eq(str(config.condition("constraint")["update"]), "servo")
+	assert_eq(str(config.condition("movement")["contact_model"]), "paper_sum", "as the paper")
+	assert_eq(str(config.condition("none")["contact_model"]), "paper_sum")
+	config.merge({"conditions": {"movement": {"contact_model": "per_contact"}}})
+	assert_true(config.is_valid(), ", ".join(config.errors))
+	assert_eq(StudyConfig.choices("conditions.none.contact_model"), StudyFormat.contact_models)
 	config.merge({"conditions": {"movement": {"forces": {"friction": true}}}})
 	assert_true(config.force_enabled("movement", "friction"), "a single force switches")
 	assert_true(config.force_enabled("movement", "normal"), "the others stay")
@@ -165,7 +170,11 @@ func test_settings_merge_and_report_bad_values() -> void:
 				"telemetry_decimation": 9,
 				"bogus": 1,
 				"counterbalancing": "alphabetical",
-				"conditions": {"constraint": {"update": "sometimes"}},
+				"conditions":
+				{
+					"constraint": {"update": "sometimes"},
+					"movement": {"contact_model": "sideways"},
+				},
 				"study_root": "res://study",
 			}
 		)
@@ -176,6 +185,7 @@ func test_settings_merge_and_report_bad_values() -> void:
 	assert_has(text, "unknown setting 'bogus'")
 	assert_has(text, "counterbalancing")
 	assert_has(text, "conditions.constraint.update")
+	assert_has(text, "'conditions.movement.contact_model' must be per_contact or paper_sum")
 	assert_has(text, "study_root")
 
 
@@ -224,7 +234,7 @@ func test_a_resumed_record_keeps_its_integers() -> void:
 	assert_true(store.replace_participant(reread), store.last_error)
 	var text: String = FileAccess.get_file_as_string(store.path_of("participant.json"))
 	assert_false(text.contains(".0,") or text.contains(".0\n"), text)
-	assert_has(text, '"format_version": 1,')
+	assert_has(text, '"format_version": %d,' % StudyFormat.format_version)
 
 
 func test_a_scan_finds_where_to_resume() -> void:
@@ -273,11 +283,13 @@ func test_a_truncated_or_corrupt_file_is_reported() -> void:
 	# A record with a bad value is a problem too, with its line.
 	var trials: String = StudyStore.native_path(store.path_of("trials.csv"))
 	var header: String = ",".join(StudyFormat.trials_columns) + "\n"
-	durable.append(trials, header + "P05,none,maze,0,-1,1,0,0,0,0,0,,x\n")
+	durable.append(trials, header + "P05,none,maze,0,paper_sum,-1,1,0,0,0,0,0,,x\n")
+	durable.append(trials, "P05,movement,maze,0,sum,1,1,0,0,0,0,0,,%s\n" % StudyFormat.timestamp())
 	state = ParticipantState.scan(_root, "P05")
 	var text: String = "\n".join(state.problems)
 	assert_has(text, "P05/trials.csv:2: time_to_goal_s '-1'")
 	assert_has(text, "P05/trials.csv:2: timestamp 'x'")
+	assert_has(text, "P05/trials.csv:3: contact_model 'sum' is not empty or one of")
 
 
 func test_a_broken_participant_json_is_reported() -> void:

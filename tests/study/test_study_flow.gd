@@ -36,7 +36,7 @@ func test_a_scripted_participant_completes_the_study() -> void:
 	var folder: String = _root.path_join("P01")
 	var meta: Dictionary = Support.json_of(folder.path_join("participant.json"))
 	var order: PackedStringArray = ConditionOrder.random_order(12345)
-	assert_eq(meta["format_version"], 1.0)
+	assert_eq(meta["format_version"], float(StudyFormat.format_version))
 	assert_eq(meta["participant_id"], "P01")
 	assert_eq(meta["seed"], 12345.0, "the seed from the settings is recorded")
 	var written: Array = meta["condition_order"]
@@ -173,18 +173,23 @@ func test_latin_square_orders_follow_the_participants_in_the_folder() -> void:
 func test_leaving_the_study_gives_back_the_haptics_settings() -> void:
 	var saved: float = Haptics.force_scale
 	Haptics.force_scale = 0.7
+	var model: String = Haptics.get_choice("force_model", "contact_model")
 	var study: StudyRunner = _study("P06")
 	var in_trial: bool = await wait_until(
 		func() -> bool: return study.phase == StudyRunner.Phase.TRIAL, 15.0
 	)
 	assert_true(in_trial, "a trial runs")
 	assert_false(Haptics.hand_follows_input, "the scripted participant holds the hand")
+	var condition: String = study.current_condition()
+	if not ConditionRig.is_position_control(condition):
+		assert_eq(Haptics.get_choice("force_model", "contact_model"), "paper_sum", condition)
 	study.queue_free()
 	await wait_process_frames(2)
 	assert_almost_eq(Haptics.force_scale, 0.7, 1e-6, "force scale given back")
 	assert_true(Haptics.hand_follows_input, "the mouse moves the hand again")
 	assert_true(Haptics.smoothing_enabled)
 	assert_eq(str(Haptics.get_render_mode()), "movement")
+	assert_eq(Haptics.get_choice("force_model", "contact_model"), model, "contact model given back")
 	Haptics.force_scale = saved
 
 
@@ -231,6 +236,9 @@ func _check_trials(folder: String, order: PackedStringArray, recorded: Array[Tri
 		assert_eq(record["condition"], condition)
 		assert_eq(record["level"], "tiny_maze")
 		assert_eq(record["trial_index"], "0")
+		var model: String = "" if ConditionRig.is_position_control(condition) else "paper_sum"
+		assert_eq(record["contact_model"], model, "%s: the server's contact model" % condition)
+		assert_eq(recorded[i].contact_model, model)
 		assert_eq(record["completed"], "1", "the autopilot reached the goal")
 		for column: String in ["time_to_goal_s", "contact_time_s", "path_length_px"]:
 			assert_true(StudyFormat.is_number(str(record[column])), column)

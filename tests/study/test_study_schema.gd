@@ -47,11 +47,22 @@ func test_fields_are_checked_against_their_column() -> void:
 		["timestamp", "yesterday", "is not a timestamp"],
 		["level", "maze.v2", ""],
 		["participant_id", "P 7", "is not a valid participant id"],
+		["contact_model", "paper_sum", ""],
+		["contact_model", "", ""],
+		["contact_model", "sum", "is not empty or one of per_contact, paper_sum"],
 	]
 	for case: Array in cases:
 		var column: Dictionary = by_name[str(case[0])]
 		var what: String = "%s '%s'" % [case[0], case[1]]
 		assert_eq(StudyFormat.field_problem(column, str(case[1])), str(case[2]), what)
+
+
+func test_the_contact_models_are_the_servers_names() -> void:
+	var names: Array = []
+	for field: Dictionary in HapticsServer.new().get_config_fields():
+		if field["section"] == "force_model" and field["key"] == "contact_model":
+			names = field["choices"]
+	assert_eq(StudyFormat.contact_models, PackedStringArray(names))
 
 
 func test_the_resume_scan_reads_records_by_column_name() -> void:

@@ -20,7 +20,7 @@ from pathlib import Path
 
 from analyze import EXIT_DATA, EXIT_OK, EXIT_USAGE, load_checked
 from schema import CONDITIONS, CRITERIA, DEMOGRAPHICS
-from studydata import Participant
+from studydata import Participant, contact_models_of
 
 TRIAL_AGGREGATES = ("time_to_goal_s", "wall_collisions", "contact_time_s", "path_length_px", "mean_force_n", "max_force_n")
 EXPORT_COLUMNS = (
@@ -42,6 +42,7 @@ EXPORT_COLUMNS = (
     "favourite_vote",
     "trials",
     "trials_completed",
+    "contact_model",
     *(f"{m}_mean" for m in TRIAL_AGGREGATES),
 )
 
@@ -75,6 +76,7 @@ def rows_for(p: Participant) -> list[dict]:
             "favourite_vote": "" if fav is None else _num(1.0 / len(fav) if c in fav else 0.0),
             "trials": len(trials),
             "trials_completed": sum(t["completed"] for t in trials),
+            "contact_model": ";".join(sorted(contact_models_of(trials))),
         }
         for k in CRITERIA:
             row[k] = rating[k] if rating else ""

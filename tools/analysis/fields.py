@@ -10,7 +10,7 @@ import math
 import re
 from datetime import datetime
 
-from schema import CONDITIONS, PATTERNS, RATING_MAX, RATING_MIN, columns
+from schema import CONDITIONS, CONTACT_MODELS, PATTERNS, RATING_MAX, RATING_MIN, columns
 
 ID_RE = re.compile(PATTERNS["id"])
 LEVEL_RE = re.compile(PATTERNS["level"])
@@ -47,6 +47,12 @@ def parse_condition(value: str) -> str:
     return value
 
 
+def parse_contact_model(value: str) -> str:
+    if value != "" and value not in CONTACT_MODELS:
+        raise ValueError(f"unknown contact model {value!r} (expected empty or one of {', '.join(CONTACT_MODELS)})")
+    return value
+
+
 def parse_timestamp(value: str) -> str:
     if not TIMESTAMP_RE.match(value):
         raise ValueError(f"{value!r} is not an RFC 3339 timestamp like 2025-05-01T10:31:07.123Z")
@@ -80,7 +86,8 @@ def parser_for(column: dict):
         return lambda v: parse_int(v, RATING_MIN, RATING_MAX)
     if kind == "telemetry_file":
         return lambda v: v  # checked against the record's condition and trial_index
-    return {"id": parse_id, "level": parse_level, "condition": parse_condition, "timestamp": parse_timestamp}[kind]
+    return {"id": parse_id, "level": parse_level, "condition": parse_condition, "contact_model": parse_contact_model,
+            "timestamp": parse_timestamp}[kind]
 
 
 def parsers_of(table: str) -> dict:

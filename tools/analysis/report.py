@@ -151,6 +151,7 @@ def render(res: dict, figures: dict[str, str]) -> str:
     tm = res["trial_metrics"]
     header = ["Metric"] + [L[c] for c in CONDITIONS]
     rows = [["Trials (completed) / participants"] + [f"{tm[c]['trials']} ({tm[c]['completed']}) / {tm[c]['participants']}" for c in CONDITIONS]]
+    rows.append(["Contact model (trials)"] + [_models(tm[c]["contact_models"]) for c in CONDITIONS])
     for col, label, _ in TRIAL_METRICS:
         rows.append([label] + [f"{_msd(tm[c][col])}, n = {tm[c][col]['n']}" for c in CONDITIONS])
     md += _table(header, rows)
@@ -164,6 +165,13 @@ def render(res: dict, figures: dict[str, str]) -> str:
             md += ["- Warnings (data kept):"] + [f"  - `{w}`" for w in res["warnings"]]
         md += [""]
     return "\n".join(md)
+
+
+def _models(counts: dict[str, int]) -> str:
+    """"paper_sum" or "paper_sum: 8, per_contact: 2"; "n/a" without any (position control)."""
+    if len(counts) == 1:
+        return f"`{next(iter(counts))}`"
+    return ", ".join(f"`{m}`: {n}" for m, n in counts.items()) or "n/a"
 
 
 def _bare_p(p: float) -> str:

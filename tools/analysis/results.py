@@ -10,7 +10,7 @@ import pandas as pd
 
 import stats
 from schema import CONDITIONS, CRITERIA, DEMOGRAPHICS, RATINGS_COLUMNS, TRIALS_COLUMNS
-from studydata import Participant, Study
+from studydata import Participant, Study, contact_models_of
 
 # (column, label, completed trials only)
 TRIAL_METRICS = (
@@ -99,6 +99,7 @@ def compute(study: Study) -> dict:
             "participants": int(sub["participant_id"].nunique()),
             "completed": int(sub["completed"].sum()),
             "levels": sorted(sub["level"].unique().tolist()),
+            "contact_models": dict(sorted(contact_models_of(sub.to_dict("records")).items())),
         }
         for col, _label, completed_only in TRIAL_METRICS:
             values = sub.loc[sub["completed"] == 1, col] if completed_only else sub[col]

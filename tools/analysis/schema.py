@@ -18,6 +18,8 @@ CONDITIONS = tuple(c["id"] for c in SCHEMA["conditions"])
 # The conditions' names for people (participants only ever see "Method N").
 CONDITION_LABELS = {c["id"]: c["name"] for c in SCHEMA["conditions"]}
 COUNTERBALANCING = tuple(SCHEMA["counterbalancing"])
+# The movement renderer's contact models a trial may record (force_model.contact_model).
+CONTACT_MODELS = tuple(SCHEMA["contact_models"])
 CRITERIA = tuple(c["id"] for c in SCHEMA["criteria"])
 CRITERION_TITLES = {c["id"]: c["title"] for c in SCHEMA["criteria"]}
 # The paper's wording of each criterion (Table I).

@@ -9,6 +9,7 @@ always reported. The files are read by json_files.py and csv_files.py.
 
 from __future__ import annotations
 
+from collections import Counter
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -57,7 +58,7 @@ class Study:
     folder: Path
     participants: list[Participant]
     errors: list[Issue] = field(default_factory=list)  # study-level problems
-
+    warnings: list[Issue] = field(default_factory=list)  # study-level doubts
     @property
     def valid_participants(self) -> list[Participant]:
         return [p for p in self.participants if p.valid]
@@ -73,7 +74,7 @@ class Study:
         return out
 
     def all_warnings(self) -> list[Issue]:
-        return [w for p in self.participants for w in p.warnings]
+        return list(self.warnings) + [w for p in self.participants for w in p.warnings]
 
 
 def load_participant(folder: Path) -> Participant:
@@ -116,4 +117,23 @@ def load_study(folder: Path, skip_dirs: tuple[Path, ...] = ()) -> Study:
         study.participants.append(load_participant(entry))
     if not study.participants:
         study.errors.append(Issue(str(folder), None, "no participant folders found"))
+    study.warnings.extend(mixed_contact_models(study.valid_participants, str(folder)))
     return study
+
+
+def contact_models_of(trials: list[dict]) -> Counter:
+    """How many of these trials ran each contact model (trials recording none left out)."""
+    return Counter(t["contact_model"] for t in trials if t["contact_model"] != "")
+
+
+def mixed_contact_models(participants: list[Participant], where: str) -> list[Issue]:
+    """A warning per condition whose trials ran more than one contact model: its trial
+    metrics (forces above all) then mix two renderings."""
+    out = []
+    for c in CONDITIONS:
+        models = contact_models_of([t for p in participants for t in p.trials if t["condition"] == c])
+        if len(models) > 1:
+            counts = ", ".join(f"{m}: {n}" for m, n in sorted(models.items()))
+            out.append(Issue(where, None, f"condition {c!r}: trials ran several contact models ({counts}); "
+                                          "its trial metrics mix them"))
+    return out

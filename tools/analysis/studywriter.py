@@ -95,15 +95,20 @@ def append_rating(folder: Path, pid: str, condition: str, order_index: int, valu
     append_record(folder / RATINGS_FILE, RATINGS_COLUMNS, [pid, condition, order_index, *values, timestamp])
 
 
-def append_trial(folder: Path, pid: str, condition: str, trial_index: int, *, level="maze", time_to_goal_s=30.0,
-                 completed=1, wall_collisions=3, contact_time_s=2.5, path_length_px=1500.0, mean_force_n=0.4,
-                 max_force_n=1.2, telemetry: list | None = None, timestamp=TIMESTAMP) -> None:
+def append_trial(folder: Path, pid: str, condition: str, trial_index: int, *, level="maze", contact_model=None,
+                 time_to_goal_s=30.0, completed=1, wall_collisions=3, contact_time_s=2.5, path_length_px=1500.0,
+                 mean_force_n=0.4, max_force_n=1.2, telemetry: list | None = None, timestamp=TIMESTAMP) -> None:
+    """contact_model None writes what the game writes by default: the study's paper_sum in
+    acceleration control, empty in position control (the constraint condition)."""
+    if contact_model is None:
+        contact_model = "" if condition == "constraint" else "paper_sum"
     tel = ""
     if telemetry is not None:
         tel = telemetry_name(condition, trial_index)
         append_records(folder / tel, TELEMETRY_COLUMNS, telemetry)
     append_record(folder / TRIALS_FILE, TRIALS_COLUMNS,
-                  [pid, condition, level, trial_index, time_to_goal_s, completed, wall_collisions, contact_time_s,
+                  [pid, condition, level, trial_index, contact_model, time_to_goal_s, completed, wall_collisions,
+                   contact_time_s,
                    path_length_px, mean_force_n, max_force_n, tel, timestamp])
 
 

@@ -14,6 +14,21 @@
 
 namespace haptics {
 
+// How the movement renderer turns several contacts into one normal force and friction
+// (force_model.h has the equations of both).
+enum class ContactModel : int32_t {
+	// Each contact pushes back only against the part of the input pressing into it, with its
+	// own material: a floor and a wall give exactly the wall's push-back for a horizontal
+	// push, and pulling away from a contact gives no force. The default, for games.
+	PER_CONTACT = 0,
+	// The paper's literal model: one normal, the normalised sum of the contact normals, and
+	// F_n = -k p whatever the sign of p (it pulls toward a contact the input points away
+	// from). For replicating the paper.
+	PAPER_SUM = 1,
+};
+// Their names, in enum order (what set_config also accepts).
+inline constexpr const char *CONTACT_MODEL_NAMES[] = { "per_contact", "paper_sum" };
+
 struct ForceModelConfig {
 	// Fraction of the workspace radius around the centre that gives no input. Outside it the
 	// input is rescaled so it grows continuously from 0 at the edge.
@@ -23,6 +38,12 @@ struct ForceModelConfig {
 	double gravity_n_per_kg = 1.0;
 	// Radius that maps to |i| = 1; 0 means the device's workspace radius.
 	double input_radius_m = 0.0;
+	ContactModel contact_model = ContactModel::PER_CONTACT;
+	// PER_CONTACT only: a contact's friction fades in linearly while the input presses into
+	// the contacts by less than this (input units), and is the paper's -b r from there on.
+	// Without it friction would jump from 0 to b |r| as the hand crosses a floor's plane.
+	// 0 switches friction fully on at any pressing.
+	double friction_engage = 0.05;
 	ContactMaterial default_contact; // For contacts with use_default_material.
 	ImpactMaterial default_impact; // For impacts with use_default_material.
 };

@@ -1,6 +1,7 @@
 #include "core/force_model.h"
 
 #include "core/coordinates.h"
+#include "core/unilateral_contacts.h"
 
 #include <algorithm>
 
@@ -24,6 +25,43 @@ Vec3 input_vector(const Vec3 &p_position_m, double p_radius_m, double p_dead_zon
 	const double rescaled = (clamped - p_dead_zone) / (1.0 - p_dead_zone);
 	return raw * (rescaled / magnitude);
 }
+
+namespace {
+
+// PAPER_SUM: eqs. 1-4 on the combined contact.
+void paper_sum_forces(const Frame &p_frame, const Vec3 &p_input, const ForceModelConfig &p_config,
+		ForceComponents &r_forces) {
+	const ContactResolution contact = resolve_contacts(p_frame, p_config.default_contact);
+	if (contact.active) {
+		const Vec3 &n = contact.normal;
+		const Vec3 projection = n * (dot(p_input, n) / length_squared(n));
+		const Vec3 rejection = p_input - projection;
+		r_forces.normal = projection * -contact.stiffness;
+		r_forces.friction = rejection * -contact.friction;
+	}
+}
+
+// PER_CONTACT: each contact answers the part of the input it blocks (force_model.h).
+void per_contact_forces(const Frame &p_frame, const Vec3 &p_input, const ForceModelConfig &p_config,
+		ForceComponents &r_forces) {
+	UnilateralContacts contacts;
+	resolve_unilateral(p_frame, p_input, p_config.default_contact, contacts);
+	double rubbing = 0.0; // sum_j b_j min(1, lambda_j / e)
+	const double engage = p_config.friction_engage;
+	for (uint32_t j = 0; j < contacts.count; ++j) {
+		const double push = contacts.pushes[j];
+		if (push > 0.0) {
+			const ContactMaterial &material = contacts.materials[j];
+			r_forces.normal += contacts.normals[j] * (material.stiffness * push);
+			rubbing += material.friction * (engage > 0.0 ? std::min(1.0, push / engage) : 1.0);
+		}
+	}
+	if (rubbing > 0.0) {
+		r_forces.friction = contacts.free * -rubbing;
+	}
+}
+
+} // namespace
 
 ContactResolution resolve_contacts(const Frame &p_frame, const ContactMaterial &p_default_material) {
 	ContactResolution result;
@@ -63,13 +101,13 @@ void compute_forces(const Frame &p_frame, const Vec3 &p_input, const ForceModelC
 		ForceComponents &r_forces) {
 	r_forces.normal = Vec3{};
 	r_forces.friction = Vec3{};
-	const ContactResolution contact = resolve_contacts(p_frame, p_config.default_contact);
-	if (contact.active) {
-		const Vec3 &n = contact.normal;
-		const Vec3 projection = n * (dot(p_input, n) / length_squared(n));
-		const Vec3 rejection = p_input - projection;
-		r_forces.normal = projection * -contact.stiffness;
-		r_forces.friction = rejection * -contact.friction;
+	switch (p_config.contact_model) {
+		case ContactModel::PAPER_SUM:
+			paper_sum_forces(p_frame, p_input, p_config, r_forces);
+			break;
+		case ContactModel::PER_CONTACT:
+			per_contact_forces(p_frame, p_input, p_config, r_forces);
+			break;
 	}
 
 	r_forces.weight = Vec3{};

@@ -89,6 +89,8 @@ void HapticsServer::bind_methods(gd::ClassBinder<HapticsServer> &r_binder) {
 	r_binder.bind_constant("RenderMode", "RENDER_MODE_CONSTRAINT", static_cast<int64_t>(RenderMode::CONSTRAINT));
 	r_binder.bind_constant("ProxyUpdate", "PROXY_UPDATE_SERVO_RATE", static_cast<int64_t>(ProxyUpdate::SERVO_RATE));
 	r_binder.bind_constant("ProxyUpdate", "PROXY_UPDATE_FRAME_RATE", static_cast<int64_t>(ProxyUpdate::FRAME_RATE));
+	r_binder.bind_constant("ContactModel", "CONTACT_MODEL_PER_CONTACT", static_cast<int64_t>(ContactModel::PER_CONTACT));
+	r_binder.bind_constant("ContactModel", "CONTACT_MODEL_PAPER_SUM", static_cast<int64_t>(ContactModel::PAPER_SUM));
 	r_binder.bind_constant("WorkspaceShape", "WORKSPACE_DISC", static_cast<int64_t>(WorkspaceShape::DISC));
 	r_binder.bind_constant("WorkspaceShape", "WORKSPACE_SQUARE", static_cast<int64_t>(WorkspaceShape::SQUARE));
 	const struct {

@@ -9,7 +9,8 @@ extends RefCounted
 ## given to [method merge_file] / [method merge]. Dictionaries merge key by key (so a file
 ## may change only [code]conditions.movement.forces.friction[/code]). A setting takes its
 ## type from the shipped file, except that numbers are whole or bounded only as
-## [member numbers] says; [constant CHOICES] lists the settings with a fixed set of values.
+## [member numbers] says; [constant CHOICES] and [constant CONTACT_MODEL_SETTINGS] list the
+## settings with a fixed set of values.
 ## Unknown keys and values of the wrong type or range are collected in [member errors];
 ## the study refuses to start while there are any.
 ## [codeblock]
@@ -27,6 +28,11 @@ const CHOICES: Dictionary = {
 	"conditions.constraint.update": ["servo", "frame"],
 	"conditions.constraint.workspace": ["disc", "square"],
 }
+## Settings that take one of the data schema's contact models ([member
+## StudyFormat.contact_models]: the trials record the one in effect).
+const CONTACT_MODEL_SETTINGS: Array[String] = [
+	"conditions.none.contact_model", "conditions.movement.contact_model"
+]
 
 ## The numeric settings that are whole numbers ([code]TYPE_INT[/code]) or bounded, by path:
 ## [code][type, lowest, highest][/code], the bounds optional; a number not listed may be
@@ -83,6 +89,8 @@ func merge(values: Dictionary, source: String = "settings") -> void:
 ## The values the setting at [param path] may take, when they are few (see
 ## [constant CHOICES]).
 static func choices(path: String) -> PackedStringArray:
+	if path in CONTACT_MODEL_SETTINGS:
+		return StudyFormat.contact_models
 	var values: Array = CHOICES.get(path, [])
 	return PackedStringArray(values)
 
@@ -209,7 +217,7 @@ func _check_values(source: String) -> void:
 	var servo_rate_hz: float = Haptics.get_constant(&"DEFAULT_RATE_HZ")
 	var decimation_max: int = maxi(1, floori(servo_rate_hz / StudyFormat.telemetry_min_rate_hz))
 	_check_range(source, "telemetry_decimation", _value("telemetry_decimation"), 1, decimation_max)
-	for path: String in CHOICES:
+	for path: String in CHOICES.keys() + CONTACT_MODEL_SETTINGS:
 		var allowed: PackedStringArray = choices(path)
 		if not str(_value(path)) in allowed:
 			errors.append("%s: '%s' must be %s" % [source, path, " or ".join(allowed)])

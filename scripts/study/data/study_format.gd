@@ -19,6 +19,9 @@ static var format_version: int = _schema.get("format_version", 0)
 static var conditions: PackedStringArray = _ids("conditions", "id")
 ## The ways of ordering the conditions: [code]random[/code], [code]latin_square[/code].
 static var counterbalancing_modes: PackedStringArray = _strings(_schema.get("counterbalancing"))
+## The movement renderer's contact models a trial may record (the names of
+## [code]force_model.contact_model[/code]: [code]per_contact[/code], [code]paper_sum[/code]).
+static var contact_models: PackedStringArray = _strings(_schema.get("contact_models"))
 ## The six criteria (CSV column names), in the paper's Table I order.
 static var criteria: PackedStringArray = _ids("criteria", "id")
 ## Lowest and highest rating.
@@ -69,6 +72,10 @@ static func field_problem(column: Dictionary, value: String) -> String:
 			return "" if is_valid_level(value) else "is not a valid level id"
 		"condition":
 			return "" if value in conditions else "is unknown"
+		"contact_model":
+			if value.is_empty() or value in contact_models:
+				return ""
+			return "is not empty or one of %s" % ", ".join(contact_models)
 		"timestamp":
 			return "" if is_timestamp(value) else "is not a timestamp"
 		"rating":

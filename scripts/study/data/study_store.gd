@@ -126,6 +126,7 @@ func append_trial(result: TrialResult) -> bool:
 		result.condition,
 		result.level,
 		str(result.trial_index),
+		result.contact_model,
 		StudyFormat.number(result.time_s, 3),
 		"1" if result.completed else "0",
 		str(result.wall_collisions),

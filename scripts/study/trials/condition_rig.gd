@@ -4,8 +4,9 @@ extends Node
 ## and the forces, through the [code]Haptics[/code] autoload's server.
 ## [br][br]
 ## [b]none[/b] and [b]movement[/b]: acceleration control; the render mode is
-## [code]movement[/code]; a [StudyProbe] on the player submits the frames with the forces
-## the condition enables (none: [code]Haptics.force_scale[/code] 0, so nothing is felt).
+## [code]movement[/code] with the condition's [code]contact_model[/code]; a [StudyProbe] on
+## the player submits the frames with the forces the condition enables (none:
+## [code]Haptics.force_scale[/code] 0, so nothing is felt).
 ## [b]constraint[/b]: position control; the level's wall outlines and the [MazeMap] go to
 ## the native finite-proxy renderer, the render mode is [code]constraint[/code], and the
 ## player becomes a follower drawn where the proxy is (its own physics is off; the probe
@@ -68,6 +69,7 @@ static func save_haptics() -> Dictionary:
 		var config: Dictionary = Haptics.get_config()
 		saved["telemetry"] = config.get("telemetry", {})
 		saved["constraint"] = config.get("constraint", {})
+		saved["force_model"] = config.get("force_model", {})
 	return saved
 
 
@@ -85,9 +87,11 @@ static func restore_haptics(saved: Dictionary) -> void:
 	if Haptics.is_available() and saved.has("render_mode"):
 		var telemetry: Dictionary = saved["telemetry"]
 		var constraint: Dictionary = saved["constraint"]
+		var force_model: Dictionary = saved["force_model"]
 		Haptics.set_render_mode(StringName(str(saved["render_mode"])))
 		Haptics.configure("telemetry", telemetry)
 		Haptics.configure("constraint", constraint)
+		Haptics.configure("force_model", force_model)
 
 
 ## Whether [param condition_name] is position control.
@@ -121,6 +125,9 @@ func setup(p_level: StudyLevel, p_condition: String, p_settings: Dictionary) -> 
 		ok = Haptics.configure("telemetry", {"enabled": true, "decimation": 1})
 		if is_position_control(condition):
 			ok = _send_constraint() and ok
+		else:
+			var model: String = str(settings.get("contact_model", "paper_sum"))
+			ok = Haptics.configure("force_model", {"contact_model": model}) and ok
 	hold()
 	return ok
 

@@ -69,6 +69,9 @@ func _init(
 	result.level = level_id
 	result.trial_index = trial_index
 	result.telemetry_file = StudyFormat.telemetry_name(condition, trial_index)
+	# As the server has it (the rig set it up for the condition), not as the settings asked.
+	if not _position_control:
+		result.contact_model = Haptics.get_choice("force_model", "contact_model")
 	var flag: StringName = (
 		&"TELEMETRY_FLAG_PROXY_CONTACT" if _position_control else &"TELEMETRY_FLAG_CONTACT"
 	)

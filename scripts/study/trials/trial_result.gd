@@ -8,6 +8,9 @@ var condition: String = ""
 var level: String = ""
 ## This participant's trial count in this condition (from 0, never reused).
 var trial_index: int = 0
+## The movement renderer's contact model during the trial ([code]per_contact[/code] or
+## [code]paper_sum[/code]); empty in position control.
+var contact_model: String = ""
 ## Seconds from the start to the goal (or to the end of an unfinished trial).
 var time_s: float = 0.0
 ## Whether the goal was reached.

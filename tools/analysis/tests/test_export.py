@@ -14,7 +14,7 @@ EXPECTED_COLUMNS = [
     "counterbalancing", "condition_order", "app_version", "extension_version", "started", "finished",
     "complete", "condition", "order_index", "realism", "ease", "aptness", "intuitiveness", "enthusiasm",
     "partiality", "total", "rating_timestamp", "favourite_vote", "trials", "trials_completed",
-    "time_to_goal_s_mean", "wall_collisions_mean", "contact_time_s_mean", "path_length_px_mean",
+    "contact_model", "time_to_goal_s_mean", "wall_collisions_mean", "contact_time_s_mean", "path_length_px_mean",
     "mean_force_n_mean", "max_force_n_mean",
 ]
 
@@ -36,7 +36,7 @@ def test_export_rows_and_columns(tmp_path):
     )
     # B: rated "none" only and has an unrated "movement" trial (session interrupted).
     folder = w.make_participant(study, "B", {"none": 3})
-    w.append_trial(folder, "B", "movement", 0, time_to_goal_s=12.5)
+    w.append_trial(folder, "B", "movement", 0, time_to_goal_s=12.5, contact_model="per_contact")
     out = tmp_path / "export" / "all.csv"
     proc = run_tool("export_csv.py", study, out)
     assert proc.returncode == 0, proc.stderr
@@ -55,6 +55,8 @@ def test_export_rows_and_columns(tmp_path):
     assert float(a_mov["time_to_goal_s_mean"]) == pytest.approx(30.0)  # completed trials only
     assert float(a_mov["wall_collisions_mean"]) == pytest.approx(6.0)  # all three
     assert a_con["total"] == "10.0"
+    assert (a_none["contact_model"], a_mov["contact_model"], a_con["contact_model"]) == ("paper_sum", "paper_sum", "")
+    assert b_mov["contact_model"] == "per_contact" and b_none["contact_model"] == "paper_sum"
     assert b_none["complete"] == "0" and b_none["favourite_vote"] == "" and b_none["finished"] == ""
     assert b_mov["realism"] == "" and b_mov["total"] == "" and b_mov["trials"] == "1"
     assert float(b_mov["time_to_goal_s_mean"]) == pytest.approx(12.5)

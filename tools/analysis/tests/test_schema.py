@@ -38,6 +38,10 @@ def test_columns_are_parsed_with_their_ranges():
     with pytest.raises(ValueError, match="is below 0"):
         trials["contact_time_s"]("-1")
     assert trials["telemetry_file"]("") == ""
+    assert trials["contact_model"]("paper_sum") == "paper_sum"
+    assert trials["contact_model"]("") == ""  # position control
+    with pytest.raises(ValueError, match="unknown contact model 'sum'"):
+        trials["contact_model"]("sum")
 
 
 def test_the_fast_telemetry_pattern_matches_valid_rows_only():
@@ -46,6 +50,14 @@ def test_the_fast_telemetry_pattern_matches_valid_rows_only():
     assert pattern.match(row)
     assert not pattern.match(row[:-1] + "2")  # in_contact is 0 or 1
     assert fields.fast_row_re("trials") is None  # bounded numbers, ids, timestamps
+
+
+def test_the_contact_models_are_the_servers_names():
+    # The names are defined once beside the enum (config.h); the schema lists them for the data.
+    project = schema.SCHEMA_PATH.parents[2]
+    header = (project / "gdextension" / "src" / "core" / "config.h").read_text("utf-8")
+    names = re.search(r"CONTACT_MODEL_NAMES\[\] = \{([^}]*)\}", header).group(1)
+    assert tuple(re.findall(r'"([a-z_]+)"', names)) == schema.CONTACT_MODELS
 
 
 def test_the_game_reads_the_same_schema():

@@ -62,7 +62,7 @@ CASES = [
     ("wrong_column_count", lambda d: edit_line(d / "ratings.csv", 3, lambda s: s + ",7"),
      "P02/ratings.csv:3:", "expected 10 columns, found 11"),
     ("too_few_columns", lambda d: edit_line(d / "trials.csv", 2, lambda s: s.rsplit(",", 1)[0]),
-     "P02/trials.csv:2:", "expected 13 columns, found 12"),
+     "P02/trials.csv:2:", "expected 14 columns, found 13"),
     ("non_numeric_rating", lambda d: set_field(d / "ratings.csv", 2, "ease", "x"),
      "P02/ratings.csv:2:", "column 'ease': 'x' is not an integer"),
     ("non_numeric_trial", lambda d: set_field(d / "trials.csv", 3, "time_to_goal_s", "12s"),
@@ -77,6 +77,11 @@ CASES = [
      "P02/ratings.csv:2:", "'7.5' is not an integer"),
     ("unknown_condition", lambda d: set_field(d / "ratings.csv", 3, "condition", "haptic"),
      "P02/ratings.csv:3:", "unknown condition 'haptic'"),
+    ("unknown_contact_model", lambda d: set_field(d / "trials.csv", 3, "contact_model", "sum"),
+     "P02/trials.csv:3:", "column 'contact_model': unknown contact model 'sum'"),
+    ("old_format_version", lambda d: (d / "participant.json").write_text(
+        (d / "participant.json").read_text().replace('"format_version": 2', '"format_version": 1')),
+     "P02/participant.json:", "unsupported version 1 (this tool reads 2)"),
     ("unknown_condition_trial", lambda d: set_field(d / "trials.csv", 2, "condition", "None"),
      "P02/trials.csv:2:", "unknown condition 'None'"),
     ("duplicate_condition", lambda d: append_raw(d / "ratings.csv", "P02,none,0,1,1,1,1,1,1,2025-05-01T10:09:00Z\n"),
@@ -197,6 +202,21 @@ def test_low_telemetry_rate_is_a_warning(tmp_path):
     assert [str(x) for x in loaded.all_warnings()] == [
         "P01/telemetry/none_0.csv: effective sample rate 100 Hz is below 250 Hz"
     ]
+
+
+def test_trials_of_one_condition_with_several_contact_models_earn_a_warning(tmp_path, capsys):
+    study = make_study(tmp_path / "study")
+    set_field(study / "P03" / "trials.csv", 3, "contact_model", "per_contact")  # P03's movement trial
+    loaded = studydata.load_study(study)
+    assert loaded.all_errors() == []
+    assert [str(x) for x in loaded.all_warnings()] == [
+        f"{study}: condition 'movement': trials ran several contact models (paper_sum: 2, per_contact: 1); "
+        "its trial metrics mix them"
+    ]
+    assert analyze.main([str(study), "--out", str(tmp_path / "out")]) == 0
+    assert "trials ran several contact models" in capsys.readouterr().err
+    report = (tmp_path / "out" / "report.md").read_text()
+    assert "| Contact model (trials) | `paper_sum` | `paper_sum`: 2, `per_contact`: 1 | n/a |" in report
 
 
 def test_empty_study_fails(tmp_path):
