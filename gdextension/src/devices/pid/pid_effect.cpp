@@ -189,11 +189,20 @@ DeviceIo ConstantForceEffect::erase(hid::HidTransport &r_transport) {
 	if (!layout_) {
 		return DeviceIo::OK;
 	}
-	DeviceIo io = stop(r_transport);
-	if (io != DeviceIo::DISCONNECTED) {
-		const DeviceIo freed = encode_block_free(*layout_, block_index_, scratch_) ? send(r_transport, scratch_) : DeviceIo::FAILED;
-		io = io == DeviceIo::OK ? freed : io;
+	const DeviceIo io = stop(r_transport);
+	if (io == DeviceIo::DISCONNECTED) {
+		layout_ = nullptr;
+		return io;
 	}
+	const DeviceIo freed = free_block(r_transport);
+	return io == DeviceIo::OK ? freed : io;
+}
+
+DeviceIo ConstantForceEffect::free_block(hid::HidTransport &r_transport) {
+	if (!layout_) {
+		return DeviceIo::OK;
+	}
+	const DeviceIo io = encode_block_free(*layout_, block_index_, scratch_) ? send(r_transport, scratch_) : DeviceIo::FAILED;
 	layout_ = nullptr;
 	return io;
 }

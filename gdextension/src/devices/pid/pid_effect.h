@@ -55,6 +55,8 @@ public:
 	DeviceIo stop(hid::HidTransport &r_transport);
 	// Stop + Block Free; forgets the effect even when the device is gone.
 	DeviceIo erase(hid::HidTransport &r_transport);
+	// Block Free alone, for an effect already stopped; forgets the effect.
+	DeviceIo free_block(hid::HidTransport &r_transport);
 	// Forgets the effect without any I/O (the device was reset or unplugged).
 	void forget() { layout_ = nullptr; }
 
