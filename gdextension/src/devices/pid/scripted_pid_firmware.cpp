@@ -213,8 +213,10 @@ DeviceIo ScriptedPidJoystick::get_feature(std::span<uint8_t> p_buffer, size_t &r
 		if (!block_load_script_.empty()) {
 			answer = block_load_script_.front();
 			block_load_script_.erase(block_load_script_.begin());
-			if (answer != BlockLoadAnswer::FIRMWARE && pending_block_ != 0) {
-				effects_[pending_block_] = ScriptedEffect{}; // The scripted firmware did not keep it.
+			// Full or Error: this firmware did not keep the block. Garbage or silence: the
+			// answer was lost on the way, the allocation stands and a retry reports it.
+			if ((answer == BlockLoadAnswer::FULL || answer == BlockLoadAnswer::ERROR) && pending_block_ != 0) {
+				effects_[pending_block_] = ScriptedEffect{};
 				pending_block_ = 0;
 			}
 		}
