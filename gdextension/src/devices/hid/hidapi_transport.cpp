@@ -46,6 +46,12 @@ Status HidapiTransport::open() {
 		narrow(hid_error(nullptr), error_, sizeof(error_));
 		return Status::error(StatusCode::DEVICE_ERROR, "hidapi cannot initialise: %s", error_);
 	}
+	std::string reason;
+	const bool exists = access(path_.c_str(), F_OK) == 0;
+	if (!is_hidraw_node(path_, &reason)) {
+		open_errno_ = exists ? ENOTTY : ENOENT;
+		return Status::error(exists ? StatusCode::DEVICE_ERROR : StatusCode::DEVICE_DISCONNECTED, "cannot open %s", reason.c_str());
+	}
 	errno = 0;
 	device_ = hid_open_path(path_.c_str());
 	if (!device_) {

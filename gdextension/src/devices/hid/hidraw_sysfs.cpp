@@ -10,6 +10,8 @@
 #include <fstream>
 #include <iterator>
 #include <memory>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
 
 namespace haptics::hid {
 
@@ -81,6 +83,28 @@ Status read_hidraw_report_descriptor(const std::string &p_hidraw_path, std::vect
 				MAX_DESCRIPTOR_BYTES);
 	}
 	return Status::success();
+}
+
+bool is_hidraw_node(const std::string &p_path, std::string *r_reason, const std::string &p_sysfs_root) {
+	struct stat info;
+	if (stat(p_path.c_str(), &info) != 0) {
+		if (r_reason) {
+			*r_reason = p_path + ": " + std::strerror(errno);
+		}
+		return false;
+	}
+	if (S_ISCHR(info.st_mode)) {
+		const std::string link = p_sysfs_root + "/dev/char/" + std::to_string(major(info.st_rdev)) + ":" +
+				std::to_string(minor(info.st_rdev)) + "/subsystem";
+		const std::unique_ptr<char, decltype(&std::free)> resolved(realpath(link.c_str(), nullptr), &std::free);
+		if (resolved && std::filesystem::path(resolved.get()).filename() == "hidraw") {
+			return true;
+		}
+	}
+	if (r_reason) {
+		*r_reason = p_path + " is not a hidraw device";
+	}
+	return false;
 }
 
 bool kernel_ff_bound(const std::string &p_hidraw_path, const std::string &p_sysfs_root) {

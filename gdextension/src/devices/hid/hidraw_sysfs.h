@@ -26,6 +26,12 @@ std::string hidraw_hid_device_sysfs_dir(const std::string &p_hidraw_path, const 
 Status read_hidraw_report_descriptor(const std::string &p_hidraw_path, std::vector<uint8_t> &r_bytes,
 		const std::string &p_sysfs_root = "/sys");
 
+// Whether p_path is a hidraw character device (its /sys/dev/char/MAJ:MIN/subsystem is
+// hidraw). hidapi 0.13.1's hid_open_path frees its device and then writes an error into it
+// when the node is not hidraw (a use-after-free we hit with /dev/null), so the transport
+// checks this first. r_reason says why not.
+bool is_hidraw_node(const std::string &p_path, std::string *r_reason = nullptr, const std::string &p_sysfs_root = "/sys");
+
 // Some input device under the HID device advertises force feedback: a non-zero word in
 // <hid device>/input/input*/capabilities/ff. Then the kernel drives the effects, and raw PID
 // reports through hidraw would fight its bookkeeping: use the evdev path instead.

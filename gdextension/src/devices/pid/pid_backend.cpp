@@ -21,19 +21,23 @@ std::string display_name(const DeviceInfo &p_info) {
 } // namespace
 
 DeviceAvailability probe(const DeviceInfo &p_info) {
+	return probe_with_sysfs(p_info, "/sys");
+}
+
+DeviceAvailability probe_with_sysfs(const DeviceInfo &p_info, const std::string &p_sysfs_root) {
 	DeviceAvailability availability;
 	if (p_info.backend != BACKEND_HIDAPI || p_info.path.empty()) {
 		return availability;
 	}
 	std::vector<uint8_t> descriptor;
-	const bool have_descriptor = hid::read_hidraw_report_descriptor(p_info.path, descriptor).ok();
+	const bool have_descriptor = hid::read_hidraw_report_descriptor(p_info.path, descriptor, p_sysfs_root).ok();
 	Status layout_status;
 	const bool pid_layout = have_descriptor && has_pid_layout(descriptor, &layout_status);
 	if (p_info.usage_page != USAGE_PAGE_PID && !pid_layout) {
 		return availability;
 	}
 	availability.handled = true;
-	if (hid::kernel_ff_bound(p_info.path)) {
+	if (hid::kernel_ff_bound(p_info.path, p_sysfs_root)) {
 		availability.reason = "the kernel's force-feedback driver owns it: use its evdev entry";
 		return availability;
 	}

@@ -15,6 +15,7 @@
 #include "devices/pid/scripted_pid_joystick.h"
 
 #include <memory>
+#include <string>
 #include <string_view>
 
 namespace haptics::pid {
@@ -25,6 +26,8 @@ inline constexpr std::string_view PID_DRIVER = "hid-pid";
 // sentence a player can act on (the udev rule, the kernel's evdev entry, ...). It opens the
 // device briefly (hid_open_path) to find out.
 DeviceAvailability probe(const DeviceInfo &p_info);
+// The same, reading sysfs under p_sysfs_root instead of /sys (tests use a fake tree).
+DeviceAvailability probe_with_sysfs(const DeviceInfo &p_info, const std::string &p_sysfs_root);
 
 // A PidDevice over hidapi for p_info.path; the engine opens it (HapticDevice::open).
 Status open_device(const DeviceInfo &p_info, std::unique_ptr<HapticDevice> &r_device, const PidDeviceConfig &p_config = {});
