@@ -262,7 +262,9 @@ DeviceIo ScriptedPidJoystick::get_feature(std::span<uint8_t> p_buffer, size_t &r
 		return DeviceIo::FAILED;
 	}
 	length = std::min(length, p_buffer.size());
-	std::memcpy(p_buffer.data(), reply, length);
+	if (length > 0) {
+		std::memcpy(p_buffer.data(), reply, length);
+	}
 	r_length = length;
 	stats_.bytes_from_device += length;
 	record(TransferKind::FEATURE_GET, std::span<const uint8_t>(reply, length));
@@ -297,7 +299,9 @@ DeviceIo ScriptedPidJoystick::read_input(std::span<uint8_t> p_buffer, size_t &r_
 		length = profile_.input_length;
 	}
 	length = std::min(length, p_buffer.size());
-	std::memcpy(p_buffer.data(), report, length);
+	if (length > 0) {
+		std::memcpy(p_buffer.data(), report, length);
+	}
 	r_length = length;
 	++stats_.inputs;
 	stats_.bytes_from_device += length;

@@ -149,7 +149,10 @@ void ScriptedPidJoystick::record(TransferKind p_kind, std::span<const uint8_t> p
 	ScriptedTransfer transfer;
 	transfer.kind = p_kind;
 	transfer.length = static_cast<uint8_t>(std::min<size_t>(p_bytes.size(), PID_MAX_REPORT_BYTES));
-	std::memcpy(transfer.bytes, p_bytes.data(), transfer.length);
+	if (transfer.length > 0) {
+		std::memcpy(transfer.bytes, p_bytes.data(), transfer.length);
+	}
 	records_.push_back(transfer);
 }
+
 } // namespace haptics::pid
