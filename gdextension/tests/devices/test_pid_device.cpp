@@ -153,6 +153,26 @@ TEST_CASE("pid device: the stick deflection is the position and the buttons come
 	device->close();
 }
 
+TEST_CASE("pid device: a wheel (no Y axis) is 1-DOF and renders only the x component at 90°") {
+	auto wheel = std::make_shared<ScriptedPidJoystick>(ScriptedFirmware::VIRTUAL_WHEEL);
+	wheel->set_stick(-0.5, 0.9); // The firmware reports no Y.
+	std::unique_ptr<HapticDevice> device = make_scripted_device(wheel);
+	REQUIRE(device->open().ok());
+	CHECK(device->capabilities().input_dof == 1);
+	CHECK(device->capabilities().output_dof == 1);
+	CHECK(std::string(device->name()) == "Scripted PID wheel (OFB-like)");
+	DeviceState state;
+	REQUIRE(eventually([&] { return device->read_state(state) == DeviceIo::OK && state.position_m.x < 0.0; }));
+	CHECK(state.position_m.x == doctest::Approx(-0.5 * 0.05).epsilon(1e-3));
+	CHECK(state.position_m.y == 0.0);
+	REQUIRE(device->write_force({ Vec3{ -2.0, 3.0, 0.0 }, {} }) == DeviceIo::OK);
+	REQUIRE(eventually([&] { return wheel->effect(1).magnitude != 0; }));
+	CHECK(wheel->effect(1).direction == 9000); // +X, centidegrees
+	CHECK(wheel->rendered_force().x == doctest::Approx(-0.5).epsilon(1e-3));
+	CHECK(wheel->rendered_force().y == doctest::Approx(0.0).epsilon(1e-6));
+	device->close();
+}
+
 TEST_CASE("pid device: a steady force puts nothing on the wire; the periodic restart does") {
 	auto joystick = std::make_shared<ScriptedPidJoystick>(ScriptedFirmware::AJ);
 	PidDeviceConfig config;

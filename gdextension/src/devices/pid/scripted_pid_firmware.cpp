@@ -30,6 +30,15 @@ constexpr ScriptedPidJoystick::Profile VIRTUAL_PROFILE = {
 	0x0000, 0xFFFF, // OFB: 0 and 0xFFFF are infinite
 };
 
+constexpr ScriptedPidJoystick::Profile VIRTUAL_WHEEL_PROFILE = {
+	0x01, 4, 1, 1, 2, NO_AXIS, 0x02, // 8 buttons, X s16
+	0x01, 16, 1, 2, 3, 11, 13, 14, true, 0.01, // u16 direction, centidegrees
+	0x05, 4, 32767, //
+	0x0A, 0x0B, 0x0C, 0x0D, true, // Device Control as a bitmask
+	0x11, 4, 0x12, 5, 0x13, 5, // OFB's feature IDs
+	0x0000, 0xFFFF, // OFB: 0 and 0xFFFF are infinite
+};
+
 uint16_t read_u16(std::span<const uint8_t> p_bytes, size_t p_offset) {
 	return static_cast<uint16_t>(p_bytes[p_offset] | (p_bytes[p_offset + 1] << 8));
 }
@@ -45,7 +54,15 @@ void put_i16(uint8_t *r_bytes, double p_normalised) {
 } // namespace
 
 const ScriptedPidJoystick::Profile &ScriptedPidJoystick::profile_for(ScriptedFirmware p_firmware) {
-	return p_firmware == ScriptedFirmware::AJ ? AJ_PROFILE : VIRTUAL_PROFILE;
+	switch (p_firmware) {
+		case ScriptedFirmware::AJ:
+			return AJ_PROFILE;
+		case ScriptedFirmware::VIRTUAL:
+			return VIRTUAL_PROFILE;
+		case ScriptedFirmware::VIRTUAL_WHEEL:
+			return VIRTUAL_WHEEL_PROFILE;
+	}
+	return AJ_PROFILE;
 }
 
 DeviceIo ScriptedPidJoystick::unplugged(char *r_error) const {
@@ -295,7 +312,9 @@ DeviceIo ScriptedPidJoystick::read_input(std::span<uint8_t> p_buffer, size_t &r_
 			report[profile_.buttons_offset + b] = static_cast<uint8_t>(buttons_ >> (8 * b));
 		}
 		put_i16(report + profile_.x_offset, stick_x_);
-		put_i16(report + profile_.y_offset, stick_y_);
+		if (profile_.y_offset != NO_AXIS) {
+			put_i16(report + profile_.y_offset, stick_y_);
+		}
 		length = profile_.input_length;
 	}
 	length = std::min(length, p_buffer.size());

@@ -36,6 +36,7 @@ namespace haptics::pid {
 enum class ScriptedFirmware : uint8_t {
 	AJ = 0, // compose_aj_descriptor(16 buttons) + AJ firmware behaviour.
 	VIRTUAL = 1, // virtual_pid_descriptor(): OFB-like bitmask control, 16-bit direction.
+	VIRTUAL_WHEEL = 2, // The same firmware with a one-axis (X) stick report.
 };
 
 enum class TransferKind : uint8_t {

@@ -9,6 +9,8 @@
 
 namespace haptics::pid {
 
+inline constexpr uint8_t NO_AXIS = 0xFF; // Profile::y_offset of a one-axis stick.
+
 // Fixed byte offsets as each firmware reads them (byte 0 = report ID), written from FACTS
 // §1.4 (AJ) and virtual_pid_descriptor.h (ours) by hand: deliberately not from the parser.
 struct ScriptedPidJoystick::Profile {

@@ -1,5 +1,8 @@
 #include "devices/pid/virtual_pid_descriptor.h"
 
+#include <algorithm>
+#include <iterator>
+
 namespace haptics::pid {
 
 namespace {
@@ -85,6 +88,19 @@ constexpr uint8_t VIRTUAL_PID_DESCRIPTOR[] = {
 
 std::span<const uint8_t> virtual_pid_descriptor() {
 	return std::span<const uint8_t>(VIRTUAL_PID_DESCRIPTOR, sizeof(VIRTUAL_PID_DESCRIPTOR));
+}
+
+std::vector<uint8_t> virtual_pid_wheel_descriptor() {
+	const std::span<const uint8_t> joystick = virtual_pid_descriptor();
+	std::vector<uint8_t> bytes(joystick.begin(), joystick.end());
+	// Report Count 2 + Usage X + Usage Y  ->  Report Count 1 + Usage X.
+	const uint8_t axes[] = { 0x95, 0x02, 0x09, 0x30, 0x09, 0x31 };
+	const auto at = std::search(bytes.begin(), bytes.end(), std::begin(axes), std::end(axes));
+	if (at != bytes.end()) {
+		*(at + 1) = 0x01;
+		bytes.erase(at + 4, at + 6);
+	}
+	return bytes;
 }
 
 } // namespace haptics::pid

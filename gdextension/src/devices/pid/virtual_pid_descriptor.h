@@ -26,9 +26,14 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 namespace haptics::pid {
 
 std::span<const uint8_t> virtual_pid_descriptor();
+
+// The same device as a wheel: the stick report carries X only (Input 01, 4 B: buttons | X),
+// so PidDevice renders one axis.
+std::vector<uint8_t> virtual_pid_wheel_descriptor();
 
 } // namespace haptics::pid
