@@ -1,0 +1,54 @@
+#pragma once
+
+// HidTransport over hidapi (the hidraw backend on Linux; FACTS §1.8): hid_open_path,
+// hid_write (Output, interrupt OUT), hid_send_feature_report / hid_get_feature_report
+// (control transfers), hid_read_timeout(..., 0) (non-blocking Input). The report descriptor
+// comes from hid_get_report_descriptor on hidapi >= 0.14, else from sysfs (this machine
+// has 0.13.1).
+//
+// A failed call is DISCONNECTED when the device is gone (errno ENODEV/ENXIO/ESHUTDOWN, the
+// hidraw node vanished, or hidapi reports a disconnection) and FAILED otherwise; the reason
+// is hidapi's message. Success paths do not allocate; hidapi itself allocates its error
+// strings on failure paths only.
+
+#include "devices/hid/hid_transport.h"
+
+#include <string>
+
+struct hid_device_;
+
+namespace haptics::hid {
+
+class HidapiTransport final : public HidTransport {
+public:
+	explicit HidapiTransport(std::string p_path);
+	~HidapiTransport() override;
+
+	HidapiTransport(const HidapiTransport &) = delete;
+	HidapiTransport &operator=(const HidapiTransport &) = delete;
+
+	Status open() override;
+	void close() override;
+	bool is_open() const override { return device_ != nullptr; }
+	Status report_descriptor(std::vector<uint8_t> &r_bytes) override;
+
+	DeviceIo write_output(std::span<const uint8_t> p_report) override;
+	DeviceIo send_feature(std::span<const uint8_t> p_report) override;
+	DeviceIo get_feature(std::span<uint8_t> p_buffer, size_t &r_length) override;
+	DeviceIo read_input(std::span<uint8_t> p_buffer, size_t &r_length) override;
+	const char *last_error() const override { return error_; }
+
+	// errno after the last failed open() (EACCES: no permission for the node).
+	int open_errno() const { return open_errno_; }
+	const std::string &path() const { return path_; }
+
+private:
+	DeviceIo failed(const char *p_call, int p_errno);
+
+	std::string path_;
+	hid_device_ *device_ = nullptr;
+	int open_errno_ = 0;
+	char error_[192] = {};
+};
+
+} // namespace haptics::hid

@@ -1,0 +1,40 @@
+#pragma once
+
+// What Linux sysfs says about a hidraw node, readable without opening the device (so
+// without the permissions /dev/hidraw* usually lacks): its report descriptor and whether a
+// kernel force-feedback driver (usbhid's hid-pidff) owns it (FACTS §1.8).
+//
+// hidapi 0.13's device path on the hidraw backend is /dev/hidrawN; the HID device behind it
+// is /sys/class/hidraw/hidrawN/device. p_sysfs_root exists for tests (a fake tree).
+
+#include "core/status.h"
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace haptics::hid {
+
+// N of "/dev/hidrawN"; -1 when p_path is not such a path.
+int32_t hidraw_index(std::string_view p_path);
+
+// realpath of <root>/class/hidraw/hidrawN/device; "" when it does not resolve.
+std::string hidraw_hid_device_sysfs_dir(const std::string &p_hidraw_path, const std::string &p_sysfs_root = "/sys");
+
+// <root>/class/hidraw/hidrawN/device/report_descriptor (binary, <= 4096 bytes).
+Status read_hidraw_report_descriptor(const std::string &p_hidraw_path, std::vector<uint8_t> &r_bytes,
+		const std::string &p_sysfs_root = "/sys");
+
+// Whether p_path is a hidraw character device (its /sys/dev/char/MAJ:MIN/subsystem is
+// hidraw). hidapi 0.13.1's hid_open_path frees its device and then writes an error into it
+// when the node is not hidraw (a use-after-free we hit with /dev/null), so the transport
+// checks this first. r_reason says why not.
+bool is_hidraw_node(const std::string &p_path, std::string *r_reason = nullptr, const std::string &p_sysfs_root = "/sys");
+
+// Some input device under the HID device advertises force feedback: a non-zero word in
+// <hid device>/input/input*/capabilities/ff. Then the kernel drives the effects, and raw PID
+// reports through hidraw would fight its bookkeeping: use the evdev path instead.
+bool kernel_ff_bound(const std::string &p_hidraw_path, const std::string &p_sysfs_root = "/sys");
+
+} // namespace haptics::hid
