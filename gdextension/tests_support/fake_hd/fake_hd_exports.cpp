@@ -257,8 +257,9 @@ FAKE_HD_EXPORT void hdSetSchedulerRate(unsigned long p_rate_hz) {
 FAKE_HD_EXPORT void hdScheduleSynchronous(Callback p_callback, void *p_data, unsigned short p_priority) {
 	State &s = state();
 	std::unique_lock<std::mutex> lock(s.mutex);
-	record(s, "hdScheduleSynchronous", p_priority, nullptr, 0);
 	const unsigned long handle = s.next_handle++;
+	const double value = static_cast<double>(handle);
+	record(s, "hdScheduleSynchronous", p_priority, &value, 1);
 	if (s.running.load()) {
 		s.scheduled.push_back({ handle, p_callback, p_data, p_priority, true, s.next_order++ });
 		const auto finished = [&s, handle] {

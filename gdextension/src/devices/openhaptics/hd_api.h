@@ -111,10 +111,12 @@ inline constexpr HDerror HD_INVALID_LICENSE = 0x0600;
 
 // --- The functions we call (FACTS §4.4), as pointers filled by HdLibrary::load ---------------
 struct HdApi {
-	HHD(HAPTICS_HD_CALL *hdInitDevice)(HDstring p_config_name) = nullptr;
+	HHD(HAPTICS_HD_CALL *hdInitDevice)
+	(HDstring p_config_name) = nullptr;
 	void(HAPTICS_HD_CALL *hdMakeCurrentDevice)(HHD p_handle) = nullptr;
 	void(HAPTICS_HD_CALL *hdDisableDevice)(HHD p_handle) = nullptr;
-	HHD(HAPTICS_HD_CALL *hdGetCurrentDevice)() = nullptr;
+	HHD(HAPTICS_HD_CALL *hdGetCurrentDevice)
+	() = nullptr;
 	void(HAPTICS_HD_CALL *hdBeginFrame)(HHD p_handle) = nullptr;
 	void(HAPTICS_HD_CALL *hdEndFrame)(HHD p_handle) = nullptr;
 	HDErrorInfo(HAPTICS_HD_CALL *hdGetError)() = nullptr;

@@ -384,14 +384,16 @@ HDenum HdDevice::check_calibration(bool p_force_update) {
 HDCallbackCode HdDevice::tick() {
 	const int64_t start_ns = monotonic_now_ns();
 	const HdApi &hd = library_.api();
-	if (!ready_.load(std::memory_order_relaxed)) {
-		check_calibration(false);
+	bool ready = ready_.load(std::memory_order_relaxed);
+	if (!ready) {
+		ready = check_calibration(false) == HD_CALIBRATION_OK;
 	}
-	// The servo's newest command, bounded again at the motors' boundary.
-	const Vec3 force = stopping_.load(std::memory_order_acquire)
+	// The servo's newest command, bounded again at the motors' boundary. Uncalibrated
+	// positions are wrong, so no force until calibrated (the servo holds zero too).
+	const ForceCommand command = exchange_.latest_command();
+	const Vec3 force = stopping_.load(std::memory_order_acquire) || !ready
 			? Vec3{}
-			: bounded_force(exchange_.latest_command(), options_.clamp_continuous_to_rating ? continuous_limit_n_ : 0.0,
-					  peak_limit_n_);
+			: bounded_force(command, options_.clamp_continuous_to_rating ? continuous_limit_n_ : 0.0, peak_limit_n_);
 	const double force_n[3] = { force.x, force.y, force.z };
 	double position_mm[3];
 	double velocity_mm_s[3];
@@ -424,7 +426,7 @@ HDCallbackCode HdDevice::tick() {
 	}
 	state.orientation = orientation_from_hd_transform(transform);
 	state.buttons = static_cast<uint32_t>(buttons); // HD_DEVICE_BUTTON_n is bit n-1: ours.
-	state.ready = ready_.load(std::memory_order_relaxed);
+	state.ready = ready;
 	exchange_.publish_state(state);
 	exchange_.record_cycle(static_cast<double>(monotonic_now_ns() - start_ns) * 1e-9);
 	return HD_CALLBACK_CONTINUE;
