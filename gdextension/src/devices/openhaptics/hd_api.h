@@ -138,6 +138,11 @@ struct HdApi {
 	void(HAPTICS_HD_CALL *hdUnschedule)(HDSchedulerHandle p_handle) = nullptr;
 };
 
+// The header's HD_DEVICE_ERROR(e) (FACTS §4.4).
+inline bool hd_failed(const HDErrorInfo &p_error) {
+	return p_error.errorCode != HD_SUCCESS;
+}
+
 // "HD_EXCEEDED_MAX_FORCE" for 0x0201; "unknown HD error" for codes not in FACTS §4.5.
 const char *hd_error_name(HDerror p_code);
 
