@@ -49,10 +49,12 @@ HDenum preferred_calibration_style(int32_t p_styles) {
 	return 0;
 }
 
-Status hd_status(StatusCode p_code, const HdApi &p_api, const char *p_what, const HDErrorInfo &p_error) {
+// The HD error first, the hint last: a long runtime text truncates the hint, not the code.
+Status hd_status(StatusCode p_code, const HdApi &p_api, const char *p_what, const HDErrorInfo &p_error,
+		const char *p_hint = "") {
 	char error[160];
 	format_hd_error(&p_api, p_error, error, sizeof(error));
-	return Status::error(p_code, "OpenHaptics: %s failed: %s", p_what, error);
+	return Status::error(p_code, "OpenHaptics: %s failed: %s%s", p_what, error, p_hint);
 }
 
 } // namespace
@@ -95,7 +97,7 @@ Status HdDevice::open() {
 	handle_ = hd.hdInitDevice(HD_DEFAULT_DEVICE);
 	const HDErrorInfo init_error = hd.hdGetError();
 	if (hd_failed(init_error) || handle_ == HD_INVALID_HANDLE) {
-		handle_ = HD_INVALID_HANDLE;
+		device_initialised_ = handle_ != HD_INVALID_HANDLE; // A handle with an error: disable it.
 		if (!hd_failed(init_error)) {
 			return fail_open(Status::error(StatusCode::DEVICE_ERROR,
 					"OpenHaptics: hdInitDevice(HD_DEFAULT_DEVICE) returned HD_INVALID_HANDLE without an error"));
@@ -103,8 +105,8 @@ Status HdDevice::open() {
 		// A Touch that is unplugged or not configured fails here with a communication error.
 		const bool absent = init_error.errorCode == HD_COMM_ERROR || init_error.errorCode == HD_COMM_CONFIG_ERROR;
 		return fail_open(hd_status(absent ? StatusCode::NO_DEVICE : StatusCode::DEVICE_ERROR, hd,
-				"hdInitDevice(HD_DEFAULT_DEVICE) (is the device plugged in and set up in its driver's tool?)",
-				init_error));
+				"hdInitDevice(HD_DEFAULT_DEVICE)", init_error,
+				absent ? "; is the device plugged in and set up in its driver's tool?" : ""));
 	}
 	device_initialised_ = true;
 	hd.hdMakeCurrentDevice(handle_);
