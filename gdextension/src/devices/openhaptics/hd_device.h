@@ -46,6 +46,13 @@
 // opening an HdDevice closes any other open HdDevice first (its servo then reads FAILED,
 // "closed: another OpenHaptics device was opened"). HapticsEngine opens the new device
 // before closing the old one, which this makes work. open() is idempotent.
+//
+// Tested against a fake libHD that follows FACTS §4, not the runtime itself. Only a real
+// Touch/Omni with OpenHaptics can confirm: the axis signs (hd_conversions.h); that an
+// unplug surfaces as HD_COMM_ERROR from the frame (rather than a scheduler stall); that
+// hdCheckCalibration/hdUpdateCalibration are fine outside a frame in a callback (ROS does
+// it); that hdScheduleSynchronous returns while the device is gone; and the scheduler's
+// real timing, priority and per-tick cost.
 
 #include "core/status.h"
 #include "devices/device.h"
