@@ -14,6 +14,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -63,13 +64,20 @@ DeviceBenchResult bench_openhaptics(double p_seconds) {
 	result.encode_p99_us = percentile(callback_ns, 99.0);
 
 	// Back to back: how many callbacks one core runs per second (fake HD included).
+	// Counted as forces set, so a callback that stopped would show as 0, not as fast ticks.
 	fake.set_free_running(1);
+	const unsigned long long sets_before = fake.force_sets();
 	const unsigned long long ticks_before = fake.ticks();
 	const auto free_start = Clock::now();
 	std::this_thread::sleep_for(std::chrono::duration<double>(p_seconds * 0.5));
 	const double elapsed_s = std::chrono::duration<double>(Clock::now() - free_start).count();
-	result.max_update_rate_hz = static_cast<double>(fake.ticks() - ticks_before) / elapsed_s;
+	const unsigned long long sets = fake.force_sets() - sets_before;
+	const unsigned long long ticks = fake.ticks() - ticks_before;
 	fake.set_free_running(0);
+	result.max_update_rate_hz = static_cast<double>(sets) / elapsed_s;
+	if (sets + 2 < ticks || device->status().io != DeviceIo::OK) {
+		result.note = "the callback stopped during the run: " + std::string(device->status().reason);
+	}
 
 	device->close();
 	fake.reset();
