@@ -1,0 +1,38 @@
+#pragma once
+
+// Where the user's OpenHaptics runtime is. Search order (FACTS §4.1): the path in the
+// environment variable HAPTICS_OPENHAPTICS_LIBRARY, then the sonames OpenHaptics 3.4 and
+// 3.0 installers create: "libHD.so", "libHD.so.3.4", "libHD.so.3.0" (found through the
+// dynamic linker's usual path: ld.so.cache, LD_LIBRARY_PATH).
+
+#include "core/status.h"
+#include "devices/openhaptics/hd_api.h"
+
+#include <string>
+
+namespace haptics::openhaptics {
+
+inline constexpr char HD_LIBRARY_ENV[] = "HAPTICS_OPENHAPTICS_LIBRARY";
+inline constexpr const char *HD_LIBRARY_NAMES[] = { "libHD.so", "libHD.so.3.4", "libHD.so.3.0" };
+
+// The reason when nothing is installed, worded for the player.
+inline constexpr char HD_RUNTIME_NOT_FOUND[] = "OpenHaptics runtime not found (libHD.so): install 3D Systems' "
+											   "OpenHaptics and Touch driver, or set HAPTICS_OPENHAPTICS_LIBRARY";
+
+// Loads p_explicit_path when it is non-empty (tests, a DeviceInfo's path), else searches.
+// When no candidate exists: NO_DEVICE with HD_RUNTIME_NOT_FOUND (plus why the environment
+// variable's path failed, when it is set). When a candidate exists but is broken (missing
+// dependency, missing function): that candidate's error, which says what to fix.
+Status load_hd_runtime(const char *p_explicit_path, HdLibrary &r_library);
+
+struct HdRuntimeLocation {
+	bool loadable = false;
+	std::string path; // What loaded, e.g. "libHD.so" or the variable's path.
+	std::string reason; // Why not, when !loadable.
+};
+
+// Loads and unloads the runtime to tell whether it would open (every symbol resolved).
+// Game thread; dlopen runs the runtime's initialisers, so call it from a menu, not per frame.
+HdRuntimeLocation locate_hd_runtime(const char *p_explicit_path = nullptr);
+
+} // namespace haptics::openhaptics
