@@ -325,16 +325,12 @@ DeviceStatus HdDevice::status() const {
 	return status;
 }
 
-DeviceIo HdDevice::read_state(DeviceState &r_state) {
-	return exchange_.read_state(r_state);
-}
-
 DeviceIo HdDevice::write_force(const ForceCommand &p_command) {
 	if (!is_finite(p_command.force_n) || !is_finite(p_command.impact_n)) {
 		non_finite_commands_.fetch_add(1, std::memory_order_relaxed);
-		return exchange_.write_command(ForceCommand{});
+		return ExchangedDevice::write_force(ForceCommand{});
 	}
-	return exchange_.write_command(p_command);
+	return ExchangedDevice::write_force(p_command);
 }
 
 } // namespace haptics::openhaptics

@@ -55,8 +55,7 @@
 // real timing, priority and per-tick cost.
 
 #include "core/status.h"
-#include "devices/device.h"
-#include "devices/device_exchange.h"
+#include "devices/exchanged_device.h"
 #include "devices/openhaptics/hd_api.h"
 #include "devices/openhaptics/hd_conversions.h"
 
@@ -88,7 +87,7 @@ struct HdDeviceReport {
 	HdWorkspace workspace;
 };
 
-class HdDevice final : public HapticDevice {
+class HdDevice final : public ExchangedDevice {
 public:
 	explicit HdDevice(HdDeviceOptions p_options = {});
 	~HdDevice() override;
@@ -98,20 +97,18 @@ public:
 
 	Status open() override;
 	void close() override;
-	bool is_open() const override { return open_; }
 	// Runs hdUpdateCalibration (the device's style) on HD's thread, then checks. An error
 	// when the device still needs manual input (the inkwell) or HD reports one.
 	Status calibrate() override;
 	DeviceCapabilities capabilities() const override { return capabilities_; }
 	// The model string ("Touch"), or "OpenHaptics device" before the first open.
 	const char *name() const override { return name_; }
+	// Adds the calibration hint to the exchange's status.
 	DeviceStatus status() const override;
-
-	DeviceIo read_state(DeviceState &r_state) override;
+	// A non-finite command goes out as zero (and is counted).
 	DeviceIo write_force(const ForceCommand &p_command) override;
 
 	const HdDeviceReport &report() const { return report_; }
-	DeviceIoStats io_stats() const { return exchange_.stats(); }
 	// Commands that were not finite and went out as zero.
 	uint64_t non_finite_commands() const { return non_finite_commands_.load(std::memory_order_relaxed); }
 
@@ -136,7 +133,6 @@ private:
 	HdLibrary library_;
 	HHD handle_ = HD_INVALID_HANDLE;
 	HDSchedulerHandle servo_handle_ = 0;
-	bool open_ = false;
 	bool device_initialised_ = false;
 	bool servo_scheduled_ = false;
 	bool scheduler_started_ = false;
@@ -149,7 +145,6 @@ private:
 	double peak_limit_n_ = 0.0;
 	HDenum calibration_style_ = 0;
 
-	DeviceExchange exchange_;
 	std::atomic<bool> ready_{ false }; // Calibration OK.
 	std::atomic<HDenum> calibration_status_{ 0 };
 	std::atomic<bool> stopping_{ false }; // close(): the callback sets zero from now on.

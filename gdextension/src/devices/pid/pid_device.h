@@ -27,9 +27,8 @@
 // it. A failed transfer stops rendering with DISCONNECTED (unplugged) or FAILED and the
 // transport's reason.
 
-#include "devices/device.h"
-#include "devices/device_exchange.h"
 #include "devices/device_io_thread.h"
+#include "devices/exchanged_device.h"
 #include "devices/hid/hid_transport.h"
 #include "devices/hid/joystick_input.h"
 #include "devices/pid/pid_effect.h"
@@ -74,26 +73,20 @@ struct PidDeviceCounters {
 	uint64_t other_input_reports = 0; // Other report IDs (PID State) or undecodable.
 };
 
-class PidDevice final : public HapticDevice, private DeviceIoWorker {
+class PidDevice final : public ExchangedDevice, private DeviceIoWorker {
 public:
 	PidDevice(std::unique_ptr<hid::HidTransport> p_transport, std::string p_name, const PidDeviceConfig &p_config = {});
 	~PidDevice() override;
 
 	Status open() override;
 	void close() override;
-	bool is_open() const override { return open_; }
 	Status calibrate() override;
 	DeviceCapabilities capabilities() const override;
 	const char *name() const override { return name_.c_str(); }
-	DeviceStatus status() const override { return exchange_.status(); }
-
-	DeviceIo read_state(DeviceState &r_state) override { return exchange_.read_state(r_state); }
-	DeviceIo write_force(const ForceCommand &p_command) override { return exchange_.write_command(p_command); }
 
 	// Valid while open.
 	const PidLayout &layout() const { return layout_; }
 	const hid::JoystickInputLayout &input_layout() const { return input_; }
-	DeviceIoStats io_stats() const { return exchange_.stats(); }
 	PidDeviceCounters counters() const;
 
 private:
@@ -105,12 +98,10 @@ private:
 	std::unique_ptr<hid::HidTransport> transport_;
 	std::string name_;
 	PidDeviceConfig config_;
-	bool open_ = false;
 	PidLayout layout_;
 	hid::JoystickInputLayout input_;
 	PidForceMapping mapping_;
 	ConstantForceEffect effect_;
-	DeviceExchange exchange_;
 	DeviceIoThread io_thread_;
 	// I/O-thread state.
 	PidForce last_force_;
