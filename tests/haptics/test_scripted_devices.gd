@@ -6,7 +6,7 @@ extends TestSuite
 
 const VARIABLE := "HAPTICS_SCRIPTED_DEVICES"
 ## Every driver with a scripted model.
-const SCRIPTED_DRIVERS: Array[String] = ["falcon", "dualsense", "evdev"]
+const SCRIPTED_DRIVERS: Array[String] = ["falcon", "dualsense", "evdev", "hid-pid"]
 
 var server: HapticsServer = null
 

@@ -4,6 +4,8 @@
 #include "devices/evdev/evdev_backend.h"
 #include "devices/evdev/evdev_enumeration.h"
 #include "devices/falcon/falcon_backend.h"
+#include "devices/openhaptics/openhaptics_backend.h"
+#include "devices/pid/pid_backend.h"
 #include "devices/scripted_device.h"
 
 #include <atomic>
@@ -74,6 +76,26 @@ Status open_evdev(const DeviceInfo &p_info, const DeviceOpenOptions &, std::uniq
 	return evdev::open_device(p_info, r_device);
 }
 
+Status open_hid_pid(const DeviceInfo &p_info, const DeviceOpenOptions &, std::unique_ptr<HapticDevice> &r_device) {
+	return pid::open_device(p_info, r_device);
+}
+
+Status open_openhaptics(const DeviceInfo &p_info, const DeviceOpenOptions &, std::unique_ptr<HapticDevice> &r_device) {
+	return openhaptics::open_device(p_info, r_device);
+}
+
+// An AJ-firmware stick: HID's y grows toward the user, ours up.
+std::unique_ptr<HapticDevice> make_scripted_hid_pid(ScriptedModelHooks &r_hooks) {
+	std::shared_ptr<pid::ScriptedPidJoystick> stick = std::make_shared<pid::ScriptedPidJoystick>(pid::ScriptedFirmware::AJ);
+	std::unique_ptr<HapticDevice> device = pid::make_scripted_device(stick);
+	const double radius = device->capabilities().limits.workspace_radius_m;
+	r_hooks.set_position = [stick, radius](const Vec3 &p_position) {
+		stick->set_stick(p_position.x / radius, -p_position.y / radius);
+	};
+	r_hooks.set_plugged = [stick](bool p_plugged) { stick->set_plugged(p_plugged); };
+	return device;
+}
+
 Status open_dualsense(const DeviceInfo &p_info, const DeviceOpenOptions &, std::unique_ptr<HapticDevice> &r_device) {
 	return dualsense::open_device(p_info, r_device);
 }
@@ -87,13 +109,18 @@ constexpr BackendRow BACKENDS[] = {
 	{ "scripted", probe_scripted, nullptr }, // Opened through SCRIPTED below.
 	{ DRIVER_FALCON, falcon::probe, open_falcon },
 	{ DRIVER_DUALSENSE, dualsense::probe, open_dualsense },
+	// After the DualSense: any other hidapi device with PID reports. When the kernel's PID
+	// driver is bound it says so and the evdev row below drives the same stick.
+	{ DRIVER_HID_PID, pid::probe, open_hid_pid },
 	{ DRIVER_EVDEV, evdev::probe, open_evdev },
+	{ DRIVER_OPENHAPTICS, openhaptics::probe, open_openhaptics },
 };
 
 constexpr ScriptedRow SCRIPTED[] = {
 	{ DRIVER_FALCON, "Novint Falcon (scripted)", make_scripted_falcon },
 	{ DRIVER_DUALSENSE, "Sony DualSense (scripted, USB)", make_scripted_dualsense },
 	{ DRIVER_EVDEV, "Force-feedback joystick (scripted, evdev)", make_scripted_evdev },
+	{ DRIVER_HID_PID, "HID PID joystick (scripted, AJ firmware)", make_scripted_hid_pid },
 };
 constexpr size_t SCRIPTED_COUNT = sizeof(SCRIPTED) / sizeof(SCRIPTED[0]);
 
@@ -155,6 +182,9 @@ void probe_devices(std::vector<DeviceInfo> &r_devices) {
 		for (const BackendRow &backend : BACKENDS) {
 			const DeviceAvailability availability = backend.probe(info);
 			if (availability.handled) {
+				// A driver found force feedback the catalog could not see (AJ sticks
+				// report a joystick top-level collection; evdev nodes have no catalog row).
+				info.known_haptic = true;
 				info.driver = backend.driver;
 				info.openable = availability.openable;
 				info.unavailable_reason = availability.openable ? std::string() : availability.reason;
@@ -169,6 +199,12 @@ DeviceList list_all_devices() {
 	// The kernel's force-feedback drivers (hid-pidff, wheel drivers) own most FFB devices
 	// and expose them here, not on hidraw.
 	evdev::enumerate_evdev_devices(list.devices, list.warnings);
+	// HD finds its device by configuration name, not on a bus: one entry when the runtime
+	// loads, or when the player pointed at one that does not (to say why).
+	const DeviceInfo openhaptics_entry = openhaptics::make_default_device_info();
+	if (openhaptics_entry.openable || std::getenv(openhaptics::HD_LIBRARY_ENV) != nullptr) {
+		list.devices.push_back(openhaptics_entry);
+	}
 	if (scripted_devices_enabled()) {
 		append_scripted_devices(list.devices);
 	}

@@ -14,6 +14,8 @@ inline constexpr std::string_view BACKEND_HIDAPI = "hidapi";
 inline constexpr std::string_view BACKEND_LIBUSB = "libusb";
 inline constexpr std::string_view BACKEND_EVDEV = "evdev"; // Linux input event nodes.
 inline constexpr std::string_view BACKEND_SCRIPTED = "scripted"; // device_factory.h
+// The user's OpenHaptics runtime (devices by configuration name, not by bus).
+inline constexpr std::string_view BACKEND_OPENHAPTICS = "openhaptics";
 
 // Driver names (DeviceInfo::driver): which code renders a device.
 inline constexpr std::string_view DRIVER_SIMULATED = "simulated";

@@ -171,8 +171,8 @@ TEST_CASE("openhaptics: the search tries HAPTICS_OPENHAPTICS_LIBRARY first, then
 		CHECK(location.reason.empty());
 		const DeviceInfo info = make_default_device_info();
 		CHECK(info.id == OPENHAPTICS_DEFAULT_DEVICE_ID);
-		CHECK(info.backend == OPENHAPTICS_BACKEND);
-		CHECK(info.driver == OPENHAPTICS_BACKEND);
+		CHECK(info.backend == BACKEND_OPENHAPTICS);
+		CHECK(info.driver == DRIVER_OPENHAPTICS);
 		CHECK(info.path == HAPTICS_FAKE_HD_PATH);
 		CHECK(info.openable);
 	}
@@ -209,7 +209,7 @@ TEST_CASE("openhaptics: probe handles only its backend and says why it cannot op
 
 	DeviceInfo info;
 	info.id = OPENHAPTICS_DEFAULT_DEVICE_ID;
-	info.backend = OPENHAPTICS_BACKEND;
+	info.backend = BACKEND_OPENHAPTICS;
 	info.path = HAPTICS_FAKE_HD_PATH;
 	const DeviceAvailability available = probe(info);
 	CHECK(available.handled);
@@ -227,7 +227,7 @@ TEST_CASE("openhaptics: open_device opens the device over the runtime named in t
 	auto &fake = fresh_fake_hd();
 	DeviceInfo info;
 	info.id = OPENHAPTICS_DEFAULT_DEVICE_ID;
-	info.backend = OPENHAPTICS_BACKEND;
+	info.backend = BACKEND_OPENHAPTICS;
 	info.path = HAPTICS_FAKE_HD_PATH;
 	std::unique_ptr<HapticDevice> device;
 	REQUIRE(open_device(info, device));
@@ -243,7 +243,7 @@ TEST_CASE("openhaptics: open_device opens the device over the runtime named in t
 	std::unique_ptr<HapticDevice> none;
 	CHECK(open_device(info, none).code() == StatusCode::INVALID_ARGUMENT);
 	CHECK(none == nullptr);
-	info.backend = OPENHAPTICS_BACKEND;
+	info.backend = BACKEND_OPENHAPTICS;
 	info.path = MISSING_LIBRARY;
 	CHECK(open_device(info, none).code() == StatusCode::NO_DEVICE);
 	CHECK(none == nullptr);

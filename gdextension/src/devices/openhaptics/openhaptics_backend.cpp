@@ -12,8 +12,8 @@ DeviceInfo make_default_device_info() {
 	const HdRuntimeLocation location = runtime_location();
 	DeviceInfo info;
 	info.id = OPENHAPTICS_DEFAULT_DEVICE_ID;
-	info.backend = OPENHAPTICS_BACKEND;
-	info.driver = OPENHAPTICS_BACKEND;
+	info.backend = BACKEND_OPENHAPTICS;
+	info.driver = DRIVER_OPENHAPTICS;
 	info.path = location.path;
 	info.model = "OpenHaptics device (Touch / Phantom)";
 	info.product = "OpenHaptics default device";
@@ -26,7 +26,7 @@ DeviceInfo make_default_device_info() {
 
 DeviceAvailability probe(const DeviceInfo &p_info) {
 	DeviceAvailability availability;
-	availability.handled = p_info.backend == OPENHAPTICS_BACKEND;
+	availability.handled = p_info.backend == BACKEND_OPENHAPTICS;
 	if (!availability.handled) {
 		return availability;
 	}
@@ -37,7 +37,7 @@ DeviceAvailability probe(const DeviceInfo &p_info) {
 }
 
 Status open_device(const DeviceInfo &p_info, std::unique_ptr<HapticDevice> &r_device) {
-	if (p_info.backend != OPENHAPTICS_BACKEND) {
+	if (p_info.backend != BACKEND_OPENHAPTICS) {
 		return Status::error(StatusCode::INVALID_ARGUMENT, "device '%s': backend '%s' is not openhaptics",
 				p_info.id.c_str(), p_info.backend.c_str());
 	}

@@ -17,7 +17,6 @@
 
 namespace haptics::openhaptics {
 
-inline constexpr std::string_view OPENHAPTICS_BACKEND = "openhaptics";
 inline constexpr std::string_view OPENHAPTICS_DEFAULT_DEVICE_ID = "openhaptics:default";
 
 // Whether the runtime loads (every function we need resolved) and from where; the lead's

@@ -20,8 +20,6 @@
 
 namespace haptics::pid {
 
-inline constexpr std::string_view PID_DRIVER = "hid-pid";
-
 // Whether this backend drives p_info and whether it can be opened now; if not, why, in one
 // sentence a player can act on (the udev rule, the kernel's evdev entry, ...). It opens the
 // device briefly (hid_open_path) to find out.

@@ -3,13 +3,14 @@
 // Usage IDs of the Physical Interface Device page (0x0F) that the layout finder and the
 // scripted firmware use (FACTS §1.1; kernel tables [K-old, K-new]).
 
+#include "devices/device_catalog.h"
 #include "devices/hid/report_descriptor.h"
 
 #include <cstdint>
 
 namespace haptics::pid {
 
-inline constexpr uint16_t USAGE_PAGE_PID = 0x0F;
+inline constexpr uint16_t USAGE_PAGE_PID = HID_USAGE_PAGE_PID; // device_catalog.h
 inline constexpr uint16_t USAGE_PAGE_GENERIC_DESKTOP = 0x01;
 inline constexpr uint16_t USAGE_PAGE_SIMULATION = 0x02;
 inline constexpr uint16_t USAGE_PAGE_BUTTON = 0x09;
