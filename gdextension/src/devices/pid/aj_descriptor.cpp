@@ -1,7 +1,5 @@
 #include "devices/pid/aj_descriptor.h"
 
-#include <iterator>
-
 namespace haptics::pid {
 
 namespace {
@@ -115,7 +113,11 @@ std::vector<uint8_t> compose_aj_descriptor(uint8_t p_button_count, bool p_close_
 		0x81, 0x02, // Input (Data, Variable, Absolute)
 	};
 	if (padding != 0) {
-		bytes.insert(bytes.end(), { 0x75, 0x01, 0x95, padding, 0x81, 0x03 }); // Input (Constant)
+		// Input (Constant). Byte by byte: GCC 12's -Warray-bounds misreads the reallocating
+		// range insert at -O3 (a false positive in libstdc++'s move).
+		for (const uint8_t byte : { uint8_t(0x75), uint8_t(0x01), uint8_t(0x95), padding, uint8_t(0x81), uint8_t(0x03) }) {
+			bytes.push_back(byte);
+		}
 	}
 	constexpr uint8_t AXES[] = {
 		0x05, 0x01, // Usage Page (Generic Desktop)
