@@ -97,7 +97,7 @@ TEST_CASE("hid transport: hidapi never sees a node that is not hidraw (hidapi 0.
 	hid::HidapiTransport transport("/dev/null");
 	const Status status = transport.open();
 	CHECK(status.code() == StatusCode::DEVICE_ERROR);
-	CHECK(std::string(status.message()) == "cannot open /dev/null is not a hidraw device");
+	CHECK(std::string(status.message()) == "hid-pid: '/dev/null' is not a hidraw device node");
 }
 
 TEST_CASE("hid transport: hidapi on a device that is not there fails cleanly") {
@@ -135,7 +135,7 @@ TEST_CASE("pid backend: probe and open_device say which devices are ours and why
 	const DeviceAvailability availability = pid::probe(info);
 	CHECK(availability.handled);
 	CHECK_FALSE(availability.openable);
-	CHECK(availability.reason.find("cannot open /dev/hidraw-does-not-exist") != std::string::npos);
+	CHECK(availability.reason.find("no device at '/dev/hidraw-does-not-exist'") != std::string::npos);
 
 	// An AJ stick: hidapi sees a joystick (usage page 1), its descriptor holds the PID reports.
 	FakeSysfs sysfs;
@@ -144,7 +144,7 @@ TEST_CASE("pid backend: probe and open_device say which devices are ours and why
 	DeviceAvailability aj = pid::probe_with_sysfs(info, sysfs.root.string());
 	CHECK(aj.handled);
 	CHECK_FALSE(aj.openable);
-	CHECK(aj.reason == "cannot open /dev/hidraw7: No such file or directory"); // No such node here.
+	CHECK(aj.reason == "hid-pid: no device at '/dev/hidraw7' (No such file or directory)"); // No such node here.
 	sysfs.set_ff("107030000 0");
 	aj = pid::probe_with_sysfs(info, sysfs.root.string());
 	CHECK(aj.handled);

@@ -1,6 +1,7 @@
 #include "devices/dualsense/dualsense_backend.h"
 
 #include "devices/dualsense/dualsense_hidapi_transport.h"
+#include "devices/hid/hidapi_open.h"
 
 #include <cerrno>
 #include <cstdio>
@@ -38,7 +39,7 @@ DeviceAvailability availability_for(const DeviceInfo &p_info, int p_access_errno
 	}
 	char reason[256];
 	if (p_access_errno == EACCES || p_access_errno == EPERM || p_access_errno == EROFS) {
-		std::snprintf(reason, sizeof(reason), PERMISSION_REASON_FORMAT, p_info.path.c_str());
+		std::snprintf(reason, sizeof(reason), hid::PERMISSION_REASON_FORMAT, p_info.path.c_str());
 	} else if (p_access_errno == ENOENT) {
 		std::snprintf(reason, sizeof(reason), "%s is gone: the DualSense was unplugged", p_info.path.c_str());
 	} else {

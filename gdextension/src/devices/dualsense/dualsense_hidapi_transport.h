@@ -7,14 +7,9 @@
 // device); we use it when the headers have it, else bus() is UNKNOWN and the device infers
 // the link from the first input report (dualsense_input.h bus_from_input_report).
 //
-// Unplugged vs other errors: hidapi returns -1 and keeps a text (for hidraw, strerror of the
-// failed write or "unexpected poll error (device disconnected)" from a read). errno ENODEV,
-// EIO, ENXIO, ESHUTDOWN or EPIPE, or the hidraw node gone from /dev, counts as DISCONNECTED;
-// anything else as FAILED. hidapi allocates its error text on failures only; a successful
-// call does not allocate.
-//
-// open() checks the path is a hidraw character device before handing it to hidapi: hidapi
-// 0.13.1 crashes in hid_open_path on other character devices (e.g. /dev/null).
+// Opening (only ever a hidraw node: hidapi 0.13.1 crashes on others) and unplugged vs other
+// errors are shared with the PID stick (hid/hidapi_open.h). hidapi allocates its error text
+// on failures only; a successful call does not allocate.
 //
 // hid_init() is called at open; hid_exit() never (device enumeration calls it; on hidraw it
 // only frees hidapi's global error text).
@@ -26,11 +21,6 @@
 struct hid_device_;
 
 namespace haptics::dualsense {
-
-// The reason shown when the hidraw node exists but we may not open it (FACTS §1.8: the
-// systemd uaccess rule covers input joysticks, not hidraw). printf format, one %s: the path.
-inline constexpr const char *PERMISSION_REASON_FORMAT =
-		"no permission for %s: install the udev rule (tools/udev, see README Devices)";
 
 class HidapiTransport final : public DualSenseTransport {
 public:

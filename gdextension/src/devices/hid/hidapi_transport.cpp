@@ -1,5 +1,6 @@
 #include "devices/hid/hidapi_transport.h"
 
+#include "devices/hid/hidapi_open.h"
 #include "devices/hid/hidraw_sysfs.h"
 #include "devices/hid/report_descriptor.h"
 
@@ -8,28 +9,8 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <cwchar>
-#include <unistd.h>
 
 namespace haptics::hid {
-
-namespace {
-
-// hidapi's wide message into a fixed buffer (ASCII; anything else becomes '?').
-void narrow(const wchar_t *p_text, char *r_out, size_t p_capacity) {
-	size_t i = 0;
-	for (; p_text && p_text[i] != L'\0' && i + 1 < p_capacity; ++i) {
-		const wchar_t c = p_text[i];
-		r_out[i] = c >= 0x20 && c < 0x7F ? static_cast<char>(c) : '?';
-	}
-	r_out[i] = '\0';
-}
-
-bool contains(const char *p_text, const char *p_word) {
-	return std::strstr(p_text, p_word) != nullptr;
-}
-
-} // namespace
 
 HidapiTransport::HidapiTransport(std::string p_path) :
 		path_(std::move(p_path)) {}
@@ -42,31 +23,11 @@ Status HidapiTransport::open() {
 	if (device_) {
 		return Status::success();
 	}
-	if (hid_init() != 0) {
-		narrow(hid_error(nullptr), error_, sizeof(error_));
-		return Status::error(StatusCode::DEVICE_ERROR, "hidapi cannot initialise: %s", error_);
+	const Status opened = open_hidraw_device(path_, "hid-pid", device_);
+	if (opened) {
+		error_[0] = '\0';
 	}
-	std::string reason;
-	const bool exists = access(path_.c_str(), F_OK) == 0;
-	if (!is_hidraw_node(path_, &reason)) {
-		open_errno_ = exists ? ENOTTY : ENOENT;
-		return Status::error(exists ? StatusCode::DEVICE_ERROR : StatusCode::DEVICE_DISCONNECTED, "cannot open %s", reason.c_str());
-	}
-	errno = 0;
-	device_ = hid_open_path(path_.c_str());
-	if (!device_) {
-		open_errno_ = errno;
-		narrow(hid_error(nullptr), error_, sizeof(error_));
-		if (open_errno_ == EACCES || open_errno_ == EPERM) {
-			return Status::error(StatusCode::DEVICE_ERROR, "no permission for %s: install the udev rule (tools/udev, see README Devices)",
-					path_.c_str());
-		}
-		return Status::error(open_errno_ == ENOENT || open_errno_ == ENODEV ? StatusCode::DEVICE_DISCONNECTED : StatusCode::DEVICE_ERROR,
-				"cannot open %s: %s", path_.c_str(), error_[0] ? error_ : std::strerror(open_errno_));
-	}
-	open_errno_ = 0;
-	error_[0] = '\0';
-	return Status::success();
+	return opened;
 }
 
 void HidapiTransport::close() {
@@ -94,13 +55,9 @@ Status HidapiTransport::report_descriptor(std::vector<uint8_t> &r_bytes) {
 
 DeviceIo HidapiTransport::failed(const char *p_call, int p_errno) {
 	char message[128];
-	narrow(device_ ? hid_error(device_) : nullptr, message, sizeof(message));
-	std::snprintf(error_, sizeof(error_), "%s on %s: %s", p_call, path_.c_str(),
-			message[0] ? message : std::strerror(p_errno));
-	// The node disappears with the device; hidapi's read says "disconnected" on POLLHUP.
-	const bool gone = p_errno == ENODEV || p_errno == ENXIO || p_errno == ESHUTDOWN || access(path_.c_str(), F_OK) != 0 ||
-			contains(message, "isconnected");
-	return gone ? DeviceIo::DISCONNECTED : DeviceIo::FAILED;
+	narrow_hid_text(device_ ? hid_error(device_) : nullptr, std::strerror(p_errno), message, sizeof(message));
+	std::snprintf(error_, sizeof(error_), "%s on %s: %s", p_call, path_.c_str(), message);
+	return hid_device_lost(p_errno, path_, message) ? DeviceIo::DISCONNECTED : DeviceIo::FAILED;
 }
 
 DeviceIo HidapiTransport::write_output(std::span<const uint8_t> p_report) {

@@ -6,9 +6,9 @@
 // comes from hid_get_report_descriptor on hidapi >= 0.14, else from sysfs (this machine
 // has 0.13.1).
 //
-// A failed call is DISCONNECTED when the device is gone (errno ENODEV/ENXIO/ESHUTDOWN, the
-// hidraw node vanished, or hidapi reports a disconnection) and FAILED otherwise; the reason
-// is hidapi's message. Success paths do not allocate; hidapi itself allocates its error
+// open() and the unplug-or-failure verdict are shared with the DualSense (hidapi_open.h). A
+// failed call is DISCONNECTED when the device is gone and FAILED otherwise; the reason is
+// hidapi's message. Success paths do not allocate; hidapi itself allocates its error
 // strings on failure paths only.
 
 #include "devices/hid/hid_transport.h"
@@ -38,8 +38,6 @@ public:
 	DeviceIo read_input(std::span<uint8_t> p_buffer, size_t &r_length) override;
 	const char *last_error() const override { return error_; }
 
-	// errno after the last failed open() (EACCES: no permission for the node).
-	int open_errno() const { return open_errno_; }
 	const std::string &path() const { return path_; }
 
 private:
@@ -47,7 +45,6 @@ private:
 
 	std::string path_;
 	hid_device_ *device_ = nullptr;
-	int open_errno_ = 0;
 	char error_[192] = {};
 };
 

@@ -1,0 +1,73 @@
+#include "devices/hid/hidapi_open.h"
+
+#include "devices/hid/hidraw_sysfs.h"
+
+#include <hidapi.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <cwchar>
+#include <unistd.h>
+
+namespace haptics::hid {
+
+void narrow_hid_text(const wchar_t *p_text, const char *p_fallback, char *r_out, size_t p_capacity) {
+	if (p_capacity == 0) {
+		return;
+	}
+	size_t out = 0;
+	for (; p_text != nullptr && p_text[out] != L'\0' && out + 1 < p_capacity; ++out) {
+		const wchar_t c = p_text[out];
+		r_out[out] = c >= 0x20 && c < 0x7F ? static_cast<char>(c) : '?';
+	}
+	if (out == 0 && p_fallback != nullptr) {
+		std::snprintf(r_out, p_capacity, "%s", p_fallback);
+		return;
+	}
+	r_out[out] = '\0';
+}
+
+Status open_hidraw_device(const std::string &p_path, const char *p_label, hid_device_ *&r_device) {
+	r_device = nullptr;
+	if (p_path.empty()) {
+		return Status::error(StatusCode::INVALID_ARGUMENT, "%s: empty hidraw path", p_label);
+	}
+	char reason[224];
+	if (access(p_path.c_str(), F_OK) != 0) {
+		return Status::error(StatusCode::NO_DEVICE, "%s: no device at '%s' (%s)", p_label, p_path.c_str(),
+				std::strerror(errno));
+	}
+	if (!is_hidraw_node(p_path)) {
+		return Status::error(StatusCode::DEVICE_ERROR, "%s: '%s' is not a hidraw device node", p_label, p_path.c_str());
+	}
+	char text[160];
+	if (hid_init() != 0) {
+		narrow_hid_text(hid_error(nullptr), "unknown error", text, sizeof(text));
+		return Status::error(StatusCode::DEVICE_ERROR, "%s: hidapi cannot initialise (%s)", p_label, text);
+	}
+	errno = 0;
+	r_device = hid_open_path(p_path.c_str());
+	if (r_device != nullptr) {
+		return Status::success();
+	}
+	const int open_errno = errno;
+	narrow_hid_text(hid_error(nullptr), std::strerror(open_errno), text, sizeof(text));
+	if (open_errno == EACCES || open_errno == EPERM) {
+		std::snprintf(reason, sizeof(reason), PERMISSION_REASON_FORMAT, p_path.c_str());
+		return Status::error(StatusCode::DEVICE_ERROR, "%s: %s", p_label, reason);
+	}
+	if (open_errno == ENOENT || open_errno == ENODEV || open_errno == ENXIO) {
+		return Status::error(StatusCode::NO_DEVICE, "%s: no device at '%s' (%s)", p_label, p_path.c_str(), text);
+	}
+	return Status::error(StatusCode::DEVICE_ERROR, "%s: cannot open '%s' (%s)", p_label, p_path.c_str(), text);
+}
+
+bool hid_device_lost(int p_errno, const std::string &p_path, const char *p_hid_text) {
+	const bool gone_errno = p_errno == ENODEV || p_errno == EIO || p_errno == ENXIO || p_errno == ESHUTDOWN ||
+			p_errno == EPIPE || p_errno == ENOENT;
+	return gone_errno || access(p_path.c_str(), F_OK) != 0 ||
+			(p_hid_text != nullptr && std::strstr(p_hid_text, "isconnected") != nullptr);
+}
+
+} // namespace haptics::hid
