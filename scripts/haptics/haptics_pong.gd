@@ -58,7 +58,10 @@ func leave() -> void:
 
 ## Whether the Pong renderer is the servo's current one.
 func is_active() -> bool:
-	return is_available() and int(_server.call(&"get_render_mode")) == _render_mode_constant
+	if not is_available():
+		return false
+	var mode: int = _server.call(&"get_render_mode")
+	return mode == _render_mode_constant
 
 
 ## The [code]"pong"[/code] configuration section (court, ball, contact, spin, effects);
@@ -131,7 +134,8 @@ func get_state() -> Dictionary:
 func drain_events() -> Array[Dictionary]:
 	var events: Array[Dictionary] = []
 	if is_available():
-		events.assign(_server.call(&"drain_pong_events"))
+		var drained: Array = _server.call(&"drain_pong_events")
+		events.assign(drained)
 	return events
 
 
@@ -141,7 +145,7 @@ func set_hand_target_3d(target_m: Vector3) -> bool:
 	if not is_available():
 		return false
 	var limits: Dictionary = _server.call(&"get_device_limits")
-	var radius: float = float(limits.get("workspace_radius_m", 0.0))
+	var radius: float = limits.get("workspace_radius_m", 0.0)
 	return _server.call(&"set_hand_target_3d", target_m.limit_length(radius))
 
 

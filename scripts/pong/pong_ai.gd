@@ -1,5 +1,5 @@
 class_name PongAi
-extends RefCounted
+extends PongController
 ## The computer player: it watches the ball (with a reaction delay), predicts its path
 ## with [PongPredictor], picks the first point where it can meet the ball in the air in its
 ## own half (before the ball bounces there when it can), walks its avatar there, and swings
@@ -57,14 +57,8 @@ var use_weapons: bool = true
 var mine_rate_per_s: float = 0.1
 ## Seconds between shots at the least.
 var fire_interval_s: float = 1.5
-## Multiplies the avatar's and paddle's speeds (a slow mine lowers it; set by the match).
-var speed_factor: float = 1.0
 ## In beginner mode (no gravity, shots at the target).
 var beginner: bool = false
-
-## The player it plays; its current decision (the avatar persists between updates).
-var player: int = 1
-var intent: PongIntent = PongIntent.new()
 
 var _court: PongCourt = null
 var _predictor: PongPredictor = null
@@ -103,7 +97,11 @@ func get_plan() -> Contact:
 	return _plan
 
 
-## Tells it about a servo event; its own paddle contact ends the swing.
+func update(now: float, dt: float, snapshot: PongSnapshot, opponent_avatar: Vector3) -> PongIntent:
+	return decide(now, dt, snapshot.ball_position, snapshot.ball_velocity, opponent_avatar)
+
+
+## Its own paddle contact ends the swing.
 func notice(event: Dictionary, now: float) -> void:
 	var who: int = event.get("player", -1)
 	if str(event.get("type", "")) == "paddle" and who == player:
@@ -113,7 +111,7 @@ func notice(event: Dictionary, now: float) -> void:
 
 ## Decides this update of [param dt] seconds at time [param now] from the ball's state;
 ## [param opponent_avatar] is where the other player stands. Returns [member intent].
-func update(
+func decide(
 	now: float, dt: float, ball: Vector3, velocity: Vector3, opponent_avatar: Vector3
 ) -> PongIntent:
 	_remember(now, ball, velocity)

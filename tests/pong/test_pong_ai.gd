@@ -77,7 +77,7 @@ func test_it_acts_only_after_its_reaction_delay() -> void:
 	var now: float = 0.0
 	# The ball rests in the far court for a while, then is sent toward the computer.
 	for i: int in 50:
-		ai.update(now, dt, Vector3(0, 0.07, 2), Vector3.ZERO, Vector3(0, 0.9, 2))
+		ai.decide(now, dt, Vector3(0, 0.07, 2), Vector3.ZERO, Vector3(0, 0.9, 2))
 		now += dt
 	var sent_at: float = now
 	var first_plan: float = -1.0
@@ -86,7 +86,7 @@ func test_it_acts_only_after_its_reaction_delay() -> void:
 	while now < sent_at + 0.6:
 		var t: float = now - sent_at
 		var ball: Vector3 = p + v * t + Vector3(0, -0.5 * G * t * t, 0)
-		ai.update(now, dt, ball, v + Vector3(0, -G * t, 0), Vector3(0, 0.9, 2))
+		ai.decide(now, dt, ball, v + Vector3(0, -G * t, 0), Vector3(0, 0.9, 2))
 		if first_plan < 0.0 and ai.get_plan() != null:
 			first_plan = now - sent_at
 		now += dt
@@ -105,7 +105,7 @@ func test_its_avatar_never_outruns_its_top_speed() -> void:
 		var t: float = i * dt
 		var ball: Vector3 = Vector3(1.0, 1.2, 0.2) + Vector3(0.0, 2.0, -3.0) * t
 		ball.y -= 0.5 * G * t * t
-		ai.update(now, dt, ball, Vector3(0, 2.0 - G * t, -3.0), Vector3(0, 0.9, 2))
+		ai.decide(now, dt, ball, Vector3(0, 2.0 - G * t, -3.0), Vector3(0, 0.9, 2))
 		fastest = maxf(fastest, ai.intent.avatar.distance_to(before) / dt)
 		before = ai.intent.avatar
 		now += dt
