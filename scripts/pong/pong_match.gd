@@ -43,6 +43,9 @@ const MINE_RUMBLE_N: float = 1.2
 @export var auto_serve: bool = true
 ## Seed of the computer players' randomness.
 @export var ai_seed: int = 1
+## Stepped mode: step from the physics frames (off: whoever owns the match calls
+## [method run_until], e.g. a test).
+@export var self_stepping: bool = true
 
 var court: PongCourt = null
 var rules: PongRules = null
@@ -128,18 +131,28 @@ func _process(delta: float) -> void:
 
 
 func _physics_process(delta: float) -> void:
-	if not _started or not stepped:
+	if not _started or not stepped or not self_stepping:
 		return
 	var wall_start: int = Time.get_ticks_usec()
 	var chunks: int = maxi(1, roundi(delta * stepped_speed / STEP_CHUNK_S))
-	var ticks: int = roundi(STEP_CHUNK_S / HapticsPong.TICK_S)
 	var done: int = 0
 	while stepped_speed <= 0.0 or done < chunks:
-		advance(STEP_CHUNK_S)
-		Haptics.pong.step_ticks(ticks)
+		_step_chunk()
 		done += 1
 		if Time.get_ticks_usec() - wall_start > STEP_BUDGET_MS * 1000.0:
 			break
+
+
+## Stepped mode: updates and servo ticks, [constant STEP_CHUNK_S] at a time, until
+## [param condition] holds (checked after each) or [param max_s] simulated seconds have
+## passed. Returns whether it held.
+func run_until(condition: Callable, max_s: float) -> bool:
+	var end: float = now + max_s
+	while now < end:
+		_step_chunk()
+		if condition.call():
+			return true
+	return false
 
 
 ## One update of [param dt] seconds (the servo runs separately: its thread, or the ticks
@@ -189,6 +202,11 @@ func effect_of(player: int) -> Dictionary:
 		var servo: Dictionary = snapshot.effect(kind)
 		return servo if not servo.is_empty() else {}
 	return {"kind": kind, "remaining_s": effects.remaining(player)}
+
+
+func _step_chunk() -> void:
+	advance(STEP_CHUNK_S)
+	Haptics.pong.step_ticks(roundi(STEP_CHUNK_S / HapticsPong.TICK_S))
 
 
 func _unhandled_input(event: InputEvent) -> void:

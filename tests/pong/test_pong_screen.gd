@@ -1,0 +1,80 @@
+extends TestSuite
+## The Pong screen as a player reaches it: the main menu's entry, the setup, a real-time
+## match against the computer on the servo thread (the first serve, the HUD), the spin
+## paddle's colour, and the way back (Esc on the setup, the pause menu's Quit to menu)
+## leaving the servo as it was.
+
+const MAIN_SCENE: PackedScene = preload("res://scenes/main/main.tscn")
+
+var _main: Main = null
+var _mode_before: StringName = &""
+
+
+func before_each() -> void:
+	_mode_before = Haptics.get_render_mode()
+	_main = MAIN_SCENE.instantiate() as Main
+	_main.detect_autopilot = false
+	add_child_autofree(_main)
+	await wait_process_frames(2)
+
+
+func after_each() -> void:
+	get_tree().paused = false
+
+
+func test_the_menu_entry_opens_the_setup_and_escape_goes_back() -> void:
+	var menu: MainMenu = _main.get_screen() as MainMenu
+	menu.pong_button.pressed.emit()
+	var pong: PongScreen = _main.get_screen() as PongScreen
+	if not assert_not_null(pong, "the Pong screen"):
+		return
+	await wait_process_frames(1)
+	assert_true(pong.setup.visible, "it starts on the setup")
+	assert_false(pong.is_running())
+	assert_true(pong.setup.vs_computer_button.has_focus(), "keyboard and gamepad start there")
+	var cancel: InputEventAction = InputEventAction.new()
+	cancel.action = &"ui_cancel"
+	cancel.pressed = true
+	Input.parse_input_event(cancel)
+	await wait_process_frames(2)
+	assert_true(_main.get_screen() is MainMenu, "Esc returns to the menu")
+
+
+func test_a_real_time_match_serves_and_quitting_restores_the_servo() -> void:
+	if not assert_true(Haptics.pong.is_available(), "the extension has the Pong renderer"):
+		return
+	(_main.get_screen() as MainMenu).pong_button.pressed.emit()
+	var pong: PongScreen = _main.get_screen() as PongScreen
+	pong.setup.vs_computer_button.pressed.emit()
+	if not assert_true(pong.is_running(), "the match runs"):
+		return
+	var match_node: PongMatch = pong.match_node
+	assert_eq(Haptics.get_render_mode(), &"pong", "the servo renders Pong")
+	assert_true(Haptics.servo.is_running(), "on its real-time thread")
+	assert_false(Haptics.hand_follows_input, "the match moves the simulated hand")
+	assert_eq(match_node.local_player, 0, "player 0 holds the (simulated) device")
+	var moving: bool = await wait_until(
+		func() -> bool: return match_node.snapshot.ball_velocity.length() > 0.5, 6.0
+	)
+	assert_true(moving, "the first serve puts the ball in play")
+	assert_gt(match_node.referee.serves, 0)
+	assert_has(pong.hud.get_panel(0).get_health_text(), str(match_node.rules.get_health(0)))
+	pong.pause_menu.open()
+	assert_true(get_tree().paused)
+	pong.pause_menu.quit_button.pressed.emit()
+	await wait_process_frames(2)
+	assert_true(_main.get_screen() is MainMenu, "Quit to menu")
+	assert_eq(Haptics.get_render_mode(), _mode_before, "the previous renderer is back")
+	assert_true(Haptics.hand_follows_input, "the hand follows the mouse again")
+
+
+func test_the_spin_paddle_changes_colour() -> void:
+	var paddle: PongPaddleView = PongPaddleView.new()
+	add_child_autofree(paddle)
+	paddle.setup(0.2, PongView.PLAYER_COLORS[0])
+	var plain: Color = paddle.get_color()
+	paddle.show_modes(true, false, false)
+	assert_ne(paddle.get_color(), plain, "spin on: another colour")
+	assert_almost_eq(Color(paddle.get_color(), 1.0), Color(PongPaddleView.SPIN_COLOR, 1.0), 1e-3)
+	paddle.show_modes(false, false, false)
+	assert_almost_eq(paddle.get_color(), plain, 1e-3, "and back")
