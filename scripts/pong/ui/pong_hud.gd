@@ -37,6 +37,7 @@ func _ready() -> void:
 	_top.add_child(_panels[0])
 	_top.add_child(gap)
 	_top.add_child(_panels[1])
+	_ignore_mouse(self)
 
 
 ## Names, colours and health of the two players; [param max_force] scales the plot;
@@ -99,3 +100,11 @@ func get_status_text() -> String:
 
 func get_plot() -> ForcePlot:
 	return _plot
+
+
+# The mouse moves the paddle: no control of the HUD may take its motion.
+static func _ignore_mouse(node: Node) -> void:
+	if node is Control:
+		(node as Control).mouse_filter = Control.MOUSE_FILTER_IGNORE
+	for child: Node in node.get_children():
+		_ignore_mouse(child)
