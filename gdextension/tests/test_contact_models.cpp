@@ -348,10 +348,10 @@ TEST_CASE("contact models: the movement renderer follows the configured model") 
 	const DeviceState device;
 	RenderResult result;
 	const Vec3 push{ 0.6, 0.0, 0.0 };
-	renderer.render(RenderInput{ device, push, frame, true, 0.001, 0.1 }, result);
+	renderer.render(RenderInput{ device, push, frame, true, 0.001, 0.1, false }, result);
 	check_vec(result.continuous, { -1.2, 0.0, 0.0 }); // The default: per_contact.
 	config.force_model.contact_model = PAPER;
 	renderer.configure(config, 0.001);
-	renderer.render(RenderInput{ device, push, frame, false, 0.001, 0.1 }, result);
+	renderer.render(RenderInput{ device, push, frame, false, 0.001, 0.1, false }, result);
 	check_vec(result.continuous, { -0.9, 0.3, 0.0 }); // -k p and -b r on the 45 degree normal.
 }

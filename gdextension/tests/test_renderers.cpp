@@ -23,7 +23,7 @@ Frame floor_frame() {
 RenderResult render_once(Renderer &r_renderer, const Frame &p_frame, const Vec3 &p_input) {
 	const DeviceState device;
 	RenderResult result;
-	r_renderer.render(RenderInput{ device, p_input, p_frame, true, DT, 0.1 }, result);
+	r_renderer.render(RenderInput{ device, p_input, p_frame, true, DT, 0.1, false }, result);
 	return result;
 }
 
@@ -67,7 +67,7 @@ TEST_CASE("movement renderer: writes every field it owns in place, over whatever
 	result.flags = 99;
 	Frame frame = floor_frame();
 	const DeviceState device;
-	renderer.render(RenderInput{ device, { 0.3, -0.5, 0.0 }, frame, true, DT, 0.1 }, result);
+	renderer.render(RenderInput{ device, { 0.3, -0.5, 0.0 }, frame, true, DT, 0.1, false }, result);
 	const ForceComponents fresh = compute_forces(frame, { 0.3, -0.5, 0.0 }, config.force_model);
 	CHECK(result.forces.normal == fresh.normal);
 	CHECK(result.forces.friction == fresh.friction);
@@ -117,11 +117,11 @@ TEST_CASE("constraint renderer: takes the game's walls while inactive, and says 
 	DeviceState device;
 	RenderResult result;
 	result.forces.weight = { 1.0, 2.0, 3.0 }; // Whatever was left there: every field is overwritten.
-	renderer.render(RenderInput{ device, {}, Frame{}, true, DT, 0.1 }, result);
+	renderer.render(RenderInput{ device, {}, Frame{}, true, DT, 0.1, false }, result);
 	CHECK(result.forces.weight == Vec3{});
 	CHECK(result.flags == TELEMETRY_FLAG_CONSTRAINT_MODE);
 	device.position_m = { 0.06, 0.0, 0.0 }; // Past the wall.
-	renderer.render(RenderInput{ device, {}, Frame{}, false, DT, 0.1 }, result);
+	renderer.render(RenderInput{ device, {}, Frame{}, false, DT, 0.1, false }, result);
 	CHECK(result.forces.normal.x < 0.0);
 	CHECK(result.continuous == result.forces.normal); // Never filtered.
 	CHECK(result.flags == (TELEMETRY_FLAG_CONSTRAINT_MODE | TELEMETRY_FLAG_PROXY_CONTACT));

@@ -4,6 +4,7 @@
 // which bring their own allocator.
 
 #include "core/haptics_engine.h"
+#include "engine_config.h"
 
 #include <doctest/doctest.h>
 
@@ -75,6 +76,58 @@ TEST_CASE("a tick allocates nothing, whatever it renders") {
 	t_watching = false;
 	delete probe;
 	CHECK(t_allocations == 1);
+#else
+	MESSAGE("allocation counting is off under sanitizers");
+#endif
+}
+
+TEST_CASE("a pong tick allocates nothing: contacts, bounces, effects, commands and events") {
+#ifdef HAPTICS_COUNT_ALLOCATIONS
+	HapticsEngine engine;
+	REQUIRE(engine.open_simulated_device());
+	REQUIRE(engine.set_hand_target({ 0.0, 0.02, 0.0 }));
+	REQUIRE(reconfigure(engine, [](RenderConfig &r_config) { r_config.render_mode = RenderMode::PONG; }));
+	PongInput input;
+	input.local_player = 0;
+	input.players[0].avatar = { 0.0, 1.0, 2.0 };
+	input.players[0].normal = { 0.0, 1.0, 0.2 };
+	input.players[0].spin = true;
+	input.players[1].kinematic = true;
+	input.players[1].avatar = { 0.0, 1.0, -2.0 };
+	input.players[1].paddle_velocity = { 0.5, 0.0, 0.0 };
+	PongEvent events[16];
+	unsigned long allocations = 0;
+	uint64_t contacts = 0;
+	for (int k = 0; k < 4000; ++k) {
+		if (k % 16 == 0) {
+			REQUIRE(engine.set_pong_input(input));
+		}
+		if (k % 1000 == 0) {
+			PongCommand serve;
+			serve.type = PongCommandType::SET_BALL;
+			serve.position = { 0.0, 1.5, 2.0 }; // Onto the paddle, again and again.
+			serve.spin = { 0.0, 20.0, 0.0 };
+			REQUIRE(engine.push_pong_command(serve));
+			PongCommand effect;
+			effect.type = PongCommandType::EFFECT;
+			effect.player = 0;
+			effect.kind = k % 2000 == 0 ? PongEffectKind::REMOTE : PongEffectKind::SLOW;
+			REQUIRE(engine.push_pong_command(effect));
+			effect.kind = PongEffectKind::RECOIL;
+			effect.direction = { 0.0, 0.0, 1.0 };
+			REQUIRE(engine.push_pong_command(effect));
+		}
+		t_allocations = 0;
+		t_watching = true;
+		const Status status = engine.step(0.001);
+		t_watching = false;
+		allocations += t_allocations;
+		REQUIRE(status);
+		engine.drain_pong_events(events, 16);
+		contacts = engine.pong_state().paddle_contacts;
+	}
+	CHECK(contacts >= 4); // The ticks watched did the work: the ball met the paddle.
+	CHECK(allocations == 0);
 #else
 	MESSAGE("allocation counting is off under sanitizers");
 #endif

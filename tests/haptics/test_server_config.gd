@@ -75,7 +75,8 @@ func test_every_field_is_in_the_config_with_its_default_and_unit() -> void:
 			assert_true(seen.has(section + "." + key), "%s.%s is in the table" % [section, key])
 	sections.sort()
 	assert_eq(
-		sections, ["constraint", "force_model", "plane_hold", "safety", "smoothing", "telemetry"]
+		sections,
+		["constraint", "force_model", "plane_hold", "pong", "safety", "smoothing", "telemetry"]
 	)
 
 

@@ -7,6 +7,7 @@
 // game spells it with are in the field table (config_fields.h), not here.
 
 #include "core/frame.h"
+#include "pong/pong_config.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -103,8 +104,12 @@ enum class RenderMode : int32_t {
 	// submits a frame every physics tick (contacts may be empty): it is the watchdog's
 	// heartbeat, and the clock of the FRAME_RATE proxy.
 	CONSTRAINT = 1,
+	// Haptic Battle Pong (core/pong_renderer.h): the ball-paddle contact closed in the servo,
+	// in 3D (no plane hold). Its heartbeat for the watchdog is set_pong_input (every frame);
+	// no frames are needed.
+	PONG = 2,
 };
-inline constexpr size_t RENDER_MODE_COUNT = 2;
+inline constexpr size_t RENDER_MODE_COUNT = 3;
 
 enum class ProxyUpdate : int32_t {
 	SERVO_RATE = 0, // The proxy moves every servo tick (1 kHz): the product.
@@ -135,6 +140,7 @@ struct RenderConfig {
 	TelemetryConfig telemetry;
 	RenderMode render_mode = RenderMode::MOVEMENT;
 	ConstraintConfig constraint;
+	PongConfig pong;
 };
 
 static_assert(std::is_trivially_copyable_v<RenderConfig>);

@@ -89,11 +89,52 @@ const ConfigField FIELDS[] = {
 	{ "constraint", "update", K::CHOICE, 0.0, 1.0, "", nullptr, PROXY_UPDATE_NAMES, nullptr, HAPTICS_FIELD(constraint.update) },
 	{ "constraint", "max_iterations", K::COUNT, 1.0, MAX_PROXY_ITERATIONS, "", nullptr, {}, nullptr,
 			HAPTICS_FIELD(constraint.max_iterations) },
+	// Haptic Battle Pong (pong/pong_config.h says why each default). Cross-field limits
+	// (the beginner plane inside the court, a contact spring the servo resolves) are in
+	// validate_pong_config.
+	{ "pong", "court_half_width_m", K::NUMBER, 0.5, 20.0, "m", nullptr, {}, nullptr, HAPTICS_FIELD(pong.court_half_width_m) },
+	{ "pong", "court_half_length_m", K::NUMBER, 0.5, 50.0, "m", nullptr, {}, nullptr, HAPTICS_FIELD(pong.court_half_length_m) },
+	{ "pong", "wall_height_m", K::NUMBER, 0.5, 20.0, "m", nullptr, {}, nullptr, HAPTICS_FIELD(pong.wall_height_m) },
+	{ "pong", "workspace_scale", K::NUMBER, 0.1, 100.0, "", nullptr, {}, nullptr, HAPTICS_FIELD(pong.workspace_scale) },
+	{ "pong", "paddle_radius_m", K::NUMBER, 0.02, 2.0, "m", nullptr, {}, nullptr, HAPTICS_FIELD(pong.paddle_radius_m) },
+	{ "pong", "ball_radius_m", K::NUMBER, 0.01, 0.2, "m", nullptr, {}, nullptr, HAPTICS_FIELD(pong.ball_radius_m) },
+	{ "pong", "ball_mass_kg", K::NUMBER, 0.001, 10.0, "kg", nullptr, {}, nullptr, HAPTICS_FIELD(pong.ball_mass_kg) },
+	{ "pong", "gravity_m_per_s2", K::NUMBER, 0.0, 30.0, "m/s²", nullptr, {}, nullptr, HAPTICS_FIELD(pong.gravity_m_per_s2) },
+	{ "pong", "ball_stiffness_n_per_m", K::NUMBER, 1.0, 3000.0, "N/m", nullptr, {}, nullptr, HAPTICS_FIELD(pong.ball_stiffness_n_per_m) },
+	{ "pong", "restitution_paddle", K::NUMBER, 0.0, 1.0, "", nullptr, {}, nullptr, HAPTICS_FIELD(pong.restitution_paddle) },
+	{ "pong", "hand_stiffness_n_per_m", K::NUMBER, 0.0, 1000.0, "N/m", nullptr, {}, nullptr, HAPTICS_FIELD(pong.hand_stiffness_n_per_m) },
+	{ "pong", "spring_range_m", K::NUMBER, 0.001, 0.2, "m", nullptr, {}, nullptr, HAPTICS_FIELD(pong.spring_range_m) },
+	{ "pong", "contact_force_n", K::NUMBER, 0.0, 10.0, "N", nullptr, {}, nullptr, HAPTICS_FIELD(pong.contact_force_n) },
+	{ "pong", "restitution_court", K::NUMBER, 0.0, 1.0, "", nullptr, {}, nullptr, HAPTICS_FIELD(pong.restitution_court) },
+	{ "pong", "restitution_wall", K::NUMBER, 0.0, 1.0, "", nullptr, {}, nullptr, HAPTICS_FIELD(pong.restitution_wall) },
+	{ "pong", "surface_friction", K::NUMBER, 0.0, 2.0, "", nullptr, {}, nullptr, HAPTICS_FIELD(pong.surface_friction) },
+	{ "pong", "min_bounce_speed_m_per_s", K::NUMBER, 0.0, 10.0, "m/s", nullptr, {}, nullptr, HAPTICS_FIELD(pong.min_bounce_speed_m_per_s) },
+	{ "pong", "spin_gain", K::NUMBER, 0.0, 100000.0, "rad/s² per m·m/s", nullptr, {}, nullptr, HAPTICS_FIELD(pong.spin_gain) },
+	{ "pong", "spin_friction_per_s", K::NUMBER, 0.0, 1000.0, "1/s", nullptr, {}, nullptr, HAPTICS_FIELD(pong.spin_friction_per_s) },
+	{ "pong", "spin_force_gain", K::NUMBER, 0.0, 10.0, "N per rad/s·m", nullptr, {}, nullptr, HAPTICS_FIELD(pong.spin_force_gain) },
+	{ "pong", "max_spin_rad_per_s", K::NUMBER, 0.0, 1000.0, "rad/s", nullptr, {}, nullptr, HAPTICS_FIELD(pong.max_spin_rad_per_s) },
+	{ "pong", "air_linear_decel_m_per_s2", K::NUMBER, 0.0, 20.0, "m/s²", nullptr, {}, nullptr, HAPTICS_FIELD(pong.air_linear_decel_m_per_s2) },
+	{ "pong", "air_angular_decel_rad_per_s2", K::NUMBER, 0.0, 500.0, "rad/s²", nullptr, {}, nullptr, HAPTICS_FIELD(pong.air_angular_decel_rad_per_s2) },
+	{ "pong", "max_ball_speed_m_per_s", K::NUMBER, 0.5, 50.0, "m/s", nullptr, {}, nullptr, HAPTICS_FIELD(pong.max_ball_speed_m_per_s) },
+	{ "pong", "recoil_force_n", K::NUMBER, 0.0, 10.0, "N", nullptr, {}, nullptr, HAPTICS_FIELD(pong.recoil_force_n) },
+	{ "pong", "recoil_duration_s", K::NUMBER, 0.001, 2.0, "s", nullptr, {}, nullptr, HAPTICS_FIELD(pong.recoil_duration_s) },
+	{ "pong", "hit_force_n", K::NUMBER, 0.0, 10.0, "N", nullptr, {}, nullptr, HAPTICS_FIELD(pong.hit_force_n) },
+	{ "pong", "hit_duration_s", K::NUMBER, 0.001, 2.0, "s", nullptr, {}, nullptr, HAPTICS_FIELD(pong.hit_duration_s) },
+	{ "pong", "mine_effect_duration_s", K::NUMBER, 0.01, 60.0, "s", nullptr, {}, nullptr, HAPTICS_FIELD(pong.mine_effect_duration_s) },
+	{ "pong", "mine_effect_ramp_s", K::NUMBER, 0.0, 5.0, "s", nullptr, {}, nullptr, HAPTICS_FIELD(pong.mine_effect_ramp_s) },
+	{ "pong", "slow_damping_n_s_per_m", K::NUMBER, 0.0, 10.0, "N·s/m", nullptr, {}, nullptr, HAPTICS_FIELD(pong.slow_damping_n_s_per_m) },
+	{ "pong", "heavy_force_n", K::NUMBER, 0.0, 10.0, "N", nullptr, {}, nullptr, HAPTICS_FIELD(pong.heavy_force_n) },
+	{ "pong", "remote_stiffness_n_per_m", K::NUMBER, 0.0, 1000.0, "N/m", nullptr, {}, nullptr, HAPTICS_FIELD(pong.remote_stiffness_n_per_m) },
+	{ "pong", "remote_cutoff_hz", K::NUMBER, 0.1, 100.0, "Hz", nullptr, {}, nullptr, HAPTICS_FIELD(pong.remote_cutoff_hz) },
+	{ "pong", "remote_max_force_n", K::NUMBER, 0.0, 10.0, "N", nullptr, {}, nullptr, HAPTICS_FIELD(pong.remote_max_force_n) },
+	{ "pong", "beginner_height_m", K::NUMBER, 0.05, 2.0, "m", nullptr, {}, nullptr, HAPTICS_FIELD(pong.beginner_height_m) },
+	{ "pong", "beginner_target_half_width_m", K::NUMBER, 0.05, 1.5, "m", nullptr, {}, nullptr, HAPTICS_FIELD(pong.beginner_target_half_width_m) },
 };
 
 #undef HAPTICS_FIELD
 
-constexpr const char *SECTIONS[] = { "force_model", "smoothing", "safety", "plane_hold", "telemetry", "constraint" };
+constexpr const char *SECTIONS[] = { "force_model", "smoothing", "safety", "plane_hold", "telemetry", "constraint",
+	"pong" };
 
 } // namespace
 

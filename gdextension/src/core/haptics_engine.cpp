@@ -1,5 +1,7 @@
 #include "core/haptics_engine.h"
 
+#include "pong/pong_validation.h"
+
 #include <cstring>
 #include <utility>
 
@@ -328,6 +330,42 @@ Status HapticsEngine::set_constraint_geometry(const Segment2 *p_segments, size_t
 
 Vec2 HapticsEngine::proxy_position() const {
 	return impl_->channels.output.load().proxy_maze;
+}
+
+Status HapticsEngine::set_pong_input(const PongInput &p_input) {
+	const Status valid = validate_pong_input(p_input);
+	if (valid) {
+		impl_->channels.pong.input.store(p_input);
+	}
+	return valid;
+}
+
+Status HapticsEngine::push_pong_command(const PongCommand &p_command) {
+	const Status valid = validate_pong_command(p_command, impl_->config.pong);
+	if (!valid) {
+		return valid;
+	}
+	if (!impl_->channels.pong.commands.try_push(p_command)) {
+		return Status::error(StatusCode::INVALID_STATE,
+				"pong_command: %zu commands are already waiting for the servo; is it running (start or step)?",
+				PONG_COMMAND_QUEUE_CAPACITY);
+	}
+	return Status::success();
+}
+
+PongState HapticsEngine::pong_state() const {
+	return impl_->channels.pong.state.load();
+}
+
+size_t HapticsEngine::drain_pong_events(PongEvent *r_out, size_t p_max) {
+	if (!r_out) {
+		return 0;
+	}
+	size_t count = 0;
+	while (count < p_max && impl_->channels.pong.events.try_pop(r_out[count])) {
+		++count;
+	}
+	return count;
 }
 
 } // namespace haptics

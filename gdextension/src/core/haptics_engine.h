@@ -41,6 +41,8 @@
 #include "core/vec3.h"
 #include "devices/device.h"
 #include "devices/simulated_device.h"
+#include "pong/pong_input.h"
+#include "pong/pong_output.h"
 
 #include <cstddef>
 #include <memory>
@@ -133,6 +135,24 @@ public:
 	// is not placed (no geometry yet, or the device maps into a wall) this is the goal, the
 	// device mapped into the maze; output().proxy_placed tells which.
 	Vec2 proxy_position() const;
+
+	// --- Haptic Battle Pong (RenderMode::PONG) -------------------------------------------
+	// The ball and paddles live in the servo (pong/pong_sim.h); world space is Godot's 3D
+	// world, the hand forces are the device player's device space.
+	//   each frame:   engine.set_pong_input(input)   (also the watchdog's heartbeat in PONG)
+	//   on events:    engine.push_pong_command(...)  (serve, effects)
+	//   each frame:   engine.pong_state(), engine.drain_pong_events(...)
+	// The latest paddles and modes; validated (pong_validation.h), then published lock-free.
+	// On error the previous input stays in force.
+	Status set_pong_input(const PongInput &p_input);
+	// Queues a command for the servo's next tick (also while another renderer runs, so a
+	// serve may precede the switch to PONG). Validated against the current configuration; a
+	// full queue (the servo not ticking) is an error and the command is not queued.
+	Status push_pong_command(const PongCommand &p_command);
+	// After the latest tick in PONG mode.
+	PongState pong_state() const;
+	// Pops up to p_max events, oldest first, into r_out; returns how many.
+	size_t drain_pong_events(PongEvent *r_out, size_t p_max);
 
 private:
 	struct Impl;

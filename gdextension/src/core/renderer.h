@@ -4,8 +4,8 @@
 // device, picks up the game's inputs and asks the active renderer for a force; the impact
 // transients and the safety stage (servo_pipeline.h) then apply to every renderer alike.
 // Renderers: MovementRenderer (the paper's method), ConstraintRenderer (the maze's finite
-// proxy); Haptic Battle Pong's ball-paddle contact is meant to be the third. A renderer is
-// chosen by RenderConfig::render_mode, whose value is its index in the pipeline.
+// proxy), PongRenderer (Haptic Battle Pong's ball-paddle contact). A renderer is chosen by
+// RenderConfig::render_mode, whose value is its index in the pipeline.
 //
 // Call order, all on the thread that ticks the servo, none of it may allocate, lock, block
 // or log:
@@ -40,6 +40,7 @@ struct RenderInput {
 	bool new_frame; // It arrived this tick.
 	double dt_s;
 	double device_radius_m; // The device's workspace radius.
+	bool has_orientation; // device.orientation is meaningful (DeviceCapabilities).
 };
 
 struct RenderResult {
@@ -64,6 +65,10 @@ public:
 	virtual void configure(const RenderConfig &p_config, double p_dt_s) = 0;
 	virtual void reset() = 0;
 	virtual void pick_up() {}
+	// True when this tick's pick_up() took the game input that is the active renderer's
+	// heartbeat (Pong's PongInput, sent every frame instead of frames): the watchdog then
+	// counts it as the game being alive, like a new frame.
+	virtual bool heard_from_game() const { return false; }
 	// A renderer of a 2D game: the servo holds a 3-DOF device's depth axis (PlaneHoldConfig).
 	virtual bool planar() const { return true; }
 	virtual void render(const RenderInput &p_input, RenderResult &r_result) = 0;

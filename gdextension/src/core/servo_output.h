@@ -19,7 +19,8 @@ struct ServoOutput {
 	uint32_t buttons = 0;
 	uint32_t flags = 0; // TelemetryFlag bits of this tick.
 	ForceComponents forces;
-	double frame_age_s = -1.0; // -1 before the first frame.
+	// Since the game's latest heartbeat: a frame, or the PONG renderer's input. -1 before any.
+	double frame_age_s = -1.0;
 	double ramp_gain = 0.0;
 	double watchdog_gain = 0.0;
 	uint64_t frames_received = 0;

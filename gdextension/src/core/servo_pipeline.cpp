@@ -21,7 +21,7 @@ void scale_forces(ForceComponents &r_forces, double p_scale) {
 } // namespace
 
 ServoPipeline::ServoPipeline(ServoChannels &r_channels) :
-		channels_(r_channels), constraint_(r_channels.geometry) {}
+		channels_(r_channels), constraint_(r_channels.geometry), pong_(r_channels.pong) {}
 
 void ServoPipeline::begin_session(HapticDevice *p_device, double p_dt_s) {
 	device_ = p_device;
@@ -45,8 +45,8 @@ void ServoPipeline::begin_session(HapticDevice *p_device, double p_dt_s) {
 	// tick as if it had just arrived; the watchdog takes over if no newer one follows.
 	frame_ = Frame{};
 	frame_version_ = UNTOUCHED_VERSION;
-	have_frame_ = false;
-	last_frame_time_s_ = 0.0;
+	have_heartbeat_ = false;
+	last_heartbeat_s_ = 0.0;
 	new_frame_ = false;
 	frames_received_ = 0;
 
@@ -87,9 +87,7 @@ void ServoPipeline::pick_up_inputs() {
 		uint64_t version = 0;
 		if (channels_.frame.try_load(frame_, &version)) {
 			frame_version_ = version;
-			have_frame_ = true;
 			new_frame_ = true;
-			last_frame_time_s_ = time_s_;
 			++frames_received_;
 		}
 	}
@@ -101,6 +99,10 @@ void ServoPipeline::pick_up_inputs() {
 	}
 	for (Renderer *renderer : renderers_) {
 		renderer->pick_up();
+	}
+	if (new_frame_ || active().heard_from_game()) {
+		have_heartbeat_ = true;
+		last_heartbeat_s_ = time_s_;
 	}
 }
 
@@ -122,7 +124,8 @@ DeviceIo ServoPipeline::tick(double p_dt_s) {
 	pick_up_inputs();
 
 	const Vec3 input = input_vector(state.position_m, input_radius_m_, config_.force_model.dead_zone);
-	const RenderInput render_input{ state, input, frame_, new_frame_, p_dt_s, limits_.workspace_radius_m };
+	const RenderInput render_input{ state, input, frame_, new_frame_, p_dt_s, limits_.workspace_radius_m,
+		capabilities_.has_orientation };
 	active().render(render_input, rendered_);
 	const double scale = config_.safety.force_scale;
 	if (scale != 1.0) {
@@ -136,7 +139,7 @@ DeviceIo ServoPipeline::tick(double p_dt_s) {
 		continuous.z += -config_.plane_hold.stiffness_n_per_m * state.position_m.z -
 				config_.plane_hold.damping_n_s_per_m * state.velocity_m_per_s.z;
 	}
-	const double frame_age = have_frame_ ? time_s_ - last_frame_time_s_ : std::numeric_limits<double>::infinity();
+	const double frame_age = have_heartbeat_ ? time_s_ - last_heartbeat_s_ : std::numeric_limits<double>::infinity();
 	const SafetyResult safety = safety_.apply(continuous, impact, frame_age, p_dt_s, state.ready);
 	forces.smoothed = safety.continuous;
 	forces.impact = impact;
@@ -182,7 +185,7 @@ void ServoPipeline::publish(const DeviceState &p_state, const Vec3 &p_input, con
 	output.buttons = p_state.buttons;
 	output.flags = flags;
 	output.forces = p_forces;
-	output.frame_age_s = have_frame_ ? time_s_ - last_frame_time_s_ : -1.0;
+	output.frame_age_s = have_heartbeat_ ? time_s_ - last_heartbeat_s_ : -1.0;
 	output.ramp_gain = p_safety.ramp_gain;
 	output.watchdog_gain = p_safety.watchdog_gain;
 	output.frames_received = frames_received_;

@@ -3,7 +3,8 @@
 // One servo tick, shared by the servo thread and manual step(dt):
 //
 //   device: advance + read  ->  pick up new config / frame, take impacts off the queue,
-//   every renderer picks up its own inputs -> input vector -> the active renderer
+//   every renderer picks up its own inputs (walls, Pong's input and commands) -> input
+//   vector -> the active renderer
 //   (renderer.h) -> force scale -> transients (raw) -> safety (slew, watchdog, ramp,
 //   finite, clamp) -> device: write -> publish output snapshot, push telemetry.
 //
@@ -17,6 +18,7 @@
 #include "core/frame.h"
 #include "core/geometry_exchange.h"
 #include "core/movement_renderer.h"
+#include "core/pong_renderer.h"
 #include "core/renderer.h"
 #include "core/safety.h"
 #include "core/seqlock.h"
@@ -26,6 +28,7 @@
 #include "core/telemetry.h"
 #include "core/transients.h"
 #include "devices/device.h"
+#include "pong/pong_channels.h"
 
 #include <atomic>
 #include <cstdint>
@@ -44,6 +47,7 @@ struct ServoChannels {
 	ServoStatsRecorder stats; // Servo -> game.
 	std::atomic<uint64_t> queue_drops{ 0 }; // Impacts refused by a full queue (game side).
 	GeometryExchange geometry; // Game -> servo walls; servo -> game the ones to free.
+	PongChannels pong; // Pong's input and commands in, its state and events out.
 };
 
 class ServoPipeline {
@@ -83,15 +87,18 @@ private:
 
 	Frame frame_;
 	uint64_t frame_version_ = 0;
-	bool have_frame_ = false;
 	bool new_frame_ = false;
-	double last_frame_time_s_ = 0.0;
+	// The game's latest sign of life for the watchdog: a frame, or the active renderer's own
+	// input (Renderer::heard_from_game).
+	bool have_heartbeat_ = false;
+	double last_heartbeat_s_ = 0.0;
 	uint64_t frames_received_ = 0;
 
 	MovementRenderer movement_;
 	ConstraintRenderer constraint_;
+	PongRenderer pong_;
 	// Indexed by RenderMode.
-	Renderer *const renderers_[RENDER_MODE_COUNT] = { &movement_, &constraint_ };
+	Renderer *const renderers_[RENDER_MODE_COUNT] = { &movement_, &constraint_, &pong_ };
 	RenderResult rendered_; // The active renderer's result of this tick, written in place.
 	TransientBank transients_;
 	SafetyStage safety_;

@@ -9,9 +9,10 @@
 //    0       t            servo time since rendering started, s
 //    1..3    input        input vector i, dimensionless
 //    4..6    position     device position, m
-//    7..9    normal       F_n, N (in RenderMode::CONSTRAINT: k_c (proxy - device))
-//   10..12   friction     F_f, N
-//   13..15   weight       W, N
+//    7..9    normal       F_n, N (in RenderMode::CONSTRAINT: k_c (proxy - device); in
+//                         RenderMode::PONG: the paddle's contact force)
+//   10..12   friction     F_f, N (PONG: the spinning ball's drag on the paddle)
+//   13..15   weight       W, N (PONG: the effects: recoil, hit, slow, heavy, remote)
 //   16..18   drag         water drag, N
 //   19..21   inertia      water inertia, N
 //   22..24   smoothed     continuous sum after smoothing, slew limit and watchdog, N
@@ -55,6 +56,8 @@ enum TelemetryFlag : uint32_t {
 	TELEMETRY_FLAG_NEW_FRAME = 1u << 6, // This tick picked up a new frame.
 	TELEMETRY_FLAG_CONSTRAINT_MODE = 1u << 7, // RenderMode::CONSTRAINT (force in `normal`).
 	TELEMETRY_FLAG_PROXY_CONTACT = 1u << 8, // The proxy is held by at least one wall.
+	TELEMETRY_FLAG_PONG_MODE = 1u << 9, // RenderMode::PONG (see the columns above).
+	TELEMETRY_FLAG_PADDLE_CONTACT = 1u << 10, // The device player's paddle touches the ball.
 };
 
 struct TelemetrySample {

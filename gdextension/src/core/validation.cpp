@@ -1,6 +1,7 @@
 #include "core/validation.h"
 
 #include "core/config_fields.h"
+#include "pong/pong_validation.h"
 
 #include <cmath>
 #include <cstdio>
@@ -112,6 +113,7 @@ Status validate_render_config(const RenderConfig &p_config) {
 	for (const ConfigField &field : config_fields()) {
 		HAPTICS_RETURN_IF_ERROR(check_config_value(field, field.get(p_config)));
 	}
+	HAPTICS_RETURN_IF_ERROR(validate_pong_config(p_config.pong));
 	const auto mode = static_cast<size_t>(p_config.render_mode);
 	if (mode >= RENDER_MODE_COUNT) {
 		return Status::error(StatusCode::INVALID_ARGUMENT, "render_mode: unknown mode %d",

@@ -21,7 +21,8 @@ Status validate_frame(const Frame &p_frame);
 Status validate_impact(const ImpactEvent &p_event);
 Status validate_contact_material(const char *p_name, const ContactMaterial &p_material);
 Status validate_impact_material(const char *p_name, const ImpactMaterial &p_material);
-// Every field against the field table (config_fields.h), and the render mode.
+// Every field against the field table (config_fields.h), the fields' joint limits
+// (validate_pong_config), and the render mode.
 Status validate_render_config(const RenderConfig &p_config);
 // Servo rate in Hz, [MIN_RATE_HZ, MAX_RATE_HZ].
 Status validate_rate(double p_rate_hz);

@@ -128,6 +128,28 @@ bool DictionaryReader::read_vector2(const char *p_key, gd::Vector2 &r_value, boo
 	return true;
 }
 
+bool DictionaryReader::read_vector3(const char *p_key, gd::Vector3 &r_value, bool p_required) {
+	gd::Variant value;
+	if (!fetch(p_key, gd::VariantType::VECTOR3, "a Vector3", p_required, value)) {
+		return false;
+	}
+	if (!value.is_nil()) {
+		r_value = value.as_vector3();
+	}
+	return true;
+}
+
+bool DictionaryReader::read_string(const char *p_key, std::string &r_value, bool p_required) {
+	gd::Variant value;
+	if (!fetch(p_key, gd::VariantType::STRING, "a String", p_required, value)) {
+		return false;
+	}
+	if (!value.is_nil()) {
+		r_value = value.as_string();
+	}
+	return true;
+}
+
 bool DictionaryReader::read_array(const char *p_key, gd::Array &r_value, bool p_required) {
 	gd::Variant value;
 	if (!fetch(p_key, gd::VariantType::ARRAY, "an Array", p_required, value)) {

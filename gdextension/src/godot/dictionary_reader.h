@@ -26,6 +26,8 @@ public:
 	bool read_bool(const char *p_key, bool &r_value, bool p_required = false);
 	bool read_int(const char *p_key, int64_t &r_value, bool p_required = false);
 	bool read_vector2(const char *p_key, gd::Vector2 &r_value, bool p_required = false);
+	bool read_vector3(const char *p_key, gd::Vector3 &r_value, bool p_required = false);
+	bool read_string(const char *p_key, std::string &r_value, bool p_required = false); // Or a StringName.
 	bool read_array(const char *p_key, gd::Array &r_value, bool p_required = false);
 	bool read_dictionary(const char *p_key, gd::Dictionary &r_value, bool p_required = false);
 	bool has(const char *p_key) const; // Also under its old name.

@@ -74,6 +74,11 @@ void HapticsServer::bind_methods(gd::ClassBinder<HapticsServer> &r_binder) {
 	r_binder.bind_method("get_render_mode", &S::get_render_mode);
 	r_binder.bind_method("set_constraint_geometry", &S::set_constraint_geometry, { "segments", "mapping" });
 	r_binder.bind_method("get_proxy_state", &S::get_proxy_state);
+	r_binder.bind_method("set_pong_input", &S::set_pong_input, { "input" });
+	r_binder.bind_method("pong_command", &S::pong_command, { "command" });
+	r_binder.bind_method("get_pong_state", &S::get_pong_state);
+	r_binder.bind_method("drain_pong_events", &S::drain_pong_events);
+	r_binder.bind_method("set_hand_target_3d", &S::set_hand_target_3d, { "target_m" });
 	r_binder.bind_method("set_config", &S::set_config, { "section", "values" });
 	r_binder.bind_method("get_config", &S::get_config);
 	r_binder.bind_method("get_config_fields", &S::get_config_fields);
@@ -87,6 +92,7 @@ void HapticsServer::bind_methods(gd::ClassBinder<HapticsServer> &r_binder) {
 	r_binder.bind_constant("", "TELEMETRY_QUEUE_CAPACITY", static_cast<int64_t>(TELEMETRY_QUEUE_CAPACITY));
 	r_binder.bind_constant("RenderMode", "RENDER_MODE_MOVEMENT", static_cast<int64_t>(RenderMode::MOVEMENT));
 	r_binder.bind_constant("RenderMode", "RENDER_MODE_CONSTRAINT", static_cast<int64_t>(RenderMode::CONSTRAINT));
+	r_binder.bind_constant("RenderMode", "RENDER_MODE_PONG", static_cast<int64_t>(RenderMode::PONG));
 	r_binder.bind_constant("ProxyUpdate", "PROXY_UPDATE_SERVO_RATE", static_cast<int64_t>(ProxyUpdate::SERVO_RATE));
 	r_binder.bind_constant("ProxyUpdate", "PROXY_UPDATE_FRAME_RATE", static_cast<int64_t>(ProxyUpdate::FRAME_RATE));
 	r_binder.bind_constant("ContactModel", "CONTACT_MODEL_PER_CONTACT", static_cast<int64_t>(ContactModel::PER_CONTACT));
@@ -106,6 +112,8 @@ void HapticsServer::bind_methods(gd::ClassBinder<HapticsServer> &r_binder) {
 		{ "TELEMETRY_FLAG_NEW_FRAME", TELEMETRY_FLAG_NEW_FRAME },
 		{ "TELEMETRY_FLAG_CONSTRAINT_MODE", TELEMETRY_FLAG_CONSTRAINT_MODE },
 		{ "TELEMETRY_FLAG_PROXY_CONTACT", TELEMETRY_FLAG_PROXY_CONTACT },
+		{ "TELEMETRY_FLAG_PONG_MODE", TELEMETRY_FLAG_PONG_MODE },
+		{ "TELEMETRY_FLAG_PADDLE_CONTACT", TELEMETRY_FLAG_PADDLE_CONTACT },
 	};
 	for (const auto &[name, flag] : flags) {
 		r_binder.bind_constant("TelemetryFlag", name, static_cast<int64_t>(flag), true);
@@ -352,7 +360,7 @@ bool HapticsServer::set_config(const std::string &p_section, const gd::Dictionar
 bool HapticsServer::set_render_mode(int64_t p_mode) {
 	if (p_mode < 0 || p_mode >= static_cast<int64_t>(RENDER_MODE_COUNT)) {
 		HAPTICS_ERROR("set_render_mode: unknown mode " + std::to_string(p_mode) +
-				" (RENDER_MODE_MOVEMENT or RENDER_MODE_CONSTRAINT); the current mode stays.");
+				" (RENDER_MODE_MOVEMENT, RENDER_MODE_CONSTRAINT or RENDER_MODE_PONG); the current mode stays.");
 		return false;
 	}
 	RenderConfig config = engine_.config();

@@ -78,7 +78,7 @@ public:
 	gd::Array get_telemetry_columns() const;
 
 	// --- Constraint-based rendering (position control against a maze's walls) ---
-	// RENDER_MODE_MOVEMENT (the default) or RENDER_MODE_CONSTRAINT.
+	// RENDER_MODE_MOVEMENT (the default), RENDER_MODE_CONSTRAINT or RENDER_MODE_PONG.
 	bool set_render_mode(int64_t p_mode);
 	int64_t get_render_mode() const;
 	// Walls as point pairs in maze units and how the maze maps onto the workspace
@@ -87,6 +87,20 @@ public:
 	// position (where to draw the avatar), goal (the device in maze units), constraints
 	// (walls holding the proxy), placed, updates, geometry_segments.
 	gd::Dictionary get_proxy_state() const;
+
+	// --- Haptic Battle Pong (RENDER_MODE_PONG; haptics_server_pong.cpp) ---
+	// World vectors are Godot's 3D world (Vector3, metres, y up) and pass straight through;
+	// hand forces are the device player's device space. Layouts: pong_conversions.h.
+	// The latest paddles and modes, every frame (in PONG mode also the watchdog's heartbeat).
+	bool set_pong_input(const gd::Dictionary &p_input);
+	// set_ball, effect or clear_effects, queued for the servo's next tick.
+	bool pong_command(const gd::Dictionary &p_command);
+	gd::Dictionary get_pong_state() const;
+	// The events since the last drain, oldest first.
+	gd::Array drain_pong_events();
+	// Simulated device only: its hand target in DEVICE space (x right, y up, z toward the
+	// user), metres, so the stylus can be moved in depth.
+	bool set_hand_target_3d(gd::Vector3 p_target_m);
 
 	// --- Configuration --- by section (core/config_fields.h); only the keys given change.
 	// get_config() returns every section with every key, get_config_fields() the table
