@@ -6,11 +6,11 @@ extends PongController
 ## its kinematic paddle through that point.
 ##
 ## The swing follows the mirror law of a kinematic paddle: the ball leaves a paddle moving
-## at u along its normal n with its normal velocity reflected in the paddle's frame,
-## [code]v_out = v_in - 2 ((v_in - u n) . n) n[/code]. For a wanted [code]v_out[/code]
-## (a lob that lands in the opponent's half, or in beginner mode a shot at the target on
-## the opponent's back wall) that gives [code]n = unit(v_out - v_in)[/code] and
-## [code]u = (v_in + v_out) . n / 2[/code].
+## at u along its normal n with its normal velocity reflected in the paddle's frame and
+## scaled by the paddle's restitution e, [code]v_out = v_in - (1 + e) ((v_in - u n) . n) n[/code].
+## For a wanted [code]v_out[/code] (a lob that lands in the opponent's half, or in beginner
+## mode a shot at the target on the opponent's back wall) that gives
+## [code]n = unit(v_out - v_in)[/code] and [code]u = v_in . n + |v_out - v_in| / (1 + e)[/code].
 ##
 ## It plays reasonably, not perfectly: the knobs below (reaction delay, contact-point and
 ## aim errors, avatar speed) make it miss now and then. Randomness comes from its own
@@ -36,7 +36,7 @@ class Contact:
 const _REPLAN_PERIOD_S: float = 0.05
 const _HORIZON_S: float = 3.0
 const _SAMPLE_S: float = 0.02
-const _FOLLOW_THROUGH_S: float = 0.08
+const _FOLLOW_THROUGH_S: float = 0.12
 const _HISTORY_S: float = 0.6
 
 ## Seconds between seeing the ball and acting on it.
@@ -101,10 +101,11 @@ func update(now: float, dt: float, snapshot: PongSnapshot, opponent_avatar: Vect
 	return decide(now, dt, snapshot.ball_position, snapshot.ball_velocity, opponent_avatar)
 
 
-## Its own paddle contact ends the swing.
+## The ball leaving its paddle ends the swing (the paddle keeps moving through the
+## contact, which lasts tens of milliseconds).
 func notice(event: Dictionary, now: float) -> void:
 	var who: int = event.get("player", -1)
-	if str(event.get("type", "")) == "paddle" and who == player:
+	if str(event.get("type", "")) == "release" and who == player:
 		_resting_until = now + 0.25
 		_plan = null
 
@@ -217,7 +218,7 @@ func _contact(point: Vector3, v_in: Vector3, time_left: float) -> Contact:
 	var v_out: Vector3 = wanted_velocity(point)
 	var delta: Vector3 = v_out - v_in
 	contact.normal = delta.normalized() if delta.length() > 1e-3 else _rest_normal()
-	contact.speed = (v_in + v_out).dot(contact.normal) * 0.5
+	contact.speed = (v_in.dot(contact.normal) + delta.length() / (1.0 + _court.restitution_paddle))
 	contact.time = time_left
 	contact.point = point
 	contact.velocity_in = v_in

@@ -26,6 +26,8 @@ var paddle_radius: float = 0.0
 var gravity: float = 0.0
 var restitution_court: float = 0.0
 var restitution_wall: float = 0.0
+## Ball speed out / in off a paddle at rest (along its normal).
+var restitution_paddle: float = 1.0
 var max_ball_speed: float = 0.0
 ## Paddle metres per metre of stylus.
 var workspace_scale: float = 1.0
@@ -54,7 +56,8 @@ static func from_config(pong: Dictionary) -> PongCourt:
 	court.max_ball_speed = court.number("max_ball_speed_m_per_s")
 	court.workspace_scale = court.number("workspace_scale")
 	court.beginner_height = court.number("beginner_height_m")
-	court.target_half_width = court.number("target_half_width_m")
+	court.target_half_width = court.number("beginner_target_half_width_m")
+	court.restitution_paddle = court.number("restitution_paddle")
 	return court
 
 

@@ -75,7 +75,7 @@ func start() -> bool:
 	if not Haptics.pong.is_available():
 		return false
 	court = PongCourt.from_config(Haptics.pong.get_config())
-	effects.ramp_s = court.number("effect_ramp_s")
+	effects.ramp_s = court.number("mine_effect_ramp_s")
 	rules = PongRules.new(start_health)
 	rules.health_changed.connect(health_changed.emit)
 	rules.match_over.connect(_on_match_over)
@@ -192,21 +192,25 @@ func avatar_of(player: int) -> Vector3:
 	return controllers[player].intent.avatar
 
 
-## Seconds left of [param player]'s mine effect and its kind: the servo's countdown for
-## the device player, the game's for a kinematic one. {kind, remaining_s} or empty.
+## [param player]'s mine effect and the seconds it has left, {kind, remaining_s}, or
+## empty: the servo's countdown for the device player, the game's for a kinematic one.
 func effect_of(player: int) -> Dictionary:
+	if player == local_player:
+		for entry: Dictionary in snapshot.effects:
+			if PongMines.KINDS.has(str(entry.get("kind", ""))):
+				return entry
+		return {}
 	var kind: String = effects.kind_of(player)
 	if kind.is_empty():
 		return {}
-	if player == local_player:
-		var servo: Dictionary = snapshot.effect(kind)
-		return servo if not servo.is_empty() else {}
 	return {"kind": kind, "remaining_s": effects.remaining(player)}
 
 
+# The ticks first: the update then reads the state they made and sends the input for the
+# next ones.
 func _step_chunk() -> void:
-	advance(STEP_CHUNK_S)
 	Haptics.pong.step_ticks(roundi(STEP_CHUNK_S / HapticsPong.TICK_S))
+	advance(STEP_CHUNK_S)
 
 
 func _unhandled_input(event: InputEvent) -> void:
@@ -272,7 +276,7 @@ func _check_mines() -> void:
 			continue
 		rules.hurt(player, PongRules.CAUSE_MINE)
 		var duration: float = court.number("mine_effect_duration_s")
-		if mine.kind != "none":
+		if mine.kind != "none" and player != local_player:
 			effects.start(player, mine.kind, duration, mine.owner)
 		if player == local_player:
 			Haptics.pong.rumble(MINE_RUMBLE_N, 0.35)

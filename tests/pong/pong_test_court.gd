@@ -16,7 +16,8 @@ static func make(overrides: Dictionary = {}) -> PongCourt:
 		"max_ball_speed_m_per_s": 9.0,
 		"workspace_scale": 5.0,
 		"beginner_height_m": 0.9,
-		"target_half_width_m": 0.5,
+		"beginner_target_half_width_m": 0.5,
+		"restitution_paddle": 0.8,
 	}
 	config.merge(overrides, true)
 	return PongCourt.from_config(config)

@@ -44,9 +44,10 @@ func test_the_swing_sends_the_ball_where_it_aims_by_the_mirror_law() -> void:
 	var n: Vector3 = plan.normal
 	var u: float = plan.speed
 	var v_in: Vector3 = plan.velocity_in
-	var v_out: Vector3 = v_in - 2.0 * (v_in - n * u).dot(n) * n
+	var e: float = _court.restitution_paddle
+	var v_out: Vector3 = v_in - (1.0 + e) * (v_in - n * u).dot(n) * n
 	var wanted: Vector3 = ai.wanted_velocity(plan.point)
-	assert_almost_eq(v_out, wanted, 1e-4, "a kinematic paddle at u n reflects v_in into it")
+	assert_almost_eq(v_out, wanted, 1e-4, "a paddle moving at u n sends v_in off as wanted")
 	var landing_t: float = _time_to_floor(plan.point, wanted)
 	var landing: Vector3 = PongPredictor.parabola_at(plan.point, wanted, G, landing_t)
 	assert_eq(PongCourt.territory_of(landing), 0, "it lands in the opponent's half")
