@@ -56,7 +56,9 @@ var use_weapons: bool = true
 ## Mines placed per second on average while the ball is in the opponent's half.
 var mine_rate_per_s: float = 0.1
 ## Seconds between shots at the least.
-var fire_interval_s: float = 1.5
+var fire_interval_s: float = 2.5
+## Error of its aim with the gun, radians (a body is about 0.1 rad wide across the court).
+var gun_error_rad: float = 0.08
 ## In beginner mode (no gravity, shots at the target).
 var beginner: bool = false
 
@@ -273,8 +275,13 @@ func _weapons(now: float, dt: float, ball: Vector3, velocity: Vector3, opponent:
 	if intent.gun:
 		var muzzle: Vector3 = intent.avatar + intent.paddle_offset
 		var body: Vector3 = Vector3(opponent.x, opponent.y * 0.6, opponent.z)
-		intent.normal = (body - muzzle).normalized()
+		var aim: Vector3 = (body - muzzle).normalized()
+		intent.normal = aim
 		if now >= _next_fire:
+			var wobble: Vector3 = (
+				Vector3(_rng.randfn(), _rng.randfn(), _rng.randfn()) * gun_error_rad
+			)
+			intent.normal = (aim + wobble).normalized()
 			intent.fire = true
 			_next_fire = now + fire_interval_s * _rng.randf_range(0.8, 1.6)
 	if use_weapons and far and _rng.randf() < mine_rate_per_s * dt:

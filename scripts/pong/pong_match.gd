@@ -65,6 +65,7 @@ var now: float = 0.0
 var reach: float = 0.0
 
 var _started: bool = false
+var _device_orientation: bool = false
 var _stopped_servo: bool = false
 var _wall_start_us: int = 0
 var _paused_ball: PongSnapshot = null
@@ -82,6 +83,7 @@ func start() -> bool:
 	var radius: float = Haptics.device.get_workspace_radius()
 	reach = radius * court.workspace_scale
 	local_player = 0 if mode != Mode.DEMO and _device_usable() else -1
+	_device_orientation = Haptics.device.get_capabilities().get("has_orientation", false) == true
 	controllers.clear()
 	for player: int in 2:
 		controllers.append(_make_controller(player, radius))
@@ -315,8 +317,12 @@ func _decide(dt: float) -> void:
 				mine_placed.emit(mine)
 
 
+# The gun's axis is the paddle's normal: the device's own when it reports an orientation,
+# else the one the game sends this update.
 func _fire(player: int) -> void:
-	var axis: Vector3 = snapshot.paddle_normals[player]
+	var axis: Vector3 = controllers[player].intent.normal
+	if player == local_player and _device_orientation:
+		axis = snapshot.paddle_normals[player]
 	var bullet: PongBullets.Bullet = bullets.fire(player, snapshot.paddle_centers[player], axis)
 	if bullet == null:
 		return

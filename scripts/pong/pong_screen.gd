@@ -112,7 +112,7 @@ func player_name(player: int) -> String:
 	if controller is PongAi:
 		return "Computer" if mode != PongMatch.Mode.DEMO else "Computer %d" % (player + 1)
 	if player == match_node.local_player:
-		return "You · %s" % Haptics.device.get_name()
+		return "You · device"
 	return "You · mouse" if player == 0 else "Player 2 · keyboard"
 
 

@@ -87,7 +87,8 @@ func refresh(match_node: PongMatch, delta: float) -> void:
 	_message_left -= delta
 	if _message_left <= 0.0:
 		var serve_in: float = match_node.referee.time_to_serve()
-		_status.text = "serve in %.1f s" % serve_in if serve_in > 0.0 else ""
+		var due: bool = match_node.auto_serve and serve_in > 0.0
+		_status.text = "serve in %.1f s" % serve_in if due else ""
 
 
 func get_panel(side: int) -> PongPlayerPanel:

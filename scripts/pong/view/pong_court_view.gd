@@ -4,15 +4,17 @@ extends Node3D
 ## floor in each player's colour with a grid every [constant GRID_STEP_M] (depth cues),
 ## the centre line, glass side walls and far wall, the frame of the near wall and the
 ## ceiling (the camera looks through them), and in beginner mode the targets on the back
-## walls.
+## walls (the near one as a frame and a strip on the floor: the camera looks through it).
 
 const GRID_STEP_M: float = 0.5
-const FLOOR_COLORS: Array[Color] = [Color(0.16, 0.3, 0.46), Color(0.42, 0.22, 0.2)]
+const FLOOR_COLORS: Array[Color] = [Color(0.09, 0.17, 0.28), Color(0.27, 0.12, 0.11)]
 const LINE_COLOR: Color = Color(0.9, 0.95, 1.0, 0.9)
 const GRID_COLOR: Color = Color(0.85, 0.92, 1.0, 0.16)
 const GLASS_COLOR: Color = Color(0.55, 0.75, 0.95, 0.1)
 const FRAME_COLOR: Color = Color(0.7, 0.85, 1.0, 0.75)
-const TARGET_COLOR: Color = Color(1.0, 0.85, 0.25, 0.55)
+const TARGET_COLOR: Color = Color(1.0, 0.85, 0.25, 0.45)
+const TARGET_FRAME_COLOR: Color = Color(1.0, 0.85, 0.25, 1.0)
+const TARGET_BAR_M: float = 0.04
 
 
 ## Builds the court (again: children from a previous build are removed).
@@ -39,14 +41,36 @@ func build(court: PongCourt, beginner: bool) -> void:
 	add_child(_frame(court))
 	if beginner:
 		for player: int in 2:
-			var target: MeshInstance3D = _box(
-				Vector3(2.0 * court.target_half_width, h, 0.03),
-				TARGET_COLOR,
-				true,
-				"Target%d" % player
+			_target(court, player)
+
+
+# A target: the far one filled in on its wall between two posts; the near one (the camera
+# looks through its wall) outlined with lines, with a strip on the floor in front of it.
+func _target(court: PongCourt, player: int) -> void:
+	var w: float = court.target_half_width
+	var h: float = court.wall_height
+	var z: float = court.back_wall_z(player) * 0.995
+	var area: MeshInstance3D
+	if player == 1:
+		for side: float in [-w, w]:
+			var post: MeshInstance3D = _box(
+				Vector3(TARGET_BAR_M, h, TARGET_BAR_M), TARGET_FRAME_COLOR, false, "TargetPost"
 			)
-			target.position = Vector3(0.0, h * 0.5, court.back_wall_z(player) * 0.995)
-			add_child(target)
+			post.position = Vector3(side, h * 0.5, z)
+			add_child(post)
+		area = _box(Vector3(2.0 * w, h, 0.02), TARGET_COLOR, true, "Target1")
+		area.position = Vector3(0.0, h * 0.5, z)
+	else:
+		var outline: ImmediateMesh = ImmediateMesh.new()
+		outline.surface_begin(Mesh.PRIMITIVE_LINE_STRIP, _material(TARGET_FRAME_COLOR, true))
+		for corner: Vector2 in [Vector2(-w, 0.0), Vector2(-w, h), Vector2(w, h), Vector2(w, 0.0)]:
+			outline.surface_add_vertex(Vector3(corner.x, corner.y, z))
+		outline.surface_end()
+		add_child(_instance(outline, "TargetOutline0"))
+		area = _box(Vector3(2.0 * w, 0.006, 0.3), TARGET_COLOR, true, "Target0")
+		area.position = Vector3(0.0, 0.004, z - 0.15)
+	area.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
+	add_child(area)
 
 
 func _glass_wall(size: Vector3, at: Vector3, wall_name: String) -> void:

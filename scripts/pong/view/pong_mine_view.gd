@@ -54,8 +54,11 @@ func _process(delta: float) -> void:
 		_material.emission_energy_multiplier = 0.6 + 0.5 * sin(_age * 6.0)
 		return
 	var done: float = _age / EXPLOSION_S
-	_disc.scale = Vector3.ONE * (1.0 + done * 6.0)
-	_disc.position.y = 0.015 + done * 0.3
-	_material.albedo_color.a = clampf(1.0 - done, 0.0, 1.0)
+	_disc.scale = Vector3(1.0 + done * 9.0, 1.0 + done * 40.0, 1.0 + done * 9.0)
+	_disc.position.y = 0.015 + done * 0.6
+	_material.emission_energy_multiplier = 3.0 * (1.0 - done)
+	var color: Color = COLORS.get(mine.kind, Color.WHITE)
+	_material.albedo_color = color.lerp(Color.WHITE, 0.5 - done * 0.5)
+	_material.albedo_color.a = clampf(1.0 - done, 0.0, 1.0) * 0.8
 	if done >= 1.0:
 		queue_free()

@@ -3,7 +3,9 @@ extends Node3D
 ## The 3D picture of a match, redrawn every frame from the newest servo state (the ball
 ## and paddles are the servo's; nothing here moves them): the court, a camera behind and
 ## above the near player, the ball with its blob shadow and drop line, both avatars and
-## paddles, the mines and the bullets. Physics interpolation is off for the whole view:
+## paddles, the mines and the bullets. The ball casts no shadow from the sun: its one
+## shadow is the blob straight below it, the cue for where it is (the sun's would fall
+## to the side). Physics interpolation is off for the whole view:
 ## the servo, not Godot's physics, moves these things.
 
 const PLAYER_COLORS: Array[Color] = [Color(0.25, 0.75, 1.0), Color(1.0, 0.5, 0.2)]
@@ -11,7 +13,7 @@ const PLAYER_COLORS: Array[Color] = [Color(0.25, 0.75, 1.0), Color(1.0, 0.5, 0.2
 ## its faintest.
 const SHADOW_GROWTH_PER_M: float = 0.6
 const SHADOW_FADE_HEIGHT_M: float = 2.5
-const SHADOW_MIN_ALPHA: float = 0.2
+const SHADOW_MIN_ALPHA: float = 0.35
 const BULLET_COLOR: Color = Color(1.0, 0.95, 0.4)
 
 var _court: PongCourt = null
@@ -21,6 +23,7 @@ var _mine_views: Array[PongMineView] = []
 var _bullet_mesh: SphereMesh = SphereMesh.new()
 
 @onready var camera: Camera3D = $Camera
+@onready var _sun: DirectionalLight3D = $Sun
 @onready var _court_view: PongCourtView = $Court
 @onready var _ball: MeshInstance3D = $Ball
 @onready var _shadow: MeshInstance3D = $BallShadow
@@ -59,8 +62,12 @@ func build(court: PongCourt, reach: float, beginner: bool) -> void:
 		paddle.setup(court.paddle_radius, PLAYER_COLORS[player])
 		add_child(paddle)
 		_paddles.append(paddle)
-	camera.position = Vector3(0.0, court.wall_height * 1.15, court.half_length + 2.4)
-	camera.look_at(Vector3(0.0, court.beginner_height * 0.5, -court.half_length * 0.2))
+	camera.position = Vector3(0.0, court.wall_height, court.half_length + 1.7)
+	camera.look_at(Vector3(0.0, court.beginner_height * 0.6, -court.half_length * 0.3))
+	# High, a little behind and to the right of the near player: shadows fall forward-left.
+	_sun.look_at_from_position(
+		Vector3(court.half_width, court.wall_height * 3.0, court.half_length), Vector3.ZERO
+	)
 
 
 ## Draws the match as it is now.

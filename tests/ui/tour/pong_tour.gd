@@ -50,17 +50,39 @@ func _tour() -> void:
 	get_tree().paused = false
 	_main.show_pong()
 	pong = _main.get_screen() as PongScreen
+	pong.start_match(PongMatch.Mode.VS_COMPUTER, false)
+	await _device(pong)
+	_main.show_pong()
+	pong = _main.get_screen() as PongScreen
 	pong.start_match(PongMatch.Mode.DEMO, true)
 	await _shot("pong_beginner", 4.0)
 	get_tree().quit(0)
 
 
-# A lob high over the near half: the shadow grows and fades with height.
+# A lob high over the near half, shot at its top: the shadow grows and fades with height.
 func _ball_high(pong: PongScreen) -> void:
 	pong.match_node.auto_serve = false
-	Haptics.pong.set_ball(Vector3(-0.6, 2.2, 1.0), Vector3(0.0, 0.0, 0.0))
-	await _shot("pong_ball_high", 0.12)
+	Haptics.pong.set_ball(Vector3(-0.7, 1.5, 1.2), Vector3(0.0, 2.4, 0.0))
+	await _shot("pong_ball_high", 0.4)
 	pong.match_node.auto_serve = true
+
+
+# Player 0 on the simulated device: a ball dropped on its paddle (the contact force in the
+# plot), then the opponent's heavy mine under it (the effect's steady force and countdown).
+func _device(pong: PongScreen) -> void:
+	var match_node: PongMatch = pong.match_node
+	match_node.auto_serve = false
+	(match_node.controllers[0] as PongHumanPlayer).reads_input = false
+	await _shot("pong_vs_computer", 0.5)
+	var paddle: Vector3 = match_node.snapshot.paddle_centers[0]
+	Haptics.pong.set_ball(paddle + Vector3(0.0, 0.6, -0.05), Vector3.ZERO)
+	await _shot("pong_device_contact", 0.7)
+	var avatar: Vector3 = match_node.avatar_of(0)
+	for spot: Vector3 in [Vector3(-1.0, 0.0, -2.5), Vector3(avatar.x, 0.0, -avatar.z)]:
+		var mine: PongMines.Mine = match_node.mines.place(1, spot, match_node.court)
+		if mine != null:
+			match_node.mine_placed.emit(mine)
+	await _shot("pong_device_heavy_mine", 1.5)
 
 
 # A mine of player 0 right under the far avatar: it goes off at the next update.
@@ -72,8 +94,7 @@ func _mine(pong: PongScreen) -> void:
 	)
 	if mine != null:
 		match_node.mine_placed.emit(mine)
-	await _shot("pong_mine_placed", 0.0)
-	await _shot("pong_mine_exploding", 0.2)
+	await _shot("pong_mine_exploding", 0.1)
 	await _shot("pong_mine_effect_hud", 1.0)
 
 
@@ -87,10 +108,14 @@ func _gun(pong: PongScreen) -> void:
 	await _shot("pong_gun_bullet", 0.05)
 
 
+# Software rendering under Xvfb is slow: a few frames pass after the wait so that the
+# picture shows the state of its moment.
 func _shot(shot_name: String, wait_seconds: float) -> void:
 	if wait_seconds > 0.0:
 		await get_tree().create_timer(wait_seconds, true).timeout
+	for i: int in 2:
+		await get_tree().process_frame
 	await RenderingServer.frame_post_draw
 	var path: String = "%s/%s.png" % [_out, shot_name]
 	get_viewport().get_texture().get_image().save_png(path)
-	print("saved ", path)
+	print("saved %s (%d fps)" % [path, Engine.get_frames_per_second()])
