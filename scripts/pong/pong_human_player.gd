@@ -161,7 +161,8 @@ func _device_offset(dt: float) -> Vector3:
 	hand.z = clampf(hand.z + depth, -1.0, 1.0)
 	hand = hand.limit_length(1.0)
 	if not kinematic:
-		if _workspace_radius > 0.0:
+		# A physical device is moved by the hand itself.
+		if _workspace_radius > 0.0 and Haptics.device.is_simulated():
 			Haptics.pong.set_hand_target_3d(hand * _workspace_radius)
 		return Vector3.ZERO
 	return PongCourt.side_rotation(player) * hand * _reach

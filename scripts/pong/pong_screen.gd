@@ -5,7 +5,8 @@ extends Node
 ## winner screen. Without the extension's Pong renderer it says why and offers the way
 ## back: the ball lives in the servo, and there is no other ball.
 ##
-## Runs on its own (F6): it starts on the setup. [member skip_setup] starts the match
+## Runs on its own (F6): it starts on the setup; Menu then quits and Play again reloads.
+## [member skip_setup] starts the match
 ## straight away (the main scene's headless demo, tests); with [member quit_when_over] it
 ## prints the result and the simulated/wall time ratio and quits.
 
@@ -46,11 +47,11 @@ var _running: bool = false
 func _ready() -> void:
 	hud.visible = false
 	pause_menu.enabled = false
-	pause_menu.quit_requested.connect(menu_requested.emit)
-	winner_screen.play_again_requested.connect(play_again_requested.emit)
-	winner_screen.menu_requested.connect(menu_requested.emit)
+	pause_menu.quit_requested.connect(_leave)
+	winner_screen.play_again_requested.connect(_play_again)
+	winner_screen.menu_requested.connect(_leave)
 	setup.start_requested.connect(start_match)
-	setup.back_requested.connect(menu_requested.emit)
+	setup.back_requested.connect(_leave)
 	if not Haptics.pong.is_available():
 		setup.show_offline(OFFLINE_TEXT if not Haptics.is_available() else OLD_EXTENSION_TEXT)
 		if quit_when_over:
@@ -114,6 +115,24 @@ func player_name(player: int) -> String:
 	if player == match_node.local_player:
 		return "You · device"
 	return "You · mouse" if player == 0 else "Player 2 · keyboard"
+
+
+func _is_own_scene() -> bool:
+	return get_tree().current_scene == self
+
+
+func _leave() -> void:
+	if _is_own_scene():
+		get_tree().quit(0)
+	else:
+		menu_requested.emit()
+
+
+func _play_again() -> void:
+	if _is_own_scene():
+		get_tree().reload_current_scene()
+	else:
+		play_again_requested.emit()
 
 
 func _on_served(receiver: int) -> void:
