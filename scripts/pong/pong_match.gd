@@ -141,7 +141,7 @@ func _physics_process(delta: float) -> void:
 	while stepped_speed <= 0.0 or done < chunks:
 		_step_chunk()
 		done += 1
-		if Time.get_ticks_usec() - wall_start > STEP_BUDGET_MS * 1000.0:
+		if rules.is_over() or Time.get_ticks_usec() - wall_start > STEP_BUDGET_MS * 1000.0:
 			break
 
 

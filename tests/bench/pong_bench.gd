@@ -70,8 +70,8 @@ func _report(runs: Array[Dictionary]) -> void:
 	print("Pong, computer vs computer, health %d, stepped servo, %d matches" % [_health, _matches])
 	print(
 		(
-			"%-8s %12s %10s %10s %14s %8s"
-			% ["match", "simulated s", "wall s", "speed x", "update+10 ticks us", "winner"]
+			"%-8s %12s %10s %10s %20s %8s"
+			% ["match", "simulated s", "wall s", "speed x", "update+10 ticks (us)", "winner"]
 		)
 	)
 	var simulated: float = 0.0
@@ -82,7 +82,7 @@ func _report(runs: Array[Dictionary]) -> void:
 		wall += float(run["wall_s"])
 		print(
 			(
-				"%-8d %12.1f %10.2f %10.1f %14.1f %8d"
+				"%-8d %12.1f %10.2f %10.1f %20.1f %8d"
 				% [
 					i + 1,
 					run["simulated_s"],

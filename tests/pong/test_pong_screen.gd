@@ -1,8 +1,8 @@
 extends TestSuite
 ## The Pong screen as a player reaches it: the main menu's entry, the setup, a real-time
-## match against the computer on the servo thread (the first serve, the HUD), the spin
-## paddle's colour, and the way back (Esc on the setup, the pause menu's Quit to menu)
-## leaving the servo as it was.
+## match against the computer on the servo thread (the first serve, the HUD, a pause that
+## holds the ball where it was), the spin paddle's colour, and the way back (Esc on the
+## setup, the pause menu's Quit to menu) leaving the servo as it was.
 
 const MAIN_SCENE: PackedScene = preload("res://scenes/main/main.tscn")
 
@@ -59,8 +59,18 @@ func test_a_real_time_match_serves_and_quitting_restores_the_servo() -> void:
 	assert_true(moving, "the first serve puts the ball in play")
 	assert_gt(match_node.referee.serves, 0)
 	assert_has(pong.hud.get_panel(0).get_health_text(), str(match_node.rules.get_health(0)))
+	# A ball at rest high up: the servo thread runs on while paused, the game puts it back.
+	match_node.auto_serve = false
+	Haptics.pong.set_ball(Vector3(-1.0, 2.0, 1.5), Vector3.ZERO)
+	await wait_until(func() -> bool: return match_node.snapshot.ball_position.y > 1.9, 2.0)
 	pong.pause_menu.open()
 	assert_true(get_tree().paused)
+	await wait_seconds(0.6)
+	pong.pause_menu.close()
+	await wait_process_frames(1)
+	var ball: Vector3 = PongSnapshot.from_state(Haptics.pong.get_state()).ball_position
+	assert_gt(ball.y, 1.7, "the ball is back where the pause caught it (it fell 1 m meanwhile)")
+	pong.pause_menu.open()
 	pong.pause_menu.quit_button.pressed.emit()
 	await wait_process_frames(2)
 	assert_true(_main.get_screen() is MainMenu, "Quit to menu")
