@@ -45,8 +45,8 @@ struct ProxyBenchResult {
 	bool identical = false; // Grid and brute force gave the same proxy path, bit for bit.
 };
 
-// Tick-cost micro-benchmarks: force model alone, filter, transients, full manual tick
-// (movement and constraint mode).
+// Tick-cost micro-benchmarks: force model alone, filter, transients, the Pong simulation's
+// step, full manual tick (movement, pong and constraint mode).
 std::vector<MicroResult> run_micro_benchmarks();
 // Proxy update cost for 100 / 1 000 / 10 000 walls, grid vs brute force.
 std::vector<ProxyBenchResult> run_proxy_benchmarks();

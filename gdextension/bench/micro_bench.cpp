@@ -6,11 +6,14 @@
 #include "core/force_model.h"
 #include "core/haptics_engine.h"
 #include "core/smoothing_filter.h"
+#include "core/telemetry.h"
 #include "core/transients.h"
+#include "pong/pong_sim.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 
 #include "../tests/test_proxy_geometry.h"
 
@@ -54,6 +57,33 @@ Frame busy_frame() {
 	frame.water = WaterState{ true, 0.4, 0.3 };
 	frame.player_velocity = { 1.2, -0.3, 0.0 };
 	return frame;
+}
+
+// Player 0 holds the device paddle flat at (0, 1, 2) with spin mode on; player 1 out of play.
+PongInput pong_bench_input() {
+	PongInput input;
+	input.local_player = 0;
+	input.players[0].avatar = { 0.0, 1.0, 2.0 };
+	input.players[0].normal = { 0.0, 1.0, 0.0 };
+	input.players[0].spin = true;
+	input.players[1].active = false;
+	return input;
+}
+
+PongCommand pong_bench_command(PongCommandType p_type, PongEffectKind p_kind = PongEffectKind::NONE) {
+	PongCommand command;
+	command.type = p_type;
+	command.kind = p_kind;
+	command.position = { 0.0, 1.0 + PongConfig{}.ball_radius_m, 2.0 }; // Resting on the paddle.
+	command.spin = { 0.0, 30.0, 0.0 };
+	return command;
+}
+
+std::string with_contact_share(const char *p_name, uint64_t p_contact_ticks, uint64_t p_ticks) {
+	char name[160];
+	std::snprintf(name, sizeof(name), "%s (in contact %.0f%%)", p_name,
+			100.0 * static_cast<double>(p_contact_ticks) / static_cast<double>(p_ticks));
+	return name;
 }
 
 } // namespace
@@ -109,6 +139,65 @@ std::vector<MicroResult> run_micro_benchmarks() {
 		}
 	}));
 	g_sink = g_sink + engine.forces().total.x;
+
+	// Haptic Battle Pong: the simulation step alone (contact law, spin, a slow effect,
+	// court, events), then the whole tick in pong mode, both with the ball resting in
+	// contact on the device paddle: the contact branch every tick, the costliest steady case.
+	PongSim pong;
+	pong.set_input(pong_bench_input());
+	pong.apply(pong_bench_command(PongCommandType::SET_BALL));
+	HandSample pong_hand;
+	pong_hand.velocity_m_per_s = { 0.05, 0.0, 0.0 }; // A small brush: spin induction does work.
+	uint64_t pong_ticks = 0;
+	uint64_t pong_contacts = 0;
+	MicroResult sim_result = measure("", [&](int p_n) {
+		if (p_n == 0 && !pong.effects().running(PongEffectKind::SLOW)) {
+			pong.apply(pong_bench_command(PongCommandType::EFFECT, PongEffectKind::SLOW));
+		}
+		pong.step(0.001, &pong_hand);
+		PongEvent event;
+		while (pong.events().pop(event)) {
+		}
+		++pong_ticks;
+		pong_contacts += pong.contact(0).touching ? 1 : 0;
+		g_sink = g_sink + pong.hand_forces().contact.y;
+	});
+	sim_result.name = with_contact_share("pong sim step alone, ball on the paddle", pong_contacts, pong_ticks);
+	results.push_back(sim_result);
+
+	HapticsEngine pong_engine;
+	pong_engine.open_simulated_device();
+	pong_engine.set_hand_target({ 0.0, 0.0, 0.0 });
+	RenderConfig pong_config = pong_engine.config();
+	pong_config.render_mode = RenderMode::PONG;
+	pong_engine.configure(pong_config);
+	pong_engine.set_pong_input(pong_bench_input());
+	pong_engine.push_pong_command(pong_bench_command(PongCommandType::SET_BALL));
+	for (int k = 0; k < 2000; ++k) { // Let the ball settle onto the paddle.
+		if (k % 20 == 0) {
+			pong_engine.set_pong_input(pong_bench_input());
+		}
+		pong_engine.step(0.001);
+	}
+	pong_ticks = 0;
+	pong_contacts = 0;
+	PongEvent events[16];
+	MicroResult tick_result = measure("", [&](int p_n) {
+		if (p_n % 20 == 0) {
+			pong_engine.set_pong_input(pong_bench_input()); // 50 Hz: the watchdog's heartbeat.
+		}
+		pong_engine.step(0.001);
+		if (p_n % 100 == 0) { // As often as the movement tick above drains: same overhead.
+			float telemetry[100 * 32];
+			pong_engine.drain_telemetry(telemetry, 100);
+			pong_engine.drain_pong_events(events, 16);
+			++pong_ticks; // Sampled here, not every tick: reading the output costs too.
+			pong_contacts += (pong_engine.output().flags & TELEMETRY_FLAG_PADDLE_CONTACT) != 0 ? 1 : 0;
+		}
+	});
+	tick_result.name = with_contact_share("full tick, manual step, pong mode, ball on the paddle", pong_contacts, pong_ticks);
+	results.push_back(tick_result);
+	g_sink = g_sink + pong_engine.forces().total.x;
 
 	// The same tick in constraint mode: finite proxy against 10 000 walls, at 1 kHz.
 	HapticsEngine maze_engine;

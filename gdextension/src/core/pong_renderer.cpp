@@ -36,13 +36,16 @@ void PongRenderer::reset() {
 void PongRenderer::pick_up() {
 	heard_from_game_ = false;
 	picked_up_ = false;
-	if (channels_.input.version() != input_version_) {
+	// The seqlock's own default is not the game's: until it sends one, the sim keeps its
+	// no-paddles input.
+	const uint64_t latest = channels_.input.version();
+	if (latest != input_version_ && latest > UNTOUCHED_VERSION) {
 		PongInput input;
 		uint64_t version = 0;
 		if (channels_.input.try_load(input, &version)) {
 			input_version_ = version;
 			sim_.set_input(input);
-			heard_from_game_ = version > UNTOUCHED_VERSION;
+			heard_from_game_ = true;
 			picked_up_ = true;
 		}
 	}

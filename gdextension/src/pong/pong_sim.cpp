@@ -29,6 +29,12 @@ Vec3 rotate(const Orientation &p_q, const Vec3 &p_v) {
 }
 
 PongSim::PongSim() {
+	// Until the game says where its paddles are, none is in play: default poses (both at the
+	// world origin) must neither touch the ball nor push the hand.
+	input_.local_player = -1;
+	for (PongPlayerInput &player : input_.players) {
+		player.active = false;
+	}
 	configure(PongConfig{});
 	reset();
 }

@@ -63,6 +63,7 @@ Vec3 rotate(const Orientation &p_q, const Vec3 &p_v);
 
 class PongSim {
 public:
+	// No paddle in play and no device player until the first set_input().
 	PongSim();
 
 	void configure(const PongConfig &p_config);

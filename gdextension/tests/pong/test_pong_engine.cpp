@@ -97,6 +97,22 @@ TEST_CASE("pong engine: a ball landing on the paddle pushes the hand along the p
 	CHECK((engine.output().flags & TELEMETRY_FLAG_PONG_MODE) != 0u);
 }
 
+TEST_CASE("pong engine: before the game's first input no paddle plays and the hand feels nothing") {
+	HapticsEngine engine;
+	start_pong(engine);
+	std::vector<PongEvent> events(PONG_EVENT_QUEUE_CAPACITY);
+	for (int k = 0; k < 500; ++k) {
+		REQUIRE(engine.step(0.001));
+		CHECK(engine.drain_pong_events(events.data(), events.size()) == 0);
+	}
+	CHECK(engine.forces().continuous == Vec3{});
+	const PongState state = engine.pong_state();
+	CHECK(state.paddle_contacts == 0);
+	CHECK_FALSE(state.players[0].in_contact);
+	CHECK(length(state.ball.velocity) < 1e-9); // At rest on the centre spot.
+	CHECK(state.ball.position.y == doctest::Approx(PongConfig{}.ball_radius_m));
+}
+
 TEST_CASE("pong engine: the input is the watchdog's heartbeat in pong mode") {
 	HapticsEngine engine;
 	start_pong(engine);

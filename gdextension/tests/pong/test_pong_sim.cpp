@@ -249,3 +249,29 @@ TEST_CASE("pong sim: game-driven paddles and walking avatars are extrapolated fo
 	sim.step(PONG_DT, &hand);
 	CHECK(sim.paddle(0).center.x == doctest::Approx(-1.0));
 }
+
+TEST_CASE("pong sim: a ball hitting either player's paddle face pushes that hand toward its user") {
+	const PongConfig config;
+	for (int player = 0; player < 2; ++player) {
+		CAPTURE(player);
+		PongSim sim;
+		PongInput input = idle_input();
+		input.local_player = player;
+		const double side = player == 0 ? 1.0 : -1.0; // Player 0 at +z, player 1 at -z.
+		input.players[player].avatar = { 0.0, 1.0, side * 2.0 };
+		input.players[player].active = true;
+		input.players[player].normal = { 0.0, 0.0, -side }; // Facing the opponent.
+		sim.set_input(input);
+		// Coming at the face from the opponent's side, already 1 cm in.
+		const Vec3 ball{ 0.0, 1.0, side * (2.0 - config.ball_radius_m + 0.01) };
+		sim.apply(set_ball(ball, { 0.0, 0.0, side * 2.0 }));
+		const HandSample hand;
+		sim.step(PONG_DT, &hand);
+		REQUIRE(sim.contact(player).touching);
+		const Vec3 force = sim.hand_forces().contact;
+		CHECK(force.z > 0.0); // Device +z: toward the user, whichever side.
+		CHECK(force.z == doctest::Approx(config.hand_stiffness_n_per_m * sim.contact(player).penetration_m));
+		CHECK(std::abs(force.x) < 1e-12);
+		CHECK(std::abs(force.y) < 1e-12);
+	}
+}
