@@ -66,6 +66,9 @@ var reach: float = 0.0
 
 var _started: bool = false
 var _device_orientation: bool = false
+var _telemetry_stride: int = 0
+var _telemetry_total: int = -1
+var _telemetry_capacity: int = 0
 var _stopped_servo: bool = false
 var _wall_start_us: int = 0
 var _paused_ball: PongSnapshot = null
@@ -95,6 +98,11 @@ func start() -> bool:
 	Haptics.pong.clear_effects()
 	Haptics.pong.drain_events()
 	Haptics.pong.set_ball(Vector3(0.0, court.ball_radius, 0.0), Vector3.ZERO)
+	var columns: PackedStringArray = Haptics.servo.get_telemetry_columns()
+	_telemetry_stride = columns.size()
+	_telemetry_total = columns.find("total_x")
+	_telemetry_capacity = Haptics.get_constant(&"TELEMETRY_QUEUE_CAPACITY")
+	Haptics.servo.drain_telemetry(_telemetry_capacity)
 	_send_input()
 	_wall_start_us = Time.get_ticks_usec()
 	_started = true
@@ -187,6 +195,19 @@ func serve() -> void:
 func speed_ratio() -> float:
 	var wall: float = (Time.get_ticks_usec() - _wall_start_us) / 1e6
 	return now / wall if wall > 0.0 else 0.0
+
+
+## The largest |force on the hand| (N, device space) since the last call: every servo
+## tick's total from the telemetry while the servo thread runs (a ball's contact lasts
+## about 40 ms and falls between frames), else the newest state's.
+func take_peak_force() -> float:
+	var peak: float = snapshot.total_force().length()
+	if stepped or _telemetry_total < 0 or not Haptics.servo.is_running():
+		return peak
+	var samples: PackedFloat32Array = Haptics.servo.drain_telemetry(_telemetry_capacity)
+	for i: int in range(_telemetry_total, samples.size() - 2, _telemetry_stride):
+		peak = maxf(peak, Vector3(samples[i], samples[i + 1], samples[i + 2]).length())
+	return peak
 
 
 ## The avatar of [param player].

@@ -2,8 +2,9 @@ class_name PongHud
 extends CanvasLayer
 ## The Pong overlay: each player's panel (health, mines, modes, mine effect), a status
 ## line (serves, goals, what just happened), the force on the hand over the last 5 s
-## ([code]hand_force[/code] of the servo's state: contact, spin, effects, total) and the
-## controls. It reads the match each frame; it never changes it.
+## (the peak of [code]hand_force.total[/code] since the last frame, with the contact, spin
+## and effects components of the servo's state) and the controls. It reads the match each
+## frame; it never changes it.
 
 const MESSAGE_S: float = 2.0
 const CONTROLS: String = (
@@ -73,7 +74,7 @@ func refresh(match_node: PongMatch, delta: float) -> void:
 		var remaining: float = effect.get("remaining_s", 0.0)
 		panel.show_effect(str(effect.get("kind", "")), remaining)
 	var snapshot: PongSnapshot = match_node.snapshot
-	var total: float = snapshot.total_force().length()
+	var total: float = match_node.take_peak_force()
 	_plot.advance(delta, total)
 	_force_value.text = "%.2f N" % total
 	_components.text = (
