@@ -5,13 +5,19 @@ extends Node3D
 ## the centre's height showing how far the paddle reaches.
 
 const BODY_HEIGHT_FRACTION: float = 0.7
+const SEE_THROUGH_ALPHA: float = 0.4
 
 
 ## Sizes and colours the avatar: [param centre_height] of the workspace centre,
-## [param reach] of the paddle, metres.
-func setup(centre_height: float, reach: float, color: Color) -> void:
+## [param reach] of the paddle, metres. [param see_through]: for the avatar the camera
+## stands behind, which would otherwise hide the ball in front of it.
+func setup(centre_height: float, reach: float, color: Color, see_through: bool) -> void:
 	var body_material: StandardMaterial3D = StandardMaterial3D.new()
-	body_material.albedo_color = color.darkened(0.2)
+	body_material.albedo_color = Color(
+		color.darkened(0.2), SEE_THROUGH_ALPHA if see_through else 1.0
+	)
+	if see_through:
+		body_material.transparency = BaseMaterial3D.TRANSPARENCY_ALPHA
 	body_material.roughness = 0.6
 	var body_height: float = centre_height * BODY_HEIGHT_FRACTION
 	var body: CapsuleMesh = CapsuleMesh.new()

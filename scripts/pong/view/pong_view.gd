@@ -54,7 +54,7 @@ func build(court: PongCourt, reach: float, beginner: bool) -> void:
 	for player: int in 2:
 		var avatar: PongAvatarView = PongAvatarView.new()
 		avatar.name = "Avatar%d" % player
-		avatar.setup(court.beginner_height, reach, PLAYER_COLORS[player])
+		avatar.setup(court.beginner_height, reach, PLAYER_COLORS[player], player == 0)
 		add_child(avatar)
 		_avatars.append(avatar)
 		var paddle: PongPaddleView = PongPaddleView.new()

@@ -76,7 +76,7 @@ func _device(pong: PongScreen) -> void:
 	await _shot("pong_vs_computer", 0.5)
 	var paddle: Vector3 = match_node.snapshot.paddle_centers[0]
 	Haptics.pong.set_ball(paddle + Vector3(0.0, 0.6, -0.05), Vector3.ZERO)
-	await _shot("pong_device_contact", 0.7)
+	await _shot("pong_device_contact_plot", 0.7)
 	var avatar: Vector3 = match_node.avatar_of(0)
 	for spot: Vector3 in [Vector3(-1.0, 0.0, -2.5), Vector3(avatar.x, 0.0, -avatar.z)]:
 		var mine: PongMines.Mine = match_node.mines.place(1, spot, match_node.court)
