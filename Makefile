@@ -21,7 +21,7 @@ TEST_ARGS ?=
 # Seconds the benchmark runs each loop.
 BENCH_SECONDS ?= 10
 
-.PHONY: play test deps engine build build-release import test-native test-godot lint \
+.PHONY: play test deps engine build build-release import test-native test-godot lint pong-demo \
 	export test-export bench sanitize analyze export-study test-analysis clean distclean
 
 ## deps: install missing OS packages (apt-get; sudo when not root)
@@ -61,6 +61,12 @@ play: import
 		$(GODOT) --headless --path . -- --autopilot $(ARGS); \
 	fi
 
+## pong-demo: a headless computer-vs-computer Haptic Battle Pong match, the servo stepped by
+## the game (faster than real time); prints the winner and simulated vs wall seconds.
+## ARGS=--pong-health=N sets each player's health (default 15).
+pong-demo: import
+	@$(GODOT) --headless --path . -- --pong-demo $(ARGS)
+
 ## test: every suite; any failure fails the target
 test: import test-native test-godot lint test-analysis test-export
 	@echo "make test: all suites passed"
@@ -92,8 +98,9 @@ test-export: export
 	@tools/test-export.sh
 
 ## bench: servo loop vs naive loop, the force model's and the proxy's tick cost, each device
-## backend's tick cost and protocol rate against its scripted transport, and the
-## game's physics-frame and probe cost (numbers and ratios, not tests; JSON in .bench/)
+## backend's tick cost and protocol rate against its scripted transport, the
+## game's physics-frame and probe cost, and headless Pong matches' speed against real time
+## (numbers and ratios, not tests; JSON in .bench/)
 bench: import
 	@$(CMAKE_CONFIGURE) -B $(BUILD)/bench -DCMAKE_BUILD_TYPE=Release -DHAPTICS_BUILD_EXTENSION=OFF \
 		-DHAPTICS_BUILD_TESTS=OFF >/dev/null
@@ -103,6 +110,7 @@ bench: import
 	@$(BUILD)/bench/haptics_device_bench --seconds 1 --json .bench/devices.json
 	@$(GODOT) --headless --path . --fixed-fps 50 res://tests/bench/game_bench.tscn -- \
 		--frames=1500 --json=.bench/game.json
+	@$(GODOT) --headless --path . res://tests/bench/pong_bench.tscn -- --json=.bench/pong.json
 
 ## sanitize: the doctest suite under ThreadSanitizer, then AddressSanitizer+UBSan
 sanitize: deps

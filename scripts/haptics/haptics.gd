@@ -11,9 +11,11 @@ extends Node
 ## [code]HapticsServer[/code] (they must parse without the library): its constants come
 ## through [method get_constant], its renderers by name ([code]&"constraint"[/code]).
 ##
-## Besides its own methods the door has two rooms: [member device] (the devices, the open
-## one, the simulated hand) and [member servo] (the rendering thread, its statistics and
-## telemetry). Vectors are in game axes (x right, y down); forces are in newtons.
+## Besides its own methods the door has three rooms: [member device] (the devices, the open
+## one, the simulated hand), [member servo] (the rendering thread, its statistics and
+## telemetry) and [member pong] (Haptic Battle Pong's renderer: the ball, the paddles, the
+## effects). Vectors are in game axes (x right, y down) except in [member pong], which is
+## 3D (y up); forces are in newtons.
 
 ## Emitted when the device, the servo state or a setting changes.
 signal status_changed
@@ -65,6 +67,8 @@ var hand_follows_input: bool = true
 var device: HapticsDevice = null
 ## The rendering thread, its statistics and telemetry.
 var servo: HapticsServo = null
+## Haptic Battle Pong: the ball and paddles simulated in the servo.
+var pong: HapticsPong = null
 
 # Typed as Object so that this script parses without the extension.
 var _server: Object = null
@@ -92,8 +96,11 @@ func _init() -> void:
 		)
 	servo = HapticsServo.new(_server, get_constant(&"DEFAULT_RATE_HZ"))
 	device = HapticsDevice.new(_server, servo)
+	# Read without get_constant(): an extension without the Pong renderer is not an error.
+	pong = HapticsPong.new(_server, servo, _constants.get(&"RENDER_MODE_PONG", -1))
 	servo.changed.connect(status_changed.emit)
 	device.changed.connect(status_changed.emit)
+	pong.changed.connect(status_changed.emit)
 
 
 func _ready() -> void:

@@ -1,10 +1,15 @@
 class_name Main
 extends Node
-## Entry scene: the main menu and the screens it leads to (Play, Maze study, Settings).
+## Entry scene: the main menu and the screens it leads to (Play, Haptic Battle Pong, Maze
+## study, Settings).
 ##
 ## On a machine without a display, or with [code]-- --autopilot[/code], it skips the menu
 ## and plays level 1 under the [Autopilot], printing one status line per second, and quits
 ## with exit code 0 at the goal or after [code]--autopilot-seconds=N[/code] (default 5).
+## With [code]-- --pong-demo[/code] it plays a computer-vs-computer Pong match instead,
+## the servo stepped by the game (faster than real time), each player starting with
+## [code]--pong-health=N[/code] (default [constant PONG_DEMO_HEALTH]), and prints the
+## winner and the simulated/wall time ratio.
 
 const MENU_SCENE: PackedScene = preload("res://scenes/ui/main_menu.tscn")
 const SETTINGS_SCENE: PackedScene = preload("res://scenes/ui/settings_screen.tscn")
@@ -12,6 +17,10 @@ const SETTINGS_SCENE: PackedScene = preload("res://scenes/ui/settings_screen.tsc
 const STUDY_SCENE: PackedScene = preload("res://scenes/study/study.tscn")
 ## One run of a level.
 const GAME_SCENE: PackedScene = preload("res://scenes/main/game.tscn")
+## Haptic Battle Pong.
+const PONG_SCENE: PackedScene = preload("res://scenes/pong/pong.tscn")
+## Health of each player in the headless Pong demo: a short match.
+const PONG_DEMO_HEALTH: int = 15
 
 ## Whether [method _ready] looks at the display and the command line to start the
 ## autopilot (tests turn it off, then drive the screens themselves).
@@ -29,9 +38,15 @@ func _ready() -> void:
 		show_menu()
 		return
 	var args: PackedStringArray = OS.get_cmdline_user_args()
+	var pong_health: int = PONG_DEMO_HEALTH
 	for arg: String in args:
 		if arg.begins_with("--autopilot-seconds="):
 			autopilot_seconds = arg.get_slice("=", 1).to_float()
+		elif arg.begins_with("--pong-health="):
+			pong_health = maxi(1, arg.get_slice("=", 1).to_int())
+	if args.has("--pong-demo"):
+		start_pong_demo(pong_health)
+		return
 	var headless: bool = DisplayServer.get_name() == "headless"
 	if headless or args.has("--autopilot"):
 		print(
@@ -59,6 +74,7 @@ func get_screen() -> Node:
 func show_menu() -> void:
 	var menu: MainMenu = _switch_to(MENU_SCENE) as MainMenu
 	menu.play_requested.connect(start_game.bind(false))
+	menu.pong_requested.connect(show_pong)
 	menu.maze_requested.connect(show_maze)
 	menu.settings_requested.connect(show_settings)
 	menu.quit_requested.connect(_on_quit_requested)
@@ -74,6 +90,27 @@ func show_settings() -> void:
 func show_maze() -> void:
 	var study: StudyRunner = _switch_to(STUDY_SCENE) as StudyRunner
 	study.closed.connect(show_menu)
+
+
+## Opens Haptic Battle Pong on its setup; leaving it returns to the title screen.
+func show_pong() -> void:
+	var pong: PongScreen = PONG_SCENE.instantiate() as PongScreen
+	pong.menu_requested.connect(show_menu)
+	pong.play_again_requested.connect(_replay_pong.bind(pong))
+	_switch_to_node(pong)
+
+
+## A computer-vs-computer match with the servo stepped by the game, printing its result
+## and quitting when it is over.
+func start_pong_demo(health: int) -> void:
+	var pong: PongScreen = PONG_SCENE.instantiate() as PongScreen
+	pong.skip_setup = true
+	pong.mode = PongMatch.Mode.DEMO
+	pong.stepped = true
+	pong.start_health = health
+	pong.quit_when_over = true
+	print("Pong demo: computer vs computer, health %d, stepped servo" % health)
+	_switch_to_node(pong)
 
 
 ## Starts a run of the level, under the autopilot when [param with_autopilot].
@@ -99,8 +136,21 @@ func _switch_to_node(node: Node) -> void:
 		remove_child(_screen)
 		_screen.queue_free()
 	_screen = node
-	_background.visible = not node is Game
+	_background.visible = not (node is Game or node is PongScreen)
 	add_child(node)
+
+
+# Play again: a new Pong screen with the same settings, straight into the match.
+func _replay_pong(previous: PongScreen) -> void:
+	var pong: PongScreen = PONG_SCENE.instantiate() as PongScreen
+	pong.skip_setup = true
+	pong.mode = previous.mode
+	pong.beginner = previous.beginner
+	pong.start_health = previous.start_health
+	pong.stepped = previous.stepped
+	pong.menu_requested.connect(show_menu)
+	pong.play_again_requested.connect(_replay_pong.bind(pong))
+	_switch_to_node(pong)
 
 
 func _on_autopilot_finished(_reason: String) -> void:

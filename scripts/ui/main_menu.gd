@@ -1,10 +1,11 @@
 class_name MainMenu
 extends Control
-## The title screen: Play, Maze study, Settings, Quit. Navigable with keyboard or gamepad
-## (the first button takes focus) and clickable with the mouse. It only emits signals; the
-## main scene decides what each one does.
+## The title screen: Play, Haptic Battle Pong, Maze study, Settings, Quit. Navigable with
+## keyboard or gamepad (the first button takes focus) and clickable with the mouse. It only
+## emits signals; the main scene decides what each one does.
 
 signal play_requested
+signal pong_requested
 signal maze_requested
 signal settings_requested
 signal quit_requested
@@ -12,6 +13,7 @@ signal quit_requested
 var _status_timer: float = 0.0
 
 @onready var play_button: Button = %PlayButton
+@onready var pong_button: Button = %PongButton
 @onready var maze_button: Button = %MazeButton
 @onready var settings_button: Button = %SettingsButton
 @onready var quit_button: Button = %QuitButton
@@ -20,6 +22,7 @@ var _status_timer: float = 0.0
 
 func _ready() -> void:
 	play_button.pressed.connect(play_requested.emit)
+	pong_button.pressed.connect(pong_requested.emit)
 	maze_button.pressed.connect(maze_requested.emit)
 	settings_button.pressed.connect(settings_requested.emit)
 	quit_button.pressed.connect(quit_requested.emit)

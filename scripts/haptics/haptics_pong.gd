@@ -1,0 +1,185 @@
+class_name HapticsPong
+extends RefCounted
+## The Haptic Battle Pong side of the [code]Haptics[/code] door ([code]Haptics.pong[/code]):
+## the servo's third renderer, which simulates the ball at 1 kHz, its contact with both
+## paddles, spin, the effects on the hand, and reports events. World vectors are Godot
+## [Vector3] in metres (y up); hand forces are in device space, newtons. Without the native
+## extension [method is_available] is false and every answer is neutral: there is no ball
+## then (the game says so; it never simulates the ball itself).
+
+## The Pong renderer started or stopped.
+signal changed
+
+## Effect kinds of [method apply_effect] (the servo's names).
+const EFFECT_KINDS: Array[String] = ["recoil", "hit", "slow", "heavy", "remote", "none"]
+## Frequency of a mine's rumble, Hz: high, so it buzzes rather than pushes.
+const RUMBLE_FREQUENCY_HZ: float = 180.0
+## Servo period of [method step_ticks], seconds (the 1 kHz tick).
+const TICK_S: float = 0.001
+
+var _server: Object = null
+var _servo: HapticsServo = null
+var _render_mode_constant: int = 0
+var _previous_mode: int = -1
+
+
+func _init(server: Object, servo: HapticsServo, render_mode_constant: int) -> void:
+	_server = server
+	_servo = servo
+	_render_mode_constant = render_mode_constant
+
+
+## True when the extension is loaded and has the Pong renderer.
+func is_available() -> bool:
+	return _server != null and _server.has_method(&"set_pong_input")
+
+
+## Switches the servo to the Pong renderer (the previous one is restored by
+## [method leave]).
+func enter() -> bool:
+	if not is_available():
+		return false
+	if _previous_mode < 0:
+		_previous_mode = _server.call(&"get_render_mode")
+	var accepted: bool = _server.call(&"set_render_mode", _render_mode_constant)
+	changed.emit()
+	return accepted
+
+
+## Back to the renderer that was active before [method enter].
+func leave() -> void:
+	if not is_available() or _previous_mode < 0:
+		return
+	_server.call(&"pong_command", {"type": "clear_effects"})
+	_server.call(&"set_render_mode", _previous_mode)
+	_previous_mode = -1
+	changed.emit()
+
+
+## Whether the Pong renderer is the servo's current one.
+func is_active() -> bool:
+	if not is_available():
+		return false
+	var mode: int = _server.call(&"get_render_mode")
+	return mode == _render_mode_constant
+
+
+## The [code]"pong"[/code] configuration section (court, ball, contact, spin, effects);
+## empty without the extension.
+func get_config() -> Dictionary:
+	if not is_available():
+		return {}
+	var config: Dictionary = _server.call(&"get_config")
+	return config.get("pong", {})
+
+
+## Changes keys of the [code]"pong"[/code] configuration; refused values change nothing.
+func configure(values: Dictionary) -> bool:
+	return is_available() and _server.call(&"set_config", "pong", values)
+
+
+## Hands the servo this frame's input (layout: HapticsServer.set_pong_input): beginner,
+## local_player (0, 1, or -1 for no device paddle) and both players.
+func set_input(input: Dictionary) -> bool:
+	return is_available() and _server.call(&"set_pong_input", input)
+
+
+## Puts the ball at [param position] with [param velocity] and [param spin] (a serve).
+func set_ball(position: Vector3, velocity: Vector3, spin: Vector3 = Vector3.ZERO) -> bool:
+	return _command({"type": "set_ball", "position": position, "velocity": velocity, "spin": spin})
+
+
+## Starts an effect on [param player]'s hand (it acts only on the device player's):
+## [param kind] one of [constant EFFECT_KINDS]; [param direction] (world unit) for recoil
+## and hit; [param owner] the mine's owner for remote.
+func apply_effect(
+	player: int,
+	kind: String,
+	magnitude_n: float,
+	duration_s: float,
+	direction: Vector3 = Vector3.ZERO,
+	owner: int = -1
+) -> bool:
+	if not EFFECT_KINDS.has(kind):
+		push_error("Haptics.pong.apply_effect: unknown kind '%s'." % kind)
+		return false
+	return _command(
+		{
+			"type": "effect",
+			"player": player,
+			"kind": kind,
+			"direction": direction,
+			"magnitude_n": magnitude_n,
+			"duration_s": duration_s,
+			"owner": owner,
+		}
+	)
+
+
+## Ends every effect at once.
+func clear_effects() -> bool:
+	return _command({"type": "clear_effects"})
+
+
+## The newest servo state: time_s, ball {position, velocity, spin}, territory, players
+## [{paddle_center, normal, paddle_velocity, in_contact} x2], hand_force {contact, spin,
+## effects, total}, effects [{kind, remaining_s}], paddle_contacts, bounces. Empty without
+## the extension.
+func get_state() -> Dictionary:
+	return _server.call(&"get_pong_state") if is_available() else {}
+
+
+## The events since the last call, oldest first: {type (floor, wall, paddle, release,
+## territory), time_s, position, speed, territory, player, wall}.
+func drain_events() -> Array[Dictionary]:
+	var events: Array[Dictionary] = []
+	if is_available():
+		var drained: Array = _server.call(&"drain_pong_events")
+		events.assign(drained)
+	return events
+
+
+## Moves the simulated device's hand to [param target_m] (device space, metres: x right,
+## y up, z toward the user), kept within the workspace radius.
+func set_hand_target_3d(target_m: Vector3) -> bool:
+	if not is_available():
+		return false
+	var limits: Dictionary = _server.call(&"get_device_limits")
+	var radius: float = limits.get("workspace_radius_m", 0.0)
+	return _server.call(&"set_hand_target_3d", target_m.limit_length(radius))
+
+
+## A mine's rumble on the hand: the existing impact transient, at a high frequency, of
+## [param strength_n] newtons peak, decaying over [param decay_s].
+func rumble(strength_n: float, decay_s: float) -> bool:
+	if not is_available():
+		return false
+	# A = gain * speed: a unit speed makes the gain the peak force.
+	return (
+		_server
+		. call(
+			&"push_impact",
+			{
+				"direction": Vector2.UP,
+				"speed_m_per_s": 1.0,
+				"gain_n_s_per_m": strength_n,
+				"frequency_hz": RUMBLE_FREQUENCY_HZ,
+				"decay_s": decay_s,
+			}
+		)
+	)
+
+
+## Runs [param ticks] servo ticks on this thread (the servo thread must be stopped): a
+## headless match then runs faster than real time.
+func step_ticks(ticks: int) -> bool:
+	if not is_available() or _servo.is_running():
+		return false
+	for i: int in ticks:
+		if not _server.call(&"step", TICK_S):
+			return false
+	return true
+
+
+func _command(command: Dictionary) -> bool:
+	return is_available() and _server.call(&"pong_command", command)

@@ -1,0 +1,86 @@
+class_name PongBullets
+extends RefCounted
+## Bullets fired from a paddle held as a gun: each flies straight along the gun's axis (the
+## paddle normal) at [constant SPEED_M_PER_S], without gravity, until it hits the other
+## player's avatar (a vertical capsule from the floor to the workspace centre, radius
+## [constant PongCourt.AVATAR_BODY_RADIUS_M]) or leaves the court (any wall, floor or
+## ceiling). A player fires at most once per [constant COOLDOWN_S]. Bullets are the game's
+## own (they never touch the ball).
+
+
+## A bullet in flight.
+class Bullet:
+	extends RefCounted
+	var owner: int = 0
+	var position: Vector3 = Vector3.ZERO
+	var velocity: Vector3 = Vector3.ZERO
+
+	func _init(p_owner: int, p_position: Vector3, p_velocity: Vector3) -> void:
+		owner = p_owner
+		position = p_position
+		velocity = p_velocity
+
+
+const SPEED_M_PER_S: float = 7.0
+const COOLDOWN_S: float = 0.4
+const RADIUS_M: float = 0.035
+
+## Bullets in flight.
+var flying: Array[Bullet] = []
+
+var _cooldown: PackedFloat32Array = PackedFloat32Array([0.0, 0.0])
+
+
+## Whether [param player] may fire now.
+func can_fire(player: int) -> bool:
+	return _cooldown[player] <= 0.0
+
+
+## Fires from [param origin] along [param axis] (any length); null while cooling down.
+func fire(owner: int, origin: Vector3, axis: Vector3) -> Bullet:
+	if not can_fire(owner) or axis.is_zero_approx():
+		return null
+	_cooldown[owner] = COOLDOWN_S
+	var bullet: Bullet = Bullet.new(owner, origin, axis.normalized() * SPEED_M_PER_S)
+	flying.append(bullet)
+	return bullet
+
+
+## Moves every bullet by [param dt] seconds. [param avatars] holds both avatars' workspace
+## centres. Returns the hits, each [code]{"owner", "victim", "position", "direction"}[/code]
+## (direction: the bullet's unit motion); hitting and leaving bullets are removed.
+func advance(dt: float, court: PongCourt, avatars: Array[Vector3]) -> Array[Dictionary]:
+	for player: int in 2:
+		_cooldown[player] = maxf(_cooldown[player] - dt, 0.0)
+	var hits: Array[Dictionary] = []
+	var kept: Array[Bullet] = []
+	for bullet: Bullet in flying:
+		var start: Vector3 = bullet.position
+		bullet.position += bullet.velocity * dt
+		var victim: int = PongCourt.opponent_of(bullet.owner)
+		if _crosses_body(start, bullet.position, avatars[victim]):
+			(
+				hits
+				. append(
+					{
+						"owner": bullet.owner,
+						"victim": victim,
+						"position": bullet.position,
+						"direction": bullet.velocity.normalized(),
+					}
+				)
+			)
+		elif court.clamp_inside(bullet.position, 0.0) == bullet.position:
+			kept.append(bullet)
+	flying = kept
+	return hits
+
+
+## Whether the segment [param from]-[param to] passes through the body of the avatar whose
+## workspace centre is [param centre].
+static func _crosses_body(from: Vector3, to: Vector3, centre: Vector3) -> bool:
+	var foot: Vector3 = Vector3(centre.x, 0.0, centre.z)
+	var closest: PackedVector3Array = Geometry3D.get_closest_points_between_segments(
+		from, to, foot, centre
+	)
+	return closest[0].distance_to(closest[1]) <= PongCourt.AVATAR_BODY_RADIUS_M + RADIUS_M

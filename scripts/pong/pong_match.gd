@@ -1,0 +1,380 @@
+class_name PongMatch
+extends Node
+## One match of Haptic Battle Pong: it drives the servo's Pong renderer through
+## [code]Haptics.pong[/code] and keeps the rules. Every update it reads the newest state and
+## the events (floor bounces cost health, paddle contacts end the computer's swing), moves
+## the bullets, sets mines off, asks each player's controller what it does, fires, places
+## mines, serves when due, and hands the servo the input. The ball itself is only ever in
+## the servo.
+##
+## Real time: one update per rendered frame, the servo thread at 1 kHz. [member stepped]:
+## the servo thread is stopped and each physics frame runs updates of
+## [constant STEP_CHUNK_S] followed by as many [code]step(0.001)[/code] ticks, as many as
+## [member stepped_speed] asks (0: as many as fit in [constant STEP_BUDGET_MS] of wall
+## time), so a headless match runs faster than real time.
+
+## A servo event (drain_pong_events) was read.
+signal event_seen(event: Dictionary)
+## A serve was made toward [param receiver].
+signal served(receiver: int)
+signal health_changed(player: int, health: int, cause: StringName)
+signal mine_placed(mine: PongMines.Mine)
+signal mine_exploded(mine: PongMines.Mine, victim: int)
+signal bullet_fired(bullet: PongBullets.Bullet)
+## [param hit]: {owner, victim, position, direction}.
+signal bullet_hit(hit: Dictionary)
+signal match_over(winner: int)
+
+enum Mode { VS_COMPUTER, TWO_PLAYERS, DEMO }
+
+const STEP_CHUNK_S: float = 0.01
+const STEP_BUDGET_MS: float = 14.0
+## Peak of a mine's rumble on the hand, newtons.
+const MINE_RUMBLE_N: float = 1.2
+
+@export var mode: Mode = Mode.VS_COMPUTER
+@export var beginner: bool = false
+@export var start_health: int = PongRules.DEFAULT_START_HEALTH
+## Run the servo by hand (no thread), faster than real time when it can.
+@export var stepped: bool = false
+## Simulated seconds per wall second in stepped mode (0: as fast as it goes).
+@export var stepped_speed: float = 0.0
+## Serve at the start, after stalls and after beginner goals (tests serve themselves).
+@export var auto_serve: bool = true
+## Seed of the computer players' randomness.
+@export var ai_seed: int = 1
+## Stepped mode: step from the physics frames (off: whoever owns the match calls
+## [method run_until], e.g. a test).
+@export var self_stepping: bool = true
+
+var court: PongCourt = null
+var rules: PongRules = null
+var mines: PongMines = PongMines.new()
+var effects: PongEffects = PongEffects.new()
+var bullets: PongBullets = PongBullets.new()
+var referee: PongReferee = PongReferee.new()
+## One per player.
+var controllers: Array[PongController] = []
+## The player on the device (0), or -1 when no paddle is the device's.
+var local_player: int = -1
+## The newest servo state.
+var snapshot: PongSnapshot = PongSnapshot.new()
+## Match time, seconds (simulated time in stepped mode).
+var now: float = 0.0
+## The paddle's reach from the avatar: the device workspace radius times the scale.
+var reach: float = 0.0
+
+var _started: bool = false
+var _device_orientation: bool = false
+var _telemetry_stride: int = 0
+var _telemetry_total: int = -1
+var _telemetry_capacity: int = 0
+var _stopped_servo: bool = false
+var _wall_start_us: int = 0
+var _paused_ball: PongSnapshot = null
+
+
+## Sets the match up and starts it; false (and nothing changes) without the Pong renderer.
+func start() -> bool:
+	if not Haptics.pong.is_available():
+		return false
+	court = PongCourt.from_config(Haptics.pong.get_config())
+	effects.ramp_s = court.number("mine_effect_ramp_s")
+	rules = PongRules.new(start_health)
+	rules.health_changed.connect(health_changed.emit)
+	rules.match_over.connect(_on_match_over)
+	var radius: float = Haptics.device.get_workspace_radius()
+	reach = radius * court.workspace_scale
+	local_player = 0 if mode != Mode.DEMO and _device_usable() else -1
+	_device_orientation = Haptics.device.get_capabilities().get("has_orientation", false) == true
+	controllers.clear()
+	for player: int in 2:
+		controllers.append(_make_controller(player, radius))
+	Haptics.hand_follows_input = false
+	Haptics.pong.enter()
+	if stepped and Haptics.servo.is_running():
+		Haptics.servo.stop()
+		_stopped_servo = true
+	Haptics.pong.clear_effects()
+	Haptics.pong.drain_events()
+	Haptics.pong.set_ball(Vector3(0.0, court.ball_radius, 0.0), Vector3.ZERO)
+	var columns: PackedStringArray = Haptics.servo.get_telemetry_columns()
+	_telemetry_stride = columns.size()
+	_telemetry_total = columns.find("total_x")
+	_telemetry_capacity = Haptics.get_constant(&"TELEMETRY_QUEUE_CAPACITY")
+	Haptics.servo.drain_telemetry(_telemetry_capacity)
+	_send_input()
+	_wall_start_us = Time.get_ticks_usec()
+	_started = true
+	return true
+
+
+func _exit_tree() -> void:
+	if not _started:
+		return
+	Haptics.pong.set_hand_target_3d(Vector3.ZERO)
+	Haptics.pong.leave()
+	Haptics.hand_follows_input = true
+	if _stopped_servo:
+		Haptics.servo.start()
+
+
+func _notification(what: int) -> void:
+	if not _started or stepped:
+		return
+	# The servo runs on while the game is paused: the ball is put back where it was.
+	if what == NOTIFICATION_PAUSED:
+		_paused_ball = snapshot
+		_send_input()
+	elif what == NOTIFICATION_UNPAUSED and _paused_ball != null:
+		Haptics.pong.set_ball(
+			_paused_ball.ball_position, _paused_ball.ball_velocity, _paused_ball.ball_spin
+		)
+		Haptics.pong.drain_events()
+		_paused_ball = null
+		_send_input()
+
+
+func _process(delta: float) -> void:
+	if _started and not stepped:
+		advance(minf(delta, 0.1))
+
+
+func _physics_process(delta: float) -> void:
+	if not _started or not stepped or not self_stepping:
+		return
+	var wall_start: int = Time.get_ticks_usec()
+	var chunks: int = maxi(1, roundi(delta * stepped_speed / STEP_CHUNK_S))
+	var done: int = 0
+	while stepped_speed <= 0.0 or done < chunks:
+		_step_chunk()
+		done += 1
+		if rules.is_over() or Time.get_ticks_usec() - wall_start > STEP_BUDGET_MS * 1000.0:
+			break
+
+
+## Stepped mode: updates and servo ticks, [constant STEP_CHUNK_S] at a time, until
+## [param condition] holds (checked after each) or [param max_s] simulated seconds have
+## passed. Returns whether it held.
+func run_until(condition: Callable, max_s: float) -> bool:
+	var end: float = now + max_s
+	while now < end:
+		_step_chunk()
+		if condition.call():
+			return true
+	return false
+
+
+## One update of [param dt] seconds (the servo runs separately: its thread, or the ticks
+## of stepped mode).
+func advance(dt: float) -> void:
+	now += dt
+	snapshot = PongSnapshot.from_state(Haptics.pong.get_state())
+	for event: Dictionary in Haptics.pong.drain_events():
+		_on_event(event)
+	effects.advance(dt)
+	_move_bullets(dt)
+	_check_mines()
+	_decide(dt)
+	if auto_serve and not rules.is_over() and referee.update(dt, snapshot.ball_velocity):
+		serve()
+	_send_input()
+
+
+## Serves now toward the referee's receiver.
+func serve() -> void:
+	var receiver: int = referee.receiver
+	var ball: PongReferee.Serve = referee.make_serve(
+		court, controllers[receiver].intent.avatar, beginner
+	)
+	Haptics.pong.set_ball(ball.position, ball.velocity)
+	served.emit(receiver)
+
+
+## Simulated seconds per wall second since the start.
+func speed_ratio() -> float:
+	var wall: float = (Time.get_ticks_usec() - _wall_start_us) / 1e6
+	return now / wall if wall > 0.0 else 0.0
+
+
+## The largest |force on the hand| (N, device space) since the last call: every servo
+## tick's total from the telemetry while the servo thread runs (a ball's contact lasts
+## about 40 ms and falls between frames), else the newest state's.
+func take_peak_force() -> float:
+	var peak: float = snapshot.total_force().length()
+	if stepped or _telemetry_total < 0 or not Haptics.servo.is_running():
+		return peak
+	var samples: PackedFloat32Array = Haptics.servo.drain_telemetry(_telemetry_capacity)
+	for i: int in range(_telemetry_total, samples.size() - 2, _telemetry_stride):
+		peak = maxf(peak, Vector3(samples[i], samples[i + 1], samples[i + 2]).length())
+	return peak
+
+
+## The avatar of [param player].
+func avatar_of(player: int) -> Vector3:
+	return controllers[player].intent.avatar
+
+
+## [param player]'s mine effect and the seconds it has left, {kind, remaining_s}, or
+## empty: the servo's countdown for the device player, the game's for a kinematic one.
+func effect_of(player: int) -> Dictionary:
+	if player == local_player:
+		for entry: Dictionary in snapshot.effects:
+			if PongMines.KINDS.has(str(entry.get("kind", ""))):
+				return entry
+		return {}
+	var kind: String = effects.kind_of(player)
+	if kind.is_empty():
+		return {}
+	return {"kind": kind, "remaining_s": effects.remaining(player)}
+
+
+# The ticks first: the update then reads the state they made and sends the input for the
+# next ones.
+func _step_chunk() -> void:
+	Haptics.pong.step_ticks(roundi(STEP_CHUNK_S / HapticsPong.TICK_S))
+	advance(STEP_CHUNK_S)
+
+
+func _unhandled_input(event: InputEvent) -> void:
+	if not _started:
+		return
+	var size: Vector2 = get_viewport().get_visible_rect().size
+	for controller: PongController in controllers:
+		controller.handle_input(event, size)
+
+
+func _make_controller(player: int, radius: float) -> PongController:
+	var controller: PongController
+	if mode == Mode.DEMO or (mode == Mode.VS_COMPUTER and player == 1):
+		var ai: PongAi = PongAi.new(player, court, reach, ai_seed + player)
+		ai.beginner = beginner
+		controller = ai
+	else:
+		var scheme: PongHumanPlayer.Scheme = (
+			PongHumanPlayer.Scheme.DEVICE if player == 0 else PongHumanPlayer.Scheme.KEYBOARD
+		)
+		controller = PongHumanPlayer.new(player, scheme, court, reach, radius)
+	controller.kinematic = player != local_player
+	return controller
+
+
+func _device_usable() -> bool:
+	if Haptics.device.get_id().is_empty() or Haptics.device.is_lost():
+		return false
+	var input_dof: int = Haptics.device.get_capabilities().get("input_dof", 0)
+	return input_dof >= 3
+
+
+func _on_event(event: Dictionary) -> void:
+	var hurt: int = rules.apply_event(event, court, beginner)
+	if hurt >= 0 and beginner and str(event.get("type", "")) == "wall":
+		referee.serve_after(PongReferee.GOAL_SERVE_DELAY_S)
+	for controller: PongController in controllers:
+		controller.notice(event, now)
+	event_seen.emit(event)
+
+
+func _move_bullets(dt: float) -> void:
+	var avatars: Array[Vector3] = [avatar_of(0), avatar_of(1)]
+	for hit: Dictionary in bullets.advance(dt, court, avatars):
+		var victim: int = hit["victim"]
+		var direction: Vector3 = hit["direction"]
+		rules.hurt(victim, PongRules.CAUSE_BULLET)
+		if victim == local_player:
+			Haptics.pong.apply_effect(
+				victim,
+				"hit",
+				court.number("hit_force_n"),
+				court.number("hit_duration_s"),
+				direction
+			)
+		bullet_hit.emit(hit)
+
+
+func _check_mines() -> void:
+	for player: int in 2:
+		var mine: PongMines.Mine = mines.step_on(player, avatar_of(player))
+		if mine == null:
+			continue
+		rules.hurt(player, PongRules.CAUSE_MINE)
+		var duration: float = court.number("mine_effect_duration_s")
+		if mine.kind != "none" and player != local_player:
+			effects.start(player, mine.kind, duration, mine.owner)
+		if player == local_player:
+			Haptics.pong.rumble(MINE_RUMBLE_N, 0.35)
+			if mine.kind != "none":
+				Haptics.pong.apply_effect(
+					player,
+					mine.kind,
+					_effect_magnitude(mine.kind),
+					duration,
+					Vector3.ZERO,
+					mine.owner
+				)
+		mine_exploded.emit(mine, player)
+
+
+func _effect_magnitude(kind: String) -> float:
+	match kind:
+		"heavy":
+			return court.number("heavy_force_n")
+		"remote":
+			return court.number("remote_max_force_n")
+	return 0.0
+
+
+func _decide(dt: float) -> void:
+	for player: int in 2:
+		var controller: PongController = controllers[player]
+		controller.speed_factor = effects.speed_factor(player)
+		var other: Vector3 = avatar_of(PongCourt.opponent_of(player))
+		var intent: PongIntent = controller.update(now, dt, snapshot, other)
+		if intent.fire and intent.gun and not rules.is_over():
+			_fire(player)
+		if intent.place_mine and not rules.is_over():
+			var mine: PongMines.Mine = mines.place(player, intent.avatar, court)
+			if mine != null:
+				mine_placed.emit(mine)
+
+
+# The gun's axis is the paddle's normal: the device's own when it reports an orientation,
+# else the one the game sends this update.
+func _fire(player: int) -> void:
+	var axis: Vector3 = controllers[player].intent.normal
+	if player == local_player and _device_orientation:
+		axis = snapshot.paddle_normals[player]
+	var bullet: PongBullets.Bullet = bullets.fire(player, snapshot.paddle_centers[player], axis)
+	if bullet == null:
+		return
+	if player == local_player:
+		Haptics.pong.apply_effect(
+			player,
+			"recoil",
+			court.number("recoil_force_n"),
+			court.number("recoil_duration_s"),
+			-axis.normalized()
+		)
+	bullet_fired.emit(bullet)
+
+
+func _send_input() -> void:
+	var players: Array[Dictionary] = []
+	for player: int in 2:
+		var controller: PongController = controllers[player]
+		var entry: Dictionary = controller.intent.to_input(controller.kinematic)
+		if controller.kinematic:
+			var effect_owner: int = effects.owner_of(player)
+			var owner_offset: Vector3 = Vector3.ZERO
+			if effect_owner >= 0:
+				owner_offset = snapshot.paddle_centers[effect_owner] - avatar_of(effect_owner)
+			entry["paddle_offset"] = effects.affect_offset(
+				player, controller.intent.paddle_offset, owner_offset
+			)
+		entry["active"] = _paused_ball == null
+		players.append(entry)
+	Haptics.pong.set_input({"beginner": beginner, "local_player": local_player, "players": players})
+
+
+func _on_match_over(winner: int) -> void:
+	match_over.emit(winner)

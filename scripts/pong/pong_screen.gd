@@ -1,0 +1,171 @@
+class_name PongScreen
+extends Node
+## The Haptic Battle Pong screen: the setup (who plays, beginner mode), then the match
+## ([PongMatch]) drawn by [PongView] with the [PongHud], the pause menu (Esc) and the
+## winner screen. Without the extension's Pong renderer it says why and offers the way
+## back: the ball lives in the servo, and there is no other ball.
+##
+## Runs on its own (F6): it starts on the setup; Menu then quits and Play again reloads.
+## [member skip_setup] starts the match
+## straight away (the main scene's headless demo, tests); with [member quit_when_over] it
+## prints the result and the simulated/wall time ratio and quits.
+
+## Back to the main menu (pause menu's Quit to menu, the winner screen's Menu, setup's Back).
+signal menu_requested
+## Play again with the same settings.
+signal play_again_requested
+
+## Shown instead of a game when there is no Pong renderer.
+const OFFLINE_TEXT: String = (
+	"Haptic Battle Pong needs the haptics extension: the ball is simulated in its 1 kHz "
+	+ "servo. Build it with 'make build' (see README)."
+)
+const OLD_EXTENSION_TEXT: String = (
+	"This build of the haptics extension has no Pong renderer: " + "rebuild it with 'make build'."
+)
+
+## Start the match without the setup, with the settings below.
+@export var skip_setup: bool = false
+@export var mode: PongMatch.Mode = PongMatch.Mode.VS_COMPUTER
+@export var beginner: bool = false
+@export var start_health: int = PongRules.DEFAULT_START_HEALTH
+## Run the servo by hand, faster than real time (computer vs computer).
+@export var stepped: bool = false
+## Print the result and quit when the match is over (headless demo).
+@export var quit_when_over: bool = false
+
+var _running: bool = false
+
+@onready var world: PongView = $World
+@onready var match_node: PongMatch = $Match
+@onready var hud: PongHud = $Hud
+@onready var pause_menu: PauseMenu = $PauseMenu
+@onready var winner_screen: PongWinnerScreen = $WinnerScreen
+@onready var setup: PongSetup = $Setup
+
+
+func _ready() -> void:
+	hud.visible = false
+	pause_menu.enabled = false
+	pause_menu.quit_requested.connect(_leave)
+	winner_screen.play_again_requested.connect(_play_again)
+	winner_screen.menu_requested.connect(_leave)
+	setup.start_requested.connect(start_match)
+	setup.back_requested.connect(_leave)
+	if not Haptics.pong.is_available():
+		setup.show_offline(OFFLINE_TEXT if not Haptics.is_available() else OLD_EXTENSION_TEXT)
+		if quit_when_over:
+			print(setup.get_message())
+			get_tree().quit(1)
+		return
+	if skip_setup:
+		start_match(mode, beginner)
+
+
+func _process(delta: float) -> void:
+	if _running:
+		world.render(match_node)
+		hud.refresh(match_node, delta)
+
+
+## Starts a match in [param p_mode]; false when the servo has no Pong renderer.
+func start_match(p_mode: PongMatch.Mode, p_beginner: bool) -> bool:
+	mode = p_mode
+	beginner = p_beginner
+	match_node.mode = mode
+	match_node.beginner = beginner
+	match_node.start_health = start_health
+	match_node.stepped = stepped
+	if not match_node.start():
+		setup.show_offline(OLD_EXTENSION_TEXT)
+		return false
+	setup.visible = false
+	world.build(match_node.court, match_node.reach, beginner)
+	var max_force: float = Haptics.device.get_max_force()
+	hud.setup(
+		[player_name(0), player_name(1)],
+		PongView.PLAYER_COLORS,
+		start_health,
+		max_force if max_force > 0.0 else Hud.FALLBACK_MAX_FORCE,
+		mode == PongMatch.Mode.TWO_PLAYERS
+	)
+	hud.visible = true
+	pause_menu.enabled = true
+	match_node.served.connect(_on_served)
+	match_node.mine_placed.connect(world.add_mine)
+	match_node.mine_exploded.connect(_on_mine_exploded)
+	match_node.bullet_hit.connect(_on_bullet_hit)
+	match_node.match_over.connect(_on_match_over)
+	if beginner:
+		hud.flash("Beginner mode: send the ball into the target behind your opponent")
+	_running = true
+	return true
+
+
+## Whether a match runs (false on the setup or without the renderer).
+func is_running() -> bool:
+	return _running
+
+
+## How [param player] is named on the HUD and the winner screen.
+func player_name(player: int) -> String:
+	var controller: PongController = match_node.controllers[player]
+	if controller is PongAi:
+		return "Computer" if mode != PongMatch.Mode.DEMO else "Computer %d" % (player + 1)
+	if player == match_node.local_player:
+		return "You · device"
+	return "You · mouse" if player == 0 else "Player 2 · keyboard"
+
+
+func _is_own_scene() -> bool:
+	return get_tree().current_scene == self
+
+
+func _leave() -> void:
+	if _is_own_scene():
+		get_tree().quit(0)
+	else:
+		menu_requested.emit()
+
+
+func _play_again() -> void:
+	if _is_own_scene():
+		get_tree().reload_current_scene()
+	else:
+		play_again_requested.emit()
+
+
+func _on_served(receiver: int) -> void:
+	hud.flash("Serve to %s" % player_name(receiver))
+
+
+func _on_mine_exploded(mine: PongMines.Mine, victim: int) -> void:
+	world.explode_mine(mine)
+	hud.flash("%s stepped on a %s mine!" % [player_name(victim), mine.kind])
+
+
+func _on_bullet_hit(hit: Dictionary) -> void:
+	var victim: int = hit["victim"]
+	hud.flash("%s is hit!" % player_name(victim))
+
+
+func _on_match_over(winner: int) -> void:
+	pause_menu.enabled = false
+	var health: Array[int] = [match_node.rules.get_health(0), match_node.rules.get_health(1)]
+	if quit_when_over:
+		print(
+			(
+				"Pong: %s wins, health %d : %d, %.1f simulated s in %.1f wall s (%.1fx real time)"
+				% [
+					player_name(winner),
+					health[0],
+					health[1],
+					match_node.now,
+					match_node.now / maxf(match_node.speed_ratio(), 1e-6),
+					match_node.speed_ratio(),
+				]
+			)
+		)
+		get_tree().quit(0)
+		return
+	winner_screen.show_winner(player_name(winner), health)

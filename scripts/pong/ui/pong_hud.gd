@@ -1,0 +1,112 @@
+class_name PongHud
+extends CanvasLayer
+## The Pong overlay: each player's panel (health, mines, modes, mine effect), a status
+## line (serves, goals, what just happened), the force on the hand over the last 5 s
+## (the peak of [code]hand_force.total[/code] since the last frame, with the contact, spin
+## and effects components of the servo's state) and the controls. It reads the match each
+## frame; it never changes it.
+
+const MESSAGE_S: float = 2.0
+const CONTROLS: String = (
+	"WASD move  ·  mouse paddle  ·  wheel / R F depth  ·  Q E  Z C turn  ·  V spin  ·  G gun"
+	+ "  ·  Space fire  ·  B mine  ·  Esc pause"
+)
+const KEYBOARD_CONTROLS: String = (
+	"Player 2: IJKL move  ·  U O paddle down / up  ·  P swing  ·  M spin  ·  Y gun  ·  H fire"
+	+ "  ·  N mine"
+)
+
+var _panels: Array[PongPlayerPanel] = []
+var _message_left: float = 0.0
+
+@onready var _top: HBoxContainer = %Top
+@onready var _status: Label = %Status
+@onready var _plot: ForcePlot = %ForcePlot
+@onready var _force_value: Label = %ForceValue
+@onready var _components: Label = %Components
+@onready var _controls: Label = %Controls
+
+
+func _ready() -> void:
+	for side: int in 2:
+		var panel: PongPlayerPanel = PongPlayerPanel.new()
+		panel.name = "Player%d" % side
+		_panels.append(panel)
+	var gap: Control = Control.new()
+	gap.size_flags_horizontal = Control.SIZE_EXPAND_FILL
+	gap.mouse_filter = Control.MOUSE_FILTER_IGNORE
+	_top.add_child(_panels[0])
+	_top.add_child(gap)
+	_top.add_child(_panels[1])
+	_ignore_mouse(self)
+
+
+## Names, colours and health of the two players; [param max_force] scales the plot;
+## [param two_players] shows the keyboard player's keys too.
+func setup(
+	titles: Array[String],
+	colors: Array[Color],
+	max_health: int,
+	max_force: float,
+	two_players: bool
+) -> void:
+	for side: int in 2:
+		_panels[side].set_player(titles[side], colors[side], max_health)
+	_plot.y_max = max_force
+	_controls.text = CONTROLS + ("\n" + KEYBOARD_CONTROLS if two_players else "")
+
+
+## Shows [param text] on the status line for a moment.
+func flash(text: String) -> void:
+	_status.text = text
+	_message_left = MESSAGE_S
+
+
+## Refreshes everything from [param match_node].
+func refresh(match_node: PongMatch, delta: float) -> void:
+	for side: int in 2:
+		var panel: PongPlayerPanel = _panels[side]
+		var intent: PongIntent = match_node.controllers[side].intent
+		panel.show_health(match_node.rules.get_health(side))
+		panel.show_mines(match_node.mines.left(side), match_node.mines.next_kind(side))
+		panel.show_modes(intent.spin, intent.gun)
+		var effect: Dictionary = match_node.effect_of(side)
+		var remaining: float = effect.get("remaining_s", 0.0)
+		panel.show_effect(str(effect.get("kind", "")), remaining)
+	var snapshot: PongSnapshot = match_node.snapshot
+	var total: float = match_node.take_peak_force()
+	_plot.advance(delta, total)
+	_force_value.text = "%.2f N" % total
+	_components.text = (
+		"contact %.2f  ·  spin %.2f  ·  effects %.2f N"
+		% [
+			snapshot.force_of("contact").length(),
+			snapshot.force_of("spin").length(),
+			snapshot.force_of("effects").length(),
+		]
+	)
+	_message_left -= delta
+	if _message_left <= 0.0:
+		var serve_in: float = match_node.referee.time_to_serve()
+		var due: bool = match_node.auto_serve and serve_in > 0.0
+		_status.text = "serve in %.1f s" % serve_in if due else ""
+
+
+func get_panel(side: int) -> PongPlayerPanel:
+	return _panels[side]
+
+
+func get_status_text() -> String:
+	return _status.text
+
+
+func get_plot() -> ForcePlot:
+	return _plot
+
+
+# The mouse moves the paddle: no control of the HUD may take its motion.
+static func _ignore_mouse(node: Node) -> void:
+	if node is Control:
+		(node as Control).mouse_filter = Control.MOUSE_FILTER_IGNORE
+	for child: Node in node.get_children():
+		_ignore_mouse(child)

@@ -1,0 +1,47 @@
+class_name PongSetup
+extends CanvasLayer
+## The first thing the Pong screen shows: who plays (against the computer, two players on
+## one machine, computer against computer) and beginner mode, or, without the extension's
+## Pong renderer, why there is no game. It only emits signals.
+
+## Start a match in [param mode] (a [enum PongMatch.Mode]).
+signal start_requested(mode: PongMatch.Mode, beginner: bool)
+signal back_requested
+
+@onready var vs_computer_button: Button = %VsComputerButton
+@onready var two_players_button: Button = %TwoPlayersButton
+@onready var demo_button: Button = %DemoButton
+@onready var beginner_check: CheckBox = %BeginnerCheck
+@onready var back_button: Button = %BackButton
+@onready var _buttons: Control = %Buttons
+@onready var _subtitle: Label = %Subtitle
+
+
+func _ready() -> void:
+	vs_computer_button.pressed.connect(_start.bind(PongMatch.Mode.VS_COMPUTER))
+	two_players_button.pressed.connect(_start.bind(PongMatch.Mode.TWO_PLAYERS))
+	demo_button.pressed.connect(_start.bind(PongMatch.Mode.DEMO))
+	back_button.pressed.connect(back_requested.emit)
+	UiFocus.grab_later(vs_computer_button)
+
+
+func _unhandled_input(event: InputEvent) -> void:
+	if visible and event.is_action_pressed(&"ui_cancel"):
+		get_viewport().set_input_as_handled()
+		back_requested.emit()
+
+
+## No game: says why, and offers only the way back.
+func show_offline(reason: String) -> void:
+	_subtitle.text = reason
+	_buttons.visible = false
+	UiFocus.grab_later(back_button)
+
+
+## The text under the heading.
+func get_message() -> String:
+	return _subtitle.text
+
+
+func _start(mode: PongMatch.Mode) -> void:
+	start_requested.emit(mode, beginner_check.button_pressed)

@@ -1,0 +1,139 @@
+class_name PongView
+extends Node3D
+## The 3D picture of a match, redrawn every frame from the newest servo state (the ball
+## and paddles are the servo's; nothing here moves them): the court, a camera behind and
+## above the near player, the ball with its blob shadow and drop line, both avatars and
+## paddles, the mines and the bullets. The ball casts no shadow from the sun: its one
+## shadow is the blob straight below it, the cue for where it is (the sun's would fall
+## to the side). Physics interpolation is off for the whole view:
+## the servo, not Godot's physics, moves these things.
+
+const PLAYER_COLORS: Array[Color] = [Color(0.25, 0.75, 1.0), Color(1.0, 0.5, 0.2)]
+## Growth of the blob shadow per metre of height, and the height at which it has faded to
+## its faintest.
+const SHADOW_GROWTH_PER_M: float = 0.6
+const SHADOW_FADE_HEIGHT_M: float = 2.5
+const SHADOW_MIN_ALPHA: float = 0.35
+const BULLET_COLOR: Color = Color(1.0, 0.95, 0.4)
+
+var _court: PongCourt = null
+var _paddles: Array[PongPaddleView] = []
+var _avatars: Array[PongAvatarView] = []
+var _mine_views: Array[PongMineView] = []
+var _bullet_mesh: SphereMesh = SphereMesh.new()
+
+@onready var camera: Camera3D = $Camera
+@onready var _sun: DirectionalLight3D = $Sun
+@onready var _court_view: PongCourtView = $Court
+@onready var _ball: MeshInstance3D = $Ball
+@onready var _shadow: MeshInstance3D = $BallShadow
+@onready var _drop_line: MeshInstance3D = $DropLine
+@onready var _mines: Node3D = $Mines
+@onready var _bullets: Node3D = $Bullets
+
+
+func _ready() -> void:
+	physics_interpolation_mode = Node.PHYSICS_INTERPOLATION_MODE_OFF
+	_bullet_mesh.radius = PongBullets.RADIUS_M
+	_bullet_mesh.height = PongBullets.RADIUS_M * 2.0
+	var bullet_material: StandardMaterial3D = StandardMaterial3D.new()
+	bullet_material.albedo_color = BULLET_COLOR
+	bullet_material.emission_enabled = true
+	bullet_material.emission = BULLET_COLOR
+	_bullet_mesh.material = bullet_material
+
+
+## Builds the court, the avatars and the paddles for [param court]; [param reach] is how
+## far a paddle reaches from its avatar.
+func build(court: PongCourt, reach: float, beginner: bool) -> void:
+	_court = court
+	_court_view.build(court, beginner)
+	var sphere: SphereMesh = _ball.mesh as SphereMesh
+	sphere.radius = court.ball_radius
+	sphere.height = court.ball_radius * 2.0
+	for player: int in 2:
+		var avatar: PongAvatarView = PongAvatarView.new()
+		avatar.name = "Avatar%d" % player
+		avatar.setup(court.beginner_height, reach, PLAYER_COLORS[player], player == 0)
+		add_child(avatar)
+		_avatars.append(avatar)
+		var paddle: PongPaddleView = PongPaddleView.new()
+		paddle.name = "Paddle%d" % player
+		paddle.setup(court.paddle_radius, PLAYER_COLORS[player])
+		add_child(paddle)
+		_paddles.append(paddle)
+	camera.position = Vector3(0.0, court.wall_height, court.half_length + 1.7)
+	camera.look_at(Vector3(0.0, court.beginner_height * 0.6, -court.half_length * 0.3))
+	# High, a little behind and to the right of the near player: shadows fall forward-left.
+	_sun.look_at_from_position(
+		Vector3(court.half_width, court.wall_height * 3.0, court.half_length), Vector3.ZERO
+	)
+
+
+## Draws the match as it is now.
+func render(match_node: PongMatch) -> void:
+	if _court == null:
+		return
+	var snapshot: PongSnapshot = match_node.snapshot
+	var ball: Vector3 = snapshot.ball_position
+	_ball.position = ball
+	var height: float = maxf(ball.y - _court.ball_radius, 0.0)
+	_shadow.position = Vector3(ball.x, 0.004, ball.z)
+	_shadow.scale = Vector3.ONE * (1.0 + height * SHADOW_GROWTH_PER_M)
+	var shadow_material: StandardMaterial3D = _shadow.get_active_material(0) as StandardMaterial3D
+	shadow_material.albedo_color.a = clampf(
+		1.0 - height / SHADOW_FADE_HEIGHT_M, SHADOW_MIN_ALPHA, 1.0
+	)
+	_drop_line.visible = height > _court.ball_radius
+	_drop_line.position = Vector3(ball.x, height * 0.5, ball.z)
+	_drop_line.scale = Vector3(1.0, maxf(height, 0.001), 1.0)
+	for player: int in 2:
+		var intent: PongIntent = match_node.controllers[player].intent
+		_avatars[player].position = intent.avatar
+		_paddles[player].place(snapshot.paddle_centers[player], snapshot.paddle_normals[player])
+		_paddles[player].show_modes(intent.spin, intent.gun, snapshot.in_contact[player])
+	_show_bullets(match_node.bullets)
+
+
+## Shows a newly placed mine.
+func add_mine(mine: PongMines.Mine) -> void:
+	var view: PongMineView = PongMineView.new()
+	view.setup(mine)
+	_mines.add_child(view)
+	_mine_views.append(view)
+
+
+## Turns a mine into its explosion.
+func explode_mine(mine: PongMines.Mine) -> void:
+	for view: PongMineView in _mine_views:
+		if view.mine == mine:
+			view.explode()
+			_mine_views.erase(view)
+			return
+
+
+## The paddle view of [param player].
+func get_paddle(player: int) -> PongPaddleView:
+	return _paddles[player]
+
+
+## The mine views on the court (not exploding).
+func get_mine_views() -> Array[PongMineView]:
+	return _mine_views
+
+
+## The blob shadow under the ball.
+func get_shadow() -> MeshInstance3D:
+	return _shadow
+
+
+func _show_bullets(bullets: PongBullets) -> void:
+	while _bullets.get_child_count() < bullets.flying.size():
+		var instance: MeshInstance3D = MeshInstance3D.new()
+		instance.mesh = _bullet_mesh
+		_bullets.add_child(instance)
+	for i: int in _bullets.get_child_count():
+		var instance: MeshInstance3D = _bullets.get_child(i) as MeshInstance3D
+		instance.visible = i < bullets.flying.size()
+		if instance.visible:
+			instance.position = bullets.flying[i].position
