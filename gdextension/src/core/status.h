@@ -44,3 +44,13 @@ private:
 };
 
 } // namespace haptics
+
+// Returns from the enclosing function with the Status of `expression` when it is an error (the
+// validators chain their checks with it).
+#define HAPTICS_RETURN_IF_ERROR(expression) \
+	do { \
+		const Status status_ = (expression); \
+		if (!status_) { \
+			return status_; \
+		} \
+	} while (false)

@@ -15,14 +15,6 @@ constexpr double MAX_SPEED_M_PER_S = 1000.0;
 // Normals shorter than this carry no direction.
 constexpr double MIN_DIRECTION_LENGTH = 1e-6;
 
-#define HAPTICS_RETURN_IF_ERROR(expression) \
-	do { \
-		const Status status_ = (expression); \
-		if (!status_) { \
-			return status_; \
-		} \
-	} while (false)
-
 } // namespace
 
 Status check_range(const char *p_name, double p_value, double p_min, double p_max) {

@@ -16,14 +16,6 @@ constexpr double MAX_SPIN_RAD_PER_S = 1e5; // Likewise max_spin.
 constexpr double MAX_EFFECT_FORCE_N = 100.0; // The safety stage caps at the device's peak.
 constexpr double MAX_EFFECT_DURATION_S = 600.0;
 
-#define HAPTICS_RETURN_IF_ERROR(expression) \
-	do { \
-		const Status status_ = (expression); \
-		if (!status_) { \
-			return status_; \
-		} \
-	} while (false)
-
 Status check_player(const char *p_name, int32_t p_player, bool p_allow_none) {
 	if (p_player == 0 || p_player == 1 || (p_allow_none && p_player == -1)) {
 		return Status::success();
