@@ -7,6 +7,8 @@
 #include "devices/falcon/falcon_ftdi.h"
 #include "devices/falcon/scripted_falcon.h"
 
+#include "scratch_dir.h"
+
 #include <doctest/doctest.h>
 
 #include <cstdio>
@@ -61,16 +63,13 @@ std::vector<Control> full_sequence() {
 	return all;
 }
 
+// A file holding p_bytes in a folder of its own (scratch_dir.h).
 struct TempFile {
-	std::filesystem::path path;
+	testing::ScratchDir dir{ "haptics-falcon-fw" };
+	std::filesystem::path path = dir / "firmware.bin";
 	explicit TempFile(const std::vector<uint8_t> &p_bytes) {
-		path = std::filesystem::temp_directory_path() / ("haptics-falcon-fw-" + std::to_string(::getpid()) + ".bin");
 		std::ofstream out(path, std::ios::binary);
 		out.write(reinterpret_cast<const char *>(p_bytes.data()), static_cast<std::streamsize>(p_bytes.size()));
-	}
-	~TempFile() {
-		std::error_code ignored;
-		std::filesystem::remove(path, ignored);
 	}
 };
 
