@@ -22,7 +22,7 @@ TEST_ARGS ?=
 BENCH_SECONDS ?= 10
 
 .PHONY: play test deps engine build build-release import test-native test-godot lint \
-	export test-export bench sanitize analyze export-study test-analysis clean distclean
+	export test-export test-windowed bench sanitize analyze export-study test-analysis clean distclean
 
 ## deps: install missing OS packages (apt-get; sudo when not root)
 deps:
@@ -62,7 +62,7 @@ play: import
 	fi
 
 ## test: every suite; any failure fails the target
-test: import test-native test-godot lint test-analysis test-export
+test: import test-native test-godot lint test-analysis test-export test-windowed
 	@echo "make test: all suites passed"
 
 ## test-native: the C++ doctest suite through CTest
@@ -73,6 +73,11 @@ test-native: build
 test-godot: import
 	@$(GODOT) --headless --path . res://tests/runner/runner.tscn -- --warnings-as-errors \
 		--junit=$(BUILD)/godot-tests.xml $(TEST_ARGS)
+
+## test-windowed: the game in a window (Xvfb) under its autopilot for a few seconds; fails on
+## a non-zero exit or any leak reported at exit (tools/test-windowed.sh)
+test-windowed: import
+	@tools/test-windowed.sh
 
 ## lint: gdlint and gdformat --check over scripts/ and tests/ (gdtoolkit, pinned, in .venv),
 ## and clang-format (Debian's, .clang-format: Godot's style) over the extension's C++

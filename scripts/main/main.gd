@@ -104,8 +104,8 @@ func _switch_to_node(node: Node) -> void:
 
 
 func _on_autopilot_finished(_reason: String) -> void:
-	get_tree().quit(0)
+	CleanExit.quit(0)
 
 
 func _on_quit_requested() -> void:
-	get_tree().quit(0)
+	CleanExit.quit(0)
