@@ -117,7 +117,7 @@ TEST_CASE("evdev enumeration: lists FF_CONSTANT nodes only, in event order, with
 	CHECK(wheel.unavailable_reason == (sysfs.dev_input() / "event12").string() + " is not present (ENOENT): the device is unplugged or the path is stale");
 }
 
-TEST_CASE("evdev enumeration: ids are stable across calls; without phys, udev's by-path name") {
+TEST_CASE("evdev enumeration: ids are stable across calls - without phys, udev's by-path name") {
 	FakeSysfs sysfs;
 	sysfs.add(HID_PARENT, "input5", "event7", "300040000 0", "Stick", "usb-0000:00:14.0-2/input0");
 	sysfs.add("virtual", "input20", "event12", "300040000 0", "Virtual wheel", "");

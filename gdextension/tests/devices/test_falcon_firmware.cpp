@@ -119,7 +119,7 @@ TEST_CASE("falcon firmware: the 7-byte 'Apple' handshake reply is accepted too")
 	CHECK(reads[0].bytes == std::vector<uint8_t>{ 0x31, 0x60, 0x00, 0x0A, 0x44, 0x2C, 0x0D });
 }
 
-TEST_CASE("falcon firmware: wrong handshake replies are retried; 100 tries then a clear error") {
+TEST_CASE("falcon firmware: wrong handshake replies are retried - 100 tries then a clear error") {
 	ScriptedFalconOptions options;
 	options.handshake_failures = 5;
 	{
