@@ -20,9 +20,11 @@ ARGS ?=
 TEST_ARGS ?=
 # Seconds the benchmark runs each loop.
 BENCH_SECONDS ?= 10
+# Seconds make soak runs the level.
+SOAK_SECONDS ?= 600
 
 .PHONY: play test deps engine build build-release import test-native test-godot lint \
-	export test-export test-windowed bench sanitize analyze export-study test-analysis clean distclean
+	export test-export test-windowed bench soak sanitize analyze export-study test-analysis clean distclean
 
 ## deps: install missing OS packages (apt-get; sudo when not root)
 deps:
@@ -98,16 +100,24 @@ test-export: export
 
 ## bench: servo loop vs naive loop, the force model's and the proxy's tick cost, each device
 ## backend's tick cost and protocol rate against its scripted transport, and the
-## game's physics-frame and probe cost (numbers and ratios, not tests; JSON in .bench/)
+## game's physics-frame and probe cost, the servo next to cyclictest idle / under CPU load /
+## under rendering load and the end-to-end latency (numbers and ratios, not tests; JSON in .bench/)
 bench: import
 	@$(CMAKE_CONFIGURE) -B $(BUILD)/bench -DCMAKE_BUILD_TYPE=Release -DHAPTICS_BUILD_EXTENSION=OFF \
 		-DHAPTICS_BUILD_TESTS=OFF >/dev/null
-	@cmake --build $(BUILD)/bench -j $(JOBS) --target haptics_bench haptics_device_bench
+	@cmake --build $(BUILD)/bench -j $(JOBS) --target haptics_bench haptics_device_bench haptics_rt_bench
 	@mkdir -p .bench
 	@$(BUILD)/bench/haptics_bench --seconds $(BENCH_SECONDS) --json .bench/servo.json
+	@$(BUILD)/bench/haptics_rt_bench --project $(CURDIR) --json .bench/rt.json
 	@$(BUILD)/bench/haptics_device_bench --seconds 1 --json .bench/devices.json
 	@$(GODOT) --headless --path . --fixed-fps 50 res://tests/bench/game_bench.tscn -- \
 		--frames=1500 --json=.bench/game.json
+
+## soak: level 1 under the autopilot for SOAK_SECONDS (10 min) with the servo at 1 kHz; prints
+## rate drift, telemetry drops, resident memory growth and lateness against their bounds
+## (tests/soak/soak.gd; not part of make test)
+soak: import
+	@$(GODOT) --headless --path . res://tests/soak/soak.tscn -- --seconds=$(SOAK_SECONDS)
 
 ## sanitize: the doctest suite under ThreadSanitizer, then AddressSanitizer+UBSan
 sanitize: deps

@@ -78,14 +78,26 @@ void release_memory_lock();
 bool acquire_cpu_latency_hold();
 void release_cpu_latency_hold();
 
-// What the servo thread asks for. The defaults are the servo's (ServoOptions); each was
-// chosen by measurement (README, "Servo timing").
+// What the servo thread asks for. The defaults are the servo's (ServoOptions), each chosen by
+// measuring it on its own against cyclictest in the same run, idle, under CPU load and under
+// rendering load (haptics_rt_bench --techniques; README, "Servo timing"). On a 2-core VM:
+//   - SCHED_FIFO 80 rather than 50: p99 / p99.9 wake latency 73.5 / 150 us against 85.5 / 254
+//     under rendering load (the game's own servo and audio compete), the same elsewhere: on.
+//   - mlockall: p99.9 worse in every condition (2.6-2.8 ms against 0.25-0.39), and it locks the
+//     whole game: off.
+//   - cpu_dma_latency 0: within the noise everywhere (idle p99 97 against 110 us, p99.9 530
+//     against 363), and it keeps idle cores polling: off.
+//   - pinning: p99 124 against 78 us under CPU load (a pinned thread cannot leave a busy core):
+//     off.
+//   - stack prefault: no difference beyond the noise: off (available).
+//   - timer slack 1 ns under SCHED_OTHER: p50 wake latency 52 against 98 us idle, 29 against
+//     87 under CPU load: on (it only applies where SCHED_FIFO is refused).
 struct RealtimeRequest {
 	int32_t priority = 80; // SCHED_FIFO priority; 0 = do not ask.
-	bool lock_memory = true;
-	bool hold_cpu_latency = true;
+	bool lock_memory = false;
+	bool hold_cpu_latency = false;
 	int32_t cpu = PIN_NONE; // A CPU index, PIN_NONE or PIN_AUTO.
-	int32_t prefault_stack_kb = 256; // 0 = none.
+	int32_t prefault_stack_kb = 0; // 0 = none.
 	bool minimise_timer_slack = true; // Only when SCHED_FIFO is not granted.
 };
 
