@@ -85,8 +85,11 @@ void release_cpu_latency_hold();
 //     under rendering load (the game's own servo and audio compete), the same elsewhere: on.
 //   - mlockall: p99.9 worse in every condition (2.6-2.8 ms against 0.25-0.39), and it locks the
 //     whole game: off.
-//   - cpu_dma_latency 0: within the noise everywhere (idle p99 97 against 110 us, p99.9 530
-//     against 363), and it keeps idle cores polling: off.
+//   - cpu_dma_latency 0: within the noise while the host was quiet (idle p99 97 against 110
+//     us), but the one technique that held the servo near cyclictest once the host got busy
+//     (a headless game running beside it: p99 267 against 4114 us, cyclictest 137): an idle
+//     vCPU that halts waits for the host to run it again; one that polls does not. On, at the
+//     cost of idle cores polling while the servo runs (cyclictest holds it too).
 //   - pinning: p99 124 against 78 us under CPU load (a pinned thread cannot leave a busy core):
 //     off.
 //   - stack prefault: no difference beyond the noise: off (available).
@@ -95,7 +98,7 @@ void release_cpu_latency_hold();
 struct RealtimeRequest {
 	int32_t priority = 80; // SCHED_FIFO priority; 0 = do not ask.
 	bool lock_memory = false;
-	bool hold_cpu_latency = false;
+	bool hold_cpu_latency = true;
 	int32_t cpu = PIN_NONE; // A CPU index, PIN_NONE or PIN_AUTO.
 	int32_t prefault_stack_kb = 0; // 0 = none.
 	bool minimise_timer_slack = true; // Only when SCHED_FIFO is not granted.
