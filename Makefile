@@ -20,9 +20,11 @@ ARGS ?=
 TEST_ARGS ?=
 # Seconds the benchmark runs each loop.
 BENCH_SECONDS ?= 10
+# Seconds make soak runs the level.
+SOAK_SECONDS ?= 600
 
 .PHONY: play test deps engine build build-release import test-native test-godot lint pong-demo \
-	export test-export bench sanitize analyze export-study test-analysis clean distclean
+	export test-export test-windowed bench soak sanitize analyze export-study test-analysis clean distclean
 
 ## deps: install missing OS packages (apt-get; sudo when not root)
 deps:
@@ -68,7 +70,7 @@ pong-demo: import
 	@$(GODOT) --headless --path . -- --pong-demo $(ARGS)
 
 ## test: every suite; any failure fails the target
-test: import test-native test-godot lint test-analysis test-export
+test: import test-native test-godot lint test-analysis test-export test-windowed
 	@echo "make test: all suites passed"
 
 ## test-native: the C++ doctest suite through CTest
@@ -79,6 +81,11 @@ test-native: build
 test-godot: import
 	@$(GODOT) --headless --path . res://tests/runner/runner.tscn -- --warnings-as-errors \
 		--junit=$(BUILD)/godot-tests.xml $(TEST_ARGS)
+
+## test-windowed: the game in a window (Xvfb) under its autopilot for a few seconds; fails on
+## a non-zero exit or any leak reported at exit (tools/test-windowed.sh)
+test-windowed: import
+	@tools/test-windowed.sh
 
 ## lint: gdlint and gdformat --check over scripts/ and tests/ (gdtoolkit, pinned, in .venv),
 ## and clang-format (Debian's, .clang-format: Godot's style) over the extension's C++
@@ -98,19 +105,27 @@ test-export: export
 	@tools/test-export.sh
 
 ## bench: servo loop vs naive loop, the force model's and the proxy's tick cost, each device
-## backend's tick cost and protocol rate against its scripted transport, the
-## game's physics-frame and probe cost, and headless Pong matches' speed against real time
+## backend's tick cost and protocol rate against its scripted transport, the game's
+## physics-frame and probe cost, the servo next to cyclictest idle / under CPU load / under
+## rendering load, the end-to-end latency, and headless Pong matches' speed against real time
 ## (numbers and ratios, not tests; JSON in .bench/)
 bench: import
 	@$(CMAKE_CONFIGURE) -B $(BUILD)/bench -DCMAKE_BUILD_TYPE=Release -DHAPTICS_BUILD_EXTENSION=OFF \
 		-DHAPTICS_BUILD_TESTS=OFF >/dev/null
-	@cmake --build $(BUILD)/bench -j $(JOBS) --target haptics_bench haptics_device_bench
+	@cmake --build $(BUILD)/bench -j $(JOBS) --target haptics_bench haptics_device_bench haptics_rt_bench
 	@mkdir -p .bench
 	@$(BUILD)/bench/haptics_bench --seconds $(BENCH_SECONDS) --json .bench/servo.json
+	@$(BUILD)/bench/haptics_rt_bench --project $(CURDIR) --json .bench/rt.json
 	@$(BUILD)/bench/haptics_device_bench --seconds 1 --json .bench/devices.json
 	@$(GODOT) --headless --path . --fixed-fps 50 res://tests/bench/game_bench.tscn -- \
 		--frames=1500 --json=.bench/game.json
 	@$(GODOT) --headless --path . res://tests/bench/pong_bench.tscn -- --json=.bench/pong.json
+
+## soak: level 1 under the autopilot for SOAK_SECONDS (10 min) with the servo at 1 kHz; prints
+## rate drift, telemetry drops, resident memory growth and lateness against their bounds
+## (tests/soak/soak.gd; not part of make test)
+soak: import
+	@$(GODOT) --headless --path . res://tests/soak/soak.tscn -- --seconds=$(SOAK_SECONDS)
 
 ## sanitize: the doctest suite under ThreadSanitizer, then AddressSanitizer+UBSan
 sanitize: deps

@@ -14,10 +14,9 @@
 // Reports; never asserts: timing depends on the machine.
 
 #include "bench_report.h"
+#include "servo_workload.h"
 
 #include "core/haptics_engine.h"
-#include "core/realtime.h"
-#include "core/telemetry.h"
 
 #include <atomic>
 #include <cmath>
@@ -68,62 +67,11 @@ bool parse(int p_argc, char **p_argv, Options &r_options) {
 	return r_options.duration_s > 0.0 && std::isfinite(r_options.duration_s);
 }
 
-// The game's side for one run: 50 Hz on absolute deadlines, like a physics tick.
-void produce(HapticsEngine &r_engine, double p_duration_s, LoopResult &r_result) {
-	constexpr int64_t FRAME_NS = 20'000'000;
-	std::vector<float> telemetry(512 * TELEMETRY_STRIDE);
-	const int64_t begin = monotonic_now_ns();
-	const int64_t end = begin + static_cast<int64_t>(p_duration_s * 1e9);
-	int64_t deadline = begin;
-	for (uint64_t frame_index = 0; deadline < end; ++frame_index) {
-		const double phase = static_cast<double>(frame_index) * 0.05;
-		Frame frame;
-		frame.sequence = frame_index;
-		frame.timestamp_s = static_cast<double>(deadline - begin) * 1e-9;
-		frame.add_contact({ 0.0, 1.0, 0.0 });
-		frame.add_contact({ -std::cos(phase), 0.3, 0.0 }, ContactMaterial{ 2.5, 0.8 });
-		frame.add_resting({ 0.0, -1.0, 0.0 }, 0.6);
-		frame.water = WaterState{ (frame_index / 50) % 2 == 1, 0.4, 0.3 };
-		frame.player_velocity = { std::sin(phase), -0.2, 0.0 };
-		r_engine.submit_frame(frame);
-		++r_result.frames_submitted;
-		r_engine.set_hand_target({ 0.06 * std::sin(phase * 0.7), -0.03 + 0.02 * std::cos(phase), 0.0 });
-		if (frame_index % 5 == 0) {
-			ImpactEvent event;
-			event.direction = { 0.0, 1.0, 0.0 };
-			event.speed = 2.0 + std::sin(phase);
-			r_engine.push_impact(event);
-			++r_result.impacts_pushed;
-		}
-		r_result.telemetry_drained += r_engine.drain_telemetry(telemetry.data(), 512);
-		deadline += FRAME_NS;
-		sleep_until_ns(deadline);
-	}
-}
-
 LoopResult run_loop(const char *p_name, LoopScheduling p_scheduling, const Options &p_options) {
-	LoopResult result;
-	result.name = p_name;
-	result.duration_s = p_options.duration_s;
-	HapticsEngine engine;
-	if (!engine.open_simulated_device()) {
-		std::fprintf(stderr, "cannot open the simulated device\n");
-		std::exit(2);
-	}
 	ServoOptions servo;
 	servo.rate_hz = p_options.rate_hz;
 	servo.scheduling = p_scheduling;
-	const Status started = engine.start(servo);
-	if (!started) {
-		std::fprintf(stderr, "cannot start the servo: %s\n", started.message());
-		std::exit(2);
-	}
-	// The producer is the only thread calling the engine while the servo runs.
-	std::thread producer([&] { produce(engine, p_options.duration_s, result); });
-	producer.join();
-	engine.stop();
-	result.stats = engine.stats();
-	return result;
+	return run_servo_workload(p_name, servo, p_options.duration_s);
 }
 
 } // namespace

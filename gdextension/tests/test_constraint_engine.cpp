@@ -288,7 +288,7 @@ TEST_CASE("constraint engine: walls swapped while the servo thread runs") {
 	REQUIRE(reconfigure(engine, [&](RenderConfig &c) { c.constraint = constraint_config(ProxyUpdate::SERVO_RATE); }));
 	REQUIRE(reconfigure(engine, [](RenderConfig &c) { c.render_mode = RenderMode::CONSTRAINT; }));
 	ServoOptions options;
-	options.realtime_priority = 0;
+	options.realtime.priority = 0;
 	REQUIRE(engine.start(options));
 	// Wait until a condition holds, feeding frames like the game does (which also frees
 	// the walls the servo let go of).

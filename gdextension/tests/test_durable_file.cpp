@@ -1,7 +1,6 @@
 // Durable writes on a real file system: bytes on disk, never overwritten, folders created.
 #include <doctest/doctest.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -9,33 +8,20 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "scratch_dir.h"
 #include "storage/durable_file.h"
 
 using namespace haptics;
 
 namespace {
 
-// A fresh folder in the system's temporary directory, removed with everything in it when
-// the test ends, also when it fails (a failed REQUIRE unwinds through the destructor).
+// Each test's folder (scratch_dir.h); p_name inside it, e.g. "/ratings.csv".
 class TempDir {
 public:
-	TempDir() {
-		std::string pattern = (std::filesystem::temp_directory_path() / "haptics-durable-XXXXXX").string();
-		REQUIRE(::mkdtemp(pattern.data()) != nullptr);
-		path_ = pattern;
-	}
-	~TempDir() {
-		std::error_code ignored;
-		std::filesystem::remove_all(path_, ignored);
-	}
-	TempDir(const TempDir &) = delete;
-	TempDir &operator=(const TempDir &) = delete;
-
-	// p_name inside the folder, e.g. "/ratings.csv".
-	std::string path(const char *p_name) const { return path_ + p_name; }
+	std::string path(const char *p_name) const { return scratch_.root().string() + p_name; }
 
 private:
-	std::string path_;
+	testing::ScratchDir scratch_{ "haptics-durable" };
 };
 
 std::string read_file(const std::string &p_path) {

@@ -106,9 +106,13 @@ func splash(where: Vector2, speed: float) -> void:
 ## [param where] with linear [param volume] and [param pitch].
 func play(sound: StringName, where: Vector2, volume: float = 1.0, pitch: float = 1.0) -> void:
 	var stream: AudioStream = _SOUNDS.get(sound, null)
-	if stream == null or not _audible or _voices.is_empty():
+	# Once the game is quitting no new sound starts (it would outlive the audio server's last
+	# mix and leak, see CleanExit); nor does one on a voice already freed with the level.
+	if stream == null or not _audible or _voices.is_empty() or CleanExit.is_quitting():
 		return
 	var voice: AudioStreamPlayer2D = _voices[_next_voice]
+	if not voice.is_inside_tree():
+		return
 	_next_voice = (_next_voice + 1) % _voices.size()
 	voice.stream = stream
 	voice.global_position = where

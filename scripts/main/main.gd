@@ -154,8 +154,8 @@ func _replay_pong(previous: PongScreen) -> void:
 
 
 func _on_autopilot_finished(_reason: String) -> void:
-	get_tree().quit(0)
+	CleanExit.quit(0)
 
 
 func _on_quit_requested() -> void:
-	get_tree().quit(0)
+	CleanExit.quit(0)

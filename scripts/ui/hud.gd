@@ -126,6 +126,28 @@ func get_legend_value(component: String) -> Label:
 	return _legend_values.get(component, null)
 
 
+## The HUD's servo line while the servo runs: its rate, period p99 and which real-time
+## techniques it was granted ([method HapticsServer.get_stats]): the SCHED_FIFO priority, locked
+## memory, the CPU latency held, the pinned CPU, the spin before each deadline.
+static func servo_running_text(rate_hz: float, stats: Dictionary) -> String:
+	var p99_ms: float = stats.get("period_p99_ms", 0.0)
+	var parts: PackedStringArray = ["servo %d Hz" % roundi(rate_hz), "p99 %.2f ms" % p99_ms]
+	if stats.get("realtime", false) == true:
+		var priority: int = stats.get("realtime_priority", 0)
+		parts.append("RT %d" % priority)
+	if stats.get("memory_locked", false) == true:
+		parts.append("mlock")
+	if stats.get("cpu_latency_held", false) == true:
+		parts.append("C-states held")
+	var cpu: int = stats.get("pinned_cpu", -1)
+	if cpu >= 0:
+		parts.append("CPU %d" % cpu)
+	var spin_us: float = stats.get("spin_us", 0.0)
+	if spin_us > 0.0:
+		parts.append("spin %d µs" % roundi(spin_us))
+	return "  ·  ".join(parts)
+
+
 ## The HUD's servo line when the servo is not running: why, and what happens now.
 static func servo_stopped_text(servo_status: String, device_status: Dictionary) -> String:
 	if servo_status.is_empty():
@@ -155,12 +177,7 @@ func _refresh_labels() -> void:
 	_device_name.text = device
 	var rate: float = Haptics.servo.get_rate_hz()
 	if rate > 0.0:
-		var stats: Dictionary = Haptics.servo.get_stats()
-		var p99: float = stats.get("period_p99_ms", 0.0)
-		var realtime: bool = stats.get("realtime", false) == true
-		_servo.text = (
-			"servo %d Hz  ·  p99 %.2f ms%s" % [roundi(rate), p99, "  ·  RT" if realtime else ""]
-		)
+		_servo.text = servo_running_text(rate, Haptics.servo.get_stats())
 	else:
 		_servo.text = servo_stopped_text(Haptics.servo.get_status(), Haptics.device.get_status())
 

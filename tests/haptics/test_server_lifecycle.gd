@@ -28,6 +28,35 @@ func test_the_thread_runs_and_reports_its_statistics() -> void:
 	assert_false(server.is_running())
 
 
+func test_the_stats_say_which_realtime_techniques_were_granted() -> void:
+	assert_true(server.open_device("simulated"))
+	assert_true(server.start())
+	await wait_seconds(0.3)
+	var stats: Dictionary = server.get_stats()
+	server.stop()
+	var types: Dictionary[String, int] = {
+		"memory_locked": TYPE_BOOL,
+		"cpu_latency_held": TYPE_BOOL,
+		"pinned_cpu": TYPE_INT,
+		"stack_prefaulted_kb": TYPE_INT,
+		"timer_slack_minimised": TYPE_BOOL,
+		"spin_us": TYPE_FLOAT,
+		"servo_cpu_percent": TYPE_FLOAT,
+		"latency_p99_us": TYPE_FLOAT,
+		"latency_max_us": TYPE_FLOAT,
+	}
+	for key: String in types:
+		if assert_has(stats, key):
+			assert_eq(typeof(stats[key]), types[key], key)
+	# SCHED_FIFO and the timer-slack fallback exclude each other.
+	assert_ne(stats["realtime"], stats["timer_slack_minimised"])
+	var cpu_percent: float = stats["servo_cpu_percent"]
+	var latency_max_us: float = stats["latency_max_us"]
+	var latency_p99_us: float = stats["latency_p99_us"]
+	assert_true(cpu_percent >= 0.0)
+	assert_true(latency_max_us >= latency_p99_us)
+
+
 func test_frames_from_the_game_reach_the_thread() -> void:
 	assert_true(server.open_device("simulated"))
 	assert_true(server.start(500.0))

@@ -127,6 +127,32 @@ func test_run_info_shows_time_and_items() -> void:
 	assert_eq(items_label.text, "2 / 5")
 
 
+func test_the_servo_line_names_the_techniques_granted() -> void:
+	var granted: Dictionary = {
+		"period_p99_ms": 1.0234,
+		"realtime": true,
+		"realtime_priority": 80,
+		"memory_locked": true,
+		"cpu_latency_held": true,
+		"pinned_cpu": 1,
+		"spin_us": 25.0,
+	}
+	assert_eq(
+		Hud.servo_running_text(999.6, granted),
+		"servo 1000 Hz  ·  p99 1.02 ms  ·  RT 80  ·  mlock  ·  C-states held  ·  CPU 1  ·  spin 25 µs"
+	)
+	var refused: Dictionary = {
+		"period_p99_ms": 1.2,
+		"realtime": false,
+		"realtime_priority": 0,
+		"memory_locked": false,
+		"cpu_latency_held": false,
+		"pinned_cpu": -1,
+		"spin_us": 0.0,
+	}
+	assert_eq(Hud.servo_running_text(1000.0, refused), "servo 1000 Hz  ·  p99 1.20 ms")
+
+
 func _collect_blocking(node: Node, out: Array[String]) -> void:
 	if node is Control and (node as Control).mouse_filter != Control.MOUSE_FILTER_IGNORE:
 		out.append(str(node.get_path()))

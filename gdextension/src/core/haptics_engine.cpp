@@ -270,11 +270,19 @@ ServoStats HapticsEngine::stats() const {
 	ServoStats stats;
 	impl_->channels.stats.fill(stats);
 	const ServoOutput output = impl_->channels.output.load();
-	const RealtimeResult scheduler = impl_->loop.scheduler();
+	const RealtimeGrants grants = impl_->loop.grants();
 	const bool threaded = impl_->loop.state() != ServoState::STOPPED || !impl_->manual_session;
 	stats.running = is_running();
-	stats.scheduler = threaded ? scheduler.kind : SchedulerKind::MANUAL;
-	stats.realtime_priority = threaded ? scheduler.priority : 0;
+	stats.scheduler = threaded ? grants.kind : SchedulerKind::MANUAL;
+	stats.realtime_priority = threaded ? grants.priority : 0;
+	if (threaded) {
+		stats.memory_locked = grants.memory_locked;
+		stats.cpu_latency_held = grants.cpu_latency_held;
+		stats.pinned_cpu = grants.cpu;
+		stats.stack_prefaulted_kb = grants.stack_prefaulted_kb;
+		stats.timer_slack_minimised = grants.timer_slack_minimised;
+		stats.spin_s = static_cast<double>(impl_->loop.options().spin_ns) * 1e-9;
+	}
 	stats.frames_received = output.frames_received;
 	stats.frames_rejected = impl_->frames_rejected;
 	stats.frame_age_s = output.frame_age_s;

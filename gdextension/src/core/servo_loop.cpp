@@ -1,5 +1,6 @@
 #include "core/servo_loop.h"
 
+#include <algorithm>
 #include <cmath>
 #include <system_error>
 
@@ -8,6 +9,8 @@ namespace haptics {
 namespace {
 
 constexpr double S_PER_NS = 1e-9;
+// The thread's CPU time is read (a system call) once every this many ticks.
+constexpr uint64_t CPU_SAMPLE_TICKS = 1000;
 
 } // namespace
 
@@ -19,15 +22,25 @@ ServoLoop::~ServoLoop() {
 }
 
 RealtimeResult ServoLoop::scheduler() const {
+	const RealtimeGrants granted = grants();
 	RealtimeResult result;
-	result.kind = scheduler_kind_.load(std::memory_order_acquire);
-	result.priority = scheduler_priority_.load(std::memory_order_acquire);
+	result.kind = granted.kind;
+	result.priority = granted.priority;
 	return result;
+}
+
+RealtimeGrants ServoLoop::grants() const {
+	return grants_published_.load(std::memory_order_acquire) ? grants_ : RealtimeGrants{};
 }
 
 Status ServoLoop::start(HapticDevice *p_device, const ServoOptions &p_options) {
 	if (state() == ServoState::RUNNING) {
 		return Status::error(StatusCode::INVALID_STATE, "the servo is already running");
+	}
+	const int64_t nominal_period_ns = std::llround(1e9 / p_options.rate_hz);
+	if (p_options.spin_ns < 0 || p_options.spin_ns > nominal_period_ns / 2) {
+		return Status::error(StatusCode::INVALID_ARGUMENT, "spin_ns must be in [0, %lld] (half a period), got %lld",
+				static_cast<long long>(nominal_period_ns / 2), static_cast<long long>(p_options.spin_ns));
 	}
 	stop(); // Joins a thread that ended on a fault.
 	device_ = p_device;
@@ -37,8 +50,7 @@ Status ServoLoop::start(HapticDevice *p_device, const ServoOptions &p_options) {
 	channels_.stats.reset(options_.rate_hz);
 	stop_requested_.store(false, std::memory_order_relaxed);
 	fault_.store(DeviceIo::OK, std::memory_order_relaxed);
-	scheduler_kind_.store(SchedulerKind::NORMAL, std::memory_order_relaxed);
-	scheduler_priority_.store(0, std::memory_order_relaxed);
+	grants_published_.store(false, std::memory_order_relaxed);
 	state_.store(ServoState::RUNNING, std::memory_order_release);
 	try {
 		thread_ = std::thread([this] { run(); });
@@ -65,24 +77,29 @@ void ServoLoop::clear_fault() {
 }
 
 void ServoLoop::run() {
-	const RealtimeResult realtime = try_make_current_thread_realtime(options_.realtime_priority);
-	scheduler_kind_.store(realtime.kind, std::memory_order_release);
-	scheduler_priority_.store(realtime.priority, std::memory_order_release);
+	grants_ = apply_realtime_request(options_.realtime);
+	grants_published_.store(true, std::memory_order_release);
 
 	const int64_t period_ns = std::llround(1e9 / options_.rate_hz);
 	const double dt_s = static_cast<double>(period_ns) * S_PER_NS;
 	const bool naive = options_.scheduling == LoopScheduling::NAIVE_SLEEP;
+	const int64_t spin_ns = naive ? 0 : std::clamp<int64_t>(options_.spin_ns, 0, period_ns / 2);
 	int64_t deadline_ns = monotonic_now_ns() + period_ns;
 	int64_t previous_wake_ns = -1;
+	uint64_t tick_index = 0;
 	DeviceIo io = DeviceIo::OK;
 
 	while (!stop_requested_.load(std::memory_order_acquire)) {
 		if (naive) {
 			sleep_for_ns(period_ns);
 		} else {
-			sleep_until_ns(deadline_ns);
+			sleep_then_spin_until_ns(deadline_ns, spin_ns);
 		}
 		const int64_t wake_ns = monotonic_now_ns();
+		if (tick_index++ % CPU_SAMPLE_TICKS == 0) {
+			channels_.stats.record_thread_cpu(static_cast<double>(wake_ns) * S_PER_NS,
+					static_cast<double>(thread_cpu_time_ns()) * S_PER_NS);
+		}
 		io = pipeline_.tick(dt_s);
 		const int64_t end_ns = monotonic_now_ns();
 
@@ -106,8 +123,11 @@ void ServoLoop::run() {
 		}
 	}
 
+	channels_.stats.record_thread_cpu(static_cast<double>(monotonic_now_ns()) * S_PER_NS,
+			static_cast<double>(thread_cpu_time_ns()) * S_PER_NS);
 	// Zero force before the thread ends, whatever ended it. Harmless if the device is gone.
 	device_->write_zero();
+	release_realtime_grants(grants_);
 	fault_.store(io, std::memory_order_release);
 	state_.store(io == DeviceIo::OK ? ServoState::STOPPED : ServoState::FAULTED, std::memory_order_release);
 }

@@ -8,7 +8,12 @@
 // period the missed deadlines are skipped (and counted) rather than replayed in a burst:
 // a burst of ticks renders nothing a hand could feel and delays the next real one.
 //
-// The thread asks for SCHED_FIFO and quietly keeps SCHED_OTHER when refused; stats say which.
+// At start the thread asks for what ServoOptions::realtime names (SCHED_FIFO priority, locked
+// memory, the CPU wake-up latency held at 0, pinning, a prefaulted stack; realtime.h), each
+// falling back quietly when refused; stats say what was granted. The process-wide holds are
+// released when the thread ends. With spin_ns > 0 it sleeps until that long before each
+// deadline and busy-waits the rest, absorbing the wake-up's lateness at a CPU cost
+// (ServoStats::thread_cpu_fraction).
 //
 // Stopping: stop() raises a flag, the thread finishes its tick, writes ZERO force to the
 // device itself, and only then exits; stop() joins it. So the last thing the device receives
@@ -40,8 +45,15 @@ enum class LoopScheduling : int32_t {
 
 struct ServoOptions {
 	double rate_hz = 1000.0; // [250, 4000]
-	int32_t realtime_priority = 50; // SCHED_FIFO priority to ask for; 0 = do not ask.
 	LoopScheduling scheduling = LoopScheduling::DEADLINE;
+	RealtimeRequest realtime; // What the thread asks of the system (defaults: realtime.h).
+	// Busy-wait before each deadline (DEADLINE scheduling only); 0 = sleep to the deadline.
+	// [0, half a period]. 50 us chosen by measurement (README, "Servo timing"): p99 wake
+	// latency 95 / 52 / 50 us idle / under CPU / under rendering load against 86-119 / 96-107 /
+	// 80-83 without, for about 1 % of a core (100 us: p99 13-35 us for 5 % of a core).
+	int64_t spin_ns = DEFAULT_SPIN_NS;
+
+	static constexpr int64_t DEFAULT_SPIN_NS = 50'000;
 };
 
 class ServoLoop {
@@ -65,6 +77,8 @@ public:
 	// The I/O status that ended the last run (OK unless FAULTED).
 	DeviceIo fault() const { return fault_.load(std::memory_order_acquire); }
 	RealtimeResult scheduler() const;
+	// What the thread was granted (all false / -1 / 0 until it has started).
+	RealtimeGrants grants() const;
 	const ServoOptions &options() const { return options_; }
 
 private:
@@ -78,8 +92,9 @@ private:
 	std::atomic<bool> stop_requested_{ false };
 	std::atomic<ServoState> state_{ ServoState::STOPPED };
 	std::atomic<DeviceIo> fault_{ DeviceIo::OK };
-	std::atomic<SchedulerKind> scheduler_kind_{ SchedulerKind::NORMAL };
-	std::atomic<int32_t> scheduler_priority_{ 0 };
+	// Written by the thread once at start, then published; read by the game thread.
+	RealtimeGrants grants_;
+	std::atomic<bool> grants_published_{ false };
 };
 
 } // namespace haptics

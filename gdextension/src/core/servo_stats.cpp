@@ -91,7 +91,12 @@ void ServoStatsRecorder::reset(double p_nominal_rate_hz) {
 	missed_.store(0, std::memory_order_relaxed);
 	period_.reset();
 	jitter_.reset();
+	latency_.reset();
 	cost_.reset();
+	cpu_first_now_s_.store(-1.0, std::memory_order_relaxed);
+	cpu_first_s_.store(0.0, std::memory_order_relaxed);
+	cpu_last_now_s_.store(0.0, std::memory_order_relaxed);
+	cpu_last_s_.store(0.0, std::memory_order_relaxed);
 }
 
 void ServoStatsRecorder::record_tick(double p_now_s, double p_period_s, double p_lateness_s, double p_cost_s) {
@@ -105,6 +110,7 @@ void ServoStatsRecorder::record_tick(double p_now_s, double p_period_s, double p
 		period_.record(p_period_s);
 		jitter_.record(std::abs(p_period_s - nominal_period));
 	}
+	latency_.record(p_lateness_s);
 	if (p_lateness_s > 0.5 * nominal_period) {
 		bump(late_, uint64_t{ 1 });
 	}
@@ -113,6 +119,15 @@ void ServoStatsRecorder::record_tick(double p_now_s, double p_period_s, double p
 
 void ServoStatsRecorder::record_missed(uint64_t p_count) {
 	bump(missed_, p_count);
+}
+
+void ServoStatsRecorder::record_thread_cpu(double p_now_s, double p_cpu_s) {
+	if (cpu_first_now_s_.load(std::memory_order_relaxed) < 0.0) {
+		cpu_first_s_.store(p_cpu_s, std::memory_order_relaxed);
+		cpu_first_now_s_.store(p_now_s, std::memory_order_relaxed);
+	}
+	cpu_last_s_.store(p_cpu_s, std::memory_order_relaxed);
+	cpu_last_now_s_.store(p_now_s, std::memory_order_relaxed);
 }
 
 void ServoStatsRecorder::fill(ServoStats &r_stats) const {
@@ -129,6 +144,15 @@ void ServoStatsRecorder::fill(ServoStats &r_stats) const {
 	r_stats.jitter_p99_s = jitter_.percentile(0.99);
 	r_stats.jitter_p999_s = jitter_.percentile(0.999);
 	r_stats.jitter_max_s = jitter_.max();
+	r_stats.latency_p50_s = latency_.percentile(0.50);
+	r_stats.latency_p99_s = latency_.percentile(0.99);
+	r_stats.latency_p999_s = latency_.percentile(0.999);
+	r_stats.latency_max_s = latency_.max();
+	const double cpu_first_now = cpu_first_now_s_.load(std::memory_order_relaxed);
+	const double cpu_wall = cpu_last_now_s_.load(std::memory_order_relaxed) - cpu_first_now;
+	r_stats.thread_cpu_fraction = cpu_first_now >= 0.0 && cpu_wall > 0.0
+			? (cpu_last_s_.load(std::memory_order_relaxed) - cpu_first_s_.load(std::memory_order_relaxed)) / cpu_wall
+			: 0.0;
 	r_stats.late_ticks = late_.load(std::memory_order_relaxed);
 	r_stats.missed_deadlines = missed_.load(std::memory_order_relaxed);
 	r_stats.tick_cost_p50_s = cost_.percentile(0.50);

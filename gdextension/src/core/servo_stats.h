@@ -54,12 +54,24 @@ struct ServoStats {
 	bool running = false;
 	SchedulerKind scheduler = SchedulerKind::MANUAL;
 	int32_t realtime_priority = 0; // SCHED_FIFO priority when granted.
+	// The other real-time techniques (realtime.h) the servo thread asked for and got.
+	bool memory_locked = false; // mlockall
+	bool cpu_latency_held = false; // /dev/cpu_dma_latency at 0
+	int32_t pinned_cpu = -1; // -1 when not pinned
+	int32_t stack_prefaulted_kb = 0;
+	bool timer_slack_minimised = false; // SCHED_OTHER only
+	double spin_s = 0.0; // Busy-wait before each deadline (ServoOptions::spin_ns).
+	// Share of one CPU the servo thread used since its first tick (sleeping costs nothing;
+	// the spin and the tick do).
+	double thread_cpu_fraction = 0.0;
 	double nominal_rate_hz = 0.0;
 	double achieved_rate_hz = 0.0; // Ticks per second of servo time (wall clock if threaded).
 	uint64_t ticks = 0;
 	double period_mean_s = 0.0, period_p50_s = 0.0, period_p99_s = 0.0, period_p999_s = 0.0, period_max_s = 0.0;
 	// |period - nominal period|
 	double jitter_p50_s = 0.0, jitter_p99_s = 0.0, jitter_p999_s = 0.0, jitter_max_s = 0.0;
+	// Wake-up latency: how long after its deadline each tick woke (cyclictest's measure).
+	double latency_p50_s = 0.0, latency_p99_s = 0.0, latency_p999_s = 0.0, latency_max_s = 0.0;
 	uint64_t late_ticks = 0; // Woke more than half a period after the deadline.
 	uint64_t missed_deadlines = 0; // Whole periods skipped after a long stall.
 	double tick_cost_p50_s = 0.0, tick_cost_p99_s = 0.0, tick_cost_max_s = 0.0;
@@ -87,6 +99,9 @@ public:
 	// Single writer. p_period_s < 0 for the first tick of a session (no period yet).
 	void record_tick(double p_now_s, double p_period_s, double p_lateness_s, double p_cost_s);
 	void record_missed(uint64_t p_count);
+	// The servo thread's CPU time (thread_cpu_time_ns) at p_now_s; the first call of a
+	// session is the baseline.
+	void record_thread_cpu(double p_now_s, double p_cpu_s);
 
 	// Fills the loop-timing fields of r_stats (rate, period, jitter, late, cost, ticks).
 	void fill(ServoStats &r_stats) const;
@@ -103,6 +118,11 @@ private:
 	std::atomic<uint64_t> missed_{ 0 };
 	Histogram<20000> period_{ PERIOD_BIN_S }; // 0-20 ms
 	Histogram<20000> jitter_{ PERIOD_BIN_S }; // 0-20 ms
+	Histogram<20000> latency_{ PERIOD_BIN_S }; // 0-20 ms
+	std::atomic<double> cpu_first_now_s_{ -1.0 };
+	std::atomic<double> cpu_first_s_{ 0.0 };
+	std::atomic<double> cpu_last_now_s_{ 0.0 };
+	std::atomic<double> cpu_last_s_{ 0.0 };
 	Histogram<10000> cost_{ COST_BIN_S }; // 0-100 us
 };
 

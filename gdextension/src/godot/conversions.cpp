@@ -263,6 +263,13 @@ gd::Dictionary stats_to_dictionary(const ServoStats &p_stats) {
 	d.set("scheduler", scheduler);
 	d.set("realtime", p_stats.scheduler == SchedulerKind::REALTIME_FIFO);
 	d.set("realtime_priority", static_cast<int64_t>(p_stats.realtime_priority));
+	d.set("memory_locked", p_stats.memory_locked);
+	d.set("cpu_latency_held", p_stats.cpu_latency_held);
+	d.set("pinned_cpu", static_cast<int64_t>(p_stats.pinned_cpu));
+	d.set("stack_prefaulted_kb", static_cast<int64_t>(p_stats.stack_prefaulted_kb));
+	d.set("timer_slack_minimised", p_stats.timer_slack_minimised);
+	d.set("spin_us", p_stats.spin_s * US);
+	d.set("servo_cpu_percent", p_stats.thread_cpu_fraction * 100.0);
 	d.set("nominal_rate_hz", p_stats.nominal_rate_hz);
 	d.set("rate_hz", p_stats.achieved_rate_hz);
 	d.set("ticks", static_cast<int64_t>(p_stats.ticks));
@@ -272,6 +279,8 @@ gd::Dictionary stats_to_dictionary(const ServoStats &p_stats) {
 	d.set("period_p999_ms", p_stats.period_p999_s * MS);
 	d.set("period_max_ms", p_stats.period_max_s * MS);
 	d.set("jitter_p99_us", p_stats.jitter_p99_s * US);
+	d.set("latency_p99_us", p_stats.latency_p99_s * US);
+	d.set("latency_max_us", p_stats.latency_max_s * US);
 	d.set("late_ticks", static_cast<int64_t>(p_stats.late_ticks));
 	d.set("missed_deadlines", static_cast<int64_t>(p_stats.missed_deadlines));
 	d.set("tick_cost_p50_us", p_stats.tick_cost_p50_s * US);

@@ -150,7 +150,7 @@ TEST_CASE("device io thread: rejects a bad rate and runs the worker until stoppe
 	thread.stop(); // Idempotent.
 }
 
-TEST_CASE("device io thread: a 250 Hz device under the 1 kHz servo gets the latest force; the servo never waits") {
+TEST_CASE("device io thread: a 250 Hz device under the 1 kHz servo gets the latest force - the servo never waits") {
 	LoopbackDevice::Wire wire;
 	HapticsEngine engine;
 	test::BackendSoakScript script;

@@ -86,7 +86,7 @@ TEST_CASE("dualsense io: legacy firmware gets halved motor values with flag0 0x0
 	CHECK(held.last_report[39] == 0x00); // No flag2 bit 2.
 }
 
-TEST_CASE("dualsense io: a continuous force sets trigger resistance; zero force turns the triggers off") {
+TEST_CASE("dualsense io: a continuous force sets trigger resistance - zero force turns the triggers off") {
 	Rig rig(Bus::USB);
 	ForceCommand press;
 	press.force_n = Vec3{ 0.0, 1.5, 0.0 }; // 6 of 8 steps at 2 N full scale.
@@ -124,7 +124,7 @@ TEST_CASE("dualsense io: NaN forces are silence, not a crash") {
 	CHECK(held.right_trigger == trigger_off());
 }
 
-TEST_CASE("dualsense io: the stick and buttons become the device state; y up is the pad's y down negated") {
+TEST_CASE("dualsense io: the stick and buttons become the device state - y up is the pad's y down negated") {
 	Rig rig(Bus::USB);
 	DeviceState state;
 	REQUIRE(rig.exchange.read_state(state) == DeviceIo::OK);
@@ -176,7 +176,7 @@ TEST_CASE("dualsense io: garbled, short and bad-CRC input reports are ignored, t
 	CHECK(state.position_m.x == doctest::Approx(0.05)); // From the scripted report after them.
 }
 
-TEST_CASE("dualsense io: a BT simple report is counted and ignored; the state waits for a full report") {
+TEST_CASE("dualsense io: a BT simple report is counted and ignored - the state waits for a full report") {
 	Rig rig(Bus::BLUETOOTH);
 	const uint8_t simple[10] = { 0x01, 0xFF, 0x80, 0x80, 0x80, 0x08, 0, 0, 0, 0 };
 	rig.pad->inject_input(simple, sizeof(simple));
@@ -273,7 +273,7 @@ TEST_CASE("dualsense scripted pad: USB accepts 48 or 63 bytes of report 0x02 onl
 	CHECK(pad->counters().reports_rejected == 2);
 }
 
-TEST_CASE("dualsense io: an unplug fails the cycle as DISCONNECTED with hidapi's reason; io_stop leaves everything off") {
+TEST_CASE("dualsense io: an unplug fails the cycle as DISCONNECTED with hidapi's reason - io_stop leaves everything off") {
 	Rig rig(Bus::USB);
 	ForceCommand press;
 	press.force_n = Vec3{ 0.0, 2.0, 0.0 };
@@ -304,7 +304,7 @@ TEST_CASE("dualsense io: an unplug fails the cycle as DISCONNECTED with hidapi's
 	CHECK(rig.exchange.read_state(state) == DeviceIo::DISCONNECTED);
 }
 
-TEST_CASE("dualsense device: open reads the firmware version and picks the recipe; close leaves the pad off") {
+TEST_CASE("dualsense device: open reads the firmware version and picks the recipe - close leaves the pad off") {
 	struct Case {
 		uint16_t version;
 		bool edge;
@@ -355,7 +355,7 @@ TEST_CASE("dualsense device: without a bus from the transport, the first input r
 	}
 }
 
-TEST_CASE("dualsense device: capabilities are vibration-only full-scales; unplugged pads do not open") {
+TEST_CASE("dualsense device: capabilities are vibration-only full-scales - unplugged pads do not open") {
 	ScriptedDualSenseSetup setup = make_scripted_device(Bus::BLUETOOTH);
 	const DeviceCapabilities capabilities = setup.device->capabilities();
 	CHECK(capabilities.output == ForceOutput::VIBRATION);

@@ -33,7 +33,7 @@ TEST_CASE("dualsense mapping: a full-scale impact gives full rumble on both moto
 	CHECK(cycles < 50);
 }
 
-TEST_CASE("dualsense mapping: small hits use only the weak motor; the strong one joins above the knee") {
+TEST_CASE("dualsense mapping: small hits use only the weak motor - the strong one joins above the knee") {
 	RumbleMapper rumble;
 	rumble.configure(MappingConfig{});
 	RumbleLevels levels = rumble.update(0.6, 0.004); // 20 % of full scale.

@@ -139,7 +139,7 @@ TEST_CASE("dualsense report: fields not asked for stay zero, flags included (the
 	CHECK_BYTES(block, COMMON_SIZE, setup, COMMON_SIZE);
 }
 
-TEST_CASE("dualsense report: BT golden CRCs of FACTS §5.3 (zero block; rumble block)") {
+TEST_CASE("dualsense report: BT golden CRCs of FACTS §5.3 (zero block - rumble block)") {
 	uint8_t block[COMMON_SIZE] = {};
 	OutputReport report;
 	bt_from_common(block, 0, report);

@@ -32,7 +32,7 @@ FfBits parse64(const char *p_text, Status *r_status = nullptr) {
 
 } // namespace
 
-TEST_CASE("evdev EVIOCGBIT(EV_FF): bit 0x52 is byte 10 bit 2; set -> constant force, unset -> a clear error") {
+TEST_CASE("evdev EVIOCGBIT(EV_FF): bit 0x52 is byte 10 bit 2 - set -> constant force, unset -> a clear error") {
 	uint8_t bits[EVDEV_FF_BITS_BYTES] = {};
 	bits[10] = 0x04; // 0x52 = 82 = 8 * 10 + 2
 	bits[12] = 0x03; // FF_GAIN 0x60, FF_AUTOCENTER 0x61

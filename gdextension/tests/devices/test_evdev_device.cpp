@@ -75,7 +75,7 @@ TEST_CASE("evdev device: joystick and wheel capabilities, names from EVIOCGNAME"
 	CHECK(std::string(wheel->name()) == "Scripted FFB wheel");
 }
 
-TEST_CASE("evdev device: a servo force reaches the firmware model; the stick reaches read_state") {
+TEST_CASE("evdev device: a servo force reaches the firmware model - the stick reaches read_state") {
 	auto kernel = std::make_shared<ScriptedEvdevKernel>();
 	auto device = make_scripted_device(kernel);
 	REQUIRE(device->open().ok());
@@ -124,7 +124,7 @@ TEST_CASE("evdev device: close leaves zero force, stopped, erased, fd closed") {
 	device->close(); // Idempotent.
 }
 
-TEST_CASE("evdev device: unplug -> DISCONNECTED with a reason; reopen fails cleanly until replugged") {
+TEST_CASE("evdev device: unplug -> DISCONNECTED with a reason - reopen fails cleanly until replugged") {
 	auto kernel = std::make_shared<ScriptedEvdevKernel>();
 	auto device = make_scripted_device(kernel);
 	REQUIRE(device->open().ok());
@@ -247,7 +247,7 @@ TEST_CASE("evdev device: a wheel config forced on a joystick-shaped node renders
 	CHECK(kernel->rendered().axis_x == doctest::Approx(-0.5).epsilon(1e-3));
 }
 
-TEST_CASE("evdev probe: handled only for backend evdev; scripted EACCES and missing constant force") {
+TEST_CASE("evdev probe: handled only for backend evdev - scripted EACCES and missing constant force") {
 	DeviceInfo info;
 	info.backend = "hidapi";
 	info.path = "/dev/input/event7";

@@ -6,6 +6,8 @@
 #include "devices/evdev/evdev_backend.h"
 #include "devices/evdev/evdev_enumeration.h"
 
+#include "scratch_dir.h"
+
 #include <doctest/doctest.h>
 
 #include <cstdlib>
@@ -22,20 +24,11 @@ namespace {
 class FakeSysfs {
 public:
 	FakeSysfs() {
-		std::string pattern = (fs::temp_directory_path() / "haptics-evdev-XXXXXX").string();
-		REQUIRE(::mkdtemp(pattern.data()) != nullptr);
-		root_ = pattern;
 		fs::create_directories(class_input());
 		fs::create_directories(dev_input());
 		fs::create_directories(root_ / "sys/bus/hid");
 		fs::create_directories(root_ / "sys/class/input_subsystem");
 	}
-	~FakeSysfs() {
-		std::error_code ignored;
-		fs::remove_all(root_, ignored);
-	}
-	FakeSysfs(const FakeSysfs &) = delete;
-	FakeSysfs &operator=(const FakeSysfs &) = delete;
 
 	fs::path class_input() const { return root_ / "sys/class/input"; }
 	fs::path dev_input() const { return root_ / "dev/input"; }
@@ -74,7 +67,8 @@ public:
 	}
 
 private:
-	fs::path root_;
+	testing::ScratchDir dir_{ "haptics-evdev" };
+	fs::path root_ = dir_.root();
 };
 
 constexpr const char *HID_PARENT = "pci0000:00/0000:00:14.0/usb1/1-2/1-2:1.0/0003:2341:8036.0001";
@@ -123,7 +117,7 @@ TEST_CASE("evdev enumeration: lists FF_CONSTANT nodes only, in event order, with
 	CHECK(wheel.unavailable_reason == (sysfs.dev_input() / "event12").string() + " is not present (ENOENT): the device is unplugged or the path is stale");
 }
 
-TEST_CASE("evdev enumeration: ids are stable across calls; without phys, udev's by-path name") {
+TEST_CASE("evdev enumeration: ids are stable across calls - without phys, udev's by-path name") {
 	FakeSysfs sysfs;
 	sysfs.add(HID_PARENT, "input5", "event7", "300040000 0", "Stick", "usb-0000:00:14.0-2/input0");
 	sysfs.add("virtual", "input20", "event12", "300040000 0", "Virtual wheel", "");

@@ -130,7 +130,7 @@ TEST_CASE("evdev direction: invert flags flip one axis each") {
 	CHECK(map(3.0, -3.0, invert_y).direction == 0x2000);
 }
 
-TEST_CASE("evdev level: |F| / max_force x 0x7FFF, rounded and clamped; z ignored") {
+TEST_CASE("evdev level: |F| / max_force x 0x7FFF, rounded and clamped - z ignored") {
 	CHECK(map(2.5, 0.0).level == 16384); // 0.5 x 32767 = 16383.5 rounds away from zero.
 	CHECK(map(3.0, -4.0).level == 0x7fff); // |F| = 5 N = max.
 	CHECK(map(30.0, -40.0).level == 0x7fff);

@@ -76,7 +76,7 @@ TEST_CASE("evdev axis: the driver's flat band reads 0 and the rest is rescaled t
 	CHECK(normalise_axis(500, negative_flat) == doctest::Approx(0.5));
 }
 
-TEST_CASE("evdev axis: extreme and empty ranges never overflow; validation names the axis") {
+TEST_CASE("evdev axis: extreme and empty ranges never overflow - validation names the axis") {
 	const AbsRange full{ 0, INT32_MIN, INT32_MAX, 0, 0, 0 };
 	CHECK(normalise_axis(INT32_MAX, full) == 1.0);
 	CHECK(normalise_axis(INT32_MIN, full) == -1.0);
@@ -127,7 +127,7 @@ TEST_CASE("evdev buttons: SDL order (BTN_JOYSTICK.. then BTN_MISC..), keyboard k
 	CHECK(map.codes[31] == 0x13f);
 }
 
-TEST_CASE("evdev decoder: values commit at SYN_REPORT; y is negated; buttons press and release") {
+TEST_CASE("evdev decoder: values commit at SYN_REPORT - y is negated - buttons press and release") {
 	EvdevInputDecoder decoder;
 	decoder.configure(stick_layout());
 	const std::vector<uint8_t> first = events({ abs_event(EVDEV_ABS_X, 32767), abs_event(EVDEV_ABS_Y, 32767),
@@ -146,7 +146,7 @@ TEST_CASE("evdev decoder: values commit at SYN_REPORT; y is negated; buttons pre
 	CHECK(decoder.stats().ignored == 0);
 }
 
-TEST_CASE("evdev decoder: unknown types/codes are counted and skipped; a partial event is never read") {
+TEST_CASE("evdev decoder: unknown types/codes are counted and skipped - a partial event is never read") {
 	EvdevInputDecoder decoder;
 	decoder.configure(stick_layout());
 	std::vector<uint8_t> bytes = events({ evdev_test::expected_event(0x04, 0x04, 589825), // EV_MSC MSC_SCAN

@@ -154,7 +154,7 @@ TEST_CASE("evdev sequence: an unchanged quantised force sends nothing") {
 	CHECK(s.effect.uploads() == uploads);
 }
 
-TEST_CASE("evdev sequence: stop = level 0 upload, EV_FF id value 0, EVIOCRMFF id by value; idempotent") {
+TEST_CASE("evdev sequence: stop = level 0 upload, EV_FF id value 0, EVIOCRMFF id by value - idempotent") {
 	Started s;
 	start(s);
 	REQUIRE(s.effect.update({ 0x4000, 0x7fff }) == 0);
@@ -208,7 +208,7 @@ TEST_CASE("evdev sequence: no free effect slot (ENOSPC) is a clear error and lea
 	CHECK_FALSE(effect.started());
 }
 
-TEST_CASE("evdev sequence: a failing play erases the uploaded effect; unplugged -> DEVICE_DISCONNECTED") {
+TEST_CASE("evdev sequence: a failing play erases the uploaded effect - unplugged -> DEVICE_DISCONNECTED") {
 	Started s;
 	s.kernel = std::make_shared<ScriptedEvdevKernel>();
 	s.fd = s.kernel->open_device("/dev/input/event7");

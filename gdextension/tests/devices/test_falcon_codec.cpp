@@ -184,7 +184,7 @@ TEST_CASE("falcon assembler: a frame split across two 64-byte reads, and status-
 	CHECK(reply.buttons == 2);
 }
 
-TEST_CASE("falcon assembler: two frames and a partial third in one read; the tail waits for the next") {
+TEST_CASE("falcon assembler: two frames and a partial third in one read - the tail waits for the next") {
 	FalconStreamAssembler assembler;
 	std::vector<uint8_t> payload = reply_bytes(1, 2, 3);
 	const std::vector<uint8_t> second = reply_bytes(4, 5, 6);
@@ -229,7 +229,7 @@ TEST_CASE("falcon assembler: a multi-packet transfer carries status bytes at eve
 	CHECK(assembler.counters().malformed_frames == 0);
 }
 
-TEST_CASE("falcon assembler: garbage before, between and inside frames is skipped; resync on the next '<'") {
+TEST_CASE("falcon assembler: garbage before, between and inside frames is skipped - resync on the next '<'") {
 	std::vector<uint8_t> payload = { 0x00, 0xFF, 0x3E, 0x12 }; // Noise, a stray '>'.
 	const std::vector<uint8_t> good1 = reply_bytes(11, 12, 13);
 	payload.insert(payload.end(), good1.begin(), good1.end());

@@ -257,7 +257,7 @@ TEST_CASE("falcon device: close() leaves zero torques as the last command on the
 			std::vector<uint8_t>{ 0x3C, 0x41, 0x41, 0x41, 0x41, 0x41, 0x41, 0x41, 0x41, 0x41, 0x41, 0x41, 0x41, 0x44, 0x41, 0x3E });
 }
 
-TEST_CASE("falcon device: unplugged -> DISCONNECTED with the USB error; replugged -> reopens, re-flashing") {
+TEST_CASE("falcon device: unplugged -> DISCONNECTED with the USB error - replugged -> reopens, re-flashing") {
 	auto model = homed_model();
 	std::unique_ptr<FalconDevice> device = make_scripted_device(model);
 	REQUIRE(device->open());

@@ -7,6 +7,8 @@
 #include "devices/falcon/falcon_ftdi.h"
 #include "devices/falcon/scripted_falcon.h"
 
+#include "scratch_dir.h"
+
 #include <doctest/doctest.h>
 
 #include <cstdio>
@@ -61,16 +63,13 @@ std::vector<Control> full_sequence() {
 	return all;
 }
 
+// A file holding p_bytes in a folder of its own (scratch_dir.h).
 struct TempFile {
-	std::filesystem::path path;
+	testing::ScratchDir dir{ "haptics-falcon-fw" };
+	std::filesystem::path path = dir / "firmware.bin";
 	explicit TempFile(const std::vector<uint8_t> &p_bytes) {
-		path = std::filesystem::temp_directory_path() / ("haptics-falcon-fw-" + std::to_string(::getpid()) + ".bin");
 		std::ofstream out(path, std::ios::binary);
 		out.write(reinterpret_cast<const char *>(p_bytes.data()), static_cast<std::streamsize>(p_bytes.size()));
-	}
-	~TempFile() {
-		std::error_code ignored;
-		std::filesystem::remove(path, ignored);
 	}
 };
 
@@ -120,7 +119,7 @@ TEST_CASE("falcon firmware: the 7-byte 'Apple' handshake reply is accepted too")
 	CHECK(reads[0].bytes == std::vector<uint8_t>{ 0x31, 0x60, 0x00, 0x0A, 0x44, 0x2C, 0x0D });
 }
 
-TEST_CASE("falcon firmware: wrong handshake replies are retried; 100 tries then a clear error") {
+TEST_CASE("falcon firmware: wrong handshake replies are retried - 100 tries then a clear error") {
 	ScriptedFalconOptions options;
 	options.handshake_failures = 5;
 	{

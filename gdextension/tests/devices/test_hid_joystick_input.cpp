@@ -45,7 +45,7 @@ TEST_CASE("hid joystick input: AJ's stick report decoded to the byte") {
 	CHECK_FALSE(decode_joystick_input(layout, std::span<const uint8_t>(), sample));
 }
 
-TEST_CASE("hid joystick input: ranges normalise about their centre; a wheel has X only") {
+TEST_CASE("hid joystick input: ranges normalise about their centre - a wheel has X only") {
 	Field field;
 	field.logical_min = 0;
 	field.logical_max = 1023;

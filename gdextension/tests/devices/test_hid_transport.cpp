@@ -8,6 +8,8 @@
 #include "devices/pid/aj_descriptor.h"
 #include "devices/pid/pid_backend.h"
 
+#include "scratch_dir.h"
+
 #include <doctest/doctest.h>
 
 #include <filesystem>
@@ -23,11 +25,10 @@ namespace {
 // A throwaway /sys: class/hidraw/hidraw7/device -> devices/.../0003:2341:8036.0001 holding a
 // report_descriptor and input/input12/capabilities/ff.
 struct FakeSysfs {
-	fs::path root;
+	testing::ScratchDir dir{ "haptics-sysfs" };
+	fs::path root = dir.root();
 
 	FakeSysfs() {
-		root = fs::temp_directory_path() / ("haptics-sysfs-" + std::to_string(getpid()));
-		fs::remove_all(root);
 		const fs::path device = root / "devices/pci0000:00/usb1/1-1/1-1:1.0/0003:2341:8036.0001";
 		fs::create_directories(device / "input/input12/capabilities");
 		fs::create_directories(root / "class/hidraw/hidraw7");
@@ -36,10 +37,6 @@ struct FakeSysfs {
 		std::ofstream(device / "report_descriptor", std::ios::binary)
 				.write(reinterpret_cast<const char *>(descriptor.data()), static_cast<std::streamsize>(descriptor.size()));
 		set_ff("0");
-	}
-	~FakeSysfs() {
-		std::error_code error;
-		fs::remove_all(root, error);
 	}
 	void set_ff(const char *p_bitmap) {
 		std::ofstream(root / "class/hidraw/hidraw7/device/input/input12/capabilities/ff") << p_bitmap << "\n";

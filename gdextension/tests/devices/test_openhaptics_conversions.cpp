@@ -68,7 +68,7 @@ TEST_CASE("openhaptics: a workspace box that is not a box is refused, naming the
 	CHECK_FALSE(workspace_from_hd_box(flat, workspace));
 }
 
-TEST_CASE("openhaptics: positions in mm become metres from the workspace centre; velocities mm/s -> m/s") {
+TEST_CASE("openhaptics: positions in mm become metres from the workspace centre - velocities mm/s -> m/s") {
 	const double position_mm[3] = { 30.0, -10.0, 50.0 };
 	const Vec3 position = position_from_hd(position_mm, Vec3{ 0.0, 0.010, 0.010 });
 	CHECK(position.x == doctest::Approx(0.030));
@@ -81,7 +81,7 @@ TEST_CASE("openhaptics: positions in mm become metres from the workspace centre;
 	CHECK(velocity.z == doctest::Approx(0.3));
 }
 
-TEST_CASE("openhaptics: the column-major transform's rotation becomes the quaternion; translation ignored") {
+TEST_CASE("openhaptics: the column-major transform's rotation becomes the quaternion - translation ignored") {
 	double m[16];
 	transform_from_quaternion(Orientation{}, Vec3{ 5, 6, 7 }, m);
 	const Orientation identity = orientation_from_hd_transform(m);

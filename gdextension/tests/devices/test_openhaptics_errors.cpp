@@ -248,7 +248,7 @@ TEST_CASE("openhaptics: a device needing the inkwell is open but not ready, then
 	CHECK(fake.misuse_count() == 0);
 }
 
-TEST_CASE("openhaptics: calibrate() runs hdUpdateCalibration on HD's thread; NEEDS_UPDATE at open is updated") {
+TEST_CASE("openhaptics: calibrate() runs hdUpdateCalibration on HD's thread - NEEDS_UPDATE at open is updated") {
 	FakeHd &fake = fresh_fake_hd();
 	fake.set_integer(HD_CALIBRATION_STYLE, HD_CALIBRATION_ENCODER_RESET | HD_CALIBRATION_AUTO);
 	fake.set_calibration(HD_CALIBRATION_NEEDS_UPDATE);

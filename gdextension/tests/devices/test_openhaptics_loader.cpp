@@ -7,6 +7,8 @@
 #include "devices/openhaptics/openhaptics_backend.h"
 #include "openhaptics_fake.h"
 
+#include "scratch_dir.h"
+
 #include <doctest/doctest.h>
 
 #include <cstdio>
@@ -82,14 +84,14 @@ TEST_CASE("openhaptics: a missing runtime library is a clean NO_DEVICE, never a 
 }
 
 TEST_CASE("openhaptics: a file that is there but not a library is reported as broken, not missing") {
-	const std::filesystem::path path = std::filesystem::temp_directory_path() / "haptics-test-not-a-library.so";
+	const testing::ScratchDir dir("haptics-openhaptics");
+	const std::filesystem::path path = dir / "not-a-library.so";
 	{
 		std::ofstream file(path);
 		file << "not an ELF file\n";
 	}
 	HdLibrary library;
 	const Status status = library.load(path.c_str());
-	std::filesystem::remove(path);
 	CHECK(status.code() == StatusCode::DEVICE_ERROR);
 	CHECK(contains(status.message(), path.c_str()));
 	CHECK_FALSE(library.is_loaded());

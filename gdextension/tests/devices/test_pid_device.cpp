@@ -54,7 +54,7 @@ Vec3 firmware_force_n(const ScriptedPidJoystick &p_joystick, double p_max_force_
 
 } // namespace
 
-TEST_CASE("pid device: opening an AJ stick sends the init sequence, creates and starts the effect; close frees it") {
+TEST_CASE("pid device: opening an AJ stick sends the init sequence, creates and starts the effect - close frees it") {
 	auto joystick = std::make_shared<ScriptedPidJoystick>(ScriptedFirmware::AJ);
 	std::unique_ptr<HapticDevice> device = make_scripted_device(joystick);
 	REQUIRE(device->open().ok());
@@ -173,7 +173,7 @@ TEST_CASE("pid device: a wheel (no Y axis) is 1-DOF and renders only the x compo
 	device->close();
 }
 
-TEST_CASE("pid device: a steady force puts nothing on the wire; the periodic restart does") {
+TEST_CASE("pid device: a steady force puts nothing on the wire - the periodic restart does") {
 	auto joystick = std::make_shared<ScriptedPidJoystick>(ScriptedFirmware::AJ);
 	PidDeviceConfig config;
 	config.restart_interval_s = 0.1;
@@ -194,7 +194,7 @@ TEST_CASE("pid device: a steady force puts nothing on the wire; the periodic res
 	device->close();
 }
 
-TEST_CASE("pid device: unplugging stops the I/O with DISCONNECTED and a reason; replug and reopen works") {
+TEST_CASE("pid device: unplugging stops the I/O with DISCONNECTED and a reason - replug and reopen works") {
 	auto joystick = std::make_shared<ScriptedPidJoystick>(ScriptedFirmware::AJ);
 	std::unique_ptr<HapticDevice> device = make_scripted_device(joystick);
 	REQUIRE(device->open().ok());

@@ -45,7 +45,7 @@ func finish_session() -> void:
 	)
 	_runner.phase = StudyRunner.Phase.DONE
 	if _runner.quit_when_done:
-		get_tree().quit(0)
+		CleanExit.quit(0)
 
 
 func _on_ratings_submitted(ratings: Dictionary) -> void:

@@ -310,7 +310,7 @@ func fatal(error: String) -> void:
 ## Leaves the study: quits when the scene runs on its own, else emits [signal closed].
 func leave() -> void:
 	if is_standalone():
-		get_tree().quit(0)
+		CleanExit.quit(0)
 	else:
 		closed.emit()
 
