@@ -56,7 +56,7 @@ func _ready() -> void:
 		setup.show_offline(OFFLINE_TEXT if not Haptics.is_available() else OLD_EXTENSION_TEXT)
 		if quit_when_over:
 			print(setup.get_message())
-			get_tree().quit(1)
+			CleanExit.quit(1)
 		return
 	if skip_setup:
 		start_match(mode, beginner)
@@ -123,7 +123,7 @@ func _is_own_scene() -> bool:
 
 func _leave() -> void:
 	if _is_own_scene():
-		get_tree().quit(0)
+		CleanExit.quit(0)
 	else:
 		menu_requested.emit()
 
@@ -166,6 +166,6 @@ func _on_match_over(winner: int) -> void:
 				]
 			)
 		)
-		get_tree().quit(0)
+		CleanExit.quit(0)
 		return
 	winner_screen.show_winner(player_name(winner), health)
