@@ -2,7 +2,9 @@
 # Provisions a project-local Godot 4 engine (plus export templates and Mesa) from Debian's
 # `testing` suite, falling back to `unstable`, using a private apt state so that the
 # system's apt configuration is never read or written. Idempotent: a finished root is
-# marked by a stamp file and reused at no cost.
+# marked by a stamp file and reused at no cost. Each package's file list is kept in
+# files/<package>.list (the export's runtime bundle names the packages it ships, and their
+# licences, from it).
 #
 # Usage: tools/provision-engine.sh [ROOT]      (default: .engine in the project)
 # Prints the provisioned version on its last line.
@@ -18,7 +20,7 @@ stamp="$engine_dir/.provisioned"
 packages=(godot godot-template-debug godot-template-release
   libgl1-mesa-dri libegl-mesa0 libglx-mesa0 libgl1 libegl1 libgles2 libglx0)
 
-if [[ -f "$stamp" && -x "$root/usr/bin/godot" ]]; then
+if [[ -f "$stamp" && -x "$root/usr/bin/godot" && -d "$engine_dir/files" ]]; then
   cat "$stamp"
   exit 0
 fi
@@ -45,7 +47,7 @@ mirror=${mirror:-http://deb.debian.org/debian}
 
 start=$(date +%s%N)
 apt_state="$engine_dir/apt"
-rm -rf "$apt_state" "$root"
+rm -rf "$apt_state" "$root" "$engine_dir/files" "$engine_dir/files.partial"
 mkdir -p "$apt_state/lists/partial" "$apt_state/cache/archives/partial" "$apt_state/etc" "$root"
 : >"$apt_state/status"
 
@@ -83,7 +85,14 @@ fi
 
 debs=("$apt_state/cache/archives"/*.deb)
 echo "provision-engine: unpacking ${#debs[@]} packages into $root"
-for deb in "${debs[@]}"; do dpkg-deb -x "$deb" "$root"; done
+mkdir -p "$engine_dir/files.partial"
+for deb in "${debs[@]}"; do
+  dpkg-deb -x "$deb" "$root"
+  # One path a line, absolute (symlinks without their target).
+  dpkg-deb -c "$deb" | sed -E 's,^([^ ]+ +){5}\.,,; s, -> .*$,,' \
+    >"$engine_dir/files.partial/$(dpkg-deb -f "$deb" Package).list"
+done
+mv "$engine_dir/files.partial" "$engine_dir/files"
 rm -rf "$apt_state/cache/archives"
 
 [[ -x "$root/usr/bin/godot" ]] || die "the unpacked root has no usr/bin/godot"
