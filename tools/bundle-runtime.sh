@@ -25,8 +25,8 @@ root=""
 libpath=""
 loader=/lib64/ld-linux-x86-64.so.2
 if [[ $(tools/godot --which) == *"project-local engine"* ]]; then
-  # Engines provisioned before the package file lists were kept are provisioned again.
-  [[ -d .engine/files ]] || tools/provision-engine.sh .engine >&2
+  # Engines provisioned before the package file lists were kept get them now.
+  [[ -d .engine/files ]] || tools/provision-engine.sh --file-lists .engine >&2
   root=$(realpath .engine/root)
   loader=$root/usr/lib64/ld-linux-x86-64.so.2
   [[ -e $loader ]] || loader=$root/lib64/ld-linux-x86-64.so.2

@@ -7,10 +7,15 @@
 # licences, from it).
 #
 # Usage: tools/provision-engine.sh [ROOT]      (default: .engine in the project)
-# Prints the provisioned version on its last line.
+#        tools/provision-engine.sh --file-lists [ROOT]
+# Prints the provisioned version on its last line. --file-lists only writes the file lists of
+# an engine provisioned before they were kept, downloading its packages again (at the
+# versions of its saved package index); the engine itself is left as it is.
 set -euo pipefail
 
 project=$(cd "$(dirname "$0")/.." && pwd)
+file_lists_only=false
+[[ ${1:-} == --file-lists ]] && { file_lists_only=true; shift; }
 engine_dir=${1:-"$project/.engine"}
 root="$engine_dir/root"
 stamp="$engine_dir/.provisioned"
@@ -20,7 +25,7 @@ stamp="$engine_dir/.provisioned"
 packages=(godot godot-template-debug godot-template-release
   libgl1-mesa-dri libegl-mesa0 libglx-mesa0 libgl1 libegl1 libgles2 libglx0)
 
-if [[ -f "$stamp" && -x "$root/usr/bin/godot" && -d "$engine_dir/files" ]]; then
+if [[ $file_lists_only == false && -f "$stamp" && -x "$root/usr/bin/godot" ]]; then
   cat "$stamp"
   exit 0
 fi
@@ -45,23 +50,17 @@ mirror=$(cat /etc/apt/sources.list /etc/apt/sources.list.d/*.list \
   | head -n 1 || true)
 mirror=${mirror:-http://deb.debian.org/debian}
 
-start=$(date +%s%N)
 apt_state="$engine_dir/apt"
-rm -rf "$apt_state" "$root" "$engine_dir/files" "$engine_dir/files.partial"
-mkdir -p "$apt_state/lists/partial" "$apt_state/cache/archives/partial" "$apt_state/etc" "$root"
-: >"$apt_state/status"
-
-fetch() {
-  local suite=$1
-  echo "deb [signed-by=$keyring] $mirror $suite main" >"$apt_state/etc/sources.list"
-  local opts=(
+apt_opts() {
+  local cache=$1
+  opts=(
     -o "Dir::Etc::SourceList=$apt_state/etc/sources.list"
     -o "Dir::Etc::SourceParts=/dev/null"
     -o "Dir::Etc::Preferences=/dev/null"
     -o "Dir::Etc::PreferencesParts=/dev/null"
     -o "Dir::State::Lists=$apt_state/lists"
     -o "Dir::State::status=$apt_state/status"
-    -o "Dir::Cache=$apt_state/cache"
+    -o "Dir::Cache=$cache"
     -o "APT::Architecture=amd64"
     -o "APT::Architectures::=amd64"
     -o "APT::Get::List-Cleanup=0"
@@ -69,6 +68,45 @@ fetch() {
   )
   # Root would otherwise hand downloads to the _apt user, who cannot write our folders.
   [[ $(id -u) -eq 0 ]] && opts+=(-o "APT::Sandbox::User=root")
+  return 0
+}
+
+# Writes DIR/<package>.list for each .deb given: one absolute path a line (symlinks without
+# their target).
+write_file_lists() {
+  local dir=$1 deb
+  shift
+  mkdir -p "$dir"
+  for deb in "$@"; do
+    dpkg-deb -c "$deb" | sed -E 's,^([^ ]+ +){5}\.,,; s, -> .*$,,' \
+      >"$dir/$(dpkg-deb -f "$deb" Package).list"
+  done
+}
+
+if [[ $file_lists_only == true ]]; then
+  [[ -f $stamp && -d $apt_state/lists ]] || die "$engine_dir holds no provisioned engine"
+  cache=$(mktemp -d)
+  trap 'rm -rf "$cache"' EXIT
+  mkdir -p "$cache/archives/partial"
+  apt_opts "$cache"
+  echo "provision-engine: downloading the engine's packages again for their file lists" >&2
+  apt-get "${opts[@]}" -qq -y --download-only --no-install-recommends install "${packages[@]}" \
+    >/dev/null || die "the engine's packages could not be downloaded again"
+  rm -rf "$engine_dir/files.partial"
+  write_file_lists "$engine_dir/files.partial" "$cache/archives"/*.deb
+  mv "$engine_dir/files.partial" "$engine_dir/files"
+  exit 0
+fi
+
+start=$(date +%s%N)
+rm -rf "$apt_state" "$root" "$engine_dir/files" "$engine_dir/files.partial"
+mkdir -p "$apt_state/lists/partial" "$apt_state/cache/archives/partial" "$apt_state/etc" "$root"
+: >"$apt_state/status"
+
+fetch() {
+  local suite=$1
+  echo "deb [signed-by=$keyring] $mirror $suite main" >"$apt_state/etc/sources.list"
+  apt_opts "$apt_state/cache"
   echo "provision-engine: resolving ${packages[*]} from Debian '$suite' ($mirror)"
   apt-get "${opts[@]}" -qq update &&
     apt-get "${opts[@]}" -qq -y --download-only --no-install-recommends install "${packages[@]}" \
@@ -85,13 +123,8 @@ fi
 
 debs=("$apt_state/cache/archives"/*.deb)
 echo "provision-engine: unpacking ${#debs[@]} packages into $root"
-mkdir -p "$engine_dir/files.partial"
-for deb in "${debs[@]}"; do
-  dpkg-deb -x "$deb" "$root"
-  # One path a line, absolute (symlinks without their target).
-  dpkg-deb -c "$deb" | sed -E 's,^([^ ]+ +){5}\.,,; s, -> .*$,,' \
-    >"$engine_dir/files.partial/$(dpkg-deb -f "$deb" Package).list"
-done
+for deb in "${debs[@]}"; do dpkg-deb -x "$deb" "$root"; done
+write_file_lists "$engine_dir/files.partial" "${debs[@]}"
 mv "$engine_dir/files.partial" "$engine_dir/files"
 rm -rf "$apt_state/cache/archives"
 
