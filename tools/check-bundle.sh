@@ -25,7 +25,7 @@ for elf in "${elves[@]}"; do
     [[ -e $lib/$needed || $needed == ld-linux-x86-64.so.2 || $needed == libgbm.so.1 ]] ||
       fail "$(basename "$elf") needs $needed, which is not shipped"
   done
-  needs_glibc+=($(readelf -V "$elf" | grep -oE "Name: GLIBC_[0-9.]+" | cut -d' ' -f2 | sort -uV | tail -n 1))
+  needs_glibc+=($(readelf -V "$elf" | grep -oE "Name: GLIBC_[0-9.]+" | cut -d' ' -f2 || true))
 done
 max_needed=$(printf '%s\n' "${needs_glibc[@]}" | sort -uV | tail -n 1)
 shipped=$(readelf -V "$lib/libc.so.6" | grep -oE "Name: GLIBC_[0-9.]+" | cut -d' ' -f2 | sort -uV | tail -n 1)

@@ -16,7 +16,8 @@ set -euo pipefail
 project=$(cd "$(dirname "$0")/.." && pwd)
 file_lists_only=false
 [[ ${1:-} == --file-lists ]] && { file_lists_only=true; shift; }
-engine_dir=${1:-"$project/.engine"}
+# Absolute: apt reads relative paths in its options as relative to /.
+engine_dir=$(realpath -m "${1:-"$project/.engine"}")
 root="$engine_dir/root"
 stamp="$engine_dir/.provisioned"
 
