@@ -23,8 +23,8 @@ tools/godot --headless --path . -s tools/dist/controls.gd >"$stage/controls.log"
   { tail -n 20 "$stage/controls.log"; die "the controls could not be read from the input map"; }
 controls=$(sed -n '/^### /,$p' "$stage/controls.log")
 devices=$(sed -n '/^| Device | Driver |/,/^$/p' README.md)
-udev=$(sed -n '/^\*\*Permissions\.\*\*/,/^```$/p' README.md | sed -n '/^```$/,$p' |
-  sed 's,tools/udev/,,')
+udev=$(awk '/^\*\*Permissions\.\*\*/ { on = 1 } on && /^```/ { print; if (++fences == 2) exit; next }
+  fences == 1 { print }' README.md | sed 's,tools/udev/,,')
 priority=$(sed -nE 's/.*int32_t priority = ([0-9]+); \/\/ SCHED_FIFO.*/\1/p' gdextension/src/core/realtime.h)
 glibc=$(readelf -V "$build/runtime/lib/libc.so.6" | grep -oE "GLIBC_[0-9.]+" | sort -uV | tail -n 1)
 [[ -n $controls && -n $devices && $udev == *70-haptics.rules* && -n $priority && -n $glibc ]] ||
