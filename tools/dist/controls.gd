@@ -8,7 +8,10 @@ const TABLES: Array[Array] = [
 	[
 		"Side-scroller and maze study (the simulated stylus; a force-feedback device replaces it)",
 		[
-			["move the hand left / right / up / down", [&"move_left", &"move_right", &"move_up", &"move_down"]],
+			[
+				"move the hand left / right / up / down",
+				[&"move_left", &"move_right", &"move_up", &"move_down"]
+			],
 			["pause menu", [&"pause"]],
 		],
 	],
@@ -19,7 +22,10 @@ const TABLES: Array[Array] = [
 			["paddle in depth (push / pull)", [&"paddle_push", &"paddle_pull"]],
 			["turn the paddle (yaw)", [&"paddle_yaw_left", &"paddle_yaw_right"]],
 			["tilt the paddle", [&"paddle_tilt_up", &"paddle_tilt_down"]],
-			["spin paddle / gun / fire / mine", [&"spin_toggle", &"gun_toggle", &"fire", &"place_mine"]],
+			[
+				"spin paddle / gun / fire / mine",
+				[&"spin_toggle", &"gun_toggle", &"fire", &"place_mine"]
+			],
 			["pause", [&"pause"]],
 		],
 	],
@@ -73,7 +79,9 @@ func _names(p_action: StringName, p_gamepad: bool) -> String:
 			continue
 		var key: InputEventKey = event as InputEventKey
 		if key != null:
-			var code: Key = key.physical_keycode if key.physical_keycode != KEY_NONE else key.keycode
+			var code: Key = (
+				key.physical_keycode if key.physical_keycode != KEY_NONE else key.keycode
+			)
 			names.append(OS.get_keycode_string(code))
 		elif is_pad:
 			# "Joypad Button 0 (Bottom Action, Sony Cross, ...)": the first name that is
