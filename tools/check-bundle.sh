@@ -45,7 +45,8 @@ echo "check-bundle: ${#elves[@]} ELF files, every needed library shipped, no RPA
   "newest C library version needed $max_needed, shipped $shipped (Linux $kernel or newer)"
 
 # libgbm comes from the system's Mesa: the functions the bundle calls must be there.
-system_gbm=$(/sbin/ldconfig -p 2>/dev/null | awk '$1 == "libgbm.so.1" && /x86-64/ {print $NF; exit}')
+# (awk reads to the end: an early exit would kill ldconfig with SIGPIPE, failing the pipe.)
+system_gbm=$(/sbin/ldconfig -p | awk '$1 == "libgbm.so.1" && /x86-64/ && !seen++ {print $NF}')
 if [[ -n $system_gbm ]]; then
   wanted=$(for elf in "${elves[@]}"; do nm -D --undefined-only "$elf" 2>/dev/null; done |
     awk '$2 ~ /^gbm_/ {print $2}' | sort -u)
