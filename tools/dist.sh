@@ -41,6 +41,6 @@ controls=$controls devices=$devices udev=$udev priority=$priority glibc=${glibc#
 mkdir -p "$(dirname "$archive")"
 tar -C "$stage" -czf "$archive.partial" haptic-game
 mv "$archive.partial" "$archive"
-echo "dist: $archive: $(du -b "$archive" | cut -f1) bytes ($(du -h "$archive" | cut -f1)), " \
+echo "dist: $archive: $(du -b "$archive" | cut -f1) bytes ($(du -h "$archive" | cut -f1)),"  \
   "$(du -sb "$top" | cut -f1) bytes unpacked ($(du -sh "$top" | cut -f1))," \
   "$(find "$top" -type f | wc -l) files"
