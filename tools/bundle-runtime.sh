@@ -33,7 +33,7 @@ if [[ $(tools/godot --which) == *"project-local engine"* ]]; then
   libpath=$root/usr/lib/x86_64-linux-gnu:$root/usr/lib/x86_64-linux-gnu/pulseaudio
 fi
 # Sonames of the GPU driver's interface, taken from the system (tools/dist/README.player.md).
-gpu_driver='^lib(GL|GLX|GLX_[a-z]+|GLdispatch|EGL|EGL_[a-z]+|GLESv[12].*|OpenGL|gbm|vulkan|glapi)\.so'
+gpu_driver=$(<tools/dist/gpu-driver-sonames.regex)
 
 runtime=$dir/runtime
 rm -rf "$runtime" "$dir/licenses" "$dir/$name"

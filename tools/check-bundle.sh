@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Static checks of a self-contained Linux build (tools/bundle-runtime.sh), without running it:
 #  - every library any shipped ELF file needs is shipped, except the GPU driver's interface
-#    (libgbm, which Debian's SDL links), and no file carries a DT_RPATH (searched before the
+#    (tools/dist/gpu-driver-sonames.regex: libgbm, which Debian's SDL links), and no file carries a DT_RPATH (searched before the
 #    loader's --library-path; a DT_RUNPATH is searched after it and so cannot leave the bundle);
 #  - the C library symbol versions the shipped files require, against the shipped C library
 #    and against Debian 12 (glibc 2.36) and Ubuntu 22.04 (2.35), and the kernel it needs;
@@ -16,13 +16,15 @@ fail() { echo "check-bundle: FAIL: $*" >&2; exit 1; }
 [[ -x $dir/haptic-game && -x $runtime/haptic-game.loader && -f $lib/libc.so.6 ]] ||
   fail "$dir is not a self-contained build (launcher, runtime/haptic-game.loader, runtime/lib/libc.so.6)"
 
+# The GPU driver's interface, which the bundle leaves to the system.
+gpu_driver=$(<"$(dirname "$0")/dist/gpu-driver-sonames.regex")
 elves=("$runtime/haptic-game.x86_64" "$runtime"/libhaptics.*.so "$lib"/*)
 needs_glibc=()
 for elf in "${elves[@]}"; do
   dynamic=$(readelf -d "$elf")
   grep -q "(RPATH)" <<<"$dynamic" && fail "$(basename "$elf") has a DT_RPATH"
   for needed in $(sed -nE 's/.*\(NEEDED\).*\[(.*)\]/\1/p' <<<"$dynamic"); do
-    [[ -e $lib/$needed || $needed == ld-linux-x86-64.so.2 || $needed == libgbm.so.1 ]] ||
+    [[ -e $lib/$needed || $needed == ld-linux-x86-64.so.2 || $needed =~ $gpu_driver ]] ||
       fail "$(basename "$elf") needs $needed, which is not shipped"
   done
   needs_glibc+=($(readelf -V "$elf" | grep -oE "Name: GLIBC_[0-9.]+" | cut -d' ' -f2 || true))

@@ -35,8 +35,8 @@ fail() {
   exit 1
 }
 tools/check-bundle.sh "$game" || fail "the bundle's static checks"
-# Sonames of the system's GPU driver interface (kept in step with tools/bundle-runtime.sh).
-gpu_driver='^lib(GL|GLX|GLX_[a-z]+|GLdispatch|EGL|EGL_[a-z]+|GLESv[12].*|OpenGL|gbm|vulkan|glapi)\.so'
+# Sonames of the GPU driver's interface, which the bundle leaves to the system.
+gpu_driver=$(<tools/dist/gpu-driver-sonames.regex)
 
 # A command run_game's environment goes through first (none: the machine as it is).
 wrap=()
