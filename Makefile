@@ -24,7 +24,7 @@ BENCH_SECONDS ?= 10
 SOAK_SECONDS ?= 600
 
 .PHONY: play test deps engine build build-release import test-native test-godot lint pong-demo \
-	export test-export test-windowed test-net bench soak sanitize analyze export-study test-analysis clean distclean
+	export test-export dist test-dist test-windowed test-net bench soak sanitize analyze export-study test-analysis clean distclean
 
 ## deps: install missing OS packages (apt-get; sudo when not root)
 deps:
@@ -70,7 +70,7 @@ pong-demo: import
 	@$(GODOT) --headless --path . -- --pong-demo $(ARGS)
 
 ## test: every suite; any failure fails the target
-test: import test-native test-godot lint test-analysis test-net test-export test-windowed
+test: import test-native test-godot lint test-analysis test-net test-export test-dist test-windowed
 	@echo "make test: all suites passed"
 
 ## test-native: the C++ doctest suite through CTest
@@ -96,13 +96,25 @@ lint: deps
 		sort | xargs clang-format --dry-run -Werror
 	@echo "clang-format: the C++ is formatted"
 
-## export: a Linux x86_64 release build of the game in .export/linux/
+## export: a self-contained Linux x86_64 release build in .export/linux/: ./haptic-game starts
+## it with the C library and libraries shipped in runtime/ (tools/bundle-runtime.sh)
 export: import build-release
 	@tools/export.sh
 
-## test-export: export, then start the exported game headless and check it exits cleanly
+## test-export: export, then run a copy outside the project with an emptied environment,
+## headless and windowed (Xvfb): exit 0, extension loaded, every library from the bundle
+## except the system's GPU driver (tools/test-export.sh)
 test-export: export
 	@tools/test-export.sh
+
+## dist: .export/haptic-game-linux-x86_64.tar.gz: the self-contained build, a player README
+## (controls, devices, permissions) and the udev rules; prints its size (tools/dist.sh)
+dist: export
+	@tools/dist.sh
+
+## test-dist: make dist, then unpack the archive and check its contents (tools/test-dist.sh)
+test-dist: dist
+	@tools/test-dist.sh
 
 ## bench: servo loop vs naive loop, the force model's and the proxy's tick cost, each device
 ## backend's tick cost and protocol rate against its scripted transport, the game's

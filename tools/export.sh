@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Exports the Linux x86_64 release build to .export/linux/. With the project-local engine,
+# Exports the Linux x86_64 release build to .export/linux/ and makes it self-contained
+# (tools/bundle-runtime.sh: run it as .export/linux/haptic-game). With the project-local engine,
 # its Debian export templates are installed into the project's hermetic XDG data folder
 # first; with your own engine, install the matching official templates yourself.
 set -euo pipefail
@@ -36,4 +37,4 @@ mkdir -p .export/linux
 tools/godot --headless --path . --export-release Linux .export/linux/haptic-game.x86_64 \
   >.build/export.log 2>&1 || { tail -n 30 .build/export.log; exit 1; }
 [[ -x .export/linux/haptic-game.x86_64 ]] || { tail -n 30 .build/export.log; exit 1; }
-ls .export/linux
+tools/bundle-runtime.sh .export/linux

@@ -2,14 +2,22 @@
 # Provisions a project-local Godot 4 engine (plus export templates and Mesa) from Debian's
 # `testing` suite, falling back to `unstable`, using a private apt state so that the
 # system's apt configuration is never read or written. Idempotent: a finished root is
-# marked by a stamp file and reused at no cost.
+# marked by a stamp file and reused at no cost. Each package's file list is kept in
+# files/<package>.list (the export's runtime bundle names the packages it ships, and their
+# licences, from it).
 #
 # Usage: tools/provision-engine.sh [ROOT]      (default: .engine in the project)
-# Prints the provisioned version on its last line.
+#        tools/provision-engine.sh --file-lists [ROOT]
+# Prints the provisioned version on its last line. --file-lists only writes the file lists of
+# an engine provisioned before they were kept, downloading its packages again (at the
+# versions of its saved package index); the engine itself is left as it is.
 set -euo pipefail
 
 project=$(cd "$(dirname "$0")/.." && pwd)
-engine_dir=${1:-"$project/.engine"}
+file_lists_only=false
+[[ ${1:-} == --file-lists ]] && { file_lists_only=true; shift; }
+# Absolute: apt reads relative paths in its options as relative to /.
+engine_dir=$(realpath -m "${1:-"$project/.engine"}")
 root="$engine_dir/root"
 stamp="$engine_dir/.provisioned"
 
@@ -18,7 +26,7 @@ stamp="$engine_dir/.provisioned"
 packages=(godot godot-template-debug godot-template-release
   libgl1-mesa-dri libegl-mesa0 libglx-mesa0 libgl1 libegl1 libgles2 libglx0)
 
-if [[ -f "$stamp" && -x "$root/usr/bin/godot" ]]; then
+if [[ $file_lists_only == false && -f "$stamp" && -x "$root/usr/bin/godot" ]]; then
   cat "$stamp"
   exit 0
 fi
@@ -43,23 +51,17 @@ mirror=$(cat /etc/apt/sources.list /etc/apt/sources.list.d/*.list \
   | head -n 1 || true)
 mirror=${mirror:-http://deb.debian.org/debian}
 
-start=$(date +%s%N)
 apt_state="$engine_dir/apt"
-rm -rf "$apt_state" "$root"
-mkdir -p "$apt_state/lists/partial" "$apt_state/cache/archives/partial" "$apt_state/etc" "$root"
-: >"$apt_state/status"
-
-fetch() {
-  local suite=$1
-  echo "deb [signed-by=$keyring] $mirror $suite main" >"$apt_state/etc/sources.list"
-  local opts=(
+apt_opts() {
+  local cache=$1
+  opts=(
     -o "Dir::Etc::SourceList=$apt_state/etc/sources.list"
     -o "Dir::Etc::SourceParts=/dev/null"
     -o "Dir::Etc::Preferences=/dev/null"
     -o "Dir::Etc::PreferencesParts=/dev/null"
     -o "Dir::State::Lists=$apt_state/lists"
     -o "Dir::State::status=$apt_state/status"
-    -o "Dir::Cache=$apt_state/cache"
+    -o "Dir::Cache=$cache"
     -o "APT::Architecture=amd64"
     -o "APT::Architectures::=amd64"
     -o "APT::Get::List-Cleanup=0"
@@ -67,6 +69,45 @@ fetch() {
   )
   # Root would otherwise hand downloads to the _apt user, who cannot write our folders.
   [[ $(id -u) -eq 0 ]] && opts+=(-o "APT::Sandbox::User=root")
+  return 0
+}
+
+# Writes DIR/<package>.list for each .deb given: one absolute path a line (symlinks without
+# their target).
+write_file_lists() {
+  local dir=$1 deb
+  shift
+  mkdir -p "$dir"
+  for deb in "$@"; do
+    dpkg-deb -c "$deb" | sed -E 's,^([^ ]+ +){5}\.,,; s, -> .*$,,' \
+      >"$dir/$(dpkg-deb -f "$deb" Package).list"
+  done
+}
+
+if [[ $file_lists_only == true ]]; then
+  [[ -f $stamp && -d $apt_state/lists ]] || die "$engine_dir holds no provisioned engine"
+  cache=$(mktemp -d)
+  trap 'rm -rf "$cache"' EXIT
+  mkdir -p "$cache/archives/partial"
+  apt_opts "$cache"
+  echo "provision-engine: downloading the engine's packages again for their file lists" >&2
+  apt-get "${opts[@]}" -qq -y --download-only --no-install-recommends install "${packages[@]}" \
+    >/dev/null || die "the engine's packages could not be downloaded again"
+  rm -rf "$engine_dir/files.partial"
+  write_file_lists "$engine_dir/files.partial" "$cache/archives"/*.deb
+  mv "$engine_dir/files.partial" "$engine_dir/files"
+  exit 0
+fi
+
+start=$(date +%s%N)
+rm -rf "$apt_state" "$root" "$engine_dir/files" "$engine_dir/files.partial"
+mkdir -p "$apt_state/lists/partial" "$apt_state/cache/archives/partial" "$apt_state/etc" "$root"
+: >"$apt_state/status"
+
+fetch() {
+  local suite=$1
+  echo "deb [signed-by=$keyring] $mirror $suite main" >"$apt_state/etc/sources.list"
+  apt_opts "$apt_state/cache"
   echo "provision-engine: resolving ${packages[*]} from Debian '$suite' ($mirror)"
   apt-get "${opts[@]}" -qq update &&
     apt-get "${opts[@]}" -qq -y --download-only --no-install-recommends install "${packages[@]}" \
@@ -84,6 +125,8 @@ fi
 debs=("$apt_state/cache/archives"/*.deb)
 echo "provision-engine: unpacking ${#debs[@]} packages into $root"
 for deb in "${debs[@]}"; do dpkg-deb -x "$deb" "$root"; done
+write_file_lists "$engine_dir/files.partial" "${debs[@]}"
+mv "$engine_dir/files.partial" "$engine_dir/files"
 rm -rf "$apt_state/cache/archives"
 
 [[ -x "$root/usr/bin/godot" ]] || die "the unpacked root has no usr/bin/godot"
