@@ -11,6 +11,9 @@ extends Resource
 ## one but with a [PhysicsMaterial] feels like [method from_physics_material] of it; anything
 ## else feels like the probe's default material.
 
+## The custom data layer a TileSet's tiles name their material in.
+const TILE_LAYER := &"haptic_material"
+
 ## The largest stiffness, friction and impact gain a material takes.
 const MAX_GAIN := 100.0
 
@@ -33,10 +36,6 @@ var damping: float:
 	set(value):
 		push_warning("HapticMaterial.damping is deprecated: use friction (accepted until 0.4.0).")
 		friction = value
-
-
-## The custom data layer a TileSet's tiles name their material in.
-const TILE_LAYER := &"haptic_material"
 
 
 ## The material a body declares (property first, then metadata), or [code]null[/code].

@@ -4,26 +4,23 @@ extends Node
 ## Drop-in haptics for any 2D body: add this node as a child of a [CharacterBody2D] or
 ## [RigidBody2D] and the body's contacts are felt.
 ##
-## At every physics tick it gathers the body's contacts, one per touched shape or tile (normals
-## and each one's
-## [HapticMaterial]), dynamic bodies resting on it (mass and normal), the water volume it
-## is in, its velocity, and the speed of new contacts; converts pixels to metres; and
-## submits the frame and impact events to the haptics server. With [member drive_input] it
+## At every physics tick it gathers the body's contacts, one per touched shape or tile
+## (normals and each one's [HapticMaterial]), dynamic bodies resting on it (mass and
+## normal), the water volume it is in, its velocity, and the speed of new contacts; converts
+## pixels to metres; and submits the frame and impact events to the haptics server. With [member drive_input] it
 ## also feeds the device's input vector to the body's [code]input_vector[/code] property
 ## before the body moves (acceleration control).
 ##
 ## Water volumes are [Area2D]s with [code]drag_coefficient[/code] and
 ## [code]inertia_force[/code] properties, such as the addon's [HapticWater].
 
-## Earth's gravity, m/s², for [method pixels_per_metre_for_gravity].
-const EARTH_GRAVITY := 9.80665
-## The TileSet custom data layer (type Object) a tile's [HapticMaterial] is read from.
-const TILE_MATERIAL_LAYER := HapticMaterial.TILE_LAYER
-
 ## Emitted after each frame is submitted, with the frame as sent.
 signal frame_submitted(frame: Dictionary)
 ## Emitted when a new contact begins, with the approach speed in metres per second.
 signal impact(collider: Object, normal: Vector2, speed: float)
+
+## Earth's gravity, m/s², for [method pixels_per_metre_for_gravity].
+const EARTH_GRAVITY := 9.80665
 
 ## World scale: how many pixels make one metre.
 @export_range(1.0, 10000.0, 1.0, "suffix:px/m") var pixels_per_metre: float = 100.0
@@ -58,6 +55,7 @@ var _shape_query: PhysicsShapeQueryParameters2D = PhysicsShapeQueryParameters2D.
 var _shape: CollisionShape2D = null
 var _max_contacts: int = 0
 var _max_resting: int = 0
+var _floor_entry: Dictionary = {}
 
 
 func _ready() -> void:
@@ -153,7 +151,8 @@ func build_frame() -> Dictionary:
 		if normal.dot(Vector2.UP) > floor_normal.dot(Vector2.UP):
 			floor_normal = normal
 		if not _touching.has(key):
-			_report_impact(collision["collider"], normal, material)
+			var collider: Object = collision["collider"]
+			_report_impact(collider, normal, material)
 	_touching = now_touching
 	_sequence += 1
 	var resting: Array[Dictionary] = _resting_objects(above)
@@ -187,15 +186,23 @@ func _collisions(above: Array[Dictionary]) -> Array[Dictionary]:
 		var character: CharacterBody2D = _body
 		for i: int in character.get_slide_collision_count():
 			var collision: KinematicCollision2D = character.get_slide_collision(i)
-			out.append(
-				_entry(
-					collision.get_collider(),
-					collision.get_collider_rid(),
-					collision.get_collider_shape_index(),
-					collision.get_position(),
-					collision.get_normal()
-				)
+			var entry: Dictionary = _entry(
+				collision.get_collider(),
+				collision.get_collider_rid(),
+				collision.get_collider_shape_index(),
+				collision.get_position(),
+				collision.get_normal()
 			)
+			var floor_normal: Vector2 = character.get_floor_normal()
+			if character.is_on_floor() and collision.get_normal().is_equal_approx(floor_normal):
+				_floor_entry = entry
+			out.append(entry)
+		# Pressed into a wall, move_and_slide often reports only the wall although the body
+		# still stands: the floor it last reported stays a contact while it does.
+		if not character.is_on_floor():
+			_floor_entry = {}
+		elif not _floor_entry.is_empty() and is_instance_valid(_floor_entry["collider"]):
+			out.append(_floor_entry)
 	elif _body is RigidBody2D:
 		var state: PhysicsDirectBodyState2D = PhysicsServer2D.body_get_direct_state(_body.get_rid())
 		for i: int in state.get_contact_count():
@@ -210,7 +217,8 @@ func _collisions(above: Array[Dictionary]) -> Array[Dictionary]:
 			)
 	for entry: Dictionary in above:
 		var rigid: RigidBody2D = entry["collider"]
-		out.append(_entry(rigid, rigid.get_rid(), -1, rigid.global_position, entry["normal"]))
+		var normal: Vector2 = entry["normal"]
+		out.append(_entry(rigid, rigid.get_rid(), -1, rigid.global_position, normal))
 	return out
 
 
@@ -301,14 +309,14 @@ func _report_impact(collider: Object, normal: Vector2, material: HapticMaterial)
 	server.call(&"push_impact", event)
 
 
-# The collider's own HapticMaterial, else the touched tile's (TileSet custom data
-# HapticMaterial.TILE_LAYER), else its PhysicsMaterial mapped (HapticMaterial.from_physics_material),
-# else the probe's default.
+# The collider's own HapticMaterial, else the touched tile's (HapticMaterial.of_tile), else
+# its PhysicsMaterial mapped (HapticMaterial.from_physics_material), else the default.
 func _material_of(collision: Dictionary) -> HapticMaterial:
 	var collider: Object = collision["collider"]
 	var declared: HapticMaterial = HapticMaterial.of(collider)
 	if declared == null and collision.has("cell"):
-		declared = HapticMaterial.of_tile(collider as TileMapLayer, collision["cell"])
+		var cell: Vector2i = collision["cell"]
+		declared = HapticMaterial.of_tile(collider as TileMapLayer, cell)
 	elif declared == null and collider is StaticBody2D:
 		declared = _mapped((collider as StaticBody2D).physics_material_override)
 	elif declared == null and collider is RigidBody2D:

@@ -37,6 +37,8 @@ const SETTING_HAND_ACTIONS := "haptics/input/hand_actions"
 ## vector is fed into as action strengths, for games that read [method Input.get_vector] or
 ## [method Input.get_axis]; an empty list (the default): none.
 const SETTING_FEED_ACTIONS := "haptics/input/feed_actions"
+## Fed strengths below this release the action (a centred device presses nothing).
+const FEED_THRESHOLD := 0.05
 ## The hand's actions when the project names none.
 const DEFAULT_HAND_ACTIONS: PackedStringArray = ["move_left", "move_right", "move_up", "move_down"]
 # The servo's settings while there is no server to keep them (nothing is rendered then),
@@ -164,19 +166,23 @@ func _process(delta: float) -> void:
 func _physics_process(_delta: float) -> void:
 	if feed_actions.is_empty():
 		return
-	# The hand reads the keys without this module's own feed (it would hold itself down).
-	_release_fed_actions()
 	_follow_user_input()
 	if control_mode != CONTROL_DEVICE or _server == null:
+		_release_fed_actions()
 		return
 	var i: Vector2 = get_input_vector()
 	var strengths: PackedFloat32Array = [
 		maxf(-i.x, 0.0), maxf(i.x, 0.0), maxf(-i.y, 0.0), maxf(i.y, 0.0)
 	]
 	for k: int in feed_actions.size():
-		if strengths[k] > 0.0 and InputMap.has_action(feed_actions[k]):
-			Input.action_press(feed_actions[k], strengths[k])
+		var action: String = feed_actions[k]
+		if not InputMap.has_action(action):
+			continue
+		if strengths[k] >= FEED_THRESHOLD:
+			Input.action_press(action, strengths[k])
 			_fed = true
+		elif _fed and Input.is_action_pressed(action):
+			Input.action_release(action)
 
 
 ## True when the native extension is loaded and its server exists.
@@ -369,14 +375,50 @@ func _checked_actions(actions: PackedStringArray, what: String) -> PackedStringA
 
 func _action_strength(index: int) -> float:
 	var action: String = hand_actions[index]
-	return Input.get_action_strength(action) if InputMap.has_action(action) else 0.0
+	if not InputMap.has_action(action):
+		return 0.0
+	return (
+		_physical_strength(action)
+		if not feed_actions.is_empty()
+		else Input.get_action_strength(action)
+	)
+
+
+# How far the keys, buttons and sticks bound to [param action] are pressed, without what
+# this door fed into it (reading the action itself, the hand would hold itself down).
+func _physical_strength(action: String) -> float:
+	var strength: float = 0.0
+	for event: InputEvent in InputMap.action_get_events(action):
+		var key: InputEventKey = event as InputEventKey
+		var button: InputEventJoypadButton = event as InputEventJoypadButton
+		var motion: InputEventJoypadMotion = event as InputEventJoypadMotion
+		var mouse: InputEventMouseButton = event as InputEventMouseButton
+		if key != null:
+			var down: bool = (
+				(
+					key.physical_keycode != KEY_NONE
+					and Input.is_physical_key_pressed(key.physical_keycode)
+				)
+				or (key.keycode != KEY_NONE and Input.is_key_pressed(key.keycode))
+			)
+			strength = maxf(strength, 1.0 if down else 0.0)
+		elif mouse != null and Input.is_mouse_button_pressed(mouse.button_index):
+			strength = 1.0
+		for pad: int in Input.get_connected_joypads():
+			if button != null and Input.is_joy_button_pressed(pad, button.button_index):
+				strength = 1.0
+			elif motion != null and signf(motion.axis_value) != 0.0:
+				var along: float = Input.get_joy_axis(pad, motion.axis) * signf(motion.axis_value)
+				if along > InputMap.action_get_deadzone(action):
+					strength = maxf(strength, minf(along, 1.0))
+	return strength
 
 
 # Keyboard/gamepad deflection wins; otherwise the mouse's offset from the window centre,
 # a quarter of the window's height being the workspace edge.
 func _hand_from_user_input() -> Vector2:
 	var keys: Vector2 = Vector2.ZERO
-	if _hand_actions_complete:
+	if _hand_actions_complete and feed_actions.is_empty():
 		keys = Input.get_vector(hand_actions[0], hand_actions[1], hand_actions[2], hand_actions[3])
 	elif not hand_actions.is_empty():
 		keys = Vector2(

@@ -71,7 +71,7 @@ func _tile_layer() -> TileMapLayer:
 	tile_set.tile_size = Vector2i(TILE, TILE)
 	tile_set.add_physics_layer()
 	tile_set.add_custom_data_layer()
-	tile_set.set_custom_data_layer_name(0, HapticProbe.TILE_MATERIAL_LAYER)
+	tile_set.set_custom_data_layer_name(0, HapticMaterial.TILE_LAYER)
 	tile_set.set_custom_data_layer_type(0, TYPE_OBJECT)
 	var source: TileSetAtlasSource = TileSetAtlasSource.new()
 	source.texture_region_size = Vector2i(TILE, TILE)
@@ -99,9 +99,7 @@ func _wall_material() -> HapticMaterial:
 	material.stiffness = 3.0
 	material.friction = 0.5
 	material.impact_gain = 0.8
-	source.get_tile_data(Vector2i(1, 0), 0).set_custom_data(
-		HapticProbe.TILE_MATERIAL_LAYER, material
-	)
+	source.get_tile_data(Vector2i(1, 0), 0).set_custom_data(HapticMaterial.TILE_LAYER, material)
 	return material
 
 
@@ -113,7 +111,8 @@ func _frame() -> void:
 
 func _has_normal(normal: Vector2) -> bool:
 	for contact: Dictionary in probe.last_frame.get("contacts", []):
-		if (contact["normal"] as Vector2).distance_to(normal) < 0.01:
+		var contact_normal: Vector2 = contact["normal"]
+		if contact_normal.distance_to(normal) < 0.01:
 			return true
 	return false
 
@@ -202,3 +201,20 @@ func test_the_physics_material_mapping() -> void:
 	physics.friction = 1000.0
 	var extreme: HapticMaterial = HapticMaterial.from_physics_material(physics)
 	assert_almost_eq(extreme.friction, 100.0, 1e-6, "clamped to the material's range")
+
+
+func test_own_weight_presses_the_hand_down_only_while_standing_and_only_when_asked() -> void:
+	var g: float = server.get_config()["force_model"]["gravity_n_per_kg"]
+	for frame: int in 20:
+		await _frame()
+	assert_true(body.is_on_floor())
+	assert_almost_eq(server.get_forces()["weight"], Vector2.ZERO, 1e-6, "off by default")
+	probe.own_weight_kg = 0.5
+	for frame: int in 5:
+		await _frame()
+	assert_almost_eq(server.get_forces()["weight"], Vector2(0.0, 0.5 * g), 1e-3, "m g, down")
+	body.position.y -= 200.0  # in the air
+	for frame: int in 3:
+		await _frame()
+	assert_false(body.is_on_floor())
+	assert_almost_eq(server.get_forces()["weight"], Vector2.ZERO, 1e-3, "not while falling")
