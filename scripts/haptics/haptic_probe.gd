@@ -7,9 +7,9 @@ extends Node
 ## At every physics tick it gathers the body's contacts, one per touched shape or tile
 ## (normals and each one's [HapticMaterial]), dynamic bodies resting on it (mass and
 ## normal), the water volume it is in, its velocity, and the speed of new contacts; converts
-## pixels to metres; and submits the frame and impact events to the haptics server. With [member drive_input] it
-## also feeds the device's input vector to the body's [code]input_vector[/code] property
-## before the body moves (acceleration control).
+## pixels to metres; and submits the frame and impact events to the haptics server. With
+## [member drive_input] it also feeds the device's input vector to the body's
+## [code]input_vector[/code] property before the body moves (acceleration control).
 ##
 ## Water volumes are [Area2D]s with [code]drag_coefficient[/code] and
 ## [code]inertia_force[/code] properties, such as the addon's [HapticWater].
