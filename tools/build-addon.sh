@@ -51,6 +51,8 @@ else
 	echo "build-addon: warning: the project has no LICENSE file; the addon ships without one" >&2
 fi
 cp "${LIBS[@]}" "$ADDON/bin/"
+# Debug information stays in the build tree (it is most of the debug library's size).
+command -v strip >/dev/null && strip --strip-debug "$ADDON"/bin/*.so
 # Library paths relative to the .gdextension file: the folder works wherever it is placed.
 sed -e '/^\(windows\|macos\)\./d' gdextension/haptics.gdextension >"$ADDON/haptics.gdextension"
 
