@@ -51,8 +51,8 @@ func _physics_process(_delta: float) -> void:
 			continue
 		var submerged: float = clampf((box.end.y - surface) / box.size.y, 0.0, 1.0)
 		var lift: float = submerged * density / _density_of(body)
-		var gravity: Vector2 = body.get_gravity()
-		body.apply_central_force(-gravity * body.mass * body.gravity_scale * lift)
+		var pull: Vector2 = body.get_gravity()
+		body.apply_central_force(-pull * body.mass * body.gravity_scale * lift)
 
 
 func _on_body_entered(body: Node2D) -> void:
