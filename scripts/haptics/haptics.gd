@@ -31,7 +31,8 @@ const FORCE_NAMES: Array[String] = [
 	"normal", "friction", "weight", "drag", "inertia", "continuous", "smoothed", "impact", "total"
 ]
 ## The project setting naming the four input actions (left, right, up, down) whose strengths
-## move the simulated hand; an empty list: none (the mouse still does).
+## move the simulated hand; an empty list: none (the mouse still does); an empty name: no
+## action in that direction.
 const SETTING_HAND_ACTIONS := "haptics/input/hand_actions"
 ## The project setting naming four input actions (left, right, up, down) the device's input
 ## vector is fed into as action strengths, for games that read [method Input.get_vector] or
@@ -354,7 +355,8 @@ func _release_fed_actions() -> void:
 	_fed = false
 
 
-# Four actions or none; names the project lacks are reported once and count as released.
+# Four actions or none; an empty name is no action, names the project lacks are reported once;
+# both count as released.
 func _checked_actions(actions: PackedStringArray, what: String) -> PackedStringArray:
 	if not actions.is_empty() and actions.size() != 4:
 		push_error(
@@ -366,7 +368,7 @@ func _checked_actions(actions: PackedStringArray, what: String) -> PackedStringA
 		return get(what)
 	var missing: PackedStringArray = []
 	for action: String in actions:
-		if not InputMap.has_action(action):
+		if not action.is_empty() and not InputMap.has_action(action):
 			missing.append(action)
 	if not missing.is_empty():
 		push_warning("Haptics.%s: no input action %s in this project." % [what, missing])

@@ -64,6 +64,10 @@ func test_actions_the_game_lacks_are_reported_once_not_every_frame() -> void:
 	Input.action_press(FED[1])
 	assert_true(await _wait_for_input(0.5), "the actions that exist still move the hand")
 	Input.action_release(FED[1])
+	Haptics.hand_actions = ["test_fed_left", "test_fed_right", "", ""]  # no warning: none
+	Input.action_press(FED[1])
+	assert_true(await _wait_for_input(0.5), "empty names: left and right only")
+	Input.action_release(FED[1])
 	expect_error("give four actions")
 	Haptics.hand_actions = ["test_fed_left"]
 	assert_eq(Haptics.hand_actions.size(), 4, "refused: the previous actions stay")
