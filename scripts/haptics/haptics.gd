@@ -105,7 +105,8 @@ var _constants: Dictionary[StringName, int] = {}
 var _config_fields: Dictionary[String, Dictionary] = {}
 var _offline: Dictionary = _OFFLINE_DEFAULTS.duplicate()
 var _mouse_seen: bool = false
-var _fed: bool = false
+# The actions this door pressed and has not released.
+var _fed: Dictionary[String, bool] = {}
 var _hand_actions_complete: bool = false
 
 
@@ -181,9 +182,11 @@ func _physics_process(_delta: float) -> void:
 			continue
 		if strengths[k] >= FEED_THRESHOLD:
 			Input.action_press(action, strengths[k])
-			_fed = true
-		elif _fed and Input.is_action_pressed(action):
+			_fed[action] = true
+		elif _fed.has(action):
+			# Only what this door pressed: a key held down stays pressed.
 			Input.action_release(action)
+			_fed.erase(action)
 
 
 ## True when the native extension is loaded and its server exists.
@@ -347,12 +350,10 @@ func _follow_user_input() -> void:
 
 
 func _release_fed_actions() -> void:
-	if not _fed:
-		return
-	for action: String in feed_actions:
+	for action: String in _fed:
 		if InputMap.has_action(action):
 			Input.action_release(action)
-	_fed = false
+	_fed.clear()
 
 
 # Four actions or none; an empty name is no action, names the project lacks are reported once;
