@@ -61,4 +61,23 @@ set -e
 [[ $rc -eq 0 ]] || fail "the game exited $rc" "$run_log"
 [[ -z "$(errors "$run_log")" ]] || fail "the game printed errors" "$run_log"
 grep -E '^(impact|addon game):' "$run_log" | sed 's/^/test-addon: /'
+
+# What the plugin does on enable: list the extension once, keeping what else is listed.
+echo "res://elsewhere/other.gdextension" >"$GAME/.godot/extension_list.cfg"
+cat >"$GAME/list_check.gd" <<'GD'
+extends SceneTree
+
+
+func _init() -> void:
+	var plugin: Script = load("res://addons/haptics/plugin.gd")
+	for i: int in 2:
+		if not plugin.call(&"list_extension", "res://addons/haptics/haptics.gdextension"):
+			printerr("list_extension failed")
+	quit()
+GD
+"$ROOT/tools/godot" --headless --path "$GAME" -s res://list_check.gd >/dev/null 2>&1 || true
+expected=$'res://elsewhere/other.gdextension\nres://addons/haptics/haptics.gdextension'
+[[ "$(cat "$GAME/.godot/extension_list.cfg")" == "$expected" ]] ||
+	{ echo "test-addon: the plugin's list_extension wrote:" >&2; cat "$GAME/.godot/extension_list.cfg" >&2; exit 1; }
+echo "test-addon: the plugin lists the extension once, keeping the others"
 echo "test-addon: passed ($(du -h "$ZIP" | cut -f1) zip)"
