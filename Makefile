@@ -24,7 +24,8 @@ BENCH_SECONDS ?= 10
 SOAK_SECONDS ?= 600
 
 .PHONY: play test deps engine build build-release import test-native test-godot lint pong-demo \
-	export test-export dist test-dist test-windowed test-net bench soak sanitize analyze export-study test-analysis clean distclean
+	export test-export dist test-dist test-windowed test-net bench soak sanitize analyze export-study \
+	test-analysis addon test-addon clean distclean
 
 ## deps: install missing OS packages (apt-get; sudo when not root)
 deps:
@@ -70,7 +71,8 @@ pong-demo: import
 	@$(GODOT) --headless --path . -- --pong-demo $(ARGS)
 
 ## test: every suite; any failure fails the target
-test: import test-native test-godot lint test-analysis test-net test-export test-dist test-windowed
+test: import test-native test-godot lint test-analysis test-net test-export test-dist test-windowed \
+	test-addon
 	@echo "make test: all suites passed"
 
 ## test-native: the C++ doctest suite through CTest
@@ -115,6 +117,18 @@ dist: export
 ## test-dist: make dist, then unpack the archive and check its contents (tools/test-dist.sh)
 test-dist: dist
 	@tools/test-dist.sh
+
+## addon: the Godot addon (.build/addon/addons/haptics/, assembled from the sources: the
+## scripts, the probe scene, the materials, the debug and release libraries, the editor
+## plugin) and its Asset Library zip (.build/addon/haptics-addon-<version>.zip)
+addon: import build-release
+	@tools/build-addon.sh
+
+## test-addon: a small platformer we did not build it into gets the addon the README's way
+## (temporary folder): one import without a crash, then a steady push from a tile wall on
+## every physics frame, an impact, no error output (tools/test-addon.sh)
+test-addon: addon
+	@tools/test-addon.sh
 
 ## bench: servo loop vs naive loop, the force model's and the proxy's tick cost, each device
 ## backend's tick cost and protocol rate against its scripted transport, the game's

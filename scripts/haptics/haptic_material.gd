@@ -1,3 +1,4 @@
+@icon("res://scripts/haptics/addon/icons/haptic_material.svg")
 class_name HapticMaterial
 extends Resource
 ## How a surface feels: contact stiffness and friction for the continuous force, and the
@@ -5,7 +6,16 @@ extends Resource
 ##
 ## Assign it to a body by giving the body a [code]haptic_material[/code] property (scripted
 ## bodies such as crates) or a [code]haptic_material[/code] metadata entry (any body, set
-## in the inspector). Bodies without one feel like the probe's default material.
+## in the inspector). A [TileMapLayer]'s tiles take theirs from the TileSet's custom data
+## layer named [code]haptic_material[/code] (type Object), per tile. A body or tile without
+## one but with a [PhysicsMaterial] feels like [method from_physics_material] of it; anything
+## else feels like the probe's default material.
+
+## The custom data layer a TileSet's tiles name their material in.
+const TILE_LAYER := &"haptic_material"
+
+## The largest stiffness, friction and impact gain a material takes.
+const MAX_GAIN := 100.0
 
 ## Normal-force gain k, in newtons per unit input: pushing the device to the edge of its
 ## workspace straight into the surface is resisted with this force.
@@ -40,3 +50,34 @@ static func of(body: Object) -> HapticMaterial:
 		if meta is HapticMaterial:
 			return meta
 	return null
+
+
+## The material of the tile at [param cell] of [param tiles]: the TileSet's
+## [constant TILE_LAYER] custom data, else the physics material of the first physics layer
+## the tile has a collision polygon in (mapped), else [code]null[/code].
+static func of_tile(tiles: TileMapLayer, cell: Vector2i) -> HapticMaterial:
+	if tiles == null or tiles.tile_set == null:
+		return null
+	var data: TileData = tiles.get_cell_tile_data(cell)
+	if data == null:
+		return null
+	if tiles.tile_set.has_custom_data_layer_by_name(TILE_LAYER):
+		var custom: Variant = data.get_custom_data(TILE_LAYER)
+		if custom is HapticMaterial:
+			return custom
+	for layer: int in tiles.tile_set.get_physics_layers_count():
+		var physics: PhysicsMaterial = tiles.tile_set.get_physics_layer_physics_material(layer)
+		if physics != null and data.get_collision_polygons_count(layer) > 0:
+			return from_physics_material(physics)
+	return null
+
+
+## A haptic material standing in for a [PhysicsMaterial] (the one mapping, documented in the
+## README): stiffness, impact frequency and decay are the defaults; friction is the default
+## friction × the physics friction (1 feels like the default, 0 like ice); the impact gain is
+## the default gain × (1 + bounce) (a bouncy surface knocks up to twice as hard).
+static func from_physics_material(physics: PhysicsMaterial) -> HapticMaterial:
+	var material: HapticMaterial = HapticMaterial.new()
+	material.friction = clampf(material.friction * physics.friction, 0.0, MAX_GAIN)
+	material.impact_gain = clampf(material.impact_gain * (1.0 + physics.bounce), 0.0, MAX_GAIN)
+	return material

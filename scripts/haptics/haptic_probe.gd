@@ -1,22 +1,26 @@
+@icon("res://scripts/haptics/addon/icons/haptic_probe.svg")
 class_name HapticProbe
 extends Node
 ## Drop-in haptics for any 2D body: add this node as a child of a [CharacterBody2D] or
 ## [RigidBody2D] and the body's contacts are felt.
 ##
-## At every physics tick it gathers the body's contacts (normals and each touched body's
-## [HapticMaterial]), dynamic bodies resting on it (mass and normal), the water volume it
-## is in, its velocity, and the speed of new contacts; converts pixels to metres; and
-## submits the frame and impact events to the haptics server. With [member drive_input] it
-## also feeds the device's input vector to the body's [code]input_vector[/code] property
-## before the body moves (acceleration control).
+## At every physics tick it gathers the body's contacts, one per touched shape or tile
+## (normals and each one's [HapticMaterial]), dynamic bodies resting on it (mass and
+## normal), the water volume it is in, its velocity, and the speed of new contacts; converts
+## pixels to metres; and submits the frame and impact events to the haptics server. With
+## [member drive_input] it also feeds the device's input vector to the body's
+## [code]input_vector[/code] property before the body moves (acceleration control).
 ##
 ## Water volumes are [Area2D]s with [code]drag_coefficient[/code] and
-## [code]inertia_force[/code] properties (see [WaterVolume]).
+## [code]inertia_force[/code] properties, such as the addon's [HapticWater].
 
 ## Emitted after each frame is submitted, with the frame as sent.
 signal frame_submitted(frame: Dictionary)
 ## Emitted when a new contact begins, with the approach speed in metres per second.
 signal impact(collider: Object, normal: Vector2, speed: float)
+
+## Earth's gravity, m/s², for [method pixels_per_metre_for_gravity].
+const EARTH_GRAVITY := 9.80665
 
 ## World scale: how many pixels make one metre.
 @export_range(1.0, 10000.0, 1.0, "suffix:px/m") var pixels_per_metre: float = 100.0
@@ -27,6 +31,10 @@ signal impact(collider: Object, normal: Vector2, speed: float)
 @export var drive_input: bool = true
 ## How far above the body to look for objects resting on it, in pixels.
 @export_range(0.5, 16.0, 0.5, "suffix:px") var resting_probe_distance: float = 2.0
+## Gravity platformers: while standing on a floor, the avatar's own weight presses the hand
+## down with this mass × the servo's [code]force_model.gravity_n_per_kg[/code] (1 N/kg by
+## default, so the value reads as newtons). 0 (the default) leaves standing still force-free.
+@export_range(0.0, 10.0, 0.01, "suffix:kg") var own_weight_kg: float = 0.0
 ## Impacts slower than this are not played, in metres per second.
 @export_range(0.0, 10.0, 0.01, "suffix:m/s") var min_impact_speed: float = 0.2
 
@@ -41,12 +49,13 @@ var frames_submitted: int = 0
 var _body: PhysicsBody2D = null
 var _sequence: int = 0
 var _velocity_before: Vector2 = Vector2.ZERO
-var _touching: Dictionary[int, bool] = {}
+var _touching: Dictionary[String, bool] = {}
 var _query: PhysicsPointQueryParameters2D = PhysicsPointQueryParameters2D.new()
 var _shape_query: PhysicsShapeQueryParameters2D = PhysicsShapeQueryParameters2D.new()
 var _shape: CollisionShape2D = null
 var _max_contacts: int = 0
 var _max_resting: int = 0
+var _floor_entry: Dictionary = {}
 
 
 func _ready() -> void:
@@ -119,27 +128,41 @@ func submit() -> void:
 func build_frame() -> Dictionary:
 	var above: Array[Dictionary] = _objects_above()
 	var contacts: Array[Dictionary] = []
-	var now_touching: Dictionary[int, bool] = {}
+	var now_touching: Dictionary[String, bool] = {}
+	# Faces already sent, by collider and normal: two floor tiles side by side are one
+	# floor (each its own contact would count the floor's friction twice).
+	var faces: Dictionary[String, bool] = {}
+	var floor_normal: Vector2 = Vector2.ZERO
 	for collision: Dictionary in _collisions(above):
-		var collider: Object = collision["collider"]
+		var key: String = collision["key"]
 		var normal: Vector2 = collision["normal"]
-		var id: int = collider.get_instance_id() if collider != null else 0
-		if now_touching.has(id) or contacts.size() >= _max_contacts:
+		var face: String = "%d:%.2f,%.2f" % [collision["id"], normal.x, normal.y]
+		if now_touching.has(key) or contacts.size() >= _max_contacts:
 			continue
-		now_touching[id] = true
-		var material: HapticMaterial = _material_of(collider)
-		var contact: Dictionary = {"normal": normal}
-		if material != null:
-			contact["stiffness_n"] = material.stiffness
-			contact["friction_n"] = material.friction
-		contacts.append(contact)
-		if not _touching.has(id):
+		now_touching[key] = true
+		var material: HapticMaterial = _material_of(collision)
+		if not faces.has(face):
+			faces[face] = true
+			var contact: Dictionary = {"normal": normal}
+			if material != null:
+				contact["stiffness_n"] = material.stiffness
+				contact["friction_n"] = material.friction
+			contacts.append(contact)
+		if normal.dot(Vector2.UP) > floor_normal.dot(Vector2.UP):
+			floor_normal = normal
+		if not _touching.has(key):
+			var collider: Object = collision["collider"]
 			_report_impact(collider, normal, material)
 	_touching = now_touching
 	_sequence += 1
+	var resting: Array[Dictionary] = _resting_objects(above)
+	if own_weight_kg > 0.0 and floor_normal.dot(Vector2.UP) > 0.5 and resting.size() < _max_resting:
+		# The avatar's own weight, felt like an object resting on the hand: pressed along
+		# the floor's normal into the floor.
+		resting.append({"normal": -floor_normal, "mass_kg": own_weight_kg})
 	return {
 		"contacts": contacts,
-		"resting": _resting_objects(above),
+		"resting": resting,
 		"water": _water_state(),
 		"velocity_m_per_s": _body_velocity() / pixels_per_metre,
 		"sequence": _sequence,
@@ -147,28 +170,71 @@ func build_frame() -> Dictionary:
 	}
 
 
-# Each entry: collider and normal (from the surface toward the body).
+## Pixels per metre for a game whose gravity is [param gravity_px_per_s2] (e.g. the
+## project's [code]physics/2d/default_gravity[/code], or the player script's own gravity):
+## the scale at which it falls like on Earth.
+static func pixels_per_metre_for_gravity(gravity_px_per_s2: float) -> float:
+	return gravity_px_per_s2 / EARTH_GRAVITY
+
+
+# Each entry: collider, normal (from the surface toward the body), the world point of
+# contact, and a key naming the touched shape (a tile on a TileMapLayer): contacts are one
+# per shape, not per collider, as a tile map's floor and walls are one collider.
 func _collisions(above: Array[Dictionary]) -> Array[Dictionary]:
 	var out: Array[Dictionary] = []
 	if _body is CharacterBody2D:
 		var character: CharacterBody2D = _body
 		for i: int in character.get_slide_collision_count():
 			var collision: KinematicCollision2D = character.get_slide_collision(i)
-			out.append({"collider": collision.get_collider(), "normal": collision.get_normal()})
+			var entry: Dictionary = _entry(
+				collision.get_collider(),
+				collision.get_collider_rid(),
+				collision.get_collider_shape_index(),
+				collision.get_position(),
+				collision.get_normal()
+			)
+			var floor_normal: Vector2 = character.get_floor_normal()
+			if character.is_on_floor() and collision.get_normal().is_equal_approx(floor_normal):
+				_floor_entry = entry
+			out.append(entry)
+		# Pressed into a wall, move_and_slide often reports only the wall although the body
+		# still stands: the floor it last reported stays a contact while it does.
+		if not character.is_on_floor():
+			_floor_entry = {}
+		elif not _floor_entry.is_empty() and is_instance_valid(_floor_entry["collider"]):
+			out.append(_floor_entry)
 	elif _body is RigidBody2D:
 		var state: PhysicsDirectBodyState2D = PhysicsServer2D.body_get_direct_state(_body.get_rid())
 		for i: int in state.get_contact_count():
-			(
-				out
-				. append(
-					{
-						"collider": state.get_contact_collider_object(i),
-						"normal": state.get_contact_local_normal(i),
-					}
+			out.append(
+				_entry(
+					state.get_contact_collider_object(i),
+					state.get_contact_collider(i),
+					state.get_contact_collider_shape(i),
+					state.get_contact_collider_position(i),
+					state.get_contact_local_normal(i)
 				)
 			)
-	out.append_array(above)
+	for entry: Dictionary in above:
+		var rigid: RigidBody2D = entry["collider"]
+		var normal: Vector2 = entry["normal"]
+		out.append(_entry(rigid, rigid.get_rid(), -1, rigid.global_position, normal))
 	return out
+
+
+func _entry(collider: Object, rid: RID, shape: int, point: Vector2, normal: Vector2) -> Dictionary:
+	var id: int = collider.get_instance_id() if collider != null else 0
+	var entry: Dictionary = {"collider": collider, "normal": normal, "id": id}
+	var tiles: TileMapLayer = collider as TileMapLayer
+	if tiles != null:
+		# Half a pixel behind the surface lies the touched tile, whichever physics quadrant
+		# (body) holds its shape.
+		var cell: Vector2i = tiles.local_to_map(tiles.to_local(point - normal * 0.5))
+		entry["cell"] = cell
+		entry["key"] = "%d:%d,%d" % [id, cell.x, cell.y]
+	else:
+		entry["key"] = "%d:%d:%d" % [id, rid.get_id(), shape]
+	return entry
 
 
 # Rigid bodies touching the top of the body: the body's shape swept a little upward finds
@@ -243,9 +309,23 @@ func _report_impact(collider: Object, normal: Vector2, material: HapticMaterial)
 	server.call(&"push_impact", event)
 
 
-func _material_of(collider: Object) -> HapticMaterial:
+# The collider's own HapticMaterial, else the touched tile's (HapticMaterial.of_tile), else
+# its PhysicsMaterial mapped (HapticMaterial.from_physics_material), else the default.
+func _material_of(collision: Dictionary) -> HapticMaterial:
+	var collider: Object = collision["collider"]
 	var declared: HapticMaterial = HapticMaterial.of(collider)
+	if declared == null and collision.has("cell"):
+		var cell: Vector2i = collision["cell"]
+		declared = HapticMaterial.of_tile(collider as TileMapLayer, cell)
+	elif declared == null and collider is StaticBody2D:
+		declared = _mapped((collider as StaticBody2D).physics_material_override)
+	elif declared == null and collider is RigidBody2D:
+		declared = _mapped((collider as RigidBody2D).physics_material_override)
 	return declared if declared != null else default_material
+
+
+func _mapped(physics: PhysicsMaterial) -> HapticMaterial:
+	return HapticMaterial.from_physics_material(physics) if physics != null else null
 
 
 func _body_velocity() -> Vector2:

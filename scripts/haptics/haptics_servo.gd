@@ -54,10 +54,15 @@ func get_rate_hz() -> float:
 
 
 ## Up to [param max_samples] telemetry samples of [method get_telemetry_columns] floats
-## each, oldest first, in device axes (y up); empty without the extension.
+## each, oldest first, in device axes (y up); empty without the extension. Telemetry is off
+## until a call turns it on (the [code]Haptics[/code] autoload turns it off at
+## start: a game that never drains it is not counted drops).
 func drain_telemetry(max_samples: int) -> PackedFloat32Array:
 	if _server == null:
 		return PackedFloat32Array()
+	var config: Dictionary = _server.call(&"get_config")
+	if not config["telemetry"]["enabled"]:
+		_server.call(&"set_config", "telemetry", {"enabled": true})
 	return _server.call(&"drain_telemetry", max_samples)
 
 

@@ -1,0 +1,129 @@
+extends TestSuite
+## What the Haptics autoload does with a game's input: which actions move the simulated hand
+## (none, or names the game lacks, without an error per frame), feeding the device's input
+## vector into a game's own actions for games that read Input.get_axis, and telemetry that
+## stays off until someone drains it.
+
+const FED: PackedStringArray = ["test_fed_left", "test_fed_right", "test_fed_up", "test_fed_down"]
+
+var _hand_actions: PackedStringArray = []
+var _feed_actions: PackedStringArray = []
+var _follows: bool = true
+var _control_mode: StringName = &""
+
+
+func before_each() -> void:
+	_hand_actions = Haptics.hand_actions
+	_feed_actions = Haptics.feed_actions
+	_follows = Haptics.hand_follows_input
+	_control_mode = Haptics.control_mode
+	for action: String in FED:
+		InputMap.add_action(action)
+
+
+func after_each() -> void:
+	Haptics.feed_actions = _feed_actions
+	Haptics.hand_actions = _hand_actions
+	Haptics.hand_follows_input = _follows
+	Haptics.control_mode = _control_mode
+	Haptics.device.set_hand_target(Vector2.ZERO)
+	for action: String in FED:
+		InputMap.erase_action(action)
+
+
+func _physics_frames(count: int) -> void:
+	for i: int in count:
+		await get_tree().physics_frame
+
+
+func _wait_for_input(at_least: float) -> bool:
+	for i: int in 100:
+		await get_tree().physics_frame
+		if Haptics.get_input_vector().x >= at_least:
+			return true
+	return false
+
+
+func test_the_hand_follows_the_projects_actions_and_none_is_allowed() -> void:
+	assert_eq(Haptics.hand_actions, Haptics.DEFAULT_HAND_ACTIONS, "the project's setting")
+	Haptics.hand_actions = FED
+	Input.action_press(FED[1])
+	assert_true(await _wait_for_input(0.5), "the hand moved right with the named action")
+	Input.action_release(FED[1])
+	Haptics.hand_actions = PackedStringArray()
+	Input.action_press(FED[1])
+	await _physics_frames(10)
+	assert_almost_eq(Haptics.get_input_vector(), Vector2.ZERO, 0.05, "no actions: no hand motion")
+	Input.action_release(FED[1])
+
+
+func test_actions_the_game_lacks_are_reported_once_not_every_frame() -> void:
+	# A warning when they are named (the runner fails a test on any error, so a per-frame
+	# error from polling them would fail this one).
+	Haptics.hand_actions = ["test_fed_left", "test_fed_right", "no_such_up", "no_such_down"]
+	Input.action_press(FED[1])
+	assert_true(await _wait_for_input(0.5), "the actions that exist still move the hand")
+	Input.action_release(FED[1])
+	Haptics.hand_actions = ["test_fed_left", "test_fed_right", "", ""]  # no warning: none
+	Input.action_press(FED[1])
+	assert_true(await _wait_for_input(0.5), "empty names: left and right only")
+	Input.action_release(FED[1])
+	expect_error("give four actions")
+	Haptics.hand_actions = ["test_fed_left"]
+	assert_eq(Haptics.hand_actions.size(), 4, "refused: the previous actions stay")
+
+
+func test_the_input_vector_is_fed_into_the_games_actions() -> void:
+	Haptics.hand_follows_input = false
+	Haptics.feed_actions = FED
+	Haptics.device.set_hand_target(Vector2(1.0, 0.0))
+	assert_true(await _wait_for_input(0.95), "the hand is to the right")
+	await _physics_frames(5)
+	var i: Vector2 = Haptics.get_input_vector()
+	assert_almost_eq(Input.get_axis(FED[0], FED[1]), i.x, 0.05, "get_axis reads the device")
+	assert_almost_eq(Input.get_action_strength(FED[1]), i.x, 0.05, "as the action's strength")
+	assert_eq(Input.get_action_strength(FED[0]), 0.0)
+	Haptics.control_mode = Haptics.CONTROL_KEYBOARD
+	await _physics_frames(2)
+	assert_eq(Input.get_action_strength(FED[1]), 0.0, "released in keyboard mode")
+
+
+func test_feeding_the_actions_that_move_the_hand_does_not_hold_them_down() -> void:
+	# Keys move the simulated hand through the same actions the device is fed into: the
+	# hand must read the keys alone, or the first press would never let go.
+	Haptics.hand_follows_input = true
+	Haptics.hand_actions = FED
+	Haptics.feed_actions = FED
+	var key: InputEventKey = InputEventKey.new()
+	key.physical_keycode = KEY_F12
+	InputMap.action_add_event(FED[1], key)
+	key.pressed = true
+	Input.parse_input_event(key)
+	assert_true(await _wait_for_input(0.6), "the key moved the hand")
+	key = key.duplicate()
+	key.pressed = false
+	Input.parse_input_event(key)
+	var released: bool = false
+	for i: int in 150:
+		await get_tree().physics_frame
+		if Haptics.get_input_vector().length() < 0.05:
+			released = true
+			break
+	assert_true(released, "the hand came back when the key was released")
+	await _physics_frames(2)
+	assert_lt(Input.get_action_strength(FED[1]), 0.05, "and the fed action let go")
+
+
+func test_telemetry_is_off_until_someone_drains_it() -> void:
+	var server: HapticsServer = Haptics.get_server()
+	var capacity: int = Haptics.get_constant(&"TELEMETRY_QUEUE_CAPACITY")
+	Haptics.configure("telemetry", {"enabled": false})
+	server.drain_telemetry(capacity)  # what an earlier suite left
+	await _physics_frames(15)  # 0.3 s: 300 samples at 1 kHz if it were on
+	assert_true(Haptics.servo.is_running())
+	assert_eq(server.drain_telemetry(capacity).size(), 0, "nothing recorded, nothing to drop")
+	assert_eq(Haptics.servo.drain_telemetry(16).size(), 0)
+	assert_true(Haptics.get_config()["telemetry"]["enabled"], "draining turned it on")
+	await _physics_frames(3)
+	assert_gt(Haptics.servo.drain_telemetry(16).size(), 0, "and samples arrive")
+	Haptics.configure("telemetry", {"enabled": false})

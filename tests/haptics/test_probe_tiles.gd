@@ -1,0 +1,220 @@
+extends TestSuite
+## The probe on a gravity platformer's body standing on a [TileMapLayer] floor and running
+## into a wall of the same layer: one collider, many tiles. Every tile touched is a contact
+## of its own (the floor and the wall are both felt on every physics frame), a new tile is a
+## new impact, and tiles take their material from the TileSet's custom data or physics
+## material.
+
+const K := 2.0
+const B := 1.0
+const TICKS_PER_FRAME := 20
+const TILE := 32
+const FLOOR_ROW := 10
+const WALL_COLUMN := 12
+
+
+## A platformer body as games write them: gravity, run speed from an input vector.
+class Runner:
+	extends CharacterBody2D
+
+	var input_vector: Vector2 = Vector2.ZERO
+
+	func _physics_process(delta: float) -> void:
+		velocity.x = input_vector.x * 200.0
+		velocity.y += 980.0 * delta
+		move_and_slide()
+
+
+var server: HapticsServer = null
+var world: Node2D = null
+var layer: TileMapLayer = null
+var body: Runner = null
+var probe: HapticProbe = null
+
+
+func before_each() -> void:
+	server = HapticsServer.new()
+	assert_true(server.open_device("simulated"))
+	assert_true(server.set_config("safety", {"startup_ramp_s": 0.0}))
+	world = Node2D.new()
+	layer = _tile_layer()
+	world.add_child(layer)
+	for column: int in range(0, WALL_COLUMN + 1):
+		layer.set_cell(Vector2i(column, FLOOR_ROW), 0, Vector2i(0, 0))
+	for row: int in range(FLOOR_ROW - 4, FLOOR_ROW):
+		layer.set_cell(Vector2i(WALL_COLUMN, row), 0, Vector2i(1, 0))
+	body = Runner.new()
+	var shape: CollisionShape2D = CollisionShape2D.new()
+	var rect: RectangleShape2D = RectangleShape2D.new()
+	rect.size = Vector2(20.0, 36.0)
+	shape.shape = rect
+	body.add_child(shape)
+	body.position = Vector2(4.5 * TILE, FLOOR_ROW * TILE - 18.0)
+	probe = HapticProbe.new()
+	probe.server = server
+	var material: HapticMaterial = HapticMaterial.new()
+	material.stiffness = K
+	material.friction = B
+	probe.default_material = material
+	body.add_child(probe)
+	world.add_child(body)
+	add_child_autofree(world)
+
+
+func after_each() -> void:
+	server.close_device()
+
+
+# Two tiles: (0, 0) plain, (1, 0) with a haptic material in the custom data layer.
+func _tile_layer() -> TileMapLayer:
+	var tile_set: TileSet = TileSet.new()
+	tile_set.tile_size = Vector2i(TILE, TILE)
+	tile_set.add_physics_layer()
+	tile_set.add_custom_data_layer()
+	tile_set.set_custom_data_layer_name(0, HapticMaterial.TILE_LAYER)
+	tile_set.set_custom_data_layer_type(0, TYPE_OBJECT)
+	var source: TileSetAtlasSource = TileSetAtlasSource.new()
+	source.texture_region_size = Vector2i(TILE, TILE)
+	source.texture = ImageTexture.create_from_image(
+		Image.create(TILE * 2, TILE, false, Image.FORMAT_RGBA8)
+	)
+	tile_set.add_source(source, 0)
+	var half: float = TILE * 0.5
+	var square: PackedVector2Array = [
+		Vector2(-half, -half), Vector2(half, -half), Vector2(half, half), Vector2(-half, half)
+	]
+	for atlas: Vector2i in [Vector2i(0, 0), Vector2i(1, 0)]:
+		source.create_tile(atlas)
+		var data: TileData = source.get_tile_data(atlas, 0)
+		data.add_collision_polygon(0)
+		data.set_collision_polygon_points(0, 0, square)
+	var tiles: TileMapLayer = TileMapLayer.new()
+	tiles.tile_set = tile_set
+	return tiles
+
+
+func _wall_material() -> HapticMaterial:
+	var source: TileSetAtlasSource = layer.tile_set.get_source(0)
+	var material: HapticMaterial = HapticMaterial.new()
+	material.stiffness = 3.0
+	material.friction = 0.5
+	material.impact_gain = 0.8
+	source.get_tile_data(Vector2i(1, 0), 0).set_custom_data(HapticMaterial.TILE_LAYER, material)
+	return material
+
+
+func _frame() -> void:
+	await get_tree().physics_frame
+	for tick: int in TICKS_PER_FRAME:
+		server.step(0.001)
+
+
+func _has_normal(normal: Vector2) -> bool:
+	for contact: Dictionary in probe.last_frame.get("contacts", []):
+		var contact_normal: Vector2 = contact["normal"]
+		if contact_normal.distance_to(normal) < 0.01:
+			return true
+	return false
+
+
+func test_a_tile_wall_is_pushed_back_on_every_frame_while_standing_on_the_same_layer() -> void:
+	assert_true(server.set_hand_target(Vector2.RIGHT * 0.1))
+	var wall_x: float = WALL_COLUMN * TILE - 10.0
+	var frames_at_wall: int = 0
+	var impacts: Array[Vector2] = []
+	probe.impact.connect(func(_c: Object, n: Vector2, _s: float) -> void: impacts.append(n))
+	for frame: int in 150:
+		await _frame()
+		if absf(body.position.x - wall_x) > 0.5 or not body.is_on_floor():
+			continue
+		frames_at_wall += 1
+		if frames_at_wall < 3:
+			continue  # the smoothed force settles after the first touch
+		var i: Vector2 = server.get_input_vector()
+		var f_n: Vector2 = server.get_forces()["normal"]
+		assert_true(_has_normal(Vector2.UP), "frame %d: the floor is a contact" % frame)
+		assert_true(_has_normal(Vector2.LEFT), "frame %d: the wall is a contact" % frame)
+		assert_almost_eq(f_n.x, -K * i.x, 0.02 * K, "frame %d: wall push-back k·i" % frame)
+		assert_lt(f_n.x, -0.5, "frame %d: pushed away from the wall" % frame)
+	assert_gt(frames_at_wall, 60, "the runner reached the wall and stayed there")
+	assert_has(impacts, Vector2.LEFT, "running into the wall is an impact")
+
+
+func test_every_new_floor_tile_is_not_an_impact_but_a_new_wall_tile_is() -> void:
+	# Walking along the floor crosses tile borders: contacts of the same floor normal
+	# continue (no impact per tile), only the wall is hit.
+	assert_true(server.set_hand_target(Vector2.RIGHT * 0.1))
+	var impacts: Array[Vector2] = []
+	probe.impact.connect(func(_c: Object, n: Vector2, _s: float) -> void: impacts.append(n))
+	for frame: int in 20:
+		await _frame()  # landing from the spawn height
+	impacts.clear()
+	for frame: int in 120:
+		await _frame()
+	assert_eq(impacts, [Vector2.LEFT], "one impact: the wall")
+
+
+func test_a_tile_takes_its_material_from_the_tile_set_custom_data() -> void:
+	var material: HapticMaterial = _wall_material()
+	assert_true(server.set_hand_target(Vector2.RIGHT * 0.1))
+	var found: Dictionary = {}
+	for frame: int in 150:
+		await _frame()
+		for contact: Dictionary in probe.last_frame.get("contacts", []):
+			found[contact["normal"]] = contact
+	var wall: Dictionary = found.get(Vector2.LEFT, {})
+	var ground: Dictionary = found.get(Vector2.UP, {})
+	assert_almost_eq(wall.get("stiffness_n", 0.0), material.stiffness, 1e-6, "the wall tile's")
+	assert_almost_eq(ground.get("stiffness_n", 0.0), K, 1e-6, "the floor: the default")
+
+
+func test_a_physics_material_stands_in_when_no_haptic_material_is_given() -> void:
+	var physics: PhysicsMaterial = PhysicsMaterial.new()
+	physics.friction = 0.4
+	physics.bounce = 0.5
+	layer.tile_set.set_physics_layer_physics_material(0, physics)
+	var expected: HapticMaterial = HapticMaterial.from_physics_material(physics)
+	probe.default_material = null
+	await _frame()
+	await _frame()
+	var contacts: Array = probe.last_frame.get("contacts", [])
+	assert_eq(contacts.size(), 1, "standing on the floor")
+	if contacts.size() == 1:
+		var contact: Dictionary = contacts[0]
+		assert_almost_eq(contact.get("friction_n", -1.0), expected.friction, 1e-6)
+		assert_almost_eq(contact.get("stiffness_n", -1.0), expected.stiffness, 1e-6)
+
+
+func test_the_physics_material_mapping() -> void:
+	var physics: PhysicsMaterial = PhysicsMaterial.new()
+	var reference: HapticMaterial = HapticMaterial.new()
+	physics.friction = 1.0
+	physics.bounce = 0.0
+	var plain: HapticMaterial = HapticMaterial.from_physics_material(physics)
+	assert_almost_eq(plain.friction, reference.friction, 1e-6, "friction 1 is the default")
+	assert_almost_eq(plain.impact_gain, reference.impact_gain, 1e-6, "no bounce: default")
+	physics.friction = 0.0
+	physics.bounce = 1.0
+	var ice: HapticMaterial = HapticMaterial.from_physics_material(physics)
+	assert_almost_eq(ice.friction, 0.0, 1e-6, "frictionless")
+	assert_almost_eq(ice.impact_gain, 2.0 * reference.impact_gain, 1e-6, "bouncy: twice")
+	physics.friction = 1000.0
+	var extreme: HapticMaterial = HapticMaterial.from_physics_material(physics)
+	assert_almost_eq(extreme.friction, 100.0, 1e-6, "clamped to the material's range")
+
+
+func test_own_weight_presses_the_hand_down_only_while_standing_and_only_when_asked() -> void:
+	var g: float = server.get_config()["force_model"]["gravity_n_per_kg"]
+	for frame: int in 20:
+		await _frame()
+	assert_true(body.is_on_floor())
+	assert_almost_eq(server.get_forces()["weight"], Vector2.ZERO, 1e-6, "off by default")
+	probe.own_weight_kg = 0.5
+	for frame: int in 5:
+		await _frame()
+	assert_almost_eq(server.get_forces()["weight"], Vector2(0.0, 0.5 * g), 1e-3, "m g, down")
+	body.position.y -= 200.0  # in the air
+	for frame: int in 3:
+		await _frame()
+	assert_false(body.is_on_floor())
+	assert_almost_eq(server.get_forces()["weight"], Vector2.ZERO, 1e-3, "not while falling")

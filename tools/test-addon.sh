@@ -1,0 +1,83 @@
+#!/usr/bin/env bash
+# The addon as a user installs it, in a game we did not build it into: a small gravity
+# platformer (tests/addon/game/: a CharacterBody2D reading Input.get_axis on a TileMapLayer
+# floor next to a tile wall) is copied to a temporary folder, the addon zip is unpacked into
+# it, the README's install steps are followed (list the extension, enable the plugin: its
+# autoload and editor_plugins entries, written as the plugin writes them), the project is
+# imported once, then run headless: the game itself asserts a steady push away from the wall
+# on every physics frame and an impact on hitting it (tests/addon/game/main.gd). Any error
+# output fails the test. The temporary folder is removed, also on failure.
+# Usage: tools/test-addon.sh   (after tools/build-addon.sh)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+ROOT="$PWD"
+ZIP="$(ls .build/addon/haptics-addon-*.zip 2>/dev/null | head -n 1)"
+[[ -n "$ZIP" ]] || { echo "test-addon: no addon zip in .build/addon (make addon)" >&2; exit 1; }
+
+GAME="$(mktemp -d "${TMPDIR:-/tmp}/haptics-addon-test.XXXXXX")"
+trap 'rm -rf "$GAME"' EXIT
+
+cp -r tests/addon/game/. "$GAME/"
+rm -f "$GAME/.gdignore"
+mv "$GAME/project.godot.in" "$GAME/project.godot"
+python3 -c 'import sys, zipfile; zipfile.ZipFile(sys.argv[1]).extractall(sys.argv[2])' "$ZIP" "$GAME"
+
+# README, "Install", step 1: list the extension before the editor first sees the project.
+mkdir -p "$GAME/.godot"
+echo "res://addons/haptics/haptics.gdextension" >>"$GAME/.godot/extension_list.cfg"
+# Step 2, what enabling the plugin writes into project.godot.
+cat >>"$GAME/project.godot" <<'CFG'
+
+[autoload]
+
+Haptics="*res://addons/haptics/haptics.gd"
+
+[editor_plugins]
+
+enabled=PackedStringArray("res://addons/haptics/plugin.cfg")
+CFG
+
+fail() {
+	echo "test-addon: $1 (log below)" >&2
+	sed 's/^/    /' "$2" >&2
+	exit 1
+}
+errors() { grep -E '^(ERROR|SCRIPT ERROR|WARNING|USER ERROR|USER WARNING)' "$1" || true; }
+
+import_log="$GAME/.import.log"
+set +e
+"$ROOT/tools/godot" --headless --path "$GAME" --import >"$import_log" 2>&1
+rc=$?
+set -e
+[[ $rc -eq 0 ]] || fail "the first import exited $rc" "$import_log"
+[[ -z "$(errors "$import_log")" ]] || fail "the import printed errors" "$import_log"
+echo "test-addon: imported once, exit 0, no errors"
+
+run_log="$GAME/.run.log"
+set +e
+timeout 120 "$ROOT/tools/godot" --headless --path "$GAME" >"$run_log" 2>&1
+rc=$?
+set -e
+[[ $rc -eq 0 ]] || fail "the game exited $rc" "$run_log"
+[[ -z "$(errors "$run_log")" ]] || fail "the game printed errors" "$run_log"
+grep -E '^(impact|addon game):' "$run_log" | sed 's/^/test-addon: /'
+
+# What the plugin does on enable: list the extension once, keeping what else is listed.
+echo "res://elsewhere/other.gdextension" >"$GAME/.godot/extension_list.cfg"
+cat >"$GAME/list_check.gd" <<'GD'
+extends SceneTree
+
+
+func _init() -> void:
+	var plugin: Script = load("res://addons/haptics/plugin.gd")
+	for i: int in 2:
+		if not plugin.call(&"list_extension", "res://addons/haptics/haptics.gdextension"):
+			printerr("list_extension failed")
+	quit()
+GD
+"$ROOT/tools/godot" --headless --path "$GAME" -s res://list_check.gd >/dev/null 2>&1 || true
+expected=$'res://elsewhere/other.gdextension\nres://addons/haptics/haptics.gdextension'
+[[ "$(cat "$GAME/.godot/extension_list.cfg")" == "$expected" ]] ||
+	{ echo "test-addon: the plugin's list_extension wrote:" >&2; cat "$GAME/.godot/extension_list.cfg" >&2; exit 1; }
+echo "test-addon: the plugin lists the extension once, keeping the others"
+echo "test-addon: passed ($(du -h "$ZIP" | cut -f1) zip)"
