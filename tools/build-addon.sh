@@ -45,11 +45,7 @@ done
 cp scripts/haptics/addon/icons/*.svg "$ADDON/icons/"
 sed "s/@VERSION@/$VERSION/" scripts/haptics/addon/plugin.cfg >"$ADDON/plugin.cfg"
 cp scripts/haptics/addon/README.md "$ADDON/README.md"
-if [[ -f LICENSE ]]; then
-	cp LICENSE "$ADDON/LICENSE"
-else
-	echo "build-addon: warning: the project has no LICENSE file; the addon ships without one" >&2
-fi
+cp LICENSE "$ADDON/LICENSE"
 cp "${LIBS[@]}" "$ADDON/bin/"
 # Debug information stays in the build tree (it is most of the debug library's size).
 command -v strip >/dev/null && strip --strip-debug "$ADDON"/bin/*.so

@@ -108,4 +108,6 @@ for entry in "runtime/$name.loader=$loader_real" \
   cp -L "$doc/copyright" "$dir/licenses/$pkg/copyright"
   printf '%s\t%s\t%s\n' "$shipped" "$pkg" "${version:-unknown}" >>"$manifest"
 done
+# The game's own licence, next to those of what it ships.
+cp LICENSE "$dir/licenses/LICENSE"
 echo "bundle-runtime: $(ls "$runtime/lib" | wc -l) libraries, $(du -sh "$dir" | cut -f1) in $dir"
