@@ -92,6 +92,7 @@ const ConfigField FIELDS[] = {
 	// Haptic Battle Pong (pong/pong_config.h says why each default). Cross-field limits
 	// (the beginner plane inside the court, a contact spring the servo resolves) are in
 	// validate_pong_config.
+	{ "pong", "players", K::COUNT, 2.0, 4.0, "", nullptr, {}, nullptr, HAPTICS_FIELD(pong.players) },
 	{ "pong", "court_half_width_m", K::NUMBER, 0.5, 20.0, "m", nullptr, {}, nullptr, HAPTICS_FIELD(pong.court_half_width_m) },
 	{ "pong", "court_half_length_m", K::NUMBER, 0.5, 50.0, "m", nullptr, {}, nullptr, HAPTICS_FIELD(pong.court_half_length_m) },
 	{ "pong", "wall_height_m", K::NUMBER, 0.5, 20.0, "m", nullptr, {}, nullptr, HAPTICS_FIELD(pong.wall_height_m) },

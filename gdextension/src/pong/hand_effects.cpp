@@ -61,7 +61,7 @@ Vec3 HandEffects::force(const Slot &p_slot, double p_gain, const Vec3 &p_positio
 }
 
 Vec3 HandEffects::advance(double p_dt_s, const Vec3 &p_position_m, const Vec3 &p_velocity_m_per_s,
-		const Vec3 (&p_styluses)[PONG_PLAYERS]) {
+		const Vec3 (&p_styluses)[PONG_MAX_PLAYERS]) {
 	// First-order low-pass of the remote target: the owner's position arrives at frame rate
 	// (and over the network), and a step in it must not become a step in the force.
 	const double alpha = 1.0 - std::exp(-2.0 * std::numbers::pi * remote_cutoff_hz_ * p_dt_s);

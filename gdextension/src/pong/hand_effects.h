@@ -52,7 +52,7 @@ public:
 	// The sum of the running effects' forces this tick, then advances them by p_dt_s.
 	// p_styluses[i]: player i's stylus in its own device frame (REMOTE's owner).
 	Vec3 advance(double p_dt_s, const Vec3 &p_position_m, const Vec3 &p_velocity_m_per_s,
-			const Vec3 (&p_styluses)[PONG_PLAYERS]);
+			const Vec3 (&p_styluses)[PONG_MAX_PLAYERS]);
 	// The running effects, at most PONG_MAX_ACTIVE_EFFECTS; returns how many.
 	size_t list(PongEffectState *r_out) const;
 	bool running(PongEffectKind p_kind) const { return slots_[static_cast<size_t>(p_kind)].running; }

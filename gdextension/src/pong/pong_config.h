@@ -12,6 +12,9 @@ namespace haptics {
 
 struct PongConfig {
 	// --- Court --------------------------------------------------------------------------
+	// 2 (the paper's match: a rectangle split at z = 0) or 4 (a square court, one back wall
+	// each, territories split by the diagonals; court.h). Key "players".
+	int players = 2;
 	// 3 m x 6 m x 2.5 m: each half is 3 m x 3 m, which a 0.5 m paddle reach plus an avatar
 	// walking at game speed covers, and the ball has room to curve between bounces.
 	double court_half_width_m = 1.5;

@@ -50,7 +50,9 @@ struct PongInput {
 	// The player whose paddle the local device moves, or -1 for none (a match of game-driven
 	// paddles). Effects act on this player's hand.
 	int32_t local_player = 0;
-	PongPlayerInput players[PONG_PLAYERS] = { default_player_input(0), default_player_input(1) };
+	// The first PongConfig::players entries are used; the rest are ignored.
+	PongPlayerInput players[PONG_MAX_PLAYERS] = { default_player_input(0), default_player_input(1),
+		default_player_input(2), default_player_input(3) };
 };
 
 enum class PongEffectKind : int32_t {
@@ -88,7 +90,7 @@ struct PongCommand {
 	// Default: recoil_duration_s, hit_duration_s, mine_effect_duration_s.
 	double duration_s = 0.0;
 	bool use_default_duration = true;
-	int32_t owner = 1; // REMOTE: the player whose stylus pulls (the other one).
+	int32_t owner = 1; // REMOTE: the player whose stylus pulls (another one).
 };
 
 static_assert(std::is_trivially_copyable_v<PongInput>);
