@@ -128,6 +128,8 @@ const ConfigField FIELDS[] = {
 	{ "pong", "remote_stiffness_n_per_m", K::NUMBER, 0.0, 1000.0, "N/m", nullptr, {}, nullptr, HAPTICS_FIELD(pong.remote_stiffness_n_per_m) },
 	{ "pong", "remote_cutoff_hz", K::NUMBER, 0.1, 100.0, "Hz", nullptr, {}, nullptr, HAPTICS_FIELD(pong.remote_cutoff_hz) },
 	{ "pong", "remote_max_force_n", K::NUMBER, 0.0, 10.0, "N", nullptr, {}, nullptr, HAPTICS_FIELD(pong.remote_max_force_n) },
+	{ "pong", "remote_max_extrapolation_s", K::NUMBER, 0.0, 1.0, "s", nullptr, {}, nullptr, HAPTICS_FIELD(pong.remote_max_extrapolation_s) },
+	{ "pong", "remote_passivity", K::FLAG, 0.0, 1.0, "", nullptr, {}, nullptr, HAPTICS_FIELD(pong.remote_passivity) },
 	{ "pong", "beginner_height_m", K::NUMBER, 0.05, 2.0, "m", nullptr, {}, nullptr, HAPTICS_FIELD(pong.beginner_height_m) },
 	{ "pong", "beginner_target_half_width_m", K::NUMBER, 0.05, 1.5, "m", nullptr, {}, nullptr, HAPTICS_FIELD(pong.beginner_target_half_width_m) },
 };

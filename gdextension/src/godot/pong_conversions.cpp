@@ -49,12 +49,13 @@ bool read_player_input(const gd::Dictionary &p_entry, const std::string &p_path,
 		std::string &r_error) {
 	DictionaryReader reader(p_entry, p_path);
 	const bool ok = reader.only_keys({ "avatar", "kinematic", "paddle_offset", "paddle_velocity", "normal", "spin",
-							"gun", "active" }) &&
+							"gun", "active", "pose_age_s" }) &&
 			read_vec3(reader, "avatar", r_player.avatar) && reader.read_bool("kinematic", r_player.kinematic) &&
 			read_vec3(reader, "paddle_offset", r_player.paddle_offset) &&
 			read_vec3(reader, "paddle_velocity", r_player.paddle_velocity) &&
 			read_vec3(reader, "normal", r_player.normal) && reader.read_bool("spin", r_player.spin) &&
-			reader.read_bool("gun", r_player.gun) && reader.read_bool("active", r_player.active);
+			reader.read_bool("gun", r_player.gun) && reader.read_bool("active", r_player.active) &&
+			reader.read_number("pose_age_s", r_player.pose_age_s);
 	if (!ok) {
 		r_error = reader.error();
 	}

@@ -36,6 +36,11 @@ struct PongPlayerInput {
 	bool spin = false; // Spin mode: brushing the ball spins it.
 	bool gun = false; // Held as a gun: it does not touch the ball.
 	bool active = true; // In play.
+	// How old paddle_offset and paddle_velocity were when this input was handed over, s: 0
+	// for a paddle this machine drives, the sample's age for a remote player's (network
+	// delay, as the networking measures it). Only the remote-operation mine uses it: its
+	// target is this player's stylus moved on by its velocity over the age (hand_effects.h).
+	double pose_age_s = 0.0;
 };
 
 // A player's input before the game says otherwise: in play, its paddle facing the opponent.

@@ -183,7 +183,12 @@ void PongSim::pose_paddles(const HandSample *p_hand) {
 			pose.center = in.avatar + in.paddle_offset + in.paddle_velocity * tau;
 			pose.velocity = in.paddle_velocity;
 			pose.normal = in.normal;
-			styluses_[p] = side_rotation_inverse(p, (pose.center - in.avatar) / scale);
+			// The stylus as the input gave it (not moved on by tau: the remote target moves it on
+			// over the whole age, network delay included).
+			StylusSample &stylus = styluses_[p];
+			stylus.position_m = side_rotation_inverse(p, in.paddle_offset / scale);
+			stylus.velocity_m_per_s = side_rotation_inverse(p, (in.paddle_velocity - avatar_velocity_[p]) / scale);
+			stylus.age_s = in.pose_age_s + std::max(time_s_ - input_time_s_, 0.0);
 			continue;
 		}
 		if (!is_finite(*p_hand)) {
@@ -200,7 +205,7 @@ void PongSim::pose_paddles(const HandSample *p_hand) {
 				pose.normal = side_rotation(p, facing);
 			}
 		}
-		styluses_[p] = p_hand->position_m;
+		styluses_[p] = StylusSample{ p_hand->position_m, p_hand->velocity_m_per_s, 0.0 };
 		hand_position_m_ = p_hand->position_m;
 	}
 }

@@ -15,6 +15,10 @@
 //                orientation, else the input's normal
 //   every other paddle (game-driven):
 //     centre   = avatar + paddle_offset + paddle_velocity tau,  velocity = paddle_velocity
+// Each player's stylus (REMOTE's owner, hand_effects.h) in its device frame: the device's
+// reading for the device player (age 0); for the others paddle_offset / scale with velocity
+// (paddle_velocity - v_avatar) / scale, aged input.pose_age_s + tau (the network's delay of a
+// remote player's sample plus the time since the input).
 // v_avatar is estimated from successive inputs: the game moves the avatar at frame rate, and
 // without it the paddle would jump a few centimetres every frame while the avatar walks,
 // which the hand would feel as a force step. A jump faster than PONG_MAX_AVATAR_SPEED is a
@@ -117,7 +121,7 @@ private:
 	PaddleContactTracker trackers_[PONG_MAX_PLAYERS];
 	PaddlePose poses_[PONG_MAX_PLAYERS];
 	PaddleContact contacts_[PONG_MAX_PLAYERS];
-	Vec3 styluses_[PONG_MAX_PLAYERS]; // Each player's stylus in its own device frame.
+	StylusSample styluses_[PONG_MAX_PLAYERS]; // Each player's stylus in its own device frame.
 	Vec3 ball_force_;
 
 	HandEffects effects_;

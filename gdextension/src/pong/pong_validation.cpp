@@ -15,6 +15,9 @@ constexpr double MAX_SPEED_M_PER_S = 1000.0; // Capped to max_ball_speed by the 
 constexpr double MAX_SPIN_RAD_PER_S = 1e5; // Likewise max_spin.
 constexpr double MAX_EFFECT_FORCE_N = 100.0; // The safety stage caps at the device's peak.
 constexpr double MAX_EFFECT_DURATION_S = 600.0;
+// A sample older than this is not a network delay but a lost peer (issue 11 notices those in
+// about a second).
+constexpr double MAX_POSE_AGE_S = 10.0;
 
 // A player of a court of p_players (0..p_players - 1), or -1 when p_allow_none.
 Status check_player(const char *p_name, int32_t p_player, bool p_allow_none, int p_players) {
@@ -41,6 +44,8 @@ Status validate_pong_input(const PongInput &p_input) {
 		HAPTICS_RETURN_IF_ERROR(check_vector(name, player.paddle_velocity, false, MAX_SPEED_M_PER_S));
 		std::snprintf(name, sizeof(name), "pong_input.players[%d].normal", p);
 		HAPTICS_RETURN_IF_ERROR(check_vector(name, player.normal, true, 1e6));
+		std::snprintf(name, sizeof(name), "pong_input.players[%d].pose_age_s", p);
+		HAPTICS_RETURN_IF_ERROR(check_range(name, player.pose_age_s, 0.0, MAX_POSE_AGE_S));
 	}
 	return Status::success();
 }
