@@ -47,8 +47,9 @@ func fire(owner: int, origin: Vector3, axis: Vector3) -> Bullet:
 
 
 ## Moves every bullet by [param dt] seconds. [param avatars] holds every avatar's workspace
-## centre (a bullet hits the first other avatar it crosses). Returns the hits, each [code]{"owner", "victim", "position", "direction"}[/code]
-## (direction: the bullet's unit motion); hitting and leaving bullets are removed.
+## centre (a bullet hits the first other avatar it crosses). Returns the hits, each
+## [code]{"owner", "victim", "position", "direction"}[/code] (direction: the bullet's unit
+## motion); hitting and leaving bullets are removed.
 func advance(dt: float, court: PongCourt, avatars: Array[Vector3]) -> Array[Dictionary]:
 	for player: int in _cooldown.size():
 		_cooldown[player] = maxf(_cooldown[player] - dt, 0.0)

@@ -45,8 +45,9 @@ func _ready() -> void:
 	_ignore_mouse(self)
 
 
-## Names, colours and health of the players (two or four: as many as [param titles]); [param max_force] scales the plot;
-## [param two_players] shows the keyboard player's keys too.
+## Names, colours and health of the players (two or four: as many as [param titles]);
+## [param max_force] scales the plot; [param two_players] shows the keyboard player's keys
+## too.
 func setup(
 	titles: Array[String],
 	colors: Array[Color],
