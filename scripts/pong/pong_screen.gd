@@ -52,7 +52,7 @@ func _ready() -> void:
 	pause_menu.quit_requested.connect(_leave)
 	winner_screen.play_again_requested.connect(_play_again)
 	winner_screen.menu_requested.connect(_leave)
-	setup.start_requested.connect(start_match)
+	setup.start_requested.connect(_on_setup_start)
 	setup.back_requested.connect(_leave)
 	if not Haptics.pong.is_available():
 		setup.show_offline(OFFLINE_TEXT if not Haptics.is_available() else OLD_EXTENSION_TEXT)
@@ -107,6 +107,11 @@ func start_match(p_mode: PongMatch.Mode, p_beginner: bool) -> bool:
 		hud.flash("Beginner mode: send the ball into the target behind your opponent")
 	_running = true
 	return true
+
+
+func _on_setup_start(p_mode: PongMatch.Mode, p_beginner: bool) -> void:
+	players = setup.get_players()
+	start_match(p_mode, p_beginner)
 
 
 ## Whether a match runs (false on the setup or without the renderer).

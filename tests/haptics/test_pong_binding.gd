@@ -310,6 +310,12 @@ func test_four_players_a_square_court_four_states_and_back_wall_owners() -> void
 	var paddles: Array = state["players"]
 	assert_eq(paddles.size(), 4, "one paddle per player")
 	assert_eq(state["territory"], 2)
+	# A remote player's sample age (the network's delay) is part of a player's input.
+	players[3]["pose_age_s"] = 0.12
+	assert_true(server.set_pong_input({"local_player": -1, "players": players}))
+	players[3]["pose_age_s"] = -0.1
+	expect_error("pong_input.players[3].pose_age_s")
+	assert_false(server.set_pong_input({"local_player": -1, "players": players}))
 	# Two entries are still an input: seats 2 and 3 then have no paddle in play.
 	assert_true(server.set_pong_input(_flat_paddle()))
 	expect_error("pong_command.player must be 0..3 (got 4)")
