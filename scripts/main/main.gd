@@ -8,8 +8,9 @@ extends Node
 ## with exit code 0 at the goal or after [code]--autopilot-seconds=N[/code] (default 5).
 ## With [code]-- --pong-demo[/code] it plays a computer-vs-computer Pong match instead,
 ## the servo stepped by the game (faster than real time), each player starting with
-## [code]--pong-health=N[/code] (default [constant PONG_DEMO_HEALTH]), and prints the
-## winner and the simulated/wall time ratio.
+## [code]--pong-health=N[/code] (default [constant PONG_DEMO_HEALTH]), with
+## [code]--pong-players=4[/code] four computers on the square court (default 2), and
+## prints the winner and the simulated/wall time ratio.
 
 const MENU_SCENE: PackedScene = preload("res://scenes/ui/main_menu.tscn")
 const SETTINGS_SCENE: PackedScene = preload("res://scenes/ui/settings_screen.tscn")
@@ -39,13 +40,16 @@ func _ready() -> void:
 		return
 	var args: PackedStringArray = OS.get_cmdline_user_args()
 	var pong_health: int = PONG_DEMO_HEALTH
+	var pong_players: int = 2
 	for arg: String in args:
 		if arg.begins_with("--autopilot-seconds="):
 			autopilot_seconds = arg.get_slice("=", 1).to_float()
 		elif arg.begins_with("--pong-health="):
 			pong_health = maxi(1, arg.get_slice("=", 1).to_int())
+		elif arg.begins_with("--pong-players="):
+			pong_players = 4 if arg.get_slice("=", 1).to_int() == 4 else 2
 	if args.has("--pong-demo"):
-		start_pong_demo(pong_health)
+		start_pong_demo(pong_health, pong_players)
 		return
 	var headless: bool = DisplayServer.get_name() == "headless"
 	if headless or args.has("--autopilot"):
@@ -102,14 +106,15 @@ func show_pong() -> void:
 
 ## A computer-vs-computer match with the servo stepped by the game, printing its result
 ## and quitting when it is over.
-func start_pong_demo(health: int) -> void:
+func start_pong_demo(health: int, players: int = 2) -> void:
 	var pong: PongScreen = PONG_SCENE.instantiate() as PongScreen
 	pong.skip_setup = true
 	pong.mode = PongMatch.Mode.DEMO
 	pong.stepped = true
 	pong.start_health = health
+	pong.players = players
 	pong.quit_when_over = true
-	print("Pong demo: computer vs computer, health %d, stepped servo" % health)
+	print("Pong demo: %d computers, health %d, stepped servo" % [players, health])
 	_switch_to_node(pong)
 
 

@@ -61,6 +61,9 @@ var fire_interval_s: float = 2.5
 var gun_error_rad: float = 0.08
 ## In beginner mode (no gravity, shots at the target).
 var beginner: bool = false
+## The players it plays the ball to (one is picked per shot); the match keeps it to those
+## still in. Default: the player across.
+var targets: Array[int] = []
 
 var _court: PongCourt = null
 var _predictor: PongPredictor = null
@@ -75,6 +78,7 @@ var _resting_until: float = -1.0
 var _next_fire: float = 0.0
 var _aim_noise: Vector3 = Vector3.ZERO
 var _hit_noise: Vector3 = Vector3.ZERO
+var _target: int = -1
 
 
 ## [param reach]: how far the paddle may be from the avatar (the device workspace's
@@ -85,13 +89,14 @@ func _init(p_player: int, court: PongCourt, reach: float, seed_value: int = 1) -
 	_predictor = PongPredictor.new(court)
 	_reach = reach
 	_rng.seed = seed_value
+	targets = [PongCourt.opponent_of(player)]
 	intent.avatar = home()
 	intent.normal = _rest_normal()
 
 
 ## Where the avatar waits: the middle of its half, at the workspace height.
 func home() -> Vector3:
-	return _court.clamp_avatar(player, Vector3(0.0, 0.0, _court.back_wall_z(player) * 0.6))
+	return _court.clamp_avatar(player, _court.toward_back_wall(player, 0.6))
 
 
 ## The contact it aims at now (absolute time), or null.
@@ -149,13 +154,19 @@ func plan_contact(position: Vector3, velocity: Vector3, age: float, avatar: Vect
 
 ## The wanted velocity of the ball leaving its paddle at [param from] (before errors).
 func wanted_velocity(from: Vector3) -> Vector3:
-	var opponent: int = PongCourt.opponent_of(player)
+	var opponent: int = _target if targets.has(_target) else _pick_target()
 	if beginner:
-		var goal: Vector3 = Vector3(0.0, from.y, _court.back_wall_z(opponent)) + _aim_noise
-		goal.x = clampf(goal.x, -_court.target_half_width, _court.target_half_width)
+		# Along the wall: x for the walls of players 0 and 1, z for those of 2 and 3.
+		var along: Vector3 = Vector3.RIGHT if opponent < 2 else Vector3.BACK
+		var wall: Vector3 = _court.back_wall_centre(opponent)
+		var lateral: float = clampf(
+			_aim_noise.x, -_court.target_half_width, _court.target_half_width
+		)
+		var goal: Vector3 = wall + along * lateral
 		goal.y = from.y
 		return (goal - from).normalized() * minf(3.5, _court.max_ball_speed)
-	var land: Vector3 = Vector3(0.0, _court.ball_radius, _court.back_wall_z(opponent) * 0.6)
+	var land: Vector3 = _court.toward_back_wall(opponent, 0.6)
+	land.y = _court.ball_radius
 	land += Vector3(_aim_noise.x, 0.0, _aim_noise.z)
 	land = _court.clamp_inside(land, _court.ball_radius + 0.2)
 	var distance: float = Vector2(land.x - from.x, land.z - from.z).length()
@@ -196,7 +207,16 @@ func _replan(now: float) -> void:
 	_plan = plan
 
 
+func _pick_target() -> int:
+	if targets.is_empty():
+		return PongCourt.opponent_of(player)
+	if targets.size() == 1:
+		return targets[0]
+	return targets[_rng.randi_range(0, targets.size() - 1)]
+
+
 func _new_errors() -> void:
+	_target = _pick_target()
 	_aim_noise = Vector3(_rng.randfn(0.0, aim_error_m), 0.0, _rng.randfn(0.0, aim_error_m))
 	_hit_noise = Vector3(
 		_rng.randfn(0.0, hit_error_m), _rng.randfn(0.0, hit_error_m), _rng.randfn(0.0, hit_error_m)
@@ -204,7 +224,7 @@ func _new_errors() -> void:
 
 
 func _can_meet(p: Vector3, v: Vector3, time_left: float, avatar: Vector3) -> bool:
-	if PongCourt.territory_of(p) != player or absf(p.z) < 0.3:
+	if _court.territory_at(p) != player or p.dot(-PongCourt.forward(player)) < 0.3:
 		return false
 	if v.dot(PongCourt.forward(player)) >= 0.0:
 		return false
@@ -270,7 +290,7 @@ func _walk(dt: float) -> void:
 
 func _weapons(now: float, dt: float, ball: Vector3, velocity: Vector3, opponent: Vector3) -> void:
 	var away: bool = velocity.dot(PongCourt.forward(player)) > 0.5
-	var far: bool = PongCourt.territory_of(ball) != player
+	var far: bool = _court.territory_at(ball) != player
 	intent.gun = use_weapons and _plan == null and away and far
 	if intent.gun:
 		var muzzle: Vector3 = intent.avatar + intent.paddle_offset

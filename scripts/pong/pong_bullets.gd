@@ -28,7 +28,7 @@ const RADIUS_M: float = 0.035
 ## Bullets in flight.
 var flying: Array[Bullet] = []
 
-var _cooldown: PackedFloat32Array = PackedFloat32Array([0.0, 0.0])
+var _cooldown: PackedFloat32Array = PackedFloat32Array([0.0, 0.0, 0.0, 0.0])
 
 
 ## Whether [param player] may fire now.
@@ -46,19 +46,20 @@ func fire(owner: int, origin: Vector3, axis: Vector3) -> Bullet:
 	return bullet
 
 
-## Moves every bullet by [param dt] seconds. [param avatars] holds both avatars' workspace
-## centres. Returns the hits, each [code]{"owner", "victim", "position", "direction"}[/code]
-## (direction: the bullet's unit motion); hitting and leaving bullets are removed.
+## Moves every bullet by [param dt] seconds. [param avatars] holds every avatar's workspace
+## centre (a bullet hits the first other avatar it crosses). Returns the hits, each
+## [code]{"owner", "victim", "position", "direction"}[/code] (direction: the bullet's unit
+## motion); hitting and leaving bullets are removed.
 func advance(dt: float, court: PongCourt, avatars: Array[Vector3]) -> Array[Dictionary]:
-	for player: int in 2:
+	for player: int in _cooldown.size():
 		_cooldown[player] = maxf(_cooldown[player] - dt, 0.0)
 	var hits: Array[Dictionary] = []
 	var kept: Array[Bullet] = []
 	for bullet: Bullet in flying:
 		var start: Vector3 = bullet.position
 		bullet.position += bullet.velocity * dt
-		var victim: int = PongCourt.opponent_of(bullet.owner)
-		if _crosses_body(start, bullet.position, avatars[victim]):
+		var victim: int = _victim(bullet, start, avatars)
+		if victim >= 0:
 			(
 				hits
 				. append(
@@ -74,6 +75,14 @@ func advance(dt: float, court: PongCourt, avatars: Array[Vector3]) -> Array[Dict
 			kept.append(bullet)
 	flying = kept
 	return hits
+
+
+# The first avatar other than the owner's that the bullet's step crosses, or -1.
+func _victim(bullet: Bullet, start: Vector3, avatars: Array[Vector3]) -> int:
+	for player: int in avatars.size():
+		if player != bullet.owner and _crosses_body(start, bullet.position, avatars[player]):
+			return player
+	return -1
 
 
 ## Whether the segment [param from]-[param to] passes through the body of the avatar whose

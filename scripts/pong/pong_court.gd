@@ -7,14 +7,19 @@ extends RefCounted
 ## the game uses (avatar body, mines) is defined here, once.
 ##
 ## World: metres, y up, floor y = 0, x in [-W, W], z in [-L, L]. Player 0 ("near") owns
-## z >= 0, player 1 ("far") z < 0.
+## z >= 0, player 1 ("far") z < 0. With four players ([member players], the servo's
+## [code]pong.players[/code]) the court is square (W = L), player 2 sits at +x and player 3
+## at -x, each side is its player's back wall and the territories are split by the
+## diagonals (the servo's court.h; ties on a diagonal go to players 0 and 1).
 
 ## Radius of an avatar's body (bullet hits, mines under it), metres.
 const AVATAR_BODY_RADIUS_M: float = 0.22
 ## Distance an avatar keeps from the walls and from the centre line, metres.
 const AVATAR_MARGIN_M: float = 0.25
 
-## Half the court's width W (x), metres.
+## How many players the court has: 2 or 4.
+var players: int = 2
+## Half the court's width W (x), metres (L with four players: the court is square).
 var half_width: float = 0.0
 ## Half the court's length L (z), metres.
 var half_length: float = 0.0
@@ -58,6 +63,10 @@ static func from_config(pong: Dictionary) -> PongCourt:
 	court.beginner_height = court.number("beginner_height_m")
 	court.target_half_width = court.number("beginner_target_half_width_m")
 	court.restitution_paddle = court.number("restitution_paddle")
+	var count: float = pong.get("players", 2.0)
+	court.players = roundi(count)
+	if court.players == 4:
+		court.half_width = court.half_length
 	return court
 
 
@@ -70,42 +79,68 @@ func number(key: String) -> float:
 	return value
 
 
-## The territory a point is in: 0 (near, z >= 0) or 1 (far).
-static func territory_of(point: Vector3) -> int:
-	return 0 if point.z >= 0.0 else 1
+## The territory a point is in, in a court of [param count] players: 0 (near, z >= 0) or
+## 1 (far); with four, 2 (x > |z|) or 3 (-x > |z|) too.
+static func territory_of(point: Vector3, count: int = 2) -> int:
+	if count != 4 or absf(point.z) >= absf(point.x):
+		return 0 if point.z >= 0.0 else 1
+	return 2 if point.x > 0.0 else 3
 
 
-## The other player.
+## The territory of [param point] in this court.
+func territory_at(point: Vector3) -> int:
+	return territory_of(point, players)
+
+
+## The player across the court (0 and 1, 2 and 3).
 static func opponent_of(player: int) -> int:
-	return 1 - player
+	return player ^ 1
 
 
-## Player [param player]'s device frame in world axes: player 0's is the world's, player
-## 1 faces the other way (rotated 180 degrees about y).
+## Player [param player]'s device frame in world axes: turned about y so that its forward
+## (-z) points from its back wall at the centre (the servo's side_rotation): 0 degrees for
+## player 0, 180 for player 1, +90 for player 2, -90 for player 3.
 static func side_rotation(player: int) -> Basis:
-	return Basis.IDENTITY if player == 0 else Basis(Vector3.UP, PI)
+	const TURNS: Array[float] = [0.0, PI, PI * 0.5, -PI * 0.5]
+	return Basis(Vector3.UP, TURNS[player]) if player > 0 and player < 4 else Basis.IDENTITY
 
 
-## The horizontal direction from [param player] toward the opponent (-z for player 0).
+## The horizontal direction from [param player] toward the centre (-z for player 0).
 static func forward(player: int) -> Vector3:
-	return Vector3.FORWARD if player == 0 else Vector3.BACK
+	return (side_rotation(player) * Vector3.FORWARD).round()
 
 
-## z of [param player]'s back wall.
+## z of [param player]'s back wall (players 0 and 1).
 func back_wall_z(player: int) -> float:
 	return half_length if player == 0 else -half_length
 
 
-## Where an avatar may stand: [param point] kept inside [param player]'s half, away from
-## the walls and the centre line, at the workspace height.
+## The centre of [param player]'s back wall at floor level.
+func back_wall_centre(player: int) -> Vector3:
+	return -forward(player) * half_length
+
+
+## The point [param fraction] of the way from the centre to [param player]'s back wall.
+func toward_back_wall(player: int, fraction: float) -> Vector3:
+	return back_wall_centre(player) * fraction
+
+
+## Where an avatar may stand: [param point] kept inside [param player]'s territory, away
+## from the walls and the territory's borders, at the workspace height.
 func clamp_avatar(player: int, point: Vector3) -> Vector3:
-	var x_limit: float = maxf(half_width - AVATAR_MARGIN_M, 0.0)
+	# In the player's own frame it stands at +z, looking toward -z.
+	var local: Vector3 = side_rotation(player).inverse() * point
 	var near: float = AVATAR_MARGIN_M
 	var far: float = maxf(half_length - AVATAR_MARGIN_M, near)
-	var depth: float = clampf(absf(point.z) if _on_side(player, point.z) else 0.0, near, far)
-	return Vector3(
-		clampf(point.x, -x_limit, x_limit), beginner_height, depth * signf(back_wall_z(player))
-	)
+	var depth: float = clampf(local.z if local.z > 0.0 else 0.0, near, far)
+	var x_limit: float = maxf(half_width - AVATAR_MARGIN_M, 0.0)
+	if players == 4:
+		# The triangle z >= |x|: the margin off both diagonals.
+		depth = maxf(depth, near * 2.0)
+		x_limit = minf(x_limit, depth - near * sqrt(2.0))
+	var clamped: Vector3 = Vector3(clampf(local.x, -x_limit, x_limit), 0.0, depth)
+	var world: Vector3 = side_rotation(player) * clamped
+	return Vector3(world.x, beginner_height, world.z)
 
 
 ## A point kept inside the walls by [param margin] metres (floor to ceiling).
@@ -118,14 +153,12 @@ func clamp_inside(point: Vector3, margin: float) -> Vector3:
 
 
 ## Whether [param point] on [param player]'s back wall is within its target (beginner).
-func in_target(point: Vector3) -> bool:
-	return absf(point.x) <= target_half_width and point.y >= 0.0 and point.y <= wall_height
+func in_target(point: Vector3, player: int = 0) -> bool:
+	var along: float = (side_rotation(player).inverse() * point).x
+	return absf(along) <= target_half_width and point.y >= 0.0 and point.y <= wall_height
 
 
 ## The wall name a back-wall event of the servo uses for [param player]'s back wall.
 static func back_wall_name(player: int) -> String:
-	return "back_near" if player == 0 else "back_far"
-
-
-func _on_side(player: int, z: float) -> bool:
-	return territory_of(Vector3(0.0, 0.0, z)) == player and not is_zero_approx(z)
+	const NAMES: Array[String] = ["back_near", "back_far", "right", "left"]
+	return NAMES[player]

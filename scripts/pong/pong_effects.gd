@@ -20,10 +20,11 @@ const REMOTE_PULL: float = 0.7
 ## Ramp in and out, seconds (the servo's, from the configuration).
 var ramp_s: float = 0.25
 
-var _kind: PackedStringArray = PackedStringArray(["", ""])
-var _remaining: PackedFloat32Array = PackedFloat32Array([0.0, 0.0])
-var _elapsed: PackedFloat32Array = PackedFloat32Array([0.0, 0.0])
-var _owner: PackedInt32Array = PackedInt32Array([-1, -1])
+# One slot per seat of the largest court (four players).
+var _kind: PackedStringArray = PackedStringArray(["", "", "", ""])
+var _remaining: PackedFloat32Array = PackedFloat32Array([0.0, 0.0, 0.0, 0.0])
+var _elapsed: PackedFloat32Array = PackedFloat32Array([0.0, 0.0, 0.0, 0.0])
+var _owner: PackedInt32Array = PackedInt32Array([-1, -1, -1, -1])
 
 
 ## Starts [param kind] on [param player] for [param duration_s], placed by [param owner].
@@ -36,14 +37,14 @@ func start(player: int, kind: String, duration_s: float, owner: int) -> void:
 
 ## Ends every effect.
 func clear() -> void:
-	for player: int in 2:
+	for player: int in _kind.size():
 		_kind[player] = ""
 		_remaining[player] = 0.0
 
 
 ## Advances the clocks by [param dt] seconds; an effect whose time is up ends.
 func advance(dt: float) -> void:
-	for player: int in 2:
+	for player: int in _kind.size():
 		if _kind[player].is_empty():
 			continue
 		_elapsed[player] += dt

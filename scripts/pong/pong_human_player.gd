@@ -80,7 +80,7 @@ func _init(
 	_court = court
 	_reach = reach
 	_workspace_radius = workspace_radius
-	intent.avatar = court.clamp_avatar(player, Vector3(0, 0, court.back_wall_z(player) * 0.6))
+	intent.avatar = court.clamp_avatar(player, court.toward_back_wall(player, 0.6))
 	intent.normal = _normal()
 
 

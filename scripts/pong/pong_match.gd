@@ -24,7 +24,12 @@ signal bullet_fired(bullet: PongBullets.Bullet)
 ## [param hit]: {owner, victim, position, direction}.
 signal bullet_hit(hit: Dictionary)
 signal match_over(winner: int)
+## With more than two players: [param player] ran out of health and is out.
+signal player_out(player: int)
 
+## VS_COMPUTER: player 0 is the device (or keyboard), the others the computer.
+## TWO_PLAYERS: players 0 and 1 are people, players 2 and 3 (four-player court) the
+## computer. DEMO: the computer plays every side.
 enum Mode { VS_COMPUTER, TWO_PLAYERS, DEMO }
 
 const STEP_CHUNK_S: float = 0.01
@@ -35,6 +40,8 @@ const MINE_RUMBLE_N: float = 1.2
 @export var mode: Mode = Mode.VS_COMPUTER
 @export var beginner: bool = false
 @export var start_health: int = PongRules.DEFAULT_START_HEALTH
+## 2, or 4 on a square court (the servo's pong.players, set at start and restored after).
+@export_enum("2:2", "4:4") var players: int = 2
 ## Run the servo by hand (no thread), faster than real time when it can.
 @export var stepped: bool = false
 ## Simulated seconds per wall second in stepped mode (0: as fast as it goes).
@@ -72,24 +79,34 @@ var _telemetry_capacity: int = 0
 var _stopped_servo: bool = false
 var _wall_start_us: int = 0
 var _paused_ball: PongSnapshot = null
+var _previous_players: int = -1
 
 
 ## Sets the match up and starts it; false (and nothing changes) without the Pong renderer.
 func start() -> bool:
 	if not Haptics.pong.is_available():
 		return false
+	var configured_count: float = Haptics.pong.get_config().get("players", 2.0)
+	var configured: int = roundi(configured_count)
+	if configured != players:
+		if not Haptics.pong.configure({"players": players}):
+			return false
+		_previous_players = configured
 	court = PongCourt.from_config(Haptics.pong.get_config())
 	effects.ramp_s = court.number("mine_effect_ramp_s")
-	rules = PongRules.new(start_health)
+	rules = PongRules.new(start_health, court.players)
 	rules.health_changed.connect(health_changed.emit)
 	rules.match_over.connect(_on_match_over)
+	rules.player_out.connect(_on_player_out)
+	referee.players = court.players
 	var radius: float = Haptics.device.get_workspace_radius()
 	reach = radius * court.workspace_scale
 	local_player = 0 if mode != Mode.DEMO and _device_usable() else -1
 	_device_orientation = Haptics.device.get_capabilities().get("has_orientation", false) == true
 	controllers.clear()
-	for player: int in 2:
+	for player: int in court.players:
 		controllers.append(_make_controller(player, radius))
+	_retarget()
 	Haptics.hand_follows_input = false
 	Haptics.pong.enter()
 	if stepped and Haptics.servo.is_running():
@@ -114,6 +131,8 @@ func _exit_tree() -> void:
 		return
 	Haptics.pong.set_hand_target_3d(Vector3.ZERO)
 	Haptics.pong.leave()
+	if _previous_players > 0:
+		Haptics.pong.configure({"players": _previous_players})
 	Haptics.hand_follows_input = true
 	if _stopped_servo:
 		Haptics.servo.start()
@@ -183,6 +202,10 @@ func advance(dt: float) -> void:
 
 ## Serves now toward the referee's receiver.
 func serve() -> void:
+	for skip: int in court.players:
+		if not rules.is_out(referee.receiver):
+			break
+		referee.receiver = (referee.receiver + 1) % court.players
 	var receiver: int = referee.receiver
 	var ball: PongReferee.Serve = referee.make_serve(
 		court, controllers[receiver].intent.avatar, beginner
@@ -246,7 +269,7 @@ func _unhandled_input(event: InputEvent) -> void:
 
 func _make_controller(player: int, radius: float) -> PongController:
 	var controller: PongController
-	if mode == Mode.DEMO or (mode == Mode.VS_COMPUTER and player == 1):
+	if mode == Mode.DEMO or (mode == Mode.VS_COMPUTER and player != 0) or player >= 2:
 		var ai: PongAi = PongAi.new(player, court, reach, ai_seed + player)
 		ai.beginner = beginner
 		controller = ai
@@ -276,7 +299,10 @@ func _on_event(event: Dictionary) -> void:
 
 
 func _move_bullets(dt: float) -> void:
-	var avatars: Array[Vector3] = [avatar_of(0), avatar_of(1)]
+	var avatars: Array[Vector3] = []
+	for player: int in court.players:
+		# A player who is out is off the court: far below it, where no bullet flies.
+		avatars.append(avatar_of(player) if not rules.is_out(player) else Vector3.DOWN * 100.0)
 	for hit: Dictionary in bullets.advance(dt, court, avatars):
 		var victim: int = hit["victim"]
 		var direction: Vector3 = hit["direction"]
@@ -293,7 +319,9 @@ func _move_bullets(dt: float) -> void:
 
 
 func _check_mines() -> void:
-	for player: int in 2:
+	for player: int in court.players:
+		if rules.is_out(player):
+			continue
 		var mine: PongMines.Mine = mines.step_on(player, avatar_of(player))
 		if mine == null:
 			continue
@@ -325,10 +353,12 @@ func _effect_magnitude(kind: String) -> float:
 
 
 func _decide(dt: float) -> void:
-	for player: int in 2:
+	for player: int in court.players:
+		if rules.is_out(player):
+			continue
 		var controller: PongController = controllers[player]
 		controller.speed_factor = effects.speed_factor(player)
-		var other: Vector3 = avatar_of(PongCourt.opponent_of(player))
+		var other: Vector3 = avatar_of(_opponent_in(player))
 		var intent: PongIntent = controller.update(now, dt, snapshot, other)
 		if intent.fire and intent.gun and not rules.is_over():
 			_fire(player)
@@ -359,8 +389,8 @@ func _fire(player: int) -> void:
 
 
 func _send_input() -> void:
-	var players: Array[Dictionary] = []
-	for player: int in 2:
+	var entries: Array[Dictionary] = []
+	for player: int in court.players:
 		var controller: PongController = controllers[player]
 		var entry: Dictionary = controller.intent.to_input(controller.kinematic)
 		if controller.kinematic:
@@ -371,10 +401,35 @@ func _send_input() -> void:
 			entry["paddle_offset"] = effects.affect_offset(
 				player, controller.intent.paddle_offset, owner_offset
 			)
-		entry["active"] = _paused_ball == null
-		players.append(entry)
-	Haptics.pong.set_input({"beginner": beginner, "local_player": local_player, "players": players})
+		entry["active"] = _paused_ball == null and not rules.is_out(player)
+		entries.append(entry)
+	Haptics.pong.set_input({"beginner": beginner, "local_player": local_player, "players": entries})
 
 
 func _on_match_over(winner: int) -> void:
 	match_over.emit(winner)
+
+
+func _on_player_out(player: int) -> void:
+	_retarget()
+	player_out.emit(player)
+
+
+# The player across when still in, else the first one still in.
+func _opponent_in(player: int) -> int:
+	var across: int = PongCourt.opponent_of(player)
+	if across < court.players and not rules.is_out(across):
+		return across
+	for other: int in rules.alive():
+		if other != player:
+			return other
+	return across
+
+
+# The computer plays the ball to the players still in.
+func _retarget() -> void:
+	var left: Array[int] = rules.alive()
+	for controller: PongController in controllers:
+		if controller is PongAi:
+			var ai: PongAi = controller
+			ai.targets.assign(left.filter(func(p: int) -> bool: return p != ai.player))

@@ -40,7 +40,7 @@ const TRIGGER_RADIUS_M: float = PongCourt.AVATAR_BODY_RADIUS_M + 0.13
 ## Mines on the court, not yet set off.
 var placed: Array[Mine] = []
 
-var _used: PackedInt32Array = PackedInt32Array([0, 0])
+var _used: PackedInt32Array = PackedInt32Array([0, 0, 0, 0])
 
 
 ## How many mines [param player] still holds.
@@ -56,6 +56,14 @@ func next_kind(player: int) -> String:
 ## Where [param owner]'s mine would land with its avatar at [param avatar] (the rule
 ## above).
 static func landing_point(owner: int, avatar: Vector3, court: PongCourt) -> Vector3:
+	if court.players == 4:
+		# The same spot seen from the player across: its own frame's (x, depth).
+		var local: Vector3 = PongCourt.side_rotation(owner).inverse() * avatar
+		var spot: Vector3 = court.clamp_avatar(
+			PongCourt.opponent_of(owner),
+			PongCourt.side_rotation(PongCourt.opponent_of(owner)) * Vector3(local.x, 0.0, local.z)
+		)
+		return Vector3(spot.x, 0.0, spot.z)
 	var depth: float = clampf(
 		absf(avatar.z), MIN_NET_DISTANCE_M, court.half_length - TRIGGER_RADIUS_M
 	)

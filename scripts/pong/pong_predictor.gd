@@ -91,13 +91,13 @@ static func velocity_at(segments: Array[Segment], t: float) -> Vector3:
 	return _segment_at(segments, t).velocity_at(t)
 
 
-## When the path first touches the floor with z on [param player]'s side (-1: not within
-## the path).
-static func first_floor_time_in(segments: Array[Segment], player: int) -> float:
+## When the path first touches the floor in [param player]'s territory of a court of
+## [param count] players (-1: not within the path).
+static func first_floor_time_in(segments: Array[Segment], player: int, count: int = 2) -> float:
 	for i: int in segments.size() - 1:
 		if segments[i].ends_with == "floor":
 			var next: Segment = segments[i + 1]
-			if PongCourt.territory_of(next.position) == player:
+			if PongCourt.territory_of(next.position, count) == player:
 				return next.start
 	return -1.0
 

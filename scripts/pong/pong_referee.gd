@@ -6,7 +6,8 @@ extends RefCounted
 ## [br]- after a stall: the ball slower than [constant STALL_SPEED_M_PER_S] for more than
 ## [constant STALL_SECONDS] (it rolls or rests and nobody can reach it);
 ## [br]- in beginner mode, [constant GOAL_SERVE_DELAY_S] after a goal.
-## Receivers alternate, player 0 first. A serve reaches the receiver's workspace centre
+## Receivers take turns, player 0 first (then 1, 2, 3 with four players; the match skips
+## players who are out). A serve reaches the receiver's workspace centre
 ## after [constant SERVE_FLIGHT_S] (under gravity: a lob that comes down into the
 ## workspace; in beginner mode: straight, in the ball's plane, at
 ## [constant BEGINNER_SERVE_SPEED_M_PER_S]).
@@ -29,6 +30,8 @@ const BEGINNER_SERVE_SPEED_M_PER_S: float = 2.5
 
 ## The player the next serve goes to.
 var receiver: int = 0
+## How many players take turns receiving.
+var players: int = 2
 ## Serves made so far.
 var serves: int = 0
 
@@ -69,7 +72,7 @@ func make_serve(court: PongCourt, target: Vector3, beginner: bool) -> Serve:
 		serve.velocity = (aim - serve.position).normalized() * BEGINNER_SERVE_SPEED_M_PER_S
 	else:
 		serve.velocity = launch_velocity(serve.position, target, court.gravity, SERVE_FLIGHT_S)
-	receiver = PongCourt.opponent_of(receiver)
+	receiver = (receiver + 1) % players
 	serves += 1
 	_countdown = -1.0
 	_still_for = 0.0

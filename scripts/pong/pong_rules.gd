@@ -5,10 +5,15 @@ extends RefCounted
 ## floor of one's own territory, a bullet on one's avatar, an opponent's mine stepped on,
 ## and in beginner mode the ball hitting the target on one's back wall. The first player at
 ## 0 loses; the match is then over and health changes no more.
+## [br]With more than two players ([member players]) a goal is the ball hitting a player's
+## back wall anywhere (the target in beginner mode); a player at 0 is out (its territory
+## costs nobody any more) and the match ends when one player is left, the winner.
 
 ## A player's health changed: [param cause] is one of the [code]CAUSE_*[/code] names.
 signal health_changed(player: int, health: int, cause: StringName)
-## A player's health reached 0: the other one, [param winner], wins.
+## A player's health reached 0 in a match of more than two: it is out.
+signal player_out(player: int)
+## One player is left: [param winner] wins.
 signal match_over(winner: int)
 
 ## Health at the start of a match unless the game says otherwise (the paper's 99).
@@ -26,21 +31,40 @@ const DAMAGE: Dictionary[StringName, int] = {
 
 ## Health each player starts with.
 var start_health: int = DEFAULT_START_HEALTH
+## How many players (2 or 4).
+var players: int = 2
 ## The winner's index, or -1 while the match goes on.
 var winner: int = -1
 
 var _health: PackedInt32Array = PackedInt32Array([0, 0])
 
 
-func _init(p_start_health: int = DEFAULT_START_HEALTH) -> void:
+func _init(p_start_health: int = DEFAULT_START_HEALTH, p_players: int = 2) -> void:
 	start_health = maxi(p_start_health, 1)
+	players = clampi(p_players, 2, 4)
 	reset()
 
 
 ## A new match: full health, no winner.
 func reset() -> void:
-	_health = PackedInt32Array([start_health, start_health])
+	_health = PackedInt32Array()
+	for player: int in players:
+		_health.append(start_health)
 	winner = -1
+
+
+## Whether [param player] is out of health (out of the match).
+func is_out(player: int) -> bool:
+	return _health[player] <= 0
+
+
+## The players still in, in index order.
+func alive() -> Array[int]:
+	var left: Array[int] = []
+	for player: int in players:
+		if not is_out(player):
+			left.append(player)
+	return left
 
 
 func get_health(player: int) -> int:
@@ -55,7 +79,7 @@ func is_over() -> bool:
 ## [param player] loses the health [param cause] costs (nothing once the match is over).
 ## Returns the health lost.
 func hurt(player: int, cause: StringName) -> int:
-	if is_over() or player < 0 or player > 1:
+	if is_over() or player < 0 or player >= players or is_out(player):
 		return 0
 	if not DAMAGE.has(cause):
 		push_error("PongRules.hurt: unknown cause '%s'." % cause)
@@ -64,25 +88,44 @@ func hurt(player: int, cause: StringName) -> int:
 	_health[player] -= lost
 	health_changed.emit(player, _health[player], cause)
 	if _health[player] == 0:
-		winner = PongCourt.opponent_of(player)
-		match_over.emit(winner)
+		var left: Array[int] = alive()
+		if players > 2:
+			player_out.emit(player)
+		if left.size() == 1:
+			winner = left[0]
+			match_over.emit(winner)
 	return lost
 
 
 ## Applies one event of the servo ([code]drain_pong_events()[/code]): a floor bounce costs
-## the player whose territory it is in; in [param beginner] mode a back-wall hit within the
-## target costs that wall's owner. Returns the player hurt, or -1.
+## the player whose territory it is in; a back-wall hit costs that wall's owner, within the
+## target in [param beginner] mode, anywhere with more than two players (two-player
+## matches outside beginner mode score floor bounces only, the paper's rule). Returns the
+## player hurt, or -1.
 func apply_event(event: Dictionary, court: PongCourt, beginner: bool) -> int:
 	match str(event.get("type", "")):
 		"floor":
 			var territory: int = event.get("territory", -1)
 			return territory if hurt(territory, CAUSE_FLOOR) > 0 else -1
 		"wall":
-			if not beginner:
+			if not beginner and players == 2:
+				return -1
+			var owner: int = _back_wall_owner(event)
+			if owner < 0:
 				return -1
 			var position: Vector3 = event.get("position", Vector3.ZERO)
-			for player: int in 2:
-				if str(event.get("wall", "")) == PongCourt.back_wall_name(player):
-					if court.in_target(position) and hurt(player, CAUSE_GOAL) > 0:
-						return player
+			if beginner and not court.in_target(position, owner):
+				return -1
+			return owner if hurt(owner, CAUSE_GOAL) > 0 else -1
+	return -1
+
+
+# The servo names the goal's owner (back_wall_of); older events only the wall.
+func _back_wall_owner(event: Dictionary) -> int:
+	if event.has("back_wall_of"):
+		var owner: int = event["back_wall_of"]
+		return owner if owner < players else -1
+	for player: int in players:
+		if str(event.get("wall", "")) == PongCourt.back_wall_name(player):
+			return player
 	return -1

@@ -29,6 +29,8 @@ const OLD_EXTENSION_TEXT: String = (
 @export var mode: PongMatch.Mode = PongMatch.Mode.VS_COMPUTER
 @export var beginner: bool = false
 @export var start_health: int = PongRules.DEFAULT_START_HEALTH
+## 2, or 4 on a square court.
+@export_enum("2:2", "4:4") var players: int = 2
 ## Run the servo by hand, faster than real time (computer vs computer).
 @export var stepped: bool = false
 ## Print the result and quit when the match is over (headless demo).
@@ -50,7 +52,7 @@ func _ready() -> void:
 	pause_menu.quit_requested.connect(_leave)
 	winner_screen.play_again_requested.connect(_play_again)
 	winner_screen.menu_requested.connect(_leave)
-	setup.start_requested.connect(start_match)
+	setup.start_requested.connect(_on_setup_start)
 	setup.back_requested.connect(_leave)
 	if not Haptics.pong.is_available():
 		setup.show_offline(OFFLINE_TEXT if not Haptics.is_available() else OLD_EXTENSION_TEXT)
@@ -75,15 +77,19 @@ func start_match(p_mode: PongMatch.Mode, p_beginner: bool) -> bool:
 	match_node.mode = mode
 	match_node.beginner = beginner
 	match_node.start_health = start_health
+	match_node.players = players
 	match_node.stepped = stepped
 	if not match_node.start():
 		setup.show_offline(OLD_EXTENSION_TEXT)
 		return false
 	setup.visible = false
-	world.build(match_node.court, match_node.reach, beginner)
+	world.build(match_node.court, match_node.reach, beginner, maxi(match_node.local_player, 0))
 	var max_force: float = Haptics.device.get_max_force()
+	var titles: Array[String] = []
+	for player: int in match_node.court.players:
+		titles.append(player_name(player))
 	hud.setup(
-		[player_name(0), player_name(1)],
+		titles,
 		PongView.PLAYER_COLORS,
 		start_health,
 		max_force if max_force > 0.0 else Hud.FALLBACK_MAX_FORCE,
@@ -96,10 +102,16 @@ func start_match(p_mode: PongMatch.Mode, p_beginner: bool) -> bool:
 	match_node.mine_exploded.connect(_on_mine_exploded)
 	match_node.bullet_hit.connect(_on_bullet_hit)
 	match_node.match_over.connect(_on_match_over)
+	match_node.player_out.connect(_on_player_out)
 	if beginner:
 		hud.flash("Beginner mode: send the ball into the target behind your opponent")
 	_running = true
 	return true
+
+
+func _on_setup_start(p_mode: PongMatch.Mode, p_beginner: bool) -> void:
+	players = setup.get_players()
+	start_match(p_mode, p_beginner)
 
 
 ## Whether a match runs (false on the setup or without the renderer).
@@ -149,17 +161,25 @@ func _on_bullet_hit(hit: Dictionary) -> void:
 	hud.flash("%s is hit!" % player_name(victim))
 
 
+func _on_player_out(player: int) -> void:
+	hud.flash("%s is out!" % player_name(player))
+	if quit_when_over:
+		print("Pong: %s is out at %.1f s" % [player_name(player), match_node.now])
+
+
 func _on_match_over(winner: int) -> void:
 	pause_menu.enabled = false
-	var health: Array[int] = [match_node.rules.get_health(0), match_node.rules.get_health(1)]
+	var health: Array[int] = []
+	for player: int in match_node.court.players:
+		health.append(match_node.rules.get_health(player))
 	if quit_when_over:
 		print(
 			(
-				"Pong: %s wins, health %d : %d, %.1f simulated s in %.1f wall s (%.1fx real time)"
+				"Pong: %s wins, %d players, health %s, %.1f simulated s in %.1f wall s (%.1fx real time)"
 				% [
 					player_name(winner),
-					health[0],
-					health[1],
+					health.size(),
+					" : ".join(health.map(func(h: int) -> String: return str(h))),
 					match_node.now,
 					match_node.now / maxf(match_node.speed_ratio(), 1e-6),
 					match_node.speed_ratio(),

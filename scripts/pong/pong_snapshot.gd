@@ -11,9 +11,14 @@ var ball_velocity: Vector3 = Vector3.ZERO
 var ball_spin: Vector3 = Vector3.ZERO
 ## The territory the ball is in.
 var territory: int = 0
-var paddle_centers: PackedVector3Array = PackedVector3Array([Vector3.ZERO, Vector3.ZERO])
-var paddle_normals: PackedVector3Array = PackedVector3Array([Vector3.FORWARD, Vector3.BACK])
-var in_contact: Array[bool] = [false, false]
+## One entry per seat of the largest court (four); the state fills as many as it has.
+var paddle_centers: PackedVector3Array = PackedVector3Array(
+	[Vector3.ZERO, Vector3.ZERO, Vector3.ZERO, Vector3.ZERO]
+)
+var paddle_normals: PackedVector3Array = PackedVector3Array(
+	[Vector3.FORWARD, Vector3.BACK, Vector3.LEFT, Vector3.RIGHT]
+)
+var in_contact: Array[bool] = [false, false, false, false]
 ## Hand force components (device space, N): contact, spin, effects, total.
 var hand_force: Dictionary[String, Vector3] = {}
 ## The device player's active effects, each {kind, remaining_s}.
@@ -33,7 +38,7 @@ static func from_state(state: Dictionary) -> PongSnapshot:
 	snapshot.ball_spin = ball.get("spin", Vector3.ZERO)
 	snapshot.territory = state.get("territory", 0)
 	var players: Array = state.get("players", [])
-	for i: int in mini(players.size(), 2):
+	for i: int in mini(players.size(), snapshot.paddle_centers.size()):
 		var entry: Dictionary = players[i]
 		snapshot.paddle_centers[i] = entry.get("paddle_center", Vector3.ZERO)
 		snapshot.paddle_normals[i] = entry.get("normal", Vector3.FORWARD)

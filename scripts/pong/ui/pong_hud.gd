@@ -28,21 +28,26 @@ var _message_left: float = 0.0
 
 
 func _ready() -> void:
-	for side: int in 2:
+	# Four panels, players 2 and 3 shown only in a four-player match: 0, 2 left, 3, 1 right.
+	for side: int in 4:
 		var panel: PongPlayerPanel = PongPlayerPanel.new()
 		panel.name = "Player%d" % side
+		panel.visible = side < 2
 		_panels.append(panel)
 	var gap: Control = Control.new()
 	gap.size_flags_horizontal = Control.SIZE_EXPAND_FILL
 	gap.mouse_filter = Control.MOUSE_FILTER_IGNORE
 	_top.add_child(_panels[0])
+	_top.add_child(_panels[2])
 	_top.add_child(gap)
+	_top.add_child(_panels[3])
 	_top.add_child(_panels[1])
 	_ignore_mouse(self)
 
 
-## Names, colours and health of the two players; [param max_force] scales the plot;
-## [param two_players] shows the keyboard player's keys too.
+## Names, colours and health of the players (two or four: as many as [param titles]);
+## [param max_force] scales the plot; [param two_players] shows the keyboard player's keys
+## too.
 func setup(
 	titles: Array[String],
 	colors: Array[Color],
@@ -50,8 +55,10 @@ func setup(
 	max_force: float,
 	two_players: bool
 ) -> void:
-	for side: int in 2:
-		_panels[side].set_player(titles[side], colors[side], max_health)
+	for side: int in _panels.size():
+		_panels[side].visible = side < titles.size()
+		if side < titles.size():
+			_panels[side].set_player(titles[side], colors[side], max_health)
 	_plot.y_max = max_force
 	_controls.text = CONTROLS + ("\n" + KEYBOARD_CONTROLS if two_players else "")
 
@@ -64,7 +71,7 @@ func flash(text: String) -> void:
 
 ## Refreshes everything from [param match_node].
 func refresh(match_node: PongMatch, delta: float) -> void:
-	for side: int in 2:
+	for side: int in match_node.controllers.size():
 		var panel: PongPlayerPanel = _panels[side]
 		var intent: PongIntent = match_node.controllers[side].intent
 		panel.show_health(match_node.rules.get_health(side))

@@ -1,7 +1,8 @@
 class_name PongSetup
 extends CanvasLayer
 ## The first thing the Pong screen shows: who plays (against the computer, two players on
-## one machine, computer against computer) and beginner mode, or, without the extension's
+## one machine, computer against computer), beginner mode and the court (two players, or
+## four on a square court, the computer taking the sides nobody plays), or, without the extension's
 ## Pong renderer, why there is no game. It only emits signals.
 
 ## Start a match in [param mode] (a [enum PongMatch.Mode]).
@@ -12,6 +13,7 @@ signal back_requested
 @onready var two_players_button: Button = %TwoPlayersButton
 @onready var demo_button: Button = %DemoButton
 @onready var beginner_check: CheckBox = %BeginnerCheck
+@onready var four_players_check: CheckBox = %FourPlayersCheck
 @onready var back_button: Button = %BackButton
 @onready var _buttons: Control = %Buttons
 @onready var _subtitle: Label = %Subtitle
@@ -36,6 +38,11 @@ func show_offline(reason: String) -> void:
 	_subtitle.text = reason
 	_buttons.visible = false
 	UiFocus.grab_later(back_button)
+
+
+## How many players the court is set for: 2, or 4 when [member four_players_check] is on.
+func get_players() -> int:
+	return 4 if four_players_check.button_pressed else 2
 
 
 ## The text under the heading.

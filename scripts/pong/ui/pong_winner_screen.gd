@@ -23,7 +23,7 @@ func _ready() -> void:
 ## [param pause] pauses the tree (a headless demo keeps running to print its result).
 func show_winner(winner_name: String, health: Array[int], pause: bool = true) -> void:
 	_heading.text = "%s wins!" % winner_name
-	_summary.text = "Health %d : %d" % [health[0], health[1]]
+	_summary.text = "Health " + " : ".join(health.map(func(h: int) -> String: return str(h)))
 	visible = true
 	if pause:
 		get_tree().paused = true

@@ -7,7 +7,12 @@ extends Node3D
 ## walls (the near one as a frame and a strip on the floor: the camera looks through it).
 
 const GRID_STEP_M: float = 0.5
-const FLOOR_COLORS: Array[Color] = [Color(0.09, 0.17, 0.28), Color(0.27, 0.12, 0.11)]
+const FLOOR_COLORS: Array[Color] = [
+	Color(0.09, 0.17, 0.28),
+	Color(0.27, 0.12, 0.11),
+	Color(0.1, 0.24, 0.13),
+	Color(0.24, 0.13, 0.27)
+]
 const LINE_COLOR: Color = Color(0.9, 0.95, 1.0, 0.9)
 const GRID_COLOR: Color = Color(0.85, 0.92, 1.0, 0.16)
 const GLASS_COLOR: Color = Color(0.55, 0.75, 0.95, 0.1)
@@ -17,11 +22,15 @@ const TARGET_FRAME_COLOR: Color = Color(1.0, 0.85, 0.25, 1.0)
 const TARGET_BAR_M: float = 0.04
 
 
-## Builds the court (again: children from a previous build are removed).
-func build(court: PongCourt, beginner: bool) -> void:
+## Builds the court (again: children from a previous build are removed). With four
+## players, [param viewer] is the player the camera sits behind (its wall is left open).
+func build(court: PongCourt, beginner: bool, viewer: int = 0) -> void:
 	for child: Node in get_children():
 		remove_child(child)
 		child.queue_free()
+	if court.players == 4:
+		_build_square(court, beginner, viewer)
+		return
 	var w: float = court.half_width
 	var l: float = court.half_length
 	var h: float = court.wall_height
@@ -71,6 +80,51 @@ func _target(court: PongCourt, player: int) -> void:
 		area.position = Vector3(0.0, 0.004, z - 0.15)
 	area.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
 	add_child(area)
+
+
+# The 4-player court: a floor triangle per player in its colour, the diagonals, glass on
+# every wall but the viewer's, and in beginner mode a target on each of those walls.
+func _build_square(court: PongCourt, beginner: bool, viewer: int) -> void:
+	var l: float = court.half_length
+	var h: float = court.wall_height
+	for player: int in 4:
+		var seat: Basis = PongCourt.side_rotation(player)
+		var floor_mesh: ImmediateMesh = ImmediateMesh.new()
+		floor_mesh.surface_begin(Mesh.PRIMITIVE_TRIANGLES, _material(FLOOR_COLORS[player], false))
+		for corner: Vector3 in [Vector3.ZERO, Vector3(-l, 0.0, l), Vector3(l, 0.0, l)]:
+			floor_mesh.surface_set_normal(Vector3.UP)
+			floor_mesh.surface_add_vertex(seat * corner)
+		floor_mesh.surface_end()
+		var triangle: MeshInstance3D = _instance(floor_mesh, "Floor%d" % player)
+		(triangle.mesh.surface_get_material(0) as StandardMaterial3D).cull_mode = (
+			BaseMaterial3D.CULL_DISABLED
+		)
+		add_child(triangle)
+		if player != viewer:
+			var wall: Vector3 = court.back_wall_centre(player)
+			var size: Vector3 = (
+				Vector3(2.0 * l, h, 0.02) if player < 2 else Vector3(0.02, h, 2.0 * l)
+			)
+			_glass_wall(size, Vector3(wall.x, h * 0.5, wall.z), "Wall%d" % player)
+			if beginner:
+				var target_width: float = 2.0 * court.target_half_width
+				var target: Vector3 = Vector3(
+					minf(size.x, target_width), h, minf(size.z, target_width)
+				)
+				var area: MeshInstance3D = _box(target, TARGET_COLOR, true, "Target%d" % player)
+				area.position = Vector3(wall.x * 0.995, h * 0.5, wall.z * 0.995)
+				area.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
+				add_child(area)
+	add_child(_grid(court))
+	var diagonals: ImmediateMesh = ImmediateMesh.new()
+	diagonals.surface_begin(Mesh.PRIMITIVE_LINES, _material(LINE_COLOR, true))
+	for end: Vector3 in [
+		Vector3(-l, 0.004, -l), Vector3(l, 0.004, l), Vector3(l, 0.004, -l), Vector3(-l, 0.004, l)
+	]:
+		diagonals.surface_add_vertex(end)
+	diagonals.surface_end()
+	add_child(_instance(diagonals, "Diagonals"))
+	add_child(_frame(court))
 
 
 func _glass_wall(size: Vector3, at: Vector3, wall_name: String) -> void:

@@ -8,7 +8,9 @@ extends Node3D
 ## to the side). Physics interpolation is off for the whole view:
 ## the servo, not Godot's physics, moves these things.
 
-const PLAYER_COLORS: Array[Color] = [Color(0.25, 0.75, 1.0), Color(1.0, 0.5, 0.2)]
+const PLAYER_COLORS: Array[Color] = [
+	Color(0.25, 0.75, 1.0), Color(1.0, 0.5, 0.2), Color(0.35, 0.9, 0.4), Color(0.85, 0.45, 1.0)
+]
 ## Growth of the blob shadow per metre of height, and the height at which it has faded to
 ## its faintest.
 const SHADOW_GROWTH_PER_M: float = 0.6
@@ -44,17 +46,17 @@ func _ready() -> void:
 
 
 ## Builds the court, the avatars and the paddles for [param court]; [param reach] is how
-## far a paddle reaches from its avatar.
-func build(court: PongCourt, reach: float, beginner: bool) -> void:
+## far a paddle reaches from its avatar; the camera sits behind [param viewer]'s side.
+func build(court: PongCourt, reach: float, beginner: bool, viewer: int = 0) -> void:
 	_court = court
-	_court_view.build(court, beginner)
+	_court_view.build(court, beginner, viewer)
 	var sphere: SphereMesh = _ball.mesh as SphereMesh
 	sphere.radius = court.ball_radius
 	sphere.height = court.ball_radius * 2.0
-	for player: int in 2:
+	for player: int in court.players:
 		var avatar: PongAvatarView = PongAvatarView.new()
 		avatar.name = "Avatar%d" % player
-		avatar.setup(court.beginner_height, reach, PLAYER_COLORS[player], player == 0)
+		avatar.setup(court.beginner_height, reach, PLAYER_COLORS[player], player == viewer)
 		add_child(avatar)
 		_avatars.append(avatar)
 		var paddle: PongPaddleView = PongPaddleView.new()
@@ -62,12 +64,21 @@ func build(court: PongCourt, reach: float, beginner: bool) -> void:
 		paddle.setup(court.paddle_radius, PLAYER_COLORS[player])
 		add_child(paddle)
 		_paddles.append(paddle)
-	camera.position = Vector3(0.0, court.wall_height, court.half_length + 1.7)
-	camera.look_at(Vector3(0.0, court.beginner_height * 0.6, -court.half_length * 0.3))
+	view_from(viewer)
 	# High, a little behind and to the right of the near player: shadows fall forward-left.
 	_sun.look_at_from_position(
 		Vector3(court.half_width, court.wall_height * 3.0, court.half_length), Vector3.ZERO
 	)
+
+
+## Puts the camera behind and above [param player]'s back wall, looking across the court
+## (each local player's own side; with four players the far walls all stay in view).
+func view_from(player: int) -> void:
+	var behind: Vector3 = -PongCourt.forward(player)
+	var back: float = _court.half_length + (1.7 if _court.players == 2 else 2.6)
+	var height: float = _court.wall_height * (1.0 if _court.players == 2 else 1.6)
+	camera.position = behind * back + Vector3.UP * height
+	camera.look_at(-behind * _court.half_length * 0.3 + Vector3.UP * _court.beginner_height * 0.6)
 
 
 ## Draws the match as it is now.
@@ -87,7 +98,9 @@ func render(match_node: PongMatch) -> void:
 	_drop_line.visible = height > _court.ball_radius
 	_drop_line.position = Vector3(ball.x, height * 0.5, ball.z)
 	_drop_line.scale = Vector3(1.0, maxf(height, 0.001), 1.0)
-	for player: int in 2:
+	for player: int in _paddles.size():
+		_avatars[player].visible = not match_node.rules.is_out(player)
+		_paddles[player].visible = _avatars[player].visible
 		var intent: PongIntent = match_node.controllers[player].intent
 		_avatars[player].position = intent.avatar
 		_paddles[player].place(snapshot.paddle_centers[player], snapshot.paddle_normals[player])

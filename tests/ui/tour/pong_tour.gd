@@ -8,7 +8,8 @@ extends Node
 ## Shots: the menu with the Pong entry, the setup, a computer-vs-computer rally (court,
 ## ball and its shadow, paddles, avatars), the ball high up (the shadow's size and fade),
 ## a mine going off and its effect on the HUD, the gun and a bullet, beginner mode with
-## the targets, the pause menu and the winner screen.
+## the targets, the pause menu and the winner screen, then four computers on the square
+## court (also in beginner mode).
 
 const MAIN_SCENE: PackedScene = preload("res://scenes/main/main.tscn")
 
@@ -56,6 +57,18 @@ func _tour() -> void:
 	pong = _main.get_screen() as PongScreen
 	pong.start_match(PongMatch.Mode.DEMO, true)
 	await _shot("pong_beginner", 4.0)
+	# Four computers on the square court, seen from player 0's side.
+	_main.show_pong()
+	pong = _main.get_screen() as PongScreen
+	pong.players = 4
+	pong.start_match(PongMatch.Mode.DEMO, false)
+	await _shot("pong_four_players_3s", 3.0)
+	await _shot("pong_four_players_6s", 3.0)
+	_main.show_pong()
+	pong = _main.get_screen() as PongScreen
+	pong.players = 4
+	pong.start_match(PongMatch.Mode.DEMO, true)
+	await _shot("pong_four_players_beginner", 3.0)
 	get_tree().quit(0)
 
 
