@@ -66,7 +66,8 @@ play: import
 
 ## pong-demo: a headless computer-vs-computer Haptic Battle Pong match, the servo stepped by
 ## the game (faster than real time); prints the winner and simulated vs wall seconds.
-## ARGS=--pong-health=N sets each player's health (default 15).
+## ARGS=--pong-health=N sets each player's health (default 15), --pong-players=4 plays on the
+## square four-player court.
 pong-demo: import
 	@$(GODOT) --headless --path . -- --pong-demo $(ARGS)
 

@@ -7,6 +7,9 @@ extends CanvasLayer
 ## frame; it never changes it.
 
 const MESSAGE_S: float = 2.0
+## How far the status line moves down when four panels fill the top row (the gap between
+## the panels, where it sits with two players, is then too narrow for it).
+const STATUS_DROP_FOUR_PLAYERS_PX: float = 150.0
 const CONTROLS: String = (
 	"WASD move  ·  mouse paddle  ·  wheel / R F depth  ·  Q E  Z C turn  ·  V spin  ·  G gun"
 	+ "  ·  Space fire  ·  B mine  ·  Esc pause"
@@ -18,6 +21,8 @@ const KEYBOARD_CONTROLS: String = (
 
 var _panels: Array[PongPlayerPanel] = []
 var _message_left: float = 0.0
+var _status_top: float = 0.0
+var _status_bottom: float = 0.0
 
 @onready var _top: HBoxContainer = %Top
 @onready var _status: Label = %Status
@@ -28,7 +33,8 @@ var _message_left: float = 0.0
 
 
 func _ready() -> void:
-	# Four panels, players 2 and 3 shown only in a four-player match: 0, 2 left, 3, 1 right.
+	# Four panels, players 2 and 3 shown only in a four-player match: 0 and 3 (seated at -x,
+	# on the left as player 0 sees the court) left, 2 (+x, on the right) and 1 right.
 	for side: int in 4:
 		var panel: PongPlayerPanel = PongPlayerPanel.new()
 		panel.name = "Player%d" % side
@@ -38,10 +44,12 @@ func _ready() -> void:
 	gap.size_flags_horizontal = Control.SIZE_EXPAND_FILL
 	gap.mouse_filter = Control.MOUSE_FILTER_IGNORE
 	_top.add_child(_panels[0])
-	_top.add_child(_panels[2])
-	_top.add_child(gap)
 	_top.add_child(_panels[3])
+	_top.add_child(gap)
+	_top.add_child(_panels[2])
 	_top.add_child(_panels[1])
+	_status_top = _status.offset_top
+	_status_bottom = _status.offset_bottom
 	_ignore_mouse(self)
 
 
@@ -59,6 +67,9 @@ func setup(
 		_panels[side].visible = side < titles.size()
 		if side < titles.size():
 			_panels[side].set_player(titles[side], colors[side], max_health)
+	var drop: float = STATUS_DROP_FOUR_PLAYERS_PX if titles.size() > 2 else 0.0
+	_status.offset_top = _status_top + drop
+	_status.offset_bottom = _status_bottom + drop
 	_plot.y_max = max_force
 	_controls.text = CONTROLS + ("\n" + KEYBOARD_CONTROLS if two_players else "")
 
