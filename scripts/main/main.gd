@@ -44,6 +44,9 @@ func _ready() -> void:
 			autopilot_seconds = arg.get_slice("=", 1).to_float()
 		elif arg.begins_with("--pong-health="):
 			pong_health = maxi(1, arg.get_slice("=", 1).to_int())
+	if PongNetCli.wants(args):
+		add_child(PongNetCli.new())
+		return
 	if args.has("--pong-demo"):
 		start_pong_demo(pong_health)
 		return

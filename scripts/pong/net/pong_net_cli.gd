@@ -1,0 +1,192 @@
+class_name PongNetCli
+extends Node
+## Networked Pong from the command line (after [code]--[/code]):
+## [br][code]--server [--port=P][/code]: a dedicated server; shows nothing, starts a match
+## when two players or more are ready, and again for each rematch.
+## [br][code]--pong-net=host|join|local --port=P --address=A --name=N[/code]: a player
+## without the menu; [code]local[/code] plays the same script without a network (the
+## reference of the contact test).
+## [br]Autopilot (headless test peers): [code]--pong-net-autopilot[/code] (the computer
+## drives this peer's paddle, everyone readies up, the host starts when
+## [code]--pong-net-peers=N[/code] players are in), [code]--pong-net-seconds=S[/code] (play
+## that long, then write the report and quit), [code]--pong-net-report=FILE[/code] (JSON),
+## [code]--pong-net-script=rally|hit[/code] (hit: this peer's seat is a still device
+## paddle and the first serve goes to seat 1, so the report holds the contact's force
+## profile), [code]--pong-net-health=N[/code], [code]--pong-net-version=V[/code] (claim
+## another protocol version: refused), [code]--pong-net-rogue[/code] (send malformed and
+## unauthorised messages once the match runs).
+## Exit codes: 0 done, 2 connection failed or refused, 3 no Pong renderer.
+
+## Headless peers sleep this long per frame (FACTS §1.6: the default 6900 us makes every
+## message wait up to a frame).
+const TEST_SLEEP_USEC: int = 1000
+
+var net: PongNet = null
+var options: Dictionary[String, String] = {}
+var report_path: String = ""
+var seconds: float = 0.0
+var script_name: String = "rally"
+var peers_wanted: int = 2
+var rogue: bool = false
+
+var _match_clock: float = -1.0
+var _readied: bool = false
+var _rogue_done: bool = false
+var _profile: PongNetContactProfile = null
+var _finishing: bool = false
+
+
+## Whether [param args] ask for networked Pong.
+static func wants(args: PackedStringArray) -> bool:
+	for arg: String in args:
+		if arg == "--server" or arg.begins_with("--pong-net="):
+			return true
+	return false
+
+
+static func parse(args: PackedStringArray) -> Dictionary[String, String]:
+	var parsed: Dictionary[String, String] = {}
+	for arg: String in args:
+		if not arg.begins_with("--"):
+			continue
+		var body: String = arg.substr(2)
+		var at: int = body.find("=")
+		if at < 0:
+			parsed[body] = "true"
+		else:
+			parsed[body.substr(0, at)] = body.substr(at + 1)
+	return parsed
+
+
+func _ready() -> void:
+	# The root is still adding the main scene: PongNet goes next to it a moment later.
+	_launch.call_deferred()
+
+
+func _launch() -> void:
+	options = parse(OS.get_cmdline_user_args())
+	var role: String = "server" if options.has("server") else options.get("pong-net", "host")
+	var port: int = options.get("port", str(PongNetProtocol.DEFAULT_PORT)).to_int()
+	report_path = options.get("pong-net-report", "")
+	seconds = options.get("pong-net-seconds", "0").to_float()
+	script_name = options.get("pong-net-script", "rally")
+	peers_wanted = options.get("pong-net-peers", "2").to_int()
+	rogue = options.has("pong-net-rogue")
+	if DisplayServer.get_name() == "headless":
+		OS.low_processor_usage_mode_sleep_usec = TEST_SLEEP_USEC
+	if role == "local":
+		_profile = PongNetContactProfile.new()
+		add_child(_profile)
+		_profile.play_local(options.get("pong-net-health", "5").to_int())
+		_profile.done.connect(_finish.bind(0, "local"))
+		return
+	net = PongNet.of(get_tree())
+	net.my_name = options.get("name", role)
+	net.dedicated = role == "server"
+	net.autopilot = options.has("pong-net-autopilot") or net.dedicated
+	net.stepped = DisplayServer.get_name() == "headless"
+	net.start_health = options.get("pong-net-health", str(PongRules.DEFAULT_START_HEALTH)).to_int()
+	net.session.version = options.get("pong-net-version", PongNetProtocol.VERSION)
+	net.status_changed.connect(func(text: String) -> void: print("PongNet: %s" % text))
+	net.session.failed.connect(func(_reason: String) -> void: _finish(2, "failed"))
+	net.session.server_lost.connect(_finish.bind(0, "server lost"))
+	net.lobby_changed.connect(_on_lobby_changed)
+	net.match_started.connect(_on_match_started)
+	net.match_ended.connect(_on_match_ended)
+	if script_name == "hit":
+		_profile = PongNetContactProfile.new()
+		add_child(_profile)
+		net.local_controller_factory = _profile.make_still_paddle
+	var error: String = ""
+	if role == "join":
+		error = net.join(options.get("address", "127.0.0.1"), port)
+	else:
+		error = net.host(port)
+	if not error.is_empty():
+		_finish(2, error)
+
+
+func _process(delta: float) -> void:
+	if net == null or _finishing:
+		return
+	if net.session.is_server and net.can_start() and net.players.size() >= peers_wanted:
+		net.start_match()
+	if _match_clock < 0.0:
+		return
+	_match_clock += delta
+	if rogue and not _rogue_done and _match_clock > 1.0:
+		_rogue_done = true
+		PongNetRogue.attack(net)
+	if seconds > 0.0 and _match_clock >= seconds:
+		_finish(0, "time")
+
+
+func _on_lobby_changed() -> void:
+	if net.autopilot and not _readied and net.players.has(multiplayer.get_unique_id()):
+		_readied = true
+		net.set_ready(true)
+	elif net.dedicated:
+		pass
+
+
+func _on_match_started() -> void:
+	_match_clock = 0.0
+	_readied = false
+	net.session.take_traffic()
+	if script_name == "hit":
+		_profile.follow(net.play)
+		if net.session.is_server:
+			net.play.match_node.referee.receiver = 1
+
+
+func _on_match_ended(_winner: int, why: String) -> void:
+	if net.dedicated and why == "over" and seconds <= 0.0:
+		net.close_screen()
+		return
+	if why == "over":
+		_finish(0, why)
+
+
+func _finish(code: int, why: String) -> void:
+	if _finishing:
+		return
+	_finishing = true
+	var data: Dictionary = {"exit": why}
+	if net != null:
+		var play: PongNetPlay = net.play
+		data.merge(play.report.to_dict(play.smoother, play.authority))
+		data["seat"] = net.my_seat()
+		data["error"] = net.session.last_error
+		data["health"] = _health()
+		data["bytes"] = _traffic()
+	if _profile != null:
+		data["contact"] = _profile.to_dict()
+	if not report_path.is_empty():
+		var file: FileAccess = FileAccess.open(report_path, FileAccess.WRITE)
+		if file != null:
+			file.store_string(JSON.stringify(data))
+			file.close()
+	print("PongNet: done (%s)" % why)
+	if net != null:
+		net.leave()
+	CleanExit.quit(code)
+
+
+func _health() -> Array[int]:
+	var health: Array[int] = []
+	var match_node: PongMatch = net.play.match_node
+	if match_node != null and match_node.rules != null:
+		for seat: int in net.seats:
+			health.append(match_node.rules.get_health(seat))
+	return health
+
+
+func _traffic() -> Dictionary:
+	var sent_received: Vector2i = net.session.take_traffic()
+	var elapsed: float = maxf(_match_clock, 1e-3)
+	return {
+		"sent": sent_received.x,
+		"received": sent_received.y,
+		"sent_per_s": sent_received.x / elapsed,
+		"received_per_s": sent_received.y / elapsed,
+	}

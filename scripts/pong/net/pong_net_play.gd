@@ -1,0 +1,475 @@
+class_name PongNetPlay
+extends Node
+## One networked match on this peer: the private haptic space. Every peer runs the servo
+## and simulates the ball; the owner of the territory the ball is in is its master
+## ([PongNetAuthority]): it sends the ball state on every new servo state (>= 60 Hz,
+## unreliable_ordered, its own channel) and its contact with the ball stays in its own
+## servo at 1 kHz whatever the latency (contact is never sent). Followers carry the
+## received state forward to now and blend their ball onto it ([PongNetSmoother]). Each
+## peer sends the poses of the paddles it drives; other peers' paddles are kinematic
+## inputs of the local servo ([PongNetRemotePlayer]). Health changes come from the peer
+## that saw them (the master for floor bounces) as reliable messages. Every received
+## message is checked ([PongNetProtocol]); a bad one is dropped with a log line.
+##
+## RPC surface: the same methods at the same path on every peer (/root/PongNet/Play).
+## The play node lives as long as the session (RPCs may arrive before or after a match).
+
+## Health changed on every peer the same way; the match is over on every peer.
+signal finished(winner: int)
+
+## Servo seconds after a transfer during which the servo's territory is not trusted (the
+## set_ball of the transfer reaches the servo a tick later).
+const SETTLE_S: float = 0.02
+## Seconds of simulation the game steps per chunk in stepped mode.
+const CHUNK_S: float = PongMatch.STEP_CHUNK_S
+## Paddle speeds sent are capped here (a teleported avatar is not a swing), m/s.
+const MAX_SENT_PADDLE_SPEED_M_PER_S: float = 20.0
+## Smallest pending correction worth a set_ball, metres.
+const MIN_NUDGE_M: float = 0.0005
+
+var net: PongNet = null
+var authority: PongNetAuthority = null
+var match_node: PongMatch = null
+var smoother: PongNetSmoother = PongNetSmoother.new()
+var report: PongNetReport = PongNetReport.new()
+## Seats this peer drives (its player's, or on the server the computer's).
+var local_seats: PackedInt32Array = PackedInt32Array()
+## Stepped: the servo is stepped here, paced by the wall clock (headless peers).
+var stepped: bool = false
+## A second of stepping may not take more than this many chunks (a stalled process does
+## not try to catch up for ever).
+var max_chunks_per_frame: int = 10
+
+var _predictor: PongPredictor = null
+var _clocks: Dictionary[int, PongNetClock] = {}
+var _seq: int = 0
+var _last_sent_time: float = -1.0
+var _settle_until: float = 0.0
+var _owe_s: float = 0.0
+var _last_now: float = 0.0
+var _last_centers: Dictionary[int, Vector3] = {}
+var _running: bool = false
+
+
+## Starts following [param p_match] (already started) with [param p_authority].
+func begin(p_match: PongMatch, p_authority: PongNetAuthority, seats: PackedInt32Array) -> void:
+	match_node = p_match
+	authority = p_authority
+	local_seats = seats
+	_predictor = PongPredictor.new(match_node.court)
+	match_node.event_seen.connect(_on_event)
+	match_node.match_over.connect(_on_match_over)
+	report.begin(authority.my_id)
+	_running = true
+
+
+## Stops (the match is over, or the peer leaves).
+func end() -> void:
+	_running = false
+
+
+func is_running() -> bool:
+	return _running
+
+
+## One frame: step the servo (stepped mode), serve (server), hand off, stream, correct.
+func frame(delta: float) -> void:
+	if not _running:
+		return
+	if stepped:
+		_owe_s += delta
+		var chunks: int = mini(floori(_owe_s / CHUNK_S), max_chunks_per_frame)
+		_owe_s = minf(_owe_s - chunks * CHUNK_S, CHUNK_S)
+		if chunks > 0:
+			match_node.run_until(func() -> bool: return false, (chunks - 0.5) * CHUNK_S)
+	var snapshot: PongSnapshot = match_node.snapshot
+	var sim_dt: float = match_node.now - _last_now
+	_last_now = match_node.now
+	if authority.my_id == PongNetAuthority.SERVER_ID:
+		_referee(sim_dt)
+	if authority.is_master() and snapshot.time_s > _settle_until:
+		if snapshot.territory != authority.territory:
+			_hand_off(snapshot)
+	if authority.is_master() and snapshot.time_s != _last_sent_time:
+		_last_sent_time = snapshot.time_s
+		_seq += 1
+		_send(
+			&"_ball",
+			[authority.epoch, _seq, snapshot.time_s] + _ball_of(snapshot) + [_my_leg_ms()]
+		)
+	elif not authority.is_master():
+		_nudge(sim_dt, snapshot)
+	if sim_dt > 0.0:
+		_send_poses(snapshot)
+	report.sample(snapshot.ball_position, authority.is_master(), snapshot.time_s)
+
+
+## The poses of the seats this peer drives, each new servo state.
+func _send_poses(snapshot: PongSnapshot) -> void:
+	for seat: int in local_seats:
+		var avatar: Vector3 = match_node.avatar_of(seat)
+		var offset: Vector3 = snapshot.paddle_centers[seat] - avatar
+		var velocity: Vector3 = Vector3.ZERO
+		var dt: float = match_node.now - _last_centers.get(-1 - seat, Vector3.ZERO).x
+		if _last_centers.has(seat) and dt > 0.0:
+			velocity = (snapshot.paddle_centers[seat] - _last_centers[seat]) / dt
+		_last_centers[seat] = snapshot.paddle_centers[seat]
+		_last_centers[-1 - seat] = Vector3(match_node.now, 0.0, 0.0)
+		velocity = velocity.limit_length(MAX_SENT_PADDLE_SPEED_M_PER_S)
+		var normal: Vector3 = snapshot.paddle_normals[seat].normalized()
+		var flags: int = PongNetRemotePlayer.flags_of(match_node.controllers[seat].intent)
+		_send(&"_pose", [seat, avatar, offset, velocity, normal, flags, snapshot.time_s])
+
+
+func _referee(sim_dt: float) -> void:
+	var rules: PongRules = match_node.rules
+	if rules.is_over() or not match_node.referee.update(sim_dt, match_node.snapshot.ball_velocity):
+		return
+	var receiver: int = match_node.referee.receiver
+	var serve: PongReferee.Serve = match_node.referee.make_serve(
+		match_node.court, match_node.avatar_of(receiver), match_node.beginner
+	)
+	var territory: int = PongCourt.territory_of(serve.position)
+	issue(PongNetProtocol.TRANSFER_SERVE, territory, serve.position, serve.velocity, Vector3.ZERO, 0)
+
+
+## Server: issues the next transfer to everyone, itself included.
+func issue(
+	kind: int, territory: int, position: Vector3, velocity: Vector3, spin: Vector3, age_ms: int
+) -> void:
+	var transfer: Dictionary = authority.next_transfer(kind, territory)
+	var args: Array = [
+		transfer["epoch"], kind, territory, transfer["master"], position, velocity, spin, age_ms
+	]
+	_send(&"_transfer", args)
+	callv(&"_on_transfer", [authority.my_id] + args)
+
+
+func _hand_off(snapshot: PongSnapshot) -> void:
+	var request: Dictionary = authority.relinquish(snapshot.territory)
+	if request.is_empty():
+		return
+	var args: Array = [request["epoch"], request["territory"]] + _ball_of(snapshot)
+	if authority.my_id == PongNetAuthority.SERVER_ID:
+		callv(&"_on_request", [authority.my_id] + args)
+	else:
+		callv(&"rpc_id", [PongNetAuthority.SERVER_ID, &"_request"] + args)
+
+
+func _nudge(dt: float, snapshot: PongSnapshot) -> void:
+	var part: Vector3 = smoother.take(dt)
+	if part.length() < MIN_NUDGE_M:
+		return
+	var lead: float = 0.0 if stepped else HapticsPong.TICK_S
+	var p: Vector3 = snapshot.ball_position + snapshot.ball_velocity * lead + part
+	Haptics.pong.set_ball(p, snapshot.ball_velocity, snapshot.ball_spin)
+
+
+func _ball_of(snapshot: PongSnapshot) -> Array:
+	return [snapshot.ball_position, snapshot.ball_velocity, snapshot.ball_spin]
+
+
+## One-way delay of our own leg to the server, ms (0 on the server).
+func _my_leg_ms() -> int:
+	return roundi(net.session.round_trip_s(PongNetAuthority.SERVER_ID) * 500.0)
+
+
+func _clock_of(peer: int, their_leg_ms: int) -> PongNetClock:
+	if not _clocks.has(peer):
+		_clocks[peer] = PongNetClock.new()
+	var clock: PongNetClock = _clocks[peer]
+	clock.base_latency_s = (_my_leg_ms() + their_leg_ms) / 1000.0
+	return clock
+
+
+func _local_now_s() -> float:
+	return Time.get_ticks_usec() / 1e6
+
+
+func _reject(sender: int, what: String, reason: String) -> void:
+	report.refuse(what)
+	printerr("PongNet: dropped %s from peer %d: %s" % [what, sender, reason])
+
+
+## Sends [param method] with [param args] to every other peer.
+func _send(method: StringName, args: Array) -> void:
+	if multiplayer.has_multiplayer_peer() and net.session.is_open():
+		callv(&"rpc", [method] + args)
+
+
+# --- the RPC surface: argument types are checked by the handlers, not by the engine, so
+# a malformed call is dropped with our log line instead of an engine error ---
+
+
+@rpc("any_peer", "call_remote", "unreliable_ordered", PongNetProtocol.CHANNEL_BALL)
+func _ball(
+	epoch: Variant,
+	seq: Variant,
+	time_s: Variant,
+	position: Variant,
+	velocity: Variant,
+	spin: Variant,
+	leg_ms: Variant
+) -> void:
+	_on_ball(
+		multiplayer.get_remote_sender_id(), epoch, seq, time_s, position, velocity, spin, leg_ms
+	)
+
+
+@rpc("any_peer", "call_remote", "unreliable_ordered", PongNetProtocol.CHANNEL_POSE)
+func _pose(
+	seat: Variant,
+	avatar: Variant,
+	offset: Variant,
+	velocity: Variant,
+	normal: Variant,
+	flags: Variant,
+	time_s: Variant
+) -> void:
+	_on_pose(
+		multiplayer.get_remote_sender_id(), seat, avatar, offset, velocity, normal, flags, time_s
+	)
+
+
+@rpc("any_peer", "call_remote", "reliable", PongNetProtocol.CHANNEL_RELIABLE)
+func _request(
+	epoch: Variant, territory: Variant, position: Variant, velocity: Variant, spin: Variant
+) -> void:
+	_on_request(multiplayer.get_remote_sender_id(), epoch, territory, position, velocity, spin)
+
+
+@rpc("any_peer", "call_remote", "reliable", PongNetProtocol.CHANNEL_RELIABLE)
+func _transfer(
+	epoch: Variant,
+	kind: Variant,
+	territory: Variant,
+	master: Variant,
+	position: Variant,
+	velocity: Variant,
+	spin: Variant,
+	age_ms: Variant
+) -> void:
+	_on_transfer(
+		multiplayer.get_remote_sender_id(),
+		epoch,
+		kind,
+		territory,
+		master,
+		position,
+		velocity,
+		spin,
+		age_ms
+	)
+
+
+@rpc("any_peer", "call_remote", "reliable", PongNetProtocol.CHANNEL_RELIABLE)
+func _hurt(epoch: Variant, player: Variant, cause: Variant) -> void:
+	_on_hurt(multiplayer.get_remote_sender_id(), epoch, player, cause)
+
+
+@rpc("any_peer", "call_remote", "reliable", PongNetProtocol.CHANNEL_RELIABLE)
+func _owners(owners: Variant) -> void:
+	_on_owners(multiplayer.get_remote_sender_id(), owners)
+
+
+# --- handlers, with the sender's id ---
+
+
+func _on_ball(
+	sender: int,
+	epoch: Variant,
+	seq: Variant,
+	time_s: Variant,
+	position: Variant,
+	velocity: Variant,
+	spin: Variant,
+	leg_ms: Variant
+) -> void:
+	if not _running:
+		return
+	var reason: String = PongNetProtocol.check_ball(
+		epoch, seq, time_s, position, velocity, spin, match_node.court, _max_spin()
+	)
+	if reason.is_empty():
+		reason = PongNetProtocol.check_int(leg_ms, 0, 10000, "leg")
+	if not reason.is_empty():
+		_reject(sender, "ball state", reason)
+		return
+	reason = authority.accept_state(sender, epoch, seq)
+	if not reason.is_empty():
+		report.late += 1
+		return
+	report.states += 1
+	var age: float = _clock_of(sender, leg_ms).observe(_local_now_s(), time_s)
+	report.ages.append(age)
+	var target: Array[Vector3] = PongNetSmoother.extrapolate(
+		_predictor, position, velocity, _gravity(), age
+	)
+	_correct(target[0], target[1], spin)
+
+
+func _correct(position: Vector3, velocity: Vector3, spin: Vector3) -> void:
+	var local: Vector3 = Haptics.pong.get_state().get("ball", {}).get("position", Vector3.ZERO)
+	if smoother.on_target(local, position):
+		Haptics.pong.set_ball(position, velocity, spin)
+	else:
+		Haptics.pong.set_ball(local, velocity, spin)
+
+
+func _on_pose(
+	sender: int,
+	seat: Variant,
+	avatar: Variant,
+	offset: Variant,
+	velocity: Variant,
+	normal: Variant,
+	flags: Variant,
+	time_s: Variant
+) -> void:
+	if not _running:
+		return
+	var reason: String = PongNetProtocol.check_pose(
+		seat, authority.owners.size(), avatar, offset, velocity, normal, match_node.court, 2.0
+	)
+	if reason.is_empty():
+		reason = PongNetProtocol.check_int(flags, 0, 3, "flags")
+	if reason.is_empty():
+		reason = PongNetProtocol.check_float(time_s, 0.0, 1e7, "time")
+	if reason.is_empty() and authority.owner_of(seat) != sender:
+		reason = "seat %d is not theirs" % seat
+	if not reason.is_empty():
+		_reject(sender, "pose", reason)
+		return
+	var controller: PongController = match_node.controllers[seat]
+	if not controller is PongNetRemotePlayer:
+		return
+	var age: float = _clock_of(sender, 0).observe(_local_now_s(), time_s)
+	(controller as PongNetRemotePlayer).set_pose(
+		match_node.now, minf(age, 0.5), avatar, offset, velocity, normal, flags
+	)
+	report.poses += 1
+
+
+func _on_request(
+	sender: int,
+	epoch: Variant,
+	territory: Variant,
+	position: Variant,
+	velocity: Variant,
+	spin: Variant
+) -> void:
+	if not _running or authority.my_id != PongNetAuthority.SERVER_ID:
+		return
+	var reason: String = PongNetProtocol.check_ball(
+		epoch, 0, 0.0, position, velocity, spin, match_node.court, _max_spin()
+	)
+	if reason.is_empty():
+		reason = PongNetProtocol.check_int(territory, 0, authority.owners.size() - 1, "territory")
+	if reason.is_empty():
+		reason = authority.check_request(sender, epoch, territory)
+	if not reason.is_empty():
+		_reject(sender, "hand-off request", reason)
+		return
+	var age_ms: int = roundi(net.session.round_trip_s(sender) * 500.0)
+	issue(PongNetProtocol.TRANSFER_HANDOFF, territory, position, velocity, spin, age_ms)
+
+
+func _on_transfer(
+	sender: int,
+	epoch: Variant,
+	kind: Variant,
+	territory: Variant,
+	master: Variant,
+	position: Variant,
+	velocity: Variant,
+	spin: Variant,
+	age_ms: Variant
+) -> void:
+	if not _running:
+		return
+	var reason: String = PongNetProtocol.check_ball(
+		epoch, 0, 0.0, position, velocity, spin, match_node.court, _max_spin()
+	)
+	for extra: String in [
+		PongNetProtocol.check_int(kind, 0, PongNetProtocol.TRANSFER_NAMES.size() - 1, "kind"),
+		PongNetProtocol.check_int(territory, 0, authority.owners.size() - 1, "territory"),
+		PongNetProtocol.check_int(master, 0, 1 << 31, "master"),
+		PongNetProtocol.check_int(age_ms, 0, 10000, "age"),
+	]:
+		reason = extra if reason.is_empty() else reason
+	if reason.is_empty():
+		var transfer: Dictionary = {
+			"epoch": epoch, "kind": kind, "territory": territory, "master": master
+		}
+		reason = authority.apply_transfer(sender, transfer)
+	if not reason.is_empty():
+		_reject(sender, "transfer", reason)
+		return
+	report.transfer(authority.history[-1])
+	var age: float = age_ms / 1000.0 + _my_leg_ms() / 1000.0
+	var target: Array[Vector3] = PongNetSmoother.extrapolate(
+		_predictor, position, velocity, _gravity(), age
+	)
+	var local: Vector3 = Haptics.pong.get_state().get("ball", {}).get("position", Vector3.ZERO)
+	report.handoff_corrections.append((target[0] - local).length())
+	if kind == PongNetProtocol.TRANSFER_SERVE or authority.is_master():
+		smoother.pending = Vector3.ZERO
+		Haptics.pong.set_ball(target[0], target[1], spin)
+	else:
+		_correct(target[0], target[1], spin)
+	_settle_until = match_node.snapshot.time_s + SETTLE_S
+
+
+func _on_hurt(sender: int, epoch: Variant, player: Variant, cause: Variant) -> void:
+	if not _running:
+		return
+	var reason: String = PongNetProtocol.check_int(epoch, 0, authority.epoch, "epoch")
+	if reason.is_empty():
+		reason = PongNetProtocol.check_int(player, 0, authority.owners.size() - 1, "player")
+	if reason.is_empty() and (typeof(cause) != TYPE_STRING or cause != "floor"):
+		reason = "cause %s is not one the network carries" % [cause]
+	if reason.is_empty():
+		var master_then: int = authority.master_at(epoch)
+		if sender != master_then:
+			reason = "peer %d was not the ball's master at epoch %d" % [sender, epoch]
+	if not reason.is_empty():
+		_reject(sender, "hurt", reason)
+		return
+	match_node.rules.hurt(player, StringName(cause))
+	report.hurts.append([epoch, player, cause])
+
+
+func _on_owners(sender: int, owners: Variant) -> void:
+	if sender != PongNetAuthority.SERVER_ID or typeof(owners) != TYPE_PACKED_INT64_ARRAY:
+		_reject(sender, "owners", "not from the server or not a PackedInt64Array")
+		return
+	var list: PackedInt64Array = owners
+	if list.size() != authority.owners.size():
+		_reject(sender, "owners", "%d seats, the match has %d" % [list.size(), authority.owners.size()])
+		return
+	authority.owners = list
+	net.seats_changed()
+
+
+func _on_event(event: Dictionary) -> void:
+	if str(event.get("type", "")) != "floor" or not authority.is_master():
+		return
+	var territory: int = event.get("territory", -1)
+	if territory < 0 or territory >= authority.owners.size() or match_node.rules.is_over():
+		return
+	var args: Array = [authority.epoch, territory, "floor"]
+	_send(&"_hurt", args)
+	callv(&"_on_hurt", [authority.my_id] + args)
+
+
+func _on_match_over(winner: int) -> void:
+	report.winner = winner
+	finished.emit(winner)
+
+
+func _gravity() -> float:
+	return 0.0 if match_node.beginner else match_node.court.gravity
+
+
+func _max_spin() -> float:
+	return match_node.court.number("max_spin_rad_per_s")
