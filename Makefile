@@ -24,7 +24,7 @@ BENCH_SECONDS ?= 10
 SOAK_SECONDS ?= 600
 
 .PHONY: play test deps engine build build-release import test-native test-godot lint pong-demo \
-	export test-export test-windowed bench soak sanitize analyze export-study test-analysis clean distclean
+	export test-export test-windowed test-net bench soak sanitize analyze export-study test-analysis clean distclean
 
 ## deps: install missing OS packages (apt-get; sudo when not root)
 deps:
@@ -70,7 +70,7 @@ pong-demo: import
 	@$(GODOT) --headless --path . -- --pong-demo $(ARGS)
 
 ## test: every suite; any failure fails the target
-test: import test-native test-godot lint test-analysis test-export test-windowed
+test: import test-native test-godot lint test-analysis test-net test-export test-windowed
 	@echo "make test: all suites passed"
 
 ## test-native: the C++ doctest suite through CTest
@@ -150,6 +150,10 @@ export-study:
 ## test-analysis: the study analysis tool's pytest suite (hand-computed statistics)
 test-analysis:
 	@tools/analysis/run.sh -m pytest tools/analysis/tests -q
+
+## test-net: the network tests (the UDP relay that gives loopback latency, jitter and loss)
+test-net:
+	@tools/analysis/run.sh -m pytest tools/net/tests -q -p no:cacheprovider
 
 ## clean: build outputs (keeps the provisioned engine and Python tools)
 clean:

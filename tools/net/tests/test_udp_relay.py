@@ -1,0 +1,239 @@
+"""The relay delays, drops and reorders as configured, keeps clients apart and always exits."""
+
+from __future__ import annotations
+
+import json
+import signal
+import socket
+import subprocess
+import sys
+import threading
+import time
+from pathlib import Path
+
+import pytest
+
+RELAY = Path(__file__).resolve().parents[1] / "udp_relay.py"
+# Generous bound for anything that waits on the relay process on a loaded 2-core machine.
+PATIENCE_S = 20.0
+
+
+class EchoServer:
+    """Sends every datagram back to its sender and remembers who sent."""
+
+    def __init__(self) -> None:
+        self.sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+        self.sock.bind(("127.0.0.1", 0))
+        self.sock.settimeout(0.1)
+        self.port = self.sock.getsockname()[1]
+        self.senders: set[tuple[str, int]] = set()
+        self._running = True
+        self._thread = threading.Thread(target=self._serve, daemon=True)
+        self._thread.start()
+
+    def _serve(self) -> None:
+        while self._running:
+            try:
+                data, addr = self.sock.recvfrom(65536)
+            except socket.timeout:
+                continue
+            self.senders.add(addr)
+            self.sock.sendto(data, addr)
+
+    def close(self) -> None:
+        self._running = False
+        self._thread.join()
+        self.sock.close()
+
+
+class RelayProcess:
+    def __init__(self, p_server_port: int, p_stats: Path, *p_args: str) -> None:
+        self.proc = subprocess.Popen(
+            [sys.executable, str(RELAY), "--server", f"127.0.0.1:{p_server_port}",
+             "--stats", str(p_stats), "--max-seconds", "60", *p_args],
+            stdout=subprocess.PIPE, text=True,
+        )
+        line = self.proc.stdout.readline()
+        self.port = json.loads(line)["listen_port"]
+
+    def stop(self) -> int:
+        if self.proc.poll() is None:
+            self.proc.send_signal(signal.SIGTERM)
+        try:
+            return self.proc.wait(timeout=PATIENCE_S)
+        finally:
+            if self.proc.poll() is None:
+                self.proc.kill()
+                self.proc.wait()
+            self.proc.stdout.close()
+
+
+@pytest.fixture
+def echo():
+    server = EchoServer()
+    yield server
+    server.close()
+
+
+def client(p_port: int) -> socket.socket:
+    sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+    sock.connect(("127.0.0.1", p_port))
+    sock.settimeout(PATIENCE_S)
+    return sock
+
+
+def collect(p_sock: socket.socket, p_count: int, p_quiet_s: float) -> list[bytes]:
+    """Datagrams until p_count arrived or nothing came for p_quiet_s."""
+    got: list[bytes] = []
+    p_sock.settimeout(p_quiet_s)
+    while len(got) < p_count:
+        try:
+            got.append(p_sock.recv(65536))
+        except socket.timeout:
+            break
+    return got
+
+
+class Collector:
+    """Reads a socket on a thread while the test sends (a burst would overflow its buffer)."""
+
+    def __init__(self, p_sock: socket.socket, p_count: int, p_quiet_s: float) -> None:
+        self.got: list[bytes] = []
+        self._thread = threading.Thread(
+            target=lambda: self.got.extend(collect(p_sock, p_count, p_quiet_s)), daemon=True
+        )
+        self._thread.start()
+
+    def join(self) -> list[bytes]:
+        self._thread.join()
+        return self.got
+
+
+def test_clean_path_echoes_everything_and_keeps_clients_apart(echo, tmp_path):
+    relay = RelayProcess(echo.port, tmp_path / "stats.json")
+    try:
+        a, b = client(relay.port), client(relay.port)
+        for i in range(50):
+            a.send(b"a%03d" % i)
+            b.send(b"b%03d" % i)
+        got_a, got_b = collect(a, 50, 2.0), collect(b, 50, 2.0)
+        assert sorted(got_a) == [b"a%03d" % i for i in range(50)]
+        assert sorted(got_b) == [b"b%03d" % i for i in range(50)]
+        # The server sees two peers, each from one of the relay's own upstream sockets.
+        assert len(echo.senders) == 2
+        assert relay.port not in {port for _, port in echo.senders}
+        a.close()
+        b.close()
+    finally:
+        assert relay.stop() == 0
+    stats = json.loads((tmp_path / "stats.json").read_text())
+    assert stats["clients"] == 2
+    assert stats["up"]["delivered"] == stats["down"]["delivered"] == 100
+    assert stats["up"]["dropped"] == 0 and stats["up"]["bytes_delivered"] == 400
+
+
+def test_delay_applies_each_way(echo, tmp_path):
+    relay = RelayProcess(echo.port, tmp_path / "stats.json", "--delay-ms", "80")
+    try:
+        sock = client(relay.port)
+        round_trips = []
+        for i in range(5):
+            start = time.monotonic()
+            sock.send(b"%d" % i)
+            assert sock.recv(100) == b"%d" % i
+            round_trips.append(time.monotonic() - start)
+        sock.close()
+    finally:
+        relay.stop()
+    # Two 80 ms legs: never faster than 160 ms (the timer may only be late, never early).
+    assert min(round_trips) >= 0.159
+    assert max(round_trips) < PATIENCE_S
+
+
+def test_loss_drops_about_the_stated_fraction_each_way(echo, tmp_path):
+    relay = RelayProcess(echo.port, tmp_path / "stats.json", "--loss", "0.2", "--seed", "7")
+    try:
+        sock = client(relay.port)
+        reader = Collector(sock, 1000, 1.5)
+        for i in range(1000):
+            sock.send(b"%04d" % i)
+            if i % 50 == 49:
+                time.sleep(0.01)  # stay well under the socket buffers
+        got = reader.join()
+        sock.close()
+    finally:
+        relay.stop()
+    stats = json.loads((tmp_path / "stats.json").read_text())
+    up, down = stats["up"], stats["down"]
+    assert up["received"] == 1000
+    assert up["received"] == up["dropped"] + up["delivered"]
+    assert down["received"] == down["dropped"] + down["delivered"]
+    # Binomial(1000, 0.2): mean 200, sd 12.6; 6 sd either side.
+    assert 124 <= up["dropped"] <= 276
+    # Both legs: 0.8^2 = 64 % survive.
+    assert 560 <= len(got) <= 720
+    assert len(got) == down["delivered"]
+
+
+def test_jitter_reorders_and_counts_it(echo, tmp_path):
+    relay = RelayProcess(echo.port, tmp_path / "stats.json", "--jitter-ms", "40", "--seed", "3")
+    try:
+        sock = client(relay.port)
+        reader = Collector(sock, 200, 1.5)
+        for i in range(200):
+            sock.send(b"%04d" % i)
+            time.sleep(0.001)
+        got = reader.join()
+        sock.close()
+    finally:
+        relay.stop()
+    stats = json.loads((tmp_path / "stats.json").read_text())
+    assert sorted(got) == [b"%04d" % i for i in range(200)]
+    out_of_order = sum(1 for x, y in zip(got, got[1:]) if y < x)
+    assert out_of_order > 0
+    assert stats["up"]["reordered"] > 0
+
+
+def test_same_seed_same_fate(echo, tmp_path):
+    dropped = []
+    for run in range(2):
+        relay = RelayProcess(echo.port, tmp_path / f"s{run}.json", "--loss", "0.3", "--seed", "11")
+        try:
+            sock = client(relay.port)
+            reader = Collector(sock, 100, 1.0)
+            for i in range(100):
+                sock.send(b"%03d" % i)
+            got = reader.join()
+            sock.close()
+        finally:
+            relay.stop()
+        dropped.append(set(range(100)) - {int(x) for x in got})
+    assert dropped[0] == dropped[1] and dropped[0]
+
+
+def test_exits_by_itself_after_max_seconds(echo, tmp_path):
+    stats = tmp_path / "stats.json"
+    proc = subprocess.Popen(
+        [sys.executable, str(RELAY), "--server", f"127.0.0.1:{echo.port}",
+         "--max-seconds", "0.5", "--stats", str(stats)],
+        stdout=subprocess.PIPE, text=True,
+    )
+    try:
+        assert proc.wait(timeout=PATIENCE_S) == 0
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+        proc.stdout.close()
+    assert json.loads(stats.read_text())["clients"] == 0
+
+
+@pytest.mark.parametrize(
+    "bad", [["--server", "nohost"], ["--server", "127.0.0.1:7", "--loss", "1.5"],
+            ["--server", "127.0.0.1:7", "--delay-ms", "-3"]],
+)
+def test_bad_arguments_are_refused(bad):
+    result = subprocess.run([sys.executable, str(RELAY), *bad], capture_output=True, text=True,
+                            timeout=PATIENCE_S)
+    assert result.returncode == 2
+    assert "error:" in result.stderr
