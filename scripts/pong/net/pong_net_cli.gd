@@ -9,7 +9,8 @@ extends Node
 ## [br]Autopilot (headless test peers): [code]--pong-net-autopilot[/code] (the computer
 ## drives this peer's paddle, everyone readies up, the host starts when
 ## [code]--pong-net-peers=N[/code] players are in), [code]--pong-net-seconds=S[/code] (play
-## that long, then write the report and quit), [code]--pong-net-report=FILE[/code] (JSON),
+## that long, then write the report and quit), [code]--pong-net-max-seconds=S[/code] (quit
+## after S wall seconds whatever happens), [code]--pong-net-report=FILE[/code] (JSON),
 ## [code]--pong-net-script=rally|hit[/code] (hit: this peer's seat is a still device
 ## paddle and the first serve goes to seat 1, so the report holds the contact's force
 ## profile), [code]--pong-net-health=N[/code], [code]--pong-net-version=V[/code] (claim
@@ -28,8 +29,10 @@ var seconds: float = 0.0
 var script_name: String = "rally"
 var peers_wanted: int = 2
 var rogue: bool = false
+var max_seconds: float = 0.0
 
 var _match_clock: float = -1.0
+var _seat: int = -1
 var _readied: bool = false
 var _rogue_done: bool = false
 var _profile: PongNetContactProfile = null
@@ -72,13 +75,18 @@ func _launch() -> void:
 	script_name = options.get("pong-net-script", "rally")
 	peers_wanted = options.get("pong-net-peers", "2").to_int()
 	rogue = options.has("pong-net-rogue")
+	max_seconds = options.get("pong-net-max-seconds", "0").to_float()
+	if max_seconds > 0.0:
+		get_tree().create_timer(max_seconds, true, false, true).timeout.connect(
+			_finish.bind(0, "deadline")
+		)
 	if DisplayServer.get_name() == "headless":
 		OS.low_processor_usage_mode_sleep_usec = TEST_SLEEP_USEC
 	if role == "local":
 		_profile = PongNetContactProfile.new()
 		add_child(_profile)
-		_profile.play_local(options.get("pong-net-health", "5").to_int())
 		_profile.done.connect(_finish.bind(0, "local"))
+		_profile.play_local(options.get("pong-net-health", "5").to_int())
 		return
 	net = PongNet.of(get_tree())
 	net.my_name = options.get("name", role)
@@ -132,11 +140,17 @@ func _on_lobby_changed() -> void:
 func _on_match_started() -> void:
 	_match_clock = 0.0
 	_readied = false
+	_seat = net.my_seat()
 	net.session.take_traffic()
 	if script_name == "hit":
 		_profile.follow(net.play)
 		if net.session.is_server:
-			net.play.match_node.referee.receiver = 1
+			net.play.match_node.referee.receiver = PongNetContactProfile.SEAT
+			var court: PongCourt = net.play.match_node.court
+			net.play.serve_aim = func(receiver: int, avatar: Vector3) -> Vector3:
+				if receiver != PongNetContactProfile.SEAT:
+					return avatar
+				return PongNetContactProfile.aim_for(court, avatar)
 
 
 func _on_match_ended(_winner: int, why: String) -> void:
@@ -155,7 +169,7 @@ func _finish(code: int, why: String) -> void:
 	if net != null:
 		var play: PongNetPlay = net.play
 		data.merge(play.report.to_dict(play.smoother, play.authority))
-		data["seat"] = net.my_seat()
+		data["seat"] = _seat
 		data["error"] = net.session.last_error
 		data["health"] = _health()
 		data["bytes"] = _traffic()

@@ -43,6 +43,30 @@ func make_still_paddle(seat: int, match_node: PongMatch) -> PongController:
 	return still
 
 
+## Where to aim a serve so that it meets the centre of a paddle held at [param home]: the
+## referee's aim ignores the air's deceleration, which the servo applies, so the aim is
+## moved until the ball crosses the paddle's plane at its centre (fixed-point steps of the
+## servo's out-of-contact law: gravity and a constant loss of speed, 1 ms steps).
+static func aim_for(court: PongCourt, home: Vector3) -> Vector3:
+	var aim: Vector3 = home
+	var decel: float = court.number("air_linear_decel_m_per_s2")
+	for iteration: int in 6:
+		var p: Vector3 = Vector3(0.0, PongReferee.SERVE_HEIGHT_M, 0.0)
+		var v: Vector3 = PongReferee.launch_velocity(
+			p, aim, court.gravity, PongReferee.SERVE_FLIGHT_S
+		)
+		var dt: float = HapticsPong.TICK_S
+		for tick: int in 4000:
+			v.y -= court.gravity * dt
+			v = v.normalized() * maxf(v.length() - decel * dt, 0.0)
+			var next: Vector3 = p + v * dt
+			if signf(next.z - home.z) != signf(p.z - home.z):
+				break
+			p = next
+		aim += Vector3(home.x, home.y, home.z) - Vector3(p.x, p.y, home.z)
+	return aim
+
+
 ## Records the telemetry of [param play]'s match from now on.
 func follow(play: PongNetPlay) -> void:
 	_watch(play.match_node)
@@ -65,7 +89,9 @@ func play_local(health: int) -> void:
 	_watch(match_node)
 	match_node.referee.receiver = SEAT
 	match_node.run_until(func() -> bool: return false, PongReferee.FIRST_SERVE_DELAY_S)
-	match_node.serve()
+	var aim: Vector3 = aim_for(match_node.court, match_node.avatar_of(SEAT))
+	var serve: PongReferee.Serve = match_node.referee.make_serve(match_node.court, aim, false)
+	Haptics.pong.set_ball(serve.position, serve.velocity)
 	var end: float = match_node.now + LOCAL_SECONDS
 	while match_node.now < end:
 		match_node.run_until(func() -> bool: return false, PongMatch.STEP_CHUNK_S)

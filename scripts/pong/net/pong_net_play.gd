@@ -17,8 +17,9 @@ extends Node
 ## Health changed on every peer the same way; the match is over on every peer.
 signal finished(winner: int)
 
-## Servo seconds after a transfer during which the servo's territory is not trusted (the
-## set_ball of the transfer reaches the servo a tick later).
+## Servo seconds after a transfer during which the servo's state is not trusted: the
+## set_ball of the transfer reaches the servo a tick later (no hand-off request, no
+## stream from a state the transfer has not replaced yet).
 const SETTLE_S: float = 0.02
 ## Seconds of simulation the game steps per chunk in stepped mode.
 const CHUNK_S: float = PongMatch.STEP_CHUNK_S
@@ -39,6 +40,9 @@ var stepped: bool = false
 ## A second of stepping may not take more than this many chunks (a stalled process does
 ## not try to catch up for ever).
 var max_chunks_per_frame: int = 10
+## Server: where a serve to a receiver aims, Callable(receiver, avatar) -> Vector3 (a test
+## script's; unset: at the receiver's avatar).
+var serve_aim: Callable = Callable()
 
 var _predictor: PongPredictor = null
 var _clocks: Dictionary[int, PongNetClock] = {}
@@ -49,6 +53,8 @@ var _owe_s: float = 0.0
 var _last_now: float = 0.0
 var _last_centers: Dictionary[int, Vector3] = {}
 var _running: bool = false
+var _commanded: Array[Vector3] = []
+var _commanded_time: float = 0.0
 
 
 ## Starts following [param p_match] (already started) with [param p_authority].
@@ -90,7 +96,8 @@ func frame(delta: float) -> void:
 	if authority.is_master() and snapshot.time_s > _settle_until:
 		if snapshot.territory != authority.territory:
 			_hand_off(snapshot)
-	if authority.is_master() and snapshot.time_s != _last_sent_time:
+	var settled: bool = snapshot.time_s > _settle_until
+	if authority.is_master() and settled and snapshot.time_s != _last_sent_time:
 		_last_sent_time = snapshot.time_s
 		_seq += 1
 		_send(
@@ -126,8 +133,11 @@ func _referee(sim_dt: float) -> void:
 	if rules.is_over() or not match_node.referee.update(sim_dt, match_node.snapshot.ball_velocity):
 		return
 	var receiver: int = match_node.referee.receiver
+	var aim: Vector3 = match_node.avatar_of(receiver)
+	if serve_aim.is_valid():
+		aim = serve_aim.call(receiver, aim)
 	var serve: PongReferee.Serve = match_node.referee.make_serve(
-		match_node.court, match_node.avatar_of(receiver), match_node.beginner
+		match_node.court, aim, match_node.beginner
 	)
 	var territory: int = PongCourt.territory_of(serve.position)
 	issue(PongNetProtocol.TRANSFER_SERVE, territory, serve.position, serve.velocity, Vector3.ZERO, 0)
@@ -160,9 +170,9 @@ func _nudge(dt: float, snapshot: PongSnapshot) -> void:
 	var part: Vector3 = smoother.take(dt)
 	if part.length() < MIN_NUDGE_M:
 		return
+	var ball: Array[Vector3] = _local_ball()
 	var lead: float = 0.0 if stepped else HapticsPong.TICK_S
-	var p: Vector3 = snapshot.ball_position + snapshot.ball_velocity * lead + part
-	Haptics.pong.set_ball(p, snapshot.ball_velocity, snapshot.ball_spin)
+	_set_ball(ball[0] + ball[1] * lead + part, ball[1], ball[2])
 
 
 func _ball_of(snapshot: PongSnapshot) -> Array:
@@ -309,11 +319,33 @@ func _on_ball(
 
 
 func _correct(position: Vector3, velocity: Vector3, spin: Vector3) -> void:
-	var local: Vector3 = Haptics.pong.get_state().get("ball", {}).get("position", Vector3.ZERO)
+	var local: Vector3 = _local_ball()[0]
 	if smoother.on_target(local, position):
-		Haptics.pong.set_ball(position, velocity, spin)
+		_set_ball(position, velocity, spin)
 	else:
-		Haptics.pong.set_ball(local, velocity, spin)
+		_set_ball(local, velocity, spin)
+
+
+## Our ball now: the last set_ball while the servo has not taken it yet (a command reaches
+## the servo at its next tick), else the servo's state. [position, velocity, spin].
+func _local_ball() -> Array[Vector3]:
+	var state: Dictionary = Haptics.pong.get_state()
+	var time_s: float = state.get("time_s", 0.0)
+	if not _commanded.is_empty() and time_s < _commanded_time + 1.5 * HapticsPong.TICK_S:
+		return _commanded
+	_commanded = []
+	var ball: Dictionary = state.get("ball", {})
+	return [
+		ball.get("position", Vector3.ZERO),
+		ball.get("velocity", Vector3.ZERO),
+		ball.get("spin", Vector3.ZERO)
+	]
+
+
+func _set_ball(position: Vector3, velocity: Vector3, spin: Vector3) -> void:
+	_commanded_time = Haptics.pong.get_state().get("time_s", 0.0)
+	_commanded = [position, velocity, spin]
+	Haptics.pong.set_ball(position, velocity, spin)
 
 
 func _on_pose(
@@ -410,11 +442,11 @@ func _on_transfer(
 	var target: Array[Vector3] = PongNetSmoother.extrapolate(
 		_predictor, position, velocity, _gravity(), age
 	)
-	var local: Vector3 = Haptics.pong.get_state().get("ball", {}).get("position", Vector3.ZERO)
+	var local: Vector3 = _local_ball()[0]
 	report.handoff_corrections.append((target[0] - local).length())
 	if kind == PongNetProtocol.TRANSFER_SERVE or authority.is_master():
 		smoother.pending = Vector3.ZERO
-		Haptics.pong.set_ball(target[0], target[1], spin)
+		_set_ball(target[0], target[1], spin)
 	else:
 		_correct(target[0], target[1], spin)
 	_settle_until = match_node.snapshot.time_s + SETTLE_S

@@ -28,6 +28,9 @@ var version: String = PongNetProtocol.VERSION
 
 var _peer: ENetMultiplayerPeer = null
 
+## Seconds a refused client keeps its connection, so it learns why before it is dropped.
+const REFUSAL_GRACE_S: float = 0.5
+
 
 ## Hosts on [param port] (all interfaces unless [param bind_ip]); "" or the error.
 func host(port: int, max_clients: int, bind_ip: String = "*") -> String:
@@ -150,10 +153,20 @@ func _on_auth(peer: int, data: PackedByteArray) -> void:
 	)
 	printerr("PongNet: peer %d %s" % [peer, reason])
 	if is_server:
-		_api().disconnect_peer(peer)
+		# Not at once: the client first gets our version (sent when it began to
+		# authenticate) and says why on its side too.
+		get_tree().create_timer(REFUSAL_GRACE_S, true, false, true).timeout.connect(
+			_drop.bind(peer)
+		)
 	else:
 		_fail(reason)
 		close()
+
+
+func _drop(peer: int) -> void:
+	var api: SceneMultiplayer = _api()
+	if api != null and _peer != null and api.get_authenticating_peers().has(peer):
+		api.disconnect_peer(peer)
 
 
 func _on_authentication_failed(peer: int) -> void:

@@ -13,7 +13,7 @@ extends RefCounted
 ## Time constant of the position blend, seconds.
 var tau_s: float = 0.04
 ## Larger errors are not blended but snapped, metres.
-var snap_distance_m: float = 0.6
+var snap_distance_m: float = 2.5
 ## Position error not yet blended out, metres (world).
 var pending: Vector3 = Vector3.ZERO
 ## The size of each received correction, metres (before blending).
