@@ -40,24 +40,16 @@ var play: PongNetPlay = null
 var screen: PongScreen = null
 
 
-## The PongNet node of [param tree], made when missing.
-static func of(tree: SceneTree) -> PongNet:
-	var existing: Node = tree.root.get_node_or_null(NODE_NAME)
-	if existing is PongNet:
-		return existing
-	var net: PongNet = PongNet.new()
-	net.name = NODE_NAME
-	tree.root.add_child(net)
-	return net
-
-
 func _init() -> void:
+	# The winner screen pauses the tree; the connection must not stop for it.
+	process_mode = Node.PROCESS_MODE_ALWAYS
 	session = PongNetSession.new()
 	session.name = "Session"
 	add_child(session)
 	play = PongNetPlay.new()
 	play.name = "Play"
-	play.net = self
+	play.session = session
+	play.owners_changed.connect(seats_changed)
 	add_child(play)
 	session.connected.connect(_on_connected)
 	session.failed.connect(func(reason: String) -> void: status_changed.emit(reason))
@@ -105,11 +97,11 @@ func leave() -> void:
 
 
 ## Ready (or not) for the next match.
-func set_ready(ready: bool) -> void:
+func set_ready(is_ready: bool) -> void:
 	if session.is_server:
-		_on_ready(1, ready)
+		_on_ready(1, is_ready)
 	elif session.is_open():
-		_ready_up.rpc_id(1, ready)
+		_ready_up.rpc_id(1, is_ready)
 
 
 ## Server: whether a match may start now (two players or more, all ready, none running).
@@ -158,7 +150,8 @@ func _on_connected() -> void:
 
 
 func _on_peer_left(peer: int) -> void:
-	var name_left: String = players.get(peer, {}).get("name", "peer %d" % peer)
+	var entry: Dictionary = players.get(peer, {})
+	var name_left: String = entry.get("name", "peer %d" % peer)
 	players.erase(peer)
 	status_changed.emit("%s left" % name_left)
 	if session.is_server:
@@ -173,9 +166,8 @@ func _take_over(peer: int) -> void:
 	var authority: PongNetAuthority = play.authority
 	var was_master: bool = authority.master_peer == peer
 	var freed: PackedInt32Array = authority.release_peer(peer)
-	play.report.extra.get_or_add("peers_left", []).append(
-		{"peer": peer, "seats": Array(freed), "wall_s": PongNetReport.now()}
-	)
+	var left: Array = play.report.extra.get_or_add("peers_left", [])
+	left.append({"peer": peer, "seats": Array(freed), "wall_s": PongNetReport.now()})
 	play._send(&"_owners", [authority.owners])
 	seats_changed()
 	var pending: bool = authority.master_peer == 0 or not authority.is_master()
@@ -204,6 +196,7 @@ func _begin(owners: PackedInt64Array, health: int) -> void:
 	screen = PONG_SCENE.instantiate() as PongScreen
 	screen.stepped = stepped
 	screen.start_health = health
+	screen.process_mode = Node.PROCESS_MODE_PAUSABLE
 	add_child(screen)
 	var match_node: PongMatch = screen.match_node
 	match_node.self_stepping = false
@@ -216,6 +209,7 @@ func _begin(owners: PackedInt64Array, health: int) -> void:
 	screen.hud.visible = not dedicated
 	var authority: PongNetAuthority = PongNetAuthority.new(me, owners)
 	play.stepped = stepped
+	play.ball.stepped = stepped
 	play.begin(match_node, authority, PackedInt32Array())
 	play.finished.connect(_on_finished, CONNECT_ONE_SHOT)
 	seats_changed()
@@ -226,11 +220,11 @@ func _begin(owners: PackedInt64Array, health: int) -> void:
 # server's seats, or the network.
 func _set_controller(seat: int) -> void:
 	var match_node: PongMatch = play.match_node
-	var owner: int = play.authority.owner_of(seat)
+	var seat_owner: int = play.authority.owner_of(seat)
 	var me: int = multiplayer.get_unique_id()
 	var current: PongController = match_node.controllers[seat]
 	var seats_here: PackedInt32Array = play.local_seats
-	if owner != me:
+	if seat_owner != me:
 		if not current is PongNetRemotePlayer:
 			var remote: PongNetRemotePlayer = PongNetRemotePlayer.new(seat)
 			remote.intent = current.intent
@@ -291,11 +285,11 @@ func _broadcast_lobby() -> void:
 	lobby_changed.emit()
 
 
-func _on_ready(peer: int, ready: Variant) -> void:
-	if typeof(ready) != TYPE_BOOL or not players.has(peer):
+func _on_ready(peer: int, is_ready: Variant) -> void:
+	if typeof(is_ready) != TYPE_BOOL or not players.has(peer):
 		printerr("PongNet: dropped ready from peer %d: not a bool or not in the lobby" % peer)
 		return
-	players[peer]["ready"] = ready
+	players[peer]["ready"] = is_ready
 	_broadcast_lobby()
 
 
@@ -330,9 +324,9 @@ func _hello(player_name: Variant) -> void:
 
 
 @rpc("any_peer", "call_remote", "reliable", PongNetProtocol.CHANNEL_RELIABLE)
-func _ready_up(ready: Variant) -> void:
+func _ready_up(is_ready: Variant) -> void:
 	if session.is_server:
-		_on_ready(multiplayer.get_remote_sender_id(), ready)
+		_on_ready(multiplayer.get_remote_sender_id(), is_ready)
 
 
 @rpc("any_peer", "call_remote", "reliable", PongNetProtocol.CHANNEL_RELIABLE)
@@ -342,12 +336,13 @@ func _lobby(rows: Variant) -> void:
 		printerr("PongNet: dropped lobby from peer %d" % sender)
 		return
 	var table: Dictionary[int, Dictionary] = {}
-	for row: Variant in rows:
-		if typeof(row) != TYPE_ARRAY or (row as Array).size() != 4:
+	var list: Array = rows
+	for row: Variant in list:
+		var r: Array = row if typeof(row) == TYPE_ARRAY else []
+		if r.size() != 4 or typeof(r[0]) != TYPE_INT or typeof(r[2]) != TYPE_INT:
 			printerr("PongNet: dropped a malformed lobby row from peer %d" % sender)
 			return
-		var r: Array = row
-		if typeof(r[0]) != TYPE_INT or not PongNetProtocol.check_name(r[1]).is_empty():
+		if typeof(r[3]) != TYPE_BOOL or not PongNetProtocol.check_name(r[1]).is_empty():
 			printerr("PongNet: dropped a malformed lobby row from peer %d" % sender)
 			return
 		table[r[0]] = {"name": r[1], "seat": r[2], "ready": r[3]}
@@ -361,9 +356,13 @@ func _start(owners: Variant, health: Variant) -> void:
 	var reason: String = PongNetProtocol.check_int(health, 1, 999, "health")
 	if sender != PongNetAuthority.SERVER_ID:
 		reason = "only the server starts a match"
-	elif typeof(owners) != TYPE_PACKED_INT64_ARRAY or (owners as PackedInt64Array).size() != seats:
+	var list: PackedInt64Array = PackedInt64Array()
+	if typeof(owners) == TYPE_PACKED_INT64_ARRAY:
+		list = owners
+	if reason.is_empty() and list.size() != seats:
 		reason = "owners is not %d peer ids" % seats
 	if not reason.is_empty():
 		printerr("PongNet: dropped start from peer %d: %s" % [sender, reason])
 		return
-	_begin(owners, health)
+	var start_with: int = health
+	_begin(list, start_with)

@@ -68,14 +68,14 @@ func _ready() -> void:
 
 func _launch() -> void:
 	options = parse(OS.get_cmdline_user_args())
-	var role: String = "server" if options.has("server") else options.get("pong-net", "host")
-	var port: int = options.get("port", str(PongNetProtocol.DEFAULT_PORT)).to_int()
-	report_path = options.get("pong-net-report", "")
-	seconds = options.get("pong-net-seconds", "0").to_float()
-	script_name = options.get("pong-net-script", "rally")
-	peers_wanted = options.get("pong-net-peers", "2").to_int()
+	var role: String = "server" if options.has("server") else _option("pong-net", "host")
+	var port: int = _option("port", str(PongNetProtocol.DEFAULT_PORT)).to_int()
+	report_path = _option("pong-net-report", "")
+	seconds = _option("pong-net-seconds", "0").to_float()
+	script_name = _option("pong-net-script", "rally")
+	peers_wanted = _option("pong-net-peers", "2").to_int()
 	rogue = options.has("pong-net-rogue")
-	max_seconds = options.get("pong-net-max-seconds", "0").to_float()
+	max_seconds = _option("pong-net-max-seconds", "0").to_float()
 	if max_seconds > 0.0:
 		get_tree().create_timer(max_seconds, true, false, true).timeout.connect(
 			_finish.bind(0, "deadline")
@@ -86,15 +86,17 @@ func _launch() -> void:
 		_profile = PongNetContactProfile.new()
 		add_child(_profile)
 		_profile.done.connect(_finish.bind(0, "local"))
-		_profile.play_local(options.get("pong-net-health", "5").to_int())
+		_profile.play_local(_option("pong-net-health", "5").to_int())
 		return
-	net = PongNet.of(get_tree())
-	net.my_name = options.get("name", role)
+	net = PongNet.new()
+	net.name = PongNet.NODE_NAME
+	get_tree().root.add_child(net)
+	net.my_name = _option("name", role)
 	net.dedicated = role == "server"
 	net.autopilot = options.has("pong-net-autopilot") or net.dedicated
 	net.stepped = DisplayServer.get_name() == "headless"
-	net.start_health = options.get("pong-net-health", str(PongRules.DEFAULT_START_HEALTH)).to_int()
-	net.session.version = options.get("pong-net-version", PongNetProtocol.VERSION)
+	net.start_health = _option("pong-net-health", str(PongRules.DEFAULT_START_HEALTH)).to_int()
+	net.session.version = _option("pong-net-version", PongNetProtocol.VERSION)
 	net.status_changed.connect(func(text: String) -> void: print("PongNet: %s" % text))
 	net.session.failed.connect(func(_reason: String) -> void: _finish(2, "failed"))
 	net.session.server_lost.connect(_finish.bind(0, "server lost"))
@@ -107,11 +109,15 @@ func _launch() -> void:
 		net.local_controller_factory = _profile.make_still_paddle
 	var error: String = ""
 	if role == "join":
-		error = net.join(options.get("address", "127.0.0.1"), port)
+		error = net.join(_option("address", "127.0.0.1"), port)
 	else:
 		error = net.host(port)
 	if not error.is_empty():
 		_finish(2, error)
+
+
+func _option(key: String, default: String) -> String:
+	return options[key] if options.has(key) else default
 
 
 func _process(delta: float) -> void:
@@ -168,7 +174,7 @@ func _finish(code: int, why: String) -> void:
 	var data: Dictionary = {"exit": why}
 	if net != null:
 		var play: PongNetPlay = net.play
-		data.merge(play.report.to_dict(play.smoother, play.authority))
+		data.merge(play.report.to_dict(play.ball.smoother, play.authority))
 		data["seat"] = _seat
 		data["error"] = net.session.last_error
 		data["health"] = _health()

@@ -16,6 +16,8 @@ extends Node
 
 ## Health changed on every peer the same way; the match is over on every peer.
 signal finished(winner: int)
+## The server changed who owns which seat (a player left).
+signal owners_changed
 
 ## Servo seconds after a transfer during which the servo's state is not trusted: the
 ## set_ball of the transfer reaches the servo a tick later (no hand-off request, no
@@ -25,13 +27,13 @@ const SETTLE_S: float = 0.02
 const CHUNK_S: float = PongMatch.STEP_CHUNK_S
 ## Paddle speeds sent are capped here (a teleported avatar is not a swing), m/s.
 const MAX_SENT_PADDLE_SPEED_M_PER_S: float = 20.0
-## Smallest pending correction worth a set_ball, metres.
-const MIN_NUDGE_M: float = 0.0005
 
-var net: PongNet = null
+## The connection (round trips for the age of messages).
+var session: PongNetSession = null
 var authority: PongNetAuthority = null
 var match_node: PongMatch = null
-var smoother: PongNetSmoother = PongNetSmoother.new()
+## Our ball in the servo, as the network moves it.
+var ball: PongNetBall = PongNetBall.new()
 var report: PongNetReport = PongNetReport.new()
 ## Seats this peer drives (its player's, or on the server the computer's).
 var local_seats: PackedInt32Array = PackedInt32Array()
@@ -53,8 +55,6 @@ var _owe_s: float = 0.0
 var _last_now: float = 0.0
 var _last_centers: Dictionary[int, Vector3] = {}
 var _running: bool = false
-var _commanded: Array[Vector3] = []
-var _commanded_time: float = 0.0
 
 
 ## Starts following [param p_match] (already started) with [param p_authority].
@@ -105,7 +105,7 @@ func frame(delta: float) -> void:
 			[authority.epoch, _seq, snapshot.time_s] + _ball_of(snapshot) + [_my_leg_ms()]
 		)
 	elif not authority.is_master():
-		_nudge(sim_dt, snapshot)
+		ball.nudge(sim_dt)
 	if sim_dt > 0.0:
 		_send_poses(snapshot)
 	report.sample(snapshot.ball_position, authority.is_master(), snapshot.time_s)
@@ -166,22 +166,13 @@ func _hand_off(snapshot: PongSnapshot) -> void:
 		callv(&"rpc_id", [PongNetAuthority.SERVER_ID, &"_request"] + args)
 
 
-func _nudge(dt: float, snapshot: PongSnapshot) -> void:
-	var part: Vector3 = smoother.take(dt)
-	if part.length() < MIN_NUDGE_M:
-		return
-	var ball: Array[Vector3] = _local_ball()
-	var lead: float = 0.0 if stepped else HapticsPong.TICK_S
-	_set_ball(ball[0] + ball[1] * lead + part, ball[1], ball[2])
-
-
 func _ball_of(snapshot: PongSnapshot) -> Array:
 	return [snapshot.ball_position, snapshot.ball_velocity, snapshot.ball_spin]
 
 
 ## One-way delay of our own leg to the server, ms (0 on the server).
 func _my_leg_ms() -> int:
-	return roundi(net.session.round_trip_s(PongNetAuthority.SERVER_ID) * 500.0)
+	return roundi(session.round_trip_s(PongNetAuthority.SERVER_ID) * 500.0)
 
 
 func _clock_of(peer: int, their_leg_ms: int) -> PongNetClock:
@@ -203,7 +194,7 @@ func _reject(sender: int, what: String, reason: String) -> void:
 
 ## Sends [param method] with [param args] to every other peer.
 func _send(method: StringName, args: Array) -> void:
-	if multiplayer.has_multiplayer_peer() and net.session.is_open():
+	if multiplayer.has_multiplayer_peer() and session.is_open():
 		callv(&"rpc", [method] + args)
 
 
@@ -305,47 +296,22 @@ func _on_ball(
 	if not reason.is_empty():
 		_reject(sender, "ball state", reason)
 		return
-	reason = authority.accept_state(sender, epoch, seq)
+	var state_epoch: int = epoch
+	var state_seq: int = seq
+	var sent_at: float = time_s
+	var p: Vector3 = position
+	var v: Vector3 = velocity
+	var w: Vector3 = spin
+	var leg: int = leg_ms
+	reason = authority.accept_state(sender, state_epoch, state_seq)
 	if not reason.is_empty():
 		report.late += 1
 		return
 	report.states += 1
-	var age: float = _clock_of(sender, leg_ms).observe(_local_now_s(), time_s)
+	var age: float = _clock_of(sender, leg).observe(_local_now_s(), sent_at)
 	report.ages.append(age)
-	var target: Array[Vector3] = PongNetSmoother.extrapolate(
-		_predictor, position, velocity, _gravity(), age
-	)
-	_correct(target[0], target[1], spin)
-
-
-func _correct(position: Vector3, velocity: Vector3, spin: Vector3) -> void:
-	var local: Vector3 = _local_ball()[0]
-	if smoother.on_target(local, position):
-		_set_ball(position, velocity, spin)
-	else:
-		_set_ball(local, velocity, spin)
-
-
-## Our ball now: the last set_ball while the servo has not taken it yet (a command reaches
-## the servo at its next tick), else the servo's state. [position, velocity, spin].
-func _local_ball() -> Array[Vector3]:
-	var state: Dictionary = Haptics.pong.get_state()
-	var time_s: float = state.get("time_s", 0.0)
-	if not _commanded.is_empty() and time_s < _commanded_time + 1.5 * HapticsPong.TICK_S:
-		return _commanded
-	_commanded = []
-	var ball: Dictionary = state.get("ball", {})
-	return [
-		ball.get("position", Vector3.ZERO),
-		ball.get("velocity", Vector3.ZERO),
-		ball.get("spin", Vector3.ZERO)
-	]
-
-
-func _set_ball(position: Vector3, velocity: Vector3, spin: Vector3) -> void:
-	_commanded_time = Haptics.pong.get_state().get("time_s", 0.0)
-	_commanded = [position, velocity, spin]
-	Haptics.pong.set_ball(position, velocity, spin)
+	var target: Array[Vector3] = PongNetSmoother.extrapolate(_predictor, p, v, _gravity(), age)
+	ball.correct(target[0], target[1], w)
 
 
 func _on_pose(
@@ -367,17 +333,25 @@ func _on_pose(
 		reason = PongNetProtocol.check_int(flags, 0, 3, "flags")
 	if reason.is_empty():
 		reason = PongNetProtocol.check_float(time_s, 0.0, 1e7, "time")
-	if reason.is_empty() and authority.owner_of(seat) != sender:
-		reason = "seat %d is not theirs" % seat
 	if not reason.is_empty():
 		_reject(sender, "pose", reason)
 		return
-	var controller: PongController = match_node.controllers[seat]
+	var pose_seat: int = seat
+	var sent_at: float = time_s
+	var pose: Array[Vector3] = [avatar, offset, velocity, normal]
+	var pose_flags: int = flags
+	# The server may drive any seat: it takes over the seats of players who left, and its
+	# poses can overtake the reliable message that says so.
+	var seat_owner: int = authority.owner_of(pose_seat)
+	if seat_owner != sender and sender != PongNetAuthority.SERVER_ID:
+		_reject(sender, "pose", "seat %d is not theirs" % pose_seat)
+		return
+	var controller: PongController = match_node.controllers[pose_seat]
 	if not controller is PongNetRemotePlayer:
 		return
-	var age: float = _clock_of(sender, 0).observe(_local_now_s(), time_s)
+	var age: float = _clock_of(sender, 0).observe(_local_now_s(), sent_at)
 	(controller as PongNetRemotePlayer).set_pose(
-		match_node.now, minf(age, 0.5), avatar, offset, velocity, normal, flags
+		match_node.now, minf(age, 0.5), pose[0], pose[1], pose[2], pose[3], pose_flags
 	)
 	report.poses += 1
 
@@ -397,13 +371,18 @@ func _on_request(
 	)
 	if reason.is_empty():
 		reason = PongNetProtocol.check_int(territory, 0, authority.owners.size() - 1, "territory")
-	if reason.is_empty():
-		reason = authority.check_request(sender, epoch, territory)
 	if not reason.is_empty():
 		_reject(sender, "hand-off request", reason)
 		return
-	var age_ms: int = roundi(net.session.round_trip_s(sender) * 500.0)
-	issue(PongNetProtocol.TRANSFER_HANDOFF, territory, position, velocity, spin, age_ms)
+	var seen: int = epoch
+	var to: int = territory
+	var state: Array[Vector3] = [position, velocity, spin]
+	reason = authority.check_request(sender, seen, to)
+	if not reason.is_empty():
+		_reject(sender, "hand-off request", reason)
+		return
+	var age_ms: int = roundi(session.round_trip_s(sender) * 500.0)
+	issue(PongNetProtocol.TRANSFER_HANDOFF, to, state[0], state[1], state[2], age_ms)
 
 
 func _on_transfer(
@@ -438,17 +417,19 @@ func _on_transfer(
 		_reject(sender, "transfer", reason)
 		return
 	report.transfer(authority.history[-1])
-	var age: float = age_ms / 1000.0 + _my_leg_ms() / 1000.0
+	var state: Array[Vector3] = [position, velocity, spin]
+	var sent_age_ms: int = age_ms
+	var age: float = (sent_age_ms + _my_leg_ms()) / 1000.0
 	var target: Array[Vector3] = PongNetSmoother.extrapolate(
-		_predictor, position, velocity, _gravity(), age
+		_predictor, state[0], state[1], _gravity(), age
 	)
-	var local: Vector3 = _local_ball()[0]
+	var local: Vector3 = ball.local()[0]
 	report.handoff_corrections.append((target[0] - local).length())
 	if kind == PongNetProtocol.TRANSFER_SERVE or authority.is_master():
-		smoother.pending = Vector3.ZERO
-		_set_ball(target[0], target[1], spin)
+		ball.smoother.pending = Vector3.ZERO
+		ball.put(target[0], target[1], state[2])
 	else:
-		_correct(target[0], target[1], spin)
+		ball.correct(target[0], target[1], state[2])
 	_settle_until = match_node.snapshot.time_s + SETTLE_S
 
 
@@ -460,15 +441,17 @@ func _on_hurt(sender: int, epoch: Variant, player: Variant, cause: Variant) -> v
 		reason = PongNetProtocol.check_int(player, 0, authority.owners.size() - 1, "player")
 	if reason.is_empty() and (typeof(cause) != TYPE_STRING or cause != "floor"):
 		reason = "cause %s is not one the network carries" % [cause]
-	if reason.is_empty():
-		var master_then: int = authority.master_at(epoch)
-		if sender != master_then:
-			reason = "peer %d was not the ball's master at epoch %d" % [sender, epoch]
 	if not reason.is_empty():
 		_reject(sender, "hurt", reason)
 		return
-	match_node.rules.hurt(player, StringName(cause))
-	report.hurts.append([epoch, player, cause])
+	var at_epoch: int = epoch
+	var victim: int = player
+	var master_then: int = authority.master_at(at_epoch)
+	if sender != master_then:
+		_reject(sender, "hurt", "peer %d was not the master at epoch %d" % [sender, at_epoch])
+		return
+	match_node.rules.hurt(victim, PongRules.CAUSE_FLOOR)
+	report.hurts.append([at_epoch, victim, "floor"])
 
 
 func _on_owners(sender: int, owners: Variant) -> void:
@@ -480,7 +463,7 @@ func _on_owners(sender: int, owners: Variant) -> void:
 		_reject(sender, "owners", "%d seats, the match has %d" % [list.size(), authority.owners.size()])
 		return
 	authority.owners = list
-	net.seats_changed()
+	owners_changed.emit()
 
 
 func _on_event(event: Dictionary) -> void:

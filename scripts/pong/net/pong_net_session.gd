@@ -75,8 +75,9 @@ func close() -> void:
 		api.multiplayer_peer = OfflineMultiplayerPeer.new()
 		for pair: Array in _connections(api):
 			var sig: Signal = pair[0]
-			if sig.is_connected(pair[1]):
-				sig.disconnect(pair[1])
+			var handler: Callable = pair[1]
+			if sig.is_connected(handler):
+				sig.disconnect(handler)
 	is_server = false
 
 
@@ -100,8 +101,8 @@ func take_traffic() -> Vector2i:
 	if _peer == null or _peer.host == null:
 		return Vector2i.ZERO
 	return Vector2i(
-		_peer.host.pop_statistic(ENetConnection.HOST_TOTAL_SENT_DATA),
-		_peer.host.pop_statistic(ENetConnection.HOST_TOTAL_RECEIVED_DATA)
+		int(_peer.host.pop_statistic(ENetConnection.HOST_TOTAL_SENT_DATA)),
+		int(_peer.host.pop_statistic(ENetConnection.HOST_TOTAL_RECEIVED_DATA))
 	)
 
 
@@ -115,8 +116,9 @@ func _install() -> void:
 	api.auth_timeout = 3.0
 	for pair: Array in _connections(api):
 		var sig: Signal = pair[0]
-		if not sig.is_connected(pair[1]):
-			sig.connect(pair[1])
+		var handler: Callable = pair[1]
+		if not sig.is_connected(handler):
+			sig.connect(handler)
 	api.multiplayer_peer = _peer
 
 
