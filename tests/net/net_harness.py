@@ -150,7 +150,8 @@ def workspace():
 
 def run_match(workdir: Path, peers: int, network: Network, seconds: float,
               host_args: tuple[str, ...] = (), client_args: tuple[tuple[str, ...], ...] = (),
-              dedicated: bool = False, on_running=None) -> tuple[list[Peer], dict]:
+              dedicated: bool = False, on_running=None,
+              force_relay: bool = False) -> tuple[list[Peer], dict]:
     """Starts a host (or a dedicated server) and the clients, through one relay when the
     network is impaired, waits for all to exit; returns the peers (reports loaded) and the
     relay's counts. [on_running](peers) runs once every client is connected."""
@@ -171,7 +172,7 @@ def run_match(workdir: Path, peers: int, network: Network, seconds: float,
         started.append(host)
         assert host.wait_for_log("Hosting on port"), host.log()
         impaired = network.delay_ms > 0 or network.jitter_ms > 0 or network.loss > 0
-        if impaired:
+        if impaired or force_relay:
             relay = Relay(port, workdir, network.delay_ms, network.jitter_ms, network.loss)
         target = relay.port if relay is not None else port
         clients = players if dedicated else players - 1
@@ -250,6 +251,19 @@ def divergences(reports: list[dict], after_serve_s: float = 0.0) -> list[float]:
                     if p is not None:
                         out.append(math.dist(p, s[2:5]))
     return out
+
+
+def handoff_gaps(reports: list[dict]) -> list[float]:
+    """Seconds without a master at each hand-off: from the old master's stop (its ball
+    crossed) to the new master's start (the server's transfer arrived)."""
+    gaps = []
+    starts = sorted(a for r in reports for a, _ in r["master_intervals"])
+    for r in reports:
+        for _, end in r["master_intervals"]:
+            later = [s for s in starts if s >= end]
+            if later and later[0] - end < 2.0:
+                gaps.append(later[0] - end)
+    return gaps
 
 
 def quantile(values: list[float], q: float) -> float:

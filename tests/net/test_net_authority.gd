@@ -71,7 +71,11 @@ func test_only_the_master_may_ask_and_only_the_server_may_transfer() -> void:
 	assert_eq(peers[0].epoch, 1, "a refused transfer changes nothing")
 	assert_eq(peers[0].apply_transfer(HOST, {"epoch": 1, "master": CLIENT}).is_empty(), false)
 	assert_eq(peers[0].master_peer, HOST, "a stale transfer changes nothing")
-	assert_eq(peers[0].refusals.values().reduce(func(a: int, b: int) -> int: return a + b, 0), 4, "each refusal counted")
+	assert_eq(
+		peers[0].refusals.values().reduce(func(a: int, b: int) -> int: return a + b, 0),
+		4,
+		"each refusal counted"
+	)
 
 
 func test_stream_states_only_from_the_master_of_this_epoch_in_order() -> void:

@@ -73,9 +73,7 @@ func host(port: int) -> String:
 	players.clear()
 	if not dedicated:
 		players[1] = {"name": my_name, "seat": 0, "ready": false}
-	status_changed.emit(
-		"Hosting on port %d%s" % [port, " (dedicated server)" if dedicated else ""]
-	)
+	status_changed.emit("Hosting on port %d%s" % [port, " (dedicated server)" if dedicated else ""])
 	lobby_changed.emit()
 	return ""
 
@@ -168,7 +166,7 @@ func _take_over(peer: int) -> void:
 	var freed: PackedInt32Array = authority.release_peer(peer)
 	var left: Array = play.report.extra.get_or_add("peers_left", [])
 	left.append({"peer": peer, "seats": Array(freed), "wall_s": PongNetReport.now()})
-	play._send(&"_owners", [authority.owners])
+	play.send_all(&"_owners", [authority.owners])
 	seats_changed()
 	var pending: bool = authority.master_peer == 0 or not authority.is_master()
 	if was_master or (pending and authority.owner_of(authority.territory) == 1):

@@ -21,6 +21,8 @@ extends Node
 ## Headless peers sleep this long per frame (FACTS §1.6: the default 6900 us makes every
 ## message wait up to a frame).
 const TEST_SLEEP_USEC: int = 1000
+## The custom feature of the dedicated server's export preset.
+const SERVER_FEATURE: String = "pong_server"
 
 var net: PongNet = null
 var options: Dictionary[String, String] = {}
@@ -34,13 +36,15 @@ var max_seconds: float = 0.0
 var _match_clock: float = -1.0
 var _seat: int = -1
 var _readied: bool = false
-var _rogue_done: bool = false
+var _rogue_rounds: int = 0
 var _profile: PongNetContactProfile = null
 var _finishing: bool = false
 
 
-## Whether [param args] ask for networked Pong.
+## Whether [param args] ask for networked Pong (the "Linux Server" export always does).
 static func wants(args: PackedStringArray) -> bool:
+	if OS.has_feature(SERVER_FEATURE):
+		return true
 	for arg: String in args:
 		if arg == "--server" or arg.begins_with("--pong-net="):
 			return true
@@ -68,7 +72,8 @@ func _ready() -> void:
 
 func _launch() -> void:
 	options = parse(OS.get_cmdline_user_args())
-	var role: String = "server" if options.has("server") else _option("pong-net", "host")
+	var server: bool = options.has("server") or OS.has_feature(SERVER_FEATURE)
+	var role: String = "server" if server else _option("pong-net", "host")
 	var port: int = _option("port", str(PongNetProtocol.DEFAULT_PORT)).to_int()
 	report_path = _option("pong-net-report", "")
 	seconds = _option("pong-net-seconds", "0").to_float()
@@ -128,8 +133,9 @@ func _process(delta: float) -> void:
 	if _match_clock < 0.0:
 		return
 	_match_clock += delta
-	if rogue and not _rogue_done and _match_clock > 1.0:
-		_rogue_done = true
+	# Three rounds: unreliable messages may be dropped by ENet's throttle in a burst.
+	if rogue and _rogue_rounds < 3 and _match_clock > 1.0 + 0.5 * _rogue_rounds:
+		_rogue_rounds += 1
 		PongNetRogue.attack(net)
 	if seconds > 0.0 and _match_clock >= seconds:
 		_finish(0, "time")

@@ -121,7 +121,9 @@ func _drain() -> void:
 	for i: int in range(0, data.size() - _stride + 1, _stride):
 		var t: float = data[i + _time_column]
 		var f: float = (
-			Vector3(data[i + _force_column], data[i + _force_column + 1], data[i + _force_column + 2])
+			Vector3(
+				data[i + _force_column], data[i + _force_column + 1], data[i + _force_column + 2]
+			)
 			. length()
 		)
 		if f > THRESHOLD_N:

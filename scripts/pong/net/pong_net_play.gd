@@ -1,5 +1,5 @@
 class_name PongNetPlay
-extends Node
+extends PongNetWire
 ## One networked match on this peer: the private haptic space. Every peer runs the servo
 ## and simulates the ball; the owner of the territory the ball is in is its master
 ## ([PongNetAuthority]): it sends the ball state on every new servo state (>= 60 Hz,
@@ -28,8 +28,6 @@ const CHUNK_S: float = PongMatch.STEP_CHUNK_S
 ## Paddle speeds sent are capped here (a teleported avatar is not a swing), m/s.
 const MAX_SENT_PADDLE_SPEED_M_PER_S: float = 20.0
 
-## The connection (round trips for the age of messages).
-var session: PongNetSession = null
 var authority: PongNetAuthority = null
 var match_node: PongMatch = null
 ## Our ball in the servo, as the network moves it.
@@ -100,9 +98,8 @@ func frame(delta: float) -> void:
 	if authority.is_master() and settled and snapshot.time_s != _last_sent_time:
 		_last_sent_time = snapshot.time_s
 		_seq += 1
-		_send(
-			&"_ball",
-			[authority.epoch, _seq, snapshot.time_s] + _ball_of(snapshot) + [_my_leg_ms()]
+		send_all(
+			&"_ball", [authority.epoch, _seq, snapshot.time_s] + _ball_of(snapshot) + [_my_leg_ms()]
 		)
 	elif not authority.is_master():
 		ball.nudge(sim_dt)
@@ -125,7 +122,7 @@ func _send_poses(snapshot: PongSnapshot) -> void:
 		velocity = velocity.limit_length(MAX_SENT_PADDLE_SPEED_M_PER_S)
 		var normal: Vector3 = snapshot.paddle_normals[seat].normalized()
 		var flags: int = PongNetRemotePlayer.flags_of(match_node.controllers[seat].intent)
-		_send(&"_pose", [seat, avatar, offset, velocity, normal, flags, snapshot.time_s])
+		send_all(&"_pose", [seat, avatar, offset, velocity, normal, flags, snapshot.time_s])
 
 
 func _referee(sim_dt: float) -> void:
@@ -140,7 +137,9 @@ func _referee(sim_dt: float) -> void:
 		match_node.court, aim, match_node.beginner
 	)
 	var territory: int = PongCourt.territory_of(serve.position)
-	issue(PongNetProtocol.TRANSFER_SERVE, territory, serve.position, serve.velocity, Vector3.ZERO, 0)
+	issue(
+		PongNetProtocol.TRANSFER_SERVE, territory, serve.position, serve.velocity, Vector3.ZERO, 0
+	)
 
 
 ## Server: issues the next transfer to everyone, itself included.
@@ -151,7 +150,7 @@ func issue(
 	var args: Array = [
 		transfer["epoch"], kind, territory, transfer["master"], position, velocity, spin, age_ms
 	]
-	_send(&"_transfer", args)
+	send_all(&"_transfer", args)
 	callv(&"_on_transfer", [authority.my_id] + args)
 
 
@@ -192,88 +191,7 @@ func _reject(sender: int, what: String, reason: String) -> void:
 	printerr("PongNet: dropped %s from peer %d: %s" % [what, sender, reason])
 
 
-## Sends [param method] with [param args] to every other peer.
-func _send(method: StringName, args: Array) -> void:
-	if multiplayer.has_multiplayer_peer() and session.is_open():
-		callv(&"rpc", [method] + args)
-
-
-# --- the RPC surface: argument types are checked by the handlers, not by the engine, so
-# a malformed call is dropped with our log line instead of an engine error ---
-
-
-@rpc("any_peer", "call_remote", "unreliable_ordered", PongNetProtocol.CHANNEL_BALL)
-func _ball(
-	epoch: Variant,
-	seq: Variant,
-	time_s: Variant,
-	position: Variant,
-	velocity: Variant,
-	spin: Variant,
-	leg_ms: Variant
-) -> void:
-	_on_ball(
-		multiplayer.get_remote_sender_id(), epoch, seq, time_s, position, velocity, spin, leg_ms
-	)
-
-
-@rpc("any_peer", "call_remote", "unreliable_ordered", PongNetProtocol.CHANNEL_POSE)
-func _pose(
-	seat: Variant,
-	avatar: Variant,
-	offset: Variant,
-	velocity: Variant,
-	normal: Variant,
-	flags: Variant,
-	time_s: Variant
-) -> void:
-	_on_pose(
-		multiplayer.get_remote_sender_id(), seat, avatar, offset, velocity, normal, flags, time_s
-	)
-
-
-@rpc("any_peer", "call_remote", "reliable", PongNetProtocol.CHANNEL_RELIABLE)
-func _request(
-	epoch: Variant, territory: Variant, position: Variant, velocity: Variant, spin: Variant
-) -> void:
-	_on_request(multiplayer.get_remote_sender_id(), epoch, territory, position, velocity, spin)
-
-
-@rpc("any_peer", "call_remote", "reliable", PongNetProtocol.CHANNEL_RELIABLE)
-func _transfer(
-	epoch: Variant,
-	kind: Variant,
-	territory: Variant,
-	master: Variant,
-	position: Variant,
-	velocity: Variant,
-	spin: Variant,
-	age_ms: Variant
-) -> void:
-	_on_transfer(
-		multiplayer.get_remote_sender_id(),
-		epoch,
-		kind,
-		territory,
-		master,
-		position,
-		velocity,
-		spin,
-		age_ms
-	)
-
-
-@rpc("any_peer", "call_remote", "reliable", PongNetProtocol.CHANNEL_RELIABLE)
-func _hurt(epoch: Variant, player: Variant, cause: Variant) -> void:
-	_on_hurt(multiplayer.get_remote_sender_id(), epoch, player, cause)
-
-
-@rpc("any_peer", "call_remote", "reliable", PongNetProtocol.CHANNEL_RELIABLE)
-func _owners(owners: Variant) -> void:
-	_on_owners(multiplayer.get_remote_sender_id(), owners)
-
-
-# --- handlers, with the sender's id ---
+# --- handlers of PongNetWire, with the sender's id ---
 
 
 func _on_ball(
@@ -440,7 +358,7 @@ func _on_hurt(sender: int, epoch: Variant, player: Variant, cause: Variant) -> v
 	if reason.is_empty():
 		reason = PongNetProtocol.check_int(player, 0, authority.owners.size() - 1, "player")
 	if reason.is_empty() and (typeof(cause) != TYPE_STRING or cause != "floor"):
-		reason = "cause %s is not one the network carries" % [cause]
+		reason = "cause %s is not one the network carries" % str(cause).left(32)
 	if not reason.is_empty():
 		_reject(sender, "hurt", reason)
 		return
@@ -460,7 +378,9 @@ func _on_owners(sender: int, owners: Variant) -> void:
 		return
 	var list: PackedInt64Array = owners
 	if list.size() != authority.owners.size():
-		_reject(sender, "owners", "%d seats, the match has %d" % [list.size(), authority.owners.size()])
+		_reject(
+			sender, "owners", "%d seats, the match has %d" % [list.size(), authority.owners.size()]
+		)
 		return
 	authority.owners = list
 	owners_changed.emit()
@@ -473,7 +393,7 @@ func _on_event(event: Dictionary) -> void:
 	if territory < 0 or territory >= authority.owners.size() or match_node.rules.is_over():
 		return
 	var args: Array = [authority.epoch, territory, "floor"]
-	_send(&"_hurt", args)
+	send_all(&"_hurt", args)
 	callv(&"_on_hurt", [authority.my_id] + args)
 
 

@@ -84,7 +84,8 @@ func to_dict(smoother: PongNetSmoother, authority: PongNetAuthority) -> Dictiona
 		"poses": poses,
 		"age_p50_s": PongNetSmoother.quantile(ages, 0.5),
 		"age_p99_s": PongNetSmoother.quantile(ages, 0.99),
-		"corrections": {
+		"corrections":
+		{
 			"count": smoother.sizes.size(),
 			"snaps": smoother.snaps,
 			"p50_m": PongNetSmoother.quantile(smoother.sizes, 0.5),

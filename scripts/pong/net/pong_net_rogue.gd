@@ -23,10 +23,8 @@ static func attack(net: PongNet) -> void:
 	# (only the server issues them), a health loss while not the master, a hand-off request.
 	play._ball.rpc(play.authority.epoch, 1 << 22, 1.0, far, Vector3.ZERO, Vector3.ZERO, 0)
 	play._pose.rpc(not_mine, far, Vector3.ZERO, Vector3.ZERO, Vector3.UP, 0, 1.0)
-	play._transfer.rpc(
-		play.authority.epoch + 50, 1, 0, me, far, Vector3.ZERO, Vector3.ZERO, 0
-	)
-	play._hurt.rpc(play.authority.epoch, not_mine, "floor")
+	play._transfer.rpc(play.authority.epoch + 50, 1, 0, me, far, Vector3.ZERO, Vector3.ZERO, 0)
+	play._hurt.rpc(0, not_mine, "floor")
 	play._request.rpc_id(1, play.authority.epoch + 7, 0, far, Vector3.ZERO, Vector3.ZERO)
 	play._owners.rpc(PackedInt64Array([me, me]))
 	# Oversized: a 64 KiB name.

@@ -17,6 +17,9 @@ signal peer_left(peer: int)
 ## A client lost its server.
 signal server_lost
 
+## Seconds a refused client keeps its connection, so it learns why before it is dropped.
+const REFUSAL_GRACE_S: float = 0.5
+
 var is_server: bool = false
 ## The last refusal or failure, for the UI.
 var last_error: String = ""
@@ -27,9 +30,6 @@ var left_at_ms: Dictionary[int, int] = {}
 var version: String = PongNetProtocol.VERSION
 
 var _peer: ENetMultiplayerPeer = null
-
-## Seconds a refused client keeps its connection, so it learns why before it is dropped.
-const REFUSAL_GRACE_S: float = 0.5
 
 
 ## Hosts on [param port] (all interfaces unless [param bind_ip]); "" or the error.
@@ -195,7 +195,9 @@ func _on_peer_disconnected(peer: int) -> void:
 
 func _on_connected() -> void:
 	_peer.get_peer(1).set_timeout(
-		PongNetProtocol.TIMEOUT_LIMIT, PongNetProtocol.TIMEOUT_MIN_MS, PongNetProtocol.TIMEOUT_MAX_MS
+		PongNetProtocol.TIMEOUT_LIMIT,
+		PongNetProtocol.TIMEOUT_MIN_MS,
+		PongNetProtocol.TIMEOUT_MAX_MS
 	)
 	connected.emit()
 

@@ -30,9 +30,7 @@ static func extrapolate(
 	if age_s <= 0.0:
 		return [position, velocity]
 	var path: Array[PongPredictor.Segment] = predictor.path(position, velocity, g, age_s)
-	return [
-		PongPredictor.position_at(path, age_s), PongPredictor.velocity_at(path, age_s)
-	]
+	return [PongPredictor.position_at(path, age_s), PongPredictor.velocity_at(path, age_s)]
 
 
 ## A new target: the master's ball extrapolated to now is [param target]; ours is at

@@ -145,7 +145,9 @@ func _refresh() -> void:
 		var entry: Dictionary = net.players[peer]
 		var seat: int = entry["seat"]
 		var is_ready: bool = entry["ready"]
-		lines.append("Seat %d: %s%s" % [seat + 1, str(entry["name"]), " (ready)" if is_ready else ""])
+		lines.append(
+			"Seat %d: %s%s" % [seat + 1, str(entry["name"]), " (ready)" if is_ready else ""]
+		)
 	_players.text = "\n".join(lines) if not lines.is_empty() else "No players yet."
 	var mine: Dictionary = net.players.get(multiplayer.get_unique_id(), {})
 	var mine_ready: bool = mine.get("ready", false)
