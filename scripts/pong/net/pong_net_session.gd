@@ -4,8 +4,8 @@ extends Node
 ## own below it. It hosts (a player's machine or the dedicated server; the server is always
 ## peer 1) or joins, checks the protocol version at connect (auth: each side sends its
 ## [constant PongNetProtocol.VERSION]; a mismatch is refused with a message on both sides)
-## and shortens ENet's timeouts so a dead peer is noticed in about a second
-## (FACTS §1.7), not ten.
+## and shortens ENet's timeouts so a dead peer is noticed in about a second on a LAN
+## (FACTS §1.7), not ten; the cap follows each connection's round trip.
 
 ## Connected and authenticated (a client: to the server).
 signal connected
@@ -30,6 +30,7 @@ var left_at_ms: Dictionary[int, int] = {}
 var version: String = PongNetProtocol.VERSION
 
 var _peer: ENetMultiplayerPeer = null
+var _retune_in: float = 0.0
 
 
 ## Hosts on [param port] (all interfaces unless [param bind_ip]); "" or the error.
@@ -110,6 +111,33 @@ func _exit_tree() -> void:
 	close()
 
 
+# Every second: the timeouts follow each connection's round trip.
+func _process(delta: float) -> void:
+	_retune_in -= delta
+	if _peer == null or _retune_in > 0.0:
+		return
+	_retune_in = 1.0
+	var ids: Array[int] = []
+	if is_server:
+		ids.assign(multiplayer.get_peers())
+	elif _peer.get_connection_status() == MultiplayerPeer.CONNECTION_CONNECTED:
+		ids.append(1)
+	for id: int in ids:
+		_tune(id)
+
+
+func _tune(id: int) -> void:
+	var packet_peer: ENetPacketPeer = _peer.get_peer(id)
+	if packet_peer == null:
+		return
+	var rtt: float = packet_peer.get_statistic(ENetPacketPeer.PEER_ROUND_TRIP_TIME)
+	packet_peer.set_timeout(
+		PongNetProtocol.TIMEOUT_LIMIT,
+		PongNetProtocol.TIMEOUT_MIN_MS,
+		PongNetProtocol.timeout_max_ms(rtt)
+	)
+
+
 func _install() -> void:
 	var api: SceneMultiplayer = _api()
 	api.auth_callback = _on_auth
@@ -180,11 +208,7 @@ func _on_authentication_failed(peer: int) -> void:
 
 func _on_peer_connected(peer: int) -> void:
 	if is_server:
-		_peer.get_peer(peer).set_timeout(
-			PongNetProtocol.TIMEOUT_LIMIT,
-			PongNetProtocol.TIMEOUT_MIN_MS,
-			PongNetProtocol.TIMEOUT_MAX_MS
-		)
+		_tune(peer)
 	peer_joined.emit(peer)
 
 
