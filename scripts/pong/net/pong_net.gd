@@ -128,9 +128,21 @@ func start_match() -> bool:
 	return true
 
 
+## This peer's id, 0 while not connected.
+func my_id() -> int:
+	if not is_inside_tree():
+		return 0
+	var peer: MultiplayerPeer = multiplayer.multiplayer_peer
+	if not session.is_open() or peer == null:
+		return 0
+	if peer.get_connection_status() != MultiplayerPeer.CONNECTION_CONNECTED:
+		return 0
+	return multiplayer.get_unique_id()
+
+
 ## The seat of this peer (-1: none, e.g. a dedicated server).
 func my_seat() -> int:
-	var me: int = multiplayer.get_unique_id()
+	var me: int = my_id()
 	return players[me]["seat"] if players.has(me) else -1
 
 
@@ -190,6 +202,9 @@ func _on_server_lost() -> void:
 
 func _begin(owners: PackedInt64Array, health: int) -> void:
 	_end_match(-1, "restart")
+	# A rematch started while this peer still shows the last winner screen.
+	close_screen()
+	get_tree().paused = false
 	var me: int = multiplayer.get_unique_id()
 	screen = PONG_SCENE.instantiate() as PongScreen
 	screen.stepped = stepped

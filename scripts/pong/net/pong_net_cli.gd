@@ -15,7 +15,8 @@ extends Node
 ## paddle and the first serve goes to seat 1, so the report holds the contact's force
 ## profile), [code]--pong-net-health=N[/code], [code]--pong-net-version=V[/code] (claim
 ## another protocol version: refused), [code]--pong-net-rogue[/code] (send malformed and
-## unauthorised messages once the match runs).
+## unauthorised messages once the match runs), [code]--pong-net-realtime[/code] (headless
+## too, run the servo thread at 1 kHz as a windowed game does, instead of stepping it).
 ## Exit codes: 0 done, 2 connection failed or refused, 3 no Pong renderer.
 
 ## Headless peers sleep this long per frame (FACTS §1.6: the default 6900 us makes every
@@ -99,7 +100,7 @@ func _launch() -> void:
 	net.my_name = _option("name", role)
 	net.dedicated = role == "server"
 	net.autopilot = options.has("pong-net-autopilot") or net.dedicated
-	net.stepped = DisplayServer.get_name() == "headless"
+	net.stepped = DisplayServer.get_name() == "headless" and not options.has("pong-net-realtime")
 	net.start_health = _option("pong-net-health", str(PongRules.DEFAULT_START_HEALTH)).to_int()
 	net.session.version = _option("pong-net-version", PongNetProtocol.VERSION)
 	net.status_changed.connect(func(text: String) -> void: print("PongNet: %s" % text))
@@ -142,7 +143,7 @@ func _process(delta: float) -> void:
 
 
 func _on_lobby_changed() -> void:
-	if net.autopilot and not _readied and net.players.has(multiplayer.get_unique_id()):
+	if net.autopilot and not _readied and net.players.has(net.my_id()):
 		_readied = true
 		net.set_ready(true)
 	elif net.dedicated:

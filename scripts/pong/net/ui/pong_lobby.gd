@@ -149,7 +149,7 @@ func _refresh() -> void:
 			"Seat %d: %s%s" % [seat + 1, str(entry["name"]), " (ready)" if is_ready else ""]
 		)
 	_players.text = "\n".join(lines) if not lines.is_empty() else "No players yet."
-	var mine: Dictionary = net.players.get(multiplayer.get_unique_id(), {})
+	var mine: Dictionary = net.players.get(net.my_id(), {})
 	var mine_ready: bool = mine.get("ready", false)
 	_ready_check.set_pressed_no_signal(mine_ready)
 
