@@ -25,6 +25,9 @@ signal owners_changed
 const SETTLE_S: float = 0.02
 ## Seconds of simulation the game steps per chunk in stepped mode.
 const CHUNK_S: float = PongMatch.STEP_CHUNK_S
+## The streams send on each new servo state, at most this often (a headless or fast
+## machine renders hundreds of frames a second), Hz.
+const MAX_STREAM_HZ: float = 125.0
 ## Paddle speeds sent are capped here (a teleported avatar is not a swing), m/s.
 const MAX_SENT_PADDLE_SPEED_M_PER_S: float = 20.0
 
@@ -47,7 +50,8 @@ var serve_aim: Callable = Callable()
 var _predictor: PongPredictor = null
 var _clocks: Dictionary[int, PongNetClock] = {}
 var _seq: int = 0
-var _last_sent_time: float = -1.0
+var _last_sent_time: float = -INF
+var _last_pose_time: float = -INF
 var _settle_until: float = 0.0
 var _owe_s: float = 0.0
 var _last_now: float = 0.0
@@ -64,6 +68,9 @@ func begin(p_match: PongMatch, p_authority: PongNetAuthority, seats: PackedInt32
 	match_node.event_seen.connect(_on_event)
 	match_node.match_over.connect(_on_match_over)
 	report.begin(authority.my_id)
+	# The servo's clock may have started over with the match.
+	_last_sent_time = -INF
+	_last_pose_time = -INF
 	_running = true
 
 
@@ -95,7 +102,8 @@ func frame(delta: float) -> void:
 		if snapshot.territory != authority.territory:
 			_hand_off(snapshot)
 	var settled: bool = snapshot.time_s > _settle_until
-	if authority.is_master() and settled and snapshot.time_s != _last_sent_time:
+	var due: bool = snapshot.time_s - _last_sent_time >= 1.0 / MAX_STREAM_HZ
+	if authority.is_master() and settled and due:
 		_last_sent_time = snapshot.time_s
 		_seq += 1
 		send_all(
@@ -103,7 +111,8 @@ func frame(delta: float) -> void:
 		)
 	elif not authority.is_master():
 		ball.nudge(sim_dt)
-	if sim_dt > 0.0:
+	if snapshot.time_s - _last_pose_time >= 1.0 / MAX_STREAM_HZ:
+		_last_pose_time = snapshot.time_s
 		_send_poses(snapshot)
 	report.sample(snapshot.ball_position, authority.is_master(), snapshot.time_s)
 
