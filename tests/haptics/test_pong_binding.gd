@@ -218,9 +218,11 @@ func test_bad_dictionaries_are_refused_by_key_and_change_nothing() -> void:
 	assert_false(server.set_pong_input(bad))
 	expect_error("pong_input: unknown key 'player'")
 	assert_false(server.set_pong_input({"player": 0}))
-	expect_error("pong_input.players: 1 entries, expected 2")
+	expect_error("pong_input.players: 1 entries, expected 2 to 4")
 	assert_false(server.set_pong_input({"players": [{}]}))
-	expect_error("pong_input.local_player must be -1, 0 or 1 (got 7)")
+	expect_error("pong_input.players: 5 entries, expected 2 to 4")
+	assert_false(server.set_pong_input({"players": [{}, {}, {}, {}, {}]}))
+	expect_error("pong_input.local_player must be -1 or 0..3 (got 7)")
 	assert_false(server.set_pong_input({"local_player": 7}))
 	assert_true(server.step(0.001))
 	assert_eq(server.get_pong_state()["players"][0], before, "the previous input stays")
@@ -235,7 +237,7 @@ func test_bad_dictionaries_are_refused_by_key_and_change_nothing() -> void:
 	assert_false(server.pong_command({"type": "effect", "player": 0, "kind": "laser"}))
 	expect_error("pong_command.direction: missing (expected a Vector3)")
 	assert_false(server.pong_command({"type": "effect", "player": 0, "kind": "hit"}))
-	expect_error("pong_command.owner must be the other player")
+	expect_error("pong_command.owner must be another player")
 	assert_false(server.pong_command({"type": "effect", "player": 0, "kind": "remote", "owner": 0}))
 	expect_error("pong_command.magnitude_n: expected a number, got String")
 	assert_false(
@@ -274,3 +276,41 @@ func test_the_state_has_every_key_in_its_type() -> void:
 	assert_eq(hand.keys(), ["contact", "spin", "effects", "total"])
 	assert_eq(typeof(state["hand_force"]["total"]), TYPE_VECTOR3)
 	assert_eq(typeof(state["paddle_contacts"]), TYPE_INT)
+
+
+func test_four_players_a_square_court_four_states_and_back_wall_owners() -> void:
+	expect_error("pong.players must be 2")
+	assert_false(server.set_config("pong", {"players": 3}), "3 is not built")
+	assert_eq(server.get_config()["pong"]["players"], 2, "a refused count changes nothing")
+	assert_true(server.set_config("pong", {"players": 4, "gravity_m_per_s2": 0.0}))
+	assert_eq(server.get_config()["pong"]["players"], 4)
+	var players: Array = []
+	for seat: int in 4:
+		players.append({"avatar": Vector3(0.0, 1.0, 0.0), "active": false})
+	assert_true(server.set_pong_input({"local_player": -1, "players": players}))
+	# Toward player 2's back wall (x = +L, the square court's "right"): beyond the 2-player
+	# court's width, inside the square.
+	var l: float = server.get_config()["pong"]["court_half_length_m"]
+	assert_true(
+		server.pong_command(
+			{"type": "set_ball", "position": Vector3(l - 0.5, 1.0, 0.2), "velocity": Vector3.RIGHT * 3.0}
+		)
+	)
+	var events: Array = _play({"local_player": -1, "players": players}, 400)
+	var walls: Array = _of_type(events, "wall")
+	assert_eq(walls.size(), 1)
+	assert_eq(walls[0]["wall"], "right")
+	assert_eq(walls[0]["back_wall_of"], 2, "the right wall is player 2's goal")
+	assert_eq(walls[0]["territory"], 2)
+	var state: Dictionary = server.get_pong_state()
+	var paddles: Array = state["players"]
+	assert_eq(paddles.size(), 4, "one paddle per player")
+	assert_eq(state["territory"], 2)
+	# Two entries are still an input: seats 2 and 3 then have no paddle in play.
+	assert_true(server.set_pong_input(_flat_paddle()))
+	expect_error("pong_command.player must be 0..3 (got 4)")
+	assert_false(server.pong_command({"type": "effect", "player": 4, "kind": "heavy"}))
+	assert_true(server.set_config("pong", {"players": 2}))
+	assert_true(server.step(0.001))
+	paddles = server.get_pong_state()["players"]
+	assert_eq(paddles.size(), 2)

@@ -92,6 +92,7 @@ const ConfigField FIELDS[] = {
 	// Haptic Battle Pong (pong/pong_config.h says why each default). Cross-field limits
 	// (the beginner plane inside the court, a contact spring the servo resolves) are in
 	// validate_pong_config.
+	{ "pong", "players", K::COUNT, 2.0, 4.0, "", nullptr, {}, nullptr, HAPTICS_FIELD(pong.players) },
 	{ "pong", "court_half_width_m", K::NUMBER, 0.5, 20.0, "m", nullptr, {}, nullptr, HAPTICS_FIELD(pong.court_half_width_m) },
 	{ "pong", "court_half_length_m", K::NUMBER, 0.5, 50.0, "m", nullptr, {}, nullptr, HAPTICS_FIELD(pong.court_half_length_m) },
 	{ "pong", "wall_height_m", K::NUMBER, 0.5, 20.0, "m", nullptr, {}, nullptr, HAPTICS_FIELD(pong.wall_height_m) },
@@ -127,6 +128,8 @@ const ConfigField FIELDS[] = {
 	{ "pong", "remote_stiffness_n_per_m", K::NUMBER, 0.0, 1000.0, "N/m", nullptr, {}, nullptr, HAPTICS_FIELD(pong.remote_stiffness_n_per_m) },
 	{ "pong", "remote_cutoff_hz", K::NUMBER, 0.1, 100.0, "Hz", nullptr, {}, nullptr, HAPTICS_FIELD(pong.remote_cutoff_hz) },
 	{ "pong", "remote_max_force_n", K::NUMBER, 0.0, 10.0, "N", nullptr, {}, nullptr, HAPTICS_FIELD(pong.remote_max_force_n) },
+	{ "pong", "remote_max_extrapolation_s", K::NUMBER, 0.0, 1.0, "s", nullptr, {}, nullptr, HAPTICS_FIELD(pong.remote_max_extrapolation_s) },
+	{ "pong", "remote_passivity", K::FLAG, 0.0, 1.0, "", nullptr, {}, nullptr, HAPTICS_FIELD(pong.remote_passivity) },
 	{ "pong", "beginner_height_m", K::NUMBER, 0.05, 2.0, "m", nullptr, {}, nullptr, HAPTICS_FIELD(pong.beginner_height_m) },
 	{ "pong", "beginner_target_half_width_m", K::NUMBER, 0.05, 1.5, "m", nullptr, {}, nullptr, HAPTICS_FIELD(pong.beginner_target_half_width_m) },
 };

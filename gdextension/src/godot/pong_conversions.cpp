@@ -27,7 +27,8 @@ bool read_vec3(DictionaryReader &r_reader, const char *p_key, Vec3 &r_value, boo
 	return true;
 }
 
-// A player index (one of p_first..1), so a huge int never wraps into a valid one.
+// A player index (one of p_first..PONG_MAX_PLAYERS - 1), so a huge int never wraps into a
+// valid one. The configured count is checked by the core's validation.
 bool read_player(DictionaryReader &r_reader, const char *p_key, int64_t p_first, int32_t &r_player, bool p_required,
 		std::string &r_error) {
 	int64_t player = r_player;
@@ -35,9 +36,9 @@ bool read_player(DictionaryReader &r_reader, const char *p_key, int64_t p_first,
 		r_error = r_reader.error();
 		return false;
 	}
-	if (player < p_first || player > 1) {
-		r_error = r_reader.path() + "." + p_key + " must be " + (p_first < 0 ? "-1, " : "") + "0 or 1 (got " +
-				std::to_string(player) + ")";
+	if (player < p_first || player >= PONG_MAX_PLAYERS) {
+		r_error = r_reader.path() + "." + p_key + " must be " + (p_first < 0 ? "-1 or " : "") + "0.." +
+				std::to_string(PONG_MAX_PLAYERS - 1) + " (got " + std::to_string(player) + ")";
 		return false;
 	}
 	r_player = static_cast<int32_t>(player);
@@ -48,12 +49,13 @@ bool read_player_input(const gd::Dictionary &p_entry, const std::string &p_path,
 		std::string &r_error) {
 	DictionaryReader reader(p_entry, p_path);
 	const bool ok = reader.only_keys({ "avatar", "kinematic", "paddle_offset", "paddle_velocity", "normal", "spin",
-							"gun", "active" }) &&
+							"gun", "active", "pose_age_s" }) &&
 			read_vec3(reader, "avatar", r_player.avatar) && reader.read_bool("kinematic", r_player.kinematic) &&
 			read_vec3(reader, "paddle_offset", r_player.paddle_offset) &&
 			read_vec3(reader, "paddle_velocity", r_player.paddle_velocity) &&
 			read_vec3(reader, "normal", r_player.normal) && reader.read_bool("spin", r_player.spin) &&
-			reader.read_bool("gun", r_player.gun) && reader.read_bool("active", r_player.active);
+			reader.read_bool("gun", r_player.gun) && reader.read_bool("active", r_player.active) &&
+			reader.read_number("pose_age_s", r_player.pose_age_s);
 	if (!ok) {
 		r_error = reader.error();
 	}
@@ -97,7 +99,7 @@ bool read_effect(DictionaryReader &r_reader, PongCommand &r_command, std::string
 	const bool directed = r_command.kind == PongEffectKind::RECOIL || r_command.kind == PongEffectKind::HIT;
 	r_command.use_default_magnitude = !r_reader.has("magnitude_n");
 	r_command.use_default_duration = !r_reader.has("duration_s");
-	r_command.owner = 1 - r_command.player; // The opponent, unless named.
+	r_command.owner = r_command.player ^ 1; // The opponent across the court, unless named.
 	if (!read_vec3(r_reader, "direction", r_command.direction, directed) ||
 			!r_reader.read_number("magnitude_n", r_command.magnitude_n) ||
 			!r_reader.read_number("duration_s", r_command.duration_s)) {
@@ -131,12 +133,17 @@ bool pong_input_from_dictionary(const gd::Dictionary &p_dictionary, PongInput &r
 		return false;
 	}
 	if (reader.has("players")) {
-		if (players.size() != PONG_PLAYERS) {
-			r_error = "pong_input.players: " + std::to_string(players.size()) +
-					" entries, expected 2 (player 0 near, player 1 far)";
+		const int64_t count = players.size();
+		if (count < PONG_DEFAULT_PLAYERS || count > PONG_MAX_PLAYERS) {
+			r_error = "pong_input.players: " + std::to_string(count) + " entries, expected 2 to " +
+					std::to_string(PONG_MAX_PLAYERS) + " (player 0 near +z, 1 far -z, 2 at +x, 3 at -x)";
 			return false;
 		}
-		for (int p = 0; p < PONG_PLAYERS; ++p) {
+		// Seats not given are empty: no paddle of theirs touches the ball.
+		for (int p = static_cast<int>(count); p < PONG_MAX_PLAYERS; ++p) {
+			input.players[p].active = false;
+		}
+		for (int p = 0; p < static_cast<int>(count); ++p) {
 			const std::string path = "pong_input.players[" + std::to_string(p) + "]";
 			gd::Variant entry = players.get(p);
 			if (entry.get_type() != gd::VariantType::DICTIONARY) {
@@ -194,8 +201,8 @@ gd::Dictionary pong_state_to_dictionary(const PongState &p_state) {
 	d.set("ball", ball.variant());
 	d.set("territory", static_cast<int64_t>(p_state.territory));
 	gd::Array players;
-	for (const PongPaddleState &paddle : p_state.players) {
-		players.append(paddle_to_dictionary(paddle).variant());
+	for (int p = 0; p < p_state.player_count && p < PONG_MAX_PLAYERS; ++p) {
+		players.append(paddle_to_dictionary(p_state.players[p]).variant());
 	}
 	d.set("players", players.variant());
 	gd::Dictionary hand;
@@ -229,6 +236,7 @@ gd::Dictionary pong_event_to_dictionary(const PongEvent &p_event) {
 	const auto wall = static_cast<size_t>(p_event.wall);
 	const bool is_wall = p_event.type == PongEventType::WALL && wall < std::size(COURT_WALL_NAMES);
 	d.set("wall", is_wall ? COURT_WALL_NAMES[wall] : "");
+	d.set("back_wall_of", static_cast<int64_t>(p_event.back_wall_of));
 	return d;
 }
 

@@ -3,8 +3,8 @@
 namespace haptics {
 
 void court_planes(const PongConfig &p_config, CourtPlane (&r_planes)[COURT_SURFACE_COUNT]) {
-	const double w = p_config.court_half_width_m;
-	const double l = p_config.court_half_length_m;
+	const double w = court_half_x(p_config);
+	const double l = court_half_z(p_config);
 	r_planes[0] = { CourtSurface::LEFT, { 1.0, 0.0, 0.0 }, -w };
 	r_planes[1] = { CourtSurface::RIGHT, { -1.0, 0.0, 0.0 }, -w };
 	r_planes[2] = { CourtSurface::BACK_NEAR, { 0.0, 0.0, -1.0 }, -l };

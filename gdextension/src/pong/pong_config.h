@@ -12,6 +12,9 @@ namespace haptics {
 
 struct PongConfig {
 	// --- Court --------------------------------------------------------------------------
+	// 2 (the paper's match: a rectangle split at z = 0) or 4 (a square court, one back wall
+	// each, territories split by the diagonals; court.h). Key "players".
+	int players = 2;
 	// 3 m x 6 m x 2.5 m: each half is 3 m x 3 m, which a 0.5 m paddle reach plus an avatar
 	// walking at game speed covers, and the ball has room to curve between bounces.
 	double court_half_width_m = 1.5;
@@ -113,6 +116,13 @@ struct PongConfig {
 	double remote_stiffness_n_per_m = 120.0;
 	double remote_cutoff_hz = 6.0;
 	double remote_max_force_n = 1.5;
+	// The owner's stylus arrives late over the network (60 Hz, 0-200 ms): the target is moved
+	// on by the reported velocity over the sample's age, at most this long (a stale sample of
+	// a fast owner must not fling the target across the workspace).
+	double remote_max_extrapolation_s = 0.2;
+	// The time-domain passivity rule on the remote coupling (hand_effects.h). Off only to show
+	// what it prevents (a doctest keeps that case): a delayed coupling then pumps energy.
+	bool remote_passivity = true;
 
 	// --- Beginner mode (the paper's "Haptic Battle Air Hockey") -------------------------
 	// No gravity; the ball centre is held at this height, about a seated player's paddle.

@@ -36,6 +36,11 @@ struct PongPlayerInput {
 	bool spin = false; // Spin mode: brushing the ball spins it.
 	bool gun = false; // Held as a gun: it does not touch the ball.
 	bool active = true; // In play.
+	// How old paddle_offset and paddle_velocity were when this input was handed over, s: 0
+	// for a paddle this machine drives, the sample's age for a remote player's (network
+	// delay, as the networking measures it). Only the remote-operation mine uses it: its
+	// target is this player's stylus moved on by its velocity over the age (hand_effects.h).
+	double pose_age_s = 0.0;
 };
 
 // A player's input before the game says otherwise: in play, its paddle facing the opponent.
@@ -50,7 +55,9 @@ struct PongInput {
 	// The player whose paddle the local device moves, or -1 for none (a match of game-driven
 	// paddles). Effects act on this player's hand.
 	int32_t local_player = 0;
-	PongPlayerInput players[PONG_PLAYERS] = { default_player_input(0), default_player_input(1) };
+	// The first PongConfig::players entries are used; the rest are ignored.
+	PongPlayerInput players[PONG_MAX_PLAYERS] = { default_player_input(0), default_player_input(1),
+		default_player_input(2), default_player_input(3) };
 };
 
 enum class PongEffectKind : int32_t {
@@ -88,7 +95,7 @@ struct PongCommand {
 	// Default: recoil_duration_s, hit_duration_s, mine_effect_duration_s.
 	double duration_s = 0.0;
 	bool use_default_duration = true;
-	int32_t owner = 1; // REMOTE: the player whose stylus pulls (the other one).
+	int32_t owner = 1; // REMOTE: the player whose stylus pulls (another one).
 };
 
 static_assert(std::is_trivially_copyable_v<PongInput>);

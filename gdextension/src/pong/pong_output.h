@@ -22,7 +22,8 @@ enum class PongEventType : int32_t {
 	WALL = 1, // A wall or ceiling bounce.
 	PADDLE = 2, // A paddle starts touching the ball.
 	RELEASE = 3, // ...and stops.
-	TERRITORY = 4, // The ball crossed z = 0 (networking hands the simulation over on this).
+	TERRITORY = 4, // The ball entered another player's territory (networking hands the
+	// simulation over on this).
 };
 inline constexpr const char *PONG_EVENT_NAMES[] = { "floor", "wall", "paddle", "release", "territory" };
 
@@ -36,6 +37,8 @@ struct PongEvent {
 	int32_t territory = 0; // Of the position (TERRITORY: the new one).
 	int32_t player = -1; // PADDLE, RELEASE; -1 otherwise.
 	CourtSurface wall = CourtSurface::FLOOR; // WALL only (never FLOOR there).
+	// WALL: the player whose back wall (goal) it is, -1 for a side wall or the ceiling.
+	int32_t back_wall_of = -1;
 };
 
 struct PongPaddleState {
@@ -66,7 +69,8 @@ struct PongState {
 	double time_s = 0.0;
 	BallState ball;
 	int32_t territory = 0;
-	PongPaddleState players[PONG_PLAYERS];
+	int32_t player_count = PONG_DEFAULT_PLAYERS; // The first player_count entries of players.
+	PongPaddleState players[PONG_MAX_PLAYERS];
 	PongHandForce hand_force;
 	PongEffectState effects[PONG_MAX_ACTIVE_EFFECTS]; // The device player's, the first effect_count.
 	uint32_t effect_count = 0;

@@ -40,13 +40,22 @@ PongSim::PongSim() {
 }
 
 void PongSim::configure(const PongConfig &p_config) {
+	const int before = config_.players;
 	config_ = p_config;
+	if (config_.players != before) {
+		// Paddles that leave the court must not hold contacts; new ones start afresh.
+		for (int p = 0; p < PONG_MAX_PLAYERS; ++p) {
+			trackers_[p].reset();
+			contacts_[p] = PaddleContact{};
+		}
+		territory_ = territory_of(ball_.position, config_.players);
+	}
 	law_ = make_paddle_law(p_config);
 	effects_.configure(p_config);
 }
 
 void PongSim::clear_contacts() {
-	for (int p = 0; p < PONG_PLAYERS; ++p) {
+	for (int p = 0; p < players(); ++p) {
 		trackers_[p].reset();
 		contacts_[p] = PaddleContact{};
 	}
@@ -61,7 +70,7 @@ void PongSim::reset() {
 		velocity = Vec3{};
 	}
 	ball_ = BallState{ { 0.0, config_.ball_radius_m, 0.0 }, {}, {} };
-	territory_ = territory_of(ball_.position);
+	territory_ = territory_of(ball_.position, players());
 	clear_contacts();
 	effects_.clear();
 	hand_ = HandForces{};
@@ -80,12 +89,12 @@ void PongSim::settle() {
 
 int PongSim::device_player() const {
 	const int player = input_.local_player;
-	return player >= 0 && player < PONG_PLAYERS && !input_.players[player].kinematic ? player : -1;
+	return player >= 0 && player < players() && !input_.players[player].kinematic ? player : -1;
 }
 
 void PongSim::set_input(const PongInput &p_input) {
 	const double elapsed = time_s_ - input_time_s_;
-	for (int p = 0; p < PONG_PLAYERS; ++p) {
+	for (int p = 0; p < players(); ++p) {
 		if (!have_input_) {
 			break;
 		}
@@ -109,7 +118,7 @@ void PongSim::apply(const PongCommand &p_command) {
 			ball_.position = p_command.position;
 			ball_.velocity = cap_length(p_command.velocity, config_.max_ball_speed_m_per_s);
 			ball_.spin = cap_length(p_command.spin, config_.max_spin_rad_per_s);
-			territory_ = territory_of(ball_.position);
+			territory_ = territory_of(ball_.position, players());
 			clear_contacts();
 			break;
 		case PongCommandType::EFFECT:
@@ -129,7 +138,7 @@ void PongSim::start_effect(const PongCommand &p_command) {
 	}
 	EffectOrder order;
 	order.kind = p_command.kind;
-	order.direction = side_rotation(p_command.player, normalized_or_zero(p_command.direction));
+	order.direction = side_rotation_inverse(p_command.player, normalized_or_zero(p_command.direction));
 	order.owner = p_command.owner;
 	double magnitude = std::numeric_limits<double>::infinity();
 	double duration = config_.mine_effect_duration_s;
@@ -165,7 +174,7 @@ void PongSim::pose_paddles(const HandSample *p_hand) {
 	const double tau = std::clamp(time_s_ - input_time_s_, 0.0, PONG_MAX_EXTRAPOLATION_S);
 	const double scale = config_.workspace_scale;
 	const int device = device_player();
-	for (int p = 0; p < PONG_PLAYERS; ++p) {
+	for (int p = 0; p < players(); ++p) {
 		const PongPlayerInput &in = input_.players[p];
 		PaddlePose &pose = poses_[p];
 		pose.touchable = in.active && !in.gun;
@@ -174,7 +183,12 @@ void PongSim::pose_paddles(const HandSample *p_hand) {
 			pose.center = in.avatar + in.paddle_offset + in.paddle_velocity * tau;
 			pose.velocity = in.paddle_velocity;
 			pose.normal = in.normal;
-			styluses_[p] = side_rotation(p, (pose.center - in.avatar) / scale);
+			// The stylus as the input gave it (not moved on by tau: the remote target moves it on
+			// over the whole age, network delay included).
+			StylusSample &stylus = styluses_[p];
+			stylus.position_m = side_rotation_inverse(p, in.paddle_offset / scale);
+			stylus.velocity_m_per_s = side_rotation_inverse(p, (in.paddle_velocity - avatar_velocity_[p]) / scale);
+			stylus.age_s = in.pose_age_s + std::max(time_s_ - input_time_s_, 0.0);
 			continue;
 		}
 		if (!is_finite(*p_hand)) {
@@ -191,7 +205,7 @@ void PongSim::pose_paddles(const HandSample *p_hand) {
 				pose.normal = side_rotation(p, facing);
 			}
 		}
-		styluses_[p] = p_hand->position_m;
+		styluses_[p] = StylusSample{ p_hand->position_m, p_hand->velocity_m_per_s, 0.0 };
 		hand_position_m_ = p_hand->position_m;
 	}
 }
@@ -202,7 +216,8 @@ void PongSim::emit(PongEventType p_type, const Vec3 &p_position, double p_speed,
 	event.time_s = time_s_;
 	event.position = p_position;
 	event.speed = p_speed;
-	event.territory = territory_of(p_position);
+	event.territory = territory_of(p_position, players());
+	event.back_wall_of = p_type == PongEventType::WALL ? back_wall_owner(p_wall, players()) : -1;
 	event.player = p_player;
 	event.wall = p_wall;
 	events_.push(event);
@@ -219,7 +234,7 @@ void PongSim::step(double p_dt_s, const HandSample *p_hand) {
 	bool in_contact = false;
 	hand_.contact = Vec3{};
 	hand_.spin = Vec3{};
-	for (int p = 0; p < PONG_PLAYERS; ++p) {
+	for (int p = 0; p < players(); ++p) {
 		const PaddleContact &contact = contacts_[p] = trackers_[p].update(poses_[p], ball_, law_);
 		if (contact.started) {
 			++paddle_contacts_;
@@ -234,8 +249,8 @@ void PongSim::step(double p_dt_s, const HandSample *p_hand) {
 		ball_force += contact.ball_force_n;
 		spin_rate += contact.spin_rate;
 		if (p == device) {
-			hand_.contact += side_rotation(p, contact.hand_contact_n);
-			hand_.spin += side_rotation(p, contact.hand_spin_n);
+			hand_.contact += side_rotation_inverse(p, contact.hand_contact_n);
+			hand_.spin += side_rotation_inverse(p, contact.hand_spin_n);
 		}
 	}
 	if (beginner) {
@@ -262,7 +277,7 @@ void PongSim::step(double p_dt_s, const HandSample *p_hand) {
 		emit(floor ? PongEventType::FLOOR : PongEventType::WALL, hit.position, hit.bounce.normal_speed, -1,
 				hit.surface);
 	}
-	const int territory = territory_of(ball_.position);
+	const int territory = territory_of(ball_.position, players());
 	if (territory != territory_) {
 		territory_ = territory;
 		emit(PongEventType::TERRITORY, ball_.position, length(ball_.velocity));
@@ -280,7 +295,8 @@ void PongSim::fill_state(PongState &r_state) const {
 	r_state.time_s = time_s_;
 	r_state.ball = ball_;
 	r_state.territory = territory_;
-	for (int p = 0; p < PONG_PLAYERS; ++p) {
+	r_state.player_count = players();
+	for (int p = 0; p < players(); ++p) {
 		PongPaddleState &paddle = r_state.players[p];
 		paddle.center = poses_[p].center;
 		paddle.normal = poses_[p].normal;

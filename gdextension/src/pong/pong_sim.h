@@ -15,12 +15,17 @@
 //                orientation, else the input's normal
 //   every other paddle (game-driven):
 //     centre   = avatar + paddle_offset + paddle_velocity tau,  velocity = paddle_velocity
+// Each player's stylus (REMOTE's owner, hand_effects.h) in its device frame: the device's
+// reading for the device player (age 0); for the others paddle_offset / scale with velocity
+// (paddle_velocity - v_avatar) / scale, aged input.pose_age_s + tau (the network's delay of a
+// remote player's sample plus the time since the input).
 // v_avatar is estimated from successive inputs: the game moves the avatar at frame rate, and
 // without it the paddle would jump a few centimetres every frame while the avatar walks,
 // which the hand would feel as a force step. A jump faster than PONG_MAX_AVATAR_SPEED is a
 // teleport, not a walk, and is not extrapolated.
 //
-// Then, per step: contacts (both paddles), the ball's forces and spin rate (beginner mode
+// Only the first PongConfig::players paddles exist; the input's other entries are ignored.
+// Then, per step: contacts (every paddle), the ball's forces and spin rate (beginner mode
 // drops the vertical part of the paddles' push), semi-implicit Euler, court bounces, the
 // territory. Events: FLOOR (normal speed >= min_bounce_speed), WALL (any bounce that is not
 // the ball coming to rest), PADDLE and RELEASE, TERRITORY. A SET_BALL moves the ball without
@@ -82,6 +87,7 @@ public:
 	int device_player() const;
 	double time_s() const { return time_s_; }
 	const BallState &ball() const { return ball_; }
+	int territory() const { return territory_; }
 	const PaddlePose &paddle(int p_player) const { return poses_[p_player]; }
 	const PaddleContact &contact(int p_player) const { return contacts_[p_player]; }
 	Vec3 ball_contact_force() const { return ball_force_; } // The paddles' push, world, N.
@@ -89,6 +95,7 @@ public:
 	const HandEffects &effects() const { return effects_; }
 	const PongConfig &config() const { return config_; }
 	const PongInput &input() const { return input_; }
+	int player_count() const { return config_.players; }
 	// The state for the game, hand_force left zero (the renderer knows the scaled forces).
 	void fill_state(PongState &r_state) const;
 	PongEventRing &events() { return events_; }
@@ -98,6 +105,7 @@ private:
 	void start_effect(const PongCommand &p_command);
 	void emit(PongEventType p_type, const Vec3 &p_position, double p_speed, int p_player = -1,
 			CourtSurface p_wall = CourtSurface::FLOOR);
+	int players() const { return config_.players; }
 	void clear_contacts();
 
 	PongConfig config_;
@@ -105,15 +113,15 @@ private:
 	PongInput input_;
 	double input_time_s_ = 0.0;
 	bool have_input_ = false;
-	Vec3 avatar_velocity_[PONG_PLAYERS];
+	Vec3 avatar_velocity_[PONG_MAX_PLAYERS];
 
 	double time_s_ = 0.0;
 	BallState ball_;
 	int territory_ = 0;
-	PaddleContactTracker trackers_[PONG_PLAYERS];
-	PaddlePose poses_[PONG_PLAYERS];
-	PaddleContact contacts_[PONG_PLAYERS];
-	Vec3 styluses_[PONG_PLAYERS]; // Each player's stylus in its own device frame.
+	PaddleContactTracker trackers_[PONG_MAX_PLAYERS];
+	PaddlePose poses_[PONG_MAX_PLAYERS];
+	PaddleContact contacts_[PONG_MAX_PLAYERS];
+	StylusSample styluses_[PONG_MAX_PLAYERS]; // Each player's stylus in its own device frame.
 	Vec3 ball_force_;
 
 	HandEffects effects_;

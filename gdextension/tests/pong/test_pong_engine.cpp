@@ -167,8 +167,8 @@ TEST_CASE("pong engine: bad input and commands are refused by name and change no
 	status = engine.set_pong_input(bad);
 	CHECK(mentions(status, "pong_input.players[0].normal: zero length"));
 	bad = good;
-	bad.local_player = 2;
-	CHECK(mentions(engine.set_pong_input(bad), "pong_input.local_player must be -1, 0 or 1"));
+	bad.local_player = 4;
+	CHECK(mentions(engine.set_pong_input(bad), "pong_input.local_player must be -1 or 0..3"));
 	bad = good;
 	bad.players[0].paddle_velocity.z = std::numeric_limits<double>::infinity();
 	CHECK_FALSE(engine.set_pong_input(bad));
@@ -187,12 +187,12 @@ TEST_CASE("pong engine: bad input and commands are refused by name and change no
 	effect.use_default_magnitude = false;
 	CHECK(mentions(engine.push_pong_command(effect), "pong_command.magnitude_n: not finite"));
 	effect.use_default_magnitude = true;
-	effect.player = 5;
-	CHECK(mentions(engine.push_pong_command(effect), "pong_command.player must be 0 or 1"));
+	effect.player = 2; // A seat of a 4-player court, not of this 2-player one.
+	CHECK(mentions(engine.push_pong_command(effect), "pong_command.player must be 0..1"));
 	effect.player = 0;
 	effect.kind = PongEffectKind::REMOTE;
 	effect.owner = 0;
-	CHECK(mentions(engine.push_pong_command(effect), "pong_command.owner must be the other player"));
+	CHECK(mentions(engine.push_pong_command(effect), "pong_command.owner must be another player"));
 	effect.kind = static_cast<PongEffectKind>(17);
 	CHECK(mentions(engine.push_pong_command(effect), "pong_command.kind: unknown kind 17"));
 
