@@ -83,7 +83,8 @@ def test_two_peers_rally(label: str) -> None:
 
 def _contact(peers: list[Peer]) -> dict:
     seat_one = [p for p in peers if p.report.get("seat") == 1]
-    assert seat_one, [p.report.get("seat") for p in peers]
+    assert seat_one, [(p.name, p.report.get("exit"), p.report.get("error"), p.log()[-600:])
+                      for p in peers]
     return seat_one[0].report["contact"]
 
 

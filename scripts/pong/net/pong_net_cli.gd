@@ -154,7 +154,6 @@ func _on_match_started() -> void:
 	_match_clock = 0.0
 	_readied = false
 	_seat = net.my_seat()
-	net.session.take_traffic()
 	if script_name == "hit":
 		_profile.follow(net.play)
 		if net.session.is_server:
@@ -185,7 +184,6 @@ func _finish(code: int, why: String) -> void:
 		data["seat"] = _seat
 		data["error"] = net.session.last_error
 		data["health"] = _health()
-		data["bytes"] = _traffic()
 	if _profile != null:
 		data["contact"] = _profile.to_dict()
 	if not report_path.is_empty():
@@ -206,14 +204,3 @@ func _health() -> Array[int]:
 		for seat: int in net.seats:
 			health.append(match_node.rules.get_health(seat))
 	return health
-
-
-func _traffic() -> Dictionary:
-	var sent_received: Vector2i = net.session.take_traffic()
-	var elapsed: float = maxf(_match_clock, 1e-3)
-	return {
-		"sent": sent_received.x,
-		"received": sent_received.y,
-		"sent_per_s": sent_received.x / elapsed,
-		"received_per_s": sent_received.y / elapsed,
-	}

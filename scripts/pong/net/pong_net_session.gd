@@ -97,16 +97,6 @@ func round_trip_s(peer: int) -> float:
 	return packet_peer.get_statistic(ENetPacketPeer.PEER_ROUND_TRIP_TIME) / 1000.0
 
 
-## Bytes sent and received since the last call (ENet's host counters, UDP payload).
-func take_traffic() -> Vector2i:
-	if _peer == null or _peer.host == null:
-		return Vector2i.ZERO
-	return Vector2i(
-		int(_peer.host.pop_statistic(ENetConnection.HOST_TOTAL_SENT_DATA)),
-		int(_peer.host.pop_statistic(ENetConnection.HOST_TOTAL_RECEIVED_DATA))
-	)
-
-
 func _exit_tree() -> void:
 	close()
 
