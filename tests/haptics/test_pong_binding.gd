@@ -293,7 +293,11 @@ func test_four_players_a_square_court_four_states_and_back_wall_owners() -> void
 	var l: float = server.get_config()["pong"]["court_half_length_m"]
 	assert_true(
 		server.pong_command(
-			{"type": "set_ball", "position": Vector3(l - 0.5, 1.0, 0.2), "velocity": Vector3.RIGHT * 3.0}
+			{
+				"type": "set_ball",
+				"position": Vector3(l - 0.5, 1.0, 0.2),
+				"velocity": Vector3.RIGHT * 3.0
+			}
 		)
 	)
 	var events: Array = _play({"local_player": -1, "players": players}, 400)
