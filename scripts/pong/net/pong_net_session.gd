@@ -70,8 +70,11 @@ func join(address: String, port: int) -> String:
 func close() -> void:
 	var api: SceneMultiplayer = _api()
 	if _peer != null:
-		_peer.close()
+		# Closing reports each peer as gone, synchronously: by then we are closed (nobody
+		# answers them on a dead host).
+		var closing: ENetMultiplayerPeer = _peer
 		_peer = null
+		closing.close()
 	if api != null:
 		api.multiplayer_peer = OfflineMultiplayerPeer.new()
 		for pair: Array in _connections(api):
