@@ -184,6 +184,7 @@ func _finish(code: int, why: String) -> void:
 		data["seat"] = _seat
 		data["error"] = net.session.last_error
 		data["health"] = _health()
+		data["controllers"] = _controllers()
 	if _profile != null:
 		data["contact"] = _profile.to_dict()
 	if not report_path.is_empty():
@@ -204,3 +205,19 @@ func _health() -> Array[int]:
 		for seat: int in net.seats:
 			health.append(match_node.rules.get_health(seat))
 	return health
+
+
+## Who drove each seat here at the end: computer, remote (the network) or local.
+func _controllers() -> Array[String]:
+	var kinds: Array[String] = []
+	var match_node: PongMatch = net.play.match_node
+	if match_node == null:
+		return kinds
+	for controller: PongController in match_node.controllers:
+		if controller is PongAi:
+			kinds.append("computer")
+		elif controller is PongNetRemotePlayer:
+			kinds.append("remote")
+		else:
+			kinds.append("local")
+	return kinds
