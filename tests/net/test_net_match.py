@@ -49,7 +49,9 @@ def _check_consistent(peers: list[Peer], network: Network, min_handoffs: int = 3
     lists = [transfers(r) for r in reports]
     longest = max(lists, key=len)
     handoffs = [t for t in longest if t[1] == 1]
-    assert len(handoffs) >= min_handoffs, f"too few hand-offs to judge: {longest}"
+    assert len(handoffs) >= min_handoffs, (
+        f"too few hand-offs to judge: {longest}",
+        [(p.name, p.report.get("exit"), p.log()[-800:]) for p in peers])
     for seen in lists:
         assert seen == longest[: len(seen)], (seen, longest)
         assert len(longest) - len(seen) <= 2
