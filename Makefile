@@ -24,7 +24,7 @@ BENCH_SECONDS ?= 10
 SOAK_SECONDS ?= 600
 
 .PHONY: play test deps engine build build-release import test-native test-godot lint pong-demo \
-	export test-export dist test-dist test-windowed test-net bench soak sanitize analyze export-study \
+	export test-export dist test-dist test-windowed test-net bench-net bench soak sanitize analyze export-study \
 	test-analysis addon test-addon clean distclean
 
 ## deps: install missing OS packages (apt-get; sudo when not root)
@@ -178,9 +178,15 @@ export-study:
 test-analysis:
 	@tools/analysis/run.sh -m pytest tools/analysis/tests -q
 
-## test-net: the network tests (the UDP relay that gives loopback latency, jitter and loss)
-test-net:
-	@tools/analysis/run.sh -m pytest tools/net/tests -q -p no:cacheprovider
+## test-net: the network tests: the UDP relay that gives loopback latency, jitter and loss,
+## then networked Pong with headless peers through it (tests/net, a few minutes)
+test-net: import
+	@tools/analysis/run.sh -m pytest tools/net/tests tests/net -q -p no:cacheprovider
+
+## bench-net: networked Pong's bytes/s, hand-off gap, divergence and corrections for each
+## network setting (numbers, not tests; JSON in .bench/net.json)
+bench-net: import
+	@tools/analysis/run.sh tests/net/bench_net.py --json .bench/net.json
 
 ## clean: build outputs (keeps the provisioned engine and Python tools)
 clean:

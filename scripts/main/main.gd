@@ -48,6 +48,9 @@ func _ready() -> void:
 			pong_health = maxi(1, arg.get_slice("=", 1).to_int())
 		elif arg.begins_with("--pong-players="):
 			pong_players = 4 if arg.get_slice("=", 1).to_int() == 4 else 2
+	if PongNetCli.wants(args):
+		add_child(PongNetCli.new())
+		return
 	if args.has("--pong-demo"):
 		start_pong_demo(pong_health, pong_players)
 		return

@@ -53,6 +53,11 @@ const MINE_RUMBLE_N: float = 1.2
 ## Stepped mode: step from the physics frames (off: whoever owns the match calls
 ## [method run_until], e.g. a test).
 @export var self_stepping: bool = true
+## Floor and goal events cost health here (off in a networked match: the ball's master
+## applies them and tells every peer).
+@export var rules_from_events: bool = true
+## Bullets and mines (off in a networked match, where they are not replicated yet).
+@export var weapons: bool = true
 
 var court: PongCourt = null
 var rules: PongRules = null
@@ -290,7 +295,7 @@ func _device_usable() -> bool:
 
 
 func _on_event(event: Dictionary) -> void:
-	var hurt: int = rules.apply_event(event, court, beginner)
+	var hurt: int = rules.apply_event(event, court, beginner) if rules_from_events else -1
 	if hurt >= 0 and beginner and str(event.get("type", "")) == "wall":
 		referee.serve_after(PongReferee.GOAL_SERVE_DELAY_S)
 	for controller: PongController in controllers:
@@ -360,9 +365,9 @@ func _decide(dt: float) -> void:
 		controller.speed_factor = effects.speed_factor(player)
 		var other: Vector3 = avatar_of(_opponent_in(player))
 		var intent: PongIntent = controller.update(now, dt, snapshot, other)
-		if intent.fire and intent.gun and not rules.is_over():
+		if intent.fire and intent.gun and weapons and not rules.is_over():
 			_fire(player)
-		if intent.place_mine and not rules.is_over():
+		if intent.place_mine and weapons and not rules.is_over():
 			var mine: PongMines.Mine = mines.place(player, intent.avatar, court)
 			if mine != null:
 				mine_placed.emit(mine)

@@ -15,6 +15,8 @@ signal menu_requested
 ## Play again with the same settings.
 signal play_again_requested
 
+## The network game's lobby (issue 11), opened from the setup.
+const LOBBY_SCENE_PATH: String = "res://scenes/pong/net/pong_lobby.tscn"
 ## Shown instead of a game when there is no Pong renderer.
 const OFFLINE_TEXT: String = (
 	"Haptic Battle Pong needs the haptics extension: the ball is simulated in its 1 kHz "
@@ -54,6 +56,7 @@ func _ready() -> void:
 	winner_screen.menu_requested.connect(_leave)
 	setup.start_requested.connect(_on_setup_start)
 	setup.back_requested.connect(_leave)
+	setup.network_requested.connect(_open_lobby)
 	if not Haptics.pong.is_available():
 		setup.show_offline(OFFLINE_TEXT if not Haptics.is_available() else OLD_EXTENSION_TEXT)
 		if quit_when_over:
@@ -127,6 +130,18 @@ func player_name(player: int) -> String:
 	if player == match_node.local_player:
 		return "You · device"
 	return "You · mouse" if player == 0 else "Player 2 · keyboard"
+
+
+func _open_lobby() -> void:
+	setup.visible = false
+	var lobby: PongLobby = (load(LOBBY_SCENE_PATH) as PackedScene).instantiate() as PongLobby
+	lobby.back_requested.connect(_close_lobby.bind(lobby))
+	add_child(lobby)
+
+
+func _close_lobby(lobby: PongLobby) -> void:
+	lobby.queue_free()
+	setup.visible = true
 
 
 func _is_own_scene() -> bool:

@@ -8,10 +8,13 @@ extends CanvasLayer
 ## Start a match in [param mode] (a [enum PongMatch.Mode]).
 signal start_requested(mode: PongMatch.Mode, beginner: bool)
 signal back_requested
+## Open the network game's lobby.
+signal network_requested
 
 @onready var vs_computer_button: Button = %VsComputerButton
 @onready var two_players_button: Button = %TwoPlayersButton
 @onready var demo_button: Button = %DemoButton
+@onready var network_button: Button = %NetworkButton
 @onready var beginner_check: CheckBox = %BeginnerCheck
 @onready var four_players_check: CheckBox = %FourPlayersCheck
 @onready var back_button: Button = %BackButton
@@ -23,6 +26,7 @@ func _ready() -> void:
 	vs_computer_button.pressed.connect(_start.bind(PongMatch.Mode.VS_COMPUTER))
 	two_players_button.pressed.connect(_start.bind(PongMatch.Mode.TWO_PLAYERS))
 	demo_button.pressed.connect(_start.bind(PongMatch.Mode.DEMO))
+	network_button.pressed.connect(network_requested.emit)
 	back_button.pressed.connect(back_requested.emit)
 	UiFocus.grab_later(vs_computer_button)
 

@@ -1,0 +1,419 @@
+class_name PongNetPlay
+extends PongNetWire
+## One networked match on this peer: the private haptic space. Every peer runs the servo
+## and simulates the ball; the owner of the territory the ball is in is its master
+## ([PongNetAuthority]): it sends the ball state on every new servo state (>= 60 Hz,
+## unreliable_ordered, its own channel) and its contact with the ball stays in its own
+## servo at 1 kHz whatever the latency (contact is never sent). Followers carry the
+## received state forward to now and blend their ball onto it ([PongNetSmoother]). Each
+## peer sends the poses of the paddles it drives; other peers' paddles are kinematic
+## inputs of the local servo ([PongNetRemotePlayer]). Health changes come from the peer
+## that saw them (the master for floor bounces) as reliable messages. Every received
+## message is checked ([PongNetProtocol]); a bad one is dropped with a log line.
+##
+## RPC surface: the same methods at the same path on every peer (/root/PongNet/Play).
+## The play node lives as long as the session (RPCs may arrive before or after a match).
+
+## Health changed on every peer the same way; the match is over on every peer.
+signal finished(winner: int)
+## The server changed who owns which seat (a player left).
+signal owners_changed
+
+## Servo seconds after a transfer during which the servo's state is not trusted: the
+## set_ball of the transfer reaches the servo a tick later (no hand-off request, no
+## stream from a state the transfer has not replaced yet).
+const SETTLE_S: float = 0.02
+## Seconds of simulation the game steps per chunk in stepped mode.
+const CHUNK_S: float = PongMatch.STEP_CHUNK_S
+## The streams send on each new servo state, at most this often (a headless or fast
+## machine renders hundreds of frames a second), Hz.
+const MAX_STREAM_HZ: float = 125.0
+## Paddle speeds sent are capped here (a teleported avatar is not a swing), m/s.
+const MAX_SENT_PADDLE_SPEED_M_PER_S: float = 20.0
+
+var authority: PongNetAuthority = null
+var match_node: PongMatch = null
+## Our ball in the servo, as the network moves it.
+var ball: PongNetBall = PongNetBall.new()
+var report: PongNetReport = PongNetReport.new()
+## Seats this peer drives (its player's, or on the server the computer's).
+var local_seats: PackedInt32Array = PackedInt32Array()
+## Stepped: the servo is stepped here, paced by the wall clock (headless peers).
+var stepped: bool = false
+## A second of stepping may not take more than this many chunks (a stalled process does
+## not try to catch up for ever).
+var max_chunks_per_frame: int = 10
+## Server: where a serve to a receiver aims, Callable(receiver, avatar) -> Vector3 (a test
+## script's; unset: at the receiver's avatar).
+var serve_aim: Callable = Callable()
+
+var _predictor: PongPredictor = null
+var _clocks: Dictionary[int, PongNetClock] = {}
+var _seq: int = 0
+var _last_sent_time: float = -INF
+var _last_pose_time: float = -INF
+var _settle_until: float = 0.0
+var _owe_s: float = 0.0
+var _last_now: float = 0.0
+var _last_centers: Dictionary[int, Vector3] = {}
+var _running: bool = false
+
+
+## Starts following [param p_match] (already started) with [param p_authority].
+func begin(p_match: PongMatch, p_authority: PongNetAuthority, seats: PackedInt32Array) -> void:
+	match_node = p_match
+	authority = p_authority
+	local_seats = seats
+	_predictor = PongPredictor.new(match_node.court)
+	match_node.event_seen.connect(_on_event)
+	match_node.match_over.connect(_on_match_over)
+	report.begin(authority.my_id)
+	# The servo's clock may have started over with the match.
+	_last_sent_time = -INF
+	_last_pose_time = -INF
+	_running = true
+
+
+## Stops (the match is over, or the peer leaves).
+func end() -> void:
+	_running = false
+
+
+func is_running() -> bool:
+	return _running
+
+
+## One frame: step the servo (stepped mode), serve (server), hand off, stream, correct.
+func frame(delta: float) -> void:
+	if not _running:
+		return
+	if stepped:
+		_owe_s += delta
+		var chunks: int = mini(floori(_owe_s / CHUNK_S), max_chunks_per_frame)
+		_owe_s = minf(_owe_s - chunks * CHUNK_S, CHUNK_S)
+		if chunks > 0:
+			match_node.run_until(func() -> bool: return false, (chunks - 0.5) * CHUNK_S)
+	var snapshot: PongSnapshot = match_node.snapshot
+	var sim_dt: float = match_node.now - _last_now
+	_last_now = match_node.now
+	if authority.my_id == PongNetAuthority.SERVER_ID:
+		_referee(sim_dt)
+	if authority.is_master() and snapshot.time_s > _settle_until:
+		if snapshot.territory != authority.territory:
+			_hand_off(snapshot)
+	var settled: bool = snapshot.time_s > _settle_until
+	var due: bool = snapshot.time_s - _last_sent_time >= 1.0 / MAX_STREAM_HZ
+	if authority.is_master() and settled and due:
+		_last_sent_time = snapshot.time_s
+		_seq += 1
+		send_all(
+			&"_ball", [authority.epoch, _seq, snapshot.time_s] + _ball_of(snapshot) + [_my_leg_ms()]
+		)
+	elif not authority.is_master():
+		ball.nudge(sim_dt)
+	if snapshot.time_s - _last_pose_time >= 1.0 / MAX_STREAM_HZ:
+		_last_pose_time = snapshot.time_s
+		_send_poses(snapshot)
+	report.sample(snapshot.ball_position, authority.is_master(), snapshot.time_s)
+
+
+## The poses of the seats this peer drives, each new servo state.
+func _send_poses(snapshot: PongSnapshot) -> void:
+	for seat: int in local_seats:
+		var avatar: Vector3 = match_node.avatar_of(seat)
+		var offset: Vector3 = snapshot.paddle_centers[seat] - avatar
+		var velocity: Vector3 = Vector3.ZERO
+		var dt: float = match_node.now - _last_centers.get(-1 - seat, Vector3.ZERO).x
+		if _last_centers.has(seat) and dt > 0.0:
+			velocity = (snapshot.paddle_centers[seat] - _last_centers[seat]) / dt
+		_last_centers[seat] = snapshot.paddle_centers[seat]
+		_last_centers[-1 - seat] = Vector3(match_node.now, 0.0, 0.0)
+		velocity = velocity.limit_length(MAX_SENT_PADDLE_SPEED_M_PER_S)
+		var normal: Vector3 = snapshot.paddle_normals[seat].normalized()
+		var flags: int = PongNetRemotePlayer.flags_of(match_node.controllers[seat].intent)
+		send_all(&"_pose", [seat, avatar, offset, velocity, normal, flags, snapshot.time_s])
+
+
+func _referee(sim_dt: float) -> void:
+	var rules: PongRules = match_node.rules
+	if rules.is_over() or not match_node.referee.update(sim_dt, match_node.snapshot.ball_velocity):
+		return
+	var receiver: int = match_node.referee.receiver
+	var aim: Vector3 = match_node.avatar_of(receiver)
+	if serve_aim.is_valid():
+		aim = serve_aim.call(receiver, aim)
+	var serve: PongReferee.Serve = match_node.referee.make_serve(
+		match_node.court, aim, match_node.beginner
+	)
+	var territory: int = PongCourt.territory_of(serve.position)
+	issue(
+		PongNetProtocol.TRANSFER_SERVE, territory, serve.position, serve.velocity, Vector3.ZERO, 0
+	)
+
+
+## Server: issues the next transfer to everyone, itself included.
+func issue(
+	kind: int, territory: int, position: Vector3, velocity: Vector3, spin: Vector3, age_ms: int
+) -> void:
+	var transfer: Dictionary = authority.next_transfer(kind, territory)
+	var args: Array = [
+		transfer["epoch"], kind, territory, transfer["master"], position, velocity, spin, age_ms
+	]
+	send_all(&"_transfer", args)
+	callv(&"_on_transfer", [authority.my_id] + args)
+
+
+func _hand_off(snapshot: PongSnapshot) -> void:
+	var request: Dictionary = authority.relinquish(snapshot.territory)
+	if request.is_empty():
+		return
+	var args: Array = [request["epoch"], request["territory"]] + _ball_of(snapshot)
+	if authority.my_id == PongNetAuthority.SERVER_ID:
+		callv(&"_on_request", [authority.my_id] + args)
+	else:
+		callv(&"rpc_id", [PongNetAuthority.SERVER_ID, &"_request"] + args)
+
+
+func _ball_of(snapshot: PongSnapshot) -> Array:
+	return [snapshot.ball_position, snapshot.ball_velocity, snapshot.ball_spin]
+
+
+## One-way delay of our own leg to the server, ms (0 on the server).
+func _my_leg_ms() -> int:
+	return roundi(session.round_trip_s(PongNetAuthority.SERVER_ID) * 500.0)
+
+
+func _clock_of(peer: int, their_leg_ms: int) -> PongNetClock:
+	if not _clocks.has(peer):
+		_clocks[peer] = PongNetClock.new()
+	var clock: PongNetClock = _clocks[peer]
+	clock.base_latency_s = (_my_leg_ms() + their_leg_ms) / 1000.0
+	return clock
+
+
+func _local_now_s() -> float:
+	return Time.get_ticks_usec() / 1e6
+
+
+func _reject(sender: int, what: String, reason: String) -> void:
+	report.refuse(what)
+	printerr("PongNet: dropped %s from peer %d: %s" % [what, sender, reason])
+
+
+# --- handlers of PongNetWire, with the sender's id ---
+
+
+func _on_ball(
+	sender: int,
+	epoch: Variant,
+	seq: Variant,
+	time_s: Variant,
+	position: Variant,
+	velocity: Variant,
+	spin: Variant,
+	leg_ms: Variant
+) -> void:
+	if not _running:
+		return
+	var reason: String = PongNetProtocol.check_ball(
+		epoch, seq, time_s, position, velocity, spin, match_node.court, _max_spin()
+	)
+	if reason.is_empty():
+		reason = PongNetProtocol.check_int(leg_ms, 0, 10000, "leg")
+	if not reason.is_empty():
+		_reject(sender, "ball state", reason)
+		return
+	var state_epoch: int = epoch
+	var state_seq: int = seq
+	var sent_at: float = time_s
+	var p: Vector3 = position
+	var v: Vector3 = velocity
+	var w: Vector3 = spin
+	var leg: int = leg_ms
+	reason = authority.accept_state(sender, state_epoch, state_seq)
+	if not reason.is_empty():
+		report.late += 1
+		return
+	report.states += 1
+	var age: float = _clock_of(sender, leg).observe(_local_now_s(), sent_at)
+	report.ages.append(age)
+	var target: Array[Vector3] = PongNetSmoother.extrapolate(_predictor, p, v, _gravity(), age)
+	ball.correct(target[0], target[1], w)
+
+
+func _on_pose(
+	sender: int,
+	seat: Variant,
+	avatar: Variant,
+	offset: Variant,
+	velocity: Variant,
+	normal: Variant,
+	flags: Variant,
+	time_s: Variant
+) -> void:
+	if not _running:
+		return
+	var reason: String = PongNetProtocol.check_pose(
+		seat, authority.owners.size(), avatar, offset, velocity, normal, match_node.court, 2.0
+	)
+	if reason.is_empty():
+		reason = PongNetProtocol.check_int(flags, 0, 3, "flags")
+	if reason.is_empty():
+		reason = PongNetProtocol.check_float(time_s, 0.0, 1e7, "time")
+	if not reason.is_empty():
+		_reject(sender, "pose", reason)
+		return
+	var pose_seat: int = seat
+	var sent_at: float = time_s
+	var pose: Array[Vector3] = [avatar, offset, velocity, normal]
+	var pose_flags: int = flags
+	# The server may drive any seat: it takes over the seats of players who left, and its
+	# poses can overtake the reliable message that says so.
+	var seat_owner: int = authority.owner_of(pose_seat)
+	if seat_owner != sender and sender != PongNetAuthority.SERVER_ID:
+		_reject(sender, "pose", "seat %d is not theirs" % pose_seat)
+		return
+	var controller: PongController = match_node.controllers[pose_seat]
+	if not controller is PongNetRemotePlayer:
+		return
+	var age: float = _clock_of(sender, 0).observe(_local_now_s(), sent_at)
+	(controller as PongNetRemotePlayer).set_pose(
+		match_node.now, minf(age, 0.5), pose[0], pose[1], pose[2], pose[3], pose_flags
+	)
+	report.poses += 1
+
+
+func _on_request(
+	sender: int,
+	epoch: Variant,
+	territory: Variant,
+	position: Variant,
+	velocity: Variant,
+	spin: Variant
+) -> void:
+	if not _running or authority.my_id != PongNetAuthority.SERVER_ID:
+		return
+	var reason: String = PongNetProtocol.check_ball(
+		epoch, 0, 0.0, position, velocity, spin, match_node.court, _max_spin()
+	)
+	if reason.is_empty():
+		reason = PongNetProtocol.check_int(territory, 0, authority.owners.size() - 1, "territory")
+	if not reason.is_empty():
+		_reject(sender, "hand-off request", reason)
+		return
+	var seen: int = epoch
+	var to: int = territory
+	var state: Array[Vector3] = [position, velocity, spin]
+	reason = authority.check_request(sender, seen, to)
+	if not reason.is_empty():
+		_reject(sender, "hand-off request", reason)
+		return
+	var age_ms: int = roundi(session.round_trip_s(sender) * 500.0)
+	issue(PongNetProtocol.TRANSFER_HANDOFF, to, state[0], state[1], state[2], age_ms)
+
+
+func _on_transfer(
+	sender: int,
+	epoch: Variant,
+	kind: Variant,
+	territory: Variant,
+	master: Variant,
+	position: Variant,
+	velocity: Variant,
+	spin: Variant,
+	age_ms: Variant
+) -> void:
+	if not _running:
+		return
+	var reason: String = PongNetProtocol.check_ball(
+		epoch, 0, 0.0, position, velocity, spin, match_node.court, _max_spin()
+	)
+	for extra: String in [
+		PongNetProtocol.check_int(kind, 0, PongNetProtocol.TRANSFER_NAMES.size() - 1, "kind"),
+		PongNetProtocol.check_int(territory, 0, authority.owners.size() - 1, "territory"),
+		PongNetProtocol.check_int(master, 0, 1 << 31, "master"),
+		PongNetProtocol.check_int(age_ms, 0, 10000, "age"),
+	]:
+		reason = extra if reason.is_empty() else reason
+	if reason.is_empty():
+		var transfer: Dictionary = {
+			"epoch": epoch, "kind": kind, "territory": territory, "master": master
+		}
+		reason = authority.apply_transfer(sender, transfer)
+	if not reason.is_empty():
+		_reject(sender, "transfer", reason)
+		return
+	report.transfer(authority.history[-1])
+	var state: Array[Vector3] = [position, velocity, spin]
+	var sent_age_ms: int = age_ms
+	var age: float = (sent_age_ms + _my_leg_ms()) / 1000.0
+	var target: Array[Vector3] = PongNetSmoother.extrapolate(
+		_predictor, state[0], state[1], _gravity(), age
+	)
+	var local: Vector3 = ball.local()[0]
+	report.handoff_corrections.append((target[0] - local).length())
+	if kind == PongNetProtocol.TRANSFER_SERVE or authority.is_master():
+		ball.smoother.pending = Vector3.ZERO
+		ball.put(target[0], target[1], state[2])
+	else:
+		ball.correct(target[0], target[1], state[2])
+	_settle_until = match_node.snapshot.time_s + SETTLE_S
+
+
+func _on_hurt(sender: int, epoch: Variant, player: Variant, cause: Variant) -> void:
+	if not _running:
+		return
+	var reason: String = PongNetProtocol.check_int(epoch, 0, authority.epoch, "epoch")
+	if reason.is_empty():
+		reason = PongNetProtocol.check_int(player, 0, authority.owners.size() - 1, "player")
+	if reason.is_empty() and (typeof(cause) != TYPE_STRING or cause != "floor"):
+		reason = "cause %s is not one the network carries" % str(cause).left(32)
+	if not reason.is_empty():
+		_reject(sender, "hurt", reason)
+		return
+	var at_epoch: int = epoch
+	var victim: int = player
+	var master_then: int = authority.master_at(at_epoch)
+	if sender != master_then:
+		_reject(sender, "hurt", "peer %d was not the master at epoch %d" % [sender, at_epoch])
+		return
+	match_node.rules.hurt(victim, PongRules.CAUSE_FLOOR)
+	report.hurts.append([at_epoch, victim, "floor"])
+
+
+func _on_owners(sender: int, owners: Variant) -> void:
+	if sender != PongNetAuthority.SERVER_ID or typeof(owners) != TYPE_PACKED_INT64_ARRAY:
+		_reject(sender, "owners", "not from the server or not a PackedInt64Array")
+		return
+	var list: PackedInt64Array = owners
+	if list.size() != authority.owners.size():
+		_reject(
+			sender, "owners", "%d seats, the match has %d" % [list.size(), authority.owners.size()]
+		)
+		return
+	authority.owners = list
+	owners_changed.emit()
+
+
+func _on_event(event: Dictionary) -> void:
+	if str(event.get("type", "")) != "floor" or not authority.is_master():
+		return
+	var territory: int = event.get("territory", -1)
+	if territory < 0 or territory >= authority.owners.size() or match_node.rules.is_over():
+		return
+	var args: Array = [authority.epoch, territory, "floor"]
+	send_all(&"_hurt", args)
+	callv(&"_on_hurt", [authority.my_id] + args)
+
+
+func _on_match_over(winner: int) -> void:
+	report.winner = winner
+	finished.emit(winner)
+
+
+func _gravity() -> float:
+	return 0.0 if match_node.beginner else match_node.court.gravity
+
+
+func _max_spin() -> float:
+	return match_node.court.number("max_spin_rad_per_s")

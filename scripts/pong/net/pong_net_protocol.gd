@@ -1,0 +1,163 @@
+class_name PongNetProtocol
+extends RefCounted
+## The wire facts of networked Haptic Battle Pong, defined once, and the checks every
+## received message passes before it touches the game. A message that fails a check is
+## dropped with one log line naming the sender and the reason; the game goes on.
+##
+## Channels (ENet, through SceneMultiplayer's transfer_channel): the ball state stream and
+## the pose stream each get their own unreliable_ordered channel so they never queue behind
+## reliable traffic; lobby, hand-offs and rules share one reliable channel.
+
+## Sent and compared at connect (auth): peers of another protocol version are refused.
+const VERSION: String = "hbp-net-1"
+const DEFAULT_PORT: int = 7420
+const CHANNEL_BALL: int = 1
+const CHANNEL_POSE: int = 2
+const CHANNEL_RELIABLE: int = 3
+## Seats (territories) a match may have.
+const MAX_SEATS: int = 4
+const MAX_NAME_LENGTH: int = 24
+## Longest auth payload accepted, bytes (a version string).
+const MAX_AUTH_BYTES: int = 64
+## How far outside the court a received position may lie (a ball state extrapolated by the
+## sender, a paddle at full reach), metres.
+const POSITION_MARGIN_M: float = 1.0
+## Received speeds may exceed the servo's caps by this factor (the sender's extrapolation).
+const SPEED_MARGIN: float = 1.5
+## Ball stream rate the master keeps at least, Hz (it sends on each new servo state).
+const MIN_STREAM_HZ: float = 60.0
+## Transfer kinds, in the order ties would be broken (the server sequences them, so ties
+## never happen on the wire; the rank is for the log).
+const TRANSFER_SERVE: int = 0
+const TRANSFER_HANDOFF: int = 1
+const TRANSFER_TAKEOVER: int = 2
+const TRANSFER_NAMES: Array[String] = ["serve", "handoff", "takeover"]
+
+## ENet timeouts on every peer (FACTS §1.7: (8, 500, 1000) noticed a SIGKILLed peer in
+## 1.1 s; a 1 s cap dropped live peers on a 5 %-loss path, hence 1.5 s). Game-time values:
+## long frames (loading) must not trip them. The hard cap grows
+## with the round trip ([method timeout_max_ms]): on a slow lossy path a reliable packet
+## lost twice waits about 4.5 round trips for its third try, and must not end the game.
+const TIMEOUT_LIMIT: int = 8
+const TIMEOUT_MIN_MS: int = 500
+const TIMEOUT_MAX_MS: int = 1500
+## Extra hard cap per millisecond of round trip, and the ceiling, ms.
+const TIMEOUT_PER_RTT: float = 6.0
+const TIMEOUT_CEILING_MS: int = 5000
+## A client connecting to nobody gives up after a few seconds (FACTS §1.7: 3.5 s with a
+## 2 s cap; 3 s here so a lossy path does not fail the handshake).
+const CONNECT_TIMEOUT_MIN_MS: int = 500
+const CONNECT_TIMEOUT_MAX_MS: int = 3000
+
+
+## Why [param value] is not a finite [Vector3] within [param limit] of the origin along
+## each axis ([param limit] per component), or "" when it is.
+static func check_vector(value: Variant, limit: Vector3, what: String) -> String:
+	if typeof(value) != TYPE_VECTOR3:
+		return "%s is a %s, not a Vector3" % [what, type_string(typeof(value))]
+	var v: Vector3 = value
+	if not v.is_finite():
+		return "%s is not finite" % what
+	if absf(v.x) > limit.x or absf(v.y) > limit.y or absf(v.z) > limit.z:
+		return "%s %s is out of range" % [what, v]
+	return ""
+
+
+## Why [param value] is not an int in [[param low], [param high]], or "".
+static func check_int(value: Variant, low: int, high: int, what: String) -> String:
+	if typeof(value) != TYPE_INT:
+		return "%s is a %s, not an int" % [what, type_string(typeof(value))]
+	var i: int = value
+	if i < low or i > high:
+		return "%s %d is out of [%d, %d]" % [what, i, low, high]
+	return ""
+
+
+## Why [param value] is not a finite float (an int is accepted) in [[param low],
+## [param high]], or "".
+static func check_float(value: Variant, low: float, high: float, what: String) -> String:
+	if typeof(value) != TYPE_FLOAT and typeof(value) != TYPE_INT:
+		return "%s is a %s, not a number" % [what, type_string(typeof(value))]
+	var f: float = value
+	if not is_finite(f) or f < low or f > high:
+		return "%s %s is out of [%s, %s]" % [what, f, low, high]
+	return ""
+
+
+## Why [param value] is not a player name, or "".
+static func check_name(value: Variant) -> String:
+	if typeof(value) != TYPE_STRING:
+		return "name is a %s, not a String" % type_string(typeof(value))
+	var text: String = value
+	if text.strip_edges().is_empty() or text.length() > MAX_NAME_LENGTH:
+		return "name must have 1 to %d characters" % MAX_NAME_LENGTH
+	return ""
+
+
+## The box (half extents) received positions must lie in, for [param court].
+static func position_limit(court: PongCourt) -> Vector3:
+	var margin: Vector3 = Vector3.ONE * POSITION_MARGIN_M
+	return Vector3(court.half_width, court.wall_height, court.half_length) + margin
+
+
+## The checks of one ball state {epoch, seq, time, position, velocity, spin}: "" or why
+## not. [param max_spin] in rad/s.
+static func check_ball(
+	epoch: Variant,
+	seq: Variant,
+	time_s: Variant,
+	position: Variant,
+	velocity: Variant,
+	spin: Variant,
+	court: PongCourt,
+	max_spin: float
+) -> String:
+	var speed: float = court.max_ball_speed * SPEED_MARGIN
+	var spin_limit: float = max_spin * SPEED_MARGIN
+	for reason: String in [
+		check_int(epoch, 0, 1 << 30, "epoch"),
+		check_int(seq, 0, 1 << 40, "seq"),
+		check_float(time_s, 0.0, 1e7, "time"),
+		check_vector(position, position_limit(court), "position"),
+		check_vector(velocity, Vector3.ONE * speed, "velocity"),
+		check_vector(spin, Vector3.ONE * spin_limit, "spin"),
+	]:
+		if not reason.is_empty():
+			return reason
+	return ""
+
+
+## The checks of one pose {seat, avatar, paddle offset, paddle velocity, normal}: "" or
+## why not. [param reach]: the paddle's reach from its avatar, metres.
+static func check_pose(
+	seat: Variant,
+	seats: int,
+	avatar: Variant,
+	offset: Variant,
+	velocity: Variant,
+	normal: Variant,
+	court: PongCourt,
+	reach: float
+) -> String:
+	var reach_limit: Vector3 = Vector3.ONE * (reach + POSITION_MARGIN_M)
+	for reason: String in [
+		check_int(seat, 0, seats - 1, "seat"),
+		check_vector(avatar, position_limit(court), "avatar"),
+		check_vector(offset, reach_limit, "paddle offset"),
+		check_vector(velocity, Vector3.ONE * court.max_ball_speed * 4.0, "paddle velocity"),
+		check_vector(normal, Vector3.ONE * 1.01, "normal"),
+	]:
+		if not reason.is_empty():
+			return reason
+	var n: Vector3 = normal
+	if absf(n.length() - 1.0) > 0.01:
+		return "normal is not a unit vector"
+	return ""
+
+
+## ENet's hard cap on an unacknowledged packet for a path of round trip [param rtt_ms]:
+## 1.5 s on a LAN, a few round trips more on a slow path.
+static func timeout_max_ms(rtt_ms: float) -> int:
+	return clampi(
+		roundi(TIMEOUT_MAX_MS + TIMEOUT_PER_RTT * rtt_ms), TIMEOUT_MAX_MS, TIMEOUT_CEILING_MS
+	)

@@ -1,0 +1,102 @@
+class_name PongNetReport
+extends RefCounted
+## What one peer saw of a networked match, for the tests and the benchmark (written as
+## JSON at exit by the autopilot). Wall times are this machine's Unix clock: the protocol
+## never uses them, they only let a test line up peers running on one machine.
+
+## Seconds between trajectory samples.
+const SAMPLE_INTERVAL_S: float = 0.01
+
+var peer: int = 0
+var winner: int = -1
+## Ball states taken, stale ones dropped, poses taken.
+var states: int = 0
+var late: int = 0
+var poses: int = 0
+## Age estimate of each state taken, seconds.
+var ages: PackedFloat32Array = PackedFloat32Array()
+## |target - local| at each transfer, metres.
+var handoff_corrections: PackedFloat32Array = PackedFloat32Array()
+## [epoch, player, cause] of each health loss applied.
+var hurts: Array[Array] = []
+## Messages dropped by the checks, by kind.
+var refused: Dictionary[String, int] = {}
+## Extra entries (peer losses, contact profiles, ...).
+var extra: Dictionary = {}
+
+var _transfers: Array[Dictionary] = []
+var _samples: Array[PackedFloat64Array] = []
+var _intervals: Array[PackedFloat64Array] = []
+var _master_since: float = -1.0
+var _last_sample: float = -INF
+var _started: float = 0.0
+
+
+func begin(p_peer: int) -> void:
+	peer = p_peer
+	_started = now()
+
+
+static func now() -> float:
+	return Time.get_unix_time_from_system()
+
+
+func refuse(what: String) -> void:
+	refused[what] = refused.get(what, 0) + 1
+
+
+func transfer(entry: Dictionary) -> void:
+	var copy: Dictionary = entry.duplicate()
+	copy["wall_s"] = now()
+	_transfers.append(copy)
+
+
+## The ball at [param position] on this peer's servo at [param sim_s]; [param master]:
+## whether this peer simulates it for everyone.
+func sample(position: Vector3, master: bool, sim_s: float) -> void:
+	var t: float = now()
+	if master and _master_since < 0.0:
+		_master_since = t
+	elif not master and _master_since >= 0.0:
+		_intervals.append(PackedFloat64Array([_master_since, t]))
+		_master_since = -1.0
+	if t - _last_sample >= SAMPLE_INTERVAL_S:
+		_last_sample = t
+		_samples.append(PackedFloat64Array([t, sim_s, position.x, position.y, position.z]))
+
+
+## Everything as a JSON-ready Dictionary; [param smoother] gives the correction sizes,
+## [param authority] the refusals it counted.
+func to_dict(smoother: PongNetSmoother, authority: PongNetAuthority) -> Dictionary:
+	var intervals: Array = _intervals.duplicate()
+	if _master_since >= 0.0:
+		intervals.append(PackedFloat64Array([_master_since, now()]))
+	var all_refused: Dictionary = refused.duplicate()
+	if authority != null:
+		for key: String in authority.refusals:
+			all_refused["authority: " + key] = authority.refusals[key]
+	return {
+		"peer": peer,
+		"seconds": now() - _started,
+		"winner": winner,
+		"states": states,
+		"late": late,
+		"poses": poses,
+		"age_p50_s": PongNetSmoother.quantile(ages, 0.5),
+		"age_p99_s": PongNetSmoother.quantile(ages, 0.99),
+		"corrections":
+		{
+			"count": smoother.sizes.size(),
+			"snaps": smoother.snaps,
+			"p50_m": PongNetSmoother.quantile(smoother.sizes, 0.5),
+			"p99_m": PongNetSmoother.quantile(smoother.sizes, 0.99),
+			"max_m": PongNetSmoother.quantile(smoother.sizes, 1.0),
+		},
+		"handoff_corrections_m": Array(handoff_corrections),
+		"transfers": _transfers,
+		"master_intervals": intervals,
+		"samples": _samples,
+		"hurts": hurts,
+		"refused": all_refused,
+		"extra": extra,
+	}

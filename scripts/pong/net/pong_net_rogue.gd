@@ -1,0 +1,31 @@
+class_name PongNetRogue
+extends RefCounted
+## A misbehaving peer for the fault tests: once its match runs it sends every kind of bad
+## message a peer can send, through the same RPC surface as an honest peer. The others
+## must drop each with a log line and play on.
+
+
+## Sends the bad messages from [param net]'s peer.
+static func attack(net: PongNet) -> void:
+	var play: PongNetPlay = net.play
+	var far: Vector3 = Vector3(0.0, 1.0, 0.0)
+	var me: int = play.authority.my_id
+	var not_mine: int = 0 if play.authority.owner_of(0) != me else 1
+	print("PongNet rogue: sending bad messages")
+	# Wrong types.
+	play._ball.rpc("one", 2, 3.0, far, far, far, 0)
+	play._pose.rpc(0, "avatar", far, far, Vector3.UP, 0, 1.0)
+	# Out of range: a ball far outside the court, a non-finite velocity, a bad seat.
+	play._ball.rpc(play.authority.epoch, 1 << 20, 1.0, Vector3(99, 99, 99), far, far, 0)
+	play._ball.rpc(play.authority.epoch, 1 << 21, 1.0, far, Vector3(NAN, 0, 0), far, 0)
+	play._pose.rpc(7, far, Vector3.ZERO, Vector3.ZERO, Vector3.UP, 0, 1.0)
+	# No authority: a ball state while not the master, a pose for another's seat, a transfer
+	# (only the server issues them), a health loss while not the master, a hand-off request.
+	play._ball.rpc(play.authority.epoch, 1 << 22, 1.0, far, Vector3.ZERO, Vector3.ZERO, 0)
+	play._pose.rpc(not_mine, far, Vector3.ZERO, Vector3.ZERO, Vector3.UP, 0, 1.0)
+	play._transfer.rpc(play.authority.epoch + 50, 1, 0, me, far, Vector3.ZERO, Vector3.ZERO, 0)
+	play._hurt.rpc(0, not_mine, "floor")
+	play._request.rpc_id(1, play.authority.epoch + 7, 0, far, Vector3.ZERO, Vector3.ZERO)
+	play._owners.rpc(PackedInt64Array([me, me]))
+	# Oversized: a 64 KiB name.
+	play._hurt.rpc(play.authority.epoch, 0, "x".repeat(65536))

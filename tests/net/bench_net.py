@@ -1,0 +1,78 @@
+"""make bench-net: networked Pong's numbers for each network setting and player count (not
+tests: nothing here passes or fails). Bytes per second per client through the relay, the
+hand-off gap (no master while the transfer travels), the ball's divergence between peers
+p50/p99 (serves left out, see net_harness.divergences) and the followers' correction sizes.
+JSON into .bench/net.json (or --json FILE).
+
+    python tests/net/bench_net.py [--seconds 12] [--peers 2] [--json .bench/net.json]
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+from pathlib import Path
+
+from net_harness import (ROOT, Network, divergences, handoff_gaps, quantile, run_match,
+                         transfers, workspace)
+
+SETTINGS = {
+    "0ms": Network(0, 0, 0.0),
+    "50ms+10j": Network(50, 10, 0.0),
+    "50ms+10j/5%": Network(50, 10, 0.05),
+    "150ms+20j/5%": Network(150, 20, 0.05),
+}
+
+
+def measure(peers: int, label: str, network: Network, seconds: float) -> dict:
+    with workspace() as work:
+        started, relay = run_match(work, peers, network, seconds, force_relay=True)
+    reports = [p.report for p in started]
+    clients = max(1, relay.get("clients", 1))
+    spread = divergences(reports, network.path_s + 0.1)
+    corrections = [r["corrections"] for r in reports]
+    gaps = handoff_gaps(reports)
+    row = {
+        "peers": peers,
+        "network": label,
+        "seconds": seconds,
+        "client_up_bytes_per_s": relay["up"]["bytes_delivered"] / clients / seconds,
+        "client_down_bytes_per_s": relay["down"]["bytes_delivered"] / clients / seconds,
+        "relay": relay,
+        "handoffs": sum(1 for t in transfers(reports[0]) if t[1] == 1),
+        "handoff_gap_p50_s": quantile(gaps, 0.5),
+        "handoff_gap_max_s": quantile(gaps, 1.0),
+        "divergence_p50_m": quantile(spread, 0.5),
+        "divergence_p99_m": quantile(spread, 0.99),
+        "correction_p50_m": max(c["p50_m"] for c in corrections),
+        "correction_p99_m": max(c["p99_m"] for c in corrections),
+        "correction_max_m": max(c["max_m"] for c in corrections),
+        "snaps": sum(c["snaps"] for c in corrections),
+        "states_per_peer": [r["states"] for r in reports],
+    }
+    return row
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--seconds", type=float, default=12.0)
+    parser.add_argument("--peers", type=int, nargs="+", default=[2])
+    parser.add_argument("--json", type=Path, default=ROOT / ".bench" / "net.json")
+    args = parser.parse_args()
+    rows = []
+    for peers in args.peers:
+        for label, network in SETTINGS.items():
+            row = measure(peers, label, network, args.seconds)
+            rows.append(row)
+            print(f"{peers} peers {label:>13}: up {row['client_up_bytes_per_s']:7.0f} B/s "
+                  f"down {row['client_down_bytes_per_s']:7.0f} B/s, {row['handoffs']:2d} hand-offs "
+                  f"gap p50 {row['handoff_gap_p50_s'] * 1000:5.0f} ms, divergence p50/p99 "
+                  f"{row['divergence_p50_m']:.3f}/{row['divergence_p99_m']:.3f} m, corrections "
+                  f"p50/p99/max {row['correction_p50_m']:.3f}/{row['correction_p99_m']:.3f}/"
+                  f"{row['correction_max_m']:.3f} m, snaps {row['snaps']}", flush=True)
+    args.json.parent.mkdir(parents=True, exist_ok=True)
+    args.json.write_text(json.dumps({"runs": rows}, indent=1))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,273 @@
+"""Headless Godot peers and the UDP relay for the networked-Pong process tests and bench.
+
+Every process is started here and killed by its PID in a finally (never by name); every
+file goes into a temporary directory that is removed afterwards. Wall times in the peers'
+reports are this machine's clock: the protocol never uses them, the tests use them to line
+the peers up (they all run on one machine).
+"""
+
+from __future__ import annotations
+
+import bisect
+import json
+import math
+import os
+import shutil
+import signal
+import socket
+import subprocess
+import sys
+import tempfile
+import time
+from contextlib import contextmanager
+from dataclasses import dataclass, field
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+GODOT = ROOT / "tools" / "godot"
+RELAY = ROOT / "tools" / "net" / "udp_relay.py"
+# Generous bounds for a loaded 2-core machine (never timing assertions).
+START_PATIENCE_S = 30.0
+EXIT_PATIENCE_S = 40.0
+
+
+def free_udp_port() -> int:
+    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as sock:
+        sock.bind(("127.0.0.1", 0))
+        return sock.getsockname()[1]
+
+
+@dataclass
+class Peer:
+    name: str
+    args: list[str]
+    workdir: Path
+    proc: subprocess.Popen | None = None
+    report: dict = field(default_factory=dict)
+
+    @property
+    def log_path(self) -> Path:
+        return self.workdir / f"{self.name}.log"
+
+    @property
+    def report_path(self) -> Path:
+        return self.workdir / f"{self.name}.json"
+
+    def start(self) -> None:
+        with open(self.log_path, "w") as log:
+            self.proc = subprocess.Popen(
+                [str(GODOT), "--headless", "--path", str(ROOT), "--", *self.args,
+                 f"--pong-net-report={self.report_path}"],
+                stdout=log, stderr=subprocess.STDOUT, cwd=ROOT,
+            )
+
+    def log(self) -> str:
+        return self.log_path.read_text(errors="replace") if self.log_path.exists() else ""
+
+    def wait_for_log(self, text: str, patience_s: float = START_PATIENCE_S) -> bool:
+        end = time.monotonic() + patience_s
+        while time.monotonic() < end:
+            if text in self.log():
+                return True
+            if self.proc is not None and self.proc.poll() is not None:
+                return text in self.log()
+            time.sleep(0.05)
+        return False
+
+    def wait(self, patience_s: float = EXIT_PATIENCE_S) -> int:
+        assert self.proc is not None
+        code = self.proc.wait(timeout=patience_s)
+        if self.report_path.exists():
+            self.report = json.loads(self.report_path.read_text())
+        return code
+
+    def kill(self) -> None:
+        if self.proc is not None and self.proc.poll() is None:
+            os.kill(self.proc.pid, signal.SIGKILL)
+            self.proc.wait()
+
+
+class Relay:
+    """tools/net/udp_relay.py in front of the server."""
+
+    def __init__(self, server_port: int, workdir: Path, delay_ms: float, jitter_ms: float,
+                 loss: float, seed: int = 1) -> None:
+        self.stats_path = workdir / f"relay-{seed}.json"
+        self.proc = subprocess.Popen(
+            [sys.executable, str(RELAY), "--server", f"127.0.0.1:{server_port}",
+             "--listen-port", "0", "--delay-ms", str(delay_ms), "--jitter-ms", str(jitter_ms),
+             "--loss", str(loss), "--seed", str(seed), "--max-seconds", "240",
+             "--stats", str(self.stats_path)],
+            stdout=subprocess.PIPE, text=True,
+        )
+        self.port = json.loads(self.proc.stdout.readline())["listen_port"]
+        self.stats: dict = {}
+
+    def stop(self) -> None:
+        if self.proc.poll() is None:
+            os.kill(self.proc.pid, signal.SIGTERM)
+        try:
+            self.proc.wait(timeout=20)
+        finally:
+            if self.proc.poll() is None:
+                os.kill(self.proc.pid, signal.SIGKILL)
+                self.proc.wait()
+            self.proc.stdout.close()
+        if self.stats_path.exists():
+            self.stats = json.loads(self.stats_path.read_text())
+
+
+@dataclass
+class Network:
+    delay_ms: float = 0.0
+    jitter_ms: float = 0.0
+    loss: float = 0.0
+
+    @property
+    def label(self) -> str:
+        return f"{self.delay_ms:g}ms+{self.jitter_ms:g}j/{self.loss * 100:g}%"
+
+    @property
+    def path_s(self) -> float:
+        """Worst one-way delay between two players through the relay (two legs when both
+        are clients)."""
+        return 2.0 * (self.delay_ms + self.jitter_ms) / 1000.0
+
+    @property
+    def round_trip_s(self) -> float:
+        """Worst client-to-client round trip through the relay (two legs each way)."""
+        return 4.0 * (self.delay_ms + self.jitter_ms) / 1000.0
+
+
+@contextmanager
+def workspace():
+    path = Path(tempfile.mkdtemp(prefix="pong-net-"))
+    try:
+        yield path
+    finally:
+        shutil.rmtree(path, ignore_errors=True)
+
+
+def run_match(workdir: Path, peers: int, network: Network, seconds: float,
+              host_args: tuple[str, ...] = (), client_args: tuple[tuple[str, ...], ...] = (),
+              dedicated: bool = False, on_running=None,
+              force_relay: bool = False) -> tuple[list[Peer], dict]:
+    """Starts a host (or a dedicated server) and the clients, through one relay when the
+    network is impaired, waits for all to exit; returns the peers (reports loaded) and the
+    relay's counts. [on_running](peers) runs once every client is connected."""
+    port = free_udp_port()
+    players = peers
+    # A peer quits by itself after its match's seconds, and in any case after a deadline.
+    common = ["--pong-net-autopilot", f"--pong-net-seconds={seconds}",
+              f"--pong-net-peers={players}", f"--pong-net-max-seconds={seconds + 25}"]
+    started: list[Peer] = []
+    relay: Relay | None = None
+    try:
+        if dedicated:
+            host = Peer("server", ["--server", f"--port={port}", *common, *host_args], workdir)
+        else:
+            host = Peer("host", ["--pong-net=host", f"--port={port}", "--name=host", *common,
+                                 *host_args], workdir)
+        host.start()
+        started.append(host)
+        assert host.wait_for_log("Hosting on port"), host.log()
+        impaired = network.delay_ms > 0 or network.jitter_ms > 0 or network.loss > 0
+        if impaired or force_relay:
+            relay = Relay(port, workdir, network.delay_ms, network.jitter_ms, network.loss)
+        target = relay.port if relay is not None else port
+        clients = players if dedicated else players - 1
+        for i in range(clients):
+            extra = client_args[i] if i < len(client_args) else ()
+            peer = Peer(f"client{i + 1}", ["--pong-net=join", f"--port={target}",
+                                           f"--name=client{i + 1}", *common, *extra], workdir)
+            peer.start()
+            started.append(peer)
+        if on_running is not None:
+            for peer in started[1:]:
+                peer.wait_for_log("Connected")
+            on_running(started)
+        codes = [peer.wait() for peer in started[1:]] + [host.wait()]
+        for peer, code in zip(started[1:] + [host], codes):
+            peer.report["exit_code"] = code
+    finally:
+        for peer in started:
+            peer.kill()
+        if relay is not None:
+            relay.stop()
+    return started, (relay.stats if relay is not None else {})
+
+
+# --- analysis of the reports ---
+
+
+def transfers(report: dict) -> list[tuple[int, int, int, int]]:
+    return [(t["epoch"], t["kind"], t["territory"], t["master"]) for t in report["transfers"]]
+
+
+def master_overlaps(reports: list[dict]) -> list[float]:
+    """Every stretch (s) during which two peers both believed they were the master."""
+    overlaps = []
+    for i, a in enumerate(reports):
+        for b in reports[i + 1:]:
+            for a0, a1 in a["master_intervals"]:
+                for b0, b1 in b["master_intervals"]:
+                    length = min(a1, b1) - max(a0, b0)
+                    if length > 0:
+                        overlaps.append(length)
+    return overlaps
+
+
+def _interpolate(samples: list[list[float]], times: list[float], t: float):
+    i = bisect.bisect_left(times, t)
+    if i <= 0 or i >= len(samples):
+        return None
+    a, b = samples[i - 1], samples[i]
+    if b[0] - a[0] > 0.05:
+        return None
+    u = (t - a[0]) / (b[0] - a[0])
+    return [a[k] + u * (b[k] - a[k]) for k in (2, 3, 4)]
+
+
+def divergences(reports: list[dict], after_serve_s: float = 0.0) -> list[float]:
+    """|ball(follower) - ball(master)| at the follower's samples, whoever is master then,
+    on the shared wall clock of this machine (metres). A serve puts the ball back in the
+    middle: no follower can know it before the message arrives, so the [after_serve_s]
+    after each serve (one path delay and a frame) are left out (served_windows counts them)."""
+    out = []
+    serves = [t["wall_s"] for r in reports for t in r["transfers"] if t["kind"] == 0]
+    for master in reports:
+        m_samples = master["samples"]
+        m_times = [s[0] for s in m_samples]
+        for follower in reports:
+            if follower is master:
+                continue
+            for s0, s1 in master["master_intervals"]:
+                for s in follower["samples"]:
+                    if not (s0 <= s[0] <= s1):
+                        continue
+                    if any(0.0 <= s[0] - t <= after_serve_s for t in serves):
+                        continue
+                    p = _interpolate(m_samples, m_times, s[0])
+                    if p is not None:
+                        out.append(math.dist(p, s[2:5]))
+    return out
+
+
+def handoff_gaps(reports: list[dict]) -> list[float]:
+    """Seconds without a master at each hand-off: from the old master's stop (its ball
+    crossed) to the new master's start (the server's transfer arrived)."""
+    gaps = []
+    starts = sorted(a for r in reports for a, _ in r["master_intervals"])
+    for r in reports:
+        for _, end in r["master_intervals"]:
+            later = [s for s in starts if s >= end]
+            if later and later[0] - end < 2.0:
+                gaps.append(later[0] - end)
+    return gaps
+
+
+def quantile(values: list[float], q: float) -> float:
+    if not values:
+        return 0.0
+    ordered = sorted(values)
+    return ordered[min(len(ordered) - 1, max(0, math.ceil(q * len(ordered)) - 1))]

@@ -1,0 +1,61 @@
+extends TestSuite
+## The network lobby on one machine: hosting lists the host in seat 1, ready-up is shown,
+## Start needs a second player, Leave closes the session, and a join to a port where
+## nobody listens fails with a message (no hang).
+
+const LOBBY_SCENE: PackedScene = preload("res://scenes/pong/net/pong_lobby.tscn")
+
+var _lobby: PongLobby = null
+
+
+func before_each() -> void:
+	_lobby = LOBBY_SCENE.instantiate() as PongLobby
+	add_child(_lobby)
+	await get_tree().process_frame
+
+
+func after_each() -> void:
+	if is_instance_valid(_lobby):
+		_lobby.queue_free()
+	await get_tree().process_frame
+	await get_tree().process_frame
+
+
+func _port() -> int:
+	return 47000 + randi() % 2000
+
+
+func test_hosting_lists_the_host_and_start_waits_for_a_second_player() -> void:
+	var net: PongNet = _lobby.net
+	assert_not_null(net)
+	assert_eq(net.get_path(), NodePath("/root/" + PongNet.NODE_NAME), "same path on every peer")
+	net.my_name = "Ada"
+	assert_eq(net.host(_port()), "")
+	assert_true(net.session.is_server)
+	assert_eq(net.players.size(), 1)
+	assert_eq(net.my_seat(), 0)
+	assert_true(_lobby._players.text.contains("Seat 1: Ada"), _lobby._players.text)
+	net.set_ready(true)
+	assert_true(_lobby._players.text.contains("(ready)"), _lobby._players.text)
+	assert_false(net.can_start(), "one player cannot start")
+	assert_false(net.start_match())
+	net.leave()
+	assert_false(net.session.is_open())
+	assert_eq(net.players.size(), 0)
+
+
+func test_joining_nobody_fails_with_a_message() -> void:
+	set_timeout(20.0)
+	var net: PongNet = _lobby.net
+	var failures: Array[String] = []
+	net.session.failed.connect(func(reason: String) -> void: failures.append(reason))
+	assert_eq(net.join("127.0.0.1", _port()), "")
+	var waited: float = 0.0
+	while failures.is_empty() and waited < 15.0:
+		await get_tree().create_timer(0.1).timeout
+		waited += 0.1
+	assert_eq(failures.size(), 1, "connection_failed came")
+	if failures.size() == 1:
+		assert_true(failures[0].contains("no answer from the server"), failures[0])
+	assert_true(_lobby._status.text.contains("no answer"), _lobby._status.text)
+	assert_false(net.session.is_open())
