@@ -79,7 +79,7 @@ func test_channels_are_distinct_and_the_stream_has_its_own() -> void:
 
 func test_the_timeout_cap_is_1_5_s_on_a_lan_and_grows_with_the_round_trip() -> void:
 	assert_eq(PongNetProtocol.timeout_max_ms(0.0), 1500)
-	assert_eq(PongNetProtocol.timeout_max_ms(10.0), 1560)
-	assert_eq(PongNetProtocol.timeout_max_ms(320.0), 3420, "150 ms each way")
+	assert_eq(PongNetProtocol.timeout_max_ms(10.0), 1700)
+	assert_eq(PongNetProtocol.timeout_max_ms(320.0), 7900, "150 ms each way")
 	assert_eq(PongNetProtocol.timeout_max_ms(5000.0), PongNetProtocol.TIMEOUT_CEILING_MS)
 	assert_eq(PongNetProtocol.timeout_max_ms(-3.0), 1500)

@@ -34,16 +34,21 @@ const TRANSFER_TAKEOVER: int = 2
 const TRANSFER_NAMES: Array[String] = ["serve", "handoff", "takeover"]
 
 ## ENet timeouts on every peer (FACTS §1.7: (8, 500, 1000) noticed a SIGKILLed peer in
-## 1.1 s; a 1 s cap dropped live peers on a 5 %-loss path, hence 1.5 s). Game-time values:
-## long frames (loading) must not trip them. The hard cap grows
-## with the round trip ([method timeout_max_ms]): on a slow lossy path a reliable packet
-## lost twice waits about 4.5 round trips for its third try, and must not end the game.
-const TIMEOUT_LIMIT: int = 8
+## 1.1 s on a LAN). ENet drops a peer when a reliable packet has been sent
+## log2(limit) + 1 times unacknowledged and the minimum has passed, or when it has waited the
+## hard cap. With a limit of 8 four tries were enough: on a 5 %-loss path (each try fails
+## about 10 % of the time, one leg or the other) one packet in ten thousand, so a lossy match
+## now and then ended live; 32 (ENet's default) needs six failed tries. The hard cap grows
+## with the round trip ([method timeout_max_ms]) so a slow lossy path gets five tries before
+## it: ENet doubles the wait after each try (1 + 2 + 4 + 8 = 15 retransmission timeouts of
+## about a round trip each for the fifth). On a LAN the cap stays near 1.5 s. Game-time
+## values: long frames (loading) must not trip them.
+const TIMEOUT_LIMIT: int = 32
 const TIMEOUT_MIN_MS: int = 500
 const TIMEOUT_MAX_MS: int = 1500
 ## Extra hard cap per millisecond of round trip, and the ceiling, ms.
-const TIMEOUT_PER_RTT: float = 6.0
-const TIMEOUT_CEILING_MS: int = 5000
+const TIMEOUT_PER_RTT: float = 20.0
+const TIMEOUT_CEILING_MS: int = 8000
 ## A client connecting to nobody gives up after a few seconds (FACTS §1.7: 3.5 s with a
 ## 2 s cap; 3 s here so a lossy path does not fail the handshake).
 const CONNECT_TIMEOUT_MIN_MS: int = 500

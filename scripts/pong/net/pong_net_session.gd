@@ -211,11 +211,9 @@ func _on_peer_disconnected(peer: int) -> void:
 
 
 func _on_connected() -> void:
-	_peer.get_peer(1).set_timeout(
-		PongNetProtocol.TIMEOUT_LIMIT,
-		PongNetProtocol.TIMEOUT_MIN_MS,
-		PongNetProtocol.TIMEOUT_MAX_MS
-	)
+	# From the round trip ENet assumes before it has measured one (500 ms): a fixed LAN cap
+	# here dropped a live server on a slow lossy path before the first retune.
+	_tune(1)
 	connected.emit()
 
 
