@@ -68,13 +68,16 @@ def _check_consistent(peers: list[Peer], network: Network, min_handoffs: int = 3
     # Never two masters longer than one round trip.
     overlaps = master_overlaps(reports)
     assert all(o <= network.round_trip_s + 0.05 for o in overlaps), overlaps
-    # The master streams at 60 Hz or more (loss aside): each follower took that many states.
+    # The master streams at 60 Hz or more: each follower took that many states, less what
+    # the path lost. Through a dedicated server a state crosses the relay twice (loss on
+    # each leg), and ENet drops an unreliable-ordered state that arrives after a newer one
+    # (the jitter reorders them): hence the floor's squared loss and 0.6.
     for follower in reports:
         others_master_s = sum(b - a for r in reports if r is not follower
                               for a, b in r["master_intervals"])
         if others_master_s > 2.0:
             rate = follower["states"] / others_master_s
-            assert rate >= 60.0 * (1.0 - network.loss) * 0.8, (rate, follower["peer"])
+            assert rate >= 60.0 * (1.0 - network.loss) ** 2 * 0.6, (rate, follower["peer"])
     # Health went the same way everywhere (the master's reliable messages).
     healths = {tuple(r["health"]) for r in reports}
     assert len(healths) == 1, healths
