@@ -151,10 +151,11 @@ def workspace():
 def run_match(workdir: Path, peers: int, network: Network, seconds: float,
               host_args: tuple[str, ...] = (), client_args: tuple[tuple[str, ...], ...] = (),
               dedicated: bool = False, on_running=None,
-              force_relay: bool = False) -> tuple[list[Peer], dict]:
+              force_relay: bool = False, seed: int = 1) -> tuple[list[Peer], dict]:
     """Starts a host (or a dedicated server) and the clients, through one relay when the
     network is impaired, waits for all to exit; returns the peers (reports loaded) and the
-    relay's counts. [on_running](peers) runs once every client is connected."""
+    relay's counts. [on_running](peers) runs once every client is connected; [seed] picks
+    the relay's drop and delay sequence."""
     port = free_udp_port()
     players = peers
     # A peer quits by itself after its match's seconds, and in any case after a deadline.
@@ -173,7 +174,7 @@ def run_match(workdir: Path, peers: int, network: Network, seconds: float,
         assert host.wait_for_log("Hosting on port"), host.log()
         impaired = network.delay_ms > 0 or network.jitter_ms > 0 or network.loss > 0
         if impaired or force_relay:
-            relay = Relay(port, workdir, network.delay_ms, network.jitter_ms, network.loss)
+            relay = Relay(port, workdir, network.delay_ms, network.jitter_ms, network.loss, seed)
         target = relay.port if relay is not None else port
         clients = players if dedicated else players - 1
         for i in range(clients):

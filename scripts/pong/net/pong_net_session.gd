@@ -134,7 +134,7 @@ func _tune(id: int) -> void:
 func _install() -> void:
 	var api: SceneMultiplayer = _api()
 	api.auth_callback = _on_auth
-	api.auth_timeout = 3.0
+	api.auth_timeout = PongNetProtocol.AUTH_TIMEOUT_S
 	for pair: Array in _connections(api):
 		var sig: Signal = pair[0]
 		var handler: Callable = pair[1]
@@ -160,6 +160,9 @@ func _api() -> SceneMultiplayer:
 
 
 func _on_authenticating(peer: int) -> void:
+	# Somebody answered: from here the cap follows the round trip (the short connect cap
+	# dropped lossy handshakes, and a server's pending peers kept ENet's 30 s).
+	_tune(peer)
 	_api().send_auth(peer, version.to_utf8_buffer())
 
 
