@@ -186,7 +186,7 @@ test-net: import
 ## bench-net: networked Pong's bytes/s, hand-off gap, divergence and corrections for each
 ## network setting (numbers, not tests; JSON in .bench/net.json)
 bench-net: import
-	@tools/analysis/run.sh tests/net/bench_net.py --json .bench/net.json
+	@tools/analysis/run.sh tests/net/bench_net.py --peers 2 4 --json .bench/net.json
 
 ## clean: build outputs (keeps the provisioned engine and Python tools)
 clean:

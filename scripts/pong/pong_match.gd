@@ -207,16 +207,21 @@ func advance(dt: float) -> void:
 
 ## Serves now toward the referee's receiver.
 func serve() -> void:
-	for skip: int in court.players:
-		if not rules.is_out(referee.receiver):
-			break
-		referee.receiver = (referee.receiver + 1) % court.players
-	var receiver: int = referee.receiver
+	var receiver: int = next_receiver()
 	var ball: PongReferee.Serve = referee.make_serve(
 		court, controllers[receiver].intent.avatar, beginner
 	)
 	Haptics.pong.set_ball(ball.position, ball.velocity)
 	served.emit(receiver)
+
+
+## The referee's receiver, moved on past the players who are out.
+func next_receiver() -> int:
+	for skip: int in court.players:
+		if not rules.is_out(referee.receiver):
+			break
+		referee.receiver = (referee.receiver + 1) % court.players
+	return referee.receiver
 
 
 ## Simulated seconds per wall second since the start.

@@ -13,8 +13,8 @@ import argparse
 import json
 from pathlib import Path
 
-from net_harness import (ROOT, Network, divergences, handoff_gaps, quantile, run_match,
-                         transfers, workspace)
+from net_harness import (ROOT, Network, detection_s, divergences, handoff_gaps, killer,
+                         quantile, run_match, transfers, workspace)
 
 SETTINGS = {
     "0ms": Network(0, 0, 0.0),
@@ -53,6 +53,15 @@ def measure(peers: int, label: str, network: Network, seconds: float) -> dict:
     return row
 
 
+def detection(label: str, network: Network) -> dict:
+    """Seconds from a client's SIGKILL to the host's notice (ENet's timeouts)."""
+    killed_at: list[float] = []
+    with workspace() as work:
+        started, _ = run_match(work, 2, network, 10, on_running=killer(4.0, 1, killed_at),
+                               force_relay=True)
+    return {"network": label, "detection_s": detection_s(started[0].report, killed_at[0])}
+
+
 def main() -> None:
     parser = argparse.ArgumentParser()
     parser.add_argument("--seconds", type=float, default=12.0)
@@ -70,8 +79,14 @@ def main() -> None:
                   f"{row['divergence_p50_m']:.3f}/{row['divergence_p99_m']:.3f} m, corrections "
                   f"p50/p99/max {row['correction_p50_m']:.3f}/{row['correction_p99_m']:.3f}/"
                   f"{row['correction_max_m']:.3f} m, snaps {row['snaps']}", flush=True)
+    kills = []
+    for label in ("0ms", "50ms+10j/5%"):
+        kills.append(detection(label, SETTINGS[label]))
+        seconds = kills[-1]["detection_s"]
+        shown = "not noticed" if seconds is None else f"{seconds:.2f} s"
+        print(f"a killed client noticed by the host, {label:>13}: {shown}", flush=True)
     args.json.parent.mkdir(parents=True, exist_ok=True)
-    args.json.write_text(json.dumps({"runs": rows}, indent=1))
+    args.json.write_text(json.dumps({"runs": rows, "dead_peer": kills}, indent=1))
 
 
 if __name__ == "__main__":

@@ -198,6 +198,24 @@ def run_match(workdir: Path, peers: int, network: Network, seconds: float,
     return started, (relay.stats if relay is not None else {})
 
 
+def killer(after_s: float, index: int, killed_at: list[float]):
+    """An on_running hook for run_match: SIGKILLs peer [index] [after_s] into the match and
+    appends the wall time to [killed_at]."""
+
+    def kill(peers: list[Peer]) -> None:
+        time.sleep(after_s)
+        killed_at.append(time.time())
+        os.kill(peers[index].proc.pid, signal.SIGKILL)
+
+    return kill
+
+
+def detection_s(host: dict, killed_at: float) -> float | None:
+    """Seconds from the kill to the server's notice (None: not noticed)."""
+    left = host.get("extra", {}).get("peers_left", [])
+    return left[0]["wall_s"] - killed_at if left else None
+
+
 # --- analysis of the reports ---
 
 

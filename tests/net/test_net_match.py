@@ -11,14 +11,10 @@ within CONTACT_TOLERANCE at every latency.
 
 from __future__ import annotations
 
-import os
-import signal
-import time
-
 import pytest
 
-from net_harness import (Network, Peer, divergences, master_overlaps, quantile, run_match,
-                         transfers, workspace)
+from net_harness import (Network, Peer, detection_s, divergences, killer, master_overlaps,
+                         quantile, run_match, transfers, workspace)
 
 NETWORKS = {
     "lan": Network(0, 0, 0.0),
@@ -31,6 +27,10 @@ NETWORKS = {
 # plus that separation, with half as much again for the stream and frame periods at both
 # ends, the relay's timers and the wall-clock alignment on a loaded machine.
 LAN_DIVERGENCE_P99_M = 0.3
+# Four peers share this machine's two cores: a follower may wait a time slice (~30 ms) for
+# a core before it renders its ball, while the master's flies on (measured LAN p99 0.17 m
+# on a quiet machine, 0.32 m with a build running beside it).
+FOUR_PLAYER_MARGIN_M = 2.0 * 9.0 * 0.03
 MAX_BALL_SPEED_M_PER_S = 9.0
 DIVERGENCE_P99_M = {
     label: LAN_DIVERGENCE_P99_M
@@ -55,6 +55,9 @@ def _logs(peers: list[Peer]) -> str:
 
 def _check_consistent(peers: list[Peer], network: Network, min_handoffs: int = 3) -> None:
     reports = [p.report for p in peers]
+    errors = [f"{p.name}: {line}" for p in peers for line in p.log().splitlines()
+              if line.startswith("ERROR:")]
+    assert not errors, "engine errors:\n" + "\n".join(errors[:10]) + "\n" + _logs(peers)
     for peer in peers:
         assert peer.report.get("exit_code") == 0, _logs(peers)
         dropped = [line for line in peer.log().splitlines() if "dropped" in line][:5]
@@ -71,30 +74,45 @@ def _check_consistent(peers: list[Peer], network: Network, min_handoffs: int = 3
     # Never two masters longer than one round trip.
     overlaps = master_overlaps(reports)
     assert all(o <= network.round_trip_s + 0.05 for o in overlaps), overlaps
-    # The master streams at 60 Hz or more: each follower took that many states, less what
-    # the path lost. Through a dedicated server a state crosses the relay twice (loss on
-    # each leg), and ENet drops an unreliable-ordered state that arrives after a newer one
-    # (the jitter reorders them): hence the floor's squared loss and 0.6.
+    # Each follower took the states the masters sent, less what the path lost: between two
+    # clients a state crosses the relay twice (loss on each leg), and ENet drops an
+    # unreliable-ordered state that arrives after a newer one (the jitter reorders them):
+    # hence the squared loss and 0.6. With two players (a core each here) the masters
+    # stream at 60 Hz or more; four peers share two cores, and send on each new frame.
+    players = len([r for r in reports if r["seat"] >= 0])
+    # Four processes on two cores send in bursts after each wait for a core, and the relay's
+    # jitter (independent per datagram) reorders a burst: ENet then drops the older states
+    # (taken here: 100 % on a LAN and at 50 ms without jitter, 37-72 % at 50 + U(0, 10) ms).
+    kept = (1.0 - network.loss) ** 2 * (0.6 if players == 2 else 0.25)
     for follower in reports:
-        others_master_s = sum(b - a for r in reports if r is not follower
-                              for a, b in r["master_intervals"])
-        if others_master_s > 2.0:
+        others = [r for r in reports if r is not follower]
+        sent = sum(r["sent"] for r in others)
+        assert follower["states"] >= sent * kept, (follower["states"], sent, follower["peer"])
+        others_master_s = sum(b - a for r in others for a, b in r["master_intervals"])
+        if players == 2 and others_master_s > 2.0:
             rate = follower["states"] / others_master_s
-            assert rate >= 60.0 * (1.0 - network.loss) ** 2 * 0.6, (rate, follower["peer"])
+            assert rate >= 60.0 * kept, (rate, follower["peer"])
     # Health went the same way everywhere (the master's reliable messages).
     healths = {tuple(r["health"]) for r in reports}
     assert len(healths) == 1, healths
 
 
+@pytest.mark.parametrize("players", [2, 4])
 @pytest.mark.parametrize("label", list(NETWORKS))
-def test_two_peers_rally(label: str) -> None:
+def test_rally(label: str, players: int) -> None:
     network = NETWORKS[label]
     with workspace() as work:
-        peers, relay = run_match(work, 2, network, RALLY_SECONDS)
+        peers, relay = run_match(work, players, network, RALLY_SECONDS)
         _check_consistent(peers, network)
-        spread = divergences([p.report for p in peers], network.path_s + 0.1)
+        reports = [p.report for p in peers]
+        # Four players: four territories; the ball went through three of them at least.
+        assert all(len(r["health"]) == players for r in reports), [r["health"] for r in reports]
+        masters = {t[3] for t in transfers(reports[0])}
+        assert len(masters) >= min(players, 3), (masters, transfers(reports[0]))
+        spread = divergences(reports, network.path_s + 0.1)
         assert len(spread) > 200
-        assert quantile(spread, 0.99) < DIVERGENCE_P99_M[label], quantile(spread, 0.99)
+        bound = DIVERGENCE_P99_M[label] + (FOUR_PLAYER_MARGIN_M if players == 4 else 0.0)
+        assert quantile(spread, 0.99) < bound, quantile(spread, 0.99)
         if network.loss > 0:
             assert relay["up"]["dropped"] > 0 and relay["down"]["reordered"] > 0, relay
 
@@ -143,19 +161,13 @@ def test_contact_profile_does_not_depend_on_latency() -> None:
 def test_killed_peer_is_taken_over_by_the_computer() -> None:
     network = NETWORKS["50ms"]
     killed_at: list[float] = []
-
-    def kill_client(peers: list[Peer]) -> None:
-        time.sleep(4.0)
-        killed_at.append(time.time())
-        os.kill(peers[1].proc.pid, signal.SIGKILL)
-
     with workspace() as work:
-        peers, _ = run_match(work, 2, network, 12, on_running=kill_client)
+        peers, _ = run_match(work, 2, network, 12, on_running=killer(4.0, 1, killed_at))
         host = peers[0].report
         assert host["exit_code"] == 0, peers[0].log()
         left = host["extra"].get("peers_left", [])
         assert len(left) == 1 and left[0]["seats"] == [1], left
-        assert 0.0 < left[0]["wall_s"] - killed_at[0] < DETECTION_BOUND_S, left
+        assert 0.0 < detection_s(host, killed_at[0]) < DETECTION_BOUND_S, left
         # The computer took the seat; the host kept playing and is the only master since
         # (a takeover if the ball was with the peer, then every transfer is to the host).
         assert host["controllers"] == ["computer", "computer"], host["controllers"]

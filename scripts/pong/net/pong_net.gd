@@ -19,7 +19,8 @@ signal match_ended(winner: int, why: String)
 const NODE_NAME: String = "PongNet"
 const PONG_SCENE: PackedScene = preload("res://scenes/pong/pong.tscn")
 
-## Seats of a match (territories).
+## Seats of a match (territories): 2, or 4 on a square court. The server's choice, set
+## before [method host]; a client takes the server's from the lobby.
 var seats: int = 2
 var my_name: String = "Player"
 ## A dedicated server: it plays no seat and shows nothing.
@@ -71,6 +72,8 @@ func host(port: int) -> String:
 		status_changed.emit(error)
 		return error
 	players.clear()
+	if not PongNetProtocol.SEAT_COUNTS.has(seats):
+		seats = PongNetProtocol.SEAT_COUNTS[0]
 	if not dedicated:
 		players[1] = {"name": my_name, "seat": 0, "ready": false}
 	status_changed.emit("Hosting on port %d%s" % [port, " (dedicated server)" if dedicated else ""])
@@ -98,8 +101,8 @@ func leave() -> void:
 func set_ready(is_ready: bool) -> void:
 	if session.is_server:
 		_on_ready(1, is_ready)
-	elif session.is_open():
-		_ready_up.rpc_id(1, is_ready)
+	elif session.is_open() and multiplayer.get_peers().has(PongNetAuthority.SERVER_ID):
+		_ready_up.rpc_id(PongNetAuthority.SERVER_ID, is_ready)
 
 
 ## Server: whether a match may start now (two players or more, all ready, none running).
@@ -208,6 +211,7 @@ func _begin(owners: PackedInt64Array, health: int) -> void:
 	var me: int = multiplayer.get_unique_id()
 	screen = PONG_SCENE.instantiate() as PongScreen
 	screen.stepped = stepped
+	screen.players = seats
 	screen.start_health = health
 	screen.process_mode = Node.PROCESS_MODE_PAUSABLE
 	add_child(screen)
@@ -294,7 +298,7 @@ func _broadcast_lobby() -> void:
 		var entry: Dictionary = players[peer]
 		rows.append([peer, entry["name"], entry["seat"], entry["ready"]])
 	if session.is_open():
-		_lobby.rpc(rows)
+		_lobby.rpc(rows, seats)
 	lobby_changed.emit()
 
 
@@ -316,7 +320,7 @@ func _free_seat() -> int:
 	return -1
 
 
-@rpc("any_peer", "call_remote", "reliable", PongNetProtocol.CHANNEL_RELIABLE)
+@rpc("any_peer", "call_remote", "reliable", PongNetProtocol.CHANNEL_HANDSHAKE)
 func _hello(player_name: Variant) -> void:
 	var sender: int = multiplayer.get_remote_sender_id()
 	if not session.is_server:
@@ -343,10 +347,15 @@ func _ready_up(is_ready: Variant) -> void:
 
 
 @rpc("any_peer", "call_remote", "reliable", PongNetProtocol.CHANNEL_RELIABLE)
-func _lobby(rows: Variant) -> void:
+func _lobby(rows: Variant, seat_count: Variant) -> void:
 	var sender: int = multiplayer.get_remote_sender_id()
 	if sender != PongNetAuthority.SERVER_ID or typeof(rows) != TYPE_ARRAY:
 		printerr("PongNet: dropped lobby from peer %d" % sender)
+		return
+	if typeof(seat_count) != TYPE_INT or not PongNetProtocol.SEAT_COUNTS.has(seat_count):
+		printerr(
+			"PongNet: dropped lobby from peer %d: %s seats" % [sender, str(seat_count).left(16)]
+		)
 		return
 	var table: Dictionary[int, Dictionary] = {}
 	var list: Array = rows
@@ -358,7 +367,11 @@ func _lobby(rows: Variant) -> void:
 		if typeof(r[3]) != TYPE_BOOL or not PongNetProtocol.check_name(r[1]).is_empty():
 			printerr("PongNet: dropped a malformed lobby row from peer %d" % sender)
 			return
+		if r[2] < 0 or r[2] >= seat_count:
+			printerr("PongNet: dropped a lobby row with seat %d from peer %d" % [r[2], sender])
+			return
 		table[r[0]] = {"name": r[1], "seat": r[2], "ready": r[3]}
+	seats = seat_count
 	players = table
 	lobby_changed.emit()
 

@@ -13,6 +13,9 @@ var smoother: PongNetSmoother = PongNetSmoother.new()
 ## The servo is stepped by the game (commands land exactly at the next step); else its
 ## thread runs and a command lands about a tick later.
 var stepped: bool = false
+## The court the ball stays in: a blend or an extrapolation can end past a wall or under the
+## floor (a correction pointing down as the ball lands), where the servo refuses the ball.
+var court: PongCourt = null
 
 var _commanded: Array[Vector3] = []
 var _commanded_time: float = 0.0
@@ -36,9 +39,12 @@ func local() -> Array[Vector3]:
 
 ## Puts the ball there (a serve, a new master's start).
 func put(position: Vector3, velocity: Vector3, spin: Vector3) -> void:
+	var inside: Vector3 = position
+	if court != null:
+		inside = court.clamp_inside(position, court.ball_radius)
 	_commanded_time = Haptics.pong.get_state().get("time_s", 0.0)
-	_commanded = [position, velocity, spin]
-	Haptics.pong.set_ball(position, velocity, spin)
+	_commanded = [inside, velocity, spin]
+	Haptics.pong.set_ball(inside, velocity, spin)
 
 
 ## The master's ball, carried to now, is here: take its velocity and spin, blend toward

@@ -3,6 +3,8 @@ extends Node
 ## Networked Pong from the command line (after [code]--[/code]):
 ## [br][code]--server [--port=P][/code]: a dedicated server; shows nothing, starts a match
 ## when two players or more are ready, and again for each rematch.
+## [br][code]--pong-net-seats=2|4[/code] (a server or host): the court's seats (default: 4
+## when [code]--pong-net-peers[/code] is more than 2); empty seats are computer players.
 ## [br][code]--pong-net=host|join|local --port=P --address=A --name=N[/code]: a player
 ## without the menu; [code]local[/code] plays the same script without a network (the
 ## reference of the contact test).
@@ -102,6 +104,11 @@ func _launch() -> void:
 	net.autopilot = options.has("pong-net-autopilot") or net.dedicated
 	net.stepped = DisplayServer.get_name() == "headless" and not options.has("pong-net-realtime")
 	net.start_health = _option("pong-net-health", str(PongRules.DEFAULT_START_HEALTH)).to_int()
+	var seats_default: int = PongNetProtocol.MAX_SEATS if peers_wanted > 2 else 2
+	net.seats = _option("pong-net-seats", str(seats_default)).to_int()
+	if not PongNetProtocol.SEAT_COUNTS.has(net.seats):
+		_finish(2, "--pong-net-seats must be one of %s" % str(PongNetProtocol.SEAT_COUNTS))
+		return
 	net.session.version = _option("pong-net-version", PongNetProtocol.VERSION)
 	net.status_changed.connect(func(text: String) -> void: print("PongNet: %s" % text))
 	net.session.failed.connect(func(_reason: String) -> void: _finish(2, "failed"))

@@ -64,6 +64,7 @@ func begin(p_match: PongMatch, p_authority: PongNetAuthority, seats: PackedInt32
 	match_node = p_match
 	authority = p_authority
 	local_seats = seats
+	ball.court = match_node.court
 	_predictor = PongPredictor.new(match_node.court)
 	match_node.event_seen.connect(_on_event)
 	match_node.match_over.connect(_on_match_over)
@@ -106,6 +107,7 @@ func frame(delta: float) -> void:
 	if authority.is_master() and settled and due:
 		_last_sent_time = snapshot.time_s
 		_seq += 1
+		report.sent += 1
 		send_all(
 			&"_ball", [authority.epoch, _seq, snapshot.time_s] + _ball_of(snapshot) + [_my_leg_ms()]
 		)
@@ -138,14 +140,14 @@ func _referee(sim_dt: float) -> void:
 	var rules: PongRules = match_node.rules
 	if rules.is_over() or not match_node.referee.update(sim_dt, match_node.snapshot.ball_velocity):
 		return
-	var receiver: int = match_node.referee.receiver
+	var receiver: int = match_node.next_receiver()
 	var aim: Vector3 = match_node.avatar_of(receiver)
 	if serve_aim.is_valid():
 		aim = serve_aim.call(receiver, aim)
 	var serve: PongReferee.Serve = match_node.referee.make_serve(
 		match_node.court, aim, match_node.beginner
 	)
-	var territory: int = PongCourt.territory_of(serve.position)
+	var territory: int = match_node.court.territory_at(serve.position)
 	issue(
 		PongNetProtocol.TRANSFER_SERVE, territory, serve.position, serve.velocity, Vector3.ZERO, 0
 	)
@@ -171,7 +173,7 @@ func _hand_off(snapshot: PongSnapshot) -> void:
 	if authority.my_id == PongNetAuthority.SERVER_ID:
 		callv(&"_on_request", [authority.my_id] + args)
 	else:
-		callv(&"rpc_id", [PongNetAuthority.SERVER_ID, &"_request"] + args)
+		send_to(PongNetAuthority.SERVER_ID, &"_request", args)
 
 
 func _ball_of(snapshot: PongSnapshot) -> Array:

@@ -11,11 +11,21 @@ extends RefCounted
 ## Sent and compared at connect (auth): peers of another protocol version are refused.
 const VERSION: String = "hbp-net-1"
 const DEFAULT_PORT: int = 7420
+## The client's first message (its hello) goes on the channel of the version check. Godot
+## 4.6 admits a client once each side has sent the other its "auth complete" on channel 0,
+## and drops (with an engine error) anything else the client sends before its own "complete"
+## has arrived: when that packet was lost and ENet was resending it, a hello on another
+## channel overtook it and was thrown away, and the client never joined (a CI run, and one
+## run in three of four peers at 150 ms and 5 % loss here). On channel 0 ENet delivers it
+## after the "complete".
+const CHANNEL_HANDSHAKE: int = 0
 const CHANNEL_BALL: int = 1
 const CHANNEL_POSE: int = 2
 const CHANNEL_RELIABLE: int = 3
 ## Seats (territories) a match may have.
 const MAX_SEATS: int = 4
+## The courts a match can have: two players, or four on a square court.
+const SEAT_COUNTS: Array[int] = [2, MAX_SEATS]
 const MAX_NAME_LENGTH: int = 24
 ## Longest auth payload accepted, bytes (a version string).
 const MAX_AUTH_BYTES: int = 64
@@ -53,6 +63,14 @@ const TIMEOUT_CEILING_MS: int = 8000
 ## 2 s cap; 3 s here so a lossy path does not fail the handshake).
 const CONNECT_TIMEOUT_MIN_MS: int = 500
 const CONNECT_TIMEOUT_MAX_MS: int = 3000
+## ENet's packet throttle drops unreliable packets at the sender whenever a round trip
+## comes in above the last one by twice its variance, which a jittery path does all the
+## time: the ball and pose streams (a few kB/s) lost a third or more of their states to it
+## with 10 ms of jitter. A deceleration of 0 keeps the throttle open; reliable traffic is
+## not throttled either way (ENet's defaults: 5000 ms, 2, 2).
+const THROTTLE_INTERVAL_MS: int = 5000
+const THROTTLE_ACCELERATION: int = 2
+const THROTTLE_DECELERATION: int = 0
 ## Seconds a connected peer has to pass the version check. The exchange starts from ENet's
 ## guess of a 500 ms round trip and doubles its wait after each lost try, so on a slow lossy
 ## path it takes several seconds: Godot's default of 3 s refused 3 connections in 4 at

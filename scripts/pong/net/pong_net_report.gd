@@ -9,7 +9,8 @@ const SAMPLE_INTERVAL_S: float = 0.01
 
 var peer: int = 0
 var winner: int = -1
-## Ball states taken, stale ones dropped, poses taken.
+## Ball states sent (as master), taken, stale ones dropped, poses taken.
+var sent: int = 0
 var states: int = 0
 var late: int = 0
 var poses: int = 0
@@ -77,8 +78,9 @@ func to_dict(smoother: PongNetSmoother, authority: PongNetAuthority) -> Dictiona
 			all_refused["authority: " + key] = authority.refusals[key]
 	return {
 		"peer": peer,
-		"seconds": now() - _started,
+		"seconds": now() - _started if _started > 0.0 else 0.0,
 		"winner": winner,
+		"sent": sent,
 		"states": states,
 		"late": late,
 		"poses": poses,

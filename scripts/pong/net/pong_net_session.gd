@@ -129,6 +129,11 @@ func _tune(id: int) -> void:
 		PongNetProtocol.TIMEOUT_MIN_MS,
 		PongNetProtocol.timeout_max_ms(rtt)
 	)
+	packet_peer.throttle_configure(
+		PongNetProtocol.THROTTLE_INTERVAL_MS,
+		PongNetProtocol.THROTTLE_ACCELERATION,
+		PongNetProtocol.THROTTLE_DECELERATION
+	)
 
 
 func _install() -> void:

@@ -15,6 +15,15 @@ func send_all(method: StringName, args: Array) -> void:
 		callv(&"rpc", [method] + args)
 
 
+## Sends [param method] with [param args] to [param peer] while it is connected (a server
+## that just left is no longer one of [method MultiplayerAPI.get_peers]: the engine would
+## log an error).
+func send_to(peer: int, method: StringName, args: Array) -> void:
+	if multiplayer.has_multiplayer_peer() and session.is_open():
+		if multiplayer.get_peers().has(peer):
+			callv(&"rpc_id", [peer, method] + args)
+
+
 @rpc("any_peer", "call_remote", "unreliable_ordered", PongNetProtocol.CHANNEL_BALL)
 func _ball(
 	epoch: Variant,
