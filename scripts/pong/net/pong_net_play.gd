@@ -57,6 +57,10 @@ var _owe_s: float = 0.0
 var _last_now: float = 0.0
 var _last_centers: Dictionary[int, Vector3] = {}
 var _running: bool = false
+## The newest state taken since the last frame, carried to now: [position, velocity, spin].
+## A stalled peer takes dozens at once; only the newest becomes a command to the servo
+## (whose queue holds 64).
+var _newest: Array[Vector3] = []
 
 
 ## Starts following [param p_match] (already started) with [param p_authority].
@@ -72,6 +76,7 @@ func begin(p_match: PongMatch, p_authority: PongNetAuthority, seats: PackedInt32
 	# The servo's clock may have started over with the match.
 	_last_sent_time = -INF
 	_last_pose_time = -INF
+	_newest = []
 	_running = true
 
 
@@ -88,6 +93,9 @@ func is_running() -> bool:
 func frame(delta: float) -> void:
 	if not _running:
 		return
+	if not _newest.is_empty() and not authority.is_master():
+		ball.correct(_newest[0], _newest[1], _newest[2])
+	_newest = []
 	if stepped:
 		_owe_s += delta
 		var chunks: int = mini(floori(_owe_s / CHUNK_S), max_chunks_per_frame)
@@ -240,7 +248,7 @@ func _on_ball(
 	var age: float = _clock_of(sender, leg).observe(_local_now_s(), sent_at)
 	report.ages.append(age)
 	var target: Array[Vector3] = PongNetSmoother.extrapolate(_predictor, p, v, _gravity(), age)
-	ball.correct(target[0], target[1], w)
+	_newest = [target[0], target[1], w]
 
 
 func _on_pose(
@@ -346,6 +354,7 @@ func _on_transfer(
 		_reject(sender, "transfer", reason)
 		return
 	report.transfer(authority.history[-1])
+	_newest = []
 	var state: Array[Vector3] = [position, velocity, spin]
 	var sent_age_ms: int = age_ms
 	var age: float = (sent_age_ms + _my_leg_ms()) / 1000.0
