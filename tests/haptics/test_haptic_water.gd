@@ -11,7 +11,7 @@ var water: HapticWater = null
 
 func before_each() -> void:
 	world = Node2D.new()
-	water = HapticWater.new()
+	water = _make_water()
 	water.drag_coefficient = 0.7
 	water.inertia_force = 0.3
 	water.add_child(_box(Vector2(800.0, BOTTOM_Y - SURFACE_Y)))
@@ -22,6 +22,11 @@ func before_each() -> void:
 	bottom.position = Vector2(400.0, BOTTOM_Y + 20.0)
 	world.add_child(bottom)
 	add_child_autofree(world)
+
+
+## The water under test (a suite that extends this one tests its own kind of water).
+func _make_water() -> HapticWater:
+	return HapticWater.new()
 
 
 func _box(size: Vector2) -> CollisionShape2D:

@@ -8,7 +8,8 @@ extends Area2D
 ## [br][br]
 ## The probe reads any [Area2D] with [code]drag_coefficient[/code] and
 ## [code]inertia_force[/code] properties as water; this one adds buoyancy. Use the area's
-## own [signal Area2D.body_entered] and [signal Area2D.body_exited] for splashes.
+## own [signal Area2D.body_entered] and [signal Area2D.body_exited] for splashes; a script
+## that extends this one can override [method _on_lift] to see each body's lift.
 
 ## Drag coefficient c in F = −c·v, newtons per metre per second of the body's velocity.
 @export_range(0.0, 100.0, 0.01, "suffix:N·s/m") var drag_coefficient: float = 0.8
@@ -41,18 +42,31 @@ func get_surface_y() -> float:
 	return global_position.y
 
 
+## Buoyant force on [param body] right now as a fraction of its weight: the submerged
+## fraction of its first shape's bounding box × [member density] / the body's density (0 when
+## dry, or when [member density] is 0).
+func buoyancy_of(body: RigidBody2D) -> float:
+	var box: Rect2 = _bounds(body)
+	if density <= 0.0 or box.size.y <= 0.0:
+		return 0.0
+	var submerged: float = clampf((box.end.y - get_surface_y()) / box.size.y, 0.0, 1.0)
+	return submerged * density / _density_of(body)
+
+
 func _physics_process(_delta: float) -> void:
-	if density <= 0.0:
-		return
-	var surface: float = get_surface_y()
 	for body: RigidBody2D in _floating:
-		var box: Rect2 = _bounds(body)
-		if body.freeze or box.size.y <= 0.0:
+		if body.freeze:
 			continue
-		var submerged: float = clampf((box.end.y - surface) / box.size.y, 0.0, 1.0)
-		var lift: float = submerged * density / _density_of(body)
-		var pull: Vector2 = body.get_gravity()
-		body.apply_central_force(-pull * body.mass * body.gravity_scale * lift)
+		var lift: float = buoyancy_of(body)
+		_on_lift(body, lift)
+		if lift > 0.0:
+			body.apply_central_force(-body.get_gravity() * body.mass * body.gravity_scale * lift)
+
+
+## Called each physics tick for each unfrozen rigid body inside with its [param lift] (as
+## in [method buoyancy_of]), before the force is applied. Does nothing here.
+func _on_lift(_body: RigidBody2D, _lift: float) -> void:
+	pass
 
 
 func _on_body_entered(body: Node2D) -> void:
