@@ -30,6 +30,7 @@ void HandEffects::clear() {
 	for (Slot &slot : slots_) {
 		slot = Slot{};
 	}
+	remote_work_j_ = 0.0;
 }
 
 void HandEffects::start(const EffectOrder &p_order, const Vec3 &p_self_m) {
@@ -105,7 +106,13 @@ Vec3 HandEffects::advance(double p_dt_s, const Vec3 &p_position_m, const Vec3 &p
 		}
 		const double gain = effect_gain(slot.elapsed_s, slot.order.duration_s, slot.order.ramp_s);
 		const Vec3 f = force(slot, gain, p_position_m, p_velocity_m_per_s);
-		total += remote ? keep_passive(slot, f, p_velocity_m_per_s, p_dt_s) : f;
+		if (remote) {
+			const Vec3 passive = keep_passive(slot, f, p_velocity_m_per_s, p_dt_s);
+			remote_work_j_ += dot(passive, p_velocity_m_per_s) * p_dt_s;
+			total += passive;
+		} else {
+			total += f;
+		}
 		slot.elapsed_s += p_dt_s;
 		if (slot.elapsed_s >= slot.order.duration_s) {
 			slot = Slot{};

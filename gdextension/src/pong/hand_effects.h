@@ -93,6 +93,11 @@ public:
 	double remote_energy_j() const { return slots_[static_cast<size_t>(PongEffectKind::REMOTE)].energy_j; }
 	// REMOTE's low-passed target, device space (the spring's other end).
 	Vec3 remote_target_m() const { return slots_[static_cast<size_t>(PongEffectKind::REMOTE)].target_m; }
+	// The energy REMOTE has delivered to the hand since the last clear(), J: the sum of
+	// F . v dt over its ticks, F as advance() returned it (after the passivity rule), v the
+	// device velocity it was given. Net: work the hand did against the pull counts negative.
+	// With the passivity rule on it never exceeds the allowance of the effects started.
+	double remote_work_j() const { return remote_work_j_; }
 
 private:
 	struct Slot {
@@ -115,6 +120,7 @@ private:
 	double remote_max_force_n_ = 0.0;
 	double remote_max_extrapolation_s_ = 0.0;
 	bool remote_passivity_ = true;
+	double remote_work_j_ = 0.0;
 };
 
 } // namespace haptics

@@ -6,7 +6,10 @@
 // same run without the passivity rule must not (so these tests can fail).
 // A one-way case: an owner that moves then stops, 200 ms late, a victim that settles.
 
+#include "devices/simulated_device.h"
 #include "pong/hand_effects.h"
+#include "pong/pong_sim.h"
+#include "pong/pong_test_support.h"
 
 #include <doctest/doctest.h>
 
@@ -19,6 +22,7 @@
 #include <string>
 
 using namespace haptics;
+using namespace haptics::test;
 
 namespace {
 
@@ -269,4 +273,105 @@ TEST_CASE("pong remote latency: a victim follows an owner 200 ms late, and settl
 	// its damping).
 	const Vec3 resting = mirror_left_right(owner.position);
 	CHECK(length(victim.position - resting) < 0.01);
+}
+
+namespace {
+
+struct WorkResult {
+	double counted_j = 0.0; // HandEffects::remote_work_j at the end.
+	double summed_j = 0.0; // The same integral summed here from the forces returned.
+	double peak_j = 0.0; // The largest running value of the integral.
+	double hand_travel_m = 0.0; // The stylus's largest distance from where it started.
+	double allowance_j = 0.0;
+};
+
+// The mine's whole effect (the configured duration and ramps) on the simulated device's hand
+// (the default device: a stylus held by a spring-damper hand at rest at the centre), the
+// owner's stylus swinging 40 mm at 1.5 Hz and arriving p_one_way_s late.
+WorkResult run_on_simulated_hand(bool p_passivity, double p_one_way_s) {
+	PongConfig config;
+	config.remote_passivity = p_passivity;
+	HandEffects effects;
+	effects.configure(config);
+	SimulatedDevice device;
+	REQUIRE(device.open().ok());
+	EffectOrder order = remote_order(1, config);
+	order.duration_s = config.mine_effect_duration_s;
+	effects.start(order, Vec3{});
+	Link link(p_one_way_s, 9u);
+	Hand owner;
+	WorkResult result;
+	result.allowance_j = 0.5 * config.remote_max_force_n * config.remote_max_force_n / config.remote_stiffness_n_per_m;
+	const double w = 2.0 * std::numbers::pi * 1.5;
+	const int ticks = static_cast<int>(std::lround(config.mine_effect_duration_s / DT));
+	for (int tick = 0; tick < ticks; ++tick) {
+		const double now = tick * DT;
+		owner.position = Vec3{ 0.04 * std::sin(w * now), 0.0, 0.0 };
+		owner.velocity = Vec3{ 0.04 * w * std::cos(w * now), 0.0, 0.0 };
+		link.update(now, owner);
+		device.begin_tick(DT);
+		DeviceState state;
+		REQUIRE(device.read_state(state) == DeviceIo::OK);
+		StylusSample styluses[PONG_MAX_PLAYERS];
+		styluses[1] = link.sample(now);
+		const Vec3 force = effects.advance(DT, state.position_m, state.velocity_m_per_s, styluses);
+		result.summed_j += dot(force, state.velocity_m_per_s) * DT;
+		result.peak_j = std::max(result.peak_j, result.summed_j);
+		result.hand_travel_m = std::max(result.hand_travel_m, length(state.position_m));
+		ForceCommand command;
+		command.force_n = force;
+		device.write_force(command);
+	}
+	result.counted_j = effects.remote_work_j();
+	return result;
+}
+
+} // namespace
+
+TEST_CASE("pong remote latency: the coupling's work on the simulated hand, owner 100 ms late, stays within the allowance") {
+	const WorkResult passive = run_on_simulated_hand(true, 0.1);
+	const WorkResult active = run_on_simulated_hand(false, 0.1);
+	MESSAGE("simulated hand, 100 ms one way: work " << passive.counted_j * 1e3 << " mJ (peak " << passive.peak_j * 1e3
+													<< ") with the rule, " << active.counted_j * 1e3 << " mJ without; allowance "
+													<< passive.allowance_j * 1e3 << " mJ; hand travel "
+													<< passive.hand_travel_m * 1e3 << " / " << active.hand_travel_m * 1e3 << " mm");
+	// The counter is the integral of what advance() returned.
+	CHECK(passive.counted_j == doctest::Approx(passive.summed_j).epsilon(1e-9));
+	CHECK(active.counted_j == doctest::Approx(active.summed_j).epsilon(1e-9));
+	// The hand really moves under the pull (the simulated device's hand is not rigid).
+	CHECK(passive.hand_travel_m > 0.003);
+	// With the rule the net energy into the hand never exceeds one allowance, at any moment.
+	CHECK(passive.peak_j <= passive.allowance_j + 1e-9);
+	// Without it the swinging, delayed target pumps the hand all along: several allowances.
+	CHECK(active.counted_j > 3.0 * passive.allowance_j);
+}
+
+TEST_CASE("pong remote latency: the sim reports the coupling's work in its state, and clearing the effects zeroes it") {
+	PongSim sim;
+	PongInput input = idle_input();
+	input.local_player = 0;
+	input.players[0].kinematic = false;
+	input.players[0].avatar = { 0.0, 1.0, 2.0 };
+	input.players[1].avatar = { 0.0, 1.0, -2.0 };
+	input.players[1].paddle_offset = { 0.2, 0.0, 0.0 };
+	sim.set_input(input);
+	PongCommand command;
+	command.type = PongCommandType::EFFECT;
+	command.player = 0;
+	command.owner = 1;
+	command.kind = PongEffectKind::REMOTE;
+	sim.apply(command);
+	HandSample hand; // Moving toward the pull's side at 5 cm/s: the coupling does work on it.
+	hand.velocity_m_per_s = { -0.05, 0.0, 0.0 };
+	for (int k = 0; k < 500; ++k) {
+		sim.step(DT, &hand);
+	}
+	PongState state;
+	sim.fill_state(state);
+	CHECK(state.remote_work_j == doctest::Approx(sim.effects().remote_work_j()));
+	CHECK(state.remote_work_j != 0.0);
+	command.type = PongCommandType::CLEAR_EFFECTS;
+	sim.apply(command);
+	sim.fill_state(state);
+	CHECK(state.remote_work_j == 0.0);
 }
