@@ -62,7 +62,11 @@ func _open() -> PongNetWeapons:
 	_play.session = PongNetSession.new()
 	add_child(_play)
 	_play.add_child(_play.session)
-	_play.begin(match_node, PongNetAuthority.new(HOST, PackedInt64Array([HOST, CLIENT])), PackedInt32Array([0]))
+	_play.begin(
+		match_node,
+		PongNetAuthority.new(HOST, PackedInt64Array([HOST, CLIENT])),
+		PackedInt32Array([0])
+	)
 	return _play.weapons
 
 
@@ -196,4 +200,6 @@ func test_only_the_seats_this_peer_drives_are_judged_here() -> void:
 	var lost: int = PongRules.DAMAGE[PongRules.CAUSE_BULLET]
 	assert_eq(match_node.rules.get_health(0), 99 - lost)
 	assert_eq(match_node.rules.get_health(1), 99, "seat 1's peer decides its own")
-	assert_eq(_play.sent_of(&"_bullet").size(), 1, "the host's shot went out, the client's not back")
+	assert_eq(
+		_play.sent_of(&"_bullet").size(), 1, "the host's shot went out, the client's not back"
+	)

@@ -230,7 +230,9 @@ static func check_mine(
 			return reason
 	var mine_id: int = id
 	if typeof(kind) != TYPE_STRING or kind != PongMines.KINDS[mine_id]:
-		return "kind %s is not mine %d's, %s" % [str(kind).left(32), mine_id, PongMines.KINDS[mine_id]]
+		return (
+			"kind %s is not mine %d's, %s" % [str(kind).left(32), mine_id, PongMines.KINDS[mine_id]]
+		)
 	var owner: int = seat
 	if PongCourt.territory_of(position, seats) == owner:
 		return "mine in its owner's own territory"

@@ -89,7 +89,9 @@ func _owners(owners: Variant) -> void:
 
 
 @rpc("any_peer", "call_remote", "reliable", PongNetProtocol.CHANNEL_RELIABLE)
-func _bullet(seat: Variant, id: Variant, origin: Variant, direction: Variant, time_s: Variant) -> void:
+func _bullet(
+	seat: Variant, id: Variant, origin: Variant, direction: Variant, time_s: Variant
+) -> void:
 	if weapons != null:
 		weapons.on_bullet(multiplayer.get_remote_sender_id(), seat, id, origin, direction, time_s)
 
