@@ -323,7 +323,9 @@ func _move_bullets(dt: float) -> void:
 				court.number("hit_duration_s"),
 				direction
 			)
-		weapon_referee.hurt(self, victim, PongRules.CAUSE_BULLET, hit["owner"], hit["id"])
+		var shooter: int = hit["owner"]
+		var shot: int = hit["id"]
+		weapon_referee.hurt(self, victim, PongRules.CAUSE_BULLET, shooter, shot)
 		bullet_hit.emit(hit)
 
 

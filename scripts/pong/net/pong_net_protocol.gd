@@ -187,9 +187,10 @@ static func timeout_max_ms(rtt_ms: float) -> int:
 ## Why [param value] is not a unit [Vector3] (within 1 %), or "".
 static func check_unit(value: Variant, what: String) -> String:
 	var reason: String = check_vector(value, Vector3.ONE * 1.01, what)
-	if reason.is_empty() and absf((value as Vector3).length() - 1.0) > 0.01:
-		reason = "%s is not a unit vector" % what
-	return reason
+	if not reason.is_empty():
+		return reason
+	var v: Vector3 = value
+	return "%s is not a unit vector" % what if absf(v.length() - 1.0) > 0.01 else ""
 
 
 ## The checks of one shot {seat, id, origin, direction, time}: "" or why not.
@@ -234,7 +235,8 @@ static func check_mine(
 			"kind %s is not mine %d's, %s" % [str(kind).left(32), mine_id, PongMines.KINDS[mine_id]]
 		)
 	var owner: int = seat
-	if PongCourt.territory_of(position, seats) == owner:
+	var at: Vector3 = position
+	if PongCourt.territory_of(at, seats) == owner:
 		return "mine in its owner's own territory"
 	return ""
 

@@ -109,8 +109,6 @@ func on_bullet(
 	var reason: String = PongNetProtocol.check_bullet(
 		seat, authority.owners.size(), id, origin, direction, time_s, match_node.court
 	)
-	if reason.is_empty():
-		reason = _check_shot(sender, seat, id, time_s)
 	if not reason.is_empty():
 		play._reject(sender, "bullet", reason)
 		return
@@ -119,6 +117,10 @@ func on_bullet(
 	var sent_at: float = time_s
 	var from: Vector3 = origin
 	var along: Vector3 = direction
+	reason = _check_shot(sender, shooter, shot, sent_at)
+	if not reason.is_empty():
+		play._reject(sender, "bullet", reason)
+		return
 	_take_shot(shooter, shot, sent_at)
 	# Where it is by now: it flew on for the message's age.
 	var age: float = minf(play._age_of(sender, sent_at), 0.5)
@@ -144,13 +146,19 @@ func on_mine(sender: int, seat: Variant, id: Variant, position: Variant, kind: V
 	var reason: String = PongNetProtocol.check_mine(
 		seat, authority.owners.size(), id, position, kind, match_node.court
 	)
-	if reason.is_empty() and authority.owner_of(seat) != sender:
-		reason = "seat %d is not theirs" % seat
+	if not reason.is_empty():
+		play._reject(sender, "mine", reason)
+		return
+	var owner: int = seat
+	var number: int = id
+	var at: Vector3 = position
+	if authority.owner_of(owner) != sender:
+		reason = "seat %d is not theirs" % owner
 	var mine: PongMines.Mine = null
 	if reason.is_empty():
-		mine = match_node.mines.put(seat, id, position)
+		mine = match_node.mines.put(owner, number, at)
 		if mine == null:
-			reason = "mine id %d of seat %d is used" % [id, seat]
+			reason = "mine id %d of seat %d is used" % [number, owner]
 	if not reason.is_empty():
 		play._reject(sender, "mine", reason)
 		return
@@ -163,24 +171,28 @@ func on_hurt(sender: int, victim: Variant, cause: Variant, seat: Variant, id: Va
 	var reason: String = PongNetProtocol.check_weapon_hurt(
 		victim, authority.owners.size(), cause, seat, id
 	)
-	if reason.is_empty() and authority.owner_of(victim) != sender:
-		reason = "seat %d is not theirs to judge" % victim
-	var key: int = _key(cause, seat, id) if reason.is_empty() else -1
+	if not reason.is_empty():
+		play._reject(sender, "weapon hurt", reason)
+		return
+	var hurt_seat: int = victim
+	var weapon_seat: int = seat
+	var weapon_id: int = id
+	var what: String = cause
+	if authority.owner_of(hurt_seat) != sender:
+		reason = "seat %d is not theirs to judge" % hurt_seat
+	var key: int = _key(what, weapon_seat, weapon_id)
 	if reason.is_empty() and not _known.has(key):
-		reason = "no %s %d of seat %d is known here" % [cause, id, seat]
+		reason = "no %s %d of seat %d is known here" % [what, weapon_id, weapon_seat]
 	if reason.is_empty() and _spent.has(key):
-		reason = "%s %d of seat %d has already hurt" % [cause, id, seat]
+		reason = "%s %d of seat %d has already hurt" % [what, weapon_id, weapon_seat]
 	if not reason.is_empty():
 		play._reject(sender, "weapon hurt", reason)
 		return
 	_spent[key] = true
-	var hurt_seat: int = victim
-	var weapon_seat: int = seat
-	var weapon_id: int = id
 	var match_node: PongMatch = play.match_node
-	var bullet: bool = cause == "bullet"
+	var bullet: bool = what == "bullet"
 	match_node.rules.hurt(hurt_seat, PongRules.CAUSE_BULLET if bullet else PongRules.CAUSE_MINE)
-	hurts.append([hurt_seat, cause, weapon_seat, weapon_id])
+	hurts.append([hurt_seat, what, weapon_seat, weapon_id])
 	if sender == authority.my_id:
 		return  # The match shows its own hits.
 	if bullet:
