@@ -325,7 +325,7 @@ func _move_bullets(dt: float) -> void:
 			)
 		var shooter: int = hit["owner"]
 		var shot: int = hit["id"]
-		weapon_referee.hurt(self, victim, PongRules.CAUSE_BULLET, shooter, shot)
+		weapon_referee.hurt(rules, victim, PongRules.CAUSE_BULLET, shooter, shot)
 		bullet_hit.emit(hit)
 
 
@@ -350,7 +350,7 @@ func _check_mines() -> void:
 					Vector3.ZERO,
 					mine.owner
 				)
-		weapon_referee.hurt(self, player, PongRules.CAUSE_MINE, mine.owner, mine.id)
+		weapon_referee.hurt(rules, player, PongRules.CAUSE_MINE, mine.owner, mine.id)
 		mine_exploded.emit(mine, player)
 
 

@@ -15,8 +15,9 @@ func judges(_seat: int) -> bool:
 
 ## [param victim] was hurt by [param cause] ([constant PongRules.CAUSE_BULLET] or
 ## [constant PongRules.CAUSE_MINE]): [param weapon_owner]'s bullet or mine number
-## [param weapon_id]. Called after the victim's own effect (the hit, the mine) has started.
+## [param weapon_id]; [param rules] are the match's. Called after the victim's own effect
+## (the hit, the mine) has started.
 func hurt(
-	match_node: PongMatch, victim: int, cause: StringName, _weapon_owner: int, _weapon_id: int
+	rules: PongRules, victim: int, cause: StringName, _weapon_owner: int, _weapon_id: int
 ) -> void:
-	match_node.rules.hurt(victim, cause)
+	rules.hurt(victim, cause)

@@ -68,7 +68,7 @@ func begin(p_match: PongMatch, p_authority: PongNetAuthority, seats: PackedInt32
 	match_node.event_seen.connect(_on_event)
 	match_node.match_over.connect(_on_match_over)
 	report.begin(authority.my_id)
-	weapons = PongNetWeapons.new(self)
+	weapons = PongNetWeapons.new(self, match_node, authority, _reject, _age_of)
 	report.extra["weapons"] = weapons.to_dict()
 	# The servo's clock may have started over with the match.
 	_last_sent_time = -INF

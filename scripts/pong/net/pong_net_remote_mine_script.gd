@@ -90,11 +90,11 @@ func make_controller(seat: int, match_node: PongMatch) -> PongController:
 		if not passivity:
 			Haptics.pong.configure({"remote_passivity": false})
 		return still
-	var owner: SwingingOwner = SwingingOwner.new()
-	owner.player = seat
-	owner.kinematic = true
-	owner.scale = court.workspace_scale
-	owner.intent.normal = (PongCourt.forward(seat) + Vector3.UP * 0.4).normalized()
+	var swinging: SwingingOwner = SwingingOwner.new()
+	swinging.player = seat
+	swinging.kinematic = true
+	swinging.scale = court.workspace_scale
+	swinging.intent.normal = (PongCourt.forward(seat) + Vector3.UP * 0.4).normalized()
 	# Each mine lands at the mirror image of the owner's avatar (PongMines): stand at the
 	# mirror image of where it should land.
 	var floor_spot: Vector3 = Vector3(victim_home.x, 0.0, victim_home.z)
@@ -102,8 +102,8 @@ func make_controller(seat: int, match_node: PongMatch) -> PongController:
 		floor_spot + Vector3.RIGHT * ASIDE_M, floor_spot + Vector3.LEFT * ASIDE_M, floor_spot
 	]:
 		var spot: Vector3 = Vector3(target.x, victim_home.y, -target.z)
-		owner.spots.append(court.clamp_avatar(seat, spot))
-	return owner
+		swinging.spots.append(court.clamp_avatar(seat, spot))
+	return swinging
 
 
 ## Follows [param play]'s match: the server serves no ball; the victim's peer measures.
@@ -115,8 +115,8 @@ func follow(play: PongNetPlay) -> void:
 		return
 	var columns: PackedStringArray = Haptics.servo.get_telemetry_columns()
 	_stride = columns.size()
-	for name: String in ["t", "position_x", "weight_x"]:
-		_columns[name] = columns.find(name)
+	for column: String in ["t", "position_x", "weight_x"]:
+		_columns[column] = columns.find(column)
 	Haptics.servo.drain_telemetry(Haptics.get_constant(&"TELEMETRY_QUEUE_CAPACITY"))
 	_duration_s = _match.court.number("mine_effect_duration_s")
 	_match.mine_exploded.connect(_on_mine_exploded)
@@ -126,7 +126,7 @@ func _on_mine_exploded(mine: PongMines.Mine, victim: int) -> void:
 	if victim != VICTIM or mine.kind != "remote" or _measuring or _done:
 		return
 	_measuring = true
-	_work0 = float(Haptics.pong.get_state().get("remote_work_j", 0.0))
+	_work0 = _remote_work()
 	# The effect starts with the servo's next tick.
 	_start_t = _match.snapshot.time_s
 
@@ -139,11 +139,11 @@ func _process(_delta: float) -> void:
 	)
 	if not _measuring:
 		return
-	var work: float = float(Haptics.pong.get_state().get("remote_work_j", 0.0)) - _work0
+	var work: float = _remote_work() - _work0
 	_work = work
 	_peak = maxf(_peak, work)
-	var owner: PongController = _match.controllers[OWNER]
-	_ages.append(owner.intent.pose_age_s)
+	var owner_seat: PongController = _match.controllers[OWNER]
+	_ages.append(owner_seat.intent.pose_age_s)
 	var t_at: int = _columns["t"]
 	var p_at: int = _columns["position_x"]
 	var f_at: int = _columns["weight_x"]
@@ -163,6 +163,12 @@ func _process(_delta: float) -> void:
 	if _match.snapshot.time_s > _start_t + _duration_s + 0.1:
 		_measuring = false
 		_done = true
+
+
+# The servo's book of the coupling's work on the hand, J.
+func _remote_work() -> float:
+	var work: float = Haptics.pong.get_state().get("remote_work_j", 0.0)
+	return work
 
 
 ## {passivity, complete, work_j, peak_work_j, telemetry_work_j, allowance_j, hand_travel_m,
@@ -185,6 +191,6 @@ func to_dict() -> Dictionary:
 		"allowance_j": 0.5 * cap * cap / stiffness,
 		"hand_travel_m": _travel,
 		"max_force_n": _max_force,
-		"pose_age_p50_s": ages[ages.size() / 2] if not ages.is_empty() else -1.0,
+		"pose_age_p50_s": ages[floori(ages.size() * 0.5)] if not ages.is_empty() else -1.0,
 		"pose_age_max_s": ages[-1] if not ages.is_empty() else -1.0,
 	}

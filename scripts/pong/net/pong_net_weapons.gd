@@ -17,9 +17,12 @@ extends PongWeaponReferee
 ## Every received message is checked: the protocol's types and ranges, the sender owns the
 ## seat (a shot, a mine) or the victim (a hurt), numbers are not reused, a seat's shots keep
 ## its cooldown, a hurt names a weapon this peer knows and hurts only once. A bad one is
-## dropped with a log line and counted ([method PongNetPlay._reject]).
+## dropped with a log line and counted.
 
-var play: PongNetPlay = null
+## Where this peer's messages go out.
+var wire: PongNetWire = null
+var match_node: PongMatch = null
+var authority: PongNetAuthority = null
 ## [seat, id] of each shot taken (fired here or received), in order.
 var shots: Array[Array] = []
 ## [seat, id, kind, x, z] of each mine taken, in order.
@@ -33,11 +36,25 @@ var _spent: Dictionary[int, bool] = {}
 # Per seat: the last shot's number and its sender's servo time.
 var _last_shot: PackedInt64Array = PackedInt64Array([-1, -1, -1, -1])
 var _last_shot_s: PackedFloat64Array = PackedFloat64Array([-INF, -INF, -INF, -INF])
+var _reject: Callable = Callable()
+var _age_of: Callable = Callable()
 
 
-func _init(p_play: PongNetPlay) -> void:
-	play = p_play
-	var match_node: PongMatch = play.match_node
+## Follows [param p_match]; sends through [param p_wire]. [param p_reject]: Callable(sender,
+## what, reason) drops a message with a log line and counts it; [param p_age_of]:
+## Callable(sender, servo time) -> the age of a message, seconds.
+func _init(
+	p_wire: PongNetWire,
+	p_match: PongMatch,
+	p_authority: PongNetAuthority,
+	p_reject: Callable,
+	p_age_of: Callable
+) -> void:
+	wire = p_wire
+	match_node = p_match
+	authority = p_authority
+	_reject = p_reject
+	_age_of = p_age_of
 	match_node.weapon_referee = self
 	match_node.bullet_fired.connect(_on_bullet_fired)
 	match_node.mine_placed.connect(_on_mine_placed)
@@ -45,16 +62,16 @@ func _init(p_play: PongNetPlay) -> void:
 
 ## A peer judges the seats it drives.
 func judges(seat: int) -> bool:
-	return play.authority.owner_of(seat) == play.authority.my_id
+	return authority.owner_of(seat) == authority.my_id
 
 
 ## A hurt judged here: to every peer, and here through the same checks.
 func hurt(
-	_match_node: PongMatch, victim: int, cause: StringName, weapon_owner: int, weapon_id: int
+	_rules: PongRules, victim: int, cause: StringName, weapon_owner: int, weapon_id: int
 ) -> void:
 	var args: Array = [victim, String(cause), weapon_owner, weapon_id]
-	play.send_all(&"_weapon_hurt", args)
-	on_hurt(play.authority.my_id, victim, String(cause), weapon_owner, weapon_id)
+	wire.send_all(&"_weapon_hurt", args)
+	on_hurt(authority.my_id, victim, String(cause), weapon_owner, weapon_id)
 
 
 ## The report's part: {shots, mines, hurts}.
@@ -71,11 +88,11 @@ static func _key(cause: String, seat: int, id: int) -> int:
 func _on_bullet_fired(bullet: PongBullets.Bullet) -> void:
 	if not judges(bullet.owner):
 		return
-	_take_shot(bullet.owner, bullet.id, play.match_node.snapshot.time_s)
+	_take_shot(bullet.owner, bullet.id, match_node.snapshot.time_s)
 	var direction: Vector3 = bullet.velocity.normalized()
-	play.send_all(
+	wire.send_all(
 		&"_bullet",
-		[bullet.owner, bullet.id, bullet.position, direction, play.match_node.snapshot.time_s]
+		[bullet.owner, bullet.id, bullet.position, direction, match_node.snapshot.time_s]
 	)
 
 
@@ -83,7 +100,7 @@ func _on_mine_placed(mine: PongMines.Mine) -> void:
 	if not judges(mine.owner):
 		return
 	_take_mine(mine)
-	play.send_all(&"_mine", [mine.owner, mine.id, mine.position, mine.kind])
+	wire.send_all(&"_mine", [mine.owner, mine.id, mine.position, mine.kind])
 
 
 func _take_shot(seat: int, id: int, time_s: float) -> void:
@@ -104,13 +121,11 @@ func _take_mine(mine: PongMines.Mine) -> void:
 func on_bullet(
 	sender: int, seat: Variant, id: Variant, origin: Variant, direction: Variant, time_s: Variant
 ) -> void:
-	var authority: PongNetAuthority = play.authority
-	var match_node: PongMatch = play.match_node
 	var reason: String = PongNetProtocol.check_bullet(
 		seat, authority.owners.size(), id, origin, direction, time_s, match_node.court
 	)
 	if not reason.is_empty():
-		play._reject(sender, "bullet", reason)
+		_reject.call(sender, "bullet", reason)
 		return
 	var shooter: int = seat
 	var shot: int = id
@@ -119,18 +134,19 @@ func on_bullet(
 	var along: Vector3 = direction
 	reason = _check_shot(sender, shooter, shot, sent_at)
 	if not reason.is_empty():
-		play._reject(sender, "bullet", reason)
+		_reject.call(sender, "bullet", reason)
 		return
 	_take_shot(shooter, shot, sent_at)
 	# Where it is by now: it flew on for the message's age.
-	var age: float = minf(play._age_of(sender, sent_at), 0.5)
+	var measured: float = _age_of.call(sender, sent_at)
+	var age: float = minf(measured, 0.5)
 	var at: Vector3 = from + along * PongBullets.SPEED_M_PER_S * age
 	if match_node.court.clamp_inside(at, 0.0) == at:
 		match_node.bullet_fired.emit(match_node.bullets.add(shooter, shot, at, along))
 
 
 func _check_shot(sender: int, seat: int, id: int, time_s: float) -> String:
-	if play.authority.owner_of(seat) != sender:
+	if authority.owner_of(seat) != sender:
 		return "seat %d is not theirs" % seat
 	if id <= _last_shot[seat]:
 		return "bullet id %d of seat %d is not after %d" % [id, seat, _last_shot[seat]]
@@ -141,13 +157,11 @@ func _check_shot(sender: int, seat: int, id: int, time_s: float) -> String:
 
 
 func on_mine(sender: int, seat: Variant, id: Variant, position: Variant, kind: Variant) -> void:
-	var authority: PongNetAuthority = play.authority
-	var match_node: PongMatch = play.match_node
 	var reason: String = PongNetProtocol.check_mine(
 		seat, authority.owners.size(), id, position, kind, match_node.court
 	)
 	if not reason.is_empty():
-		play._reject(sender, "mine", reason)
+		_reject.call(sender, "mine", reason)
 		return
 	var owner: int = seat
 	var number: int = id
@@ -160,19 +174,18 @@ func on_mine(sender: int, seat: Variant, id: Variant, position: Variant, kind: V
 		if mine == null:
 			reason = "mine id %d of seat %d is used" % [number, owner]
 	if not reason.is_empty():
-		play._reject(sender, "mine", reason)
+		_reject.call(sender, "mine", reason)
 		return
 	_take_mine(mine)
 	match_node.mine_placed.emit(mine)
 
 
 func on_hurt(sender: int, victim: Variant, cause: Variant, seat: Variant, id: Variant) -> void:
-	var authority: PongNetAuthority = play.authority
 	var reason: String = PongNetProtocol.check_weapon_hurt(
 		victim, authority.owners.size(), cause, seat, id
 	)
 	if not reason.is_empty():
-		play._reject(sender, "weapon hurt", reason)
+		_reject.call(sender, "weapon hurt", reason)
 		return
 	var hurt_seat: int = victim
 	var weapon_seat: int = seat
@@ -186,10 +199,9 @@ func on_hurt(sender: int, victim: Variant, cause: Variant, seat: Variant, id: Va
 	if reason.is_empty() and _spent.has(key):
 		reason = "%s %d of seat %d has already hurt" % [what, weapon_id, weapon_seat]
 	if not reason.is_empty():
-		play._reject(sender, "weapon hurt", reason)
+		_reject.call(sender, "weapon hurt", reason)
 		return
 	_spent[key] = true
-	var match_node: PongMatch = play.match_node
 	var bullet: bool = what == "bullet"
 	match_node.rules.hurt(hurt_seat, PongRules.CAUSE_BULLET if bullet else PongRules.CAUSE_MINE)
 	hurts.append([hurt_seat, what, weapon_seat, weapon_id])
