@@ -35,9 +35,12 @@
 //     instead (the velocity of the tick before) was fooled on the simulated device: the held
 //     force and the stylus's resonance on the hand beat against the one-tick lag, and the
 //     stylus took 3.6 E_0 while the observer saw less than E_0 (test_pong_remote_latency.cpp).
-//     With the real work booked, the coupling delivers at most E_0 net plus what the hand's
-//     own acceleration within a tick adds to the prediction (+0.4 % on the simulated device):
-//     a loop through it cannot gain energy.
+//     With the real work booked, the coupling delivers E_0 net plus what the stylus's motion
+//     within a tick adds to the controller's prediction: +0.4 % with the simulated device
+//     alone (the doctest), about E_0 more in the whole servo at 200 ms round trip against a
+//     swinging owner (tests/net/test_net_weapons.py: 19 mJ, 115 mJ without the rule). Closing
+//     that gap needs a prediction of the tick's displacement (a model of the device and the
+//     hand), which this rule does not have.
 // Why this and not wave variables: the owner feels no force (the paper's mine is one-way),
 // so there is no returning wave to carry, and the remote samples already carry what the
 // observer needs; the observer also leaves the paper's feel untouched whenever no energy
@@ -98,10 +101,10 @@ public:
 	double remote_energy_j() const { return slots_[static_cast<size_t>(PongEffectKind::REMOTE)].energy_j; }
 	// REMOTE's low-passed target, device space (the spring's other end).
 	Vec3 remote_target_m() const { return slots_[static_cast<size_t>(PongEffectKind::REMOTE)].target_m; }
-	// The energy REMOTE has delivered to the hand since the last clear(), J: the sum of
-	// F . v dt over its ticks, F as advance() returned it (after the passivity rule), v the
-	// device velocity it was given. Net: work the hand did against the pull counts negative.
-	// With the passivity rule on it never exceeds the allowance of the effects started.
+	// The work REMOTE's force has done on the hand since the last clear(), J: each tick's
+	// force as advance() returned it (after the passivity rule) times the displacement the
+	// device made while holding it (booked at the next tick). Net: work the hand did against
+	// the pull counts negative.
 	double remote_work_j() const { return remote_work_j_; }
 
 private:
