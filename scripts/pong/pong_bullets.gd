@@ -12,13 +12,17 @@ extends RefCounted
 class Bullet:
 	extends RefCounted
 	var owner: int = 0
+	## The owner's shot number (0, 1, ...): with [member owner], the bullet's name on every
+	## peer of a networked match.
+	var id: int = 0
 	var position: Vector3 = Vector3.ZERO
 	var velocity: Vector3 = Vector3.ZERO
 
-	func _init(p_owner: int, p_position: Vector3, p_velocity: Vector3) -> void:
+	func _init(p_owner: int, p_position: Vector3, p_velocity: Vector3, p_id: int = 0) -> void:
 		owner = p_owner
 		position = p_position
 		velocity = p_velocity
+		id = p_id
 
 
 const SPEED_M_PER_S: float = 7.0
@@ -29,6 +33,7 @@ const RADIUS_M: float = 0.035
 var flying: Array[Bullet] = []
 
 var _cooldown: PackedFloat32Array = PackedFloat32Array([0.0, 0.0, 0.0, 0.0])
+var _shots: PackedInt32Array = PackedInt32Array([0, 0, 0, 0])
 
 
 ## Whether [param player] may fire now.
@@ -41,15 +46,35 @@ func fire(owner: int, origin: Vector3, axis: Vector3) -> Bullet:
 	if not can_fire(owner) or axis.is_zero_approx():
 		return null
 	_cooldown[owner] = COOLDOWN_S
-	var bullet: Bullet = Bullet.new(owner, origin, axis.normalized() * SPEED_M_PER_S)
+	var bullet: Bullet = Bullet.new(owner, origin, axis.normalized() * SPEED_M_PER_S, _shots[owner])
+	_shots[owner] += 1
 	flying.append(bullet)
 	return bullet
 
 
+## Adds [param owner]'s shot [param id], fired elsewhere (a networked match), at
+## [param position] flying along [param direction] (no cooldown: the firer kept it).
+func add(owner: int, id: int, position: Vector3, direction: Vector3) -> Bullet:
+	var bullet: Bullet = Bullet.new(owner, position, direction.normalized() * SPEED_M_PER_S, id)
+	_shots[owner] = maxi(_shots[owner], id + 1)
+	flying.append(bullet)
+	return bullet
+
+
+## Removes [param owner]'s shot [param id] from the air; returns it, or null when it is
+## not flying.
+func take(owner: int, id: int) -> Bullet:
+	for bullet: Bullet in flying:
+		if bullet.owner == owner and bullet.id == id:
+			flying.erase(bullet)
+			return bullet
+	return null
+
+
 ## Moves every bullet by [param dt] seconds. [param avatars] holds every avatar's workspace
 ## centre (a bullet hits the first other avatar it crosses). Returns the hits, each
-## [code]{"owner", "victim", "position", "direction"}[/code] (direction: the bullet's unit
-## motion); hitting and leaving bullets are removed.
+## [code]{"owner", "id", "victim", "position", "direction"}[/code] (direction: the bullet's
+## unit motion); hitting and leaving bullets are removed.
 func advance(dt: float, court: PongCourt, avatars: Array[Vector3]) -> Array[Dictionary]:
 	for player: int in _cooldown.size():
 		_cooldown[player] = maxf(_cooldown[player] - dt, 0.0)
@@ -65,6 +90,7 @@ func advance(dt: float, court: PongCourt, avatars: Array[Vector3]) -> Array[Dict
 				. append(
 					{
 						"owner": bullet.owner,
+						"id": bullet.id,
 						"victim": victim,
 						"position": bullet.position,
 						"direction": bullet.velocity.normalized(),

@@ -21,6 +21,10 @@ var gun: bool = false
 var fire: bool = false
 ## Place a mine this update.
 var place_mine: bool = false
+## Kinematic paddles only: how old [member paddle_offset] and [member paddle_velocity] are,
+## seconds (a remote player's pose, over the network); the servo carries the paddle on by
+## its velocity over it, and the remote-operation mine's target too.
+var pose_age_s: float = 0.0
 
 
 ## The player's entry of the servo's input: [param kinematic] when the game moves the
@@ -35,4 +39,5 @@ func to_input(kinematic: bool) -> Dictionary:
 		"spin": spin,
 		"gun": gun,
 		"active": true,
+		"pose_age_s": pose_age_s if kinematic else 0.0,
 	}

@@ -56,7 +56,7 @@ const MINE_RUMBLE_N: float = 1.2
 ## Floor and goal events cost health here (off in a networked match: the ball's master
 ## applies them and tells every peer).
 @export var rules_from_events: bool = true
-## Bullets and mines (off in a networked match, where they are not replicated yet).
+## Bullets and mines.
 @export var weapons: bool = true
 
 var court: PongCourt = null
@@ -65,6 +65,8 @@ var mines: PongMines = PongMines.new()
 var effects: PongEffects = PongEffects.new()
 var bullets: PongBullets = PongBullets.new()
 var referee: PongReferee = PongReferee.new()
+## Who judges the weapons' hits and where their hurts go (a networked match sets its own).
+var weapon_referee: PongWeaponReferee = PongWeaponReferee.new()
 ## One per player.
 var controllers: Array[PongController] = []
 ## The player on the device (0), or -1 when no paddle is the device's.
@@ -316,7 +318,8 @@ func _move_bullets(dt: float) -> void:
 	for hit: Dictionary in bullets.advance(dt, court, avatars):
 		var victim: int = hit["victim"]
 		var direction: Vector3 = hit["direction"]
-		rules.hurt(victim, PongRules.CAUSE_BULLET)
+		if not weapon_referee.judges(victim):
+			continue
 		if victim == local_player:
 			Haptics.pong.apply_effect(
 				victim,
@@ -325,17 +328,19 @@ func _move_bullets(dt: float) -> void:
 				court.number("hit_duration_s"),
 				direction
 			)
+		var shooter: int = hit["owner"]
+		var shot: int = hit["id"]
+		weapon_referee.hurt(rules, victim, PongRules.CAUSE_BULLET, shooter, shot)
 		bullet_hit.emit(hit)
 
 
 func _check_mines() -> void:
 	for player: int in court.players:
-		if rules.is_out(player):
+		if rules.is_out(player) or not weapon_referee.judges(player):
 			continue
 		var mine: PongMines.Mine = mines.step_on(player, avatar_of(player))
 		if mine == null:
 			continue
-		rules.hurt(player, PongRules.CAUSE_MINE)
 		var duration: float = court.number("mine_effect_duration_s")
 		if mine.kind != "none" and player != local_player:
 			effects.start(player, mine.kind, duration, mine.owner)
@@ -350,6 +355,7 @@ func _check_mines() -> void:
 					Vector3.ZERO,
 					mine.owner
 				)
+		weapon_referee.hurt(rules, player, PongRules.CAUSE_MINE, mine.owner, mine.id)
 		mine_exploded.emit(mine, player)
 
 

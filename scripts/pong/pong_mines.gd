@@ -22,11 +22,15 @@ class Mine:
 	var kind: String = ""
 	## On the floor (y = 0), in the opponent's territory.
 	var position: Vector3 = Vector3.ZERO
+	## The owner's mine number (0 to 3, the index of its kind in [constant KINDS]): with
+	## [member owner], the mine's name on every peer of a networked match.
+	var id: int = 0
 
-	func _init(p_owner: int, p_kind: String, p_position: Vector3) -> void:
+	func _init(p_owner: int, p_kind: String, p_position: Vector3, p_id: int = 0) -> void:
 		owner = p_owner
 		kind = p_kind
 		position = p_position
+		id = p_id
 
 
 ## The kinds, in the order a player places them; the servo's effect kind of the same name.
@@ -82,10 +86,32 @@ func place(owner: int, avatar: Vector3, court: PongCourt) -> Mine:
 	for mine: Mine in placed:
 		if mine.position.distance_to(point) < MIN_SPACING_M:
 			return null
-	var mine: Mine = Mine.new(owner, next_kind(owner), point)
+	var mine: Mine = Mine.new(owner, next_kind(owner), point, _used[owner])
 	_used[owner] += 1
 	placed.append(mine)
 	return mine
+
+
+## Puts [param owner]'s mine number [param id] (kind [code]KINDS[id][/code]) at
+## [param position], placed elsewhere (a networked match: the owner applied the rule);
+## null when [param owner] has already used that number or it is not one.
+func put(owner: int, id: int, position: Vector3) -> Mine:
+	if id < _used[owner] or id >= KINDS.size():
+		return null
+	var mine: Mine = Mine.new(owner, KINDS[id], position, id)
+	_used[owner] = id + 1
+	placed.append(mine)
+	return mine
+
+
+## Removes [param owner]'s mine [param id] from the court; returns it, or null when it is
+## not there.
+func take(owner: int, id: int) -> Mine:
+	for mine: Mine in placed:
+		if mine.owner == owner and mine.id == id:
+			placed.erase(mine)
+			return mine
+	return null
 
 
 ## The opponent's mine [param victim]'s avatar at [param avatar] stands on, removed from

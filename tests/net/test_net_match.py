@@ -187,14 +187,20 @@ def test_bad_messages_are_dropped_and_the_game_goes_on() -> None:
         host = peers[0]
         assert host.report["exit_code"] == 0, host.log()
         refused = host.report["refused"]
-        for kind in ("ball state", "pose", "transfer", "hurt", "hand-off request", "owners"):
+        for kind in ("ball state", "pose", "transfer", "hurt", "hand-off request", "owners",
+                     "bullet", "mine", "weapon hurt"):
             assert refused.get(kind, 0) >= 1, (kind, refused)
         log = host.log()
         for reason in ("epoch is a String", "position (99.0, 99.0, 99.0) is out of range",
                        "velocity is not finite", "avatar is a String", "seat 7 is out of",
                        "seat 0 is not theirs", "only the server issues them",
                        "was not the master at epoch", "dropped hand-off request",
-                       "cause xxxxxxxx", "owners from peer"):
+                       "cause xxxxxxxx", "owners from peer",
+                       # Weapons (PongNetRogue._attack_weapons).
+                       "origin (99.0, 99.0, 99.0) is out of range", "is not after",
+                       "after its last shot", "mine position is a String",
+                       "is not mine 2's, remote", "is not theirs to judge",
+                       "of seat 0 is known here", "is not a weapon"):
             assert reason in log, (reason, [l for l in log.splitlines() if "dropped" in l])
         # Still playing after the attack: states kept coming, health untouched by the rogue.
         assert host.report["states"] > 100

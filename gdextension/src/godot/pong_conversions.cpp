@@ -222,6 +222,7 @@ gd::Dictionary pong_state_to_dictionary(const PongState &p_state) {
 	d.set("paddle_contacts", static_cast<int64_t>(p_state.paddle_contacts));
 	d.set("bounces", static_cast<int64_t>(p_state.bounces));
 	d.set("events_dropped", static_cast<int64_t>(p_state.events_dropped));
+	d.set("remote_work_j", p_state.remote_work_j);
 	return d;
 }
 

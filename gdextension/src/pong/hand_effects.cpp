@@ -30,6 +30,7 @@ void HandEffects::clear() {
 	for (Slot &slot : slots_) {
 		slot = Slot{};
 	}
+	remote_work_j_ = 0.0;
 }
 
 void HandEffects::start(const EffectOrder &p_order, const Vec3 &p_self_m) {
@@ -52,8 +53,17 @@ double HandEffects::remote_allowance_j(double p_cap_n) const {
 	return remote_stiffness_n_per_m_ > 0.0 ? 0.5 * cap * cap / remote_stiffness_n_per_m_ : 0.0;
 }
 
-Vec3 HandEffects::keep_passive(Slot &r_slot, const Vec3 &p_force_n, const Vec3 &p_velocity_m_per_s,
-		double p_dt_s) const {
+Vec3 HandEffects::keep_passive(Slot &r_slot, const Vec3 &p_force_n, const Vec3 &p_position_m,
+		const Vec3 &p_velocity_m_per_s, double p_dt_s) {
+	const double ceiling = 2.0 * remote_allowance_j(r_slot.order.magnitude_n);
+	// The observer books the work the last tick's force really did: the device held it over
+	// the step that brought the stylus here.
+	if (r_slot.held) {
+		const double done = dot(r_slot.held_force_n, p_position_m - r_slot.held_position_m);
+		remote_work_j_ += done;
+		r_slot.energy_j = std::min(r_slot.energy_j - done, ceiling);
+	}
+	// The controller limits this tick's force by the work it would do at the present velocity.
 	Vec3 force = p_force_n;
 	const double delivered = dot(force, p_velocity_m_per_s) * p_dt_s;
 	const double speed_squared = length_squared(p_velocity_m_per_s);
@@ -61,8 +71,9 @@ Vec3 HandEffects::keep_passive(Slot &r_slot, const Vec3 &p_force_n, const Vec3 &
 		const double alpha = (delivered - std::max(r_slot.energy_j, 0.0)) / (speed_squared * p_dt_s);
 		force = cap_length(force - p_velocity_m_per_s * alpha, r_slot.order.magnitude_n);
 	}
-	const double ceiling = 2.0 * remote_allowance_j(r_slot.order.magnitude_n);
-	r_slot.energy_j = std::min(r_slot.energy_j - dot(force, p_velocity_m_per_s) * p_dt_s, ceiling);
+	r_slot.held = true;
+	r_slot.held_force_n = force;
+	r_slot.held_position_m = p_position_m;
 	return force;
 }
 
@@ -105,7 +116,11 @@ Vec3 HandEffects::advance(double p_dt_s, const Vec3 &p_position_m, const Vec3 &p
 		}
 		const double gain = effect_gain(slot.elapsed_s, slot.order.duration_s, slot.order.ramp_s);
 		const Vec3 f = force(slot, gain, p_position_m, p_velocity_m_per_s);
-		total += remote ? keep_passive(slot, f, p_velocity_m_per_s, p_dt_s) : f;
+		if (remote) {
+			total += keep_passive(slot, f, p_position_m, p_velocity_m_per_s, p_dt_s);
+		} else {
+			total += f;
+		}
 		slot.elapsed_s += p_dt_s;
 		if (slot.elapsed_s >= slot.order.duration_s) {
 			slot = Slot{};

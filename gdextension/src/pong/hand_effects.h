@@ -25,14 +25,22 @@
 //     is moved on by its velocity over its age (at most remote_max_extrapolation_s). It
 //     removes most of the lag of a steady motion, but not the loop's: alone it is not enough;
 //   - a time-domain passivity observer and controller (Hannaford and Ryu, 2002) at the hand
-//     port: E = E_0 - sum(F . v dt), the energy the coupling has delivered to the hand taken
-//     from an allowance E_0 = F_cap^2 / (2 k_f) (what the spring holds at its cap: enough to
-//     pull the hand once to the owner's position) and given back whenever the hand works
-//     against it (F . v < 0), E kept at most 2 E_0. When this tick's F . v dt would take E
-//     below 0, a damper along v takes out exactly the excess: F' = F - alpha v,
-//     alpha = (F . v dt - E) / (|v|^2 dt), so F' . v dt = E (|alpha v| <= |F . v| / |v| <= |F|,
-//     and F' is capped again). Then the coupling never delivers more than E_0 net, whatever
-//     the delay, jitter, extrapolation or filter: a loop through it cannot gain energy.
+//     port: E = E_0 - sum(F_k . (x_k+1 - x_k)), the work each tick's force really did while
+//     the device held it (booked at the next tick, from the displacement), taken from an
+//     allowance E_0 = F_cap^2 / (2 k_f) (what the spring holds at its cap: enough to pull the
+//     hand once to the owner's position) and given back whenever the hand works against it,
+//     E kept at most 2 E_0. When this tick's predicted work F . v dt (v the present velocity)
+//     would take E below 0, a damper along v takes out exactly the excess: F' = F - alpha v,
+//     alpha = (F . v dt - max(E, 0)) / (|v|^2 dt), then F' is capped again. Booking F . v dt
+//     instead (the velocity of the tick before) was fooled on the simulated device: the held
+//     force and the stylus's resonance on the hand beat against the one-tick lag, and the
+//     stylus took 3.6 E_0 while the observer saw less than E_0 (test_pong_remote_latency.cpp).
+//     With the real work booked, the coupling delivers E_0 net plus what the stylus's motion
+//     within a tick adds to the controller's prediction: +0.4 % with the simulated device
+//     alone (the doctest), about E_0 more in the whole servo at 200 ms round trip against a
+//     swinging owner (tests/net/test_net_weapons.py: 19 mJ, 115 mJ without the rule). Closing
+//     that gap needs a prediction of the tick's displacement (a model of the device and the
+//     hand), which this rule does not have.
 // Why this and not wave variables: the owner feels no force (the paper's mine is one-way),
 // so there is no returning wave to carry, and the remote samples already carry what the
 // observer needs; the observer also leaves the paper's feel untouched whenever no energy
@@ -93,6 +101,11 @@ public:
 	double remote_energy_j() const { return slots_[static_cast<size_t>(PongEffectKind::REMOTE)].energy_j; }
 	// REMOTE's low-passed target, device space (the spring's other end).
 	Vec3 remote_target_m() const { return slots_[static_cast<size_t>(PongEffectKind::REMOTE)].target_m; }
+	// The work REMOTE's force has done on the hand since the last clear(), J: each tick's
+	// force as advance() returned it (after the passivity rule) times the displacement the
+	// device made while holding it (booked at the next tick). Net: work the hand did against
+	// the pull counts negative.
+	double remote_work_j() const { return remote_work_j_; }
 
 private:
 	struct Slot {
@@ -101,12 +114,16 @@ private:
 		double elapsed_s = 0.0;
 		Vec3 target_m; // REMOTE: the low-passed target.
 		double energy_j = 0.0; // REMOTE: the passivity observer's E.
+		bool held = false; // REMOTE: the force the device holds until the next tick, from where.
+		Vec3 held_force_n;
+		Vec3 held_position_m;
 	};
 
 	Vec3 force(const Slot &p_slot, double p_gain, const Vec3 &p_position_m, const Vec3 &p_velocity_m_per_s) const;
 	double remote_allowance_j(double p_cap_n) const;
 	// The passivity rule on a REMOTE force: returns F' and updates the slot's observer.
-	Vec3 keep_passive(Slot &r_slot, const Vec3 &p_force_n, const Vec3 &p_velocity_m_per_s, double p_dt_s) const;
+	Vec3 keep_passive(Slot &r_slot, const Vec3 &p_force_n, const Vec3 &p_position_m, const Vec3 &p_velocity_m_per_s,
+			double p_dt_s);
 
 	Slot slots_[PONG_EFFECT_KIND_COUNT]; // By kind; NONE's is never used.
 	double slow_damping_n_s_per_m_ = 0.0;
@@ -115,6 +132,7 @@ private:
 	double remote_max_force_n_ = 0.0;
 	double remote_max_extrapolation_s_ = 0.0;
 	bool remote_passivity_ = true;
+	double remote_work_j_ = 0.0;
 };
 
 } // namespace haptics

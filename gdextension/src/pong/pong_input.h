@@ -17,6 +17,9 @@ namespace haptics {
 // The servo moves a game-driven (kinematic) paddle on by its velocity for at most this long
 // after the input arrived: a frame or three at 60 Hz, never far if the game stalls.
 inline constexpr double PONG_MAX_EXTRAPOLATION_S = 0.05;
+// A game-driven paddle whose pose is pose_age_s old (a remote player's, over the network) is
+// also carried on over that age, at most this long: a stalled stream holds the paddle.
+inline constexpr double PONG_MAX_POSE_EXTRAPOLATION_S = 0.15;
 
 // The paddle's face in its player's device frame: away from the user, toward the
 // opponent. Also where a device orientation's identity points the paddle.
@@ -38,8 +41,9 @@ struct PongPlayerInput {
 	bool active = true; // In play.
 	// How old paddle_offset and paddle_velocity were when this input was handed over, s: 0
 	// for a paddle this machine drives, the sample's age for a remote player's (network
-	// delay, as the networking measures it). Only the remote-operation mine uses it: its
-	// target is this player's stylus moved on by its velocity over the age (hand_effects.h).
+	// delay, as the networking measures it). The servo carries the paddle on by its velocity
+	// over it (at most PONG_MAX_POSE_EXTRAPOLATION_S), and the remote-operation mine's target
+	// is this player's stylus moved on over it (hand_effects.h).
 	double pose_age_s = 0.0;
 };
 

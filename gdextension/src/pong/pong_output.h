@@ -77,6 +77,9 @@ struct PongState {
 	uint64_t paddle_contacts = 0; // Contacts started this session.
 	uint64_t bounces = 0; // FLOOR and WALL events this session.
 	uint64_t events_dropped = 0; // Events the game did not drain in time.
+	// The remote-operation coupling's net work on the device player's hand since the effects
+	// were last cleared, J (HandEffects::remote_work_j: before the force scale).
+	double remote_work_j = 0.0;
 };
 
 static_assert(std::is_trivially_copyable_v<PongEvent>);

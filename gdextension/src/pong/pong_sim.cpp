@@ -180,7 +180,8 @@ void PongSim::pose_paddles(const HandSample *p_hand) {
 		pose.touchable = in.active && !in.gun;
 		pose.spin = in.spin;
 		if (p != device || p_hand == nullptr) {
-			pose.center = in.avatar + in.paddle_offset + in.paddle_velocity * tau;
+			const double ahead = std::clamp(in.pose_age_s, 0.0, PONG_MAX_POSE_EXTRAPOLATION_S) + tau;
+			pose.center = in.avatar + in.paddle_offset + in.paddle_velocity * ahead;
 			pose.velocity = in.paddle_velocity;
 			pose.normal = in.normal;
 			// The stylus as the input gave it (not moved on by tau: the remote target moves it on
@@ -308,6 +309,7 @@ void PongSim::fill_state(PongState &r_state) const {
 	r_state.paddle_contacts = paddle_contacts_;
 	r_state.bounces = bounces_;
 	r_state.events_dropped = events_.dropped();
+	r_state.remote_work_j = effects_.remote_work_j();
 }
 
 } // namespace haptics

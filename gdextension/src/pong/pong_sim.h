@@ -13,8 +13,9 @@
 //     velocity = v_avatar + side_rotation(player, device velocity * scale)
 //     normal   = side_rotation(player, orientation * PADDLE_FACING_DEVICE) with an
 //                orientation, else the input's normal
-//   every other paddle (game-driven):
-//     centre   = avatar + paddle_offset + paddle_velocity tau,  velocity = paddle_velocity
+//   every other paddle (game-driven; age = the input's pose_age_s, at most
+//   PONG_MAX_POSE_EXTRAPOLATION_S: a remote player's pose is that old when it is handed over):
+//     centre   = avatar + paddle_offset + paddle_velocity (age + tau),  velocity = paddle_velocity
 // Each player's stylus (REMOTE's owner, hand_effects.h) in its device frame: the device's
 // reading for the device player (age 0); for the others paddle_offset / scale with velocity
 // (paddle_velocity - v_avatar) / scale, aged input.pose_age_s + tau (the network's delay of a

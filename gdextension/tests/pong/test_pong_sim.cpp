@@ -275,3 +275,22 @@ TEST_CASE("pong sim: a ball hitting either player's paddle face pushes that hand
 		CHECK(std::abs(force.y) < 1e-12);
 	}
 }
+
+TEST_CASE("pong sim: a remote paddle's pose age carries it on by its velocity, at most 150 ms") {
+	PongSim sim;
+	PongInput input = idle_input();
+	input.local_player = 0;
+	input.players[0].avatar = { 0.0, 1.0, 2.0 };
+	input.players[1] = game_paddle({ 0.0, 1.0, -2.0 }, { 0.0, 0.0, 1.0 }, { 1.0, 0.0, 0.0 });
+	input.players[1].pose_age_s = 0.1;
+	sim.set_input(input);
+	const HandSample hand;
+	sim.step(PONG_DT, &hand);
+	// 100 ms of age plus the tick since the input, at 1 m/s.
+	CHECK(sim.paddle(1).center.x == doctest::Approx(0.101));
+	input.players[1].pose_age_s = 2.0; // A stalled stream: held at the cap.
+	sim.set_input(input);
+	sim.step(PONG_DT, &hand);
+	CHECK(sim.paddle(1).center.x == doctest::Approx(PONG_MAX_POSE_EXTRAPOLATION_S + 0.001));
+	CHECK(sim.paddle(1).velocity.x == doctest::Approx(1.0));
+}

@@ -219,7 +219,6 @@ func _begin(owners: PackedInt64Array, health: int) -> void:
 	match_node.self_stepping = false
 	match_node.auto_serve = false
 	match_node.rules_from_events = false
-	match_node.weapons = false
 	if not screen.start_match(PongMatch.Mode.DEMO, false):
 		status_changed.emit("No Pong renderer: build the extension")
 		return
@@ -258,7 +257,6 @@ func _set_controller(seat: int) -> void:
 			match_node.controllers[seat] = made
 			return
 	if current is PongAi and (autopilot or not mine):
-		(current as PongAi).use_weapons = false
 		return
 	var radius: float = Haptics.device.get_workspace_radius()
 	if mine and not autopilot:
@@ -269,7 +267,6 @@ func _set_controller(seat: int) -> void:
 		match_node.controllers[seat] = human
 		return
 	var ai: PongAi = PongAi.new(seat, match_node.court, match_node.reach, seat + 1)
-	ai.use_weapons = false
 	ai.intent = current.intent
 	match_node.controllers[seat] = ai
 

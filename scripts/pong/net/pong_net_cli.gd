@@ -13,11 +13,15 @@ extends Node
 ## [code]--pong-net-peers=N[/code] players are in), [code]--pong-net-seconds=S[/code] (play
 ## that long, then write the report and quit), [code]--pong-net-max-seconds=S[/code] (quit
 ## after S wall seconds whatever happens), [code]--pong-net-report=FILE[/code] (JSON),
-## [code]--pong-net-script=rally|hit[/code] (hit: this peer's seat is a still device
+## [code]--pong-net-script=rally|hit|remote[/code] (hit: this peer's seat is a still device
 ## paddle and the first serve goes to seat 1, so the report holds the contact's force
-## profile), [code]--pong-net-health=N[/code], [code]--pong-net-version=V[/code] (claim
+## profile; remote: [PongNetRemoteMineScript], seat 1 steps on seat 0's remote mine and
+## reports the coupling's work on its hand, [code]--pong-net-passivity=off[/code] without
+## the passivity rule), [code]--pong-net-health=N[/code], [code]--pong-net-version=V[/code] (claim
 ## another protocol version: refused), [code]--pong-net-rogue[/code] (send malformed and
-## unauthorised messages once the match runs), [code]--pong-net-realtime[/code] (headless
+## unauthorised messages once the match runs), [code]--pong-net-weapon-rate=X[/code] (the
+## computer players fire and place mines X times as often: the weapons test),
+## [code]--pong-net-realtime[/code] (headless
 ## too, run the servo thread at 1 kHz as a windowed game does, instead of stepping it).
 ## Exit codes: 0 done, 2 connection failed or refused, 3 no Pong renderer.
 
@@ -41,6 +45,7 @@ var _seat: int = -1
 var _readied: bool = false
 var _rogue_rounds: int = 0
 var _profile: PongNetContactProfile = null
+var _remote: PongNetRemoteMineScript = null
 var _finishing: bool = false
 
 
@@ -120,6 +125,11 @@ func _launch() -> void:
 		_profile = PongNetContactProfile.new()
 		add_child(_profile)
 		net.local_controller_factory = _profile.make_still_paddle
+	elif script_name == "remote":
+		_remote = PongNetRemoteMineScript.new()
+		_remote.passivity = _option("pong-net-passivity", "on") != "off"
+		add_child(_remote)
+		net.local_controller_factory = _remote.make_controller
 	var error: String = ""
 	if role == "join":
 		error = net.join(_option("address", "127.0.0.1"), port)
@@ -161,6 +171,13 @@ func _on_match_started() -> void:
 	_match_clock = 0.0
 	_readied = false
 	_seat = net.my_seat()
+	var rate: float = _option("pong-net-weapon-rate", "1").to_float()
+	for controller: PongController in net.play.match_node.controllers:
+		if controller is PongAi and rate > 0.0:
+			(controller as PongAi).mine_rate_per_s *= rate
+			(controller as PongAi).fire_interval_s /= rate
+	if _remote != null:
+		_remote.follow(net.play)
 	if script_name == "hit":
 		_profile.follow(net.play)
 		if net.session.is_server:
@@ -194,6 +211,8 @@ func _finish(code: int, why: String) -> void:
 		data["controllers"] = _controllers()
 	if _profile != null:
 		data["contact"] = _profile.to_dict()
+	if _remote != null:
+		data["remote_mine"] = _remote.to_dict()
 	if not report_path.is_empty():
 		var file: FileAccess = FileAccess.open(report_path, FileAccess.WRITE)
 		if file != null:

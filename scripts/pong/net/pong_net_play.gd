@@ -73,6 +73,8 @@ func begin(p_match: PongMatch, p_authority: PongNetAuthority, seats: PackedInt32
 	match_node.event_seen.connect(_on_event)
 	match_node.match_over.connect(_on_match_over)
 	report.begin(authority.my_id)
+	weapons = PongNetWeapons.new(self, match_node, authority, _reject, _age_of)
+	report.extra["weapons"] = weapons.to_dict()
 	# The servo's clock may have started over with the match.
 	_last_sent_time = -INF
 	_last_pose_time = -INF
@@ -83,6 +85,7 @@ func begin(p_match: PongMatch, p_authority: PongNetAuthority, seats: PackedInt32
 ## Stops (the match is over, or the peer leaves).
 func end() -> void:
 	_running = false
+	weapons = null
 
 
 func is_running() -> bool:
@@ -201,6 +204,17 @@ func _clock_of(peer: int, their_leg_ms: int) -> PongNetClock:
 	return clock
 
 
+## How old a message of [param sender] stamped with its servo time [param sent_at] is, s.
+## The path's base delay: our leg to the server and, on the server, the sender's leg (a
+## client's message to another client crosses two legs; only ball states carry the
+## sender's, so that case counts ours alone).
+func _age_of(sender: int, sent_at: float) -> float:
+	var their_leg_ms: int = 0
+	if authority.my_id == PongNetAuthority.SERVER_ID:
+		their_leg_ms = roundi(session.round_trip_s(sender) * 500.0)
+	return _clock_of(sender, their_leg_ms).observe(_local_now_s(), sent_at)
+
+
 func _local_now_s() -> float:
 	return Time.get_ticks_usec() / 1e6
 
@@ -286,7 +300,7 @@ func _on_pose(
 	var controller: PongController = match_node.controllers[pose_seat]
 	if not controller is PongNetRemotePlayer:
 		return
-	var age: float = _clock_of(sender, 0).observe(_local_now_s(), sent_at)
+	var age: float = _age_of(sender, sent_at)
 	(controller as PongNetRemotePlayer).set_pose(
 		match_node.now, minf(age, 0.5), pose[0], pose[1], pose[2], pose[3], pose_flags
 	)

@@ -42,6 +42,16 @@ const TRANSFER_SERVE: int = 0
 const TRANSFER_HANDOFF: int = 1
 const TRANSFER_TAKEOVER: int = 2
 const TRANSFER_NAMES: Array[String] = ["serve", "handoff", "takeover"]
+## What a weapon hurt names as its cause (the rules' causes a weapon has).
+const WEAPON_CAUSES: Array[String] = ["bullet", "mine"]
+## Highest bullet number a seat may send (a shot every 0.4 s: a few million years).
+const MAX_WEAPON_ID: int = 1 << 30
+## A seat's shots are at least its cooldown apart in its servo's time; this share of it is
+## accepted (the firer counts the cooldown in game time, which a real-time game's frames
+## round).
+const COOLDOWN_SHARE: float = 0.75
+## How far off the floor a received mine may lie, metres.
+const FLOOR_TOLERANCE_M: float = 0.01
 
 ## ENet timeouts on every peer (FACTS §1.7: (8, 500, 1000) noticed a SIGKILLed peer in
 ## 1.1 s on a LAN). ENet drops a peer when a reliable packet has been sent
@@ -190,3 +200,78 @@ static func timeout_max_ms(rtt_ms: float) -> int:
 	return clampi(
 		roundi(TIMEOUT_MAX_MS + TIMEOUT_PER_RTT * rtt_ms), TIMEOUT_MAX_MS, TIMEOUT_CEILING_MS
 	)
+
+
+## Why [param value] is not a unit [Vector3] (within 1 %), or "".
+static func check_unit(value: Variant, what: String) -> String:
+	var reason: String = check_vector(value, Vector3.ONE * 1.01, what)
+	if not reason.is_empty():
+		return reason
+	var v: Vector3 = value
+	return "%s is not a unit vector" % what if absf(v.length() - 1.0) > 0.01 else ""
+
+
+## The checks of one shot {seat, id, origin, direction, time}: "" or why not.
+static func check_bullet(
+	seat: Variant,
+	seats: int,
+	id: Variant,
+	origin: Variant,
+	direction: Variant,
+	time_s: Variant,
+	court: PongCourt
+) -> String:
+	for reason: String in [
+		check_int(seat, 0, seats - 1, "seat"),
+		check_int(id, 0, MAX_WEAPON_ID, "bullet id"),
+		check_vector(origin, position_limit(court), "origin"),
+		check_unit(direction, "direction"),
+		check_float(time_s, 0.0, 1e7, "time"),
+	]:
+		if not reason.is_empty():
+			return reason
+	return ""
+
+
+## The checks of one mine {seat, id, position, kind}: "" or why not. A mine lies on the
+## floor inside the walls, in another seat's territory, and its kind is the seat's
+## [param id]-th ([constant PongMines.KINDS]).
+static func check_mine(
+	seat: Variant, seats: int, id: Variant, position: Variant, kind: Variant, court: PongCourt
+) -> String:
+	var floor_box: Vector3 = Vector3(court.half_width, FLOOR_TOLERANCE_M, court.half_length)
+	for reason: String in [
+		check_int(seat, 0, seats - 1, "seat"),
+		check_int(id, 0, PongMines.KINDS.size() - 1, "mine id"),
+		check_vector(position, floor_box, "mine position"),
+	]:
+		if not reason.is_empty():
+			return reason
+	var mine_id: int = id
+	if typeof(kind) != TYPE_STRING or kind != PongMines.KINDS[mine_id]:
+		return (
+			"kind %s is not mine %d's, %s" % [str(kind).left(32), mine_id, PongMines.KINDS[mine_id]]
+		)
+	var owner: int = seat
+	var at: Vector3 = position
+	if PongCourt.territory_of(at, seats) == owner:
+		return "mine in its owner's own territory"
+	return ""
+
+
+## The checks of one weapon hurt {victim, cause, weapon seat, weapon id}: "" or why not.
+static func check_weapon_hurt(
+	victim: Variant, seats: int, cause: Variant, seat: Variant, id: Variant
+) -> String:
+	for reason: String in [
+		check_int(victim, 0, seats - 1, "victim"),
+		check_int(seat, 0, seats - 1, "weapon seat"),
+		check_int(id, 0, MAX_WEAPON_ID, "weapon id"),
+	]:
+		if not reason.is_empty():
+			return reason
+	if typeof(cause) != TYPE_STRING or not WEAPON_CAUSES.has(cause):
+		return "cause %s is not a weapon" % str(cause).left(32)
+	if victim == seat:
+		return "a weapon never hurts its owner"
+	return ""

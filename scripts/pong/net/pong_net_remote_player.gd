@@ -1,12 +1,15 @@
 class_name PongNetRemotePlayer
 extends PongController
 ## A player on another machine: its avatar and paddle come in the pose stream and reach
-## the local servo as a kinematic paddle. The paddle is carried forward by its velocity
-## over the pose's age (at most [constant MAX_EXTRAPOLATION_S]); the servo itself carries
-## it on for 50 ms after each input.
+## the local servo as a kinematic paddle, with the pose's age ([member PongIntent.pose_age_s]:
+## its age when it arrived plus the time since). The servo carries the paddle on by its
+## velocity over that age (at most 150 ms: a stalled stream holds the paddle), and the
+## remote-operation mine's target, this player's stylus, too (hand_effects.h); so the age is
+## the servo's to use, once, and the pose is passed on as it came.
 
-## Longest extrapolation of a remote paddle, seconds (a stalled stream holds the paddle).
-const MAX_EXTRAPOLATION_S: float = 0.15
+## Ages handed to the servo are capped here, seconds (the servo's own caps are lower; this
+## only keeps a long stall within its input checks).
+const MAX_AGE_S: float = 1.0
 
 ## Poses taken.
 var poses: int = 0
@@ -49,14 +52,10 @@ static func flags_of(p_intent: PongIntent) -> int:
 func update(
 	now: float, _dt: float, _snapshot: PongSnapshot, _opponent_avatar: Vector3
 ) -> PongIntent:
-	if _received_at < 0.0:
-		return intent
-	var ahead: float = minf(_age_s + now - _received_at, MAX_EXTRAPOLATION_S)
-	var out: PongIntent = PongIntent.new()
-	out.avatar = intent.avatar
-	out.paddle_offset = intent.paddle_offset + intent.paddle_velocity * ahead
-	out.paddle_velocity = intent.paddle_velocity
-	out.normal = intent.normal
-	out.spin = intent.spin
-	out.gun = intent.gun
-	return out
+	# Its peer fires and places its mines (and says so): never here. The intent may be the
+	# one of the computer player this seat had before.
+	intent.fire = false
+	intent.place_mine = false
+	if _received_at >= 0.0:
+		intent.pose_age_s = minf(_age_s + maxf(now - _received_at, 0.0), MAX_AGE_S)
+	return intent

@@ -29,3 +29,25 @@ static func attack(net: PongNet) -> void:
 	play._owners.rpc(PackedInt64Array([me, me]))
 	# Oversized: a 64 KiB name.
 	play._hurt.rpc(play.authority.epoch, 0, "x".repeat(65536))
+	_attack_weapons(play, not_mine)
+
+
+# Bullets, mines and weapon hurts: each a wrong type, out of range, or without authority.
+static func _attack_weapons(play: PongNetPlay, not_mine: int) -> void:
+	var mine: int = 1 - not_mine
+	var far: Vector3 = Vector3(0.0, 1.0, 0.0)
+	var theirs: Vector3 = Vector3(0.2, 0.0, 1.5 if mine == 1 else -1.5)
+	play._bullet.rpc("zero", 0, far, Vector3.UP, 1.0)
+	play._bullet.rpc(mine, 1 << 27, Vector3(99, 99, 99), Vector3.UP, 1.0)
+	play._bullet.rpc(not_mine, 1 << 27, far, Vector3.UP, 1.0)
+	# A fresh number, then the same one again, then the next one at once (cooldown).
+	var shot: int = (1 << 28) + roundi(play.match_node.now * 10.0)
+	play._bullet.rpc(mine, shot, far, Vector3.UP, 1e6 + play.match_node.now)
+	play._bullet.rpc(mine, shot, far, Vector3.UP, 1e6 + play.match_node.now + 1.0)
+	play._bullet.rpc(mine, shot + 1, far, Vector3.UP, 1e6 + play.match_node.now + 0.01)
+	play._mine.rpc(mine, 0, "here", "slow")
+	play._mine.rpc(mine, 2, theirs, "slow")
+	play._mine.rpc(not_mine, 3, -theirs, "none")
+	play._weapon_hurt.rpc(not_mine, "bullet", mine, 0)
+	play._weapon_hurt.rpc(mine, "bullet", not_mine, 1 << 29)
+	play._weapon_hurt.rpc(mine, "x".repeat(65536), not_mine, 0)

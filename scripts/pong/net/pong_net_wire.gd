@@ -7,6 +7,8 @@ extends Node
 
 ## The connection (round trips for the age of messages).
 var session: PongNetSession = null
+## The match's bullets and mines while a match runs (its messages go there).
+var weapons: PongNetWeapons = null
 
 
 ## Sends [param method] with [param args] to every other peer.
@@ -93,6 +95,26 @@ func _hurt(epoch: Variant, player: Variant, cause: Variant) -> void:
 @rpc("any_peer", "call_remote", "reliable", PongNetProtocol.CHANNEL_RELIABLE)
 func _owners(owners: Variant) -> void:
 	_on_owners(multiplayer.get_remote_sender_id(), owners)
+
+
+@rpc("any_peer", "call_remote", "reliable", PongNetProtocol.CHANNEL_RELIABLE)
+func _bullet(
+	seat: Variant, id: Variant, origin: Variant, direction: Variant, time_s: Variant
+) -> void:
+	if weapons != null:
+		weapons.on_bullet(multiplayer.get_remote_sender_id(), seat, id, origin, direction, time_s)
+
+
+@rpc("any_peer", "call_remote", "reliable", PongNetProtocol.CHANNEL_RELIABLE)
+func _mine(seat: Variant, id: Variant, position: Variant, kind: Variant) -> void:
+	if weapons != null:
+		weapons.on_mine(multiplayer.get_remote_sender_id(), seat, id, position, kind)
+
+
+@rpc("any_peer", "call_remote", "reliable", PongNetProtocol.CHANNEL_RELIABLE)
+func _weapon_hurt(victim: Variant, cause: Variant, seat: Variant, id: Variant) -> void:
+	if weapons != null:
+		weapons.on_hurt(multiplayer.get_remote_sender_id(), victim, cause, seat, id)
 
 
 # --- handlers, overridden by PongNetPlay ---
