@@ -202,8 +202,12 @@ def test_bad_messages_are_dropped_and_the_game_goes_on() -> None:
                        "is not mine 2's, remote", "is not theirs to judge",
                        "of seat 0 is known here", "is not a weapon"):
             assert reason in log, (reason, [l for l in log.splitlines() if "dropped" in l])
-        # Still playing after the attack: states kept coming, health untouched by the rogue.
-        assert host.report["states"] > 100
+        # Still playing after the attack: both masters kept sending (how much each sent depends
+        # on how long the rally stayed on its side: measured 37 to 186 of the rogue's in 6 s),
+        # the host took the rogue's honest states, and the rogue did not touch its health.
+        sent = peers[1].report["sent"]
+        assert sent > 0 and host.report["sent"] > 0, (sent, host.report["sent"])
+        assert host.report["states"] >= 0.9 * sent, (sent, host.report["states"])
         assert host.report["health"][1] >= host.report["health"][0] - 10
 
 
