@@ -24,7 +24,7 @@ BENCH_SECONDS ?= 10
 SOAK_SECONDS ?= 600
 
 .PHONY: play test deps engine build build-release import test-native test-godot lint pong-demo \
-	export test-export dist test-dist test-windowed test-net bench-net bench soak sanitize analyze export-study \
+	export test-export export-server test-export-server dist test-dist test-windowed test-net bench-net bench soak sanitize analyze export-study \
 	test-analysis addon test-addon clean distclean
 
 ## deps: install missing OS packages (apt-get; sudo when not root)
@@ -72,8 +72,8 @@ pong-demo: import
 	@$(GODOT) --headless --path . -- --pong-demo $(ARGS)
 
 ## test: every suite; any failure fails the target
-test: import test-native test-godot lint test-analysis test-net test-export test-dist test-windowed \
-	test-addon
+test: import test-native test-godot lint test-analysis test-net test-export test-export-server \
+	test-dist test-windowed test-addon
 	@echo "make test: all suites passed"
 
 ## test-native: the C++ doctest suite through CTest
@@ -109,6 +109,17 @@ export: import build-release
 ## except the system's GPU driver (tools/test-export.sh)
 test-export: export
 	@tools/test-export.sh
+
+## export-server: the dedicated Pong server, self-contained like the game, in
+## .export/linux-server/: ./haptic-pong-server --headless -- --server [--port=P]
+export-server: import build
+	@tools/export.sh server
+
+## test-export-server: the exported server, started with an emptied environment, referees a
+## match between two clients of the source tree: exit 0, no error in any log
+test-export-server: export-server
+	@HAPTICS_SERVER=.export/linux-server/haptic-pong-server \
+		tools/analysis/run.sh -m pytest tests/net/test_exported_server.py -q -p no:cacheprovider
 
 ## dist: .export/haptic-game-linux-x86_64.tar.gz: the self-contained build, a player README
 ## (controls, devices, permissions) and the udev rules; prints its size (tools/dist.sh)
@@ -181,7 +192,8 @@ test-analysis:
 ## test-net: the network tests: the UDP relay that gives loopback latency, jitter and loss,
 ## then networked Pong with headless peers through it (tests/net, a few minutes)
 test-net: import
-	@tools/analysis/run.sh -m pytest tools/net/tests tests/net -q -p no:cacheprovider
+	@tools/analysis/run.sh -m pytest tools/net/tests tests/net -q -p no:cacheprovider \
+		--ignore=tests/net/test_exported_server.py
 
 ## bench-net: networked Pong's bytes/s, hand-off gap, divergence and corrections for each
 ## network setting (numbers, not tests; JSON in .bench/net.json)

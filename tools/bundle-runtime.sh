@@ -1,18 +1,18 @@
 #!/usr/bin/env bash
 # Makes the Linux export in DIR (default .export/linux) self-contained: the release template,
 # the pack and the extension move into DIR/runtime/ beside the glibc loader and every shared
-# library they need (DIR/runtime/lib/), and DIR/haptic-game (tools/dist/launcher.sh) starts
-# the game through that loader with that library path only. The GPU driver (libGL, libEGL,
+# library they need (DIR/runtime/lib/), and DIR/NAME (tools/dist/launcher.sh) starts the game
+# through that loader with that library path only. The GPU driver (libGL, libEGL,
 # libGLX, libgbm, Vulkan and what Mesa or a vendor driver loads) is left to the system:
 # it must match the kernel driver and the hardware of the machine it runs on.
 # Licences of what is shipped go to DIR/licenses/ (one folder per Debian package, and
 # MANIFEST.txt: library, package, version).
 #
-# Usage: tools/bundle-runtime.sh [DIR]
+# Usage: tools/bundle-runtime.sh [DIR [NAME]]   (default .export/linux haptic-game)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 dir=${1:-.export/linux}
-name=haptic-game
+name=${2:-haptic-game}
 die() { echo "bundle-runtime: $*" >&2; exit 1; }
 
 [[ -x $dir/$name.x86_64 && -f $dir/$name.pck ]] || die "$dir holds no exported $name; run 'make export'"
@@ -93,7 +93,9 @@ manifest=$dir/licenses/MANIFEST.txt
   echo "# Each package's copyright and licence terms: licenses/<package>/copyright."
 } >"$manifest"
 loader_real=$(realpath "$loader")
-[[ -n $root ]] && template_src=$root/usr/bin/godot-template-release || template_src=""
+# The template the export used: the one its extension library was built for.
+[[ ${extensions[0]} == *template_debug* ]] && flavour=debug || flavour=release
+[[ -n $root ]] && template_src=$root/usr/bin/godot-template-$flavour || template_src=""
 for entry in "runtime/$name.loader=$loader_real" \
   ${template_src:+"runtime/$name.x86_64=$template_src"} \
   $(for s in "${!found[@]}"; do echo "runtime/lib/$s=$(realpath "${found[$s]}")"; done | sort); do

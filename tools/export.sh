@@ -1,10 +1,21 @@
 #!/usr/bin/env bash
-# Exports the Linux x86_64 release build to .export/linux/ and makes it self-contained
-# (tools/bundle-runtime.sh: run it as .export/linux/haptic-game). With the project-local engine,
-# its Debian export templates are installed into the project's hermetic XDG data folder
-# first; with your own engine, install the matching official templates yourself.
+# Exports a self-contained Linux x86_64 build (tools/bundle-runtime.sh):
+#   tools/export.sh          the game, release template: .export/linux/haptic-game
+#   tools/export.sh server   the dedicated Pong server ("Linux Server" preset), debug
+#                            template: .export/linux-server/haptic-pong-server
+# The server takes the debug template because Debian's 4.6 release template prints an engine
+# error for every Container child's internal signal connection when the tree is freed (146
+# lines at each server exit; none with the debug template), and a server's log is read.
+# With the project-local engine, its Debian export templates are installed into the
+# project's hermetic XDG data folder first; with your own engine, install the matching
+# official templates yourself.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+case ${1:-game} in
+  game) preset=Linux dir=.export/linux name=haptic-game flavour=release ;;
+  server) preset="Linux Server" dir=.export/linux-server name=haptic-pong-server flavour=debug ;;
+  *) echo "usage: tools/export.sh [game|server]" >&2; exit 2 ;;
+esac
 : "${XDG_DATA_HOME:=$PWD/.xdg/data}"
 export XDG_DATA_HOME
 
@@ -28,13 +39,14 @@ if [[ ! -f $templates/linux_release.x86_64 ]]; then
   fi
 fi
 
-[[ -f gdextension/bin/libhaptics.linux.template_release.x86_64.so ]] || {
-  echo "export: the release library is missing; run 'make build-release'" >&2
+[[ -f gdextension/bin/libhaptics.linux.template_$flavour.x86_64.so ]] || {
+  echo "export: the $flavour library is missing; run 'make build$([[ $flavour == release ]] && echo -release)'" >&2
   exit 1
 }
-rm -rf .export/linux
-mkdir -p .export/linux
-tools/godot --headless --path . --export-release Linux .export/linux/haptic-game.x86_64 \
-  >.build/export.log 2>&1 || { tail -n 30 .build/export.log; exit 1; }
-[[ -x .export/linux/haptic-game.x86_64 ]] || { tail -n 30 .build/export.log; exit 1; }
-tools/bundle-runtime.sh .export/linux
+log=.build/export-$name.log
+rm -rf "$dir"
+mkdir -p "$dir"
+tools/godot --headless --path . "--export-$flavour" "$preset" "$dir/$name.x86_64" \
+  >"$log" 2>&1 || { tail -n 30 "$log"; exit 1; }
+[[ -x $dir/$name.x86_64 ]] || { tail -n 30 "$log"; exit 1; }
+tools/bundle-runtime.sh "$dir" "$name"

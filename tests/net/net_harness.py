@@ -42,6 +42,9 @@ class Peer:
     name: str
     args: list[str]
     workdir: Path
+    # What runs it, before the "--" and the game's arguments: the source tree's engine, or an
+    # exported build's launcher.
+    command: tuple[str, ...] = (str(GODOT), "--headless", "--path", str(ROOT))
     proc: subprocess.Popen | None = None
     report: dict = field(default_factory=dict)
 
@@ -56,8 +59,7 @@ class Peer:
     def start(self) -> None:
         with open(self.log_path, "w") as log:
             self.proc = subprocess.Popen(
-                [str(GODOT), "--headless", "--path", str(ROOT), "--", *self.args,
-                 f"--pong-net-report={self.report_path}"],
+                [*self.command, "--", *self.args, f"--pong-net-report={self.report_path}"],
                 stdout=log, stderr=subprocess.STDOUT, cwd=ROOT,
             )
 
@@ -151,11 +153,13 @@ def workspace():
 def run_match(workdir: Path, peers: int, network: Network, seconds: float,
               host_args: tuple[str, ...] = (), client_args: tuple[tuple[str, ...], ...] = (),
               dedicated: bool = False, on_running=None,
-              force_relay: bool = False, seed: int = 1) -> tuple[list[Peer], dict]:
+              force_relay: bool = False, seed: int = 1,
+              server_command: tuple[str, ...] = ()) -> tuple[list[Peer], dict]:
     """Starts a host (or a dedicated server) and the clients, through one relay when the
     network is impaired, waits for all to exit; returns the peers (reports loaded) and the
     relay's counts. [on_running](peers) runs once every client is connected; [seed] picks
-    the relay's drop and delay sequence."""
+    the relay's drop and delay sequence; [server_command] runs the dedicated server from an
+    exported build instead of the source tree."""
     port = free_udp_port()
     players = peers
     # A peer quits by itself after its match's seconds, and in any case after a deadline.
@@ -166,6 +170,8 @@ def run_match(workdir: Path, peers: int, network: Network, seconds: float,
     try:
         if dedicated:
             host = Peer("server", ["--server", f"--port={port}", *common, *host_args], workdir)
+            if server_command:
+                host.command = server_command
         else:
             host = Peer("host", ["--pong-net=host", f"--port={port}", "--name=host", *common,
                                  *host_args], workdir)

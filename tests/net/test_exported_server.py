@@ -1,0 +1,49 @@
+"""The exported dedicated server (make export-server), as an operator runs it.
+
+The self-contained build in $HAPTICS_SERVER (its launcher) starts with an emptied environment
+(only HOME, pointing into the test's folder, so user:// is there) and referees a match between
+two clients of the source tree through the relay at 50 ms. It must announce itself as a
+dedicated server, take the clients' ball states, see the same hand-offs as they do, exit 0,
+and print no error: neither the engine's nor ours. make test-export-server runs it; make
+test-net leaves it out (it needs the export).
+"""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+from net_harness import Network, run_match, transfers, workspace
+
+SECONDS = 10
+
+
+def test_the_exported_server_referees_a_match_with_an_empty_environment() -> None:
+    launcher = Path(os.environ.get("HAPTICS_SERVER", "")).resolve()
+    assert os.access(launcher, os.X_OK), f"no exported server at {launcher}: make export-server"
+    with workspace() as work:
+        home = work / "home"
+        home.mkdir()
+        command = ("env", "-i", f"HOME={home}", str(launcher), "--headless")
+        peers, relay = run_match(work, 2, Network(50, 5, 0.0), SECONDS, dedicated=True,
+                                 server_command=command)
+        server, clients = peers[0], peers[1:]
+        logs = "\n".join(f"--- {p.name}:\n{p.log()[-3000:]}" for p in peers)
+        for peer in peers:
+            assert peer.report.get("exit_code") == 0, logs
+            errors = [line for line in peer.log().splitlines()
+                      if line.startswith(("ERROR", "SCRIPT ERROR"))]
+            assert errors == [], (peer.name, errors[:5])
+        assert "(dedicated server)" in server.log(), logs
+        assert relay["up"]["delivered"] > 0 and relay["down"]["delivered"] > 0, relay
+        # It refereed: both clients were masters in turn and the server took their states.
+        sent = sum(c.report["sent"] for c in clients)
+        assert sent > 0 and server.report["states"] > 0.5 * sent, (sent, server.report["states"])
+        assert server.report["sent"] == 0, "a dedicated server never masters the ball"
+        # The hand-offs every peer saw are the server's (a peer may miss the last one in
+        # flight when its match clock ends).
+        theirs = transfers(server.report)
+        assert len(theirs) >= 2, theirs
+        for client in clients:
+            mine = transfers(client.report)
+            assert mine == theirs[:len(mine)] and len(mine) >= len(theirs) - 1, (mine, theirs)
