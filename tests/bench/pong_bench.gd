@@ -8,7 +8,7 @@ extends Node
 ## tools/godot --headless --path . res://tests/bench/pong_bench.tscn -- [--matches=N]
 ##     [--health=N] [--json=PATH]
 
-const PONG_SCENE: PackedScene = preload("res://scenes/pong/pong.tscn")
+const PongTestScreen := preload("res://tests/pong/pong_test_screen.gd")
 ## Simulated seconds after which a match is cut short.
 const MAX_MATCH_S: float = 600.0
 
@@ -37,13 +37,8 @@ func _ready() -> void:
 
 
 func _run(seed_value: int) -> Dictionary:
-	var pong: PongScreen = PONG_SCENE.instantiate() as PongScreen
-	pong.skip_setup = true
-	pong.mode = PongMatch.Mode.DEMO
-	pong.stepped = true
-	pong.start_health = _health
+	var pong: PongScreen = PongTestScreen.stepped(PongMatch.Mode.DEMO, 2, _health, true)
 	var match_node: PongMatch = pong.get_node(^"Match") as PongMatch
-	match_node.self_stepping = false
 	match_node.ai_seed = seed_value
 	add_child(pong)
 	await get_tree().process_frame

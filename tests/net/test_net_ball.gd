@@ -4,7 +4,7 @@ extends TestSuite
 ## wall of a four-player court) is kept inside the court, where the servo takes it, instead
 ## of being refused with an engine error.
 
-const PONG_SCENE: PackedScene = preload("res://scenes/pong/pong.tscn")
+const PongTestScreen := preload("res://tests/pong/pong_test_screen.gd")
 
 var _pong: PongScreen = null
 
@@ -42,13 +42,6 @@ func test_a_correction_outside_the_court_lands_inside_it() -> void:
 func _open(players: int) -> PongMatch:
 	if not assert_true(Haptics.pong.is_available(), "the extension has the Pong renderer"):
 		return null
-	_pong = PONG_SCENE.instantiate() as PongScreen
-	_pong.skip_setup = true
-	_pong.mode = PongMatch.Mode.DEMO
-	_pong.players = players
-	_pong.stepped = true
-	var match_node: PongMatch = _pong.get_node(^"Match") as PongMatch
-	match_node.auto_serve = false
-	match_node.self_stepping = false
+	_pong = PongTestScreen.stepped(PongMatch.Mode.DEMO, players)
 	add_child(_pong)
-	return match_node
+	return _pong.match_node

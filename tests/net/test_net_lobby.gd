@@ -1,28 +1,7 @@
-extends TestSuite
+extends "res://tests/net/lobby_suite.gd"
 ## The network lobby on one machine: hosting lists the host in seat 1, ready-up is shown,
 ## Start needs a second player, Leave closes the session, and a join to a port where
 ## nobody listens fails with a message (no hang).
-
-const LOBBY_SCENE: PackedScene = preload("res://scenes/pong/net/pong_lobby.tscn")
-
-var _lobby: PongLobby = null
-
-
-func before_each() -> void:
-	_lobby = LOBBY_SCENE.instantiate() as PongLobby
-	add_child(_lobby)
-	await get_tree().process_frame
-
-
-func after_each() -> void:
-	if is_instance_valid(_lobby):
-		_lobby.queue_free()
-	await get_tree().process_frame
-	await get_tree().process_frame
-
-
-func _port() -> int:
-	return 47000 + randi() % 2000
 
 
 func test_hosting_lists_the_host_and_start_waits_for_a_second_player() -> void:

@@ -1,29 +1,8 @@
-extends TestSuite
+extends "res://tests/net/lobby_suite.gd"
 ## The lobby's form: every input has a visible label it is tied to, Tab walks the form in
 ## reading order, the Seats choice reaches [member PongNet.seats] when hosting (and a bad
 ## choice is refused), the lobby lists the open seats, and the keyboard focus leaves a
 ## button that hosting disabled.
-
-const LOBBY_SCENE: PackedScene = preload("res://scenes/pong/net/pong_lobby.tscn")
-
-var _lobby: PongLobby = null
-
-
-func before_each() -> void:
-	_lobby = LOBBY_SCENE.instantiate() as PongLobby
-	add_child(_lobby)
-	await get_tree().process_frame
-
-
-func after_each() -> void:
-	if is_instance_valid(_lobby):
-		_lobby.queue_free()
-	await get_tree().process_frame
-	await get_tree().process_frame
-
-
-func _port() -> int:
-	return 47000 + randi() % 2000
 
 
 func test_every_field_has_a_visible_label_tied_to_it() -> void:

@@ -4,7 +4,7 @@ extends TestSuite
 ## 0; the client, peer 42, drives seat 1). Received messages are handed to the handlers
 ## with their sender's id; what this peer sends is recorded.
 
-const PONG_SCENE: PackedScene = preload("res://scenes/pong/pong.tscn")
+const PongTestScreen := preload("res://tests/pong/pong_test_screen.gd")
 const PongTestCourt := preload("res://tests/pong/pong_test_court.gd")
 const HOST: int = 1
 const CLIENT: int = 42
@@ -44,15 +44,9 @@ func after_each() -> void:
 func _open() -> PongNetWeapons:
 	if not assert_true(Haptics.pong.is_available(), "the extension has the Pong renderer"):
 		return null
-	_pong = PONG_SCENE.instantiate() as PongScreen
-	_pong.skip_setup = true
-	_pong.mode = PongMatch.Mode.DEMO
-	_pong.start_health = 99
-	_pong.stepped = true
-	var match_node: PongMatch = _pong.get_node(^"Match") as PongMatch
-	match_node.auto_serve = false
-	match_node.self_stepping = false
+	_pong = PongTestScreen.stepped()
 	add_child(_pong)
+	var match_node: PongMatch = _pong.match_node
 	# Seat 1 is the client's: its paddle comes over the network.
 	var remote: PongNetRemotePlayer = PongNetRemotePlayer.new(1)
 	remote.intent = match_node.controllers[1].intent

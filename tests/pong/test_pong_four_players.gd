@@ -6,7 +6,7 @@ extends TestSuite
 ## servo ends with one winner.
 
 const PongTestCourt := preload("res://tests/pong/pong_test_court.gd")
-const PONG_SCENE: PackedScene = preload("res://scenes/pong/pong.tscn")
+const PongTestScreen := preload("res://tests/pong/pong_test_screen.gd")
 
 var _court: PongCourt = null
 var _pong: PongScreen = null
@@ -121,15 +121,9 @@ func test_a_four_computer_match_ends_with_one_winner() -> void:
 	if not Haptics.pong.is_available():
 		skip("no Pong renderer")
 		return
-	_pong = PONG_SCENE.instantiate() as PongScreen
-	_pong.skip_setup = true
-	_pong.mode = PongMatch.Mode.DEMO
-	_pong.stepped = true
-	_pong.start_health = 6
-	_pong.players = 4
+	_pong = PongTestScreen.stepped(PongMatch.Mode.DEMO, 4, 6, true)
 	add_child(_pong)
 	var match_node: PongMatch = _pong.match_node
-	match_node.self_stepping = false
 	assert_eq(match_node.court.players, 4)
 	var paddles: Array = Haptics.pong.get_state()["players"]
 	assert_eq(paddles.size(), 4, "the servo has four paddles")

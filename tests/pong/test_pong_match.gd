@@ -6,7 +6,7 @@ extends TestSuite
 ## computer-vs-computer match ends with a winner. Bounds are generous; every wait has a
 ## timeout.
 
-const PONG_SCENE: PackedScene = preload("res://scenes/pong/pong.tscn")
+const PongTestScreen := preload("res://tests/pong/pong_test_screen.gd")
 ## Tolerance of an effect's end: one match update either side, and one more for the order
 ## of update and servo ticks.
 const EFFECT_TOLERANCE_S: float = 2.0 * PongMatch.STEP_CHUNK_S + 0.005
@@ -147,14 +147,9 @@ func _open(
 ) -> PongMatch:
 	if not assert_true(Haptics.pong.is_available(), "the extension has the Pong renderer"):
 		return null
-	_pong = PONG_SCENE.instantiate() as PongScreen
-	_pong.skip_setup = true
-	_pong.mode = mode
+	_pong = PongTestScreen.stepped(mode, 2, health)
 	_pong.beginner = beginner
-	_pong.start_health = health
-	_pong.stepped = true
 	var match_node: PongMatch = _pong.get_node(^"Match") as PongMatch
-	match_node.auto_serve = false
 	match_node.self_stepping = self_stepping
 	add_child(_pong)
 	match_node.event_seen.connect(_events.append)

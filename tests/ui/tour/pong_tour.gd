@@ -1,4 +1,4 @@
-extends Node
+extends "res://tests/ui/tour/tour.gd"
 ## Walks through Haptic Battle Pong under a real display and saves a PNG of each moment,
 ## for looking at it (not a test: the runner skips this folder's files).
 ## [codeblock]
@@ -13,16 +13,12 @@ extends Node
 
 const MAIN_SCENE: PackedScene = preload("res://scenes/main/main.tscn")
 
-var _out: String = "user://pong-shots"
 var _main: Main = null
 
 
 func _ready() -> void:
-	for arg: String in OS.get_cmdline_user_args():
-		if arg.begins_with("--out="):
-			_out = arg.get_slice("=", 1)
-	DirAccess.make_dir_recursive_absolute(_out)
-	_tour.call_deferred()
+	out = "user://pong-shots"
+	super()
 
 
 func _tour() -> void:
@@ -120,15 +116,5 @@ func _gun(pong: PongScreen) -> void:
 		waited += get_process_delta_time()
 	await _shot("pong_gun_bullet", 0.05)
 
-
 # Software rendering under Xvfb is slow: a few frames pass after the wait so that the
 # picture shows the state of its moment.
-func _shot(shot_name: String, wait_seconds: float) -> void:
-	if wait_seconds > 0.0:
-		await get_tree().create_timer(wait_seconds, true).timeout
-	for i: int in 2:
-		await get_tree().process_frame
-	await RenderingServer.frame_post_draw
-	var path: String = "%s/%s.png" % [_out, shot_name]
-	get_viewport().get_texture().get_image().save_png(path)
-	print("saved %s (%d fps)" % [path, Engine.get_frames_per_second()])

@@ -1,4 +1,4 @@
-extends Node
+extends "res://tests/ui/tour/tour.gd"
 ## Walks through every screen of the game under a real display and saves a PNG of each,
 ## for looking at the UI (not a test: the runner skips this folder's files).
 ## [codeblock]
@@ -8,20 +8,14 @@ extends Node
 
 const MAIN_SCENE: PackedScene = preload("res://scenes/main/main.tscn")
 
-var _out: String = "user://shots"
 var _game_seconds: PackedFloat32Array = PackedFloat32Array([3.0])
 
 
-func _ready() -> void:
-	for arg: String in OS.get_cmdline_user_args():
-		if arg.begins_with("--out="):
-			_out = arg.get_slice("=", 1)
-		elif arg.begins_with("--game-seconds="):
-			_game_seconds.clear()
-			for part: String in arg.get_slice("=", 1).split(","):
-				_game_seconds.append(part.to_float())
-	DirAccess.make_dir_recursive_absolute(_out)
-	_tour.call_deferred()
+func _option(arg: String) -> void:
+	if arg.begins_with("--game-seconds="):
+		_game_seconds.clear()
+		for part: String in arg.get_slice("=", 1).split(","):
+			_game_seconds.append(part.to_float())
 
 
 func _tour() -> void:
@@ -79,11 +73,3 @@ func _demo_forces(hud: Hud) -> void:
 		await get_tree().process_frame
 	await _shot("hud_forces", 0.0)
 	hud.live = true
-
-
-func _shot(shot_name: String, wait_seconds: float) -> void:
-	await get_tree().create_timer(wait_seconds, true).timeout
-	await RenderingServer.frame_post_draw
-	var path: String = "%s/%s.png" % [_out, shot_name]
-	get_viewport().get_texture().get_image().save_png(path)
-	print("saved ", path)
