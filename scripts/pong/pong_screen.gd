@@ -137,6 +137,8 @@ func _open_lobby() -> void:
 	var lobby: PongLobby = (load(LOBBY_SCENE_PATH) as PackedScene).instantiate() as PongLobby
 	lobby.back_requested.connect(_close_lobby.bind(lobby))
 	add_child(lobby)
+	# The setup's court is the lobby's first choice of seats for hosting.
+	lobby.choose_seats(setup.get_players())
 
 
 func _close_lobby(lobby: PongLobby) -> void:

@@ -41,6 +41,23 @@ func test_the_menu_entry_opens_the_setup_and_escape_goes_back() -> void:
 	assert_true(_main.get_screen() is MainMenu, "Esc returns to the menu")
 
 
+func test_the_network_lobby_starts_with_the_setup_court() -> void:
+	for players: int in [4, 2]:
+		var pong: PongScreen = add_child_autofree(PONG_SCENE.instantiate()) as PongScreen
+		await wait_process_frames(1)
+		pong.setup.four_players_check.button_pressed = players == 4
+		pong.setup.network_button.pressed.emit()
+		await wait_process_frames(1)
+		var lobby: PongLobby = pong.find_children("*", "PongLobby", false, false).front()
+		if not assert_not_null(lobby, "the lobby opens"):
+			return
+		assert_eq(lobby.chosen_seats(), players, "the setup's court is the lobby's seats")
+		assert_false(pong.setup.visible, "the lobby replaces the setup")
+		lobby.back_requested.emit()
+		pong.queue_free()
+		await wait_process_frames(2)
+
+
 func test_a_real_time_match_serves_and_quitting_restores_the_servo() -> void:
 	if not assert_true(Haptics.pong.is_available(), "the extension has the Pong renderer"):
 		return
