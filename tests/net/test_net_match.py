@@ -193,6 +193,7 @@ def test_bad_messages_are_dropped_and_the_game_goes_on() -> None:
         log = host.log()
         for reason in ("epoch is a String", "position (99.0, 99.0, 99.0) is out of range",
                        "velocity is not finite", "avatar is a String", "seat 7 is out of",
+                       "leg -5 is out of",
                        "seat 0 is not theirs", "only the server issues them",
                        "was not the master at epoch", "dropped hand-off request",
                        "cause xxxxxxxx", "owners from peer",

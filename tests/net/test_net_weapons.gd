@@ -199,3 +199,21 @@ func test_only_the_seats_this_peer_drives_are_judged_here() -> void:
 	assert_eq(
 		_play.sent_of(&"_bullet").size(), 1, "the host's shot went out, the client's not back"
 	)
+
+
+func test_a_clients_age_of_another_clients_message_counts_the_senders_leg() -> void:
+	if _open() == null:
+		return
+	# This peer is a client now (no ENet here: its own leg to the server reads 0 ms).
+	_play.authority = PongNetAuthority.new(CLIENT, PackedInt64Array([HOST, CLIENT]))
+	var other: int = 77
+	# A pose reports the sender's leg (40 ms): it crossed that leg, then ours.
+	assert_almost_eq(_play._age_of(other, _now_s(), 40), 0.040, 0.002, "its pose")
+	# Its later messages that carry no leg (a shot, a mine) keep the leg it reported.
+	assert_almost_eq(_play._age_of(other, _now_s()), 0.040, 0.002, "its shot")
+	# The server's messages cross our leg only, whatever they say.
+	assert_almost_eq(_play._age_of(HOST, _now_s(), 40), 0.0, 0.002, "the server's")
+
+
+func _now_s() -> float:
+	return Time.get_ticks_usec() / 1e6

@@ -49,6 +49,8 @@ var serve_aim: Callable = Callable()
 
 var _predictor: PongPredictor = null
 var _clocks: Dictionary[int, PongNetClock] = {}
+# Each peer's one-way delay to the server, ms, as its ball states and poses last reported it.
+var _legs: Dictionary[int, int] = {}
 var _seq: int = 0
 var _last_sent_time: float = -INF
 var _last_pose_time: float = -INF
@@ -144,7 +146,9 @@ func _send_poses(snapshot: PongSnapshot) -> void:
 		velocity = velocity.limit_length(MAX_SENT_PADDLE_SPEED_M_PER_S)
 		var normal: Vector3 = snapshot.paddle_normals[seat].normalized()
 		var flags: int = PongNetRemotePlayer.flags_of(match_node.controllers[seat].intent)
-		send_all(&"_pose", [seat, avatar, offset, velocity, normal, flags, snapshot.time_s])
+		send_all(
+			&"_pose", [seat, avatar, offset, velocity, normal, flags, snapshot.time_s, _my_leg_ms()]
+		)
 
 
 func _referee(sim_dt: float) -> void:
@@ -205,13 +209,17 @@ func _clock_of(peer: int, their_leg_ms: int) -> PongNetClock:
 
 
 ## How old a message of [param sender] stamped with its servo time [param sent_at] is, s.
-## The path's base delay: our leg to the server and, on the server, the sender's leg (a
-## client's message to another client crosses two legs; only ball states carry the
-## sender's, so that case counts ours alone).
-func _age_of(sender: int, sent_at: float) -> float:
-	var their_leg_ms: int = 0
+## The path's base delay is our leg to the server plus the sender's: a client's message to
+## another client crosses both. The server measures a sender's leg itself; a client takes
+## what the sender's streams report ([param reported_leg_ms], kept for its other messages).
+func _age_of(sender: int, sent_at: float, reported_leg_ms: int = -1) -> float:
+	if reported_leg_ms >= 0:
+		_legs[sender] = reported_leg_ms
+	var their_leg_ms: int = _legs.get(sender, 0)
 	if authority.my_id == PongNetAuthority.SERVER_ID:
 		their_leg_ms = roundi(session.round_trip_s(sender) * 500.0)
+	elif sender == PongNetAuthority.SERVER_ID:
+		their_leg_ms = 0
 	return _clock_of(sender, their_leg_ms).observe(_local_now_s(), sent_at)
 
 
@@ -259,7 +267,7 @@ func _on_ball(
 		report.late += 1
 		return
 	report.states += 1
-	var age: float = _clock_of(sender, leg).observe(_local_now_s(), sent_at)
+	var age: float = _age_of(sender, sent_at, leg)
 	report.ages.append(age)
 	var target: Array[Vector3] = PongNetSmoother.extrapolate(_predictor, p, v, _gravity(), age)
 	_newest = [target[0], target[1], w]
@@ -273,7 +281,8 @@ func _on_pose(
 	velocity: Variant,
 	normal: Variant,
 	flags: Variant,
-	time_s: Variant
+	time_s: Variant,
+	leg_ms: Variant
 ) -> void:
 	if not _running:
 		return
@@ -284,6 +293,8 @@ func _on_pose(
 		reason = PongNetProtocol.check_int(flags, 0, 3, "flags")
 	if reason.is_empty():
 		reason = PongNetProtocol.check_float(time_s, 0.0, 1e7, "time")
+	if reason.is_empty():
+		reason = PongNetProtocol.check_int(leg_ms, 0, 10000, "leg")
 	if not reason.is_empty():
 		_reject(sender, "pose", reason)
 		return
@@ -300,7 +311,8 @@ func _on_pose(
 	var controller: PongController = match_node.controllers[pose_seat]
 	if not controller is PongNetRemotePlayer:
 		return
-	var age: float = _age_of(sender, sent_at)
+	var leg: int = leg_ms
+	var age: float = _age_of(sender, sent_at, leg)
 	(controller as PongNetRemotePlayer).set_pose(
 		match_node.now, minf(age, 0.5), pose[0], pose[1], pose[2], pose[3], pose_flags
 	)

@@ -9,7 +9,7 @@ extends RefCounted
 ## reliable traffic; lobby, hand-offs and rules share one reliable channel.
 
 ## Sent and compared at connect (auth): peers of another protocol version are refused.
-const VERSION: String = "hbp-net-1"
+const VERSION: String = "hbp-net-2"
 const DEFAULT_PORT: int = 7420
 ## The client's first message (its hello) goes on the channel of the version check. Godot
 ## 4.6 admits a client once each side has sent the other its "auth complete" on channel 0,

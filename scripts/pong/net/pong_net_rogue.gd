@@ -14,15 +14,16 @@ static func attack(net: PongNet) -> void:
 	print("PongNet rogue: sending bad messages")
 	# Wrong types.
 	play._ball.rpc("one", 2, 3.0, far, far, far, 0)
-	play._pose.rpc(0, "avatar", far, far, Vector3.UP, 0, 1.0)
+	play._pose.rpc(0, "avatar", far, far, Vector3.UP, 0, 1.0, 0)
 	# Out of range: a ball far outside the court, a non-finite velocity, a bad seat.
 	play._ball.rpc(play.authority.epoch, 1 << 20, 1.0, Vector3(99, 99, 99), far, far, 0)
 	play._ball.rpc(play.authority.epoch, 1 << 21, 1.0, far, Vector3(NAN, 0, 0), far, 0)
-	play._pose.rpc(7, far, Vector3.ZERO, Vector3.ZERO, Vector3.UP, 0, 1.0)
+	play._pose.rpc(7, far, Vector3.ZERO, Vector3.ZERO, Vector3.UP, 0, 1.0, 0)
+	play._pose.rpc(1 - not_mine, far, Vector3.ZERO, Vector3.ZERO, Vector3.UP, 0, 1.0, -5)
 	# No authority: a ball state while not the master, a pose for another's seat, a transfer
 	# (only the server issues them), a health loss while not the master, a hand-off request.
 	play._ball.rpc(play.authority.epoch, 1 << 22, 1.0, far, Vector3.ZERO, Vector3.ZERO, 0)
-	play._pose.rpc(not_mine, far, Vector3.ZERO, Vector3.ZERO, Vector3.UP, 0, 1.0)
+	play._pose.rpc(not_mine, far, Vector3.ZERO, Vector3.ZERO, Vector3.UP, 0, 1.0, 0)
 	play._transfer.rpc(play.authority.epoch + 50, 1, 0, me, far, Vector3.ZERO, Vector3.ZERO, 0)
 	play._hurt.rpc(0, not_mine, "floor")
 	play._request.rpc_id(1, play.authority.epoch + 7, 0, far, Vector3.ZERO, Vector3.ZERO)

@@ -49,10 +49,19 @@ func _pose(
 	velocity: Variant,
 	normal: Variant,
 	flags: Variant,
-	time_s: Variant
+	time_s: Variant,
+	leg_ms: Variant
 ) -> void:
 	_on_pose(
-		multiplayer.get_remote_sender_id(), seat, avatar, offset, velocity, normal, flags, time_s
+		multiplayer.get_remote_sender_id(),
+		seat,
+		avatar,
+		offset,
+		velocity,
+		normal,
+		flags,
+		time_s,
+		leg_ms
 	)
 
 
@@ -141,7 +150,8 @@ func _on_pose(
 	_velocity: Variant,
 	_normal: Variant,
 	_flags: Variant,
-	_time_s: Variant
+	_time_s: Variant,
+	_leg_ms: Variant
 ) -> void:
 	pass
 
