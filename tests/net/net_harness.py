@@ -225,6 +225,53 @@ def detection_s(host: dict, killed_at: float) -> float | None:
 # --- analysis of the reports ---
 
 
+# A peer quits at its own match clock, so a reliable message still in flight then (a hurt,
+# a shot, a mine) may be missing at the end of its lists.
+LAST_IN_FLIGHT = 2
+
+
+def agree(lists: list[list], what: str) -> list:
+    """Every peer's list is the longest one's, less at most LAST_IN_FLIGHT entries (as
+    multisets: two senders' messages may arrive in either order); returns the longest."""
+    longest = max(lists, key=len)
+    for seen in lists:
+        missing = list(longest)
+        for entry in seen:
+            assert entry in missing, (what, entry, longest)
+            missing.remove(entry)
+        assert len(missing) <= LAST_IN_FLIGHT, (what, missing)
+    return longest
+
+
+def floor_hurts(report: dict) -> list[tuple]:
+    return [tuple(h) for h in report["hurts"]]
+
+
+def weapon_hurts(report: dict) -> list[tuple]:
+    return [tuple(h) for h in report.get("extra", {}).get("weapons", {}).get("hurts", [])]
+
+
+def recounted_health(report: dict) -> list[int]:
+    """The health the peer's own hurts give, floor bounces ([epoch, seat, cause]) and weapon
+    hurts ([seat, cause, weapon seat, weapon id]), by the rules its report names."""
+    lost = [0] * len(report["health"])
+    for _, seat, cause in floor_hurts(report):
+        lost[seat] += report["damage"][cause]
+    for seat, cause, _, _ in weapon_hurts(report):
+        lost[seat] += report["damage"][cause]
+    return [max(report["start_health"] - x, 0) for x in lost]
+
+
+def check_health(reports: list[dict]) -> None:
+    """Every peer applied the same hurts (less what was in flight when it quit), and its
+    health is what its own hurts say."""
+    agree([floor_hurts(r) for r in reports], "floor hurts")
+    agree([weapon_hurts(r) for r in reports], "weapon hurts")
+    for report in reports:
+        assert report["health"] == recounted_health(report), (
+            report["peer"], report["health"], recounted_health(report))
+
+
 def transfers(report: dict) -> list[tuple[int, int, int, int]]:
     return [(t["epoch"], t["kind"], t["territory"], t["master"]) for t in report["transfers"]]
 

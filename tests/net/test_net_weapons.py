@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import pytest
 
-from net_harness import Network, Peer, run_match, workspace
+from net_harness import Network, Peer, agree, check_health, run_match, workspace
 
 WEAPONS_NETWORK = Network(50, 10, 0.05)
 REMOTE_NETWORK = Network(100, 0, 0.0)
@@ -29,10 +29,6 @@ WEAPON_SECONDS = 14
 # The computer fires and mines this many times as often as in a local game, so a short match
 # has enough of both to compare.
 WEAPON_RATE = 8
-LAST_IN_FLIGHT = 2
-# PongRules.DAMAGE.
-DAMAGE = {"floor": 1, "bullet": 3, "mine": 5}
-START_HEALTH = 99
 REMOTE_SECONDS = 12
 # Net work on the victim's hand over the effect, in allowances (see the module's text).
 PASSIVE_BOUND = 3.0
@@ -41,19 +37,6 @@ PUMPED_FLOOR = 5.0
 
 def _logs(peers: list[Peer]) -> str:
     return "\n".join(f"--- {p.name} ({p.report.get('exit')}):\n{p.log()[-1500:]}" for p in peers)
-
-
-def _agree(lists: list[list], what: str) -> list:
-    """Every peer's list is the longest one's, less at most LAST_IN_FLIGHT entries (as
-    multisets: two senders' messages may arrive in either order)."""
-    longest = max(lists, key=len)
-    for seen in lists:
-        missing = list(longest)
-        for entry in seen:
-            assert entry in missing, (what, entry, longest)
-            missing.remove(entry)
-        assert len(missing) <= LAST_IN_FLIGHT, (what, missing)
-    return longest
 
 
 def test_two_peers_with_weapons_agree_on_mines_hurts_and_health() -> None:
@@ -70,26 +53,15 @@ def test_two_peers_with_weapons_agree_on_mines_hurts_and_health() -> None:
             assert refused == {}, (peer.name, refused, dropped)
         assert relay["up"]["dropped"] > 0, relay
         weapons = [r["extra"]["weapons"] for r in reports]
-        mines = _agree([[tuple(m) for m in w["mines"]] for w in weapons], "mines")
-        shots = _agree([[tuple(s) for s in w["shots"]] for w in weapons], "shots")
-        hurts = _agree([[tuple(h) for h in w["hurts"]] for w in weapons], "hurts")
+        mines = agree([[tuple(m) for m in w["mines"]] for w in weapons], "mines")
+        shots = agree([[tuple(s) for s in w["shots"]] for w in weapons], "shots")
+        hurts = agree([[tuple(h) for h in w["hurts"]] for w in weapons], "hurts")
         # Enough happened to judge (each seat's computer fires every 0.3 s or so while the ball
         # is away, and places a mine about every 1.2 s: both seats, all four mines).
         assert len(shots) >= 4 and len(mines) >= 2, (shots, mines)
         assert {s[0] for s in shots} == {0, 1} and {m[0] for m in mines} == {0, 1}, (shots, mines)
-        # Each peer's health is what the hurts it applied say, floor bounces included; with
-        # the same lists, the same health.
-        for report, weapon in zip(reports, weapons):
-            lost = [0, 0]
-            for _, seat, cause in report["hurts"]:
-                lost[seat] += DAMAGE[cause]
-            for seat, cause, _, _ in weapon["hurts"]:
-                lost[seat] += DAMAGE[cause]
-            expected = [max(START_HEALTH - lost[s], 0) for s in (0, 1)]
-            assert report["health"] == expected, (report["peer"], report["health"], expected)
-        if all(len(w["hurts"]) == len(hurts) for w in weapons) and \
-                len({len(r["hurts"]) for r in reports}) == 1:
-            assert len({tuple(r["health"]) for r in reports}) == 1, [r["health"] for r in reports]
+        # Each peer's health is what the hurts it applied say, floor bounces included.
+        check_health(reports)
         print(f"shots {len(shots)}, mines {len(mines)}, weapon hurts {len(hurts)}, "
               f"health {[r['health'] for r in reports]}")
 

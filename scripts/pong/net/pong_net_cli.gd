@@ -208,6 +208,9 @@ func _finish(code: int, why: String) -> void:
 		data["seat"] = _seat
 		data["error"] = net.session.last_error
 		data["health"] = _health()
+		# The rules the health came from, so a reader can recount it from the hurts.
+		data["start_health"] = net.start_health
+		data["damage"] = PongRules.DAMAGE
 		data["controllers"] = _controllers()
 	if _profile != null:
 		data["contact"] = _profile.to_dict()
