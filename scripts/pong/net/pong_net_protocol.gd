@@ -55,19 +55,23 @@ const FLOOR_TOLERANCE_M: float = 0.01
 
 ## ENet timeouts on every peer (FACTS §1.7: (8, 500, 1000) noticed a SIGKILLed peer in
 ## 1.1 s on a LAN). ENet drops a peer when a reliable packet has been sent
-## log2(limit) + 1 times unacknowledged and the minimum has passed, or when it has waited the
-## hard cap. With a limit of 8 four tries were enough: on a 5 %-loss path (each try fails
-## about 10 % of the time, one leg or the other) one packet in ten thousand, so a lossy match
-## now and then ended live; 32 (ENet's default) needs six failed tries. The hard cap grows
-## with the round trip ([method timeout_max_ms]) so a slow lossy path gets five tries before
-## it: ENet doubles the wait after each try (1 + 2 + 4 + 8 = 15 retransmission timeouts of
-## about a round trip each for the fifth). On a LAN the cap stays near 1.5 s. Game-time
-## values: long frames (loading) must not trip them.
+## log2(limit) + 1 times unacknowledged and the minimum has passed, or, checked only when a
+## try times out, when it has waited the hard cap. It doubles the wait after each try, so
+## the fifth try times out 1 + 2 + 4 + 8 + 16 = 31 retransmission timeouts (RTO, a round
+## trip plus four deviations) after the first send, the sixth 63. Five tries on every path:
+## with four (a limit of 8) a 5 %-loss path (each try fails about 10 % of the time, one leg
+## or the other) lost one packet in ten thousand and a lossy match now and then ended live;
+## with five it is one in 100 000. The limit (ENet's default 32) would allow six, so the cap
+## decides: 16 RTOs is past the fourth timeout (15) and before the fifth (31). A cap of
+## 1.5 s plus 20 ms per ms of round trip let a LAN (RTO about 36 ms) wait for the sixth
+## timeout: 2.6 s to notice a killed peer. Game-time values: the cap also bounds how long a
+## frame may stall (the longest frame of a four-peer match on two cores: 170 ms), hence the
+## floor.
 const TIMEOUT_LIMIT: int = 32
 const TIMEOUT_MIN_MS: int = 500
-const TIMEOUT_MAX_MS: int = 1500
-## Extra hard cap per millisecond of round trip, and the ceiling, ms.
-const TIMEOUT_PER_RTT: float = 20.0
+## The cap in retransmission timeouts, its floor and ceiling, ms.
+const TIMEOUT_RTOS: float = 16.0
+const TIMEOUT_MAX_MS: int = 900
 const TIMEOUT_CEILING_MS: int = 8000
 ## A client connecting to nobody gives up after a few seconds (FACTS §1.7: 3.5 s with a
 ## 2 s cap; 3 s here so a lossy path does not fail the handshake).
@@ -194,12 +198,11 @@ static func check_pose(
 	return ""
 
 
-## ENet's hard cap on an unacknowledged packet for a path of round trip [param rtt_ms]:
-## 1.5 s on a LAN, a few round trips more on a slow path.
-static func timeout_max_ms(rtt_ms: float) -> int:
-	return clampi(
-		roundi(TIMEOUT_MAX_MS + TIMEOUT_PER_RTT * rtt_ms), TIMEOUT_MAX_MS, TIMEOUT_CEILING_MS
-	)
+## ENet's hard cap on an unacknowledged packet for a path of round trip [param rtt_ms]
+## with [param variance_ms] mean deviation, as ENet measures them.
+static func timeout_max_ms(rtt_ms: float, variance_ms: float) -> int:
+	var rto_ms: float = maxf(rtt_ms, 0.0) + 4.0 * maxf(variance_ms, 0.0)
+	return clampi(roundi(TIMEOUT_RTOS * rto_ms), TIMEOUT_MAX_MS, TIMEOUT_CEILING_MS)
 
 
 ## Why [param value] is not a unit [Vector3] (within 1 %), or "".

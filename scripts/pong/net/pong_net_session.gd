@@ -124,10 +124,11 @@ func _tune(id: int) -> void:
 	if packet_peer == null:
 		return
 	var rtt: float = packet_peer.get_statistic(ENetPacketPeer.PEER_ROUND_TRIP_TIME)
+	var variance: float = packet_peer.get_statistic(ENetPacketPeer.PEER_ROUND_TRIP_TIME_VARIANCE)
 	packet_peer.set_timeout(
 		PongNetProtocol.TIMEOUT_LIMIT,
 		PongNetProtocol.TIMEOUT_MIN_MS,
-		PongNetProtocol.timeout_max_ms(rtt)
+		PongNetProtocol.timeout_max_ms(rtt, variance)
 	)
 	packet_peer.throttle_configure(
 		PongNetProtocol.THROTTLE_INTERVAL_MS,
