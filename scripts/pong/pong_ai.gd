@@ -76,6 +76,9 @@ var _plan: Contact = null
 var _replan_in: float = 0.0
 var _resting_until: float = -1.0
 var _next_fire: float = 0.0
+# Mines owed: fills at the mine rate (each moment's share drawn at random) while the ball
+# is away; a mine when it reaches one.
+var _mine_credit: float = 0.0
 var _aim_noise: Vector3 = Vector3.ZERO
 var _hit_noise: Vector3 = Vector3.ZERO
 var _target: int = -1
@@ -89,6 +92,7 @@ func _init(p_player: int, court: PongCourt, reach: float, seed_value: int = 1) -
 	_predictor = PongPredictor.new(court)
 	_reach = reach
 	_rng.seed = seed_value
+	_mine_credit = _rng.randf()
 	targets = [PongCourt.opponent_of(player)]
 	intent.avatar = home()
 	intent.normal = _rest_normal()
@@ -304,8 +308,13 @@ func _weapons(now: float, dt: float, ball: Vector3, velocity: Vector3, opponent:
 			intent.normal = (aim + wobble).normalized()
 			intent.fire = true
 			_next_fire = now + fire_interval_s * _rng.randf_range(0.8, 1.6)
-	if use_weapons and far and _rng.randf() < mine_rate_per_s * dt:
-		intent.place_mine = true
+	# Mines come now and then, but never long overdue: with a coin toss per frame a player
+	# whose ball was away for two seconds in a whole match could place none.
+	if use_weapons and far:
+		_mine_credit += mine_rate_per_s * dt * _rng.randf_range(0.5, 1.5)
+		if _mine_credit >= 1.0:
+			_mine_credit -= 1.0
+			intent.place_mine = true
 
 
 func _rest_normal() -> Vector3:

@@ -13,7 +13,7 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-from net_harness import Network, run_match, transfers, workspace
+from net_harness import Network, engine_errors, run_match, transfers, workspace
 
 SECONDS = 10
 
@@ -31,8 +31,7 @@ def test_the_exported_server_referees_a_match_with_an_empty_environment() -> Non
         logs = "\n".join(f"--- {p.name}:\n{p.log()[-3000:]}" for p in peers)
         for peer in peers:
             assert peer.report.get("exit_code") == 0, logs
-            errors = [line for line in peer.log().splitlines()
-                      if line.startswith(("ERROR", "SCRIPT ERROR"))]
+            errors = engine_errors(peer)
             assert errors == [], (peer.name, errors[:5])
         assert "(dedicated server)" in server.log(), logs
         assert relay["up"]["delivered"] > 0 and relay["down"]["delivered"] > 0, relay

@@ -110,15 +110,44 @@ func test_a_weapon_hurt_counts_once_only_from_the_victims_peer_for_a_known_weapo
 	weapons.on_hurt(HOST, 1, "mine", 0, mine.id)
 	assert_eq(rules.get_health(1), 99, "the host does not judge the client's seat")
 	weapons.on_hurt(CLIENT, 1, "mine", 0, mine.id + 1)
-	assert_eq(rules.get_health(1), 99, "an unknown mine")
+	assert_eq(rules.get_health(1), 99, "an unknown mine (waiting for it)")
 	weapons.on_hurt(CLIENT, 1, "mine", 0, mine.id)
 	var lost: int = PongRules.DAMAGE[PongRules.CAUSE_MINE]
 	assert_eq(rules.get_health(1), 99 - lost, "the client's word on its seat")
 	assert_eq(mines.placed.size(), 0, "the mine went off here too")
 	weapons.on_hurt(CLIENT, 1, "mine", 0, mine.id)
 	assert_eq(rules.get_health(1), 99 - lost, "a mine hurts once")
-	assert_eq(_play.report.refused.get("weapon hurt", 0), 3)
+	assert_eq(_play.report.refused.get("weapon hurt", 0), 2)
+	weapons.expire_pending(true)
+	assert_eq(_play.report.refused.get("weapon hurt", 0), 3, "the unknown mine never came")
 	assert_eq(weapons.hurts, [[1, "mine", 0, mine.id]])
+
+
+func test_a_hurt_that_overtakes_its_weapon_waits_for_it() -> void:
+	var weapons: PongNetWeapons = _open()
+	if weapons == null:
+		return
+	var match_node: PongMatch = _play.match_node
+	# A third peer: it hears the host's word on seat 0 before the client's weapons.
+	var third: PongNetAuthority = PongNetAuthority.new(7, PackedInt64Array([HOST, CLIENT]))
+	_play.authority = third
+	weapons.authority = third
+	weapons.on_hurt(HOST, 0, "mine", 1, 0)
+	weapons.on_hurt(HOST, 0, "bullet", 1, 0)
+	assert_eq(match_node.rules.get_health(0), 99, "not before the weapons are known")
+	assert_eq(_play.report.refused.get("weapon hurt", 0), 0, "waiting, not refused")
+	weapons.on_mine(CLIENT, 1, 0, Vector3(0.3, 0.0, 1.5), "slow")
+	var after_mine: int = 99 - PongRules.DAMAGE[PongRules.CAUSE_MINE]
+	assert_eq(match_node.rules.get_health(0), after_mine, "the mine came: it went off")
+	assert_eq(match_node.mines.placed.size(), 0)
+	var host_avatar: Vector3 = match_node.avatar_of(0)
+	weapons.on_bullet(CLIENT, 1, 0, host_avatar + Vector3(0.0, 0.0, -1.0), Vector3.BACK, 10.0)
+	var lost: int = PongRules.DAMAGE[PongRules.CAUSE_BULLET]
+	assert_eq(match_node.rules.get_health(0), after_mine - lost, "the bullet came: it hit")
+	assert_true(match_node.bullets.flying.is_empty(), "a bullet that has hit does not fly")
+	assert_eq(weapons.hurts, [[0, "mine", 1, 0], [0, "bullet", 1, 0]])
+	weapons.expire_pending(true)
+	assert_eq(_play.report.refused.get("weapon hurt", 0), 0, "nothing left waiting")
 
 
 func test_only_the_seats_this_peer_drives_are_judged_here() -> void:

@@ -91,6 +91,8 @@ func begin(p_match: PongMatch, p_authority: PongNetAuthority, seats: PackedInt32
 ## Stops (the match is over, or the peer leaves).
 func end() -> void:
 	_running = false
+	if weapons != null:
+		weapons.expire_pending(true)
 	weapons = null
 
 
@@ -102,6 +104,7 @@ func is_running() -> bool:
 func frame(delta: float) -> void:
 	if not _running:
 		return
+	weapons.expire_pending()
 	if not _newest.is_empty() and not authority.is_master():
 		ball.correct(_newest[0], _newest[1], _newest[2])
 	_newest = []

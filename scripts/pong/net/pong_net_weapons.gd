@@ -17,7 +17,14 @@ extends PongWeaponReferee
 ## Every received message is checked: the protocol's types and ranges, the sender owns the
 ## seat (a shot, a mine) or the victim (a hurt), numbers are not reused, a seat's shots keep
 ## its cooldown, a hurt names a weapon this peer knows and hurts only once. A bad one is
-## dropped with a log line and counted.
+## dropped with a log line and counted. A hurt may overtake its weapon: a client's message
+## to all goes to each peer on its own until Godot has confirmed the node's path with all of
+## them, so the victim's word (one leg) can come before a shot held up on the other leg by a
+## lost packet. Such a hurt waits up to [constant PENDING_HURT_S] for its weapon.
+
+## How long a hurt waits for the weapon it names, seconds (ENet's fifth retransmission on
+## a 150 ms path comes after about 13 s; a weapon later than this is as good as lost).
+const PENDING_HURT_S: float = 3.0
 
 ## Where this peer's messages go out.
 var wire: PongNetWire = null
@@ -33,6 +40,8 @@ var hurts: Array[Array] = []
 # Weapon keys (see _key) this peer knows of, and those that have hurt someone.
 var _known: Dictionary[int, bool] = {}
 var _spent: Dictionary[int, bool] = {}
+# Hurts waiting for their weapon, by its key: [sender, victim, cause, seat, id, wall time].
+var _pending: Dictionary[int, Array] = {}
 # Per seat: the last shot's number and its sender's servo time.
 var _last_shot: PackedInt64Array = PackedInt64Array([-1, -1, -1, -1])
 var _last_shot_s: PackedFloat64Array = PackedFloat64Array([-INF, -INF, -INF, -INF])
@@ -137,6 +146,8 @@ func on_bullet(
 		_reject.call(sender, "bullet", reason)
 		return
 	_take_shot(shooter, shot, sent_at)
+	if _resolve_pending(_key("bullet", shooter, shot)):
+		return  # It has already hit its victim.
 	# Where it is by now: it flew on for the message's age.
 	var measured: float = _age_of.call(sender, sent_at)
 	var age: float = minf(measured, 0.5)
@@ -178,6 +189,7 @@ func on_mine(sender: int, seat: Variant, id: Variant, position: Variant, kind: V
 		return
 	_take_mine(mine)
 	match_node.mine_placed.emit(mine)
+	_resolve_pending(_key("mine", owner, number))
 
 
 func on_hurt(sender: int, victim: Variant, cause: Variant, seat: Variant, id: Variant) -> void:
@@ -194,6 +206,9 @@ func on_hurt(sender: int, victim: Variant, cause: Variant, seat: Variant, id: Va
 	if authority.owner_of(hurt_seat) != sender:
 		reason = "seat %d is not theirs to judge" % hurt_seat
 	var key: int = _key(what, weapon_seat, weapon_id)
+	if reason.is_empty() and not _known.has(key) and not _pending.has(key):
+		_pending[key] = [sender, victim, cause, seat, id, _now_s()]
+		return
 	if reason.is_empty() and not _known.has(key):
 		reason = "no %s %d of seat %d is known here" % [what, weapon_id, weapon_seat]
 	if reason.is_empty() and _spent.has(key):
@@ -222,3 +237,30 @@ func on_hurt(sender: int, victim: Variant, cause: Variant, seat: Variant, id: Va
 	var mine: PongMines.Mine = match_node.mines.take(weapon_seat, weapon_id)
 	if mine != null:
 		match_node.mine_exploded.emit(mine, hurt_seat)
+
+
+## Refuses the hurts that waited longer than [constant PENDING_HURT_S] for their weapon, or
+## all of them with [param all] (the match is over).
+func expire_pending(all: bool = false) -> void:
+	var now: float = _now_s()
+	for key: int in _pending.keys():
+		var hurt_args: Array = _pending[key]
+		var since: float = hurt_args[5]
+		if all or now - since > PENDING_HURT_S:
+			_pending.erase(key)
+			var what: String = "%s %d of seat %d" % [hurt_args[2], hurt_args[4], hurt_args[3]]
+			_reject.call(hurt_args[0], "weapon hurt", "no %s came here" % what)
+
+
+# Applies the hurt that waited for the weapon [param key] names; true if there was one.
+func _resolve_pending(key: int) -> bool:
+	if not _pending.has(key):
+		return false
+	var hurt_args: Array = _pending[key]
+	_pending.erase(key)
+	callv(&"on_hurt", hurt_args.slice(0, 5))
+	return _spent.has(key)
+
+
+static func _now_s() -> float:
+	return Time.get_ticks_usec() / 1e6
