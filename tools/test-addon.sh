@@ -5,8 +5,9 @@
 # it, the README's install steps are followed (list the extension, enable the plugin: its
 # autoload and editor_plugins entries, written as the plugin writes them), the project is
 # imported once, then run headless: the game itself asserts a steady push away from the wall
-# on every physics frame and an impact on hitting it (tests/addon/game/main.gd). Any error
-# output fails the test. The temporary folder is removed, also on failure.
+# on every physics frame, an impact on hitting it and the project's servo spin
+# (tests/addon/game/main.gd); the editor lists that setting with its range. Any error output
+# fails the test. The temporary folder is removed, also on failure.
 # Usage: tools/test-addon.sh   (after tools/build-addon.sh)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -61,6 +62,32 @@ set -e
 [[ $rc -eq 0 ]] || fail "the game exited $rc" "$run_log"
 [[ -z "$(errors "$run_log")" ]] || fail "the game printed errors" "$run_log"
 grep -E '^(impact|addon game):' "$run_log" | sed 's/^/test-addon: /'
+
+# What the plugin does in the editor: the Project Settings dialog lists the servo's spin with
+# its range. A second plugin, enabled after it, prints what the editor holds.
+mkdir -p "$GAME/addons/spin_check"
+printf '[plugin]\n\nname="spin_check"\ndescription=""\nauthor=""\nversion="1"\nscript="plugin.gd"\n' \
+	>"$GAME/addons/spin_check/plugin.cfg"
+cat >"$GAME/addons/spin_check/plugin.gd" <<'GD'
+@tool
+extends EditorPlugin
+
+
+func _ready() -> void:
+	for property: Dictionary in ProjectSettings.get_property_list():
+		if property["name"] == "haptics/servo/spin_us":
+			print("spin setting: range %s" % property["hint_string"])
+GD
+sed -i 's#^enabled=PackedStringArray("res://addons/haptics/plugin.cfg")$#enabled=PackedStringArray("res://addons/haptics/plugin.cfg", "res://addons/spin_check/plugin.cfg")#' \
+	"$GAME/project.godot"
+editor_log="$GAME/.editor.log"
+set +e
+timeout 120 "$ROOT/tools/godot" --headless --editor --path "$GAME" --quit-after 300 >"$editor_log" 2>&1
+set -e
+[[ -z "$(errors "$editor_log")" ]] || fail "the editor printed errors" "$editor_log"
+grep -q '^spin setting: range 0,2000,1,' "$editor_log" ||
+	fail "the editor does not list haptics/servo/spin_us with its range" "$editor_log"
+echo "test-addon: the editor lists haptics/servo/spin_us ($(grep -m1 '^spin setting' "$editor_log"))"
 
 # What the plugin does on enable: list the extension once, keeping what else is listed.
 echo "res://elsewhere/other.gdextension" >"$GAME/.godot/extension_list.cfg"

@@ -286,3 +286,19 @@ TEST_CASE("servo thread: spin and techniques show in the stats, a spin over half
 	const ServoStats stopped = engine.stats();
 	CHECK(stopped.pinned_cpu == running.pinned_cpu); // Still says what the run had.
 }
+
+TEST_CASE("servo thread: a spin of exactly half a period is accepted, a nanosecond more is refused") {
+	CHECK(max_spin_ns(1000.0) == 500'000);
+	CHECK(max_spin_ns(3000.0) == 166'666); // Half the period the loop rounds to (333 333 ns).
+	HapticsEngine engine;
+	REQUIRE(engine.open_simulated_device());
+	ServoOptions options;
+	options.rate_hz = 4000.0;
+	options.spin_ns = max_spin_ns(options.rate_hz) + 1;
+	CHECK(engine.start(options).code() == StatusCode::INVALID_ARGUMENT);
+	CHECK_FALSE(engine.is_running());
+	options.spin_ns = max_spin_ns(options.rate_hz);
+	REQUIRE(engine.start(options));
+	engine.stop();
+	CHECK(engine.stats().spin_s == doctest::Approx(125e-6));
+}

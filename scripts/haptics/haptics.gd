@@ -38,6 +38,11 @@ const SETTING_HAND_ACTIONS := "haptics/input/hand_actions"
 ## vector is fed into as action strengths, for games that read [method Input.get_vector] or
 ## [method Input.get_axis]; an empty list (the default): none.
 const SETTING_FEED_ACTIONS := "haptics/input/feed_actions"
+## The project setting for the servo's busy-wait before each deadline, in microseconds
+## (HapticsServer.start's [code]spin_us[/code]: 0 to half a period; by default the servo's
+## own, HapticsServer.DEFAULT_SPIN_US). More spin, steadier ticks, more of a core; the
+## README's "Servo timing" has the measurements.
+const SETTING_SPIN_US := "haptics/servo/spin_us"
 ## Fed strengths below this release the action (a centred device presses nothing).
 const FEED_THRESHOLD := 0.05
 ## The hand's actions when the project names none.
@@ -127,6 +132,7 @@ func _init() -> void:
 			)
 		)
 	servo = HapticsServo.new(_server, get_constant(&"DEFAULT_RATE_HZ"))
+	servo.default_spin_us = _spin_us_setting()
 	device = HapticsDevice.new(_server, servo)
 	# Read without get_constant(): an extension without the Pong renderer is not an error.
 	pong = HapticsPong.new(_server, servo, _constants.get(&"RENDER_MODE_PONG", -1))
@@ -145,8 +151,17 @@ func _ready() -> void:
 		# Nobody reads telemetry until someone drains it (HapticsServo.drain_telemetry turns
 		# it on): a game that never does is not counted telemetry drops.
 		configure("telemetry", {"enabled": false})
-	if _server != null and device.open(device.get_simulated_id()):
-		servo.start()
+	if _server != null and device.open(device.get_simulated_id()) and not servo.start():
+		if servo.default_spin_us != HapticsServo.SPIN_US_DEFAULT:
+			var refused: float = servo.default_spin_us
+			servo.default_spin_us = HapticsServo.SPIN_US_DEFAULT
+			push_error(
+				(
+					"Haptics: project setting %s = %s refused (above); using the servo's default."
+					% [SETTING_SPIN_US, refused]
+				)
+			)
+			servo.start()
 
 
 func _exit_tree() -> void:
@@ -187,6 +202,29 @@ func _physics_process(_delta: float) -> void:
 			# Only what this door pressed: a key held down stays pressed.
 			Input.action_release(action)
 			_fed.erase(action)
+
+
+## Lists the project settings this door reads in the Project Settings dialog, with their
+## defaults (the servo's) and ranges; a value the project has set is kept. The addon's editor
+## plugin calls it. Without the extension it does nothing: the defaults are the servo's.
+static func add_project_settings() -> void:
+	if not ClassDB.class_exists(SERVER_CLASS):
+		return
+	var spin_us: float = ClassDB.class_get_integer_constant(SERVER_CLASS, &"DEFAULT_SPIN_US")
+	# The slowest servo allows the longest spin; start() refuses more than the rate in use allows.
+	var longest_spin_us: float = (
+		0.5e6 / ClassDB.class_get_integer_constant(SERVER_CLASS, &"MIN_RATE_HZ")
+	)
+	if not ProjectSettings.has_setting(SETTING_SPIN_US):
+		ProjectSettings.set_setting(SETTING_SPIN_US, spin_us)
+	ProjectSettings.set_initial_value(SETTING_SPIN_US, spin_us)
+	var info: Dictionary = {
+		"name": SETTING_SPIN_US,
+		"type": TYPE_FLOAT,
+		"hint": PROPERTY_HINT_RANGE,
+		"hint_string": "0,%d,1,suffix:µs" % longest_spin_us,
+	}
+	ProjectSettings.add_property_info(info)
 
 
 ## True when the native extension is loaded and its server exists.
@@ -342,6 +380,21 @@ func _default(field_name: String) -> Variant:
 	return (
 		_config_fields[field_name]["default"] if _server != null else _OFFLINE_DEFAULTS[field_name]
 	)
+
+
+# The project's spin for the servo, or the servo's own when it sets none or a value that is
+# not a number (reported).
+func _spin_us_setting() -> float:
+	var value: Variant = ProjectSettings.get_setting(SETTING_SPIN_US, HapticsServo.SPIN_US_DEFAULT)
+	if value is float or value is int:
+		return float(value)
+	push_error(
+		(
+			"Haptics: project setting %s = %s is not a number; using the servo's default."
+			% [SETTING_SPIN_US, var_to_str(value)]
+		)
+	)
+	return HapticsServo.SPIN_US_DEFAULT
 
 
 func _follow_user_input() -> void:

@@ -7,6 +7,16 @@ extends RefCounted
 ## The servo started or stopped.
 signal changed
 
+## [method start] given this spin uses [member default_spin_us]; HapticsServer.start given
+## it uses the servo's own (HapticsServer.DEFAULT_SPIN_US).
+const SPIN_US_DEFAULT := -1.0
+
+## The busy-wait before each deadline, in microseconds, that [method start] uses when given
+## none. The [code]Haptics[/code] autoload sets it from the project setting
+## [code]haptics/servo/spin_us[/code], so restarts (a device reopened, a Pong match ended)
+## keep it.
+var default_spin_us: float = SPIN_US_DEFAULT
+
 var _server: Object = null
 var _default_rate_hz: float = 0.0
 
@@ -17,11 +27,17 @@ func _init(server: Object, default_rate_hz: float) -> void:
 
 
 ## Starts the servo thread at [param rate_hz] (HapticsServer.MIN_RATE_HZ to MAX_RATE_HZ;
-## 0: the default rate).
-func start(rate_hz: float = 0.0) -> bool:
+## 0: the default rate), busy-waiting [param spin_us] microseconds before each deadline (0 to
+## half a period; [constant SPIN_US_DEFAULT]: [member default_spin_us]). A refused value is
+## reported naming it, and the servo does not start.
+func start(rate_hz: float = 0.0, spin_us: float = SPIN_US_DEFAULT) -> bool:
 	if _server == null:
 		return false
-	var started: bool = _server.call(&"start", rate_hz if rate_hz > 0.0 else _default_rate_hz)
+	var started: bool = _server.call(
+		&"start",
+		rate_hz if rate_hz > 0.0 else _default_rate_hz,
+		default_spin_us if spin_us == SPIN_US_DEFAULT else spin_us
+	)
 	changed.emit()
 	return started
 

@@ -14,6 +14,10 @@ constexpr uint64_t CPU_SAMPLE_TICKS = 1000;
 
 } // namespace
 
+int64_t max_spin_ns(double p_rate_hz) {
+	return std::llround(1e9 / p_rate_hz) / 2;
+}
+
 ServoLoop::ServoLoop(ServoPipeline &r_pipeline, ServoChannels &r_channels) :
 		pipeline_(r_pipeline), channels_(r_channels) {}
 
@@ -37,10 +41,10 @@ Status ServoLoop::start(HapticDevice *p_device, const ServoOptions &p_options) {
 	if (state() == ServoState::RUNNING) {
 		return Status::error(StatusCode::INVALID_STATE, "the servo is already running");
 	}
-	const int64_t nominal_period_ns = std::llround(1e9 / p_options.rate_hz);
-	if (p_options.spin_ns < 0 || p_options.spin_ns > nominal_period_ns / 2) {
+	const int64_t max_spin = max_spin_ns(p_options.rate_hz);
+	if (p_options.spin_ns < 0 || p_options.spin_ns > max_spin) {
 		return Status::error(StatusCode::INVALID_ARGUMENT, "spin_ns must be in [0, %lld] (half a period), got %lld",
-				static_cast<long long>(nominal_period_ns / 2), static_cast<long long>(p_options.spin_ns));
+				static_cast<long long>(max_spin), static_cast<long long>(p_options.spin_ns));
 	}
 	stop(); // Joins a thread that ended on a fault.
 	device_ = p_device;
@@ -83,7 +87,7 @@ void ServoLoop::run() {
 	const int64_t period_ns = std::llround(1e9 / options_.rate_hz);
 	const double dt_s = static_cast<double>(period_ns) * S_PER_NS;
 	const bool naive = options_.scheduling == LoopScheduling::NAIVE_SLEEP;
-	const int64_t spin_ns = naive ? 0 : std::clamp<int64_t>(options_.spin_ns, 0, period_ns / 2);
+	const int64_t spin_ns = naive ? 0 : std::clamp<int64_t>(options_.spin_ns, 0, max_spin_ns(options_.rate_hz));
 	int64_t deadline_ns = monotonic_now_ns() + period_ns;
 	int64_t previous_wake_ns = -1;
 	uint64_t tick_index = 0;

@@ -56,6 +56,10 @@ struct ServoOptions {
 	static constexpr int64_t DEFAULT_SPIN_NS = 50'000;
 };
 
+// The longest spin_ns a servo at p_rate_hz (a valid rate) accepts: half its period, so a tick
+// always has the other half to run in.
+int64_t max_spin_ns(double p_rate_hz);
+
 class ServoLoop {
 public:
 	ServoLoop(ServoPipeline &r_pipeline, ServoChannels &r_channels);

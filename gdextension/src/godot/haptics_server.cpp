@@ -1,6 +1,7 @@
 #include "godot/haptics_server.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/config_fields.h"
 #include "core/coordinates.h"
@@ -15,6 +16,8 @@
 namespace haptics::binding {
 
 namespace {
+
+constexpr int64_t NS_PER_US = 1000;
 
 gd::Dictionary to_dictionary(const DeviceInfo &p_device) {
 	gd::Dictionary d;
@@ -55,7 +58,8 @@ void HapticsServer::bind_methods(gd::ClassBinder<HapticsServer> &r_binder) {
 	r_binder.bind_method("set_hand_target", &S::set_hand_target, { "target_m" });
 	r_binder.bind_method("get_hand_target", &S::get_hand_target);
 	r_binder.bind_method("set_simulated_plugged", &S::set_simulated_plugged, { "plugged" });
-	r_binder.bind_method("start", &S::start, { "rate_hz" }, { gd::Variant(DEFAULT_RATE_HZ) });
+	r_binder.bind_method("start", &S::start, { "rate_hz", "spin_us" },
+			{ gd::Variant(DEFAULT_RATE_HZ), gd::Variant(SPIN_US_SERVO_DEFAULT) });
 	r_binder.bind_method("stop", &S::stop);
 	r_binder.bind_method("is_running", &S::is_running);
 	r_binder.bind_method("step", &S::step, { "dt" });
@@ -89,6 +93,8 @@ void HapticsServer::bind_methods(gd::ClassBinder<HapticsServer> &r_binder) {
 	r_binder.bind_constant("", "MIN_RATE_HZ", static_cast<int64_t>(MIN_RATE_HZ));
 	r_binder.bind_constant("", "MAX_RATE_HZ", static_cast<int64_t>(MAX_RATE_HZ));
 	r_binder.bind_constant("", "DEFAULT_RATE_HZ", static_cast<int64_t>(DEFAULT_RATE_HZ));
+	static_assert(ServoOptions::DEFAULT_SPIN_NS % NS_PER_US == 0, "DEFAULT_SPIN_US is an integer constant");
+	r_binder.bind_constant("", "DEFAULT_SPIN_US", ServoOptions::DEFAULT_SPIN_NS / NS_PER_US);
 	r_binder.bind_constant("", "TELEMETRY_QUEUE_CAPACITY", static_cast<int64_t>(TELEMETRY_QUEUE_CAPACITY));
 	r_binder.bind_constant("RenderMode", "RENDER_MODE_MOVEMENT", static_cast<int64_t>(RenderMode::MOVEMENT));
 	r_binder.bind_constant("RenderMode", "RENDER_MODE_CONSTRAINT", static_cast<int64_t>(RenderMode::CONSTRAINT));
@@ -249,8 +255,25 @@ bool HapticsServer::set_simulated_plugged(bool p_plugged) {
 	return false;
 }
 
-bool HapticsServer::start(double p_rate_hz) {
-	return report("start", engine_.start(p_rate_hz));
+bool HapticsServer::start(double p_rate_hz, double p_spin_us) {
+	ServoOptions options;
+	options.rate_hz = p_rate_hz;
+	if (p_spin_us != SPIN_US_SERVO_DEFAULT) {
+		// The spin's bound depends on the rate: a bad rate is reported as itself.
+		const Status rate = validate_rate(p_rate_hz);
+		if (!rate) {
+			return report("start", rate);
+		}
+		const double max_spin_us = static_cast<double>(max_spin_ns(p_rate_hz)) / NS_PER_US;
+		if (!(p_spin_us >= 0.0 && p_spin_us <= max_spin_us)) { // NaN fails both.
+			return report("start",
+					Status::error(std::isfinite(p_spin_us) ? StatusCode::OUT_OF_RANGE : StatusCode::INVALID_ARGUMENT,
+							"spin_us must be in [0, %g] (half a period at %g Hz), or %g for the servo's default (got %g)",
+							max_spin_us, p_rate_hz, SPIN_US_SERVO_DEFAULT, p_spin_us));
+		}
+		options.spin_ns = std::llround(p_spin_us * NS_PER_US);
+	}
+	return report("start", engine_.start(options));
 }
 
 void HapticsServer::stop() {

@@ -53,7 +53,10 @@ public:
 	bool set_simulated_plugged(bool p_plugged);
 
 	// --- Rendering ---
-	bool start(double p_rate_hz);
+	// p_spin_us: the busy-wait before each deadline in microseconds, [0, half a period]
+	// (max_spin_ns), or SPIN_US_SERVO_DEFAULT for ServoOptions' own.
+	bool start(double p_rate_hz, double p_spin_us);
+	static constexpr double SPIN_US_SERVO_DEFAULT = -1.0;
 	void stop();
 	bool is_running() const;
 	// Manual mode: one servo tick of p_dt seconds on the calling thread (deterministic).

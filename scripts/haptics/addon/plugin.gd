@@ -4,10 +4,18 @@ extends EditorPlugin
 ## lists the native extension in [code].godot/extension_list.cfg[/code] (so the next start
 ## and import load it first); disabling it removes the autoload. The node and resource
 ## types (HapticProbe, HapticMaterial, HapticWater) are global script classes: they are in
-## the Create dialogs while the addon's folder is in the project.
+## the Create dialogs while the addon's folder is in the project. While it is enabled, the
+## Project Settings dialog lists the settings the autoload reads (haptics/servo/spin_us) with
+## their defaults and ranges.
 
 const AUTOLOAD := "Haptics"
 const EXTENSION_LIST := "res://.godot/extension_list.cfg"
+
+
+func _enter_tree() -> void:
+	# Property hints are not saved with the project: they are added in every editor session.
+	var folder: String = (get_script() as Script).resource_path.get_base_dir()
+	load(folder.path_join("haptics.gd")).call(&"add_project_settings")
 
 
 func _enable_plugin() -> void:

@@ -2,8 +2,8 @@ extends Node2D
 ## The level (a TileMapLayer floor next to a tile wall, built here) and the addon test's
 ## driver: the device's hand is held to the right, the game's own input actions are fed from
 ## it, the player runs into the wall. Prints the result and quits with 0 when, on every
-## physics frame at the wall, the normal force pushed away from the wall steadily, and an
-## impact was felt on hitting it; 1 otherwise.
+## physics frame at the wall, the normal force pushed away from the wall steadily, an impact
+## was felt on hitting it and the servo spins what the project set; 1 otherwise.
 
 const TILE := 32
 const FLOOR_ROW := 12
@@ -54,6 +54,9 @@ func _finish() -> void:
 		failures.append("the extension is not loaded")
 	if _pushes.size() < 60:
 		failures.append("only %d frames at the wall" % _pushes.size())
+	var spin_us: float = Haptics.servo.get_stats().get("spin_us", -1.0)
+	if spin_us != ProjectSettings.get_setting("haptics/servo/spin_us"):
+		failures.append("the servo spins %s us, not the project's haptics/servo/spin_us" % spin_us)
 	var weakest: float = INF
 	var strongest: float = 0.0
 	for push: float in _pushes:
