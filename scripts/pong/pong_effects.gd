@@ -19,6 +19,9 @@ const REMOTE_PULL: float = 0.7
 
 ## Ramp in and out, seconds (the servo's, from the configuration).
 var ramp_s: float = 0.25
+## The paddle's reach from its avatar, metres: no effect moves a paddle beyond it, as no
+## force moves the device's stylus out of its workspace.
+var reach: float = INF
 
 # One slot per seat of the largest court (four players).
 var _kind: PackedStringArray = PackedStringArray(["", "", "", ""])
@@ -91,12 +94,14 @@ func affect_offset(player: int, offset: Vector3, owner_offset: Vector3) -> Vecto
 	var amount: float = strength(player)
 	match _kind[player]:
 		"heavy":
-			return offset + Vector3.DOWN * HEAVY_SAG_M * amount
+			return (offset + Vector3.DOWN * HEAVY_SAG_M * amount).limit_length(reach)
 		"remote":
 			# The owner's offset in its own device frame, mirrored left-right, then in ours.
 			var owner: int = _owner[player]
-			var local: Vector3 = PongCourt.side_rotation(owner).inverse() * owner_offset
+			var local: Vector3 = (
+				PongCourt.side_rotation(owner).inverse() * owner_offset.limit_length(reach)
+			)
 			local.x = -local.x
 			var target: Vector3 = PongCourt.side_rotation(player) * local
-			return offset.lerp(target, REMOTE_PULL * amount)
+			return offset.lerp(target, REMOTE_PULL * amount).limit_length(reach)
 	return offset

@@ -108,6 +108,7 @@ func start() -> bool:
 	referee.players = court.players
 	var radius: float = Haptics.device.get_workspace_radius()
 	reach = radius * court.workspace_scale
+	effects.reach = reach
 	local_player = 0 if mode != Mode.DEMO and _device_usable() else -1
 	_device_orientation = Haptics.device.get_capabilities().get("has_orientation", false) == true
 	controllers.clear()
@@ -412,7 +413,13 @@ func _send_input() -> void:
 		if controller.kinematic:
 			var effect_owner: int = effects.owner_of(player)
 			var owner_offset: Vector3 = Vector3.ZERO
-			if effect_owner >= 0:
+			if effect_owner >= 0 and controllers[effect_owner].kinematic:
+				# The owner's pose as given, not the servo's paddle carried on by its velocity:
+				# a remote owner's velocity includes what this pull did to its own paddle, so
+				# two players with remote mines on each other across the network rang with the
+				# carried-on poses in the loop (offsets of 3 m and more).
+				owner_offset = controllers[effect_owner].intent.paddle_offset
+			elif effect_owner >= 0:
 				owner_offset = snapshot.paddle_centers[effect_owner] - avatar_of(effect_owner)
 			entry["paddle_offset"] = effects.affect_offset(
 				player, controller.intent.paddle_offset, owner_offset

@@ -26,6 +26,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[2]
 GODOT = ROOT / "tools" / "godot"
 RELAY = ROOT / "tools" / "net" / "udp_relay.py"
+FAILURES = ROOT / ".build" / "net-failures"
 # Generous bounds for a loaded 2-core machine (never timing assertions).
 START_PATIENCE_S = 30.0
 EXIT_PATIENCE_S = 40.0
@@ -143,9 +144,18 @@ class Network:
 
 @contextmanager
 def workspace():
+    """A scratch folder for one match's logs and reports, removed afterwards; when the test
+    fails it is moved to .build/net-failures/ instead, since a failure seen once in several
+    runs can only be understood from the peers' own logs."""
     path = Path(tempfile.mkdtemp(prefix="pong-net-"))
     try:
         yield path
+    except BaseException:
+        kept = FAILURES / path.name
+        kept.parent.mkdir(parents=True, exist_ok=True)
+        shutil.move(str(path), str(kept))
+        print(f"the failed match's logs and reports: {kept}", file=sys.stderr)
+        raise
     finally:
         shutil.rmtree(path, ignore_errors=True)
 

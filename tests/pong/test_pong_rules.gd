@@ -143,6 +143,20 @@ func test_heavy_sags_and_remote_pulls_toward_the_owners_mirror_image() -> void:
 	assert_almost_eq(pulled, Vector3(-0.3, 0.1, 0.0) * PongEffects.REMOTE_PULL, 1e-6)
 
 
+func test_no_effect_moves_a_paddle_beyond_its_reach() -> void:
+	var effects: PongEffects = PongEffects.new()
+	effects.ramp_s = 0.0
+	effects.reach = 0.5
+	effects.start(0, "remote", 4.0, 1)
+	var pulled: Vector3 = effects.affect_offset(0, Vector3.ZERO, Vector3.DOWN * 4.65)
+	assert_almost_eq(pulled, Vector3.DOWN * 0.5 * PongEffects.REMOTE_PULL, 1e-6, "target held")
+	pulled = effects.affect_offset(0, Vector3.DOWN * 3.0, Vector3.DOWN * 4.65)
+	assert_almost_eq(pulled.length(), 0.5, 1e-6, "the paddle held too")
+	effects.start(0, "heavy", 4.0, 1)
+	var sagged: Vector3 = effects.affect_offset(0, Vector3(0.0, -0.45, 0.0), Vector3.ZERO)
+	assert_almost_eq(sagged, Vector3.DOWN * 0.5, 1e-6)
+
+
 func test_bullets_hit_the_other_avatar_and_respect_the_cooldown() -> void:
 	var bullets: PongBullets = PongBullets.new()
 	var avatars: Array[Vector3] = [Vector3(0, 0.9, 2), Vector3(0.1, 0.9, -2)]

@@ -168,10 +168,20 @@ func _on_peer_left(peer: int) -> void:
 	players.erase(peer)
 	status_changed.emit("%s left" % name_left)
 	if session.is_server:
-		_broadcast_lobby()
-		if play.is_running():
-			_take_over(peer)
+		# At the end of the frame: ENet empties every peer whose goodbye came in the same
+		# poll at once but Godot reports them one by one, so a message to all sent from here
+		# could go to a peer already gone ("Unable to send packet on channel 4, max
+		# channels: 0" when the clients of a finished match quit together).
+		_after_peer_left.call_deferred(peer)
 	lobby_changed.emit()
+
+
+func _after_peer_left(peer: int) -> void:
+	if not session.is_server:
+		return
+	_broadcast_lobby()
+	if play.is_running():
+		_take_over(peer)
 
 
 # Server: the peer's seats go to the computer; a ball it was master of is taken over.

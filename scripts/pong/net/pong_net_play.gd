@@ -63,6 +63,9 @@ var _running: bool = false
 ## A stalled peer takes dozens at once; only the newest becomes a command to the servo
 ## (whose queue holds 64).
 var _newest: Array[Vector3] = []
+## The ball's velocity as its master last streamed it (Vector3.INF: none since the last
+## transfer): what the server judges a stall by while it follows.
+var _master_velocity: Vector3 = Vector3.INF
 
 
 ## Starts following [param p_match] (already started) with [param p_authority].
@@ -81,6 +84,7 @@ func begin(p_match: PongMatch, p_authority: PongNetAuthority, seats: PackedInt32
 	_last_sent_time = -INF
 	_last_pose_time = -INF
 	_newest = []
+	_master_velocity = Vector3.INF
 	_running = true
 
 
@@ -153,7 +157,13 @@ func _send_poses(snapshot: PongSnapshot) -> void:
 
 func _referee(sim_dt: float) -> void:
 	var rules: PongRules = match_node.rules
-	if rules.is_over() or not match_node.referee.update(sim_dt, match_node.snapshot.ball_velocity):
+	var velocity: Vector3 = match_node.snapshot.ball_velocity
+	if not authority.is_master() and _master_velocity != Vector3.INF:
+		# A follower's ball falls between the master's states and is lifted back by each
+		# correction: at rest on the floor it never looked still here, and a ball that
+		# had rolled dead 150 ms away went unserved for five seconds.
+		velocity = _master_velocity
+	if rules.is_over() or not match_node.referee.update(sim_dt, velocity):
 		return
 	var receiver: int = match_node.next_receiver()
 	var aim: Vector3 = match_node.avatar_of(receiver)
@@ -271,6 +281,7 @@ func _on_ball(
 	report.ages.append(age)
 	var target: Array[Vector3] = PongNetSmoother.extrapolate(_predictor, p, v, _gravity(), age)
 	_newest = [target[0], target[1], w]
+	_master_velocity = v
 
 
 func _on_pose(
@@ -381,6 +392,7 @@ func _on_transfer(
 		return
 	report.transfer(authority.history[-1])
 	_newest = []
+	_master_velocity = Vector3.INF
 	var state: Array[Vector3] = [position, velocity, spin]
 	var sent_age_ms: int = age_ms
 	var age: float = (sent_age_ms + _my_leg_ms()) / 1000.0
