@@ -5,8 +5,9 @@
 # it, the README's install steps are followed (list the extension, enable the plugin: its
 # autoload and editor_plugins entries, written as the plugin writes them), the project is
 # imported once, then run headless: the game itself asserts a steady push away from the wall
-# on every physics frame and an impact on hitting it (tests/addon/game/main.gd). Any error
-# output fails the test. The temporary folder is removed, also on failure.
+# on every physics frame, an impact on hitting it, and the wall no longer a contact once
+# walked away from (tests/addon/game/main.gd). Any error output fails the test. The
+# temporary folder is removed, also on failure.
 # Usage: tools/test-addon.sh   (after tools/build-addon.sh)
 set -euo pipefail
 cd "$(dirname "$0")/.."
