@@ -260,6 +260,34 @@ func test_a_tile_takes_its_material_from_the_tile_set_custom_data() -> void:
 	assert_almost_eq(ground.get("stiffness_n", 0.0), K, 1e-6, "the floor: the default")
 
 
+func test_a_flipped_alternative_tile_feels_like_its_base_tile_unless_given_its_own() -> void:
+	var material: HapticMaterial = _wall_material()
+	var source: TileSetAtlasSource = layer.tile_set.get_source(0)
+	var base: TileData = source.get_tile_data(Vector2i(1, 0), 0)
+	var alternative: int = source.create_alternative_tile(Vector2i(1, 0))
+	var flipped: TileData = source.get_tile_data(Vector2i(1, 0), alternative)
+	flipped.flip_h = true
+	flipped.add_collision_polygon(0)
+	flipped.set_collision_polygon_points(0, 0, base.get_collision_polygon_points(0, 0))
+	for row: int in range(FLOOR_ROW - 4, FLOOR_ROW):
+		layer.set_cell(Vector2i(WALL_COLUMN, row), 0, Vector2i(1, 0), alternative)
+	assert_gt(await _run_to_wall(150), -1, "the runner reached the flipped wall")
+	var wall: Dictionary = {}
+	for contact: Dictionary in probe.last_frame.get("contacts", []):
+		if contact["normal"] == Vector2.LEFT:
+			wall = contact
+	assert_almost_eq(wall.get("stiffness_n", 0.0), material.stiffness, 1e-6, "the base tile's")
+	assert_almost_eq(wall.get("friction_n", 0.0), material.friction, 1e-6, "the base tile's")
+	var own: HapticMaterial = HapticMaterial.new()
+	own.stiffness = 7.0
+	flipped.set_custom_data(HapticMaterial.TILE_LAYER, own)
+	var cell: Vector2i = Vector2i(WALL_COLUMN, FLOOR_ROW - 1)
+	assert_eq(HapticMaterial.of_tile(layer, cell), own, "the alternative's own material wins")
+	base.set_custom_data(HapticMaterial.TILE_LAYER, null)
+	flipped.set_custom_data(HapticMaterial.TILE_LAYER, null)
+	assert_null(HapticMaterial.of_tile(layer, cell), "neither has one: none")
+
+
 func test_a_physics_material_stands_in_when_no_haptic_material_is_given() -> void:
 	var physics: PhysicsMaterial = PhysicsMaterial.new()
 	physics.friction = 0.4
