@@ -138,7 +138,8 @@ addon: import build-release
 
 ## test-addon: a small platformer we did not build it into gets the addon the README's way
 ## (temporary folder): one import without a crash, then a steady push from a tile wall on
-## every physics frame, an impact, no error output (tools/test-addon.sh)
+## every physics frame of a slow run-up's push, an impact, the wall let go of once walked
+## away from, no error output (tools/test-addon.sh)
 test-addon: addon
 	@tools/test-addon.sh
 

@@ -5,9 +5,11 @@
 # it, the README's install steps are followed (list the extension, enable the plugin: its
 # autoload and editor_plugins entries, written as the plugin writes them), the project is
 # imported once, then run headless: the game itself asserts a steady push away from the wall
-# on every physics frame, an impact on hitting it and the project's servo spin
-# (tests/addon/game/main.gd); the editor lists that setting with its range. Any error output
-# fails the test. The temporary folder is removed, also on failure.
+# on every physics frame, an impact on hitting it, the wall no longer a contact once walked
+# away from, and the project's servo spin (tests/addon/game/main.gd); the editor lists that
+# setting with its range. Any error output fails the test. Then the plugin's static parts:
+# its haptics/input/* settings and the extension list. The temporary folder is removed, also
+# on failure.
 # Usage: tools/test-addon.sh   (after tools/build-addon.sh)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -88,6 +90,44 @@ set -e
 grep -q '^spin setting: range 0,2000,1,' "$editor_log" ||
 	fail "the editor does not list haptics/servo/spin_us with its range" "$editor_log"
 echo "test-addon: the editor lists haptics/servo/spin_us ($(grep -m1 '^spin setting' "$editor_log"))"
+
+# What the plugin does with the haptics/input/* settings when the editor loads it and when it
+# is disabled: this game's feed_actions, and no hand_actions (as if never set).
+cat >"$GAME/settings_check.gd" <<'GD'
+extends SceneTree
+
+const HAND := "haptics/input/hand_actions"
+const FEED := "haptics/input/feed_actions"
+
+
+func _init() -> void:
+	var plugin: Script = load("res://addons/haptics/plugin.gd")
+	var haptics: Script = load("res://addons/haptics/haptics.gd")
+	var own: PackedStringArray = ProjectSettings.get_setting(FEED)
+	ProjectSettings.set_setting(HAND, null)
+	var failures: PackedStringArray = []
+	plugin.call(&"register_settings", haptics)
+	if ProjectSettings.get_setting(HAND) != PackedStringArray(haptics.DEFAULT_HAND_ACTIONS):
+		failures.append("hand_actions not added at its default")
+	if ProjectSettings.get_setting(FEED) != own:
+		failures.append("the project's feed_actions not kept")
+	if ProjectSettings.property_get_revert(FEED) != PackedStringArray():
+		failures.append("feed_actions does not revert to none")
+	plugin.call(&"unregister_settings", haptics)
+	if ProjectSettings.has_setting(HAND):
+		failures.append("hand_actions, at its default, not removed")
+	if ProjectSettings.get_setting(FEED) != own:
+		failures.append("the project's feed_actions not kept on disabling")
+	for failure: String in failures:
+		printerr(failure)
+	quit(1 if not failures.is_empty() else 0)
+GD
+settings_log="$GAME/.settings.log"
+timeout 60 "$ROOT/tools/godot" --headless --path "$GAME" -s res://settings_check.gd >"$settings_log" 2>&1 ||
+	fail "the plugin's settings registration" "$settings_log"
+# (The autoload starting without hand_actions warns that this game lacks the default ones.)
+! grep -qE '^(ERROR|SCRIPT ERROR)' "$settings_log" || fail "the settings check printed errors" "$settings_log"
+echo "test-addon: the plugin lists haptics/input/* at their defaults, keeping the project's values"
 
 # What the plugin does on enable: list the extension once, keeping what else is listed.
 echo "res://elsewhere/other.gdextension" >"$GAME/.godot/extension_list.cfg"

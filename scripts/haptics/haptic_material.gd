@@ -7,7 +7,8 @@ extends Resource
 ## Assign it to a body by giving the body a [code]haptic_material[/code] property (scripted
 ## bodies such as crates) or a [code]haptic_material[/code] metadata entry (any body, set
 ## in the inspector). A [TileMapLayer]'s tiles take theirs from the TileSet's custom data
-## layer named [code]haptic_material[/code] (type Object), per tile. A body or tile without
+## layer named [code]haptic_material[/code] (type Object), per tile; an alternative tile
+## (flipped, rotated) left without one takes its base tile's. A body or tile without
 ## one but with a [PhysicsMaterial] feels like [method from_physics_material] of it; anything
 ## else feels like the probe's default material.
 
@@ -53,8 +54,9 @@ static func of(body: Object) -> HapticMaterial:
 
 
 ## The material of the tile at [param cell] of [param tiles]: the TileSet's
-## [constant TILE_LAYER] custom data, else the physics material of the first physics layer
-## the tile has a collision polygon in (mapped), else [code]null[/code].
+## [constant TILE_LAYER] custom data of the tile, else (an alternative tile) of its base
+## tile, else the physics material of the first physics layer the tile has a collision
+## polygon in (mapped), else [code]null[/code].
 static func of_tile(tiles: TileMapLayer, cell: Vector2i) -> HapticMaterial:
 	if tiles == null or tiles.tile_set == null:
 		return null
@@ -65,6 +67,16 @@ static func of_tile(tiles: TileMapLayer, cell: Vector2i) -> HapticMaterial:
 		var custom: Variant = data.get_custom_data(TILE_LAYER)
 		if custom is HapticMaterial:
 			return custom
+		# Flipped and rotated alternatives are tiles of their own with their own custom data,
+		# most often left empty: they feel like the tile they were made from.
+		var source: TileSetAtlasSource = (
+			tiles.tile_set.get_source(tiles.get_cell_source_id(cell)) as TileSetAtlasSource
+		)
+		if source != null and tiles.get_cell_alternative_tile(cell) != 0:
+			var base: TileData = source.get_tile_data(tiles.get_cell_atlas_coords(cell), 0)
+			custom = base.get_custom_data(TILE_LAYER)
+			if custom is HapticMaterial:
+				return custom
 	for layer: int in tiles.tile_set.get_physics_layers_count():
 		var physics: PhysicsMaterial = tiles.tile_set.get_physics_layer_physics_material(layer)
 		if physics != null and data.get_collision_polygons_count(layer) > 0:

@@ -56,6 +56,8 @@ var _shape: CollisionShape2D = null
 var _max_contacts: int = 0
 var _max_resting: int = 0
 var _floor_entry: Dictionary = {}
+# The walls and ceilings (every slide contact but the floor) of the last frame.
+var _sides: Array[Dictionary] = []
 
 
 func _ready() -> void:
@@ -184,18 +186,17 @@ func _collisions(above: Array[Dictionary]) -> Array[Dictionary]:
 	var out: Array[Dictionary] = []
 	if _body is CharacterBody2D:
 		var character: CharacterBody2D = _body
+		var sides: Array[Dictionary] = []
+		var reported: Dictionary[String, bool] = {}
 		for i: int in character.get_slide_collision_count():
-			var collision: KinematicCollision2D = character.get_slide_collision(i)
-			var entry: Dictionary = _entry(
-				collision.get_collider(),
-				collision.get_collider_rid(),
-				collision.get_collider_shape_index(),
-				collision.get_position(),
-				collision.get_normal()
-			)
+			var entry: Dictionary = _slide_entry(character.get_slide_collision(i))
 			var floor_normal: Vector2 = character.get_floor_normal()
-			if character.is_on_floor() and collision.get_normal().is_equal_approx(floor_normal):
+			var normal: Vector2 = entry["normal"]
+			if character.is_on_floor() and normal.is_equal_approx(floor_normal):
 				_floor_entry = entry
+			else:
+				sides.append(entry)
+			reported[entry["key"]] = true
 			out.append(entry)
 		# Pressed into a wall, move_and_slide often reports only the wall although the body
 		# still stands: the floor it last reported stays a contact while it does.
@@ -203,6 +204,19 @@ func _collisions(above: Array[Dictionary]) -> Array[Dictionary]:
 			_floor_entry = {}
 		elif not _floor_entry.is_empty() and is_instance_valid(_floor_entry["collider"]):
 			out.append(_floor_entry)
+		# A body whose speed into a wall builds up from 0 again after each hit (move_toward)
+		# moves too little on some frames to reach it: move_and_slide reports no wall although
+		# the body stays against it. A wall or ceiling of the last frame stays a contact while
+		# the body still touches the same shape.
+		for entry: Dictionary in _sides:
+			if reported.has(entry["key"]):
+				continue
+			var kept: Dictionary = _still_touching(character, entry)
+			if not kept.is_empty():
+				reported[kept["key"]] = true
+				sides.append(kept)
+				out.append(kept)
+		_sides = sides
 	elif _body is RigidBody2D:
 		var state: PhysicsDirectBodyState2D = PhysicsServer2D.body_get_direct_state(_body.get_rid())
 		for i: int in state.get_contact_count():
@@ -220,6 +234,30 @@ func _collisions(above: Array[Dictionary]) -> Array[Dictionary]:
 		var normal: Vector2 = entry["normal"]
 		out.append(_entry(rigid, rigid.get_rid(), -1, rigid.global_position, normal))
 	return out
+
+
+func _slide_entry(collision: KinematicCollision2D) -> Dictionary:
+	return _entry(
+		collision.get_collider(),
+		collision.get_collider_rid(),
+		collision.get_collider_shape_index(),
+		collision.get_position(),
+		collision.get_normal()
+	)
+
+
+# The contact [param entry] again when the body, moved by its safe margin toward it, touches
+# the same shape (or tile); empty once it has moved away.
+func _still_touching(character: CharacterBody2D, entry: Dictionary) -> Dictionary:
+	if not is_instance_valid(entry["collider"]):
+		return {}
+	var normal: Vector2 = entry["normal"]
+	var collision: KinematicCollision2D = KinematicCollision2D.new()
+	var margin: float = character.safe_margin
+	if not character.test_move(character.global_transform, -normal * margin, collision, margin):
+		return {}
+	var touched: Dictionary = _slide_entry(collision)
+	return touched if touched["key"] == entry["key"] else {}
 
 
 func _entry(collider: Object, rid: RID, shape: int, point: Vector2, normal: Vector2) -> Dictionary:

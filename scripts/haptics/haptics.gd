@@ -47,6 +47,13 @@ const SETTING_SPIN_US := "haptics/servo/spin_us"
 const FEED_THRESHOLD := 0.05
 ## The hand's actions when the project names none.
 const DEFAULT_HAND_ACTIONS: PackedStringArray = ["move_left", "move_right", "move_up", "move_down"]
+## The fed actions when the project names none: none.
+const DEFAULT_FEED_ACTIONS: PackedStringArray = []
+## The project settings read at start, with their defaults (the addon's plugin lists them in
+## Project Settings).
+const SETTINGS: Dictionary[String, PackedStringArray] = {
+	SETTING_HAND_ACTIONS: DEFAULT_HAND_ACTIONS, SETTING_FEED_ACTIONS: DEFAULT_FEED_ACTIONS
+}
 # The servo's settings while there is no server to keep them (nothing is rendered then),
 # starting from the defaults.
 const _OFFLINE_DEFAULTS: Dictionary = {"safety.force_scale": 1.0, "smoothing.enabled": true}
@@ -146,7 +153,7 @@ func _ready() -> void:
 	# Before every other node's physics: the game reads this frame's fed actions.
 	process_physics_priority = -1000
 	hand_actions = ProjectSettings.get_setting(SETTING_HAND_ACTIONS, DEFAULT_HAND_ACTIONS)
-	feed_actions = ProjectSettings.get_setting(SETTING_FEED_ACTIONS, PackedStringArray())
+	feed_actions = ProjectSettings.get_setting(SETTING_FEED_ACTIONS, DEFAULT_FEED_ACTIONS)
 	if _server != null:
 		# Nobody reads telemetry until someone drains it (HapticsServo.drain_telemetry turns
 		# it on): a game that never does is not counted telemetry drops.

@@ -2,30 +2,33 @@
 extends EditorPlugin
 ## The addon's editor plugin: enabling it registers the [code]Haptics[/code] autoload and
 ## lists the native extension in [code].godot/extension_list.cfg[/code] (so the next start
-## and import load it first); disabling it removes the autoload. The node and resource
-## types (HapticProbe, HapticMaterial, HapticWater) are global script classes: they are in
-## the Create dialogs while the addon's folder is in the project. While it is enabled, the
-## Project Settings dialog lists the settings the autoload reads (haptics/servo/spin_us) with
-## their defaults and ranges.
+## and import load it first); disabling it removes the autoload. While it is enabled the
+## door's project settings ([code]haptics/input/*[/code], [code]haptics/servo/spin_us[/code])
+## are listed in Project Settings ▸ Haptics with their defaults (and the spin's range). The
+## node and resource types (HapticProbe, HapticMaterial, HapticWater) are global script
+## classes: they are in the Create dialogs while the addon's folder is in the project.
 
 const AUTOLOAD := "Haptics"
 const EXTENSION_LIST := "res://.godot/extension_list.cfg"
 
 
+# Every time the editor loads the plugin: the property types and defaults are not saved in
+# project.godot, only values that differ from them.
 func _enter_tree() -> void:
-	# Property hints are not saved with the project: they are added in every editor session.
-	var folder: String = (get_script() as Script).resource_path.get_base_dir()
-	load(folder.path_join("haptics.gd")).call(&"add_project_settings")
+	var haptics: Script = load(_haptics_path()) as Script
+	register_settings(haptics)
+	# The servo's spin: its default and range are the native class's.
+	haptics.call(&"add_project_settings")
 
 
 func _enable_plugin() -> void:
-	var folder: String = (get_script() as Script).resource_path.get_base_dir()
-	add_autoload_singleton(AUTOLOAD, folder.path_join("haptics.gd"))
-	list_extension(folder.path_join("haptics.gdextension"))
+	add_autoload_singleton(AUTOLOAD, _haptics_path())
+	list_extension(_haptics_path().get_base_dir().path_join("haptics.gdextension"))
 
 
 func _disable_plugin() -> void:
 	remove_autoload_singleton(AUTOLOAD)
+	unregister_settings(load(_haptics_path()) as Script)
 
 
 ## Adds [param extension] to the editor's extension list unless it is there; false when the
@@ -43,3 +46,56 @@ static func list_extension(extension: String) -> bool:
 		return false
 	file.store_string("\n".join(listed) + "\n")
 	return true
+
+
+## Lists the project settings [param haptics] (the door's script) reads in Project Settings,
+## shown without Advanced Settings, with their types and defaults; one the project lacks is
+## added at its default, a value it has is kept. False when [param haptics] names none.
+static func register_settings(haptics: Script) -> bool:
+	var settings: Dictionary = _settings_of(haptics)
+	for setting: String in settings:
+		var default: PackedStringArray = settings[setting]
+		if not ProjectSettings.has_setting(setting):
+			ProjectSettings.set_setting(setting, default)
+		ProjectSettings.set_initial_value(setting, default)
+		# Four input action names (left, right, up, down), each picked from the project's
+		# actions or typed (an empty name is no action).
+		(
+			ProjectSettings
+			. add_property_info(
+				{
+					"name": setting,
+					"type": TYPE_PACKED_STRING_ARRAY,
+					"hint": PROPERTY_HINT_TYPE_STRING,
+					"hint_string": "%d/%d:loose_mode" % [TYPE_STRING, PROPERTY_HINT_INPUT_NAME],
+				}
+			)
+		)
+		ProjectSettings.set_as_basic(setting, true)
+	return not settings.is_empty()
+
+
+## Removes the settings of [param haptics] that hold their defaults (what
+## [method register_settings] added); values the user changed stay in the project.
+static func unregister_settings(haptics: Script) -> bool:
+	var settings: Dictionary = _settings_of(haptics)
+	for setting: String in settings:
+		var value: Variant = ProjectSettings.get_setting(setting)
+		if value is PackedStringArray and value == settings[setting]:
+			ProjectSettings.set_setting(setting, null)
+	return not settings.is_empty()
+
+
+# The door's settings and their defaults (its SETTINGS constant).
+static func _settings_of(haptics: Script) -> Dictionary:
+	if haptics == null or not haptics.get_script_constant_map().get("SETTINGS") is Dictionary:
+		var path: String = haptics.resource_path if haptics != null else "no script"
+		push_error("Haptics: %s declares no SETTINGS; Project Settings left as they were." % path)
+		return {}
+	return haptics.get_script_constant_map()["SETTINGS"]
+
+
+# The door's script, next to this one in the addon's folder (wherever the folder is).
+func _haptics_path() -> String:
+	var script: Script = get_script()
+	return script.resource_path.get_base_dir().path_join("haptics.gd")

@@ -1,23 +1,34 @@
 extends Node2D
 ## The level (a TileMapLayer floor next to a tile wall, built here) and the addon test's
 ## driver: the device's hand is held to the right, the game's own input actions are fed from
-## it, the player runs into the wall. Prints the result and quits with 0 when, on every
-## physics frame at the wall, the normal force pushed away from the wall steadily, an impact
-## was felt on hitting it and the servo spins what the project set; 1 otherwise.
+## it, the player runs into the wall and pushes; then the hand goes left and the player walks
+## away. Prints the result and quits with 0 when, on every physics frame after the first
+## touch while pushing, the normal force pushed away from the wall steadily, an impact was
+## felt on hitting it, the wall stopped being a contact once the player had left it, and
+## the servo spins what the project set; 1 otherwise.
 
 const TILE := 32
 const FLOOR_ROW := 12
 const WALL_COLUMN := 16
-const FRAMES := 240
-const SETTLE_FRAMES := 6
+const PUSH_FRAMES := 480
+const AWAY_FRAMES := 60
+## Frames for the smoothed force to settle after the first touch.
+const SETTLE_FRAMES := 12
 const MIN_PUSH_N := 0.5
+const STEADY_RATIO := 1.2
+## Farther from the wall than this, in pixels, it must no longer be a contact.
+const LEFT_WALL_PX := 0.5
 
 var _player: CharacterBody2D = null
+var _half_width: float = 0.0
 var _probe: Node = null
 var _frame: int = 0
-var _frames_at_wall: int = 0
+var _touched_at: int = -1
 var _pushes: PackedFloat32Array = []
 var _impacts: Array[Vector2] = []
+# Frames after walking away on which the wall, though left, was still a contact.
+var _stuck: PackedStringArray = []
+var _away_frames: int = 0
 
 
 func _ready() -> void:
@@ -25,20 +36,33 @@ func _ready() -> void:
 	_player = (load("res://player.tscn") as PackedScene).instantiate()
 	_player.position = Vector2(4.5 * TILE, FLOOR_ROW * TILE - 18.0)
 	add_child(_player)
+	var body: RectangleShape2D = (_player.get_node(^"CollisionShape2D") as CollisionShape2D).shape
+	_half_width = body.size.x * 0.5
 	_probe = _player.get_node(^"HapticProbe")
 	_probe.connect(&"impact", _on_impact)
 	Haptics.hand_follows_input = false
 	Haptics.device.set_hand_target(Vector2.RIGHT)
 
 
+# Runs before the player moves: the probe's last frame and the player's position are both
+# those of the previous physics frame.
 func _physics_process(_delta: float) -> void:
 	_frame += 1
-	var wall_x: float = WALL_COLUMN * TILE - 10.0
-	if absf(_player.position.x - wall_x) < 0.5 and _player.is_on_floor():
-		_frames_at_wall += 1
-		if _frames_at_wall > SETTLE_FRAMES:
+	var wall_contact: bool = _touches_wall()
+	if _frame <= PUSH_FRAMES:
+		if _touched_at < 0 and wall_contact:
+			_touched_at = _frame
+		if _touched_at >= 0 and _frame > _touched_at + SETTLE_FRAMES:
 			_pushes.append(-Haptics.get_forces()["normal"].x)
-	if _frame >= FRAMES:
+		if _frame == PUSH_FRAMES:
+			Haptics.device.set_hand_target(Vector2.LEFT)
+		return
+	var gap: float = WALL_COLUMN * TILE - (_player.position.x + _half_width)
+	if gap > LEFT_WALL_PX:
+		_away_frames += 1
+		if wall_contact:
+			_stuck.append("%.2f px" % gap)
+	if _frame >= PUSH_FRAMES + AWAY_FRAMES:
 		_finish()
 
 
@@ -47,31 +71,53 @@ func _on_impact(_collider: Object, normal: Vector2, speed: float) -> void:
 	_impacts.append(normal)
 
 
+func _touches_wall() -> bool:
+	for contact: Dictionary in _probe.get(&"last_frame").get("contacts", []):
+		var normal: Vector2 = contact["normal"]
+		if normal.is_equal_approx(Vector2.LEFT):
+			return true
+	return false
+
+
 func _finish() -> void:
 	set_physics_process(false)
 	var failures: PackedStringArray = []
 	if not Haptics.is_available():
 		failures.append("the extension is not loaded")
-	if _pushes.size() < 60:
-		failures.append("only %d frames at the wall" % _pushes.size())
+	if _pushes.size() < 120:
+		failures.append("only %d frames pushing the wall" % _pushes.size())
 	var spin_us: float = Haptics.servo.get_stats().get("spin_us", -1.0)
 	if spin_us != ProjectSettings.get_setting("haptics/servo/spin_us"):
 		failures.append("the servo spins %s us, not the project's haptics/servo/spin_us" % spin_us)
 	var weakest: float = INF
 	var strongest: float = 0.0
+	var dropped: int = 0
 	for push: float in _pushes:
 		weakest = minf(weakest, push)
 		strongest = maxf(strongest, push)
+		dropped += 1 if push < MIN_PUSH_N else 0
 	if weakest < MIN_PUSH_N:
-		failures.append("the wall's push dropped to %.3f N" % weakest)
-	if strongest > weakest * 1.2:
+		failures.append(
+			(
+				"the wall's push dropped to %.3f N on %d of %d frames"
+				% [weakest, dropped, _pushes.size()]
+			)
+		)
+	if strongest > weakest * STEADY_RATIO:
 		failures.append("the push was not steady: %.3f to %.3f N" % [weakest, strongest])
 	if not Vector2.LEFT in _impacts:
 		failures.append("no impact on hitting the wall (impacts: %s)" % [_impacts])
+	if _away_frames < AWAY_FRAMES / 2:
+		failures.append("the player did not walk away (%d frames away)" % _away_frames)
+	if not _stuck.is_empty():
+		failures.append("the wall stayed a contact after leaving it, at gaps %s" % [_stuck])
 	print(
 		(
-			"addon game: %d frames at the wall, push away from it %.3f-%.3f N, impacts %s"
-			% [_pushes.size(), weakest, strongest, _impacts]
+			(
+				"addon game: %d frames pushing the wall, push away from it %.3f-%.3f N, impacts %s; "
+				% [_pushes.size(), weakest, strongest, _impacts]
+			)
+			+ "walked away %d frames, wall kept at %d of them" % [_away_frames, _stuck.size()]
 		)
 	)
 	for failure: String in failures:
