@@ -51,7 +51,7 @@ build-release: engine
 ## that registers a class otherwise crashes, Godot #111048; README, Troubleshooting)
 import: build
 	@mkdir -p .godot
-	@echo "res://gdextension/haptics.gdextension" > .godot/extension_list.cfg
+	@echo "res://addons/haptics/haptics.gdextension" > .godot/extension_list.cfg
 	@$(GODOT) --headless --path . --import >$(BUILD)/import.log 2>&1 || \
 		{ tail -n 30 $(BUILD)/import.log; echo "import failed (log: $(BUILD)/import.log)"; exit 1; }
 
@@ -93,8 +93,8 @@ test-windowed: import
 ## lint: gdlint and gdformat --check over scripts/ and tests/ (gdtoolkit, pinned, in .venv),
 ## and clang-format (Debian's, .clang-format: Godot's style) over the extension's C++
 lint: deps
-	@tools/gdtoolkit.sh gdlint scripts tests
-	@tools/gdtoolkit.sh gdformat --check scripts tests
+	@tools/gdtoolkit.sh gdlint addons scripts tests
+	@tools/gdtoolkit.sh gdformat --check addons scripts tests
 	@find gdextension/src gdextension/tests gdextension/bench -name '*.h' -o -name '*.cpp' | \
 		sort | xargs clang-format --dry-run -Werror
 	@echo "clang-format: the C++ is formatted"
@@ -203,7 +203,7 @@ bench-net: import
 
 ## clean: build outputs (keeps the provisioned engine and Python tools)
 clean:
-	rm -rf $(BUILD) gdextension/bin .export .bench
+	rm -rf $(BUILD) addons/haptics/bin .export .bench
 
 ## distclean: everything the project created, including the engine and .godot
 distclean: clean

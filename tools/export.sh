@@ -39,7 +39,7 @@ if [[ ! -f $templates/linux_release.x86_64 ]]; then
   fi
 fi
 
-[[ -f gdextension/bin/libhaptics.linux.template_$flavour.x86_64.so ]] || {
+[[ -f addons/haptics/bin/libhaptics.linux.template_$flavour.x86_64.so ]] || {
   echo "export: the $flavour library is missing; run 'make build$([[ $flavour == release ]] && echo -release)'" >&2
   exit 1
 }

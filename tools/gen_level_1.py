@@ -243,7 +243,7 @@ def build():
     pearl = s.ext_resource("PackedScene", "res://scenes/props/pearl.tscn")
     goal = s.ext_resource("PackedScene", "res://scenes/props/goal.tscn")
     effects = s.ext_resource("PackedScene", "res://scenes/levels/effects.tscn")
-    mat = {k: s.ext_resource("Resource", f"res://assets/materials/{k}.tres")
+    mat = {k: s.ext_resource("Resource", f"res://addons/haptics/materials/{k}.tres")
            for k in ("hard", "soft", "slippery")}
     tex = {k: s.ext_resource("Texture2D", f"res://assets/art/{k}.svg")
            for k in ("rock_hard", "sponge_soft", "crystal_slippery", "parallax_far",

@@ -8,7 +8,7 @@ copy=$(mktemp -d)
 trap 'rm -rf "$copy"' EXIT
 tar -C "$project" --exclude=./.git --exclude=./.engine --exclude=./.build --exclude=./.venv \
   --exclude=./.xdg --exclude=./.export --exclude=./.bench --exclude=./.godot \
-  --exclude=./gdextension -cf - . | tar -C "$copy" -xf -
+  --exclude=./gdextension --exclude=./addons/haptics/bin -cf - . | tar -C "$copy" -xf -
 "$project/tools/godot" --headless --path "$copy" --import >"$copy/import.log" 2>&1 ||
   { tail -n 20 "$copy/import.log"; exit 1; }
 "$project/tools/godot" --headless --path "$copy" "$@"

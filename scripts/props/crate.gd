@@ -5,7 +5,7 @@ extends RigidBody2D
 ## sound and a puff of dust scaled by the impact speed.
 
 ## How the crate feels to the touch and how its impacts ring.
-@export var haptic_material: HapticMaterial = preload("res://assets/materials/wood.tres")
+@export var haptic_material: HapticMaterial = preload("res://addons/haptics/materials/wood.tres")
 ## Density relative to water ([member WaterVolume.density] is 1.0 for plain water): below it
 ## the crate floats, above it the crate sinks.
 @export_range(0.05, 10.0, 0.01) var density: float = 0.6

@@ -1,6 +1,7 @@
 extends TestSuite
-## The game without its native library: a separate engine runs a copy of the project with
-## gdextension/ removed. It must parse, warn once, and play (no force feedback).
+## The game without its native library: a separate engine runs a copy of the project without
+## the addon's built libraries (addons/haptics/bin/) or their sources. It must parse, warn
+## once, and play (no force feedback).
 
 
 func test_the_game_plays_without_the_extension_and_says_so() -> void:

@@ -4,7 +4,7 @@ extends TestSuite
 ## haptics/servo/spin_us the Haptics autoload reads. Refused spins name the field and its
 ## range and leave the servo as it was.
 
-const HapticsDoor := preload("res://scripts/haptics/haptics.gd")
+const HapticsDoor := preload("res://addons/haptics/haptics.gd")
 const SETTING := "haptics/servo/spin_us"
 const REFUSED_AT_1000_HZ := "spin_us must be in [0, 500] (half a period at 1000 Hz)"
 

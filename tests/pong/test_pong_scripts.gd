@@ -3,7 +3,7 @@ extends TestSuite
 ## scene scripts too, which other suites may load before warnings are raised).
 
 const FOLDERS: Array[String] = ["res://scripts/pong"]
-const FILES: Array[String] = ["res://scripts/haptics/haptics_pong.gd"]
+const FILES: Array[String] = ["res://addons/haptics/haptics_pong.gd"]
 
 
 func test_every_pong_script_compiles_without_warnings() -> void:

@@ -1,5 +1,5 @@
 extends TestSuite
-## Pong without the native library: a copy of the project without gdextension/ asked for
+## Pong without the native library: a copy of the project without its built libraries asked for
 ## the headless demo says why there is no game (the ball lives only in the servo) and
 ## exits with an error, without script errors.
 

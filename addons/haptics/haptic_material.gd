@@ -1,4 +1,4 @@
-@icon("res://scripts/haptics/addon/icons/haptic_material.svg")
+@icon("res://addons/haptics/icons/haptic_material.svg")
 class_name HapticMaterial
 extends Resource
 ## How a surface feels: contact stiffness and friction for the continuous force, and the

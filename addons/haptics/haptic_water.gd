@@ -1,4 +1,4 @@
-@icon("res://scripts/haptics/addon/icons/haptic_water.svg")
+@icon("res://addons/haptics/icons/haptic_water.svg")
 class_name HapticWater
 extends Area2D
 ## Water for the haptic probe: while the probed body is inside, it feels drag against its

@@ -1,4 +1,4 @@
-@icon("res://scripts/haptics/addon/icons/haptic_probe.svg")
+@icon("res://addons/haptics/icons/haptic_probe.svg")
 class_name HapticProbe
 extends Node
 ## Drop-in haptics for any 2D body: add this node as a child of a [CharacterBody2D] or
