@@ -23,9 +23,9 @@ BENCH_SECONDS ?= 10
 # Seconds make soak runs the level.
 SOAK_SECONDS ?= 600
 
-.PHONY: play test deps engine build build-release import test-native test-godot lint pong-demo \
+.PHONY: play edit test deps engine build build-release import test-native test-godot lint pong-demo \
 	export test-export export-server test-export-server dist test-dist test-windowed test-net bench-net bench soak sanitize analyze export-study \
-	test-analysis addon test-addon clean distclean
+	test-analysis addon test-addon test-editor clean distclean
 
 ## deps: install missing OS packages (apt-get; sudo when not root)
 deps:
@@ -35,16 +35,19 @@ deps:
 engine: deps
 	@$(GODOT) --which
 
-## build: the extension (RelWithDebInfo, loaded by the editor and debug runs) and doctests
+## build: the development library (RelWithDebInfo, with the development tools: the scripted
+## devices the tests use; loaded by this project's editor and debug runs) and the doctests
 build: engine
 	@$(CMAKE_CONFIGURE) -B $(BUILD)/debug -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-		-DHAPTICS_TARGET=template_debug >/dev/null
+		-DHAPTICS_TARGET=template_debug -DHAPTICS_DEV_TOOLS=ON >/dev/null
 	@cmake --build $(BUILD)/debug -j $(JOBS)
 
-## build-release: the optimised library bundled by release exports
+## build-release: the product library (optimised, no development tools), bundled by exports
+## and packed into the addon
 build-release: engine
 	@$(CMAKE_CONFIGURE) -B $(BUILD)/release -DCMAKE_BUILD_TYPE=Release \
-		-DHAPTICS_TARGET=template_release -DHAPTICS_BUILD_TESTS=OFF -DHAPTICS_BUILD_BENCH=OFF >/dev/null
+		-DHAPTICS_TARGET=template_release -DHAPTICS_DEV_TOOLS=OFF -DHAPTICS_BUILD_TESTS=OFF \
+		-DHAPTICS_BUILD_BENCH=OFF >/dev/null
 	@cmake --build $(BUILD)/release -j $(JOBS) --target haptics
 
 ## import: let the engine import the project (the extension is listed first: a fresh import
@@ -54,6 +57,10 @@ import: build
 	@echo "res://addons/haptics/haptics.gdextension" > .godot/extension_list.cfg
 	@$(GODOT) --headless --path . --import >$(BUILD)/import.log 2>&1 || \
 		{ tail -n 30 $(BUILD)/import.log; echo "import failed (log: $(BUILD)/import.log)"; exit 1; }
+
+## edit: this project in the Godot editor (F5/F6 play the game from it)
+edit: import
+	@$(GODOT) --editor --path .
 
 ## play: the game; headless with an autopilot when there is no display
 play: import
@@ -73,7 +80,7 @@ pong-demo: import
 
 ## test: every suite; any failure fails the target
 test: import test-native test-godot lint test-analysis test-net test-export test-export-server \
-	test-dist test-windowed test-addon
+	test-dist test-windowed test-addon test-editor
 	@echo "make test: all suites passed"
 
 ## test-native: the C++ doctest suite through CTest
@@ -142,6 +149,14 @@ addon: import build-release
 ## away from, no error output (tools/test-addon.sh)
 test-addon: addon
 	@tools/test-addon.sh
+
+## test-editor: a game developer's first hour in the GUI editor (Xvfb), in one session of an
+## editor started by tools/godot: a project that has never seen the addon gets the zip
+## unpacked while the editor runs, enables the plugin, creates a HapticProbe and plays the
+## scene (F6); the game must feel the floor, nothing may print an error, and closing the
+## editor must not ask anything (tools/test-editor.sh)
+test-editor: addon
+	@tools/test-editor.sh
 
 ## bench: servo loop vs naive loop, the force model's and the proxy's tick cost, each device
 ## backend's tick cost and protocol rate against its scripted transport, the game's

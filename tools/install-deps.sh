@@ -5,12 +5,12 @@ set -euo pipefail
 
 packages=(build-essential cmake ninja-build pkg-config libhidapi-dev libusb-1.0-0-dev
   doctest-dev clang-format python3 python3-venv debian-archive-keyring ca-certificates
-  rt-tests xvfb)
+  rt-tests xvfb openbox patchelf)
 
 if ! command -v dpkg-query >/dev/null || ! command -v apt-get >/dev/null; then
   echo "install-deps: no apt here; install yourself: a C++20 compiler, CMake 3.22+, Ninja," \
     "pkg-config, hidapi, libusb-1.0, doctest, clang-format, Python 3 with venv, cyclictest" \
-    "(rt-tests) and Xvfb for the benchmark and the windowed test; and Godot 4.5+" \
+    "(rt-tests), Xvfb and openbox for the benchmark and the windowed tests, patchelf; and Godot 4.5+" \
     "(GODOT=...)." >&2
   exit 0
 fi

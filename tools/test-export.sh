@@ -14,14 +14,15 @@ build=.export/linux
 [[ -x $build/$name && -x $build/runtime/$name.loader ]] ||
   { echo "test-export: $build is not a self-contained build; run 'make export'" >&2; exit 1; }
 
+source tools/xvfb.sh
 tmp=$(mktemp -d /tmp/haptic-export-test.XXXXXX)
 pid=""
-xvfb_pid=""
 cleanup() {
-  for p in $pid $xvfb_pid; do
-    kill "$p" 2>/dev/null || true
-    wait "$p" 2>/dev/null || true
-  done
+  if [[ -n $pid ]]; then
+    kill "$pid" 2>/dev/null || true
+    wait "$pid" 2>/dev/null || true
+  fi
+  xvfb_stop
   rm -rf "$tmp"
 }
 trap cleanup EXIT
@@ -136,16 +137,8 @@ else
 fi
 
 # In a window: the system's GPU driver may add its own objects, nothing else.
-command -v Xvfb >/dev/null || fail "Xvfb missing (make deps installs it)"
-Xvfb -displayfd 3 -screen 0 1280x720x24 -nolisten tcp 3>"$tmp/display" 2>"$tmp/xvfb.log" &
-xvfb_pid=$!
-for _ in $(seq 100); do
-  [[ -s $tmp/display ]] && break
-  kill -0 "$xvfb_pid" 2>/dev/null || break
-  sleep 0.1
-done
-[[ -s $tmp/display ]] || fail "Xvfb did not start: $(cat "$tmp/xvfb.log")"
-run_game DISPLAY=":$(head -n 1 "$tmp/display")" --rendering-driver opengl3 --audio-driver Dummy \
+xvfb_start "$tmp" || fail "no display"
+run_game DISPLAY="$XVFB_DISPLAY" --rendering-driver opengl3 --audio-driver Dummy \
   -- --autopilot --autopilot-seconds=2
 check_output windowed
 grep -q "OpenGL API" "$log" || fail "windowed: no OpenGL context was reported"

@@ -8,37 +8,17 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-4}
-command -v Xvfb >/dev/null || {
-  echo "test-windowed: Xvfb missing (make deps installs it)" >&2
-  exit 1
-}
+source tools/xvfb.sh
 mkdir -p .build
 log=.build/test-windowed.log
 scratch=$(mktemp -d)
-xvfb_pid=""
 cleanup() {
-  if [[ -n $xvfb_pid ]]; then
-    kill "$xvfb_pid" 2>/dev/null || true
-    wait "$xvfb_pid" 2>/dev/null || true
-  fi
+  xvfb_stop
   rm -rf "$scratch"
 }
 trap cleanup EXIT
-
-# -displayfd: Xvfb picks a free display and writes its number once it accepts clients.
-Xvfb -displayfd 3 -screen 0 1280x720x24 -nolisten tcp 3>"$scratch/display" 2>"$scratch/xvfb.log" &
-xvfb_pid=$!
-for _ in $(seq 100); do
-  [[ -s $scratch/display ]] && break
-  kill -0 "$xvfb_pid" 2>/dev/null || break
-  sleep 0.1
-done
-[[ -s $scratch/display ]] || {
-  cat "$scratch/xvfb.log" >&2
-  echo "test-windowed: Xvfb did not start" >&2
-  exit 1
-}
-display=:$(head -n 1 "$scratch/display")
+xvfb_start "$scratch" || { echo "test-windowed: no display" >&2; exit 1; }
+display=$XVFB_DISPLAY
 
 status=0
 DISPLAY=$display timeout 180 tools/godot --verbose --path . --rendering-driver opengl3 \

@@ -21,6 +21,11 @@ signal impact(collider: Object, normal: Vector2, speed: float)
 
 ## Earth's gravity, m/s², for [method pixels_per_metre_for_gravity].
 const EARTH_GRAVITY := 9.80665
+# The door's script, by its path next to this one rather than by the autoload's name: the
+# editor parses this script as soon as the addon's folder appears, before enabling the plugin
+# has registered the autoload (naming it then failed to parse, and the node could not be
+# created until the editor was restarted).
+const HapticsDoor := preload("haptics.gd")
 
 ## World scale: how many pixels make one metre.
 @export_range(1.0, 10000.0, 1.0, "suffix:px/m") var pixels_per_metre: float = 100.0
@@ -46,6 +51,7 @@ var last_frame: Dictionary = {}
 ## Frames submitted so far.
 var frames_submitted: int = 0
 
+var _door: HapticsDoor = null
 var _body: PhysicsBody2D = null
 var _sequence: int = 0
 var _velocity_before: Vector2 = Vector2.ZERO
@@ -66,10 +72,20 @@ func _ready() -> void:
 		push_error("HapticProbe must be a child of a CharacterBody2D or RigidBody2D.")
 		set_physics_process(false)
 		return
+	_door = get_node_or_null(^"/root/Haptics") as HapticsDoor
+	if _door == null:
+		push_error(
+			(
+				"HapticProbe: no Haptics autoload; enable the Haptics plugin (Project Settings ▸ "
+				+ "Plugins) or add it under [autoload] in project.godot (addon README)."
+			)
+		)
+		set_physics_process(false)
+		return
 	if server == null:
-		server = Haptics.get_server()
-	_max_contacts = Haptics.get_constant(&"MAX_CONTACTS")
-	_max_resting = Haptics.get_constant(&"MAX_RESTING_OBJECTS")
+		server = _door.get_server()
+	_max_contacts = _door.get_constant(&"MAX_CONTACTS")
+	_max_resting = _door.get_constant(&"MAX_RESTING_OBJECTS")
 	if _body is RigidBody2D:
 		var rigid: RigidBody2D = _body
 		rigid.contact_monitor = true
@@ -102,7 +118,7 @@ func _before_bodies_move() -> void:
 		return
 	# An unplugged device hands the player back to the keyboard until it returns.
 	var device_driven: bool = (
-		Haptics.control_mode == Haptics.CONTROL_DEVICE and not Haptics.device.is_lost()
+		_door.control_mode == HapticsDoor.CONTROL_DEVICE and not _door.device.is_lost()
 	)
 	if &"use_keyboard" in _body:
 		_body.set(&"use_keyboard", not device_driven)

@@ -45,8 +45,9 @@ const SETTING_FEED_ACTIONS := "haptics/input/feed_actions"
 const SETTING_SPIN_US := "haptics/servo/spin_us"
 ## Fed strengths below this release the action (a centred device presses nothing).
 const FEED_THRESHOLD := 0.05
-## The hand's actions when the project names none.
-const DEFAULT_HAND_ACTIONS: PackedStringArray = ["move_left", "move_right", "move_up", "move_down"]
+## The hand's actions when the project names none: Godot's own, which every project has
+## (arrow keys and a gamepad's d-pad).
+const DEFAULT_HAND_ACTIONS: PackedStringArray = ["ui_left", "ui_right", "ui_up", "ui_down"]
 ## The fed actions when the project names none: none.
 const DEFAULT_FEED_ACTIONS: PackedStringArray = []
 ## The project settings read at start, with their defaults (the addon's plugin lists them in

@@ -24,6 +24,11 @@ func _enter_tree() -> void:
 func _enable_plugin() -> void:
 	add_autoload_singleton(AUTOLOAD, _haptics_path())
 	list_extension(_haptics_path().get_base_dir().path_join("haptics.gdextension"))
+	# The editor keeps the new autoload in memory until something saves the project settings:
+	# a game played (F5/F6) right after enabling started without it, and the first script
+	# naming Haptics failed to parse there.
+	_save_project_settings()
+	_save_project_settings()
 
 
 func _disable_plugin() -> void:
@@ -93,6 +98,12 @@ static func _settings_of(haptics: Script) -> Dictionary:
 		push_error("Haptics: %s declares no SETTINGS; Project Settings left as they were." % path)
 		return {}
 	return haptics.get_script_constant_map()["SETTINGS"]
+
+
+func _save_project_settings() -> void:
+	var error: Error = ProjectSettings.save()
+	if error != OK:
+		push_error("Haptics: cannot save the project settings (%s)." % error_string(error))
 
 
 # The door's script, next to this one in the addon's folder (wherever the folder is).

@@ -5,6 +5,7 @@ extends TestSuite
 ## stays off until someone drains it.
 
 const FED: PackedStringArray = ["test_fed_left", "test_fed_right", "test_fed_up", "test_fed_down"]
+const MOVE_ACTIONS: PackedStringArray = ["move_left", "move_right", "move_up", "move_down"]
 
 var _hand_actions: PackedStringArray = []
 var _feed_actions: PackedStringArray = []
@@ -45,7 +46,10 @@ func _wait_for_input(at_least: float) -> bool:
 
 
 func test_the_hand_follows_the_projects_actions_and_none_is_allowed() -> void:
-	assert_eq(Haptics.hand_actions, Haptics.DEFAULT_HAND_ACTIONS, "the project's setting")
+	var own: PackedStringArray = ProjectSettings.get_setting(Haptics.SETTING_HAND_ACTIONS)
+	assert_eq(Haptics.hand_actions, own, "the project's setting")
+	assert_eq(own, PackedStringArray(MOVE_ACTIONS), "this project's own actions")
+	assert_ne(own, Haptics.DEFAULT_HAND_ACTIONS, "not the addon's default")
 	Haptics.hand_actions = FED
 	Input.action_press(FED[1])
 	assert_true(await _wait_for_input(0.5), "the hand moved right with the named action")

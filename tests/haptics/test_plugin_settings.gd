@@ -54,8 +54,8 @@ func test_enabling_lists_each_input_setting_with_its_type_and_default() -> void:
 		assert_ne(usage & PROPERTY_USAGE_EDITOR_BASIC_SETTING, 0, setting + " shown as basic")
 	assert_eq(
 		ProjectSettings.get_setting(Haptics.SETTING_HAND_ACTIONS),
-		PackedStringArray(["move_left", "move_right", "move_up", "move_down"]),
-		"the hand's default actions"
+		PackedStringArray(["ui_left", "ui_right", "ui_up", "ui_down"]),
+		"the hand's default actions: Godot's own, in every project"
 	)
 	assert_eq(ProjectSettings.get_setting(Haptics.SETTING_FEED_ACTIONS), PackedStringArray())
 
