@@ -22,18 +22,14 @@ func _enter_tree() -> void:
 
 
 func _enable_plugin() -> void:
-	add_autoload_singleton(AUTOLOAD, _haptics_path())
+	_set_autoload("*" + _haptics_path())
 	list_extension(_haptics_path().get_base_dir().path_join("haptics.gdextension"))
-	# The editor keeps the new autoload in memory until something saves the project settings:
-	# a game played (F5/F6) right after enabling started without it, and the first script
-	# naming Haptics failed to parse there.
-	_save_project_settings()
-	_save_project_settings()
 
 
 func _disable_plugin() -> void:
-	remove_autoload_singleton(AUTOLOAD)
+	_set_autoload(null)
 	unregister_settings(load(_haptics_path()) as Script)
+	_save_project_settings()
 
 
 ## Adds [param extension] to the editor's extension list unless it is there; false when the
@@ -98,6 +94,24 @@ static func _settings_of(haptics: Script) -> Dictionary:
 		push_error("Haptics: %s declares no SETTINGS; Project Settings left as they were." % path)
 		return {}
 	return haptics.get_script_constant_map()["SETTINGS"]
+
+
+# Sets (or with null removes) the autoload and saves it at once. Not add_autoload_singleton:
+# that is an action in the editor's undo history, so quitting asked to "save modified
+# resources" when nothing had changed, Ctrl+Z took the autoload from an enabled plugin, and
+# until something saved the project settings a game played with F5/F6 started without the
+# autoload (the first script naming Haptics failed to parse there).
+func _set_autoload(value: Variant) -> void:
+	ProjectSettings.set_setting("autoload/" + AUTOLOAD, value)
+	_save_project_settings()
+	# The editor's list of autoloads, which also declares their names to the scripts it parses.
+	var lists: Array[Node] = get_tree().root.find_children(
+		"*", "EditorAutoloadSettings", true, false
+	)
+	for list: Node in lists:
+		list.call(&"update_autoload")
+	if lists.is_empty():
+		push_warning("Haptics: restart the editor for scripts to see the Haptics autoload.")
 
 
 func _save_project_settings() -> void:

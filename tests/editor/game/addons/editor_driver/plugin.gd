@@ -91,11 +91,21 @@ func _advance(state: Dictionary) -> void:
 			_check(true, "the editor found the addon (%.1f s)" % waited)
 			_check(ClassDB.class_exists(&"HapticsServer"), "the extension loaded in this session")
 			_check_global_classes()
-			EditorInterface.set_plugin_enabled(PLUGIN, true)
+			state["history"] = _global_history_version()
 			_to(state, Stage.ENABLED)
+			EditorInterface.set_plugin_enabled(PLUGIN, true)
 		Stage.ENABLED:
 			_check(EditorInterface.is_plugin_enabled(PLUGIN), "the plugin is enabled")
 			_check(ProjectSettings.has_setting("autoload/Haptics"), "the Haptics autoload is set")
+			_check(
+				FileAccess.get_file_as_string("res://project.godot").contains("Haptics="),
+				"the autoload is saved in project.godot (what F5/F6 read)"
+			)
+			# An action there is what quitting asks to "save modified resources" for.
+			_check(
+				_global_history_version() == state["history"],
+				"enabling left nothing unsaved in the editor's undo history"
+			)
 			for setting: String in SETTINGS:
 				_check(ProjectSettings.has_setting(setting), "Project Settings lists %s" % setting)
 			_write_game_script()
@@ -120,7 +130,7 @@ func _advance(state: Dictionary) -> void:
 				var editor_node: Node = EditorInterface.get_base_control().get_parent()
 				editor_node.notification.call_deferred(NOTIFICATION_WM_CLOSE_REQUEST)
 		Stage.CLOSING:
-			_check(false, "the editor quit without asking; it shows: %s" % _dialogs())
+			_check(false, "the editor did not quit when asked; its windows: %s" % _dialogs())
 			_finish()
 	if _failed() and state["stage"] != Stage.DONE:
 		_finish()
@@ -241,14 +251,21 @@ func _box(size: Vector2) -> CollisionShape2D:
 	return shape
 
 
+func _global_history_version() -> int:
+	var manager: EditorUndoRedoManager = EditorInterface.get_editor_undo_redo()
+	return manager.get_history_undo_redo(EditorUndoRedoManager.GLOBAL_HISTORY).get_version()
+
+
 # The texts of the dialogs the editor shows now.
 func _dialogs() -> PackedStringArray:
 	var texts: PackedStringArray = []
-	var base: Control = EditorInterface.get_base_control()
-	for dialog: Node in base.find_children("*", "AcceptDialog", true, false):
-		var accept: AcceptDialog = dialog as AcceptDialog
-		if accept.visible:
-			texts.append("%s: %s" % [accept.title, accept.dialog_text.strip_edges()])
+	for window: Node in get_tree().root.find_children("*", "Window", true, false):
+		var shown: Window = window as Window
+		if not shown.visible:
+			continue
+		var accept: AcceptDialog = shown as AcceptDialog
+		var text: String = accept.dialog_text.strip_edges() if accept != null else ""
+		texts.append("%s '%s': %s" % [shown.get_class(), shown.title, text])
 	return texts
 
 
