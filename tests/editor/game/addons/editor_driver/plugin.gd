@@ -11,7 +11,9 @@ extends EditorPlugin
 ## A step at a time from _process, its progress kept on the Engine: loading a new extension
 ## makes the editor reload every script, which cancels any coroutine waiting in this one.
 
-enum Stage { FIRST_SCAN, ADDON_SCAN, ENABLED, SCRIPT_SCAN, SCENE_OPEN, PLAYING, CLOSING, DONE }
+enum Stage {
+	FIRST_SCAN, ADDON_SCAN, ENABLED, CREATE_DIALOG, SCRIPT_SCAN, SCENE_OPEN, PLAYING, CLOSING, DONE
+}
 
 const ADDON_DIR := "res://addons/haptics"
 const PLUGIN := "haptics"
@@ -22,6 +24,8 @@ const GAME_SCRIPT := "res://probe_check.gd"
 const GAME_SCRIPT_SOURCE := "HAPTICS_EDITOR_TEST_SCRIPT"
 const ADDON_ZIP := "HAPTICS_ADDON_ZIP"
 const CLASSES: Array[String] = ["HapticProbe", "HapticMaterial", "HapticWater"]
+## The start of HapticProbe's class description (its first ## line).
+const PROBE_BRIEF := "Drop-in haptics for any 2D body"
 const SETTINGS: Array[String] = [
 	"haptics/input/hand_actions", "haptics/input/feed_actions", "haptics/servo/spin_us"
 ]
@@ -65,7 +69,7 @@ func _process(_delta: float) -> void:
 func _ready_for(state: Dictionary) -> bool:
 	var scanning: bool = EditorInterface.get_resource_filesystem().is_scanning()
 	match state["stage"]:
-		Stage.FIRST_SCAN, Stage.ENABLED, Stage.SCENE_OPEN:
+		Stage.FIRST_SCAN, Stage.ENABLED, Stage.CREATE_DIALOG, Stage.SCENE_OPEN:
 			return not scanning
 		Stage.ADDON_SCAN, Stage.SCRIPT_SCAN:
 			return state.get("changed", false) and not scanning
@@ -108,6 +112,14 @@ func _advance(state: Dictionary) -> void:
 			)
 			for setting: String in SETTINGS:
 				_check(ProjectSettings.has_setting(setting), "Project Settings lists %s" % setting)
+			_to(state, Stage.CREATE_DIALOG)
+			EditorInterface.popup_create_dialog(_on_created, &"Node", "HapticProbe")
+		Stage.CREATE_DIALOG:
+			var shown: String = _create_dialog_description()
+			_check(
+				shown.contains(PROBE_BRIEF),
+				"Create Node describes HapticProbe ('%s')" % shown.left(80).replace("\n", " ")
+			)
 			_write_game_script()
 			_scan(state, Stage.SCRIPT_SCAN)
 		Stage.SCRIPT_SCAN:
@@ -254,6 +266,24 @@ func _box(size: Vector2) -> CollisionShape2D:
 func _global_history_version() -> int:
 	var manager: EditorUndoRedoManager = EditorInterface.get_editor_undo_redo()
 	return manager.get_history_undo_redo(EditorUndoRedoManager.GLOBAL_HISTORY).get_version()
+
+
+func _on_created(_type: StringName) -> void:
+	pass
+
+
+# The description the Create dialog on screen shows for its selected type.
+func _create_dialog_description() -> String:
+	for dialog: Node in get_tree().root.find_children("*", "CreateDialog", true, false):
+		var window: Window = dialog as Window
+		if not window.visible:
+			continue
+		var text: String = ""
+		for label: Node in window.find_children("*", "RichTextLabel", true, false):
+			text += (label as RichTextLabel).get_parsed_text()
+		window.hide()
+		return text
+	return "(no Create dialog shown)"
 
 
 # The texts of the dialogs the editor shows now.
