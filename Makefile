@@ -119,12 +119,13 @@ test-export: export
 
 ## export-server: the dedicated Pong server, self-contained like the game, in
 ## .export/linux-server/: ./haptic-pong-server --headless -- --server [--port=P]
-export-server: import build
+export-server: import build-release
 	@tools/export.sh server
 
 ## test-export-server: the exported server, started with an emptied environment, referees a
 ## match between two clients of the source tree: exit 0, no error in any log
 test-export-server: export-server
+	@tools/check-product.sh .export/linux-server
 	@HAPTICS_SERVER=.export/linux-server/haptic-pong-server \
 		tools/analysis/run.sh -m pytest tests/net/test_exported_server.py -q -p no:cacheprovider
 

@@ -37,6 +37,7 @@ for name in "${SHIPPED_NAMES[@]}"; do
 done
 # Debug information stays in the build tree.
 command -v strip >/dev/null && strip --strip-debug "$STAGE/$ADDON_SRC"/bin/*.so
+tools/check-product.sh "$STAGE/$ADDON_SRC" >/dev/null
 
 mkdir -p "$OUT"
 ZIP="$(cd "$OUT" && pwd)/haptics-addon-$VERSION.zip"

@@ -39,8 +39,12 @@ if [[ ! -f $templates/linux_release.x86_64 ]]; then
   fi
 fi
 
-[[ -f addons/haptics/bin/libhaptics.linux.template_$flavour.x86_64.so ]] || {
-  echo "export: the $flavour library is missing; run 'make build$([[ $flavour == release ]] && echo -release)'" >&2
+# Every export ships the product library (make build-release: no development tools). The debug
+# template loads the library named for debug, which in this project is the development build
+# (make build): the server's export gets the product library under that name.
+product=addons/haptics/bin/libhaptics.linux.template_release.x86_64.so
+[[ -f $product ]] || {
+  echo "export: the product library $product is missing; run 'make build-release'" >&2
   exit 1
 }
 log=.build/export-$name.log
@@ -49,4 +53,7 @@ mkdir -p "$dir"
 tools/godot --headless --path . "--export-$flavour" "$preset" "$dir/$name.x86_64" \
   >"$log" 2>&1 || { tail -n 30 "$log"; exit 1; }
 [[ -x $dir/$name.x86_64 ]] || { tail -n 30 "$log"; exit 1; }
+shipped=$dir/libhaptics.linux.template_$flavour.x86_64.so
+[[ -f $shipped ]] || { echo "export: Godot did not export $shipped" >&2; exit 1; }
+cp "$product" "$shipped"
 tools/bundle-runtime.sh "$dir" "$name"

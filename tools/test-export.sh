@@ -36,6 +36,7 @@ fail() {
   exit 1
 }
 tools/check-bundle.sh "$game" || fail "the bundle's static checks"
+tools/check-product.sh "$game" || fail "development tools in the export"
 # Sonames of the GPU driver's interface, which the bundle leaves to the system.
 gpu_driver=$(<tools/dist/gpu-driver-sonames.regex)
 
