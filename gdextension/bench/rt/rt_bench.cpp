@@ -24,9 +24,9 @@
 #include "latency.h"
 #include "rt_processes.h"
 
-#include "core/haptics_engine.h"
-#include "core/realtime.h"
-#include "core/servo_stats.h"
+#include "core/base/realtime.h"
+#include "core/servo/servo_stats.h"
+#include "engine/haptics_engine.h"
 
 #include <algorithm>
 #include <atomic>

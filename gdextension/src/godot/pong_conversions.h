@@ -9,8 +9,8 @@
 #include <string>
 
 #include "godot/containers.h"
-#include "pong/pong_input.h"
-#include "pong/pong_output.h"
+#include "renderers/pong/pong_input.h"
+#include "renderers/pong/pong_output.h"
 
 namespace haptics::binding {
 

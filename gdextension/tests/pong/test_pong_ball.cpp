@@ -3,8 +3,8 @@
 
 #include "pong/pong_test_support.h"
 
-#include "pong/ball.h"
-#include "pong/pong_sim.h"
+#include "renderers/pong/ball.h"
+#include "renderers/pong/pong_sim.h"
 
 #include <doctest/doctest.h>
 

@@ -4,8 +4,8 @@
 
 #include "pong/pong_test_support.h"
 
-#include "pong/paddle_contact.h"
-#include "pong/pong_sim.h"
+#include "renderers/pong/paddle_contact.h"
+#include "renderers/pong/pong_sim.h"
 
 #include <doctest/doctest.h>
 

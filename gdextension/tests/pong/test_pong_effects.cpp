@@ -4,8 +4,8 @@
 
 #include "pong/pong_test_support.h"
 
-#include "pong/hand_effects.h"
-#include "pong/pong_sim.h"
+#include "renderers/pong/hand_effects.h"
+#include "renderers/pong/pong_sim.h"
 
 #include <doctest/doctest.h>
 

@@ -7,9 +7,9 @@
 // A one-way case: an owner that moves then stops, 200 ms late, a victim that settles.
 
 #include "devices/simulated_device.h"
-#include "pong/hand_effects.h"
-#include "pong/pong_sim.h"
 #include "pong/pong_test_support.h"
+#include "renderers/pong/hand_effects.h"
+#include "renderers/pong/pong_sim.h"
 
 #include <doctest/doctest.h>
 

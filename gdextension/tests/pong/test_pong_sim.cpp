@@ -4,7 +4,7 @@
 
 #include "pong/pong_test_support.h"
 
-#include "pong/pong_sim.h"
+#include "renderers/pong/pong_sim.h"
 
 #include <doctest/doctest.h>
 

@@ -9,7 +9,7 @@
 // time (the device's I/O thread while it runs, the game thread in open/close) and must not
 // allocate on success; error_text() is only meaningful right after a failure.
 
-#include "core/status.h"
+#include "core/base/status.h"
 #include "devices/dualsense/dualsense_bus.h"
 
 #include <cstddef>
