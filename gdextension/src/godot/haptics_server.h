@@ -23,7 +23,7 @@ class HapticsServer : public gd::ExtensionObject {
 public:
 	static void bind_methods(gd::ClassBinder<HapticsServer> &r_binder);
 
-	// --- Devices ---
+	// --- Devices --- (haptics_server_devices.cpp)
 	// Every device present: the simulated one first, then hidapi, libusb, evdev and
 	// OpenHaptics devices, each a Dictionary (id, backend, vendor_id, product_id, path,
 	// product, manufacturer, serial, usage_page, usage, known_haptic, model, driver,
