@@ -1,7 +1,7 @@
 #pragma once
 
 // A backend's real device class running over its scripted transport (a software model of
-// the hardware), as the game opens it with the id "scripted:<driver>" (device_factory.h).
+// the hardware), as the game opens it with the id "scripted:<driver>" (scripted_backends.h).
 // Everything is forwarded to the backend's device, so the protocol, the I/O thread and the
 // fault handling are the real ones; two things are added for tests and demos:
 //  - the model's stylus or stick follows the simulated hand target (so a test can push into

@@ -1,6 +1,6 @@
 // Engine values <-> the core's plain structs. GDScript speaks game axes (x right, y down) in
 // SI units (the probe has already turned pixels into metres); the core speaks device axes
-// (y up). The flip happens here and only here, through core/coordinates.h. The dictionary
+// (y up). The flip happens here and only here, through core/base/coordinates.h. The dictionary
 // layouts are documented for GDScript authors in doc_classes/HapticsServer.xml; keys end in
 // their unit, and the names used before 0.3.0 are still read, with a deprecation warning.
 #pragma once

@@ -1,4 +1,4 @@
-// The ball-paddle contact law (pong/paddle_contact.h): the hand's two regimes, the paper's
+// The ball-paddle contact law (renderers/pong/paddle_contact.h): the hand's two regimes, the paper's
 // jump against the continuous default, swinging harder, the ball force's direction, the
 // side memory against tunnelling, and spin induction against its closed form.
 

@@ -1,4 +1,4 @@
-// The effects on the device player's hand (pong/hand_effects.h) through the simulation:
+// The effects on the device player's hand (renderers/pong/hand_effects.h) through the simulation:
 // directions and magnitudes in device space for both sides, the laws of slow, heavy and
 // remote, the remote's mirror, cap and low-pass, and the ramps' timing.
 

@@ -1,8 +1,8 @@
 #pragma once
 
 // The DualSense backend's own seam to the HID layer: three calls, so the protocol and the
-// device are tested against a scripted pad (scripted_dualsense.h) and run against hidapi
-// (dualsense_hidapi_transport.h) unchanged. Deliberately small and local to this backend
+// device are tested against a scripted pad (dev_tools/dualsense/scripted_dualsense.h) and
+// run against hidapi (dualsense_hidapi_transport.h) unchanged. Deliberately small and local to this backend
 // (the PID backend has its own generic HID transport; the two may be unified later).
 //
 // Buffers are hidapi's: byte 0 is the report ID. The I/O calls are made by ONE thread at a

@@ -18,7 +18,7 @@
 // across" is p ^ 1 in both layouts). On a diagonal the z players win the tie (|z| >= |x|),
 // as z = 0 goes to player 0 in the 2-player court: every point has exactly one owner.
 //
-// Device space (core/coordinates.h): x right, y up, z toward the user. Each player sits
+// Device space (core/base/coordinates.h): x right, y up, z toward the user. Each player sits
 // behind its back wall looking at the centre, so its device frame is the world turned
 // about y by its seat's angle: 0 for player 0 (the world's axes), 180 degrees for player 1
 // (device x -> world -x, z -> -z), +90 for player 2 (device forward -z -> world -x) and -90

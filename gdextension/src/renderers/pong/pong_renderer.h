@@ -1,7 +1,7 @@
 #pragma once
 
 // Haptic Battle Pong as the servo runs it (render mode PONG): the ball, the paddles and the
-// effects (pong/pong_sim.h) stepped every tick, so the ball-paddle contact closes at the
+// effects (pong_sim.h) stepped every tick, so the ball-paddle contact closes at the
 // servo rate, as in the paper and in CHAI3D's dynamic examples (the physics steps inside the
 // haptic loop, the game only draws snapshots).
 //
