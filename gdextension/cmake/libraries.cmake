@@ -5,10 +5,9 @@
 
 function(haptics_expose target scope folder)
   set(root "${CMAKE_BINARY_DIR}/include/${folder}")
-  if(NOT EXISTS "${root}/${folder}")
-    file(MAKE_DIRECTORY "${root}")
-    file(CREATE_LINK "${CMAKE_CURRENT_SOURCE_DIR}/src/${folder}" "${root}/${folder}" SYMBOLIC)
-  endif()
+  file(MAKE_DIRECTORY "${root}")
+  # Made at every configure: a build tree reused after the sources moved follows them.
+  file(CREATE_LINK "${CMAKE_CURRENT_SOURCE_DIR}/src/${folder}" "${root}/${folder}" SYMBOLIC)
   target_include_directories(${target} ${scope} "${root}")
 endfunction()
 

@@ -64,7 +64,8 @@ struct HapticsEngine::Impl {
 
 	void publish_config() {
 		renderers.publish_settings(config);
-		// Last: a servo that sees the new mode also sees the new settings of its renderer.
+		// Last, and always: the servo looks at the renderers' settings when this changes, and
+		// one that sees the new mode also sees its renderer's new settings.
 		channels.config.store(config.servo);
 	}
 };

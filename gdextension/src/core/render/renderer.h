@@ -14,10 +14,12 @@
 //
 // Call order, all on the thread that ticks the servo, none of it may allocate, lock, block
 // or log:
-//   pick_up_settings(dt, restart)  every tick, every renderer, first (and at a session's
-//                       start with restart): take the renderer's settings off its channel
-//                       when the game changed them, and follow a change of period. Keep
-//                       what a parameter change does not invalidate (a filter's motion).
+//   pick_up_settings(dt, restart)  every renderer, first, on a tick that picked up a new
+//                       servo configuration (the game publishes one after any renderer's
+//                       settings: ServoChannels::config) or a new period, and at a session's
+//                       start with restart: take the renderer's settings off its channel when
+//                       the game changed them, and follow the period. Keep what a parameter
+//                       change does not invalidate (a filter's motion).
 //   begin_session(dt)   a rendering session starts (every renderer): counters zeroed, rest.
 //   reset()             the renderer becomes the active one: start from rest.
 //   pick_up()           every tick, every renderer: take the renderer's own game inputs off

@@ -23,7 +23,10 @@ inline constexpr size_t TELEMETRY_QUEUE_CAPACITY = 4096; // 4 s at 1 kHz.
 
 struct ServoChannels {
 	Seqlock<Frame> frame; // Game -> servo, written by submit_frame only.
-	Seqlock<ServoConfig> config; // Game -> servo.
+	// Game -> servo. Also the renderers' settings' generation: the game stores it after
+	// storing any renderer's settings (RendererChannels), so the servo looks at theirs only
+	// when this changed.
+	Seqlock<ServoConfig> config;
 	SpscQueue<ImpactEvent, IMPACT_QUEUE_CAPACITY> impacts; // Game -> servo.
 	Seqlock<ServoOutput> output; // Servo -> game.
 	SpscQueue<TelemetrySample, TELEMETRY_QUEUE_CAPACITY> telemetry; // Servo -> game.

@@ -71,18 +71,24 @@ bool ServoPipeline::apply_config(const ServoConfig &p_config) {
 	return switched;
 }
 
-void ServoPipeline::pick_up_inputs() {
+void ServoPipeline::pick_up_inputs(bool p_period_changed) {
 	bool switched = false;
+	bool configured = p_period_changed;
 	if (channels_.config.version() != config_version_) {
 		ServoConfig config;
 		uint64_t version = 0;
 		if (channels_.config.try_load(config, &version)) {
 			config_version_ = version;
 			switched = apply_config(config);
+			configured = true;
 		}
 	}
-	for (Renderer *renderer : renderers_) {
-		renderer->pick_up_settings(dt_s_, false);
+	// The servo's configuration is published after every renderer's settings and with every
+	// change of them (servo_channels.h), so the renderers look at theirs only then.
+	if (configured) {
+		for (Renderer *renderer : renderers_) {
+			renderer->pick_up_settings(dt_s_, false);
+		}
 	}
 	if (switched) {
 		active().reset(); // Each mode starts from rest; the slew limiter smooths the hand-over.
@@ -112,7 +118,8 @@ void ServoPipeline::pick_up_inputs() {
 }
 
 DeviceIo ServoPipeline::tick(double p_dt_s) {
-	dt_s_ = p_dt_s; // Manual stepping may change the period; the renderers follow (pick_up_settings).
+	const bool period_changed = p_dt_s != dt_s_; // Manual stepping may; the renderers follow.
+	dt_s_ = p_dt_s;
 	device_->begin_tick(p_dt_s);
 	DeviceState state;
 	const DeviceIo read = device_->read_state(state);
@@ -121,7 +128,7 @@ DeviceIo ServoPipeline::tick(double p_dt_s) {
 	}
 	++tick_;
 	time_s_ += p_dt_s;
-	pick_up_inputs();
+	pick_up_inputs(period_changed);
 
 	const Vec3 input = input_vector(state.position_m, input_radius_m_, config_.input.dead_zone);
 	const RenderInput render_input{ state, input, frame_, new_frame_, p_dt_s, limits_.workspace_radius_m,

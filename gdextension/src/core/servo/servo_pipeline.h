@@ -47,7 +47,7 @@ public:
 private:
 	// Returns whether the render mode changed.
 	bool apply_config(const ServoConfig &p_config);
-	void pick_up_inputs();
+	void pick_up_inputs(bool p_period_changed);
 	Renderer &active() { return *renderers_[static_cast<size_t>(config_.render_mode)]; }
 	void publish(const DeviceState &p_state, const Vec3 &p_input, const ForceComponents &p_forces,
 			const SafetyResult &p_safety, uint32_t p_renderer_flags);

@@ -61,6 +61,10 @@ void ConstraintRenderer::render(const RenderInput &p_input, RenderResult &r_resu
 void ConstraintRenderer::publish(const ForceComponents &p_forces, bool p_active) {
 	(void)p_forces;
 	const GeometryExchange::Current geometry = channels_.geometry.current();
+	if (!p_active && !published_active_ && geometry.generation == published_.geometry_generation &&
+			updates_ == published_.updates) {
+		return; // Inactive, and the walls are the ones the game already sees.
+	}
 	ProxyState state;
 	state.geometry_generation = geometry.generation;
 	state.geometry_segments = geometry.geometry ? static_cast<uint32_t>(geometry.geometry->segment_count()) : 0;
@@ -70,9 +74,6 @@ void ConstraintRenderer::publish(const ForceComponents &p_forces, bool p_active)
 		state.goal = last_.goal;
 		state.constraints = last_.active_constraints;
 		state.placed = last_.placed;
-	} else if (!published_active_ && state.geometry_generation == published_.geometry_generation &&
-			state.updates == published_.updates) {
-		return; // Inactive, and the walls are the ones the game already sees.
 	}
 	channels_.state.store(state);
 	published_ = state;
