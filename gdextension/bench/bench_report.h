@@ -3,8 +3,8 @@
 // Shared pieces of the servo benchmark (haptics_bench): results, the micro-benchmarks, and
 // the table/JSON report. Not part of the product.
 
-#include "core/servo_stats.h"
-#include "core/swept_disc.h"
+#include "core/servo/servo_stats.h"
+#include "renderers/constraint/swept_disc.h"
 
 #include <cstddef>
 #include <cstdint>

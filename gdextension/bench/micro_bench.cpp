@@ -3,12 +3,15 @@
 
 #include "bench_report.h"
 
-#include "core/force_model.h"
-#include "core/haptics_engine.h"
-#include "core/smoothing_filter.h"
-#include "core/telemetry.h"
-#include "core/transients.h"
-#include "pong/pong_sim.h"
+#include "core/servo/input_vector.h"
+#include "core/servo/telemetry.h"
+#include "core/servo/transients.h"
+#include "engine/haptics_engine.h"
+#include "renderers/constraint/constraint_port.h"
+#include "renderers/movement/force_model.h"
+#include "renderers/movement/smoothing_filter.h"
+#include "renderers/pong/pong_port.h"
+#include "renderers/pong/pong_sim.h"
 
 #include <algorithm>
 #include <chrono>
@@ -92,10 +95,11 @@ std::vector<MicroResult> run_micro_benchmarks() {
 	std::vector<MicroResult> results;
 	const Frame frame = busy_frame();
 	const ForceModelConfig config;
+	const InputConfig input;
 
 	results.push_back(measure("force model (input vector + 5 components)", [&](int p_n) {
 		const Vec3 position{ 0.03 + 1e-6 * p_n, -0.02, 0.01 };
-		const Vec3 i = input_vector(position, 0.1, config.dead_zone);
+		const Vec3 i = input_vector(position, 0.1, input.dead_zone);
 		g_sink = g_sink + compute_forces(frame, i, config).continuous.x;
 	}));
 	// The same with the paper's normalised sum (the default above is per_contact).
@@ -103,7 +107,7 @@ std::vector<MicroResult> run_micro_benchmarks() {
 	paper.contact_model = ContactModel::PAPER_SUM;
 	results.push_back(measure("force model, paper_sum contacts", [&](int p_n) {
 		const Vec3 position{ 0.03 + 1e-6 * p_n, -0.02, 0.01 };
-		const Vec3 i = input_vector(position, 0.1, paper.dead_zone);
+		const Vec3 i = input_vector(position, 0.1, input.dead_zone);
 		g_sink = g_sink + compute_forces(frame, i, paper).continuous.x;
 	}));
 
@@ -169,13 +173,14 @@ std::vector<MicroResult> run_micro_benchmarks() {
 	pong_engine.open_simulated_device();
 	pong_engine.set_hand_target({ 0.0, 0.0, 0.0 });
 	RenderConfig pong_config = pong_engine.config();
-	pong_config.render_mode = RenderMode::PONG;
+	pong_config.servo.render_mode = RenderMode::PONG;
 	pong_engine.configure(pong_config);
-	pong_engine.set_pong_input(pong_bench_input());
-	pong_engine.push_pong_command(pong_bench_command(PongCommandType::SET_BALL));
+	PongPort pong_port(pong_engine.renderers().pong.channels);
+	pong_port.set_input(pong_bench_input());
+	pong_port.push_command(pong_bench_command(PongCommandType::SET_BALL));
 	for (int k = 0; k < 2000; ++k) { // Let the ball settle onto the paddle.
 		if (k % 20 == 0) {
-			pong_engine.set_pong_input(pong_bench_input());
+			pong_port.set_input(pong_bench_input());
 		}
 		pong_engine.step(0.001);
 	}
@@ -184,13 +189,13 @@ std::vector<MicroResult> run_micro_benchmarks() {
 	PongEvent events[16];
 	MicroResult tick_result = measure("", [&](int p_n) {
 		if (p_n % 20 == 0) {
-			pong_engine.set_pong_input(pong_bench_input()); // 50 Hz: the watchdog's heartbeat.
+			pong_port.set_input(pong_bench_input()); // 50 Hz: the watchdog's heartbeat.
 		}
 		pong_engine.step(0.001);
 		if (p_n % 100 == 0) { // As often as the movement tick above drains: same overhead.
 			float telemetry[100 * 32];
 			pong_engine.drain_telemetry(telemetry, 100);
-			pong_engine.drain_pong_events(events, 16);
+			pong_port.drain_events(events, 16);
 			++pong_ticks; // Sampled here, not every tick: reading the output costs too.
 			pong_contacts += (pong_engine.output().flags & TELEMETRY_FLAG_PADDLE_CONTACT) != 0 ? 1 : 0;
 		}
@@ -207,12 +212,12 @@ std::vector<MicroResult> run_micro_benchmarks() {
 	const std::vector<Segment2> walls = haptics::test::perfect_maze(99, 10.0, 2024);
 	MazeMapping mapping;
 	mapping.maze_max = { 990.0, 990.0 };
-	maze_engine.set_constraint_geometry(walls.data(), walls.size(), mapping);
+	ConstraintPort(maze_engine.renderers().constraint.channels).set_geometry(walls.data(), walls.size(), mapping);
 	ConstraintConfig constraint;
 	constraint.proxy_radius = 3.0;
 	RenderConfig maze_config = maze_engine.config();
 	maze_config.constraint = constraint;
-	maze_config.render_mode = RenderMode::CONSTRAINT;
+	maze_config.servo.render_mode = RenderMode::CONSTRAINT;
 	maze_engine.configure(maze_config);
 	int tick = 0;
 	results.push_back(measure("full tick, manual step, constraint mode, 10 000 walls", [&](int p_n) {

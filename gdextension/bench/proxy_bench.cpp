@@ -13,9 +13,9 @@
 
 #include "bench_report.h"
 
-#include "core/constraint_geometry.h"
-#include "core/finite_proxy.h"
-#include "core/maze_mapping.h"
+#include "renderers/constraint/constraint_geometry.h"
+#include "renderers/constraint/finite_proxy.h"
+#include "renderers/constraint/maze_mapping.h"
 
 #include <algorithm>
 #include <chrono>

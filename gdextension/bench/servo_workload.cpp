@@ -1,8 +1,8 @@
 #include "servo_workload.h"
 
-#include "core/haptics_engine.h"
-#include "core/realtime.h"
-#include "core/telemetry.h"
+#include "core/base/realtime.h"
+#include "core/servo/telemetry.h"
+#include "engine/haptics_engine.h"
 
 #include <cmath>
 #include <cstdio>

@@ -6,7 +6,7 @@
 
 #include "bench_report.h"
 
-#include "core/servo_loop.h"
+#include "core/servo/servo_loop.h"
 
 namespace haptics::bench {
 

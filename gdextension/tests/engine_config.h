@@ -3,7 +3,7 @@
 // Changes part of an engine's configuration the way a game does: read it, modify a copy,
 // hand the whole of it back (HapticsEngine::configure validates it as one).
 
-#include "core/haptics_engine.h"
+#include "engine/haptics_engine.h"
 
 #include <utility>
 

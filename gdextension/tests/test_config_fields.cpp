@@ -1,8 +1,7 @@
 // The configuration field table: every field once, its default inside its own range, each
 // key reachable by its old name, and validation that names the key the game spells.
 
-#include "core/config_fields.h"
-#include "core/validation.h"
+#include "engine/config_table.h"
 
 #include <doctest/doctest.h>
 
@@ -31,7 +30,7 @@ TEST_CASE("config fields: each section and key once, defaults valid, units in th
 		CAPTURE(name);
 		CHECK(names.insert(name).second);
 		CHECK(sections.count(field.section) == 1);
-		CHECK(check_config_value(field, field.get(defaults)));
+		CHECK(check_config_value(field, config_value(defaults, field)));
 		CHECK(find_config_field(field.section, field.key) == &field);
 		if (field.old_key) {
 			CHECK(find_config_field(field.section, field.old_key) == &field);
@@ -56,9 +55,9 @@ TEST_CASE("config fields: a set value reads back, for every field") {
 	for (const ConfigField &field : config_fields()) {
 		CAPTURE(field.key);
 		RenderConfig config;
-		const double value = field.kind == FieldKind::FLAG ? 1.0 - field.get(config) : field.max;
-		field.set(config, value);
-		CHECK(field.get(config) == value);
+		const double value = field.kind == FieldKind::FLAG ? 1.0 - config_value(config, field) : field.max;
+		set_config_value(config, field, value);
+		CHECK(config_value(config, field) == value);
 		CHECK(validate_render_config(config));
 	}
 }
@@ -76,7 +75,7 @@ TEST_CASE("config fields: out of range, not finite, wrong kind, each rejected by
 			continue; // A bool holds nothing else to reject.
 		}
 		RenderConfig config;
-		field.set(config, field.kind == FieldKind::CHOICE ? 7.0 : field.max * 2.0 + 1.0);
+		set_config_value(config, field, field.kind == FieldKind::CHOICE ? 7.0 : field.max * 2.0 + 1.0);
 		const Status rejected = validate_render_config(config);
 		CHECK_FALSE(rejected.ok());
 		CHECK(mentions(rejected, name));
@@ -95,5 +94,5 @@ TEST_CASE("config fields: out of range, not finite, wrong kind, each rejected by
 	CHECK(contact_model.choices.size() == 2);
 	CHECK(std::string(contact_model.choices[static_cast<size_t>(ContactModel::PER_CONTACT)]) == "per_contact");
 	CHECK(std::string(contact_model.choices[static_cast<size_t>(ContactModel::PAPER_SUM)]) == "paper_sum");
-	CHECK(contact_model.get(RenderConfig{}) == 0.0); // per_contact is the default.
+	CHECK(config_value(RenderConfig{}, contact_model) == 0.0); // per_contact is the default.
 }

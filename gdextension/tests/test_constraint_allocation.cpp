@@ -5,8 +5,9 @@
 // replaces. It covers the ticks that pick up new walls from the exchange. Skipped under the
 // sanitizers, which bring their own allocator.
 
-#include "core/haptics_engine.h"
+#include "engine/haptics_engine.h"
 #include "engine_config.h"
+#include "renderers/constraint/constraint_port.h"
 #include "test_proxy_geometry.h"
 
 #include <doctest/doctest.h>
@@ -46,8 +47,9 @@ TEST_CASE("constraint tick allocates nothing: 1 kHz and 50 Hz proxy, walls swapp
 	SimulatedDeviceConfig device;
 	device.rigid_hand = true;
 	REQUIRE(engine.open_simulated_device(device));
-	REQUIRE(engine.set_constraint_geometry(walls.data(), walls.size(), mapping));
-	REQUIRE(reconfigure(engine, [](RenderConfig &c) { c.render_mode = RenderMode::CONSTRAINT; }));
+	ConstraintPort maze(engine.renderers().constraint.channels);
+	REQUIRE(maze.set_geometry(walls.data(), walls.size(), mapping));
+	REQUIRE(reconfigure(engine, [](RenderConfig &c) { c.servo.render_mode = RenderMode::CONSTRAINT; }));
 	ConstraintConfig config;
 	config.proxy_radius = 3.0;
 	unsigned long allocations = 0;
@@ -57,7 +59,7 @@ TEST_CASE("constraint tick allocates nothing: 1 kHz and 50 Hz proxy, walls swapp
 			REQUIRE(reconfigure(engine, [&](RenderConfig &c) { c.constraint = config; }));
 		}
 		if (k % 500 == 250) { // New walls (built here, outside the watched step).
-			REQUIRE(engine.set_constraint_geometry(walls.data(), walls.size() - static_cast<size_t>(k / 500), mapping));
+			REQUIRE(maze.set_geometry(walls.data(), walls.size() - static_cast<size_t>(k / 500), mapping));
 		}
 		const double t = k * 0.001;
 		REQUIRE(engine.set_hand_target({ 0.06 * std::sin(4.0 * t), 0.06 * std::sin(5.3 * t), 0.0 }));
@@ -71,8 +73,8 @@ TEST_CASE("constraint tick allocates nothing: 1 kHz and 50 Hz proxy, walls swapp
 		allocations += g_mallocs.load();
 		REQUIRE(status);
 	}
-	CHECK(engine.output().proxy_placed);
-	CHECK(engine.output().proxy_updates > 2000);
+	CHECK(maze.state().placed);
+	CHECK(maze.state().updates > 2000);
 	CHECK(allocations == 0);
 	// The counter works.
 	g_mallocs.store(0);

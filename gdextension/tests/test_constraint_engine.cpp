@@ -3,11 +3,13 @@
 // rejected geometry keeps the previous walls, and walls can be swapped while the servo
 // thread runs.
 
-#include "core/constraint_renderer.h"
-#include "core/haptics_engine.h"
-#include "core/realtime.h"
-#include "core/telemetry.h"
+#include "core/base/realtime.h"
+#include "core/servo/telemetry.h"
+#include "engine/haptics_engine.h"
 #include "engine_config.h"
+#include "renderers/constraint/constraint_port.h"
+#include "renderers/constraint/constraint_renderer.h"
+#include "renderers/movement/force_model.h"
 #include "test_proxy_geometry.h"
 
 #include <doctest/doctest.h>
@@ -41,6 +43,15 @@ MazeMapping maze_mapping() {
 	return mapping;
 }
 
+// The engine's constraint renderer, as the game reaches it.
+ConstraintPort maze_port(HapticsEngine &r_engine) {
+	return ConstraintPort(r_engine.renderers().constraint.channels);
+}
+
+ProxyState proxy_state(HapticsEngine &r_engine) {
+	return maze_port(r_engine).state();
+}
+
 ConstraintConfig constraint_config(ProxyUpdate p_update) {
 	ConstraintConfig config;
 	// Low enough that the 3.3 N limit is never reached here: the hand is at most 0.14 m from
@@ -59,10 +70,10 @@ void set_up(HapticsEngine &r_engine, ProxyUpdate p_update) {
 	SafetyConfig safety;
 	safety.startup_ramp_s = 0.0;
 	safety.slew_rate_n_per_s = 0.0;
-	REQUIRE(reconfigure(r_engine, [&](RenderConfig &c) { c.safety = safety; }));
+	REQUIRE(reconfigure(r_engine, [&](RenderConfig &c) { c.servo.safety = safety; }));
 	REQUIRE(reconfigure(r_engine, [&](RenderConfig &c) { c.constraint = constraint_config(p_update); }));
-	REQUIRE(r_engine.set_constraint_geometry(maze().data(), maze().size(), maze_mapping()));
-	REQUIRE(reconfigure(r_engine, [](RenderConfig &c) { c.render_mode = RenderMode::CONSTRAINT; }));
+	REQUIRE(maze_port(r_engine).set_geometry(maze().data(), maze().size(), maze_mapping()));
+	REQUIRE(reconfigure(r_engine, [](RenderConfig &c) { c.servo.render_mode = RenderMode::CONSTRAINT; }));
 }
 
 Vec3 hand_path(int p_tick) {
@@ -92,32 +103,33 @@ void compare_with_proxy_alone(ProxyUpdate p_update) {
 		}
 		REQUIRE(engine.step(DT));
 		const ServoOutput out = engine.output();
+		const ProxyState proxy = proxy_state(engine);
 		const ConstraintOutput expected =
 				alone.render(geometry.get(), 1, out.position_m, 0.1, p_update == ProxyUpdate::SERVO_RATE || frame);
 		REQUIRE(expected.placed);
-		differences += out.forces.normal == expected.force && out.forces.total == expected.force &&
-						out.proxy_maze == expected.proxy && engine.proxy_position() == expected.proxy &&
-						out.goal_maze == expected.goal && out.proxy_constraints == expected.active_constraints
+		differences += out.forces.parts[WALL_FORCE] == expected.force && out.forces.total == expected.force &&
+						proxy.proxy == expected.proxy && proxy.goal == expected.goal &&
+						proxy.constraints == expected.active_constraints
 				? 0
 				: 1;
 		pushing += length(expected.force) > 0.05 ? 1 : 0;
 		if (!frame && k > 0) {
-			proxy_moves_between_frames += out.proxy_maze == previous_proxy ? 0 : 1;
+			proxy_moves_between_frames += proxy.proxy == previous_proxy ? 0 : 1;
 		}
-		previous_proxy = out.proxy_maze;
+		previous_proxy = proxy.proxy;
 		CHECK((out.flags & TELEMETRY_FLAG_CONSTRAINT_MODE) != 0);
 		CHECK(((out.flags & TELEMETRY_FLAG_PROXY_CONTACT) != 0) == (expected.active_constraints > 0));
 	}
 	CHECK(differences == 0);
 	CHECK(pushing > 300); // The path runs into walls; the comparison is not of zeros.
-	const ServoOutput out = engine.output();
-	CHECK(out.render_mode == RenderMode::CONSTRAINT);
-	CHECK(out.proxy_placed);
+	CHECK(engine.output().render_mode == RenderMode::CONSTRAINT);
+	const ProxyState proxy = proxy_state(engine);
+	CHECK(proxy.placed);
 	if (p_update == ProxyUpdate::SERVO_RATE) {
-		CHECK(out.proxy_updates == 3000);
+		CHECK(proxy.updates == 3000);
 		CHECK(proxy_moves_between_frames > 1000);
 	} else {
-		CHECK(out.proxy_updates == frames);
+		CHECK(proxy.updates == frames);
 		CHECK(proxy_moves_between_frames == 0); // Held between frames...
 	}
 	CHECK(engine.stats().non_finite_ticks == 0);
@@ -139,7 +151,7 @@ TEST_CASE("constraint engine: force is k_c (proxy - device), normal to the wall,
 	// One vertical wall at maze x = 120 across the whole maze; the device pushes to maze
 	// x = 130, y = 90 (10 units into it) from the left.
 	const Segment2 wall{ { 120.0, 0.0 }, { 120.0, 180.0 } };
-	REQUIRE(engine.set_constraint_geometry(&wall, 1, maze_mapping()));
+	REQUIRE(maze_port(engine).set_geometry(&wall, 1, maze_mapping()));
 	const double metres_per_unit = 0.16 / (180.0 * std::sqrt(2.0));
 	for (double x = 90.0; x <= 130.0; x += 1.0) {
 		REQUIRE(engine.set_hand_target({ (x - 90.0) * metres_per_unit, 0.0, 0.0 }));
@@ -148,14 +160,16 @@ TEST_CASE("constraint engine: force is k_c (proxy - device), normal to the wall,
 	}
 	const ForceComponents f = engine.forces();
 	const double penetration_m = (130.0 - (120.0 - 4.0)) * metres_per_unit; // Past proxy surface.
-	CHECK(engine.proxy_position().x == doctest::Approx(116.0).epsilon(1e-6));
-	CHECK(engine.proxy_position().y == doctest::Approx(90.0));
-	CHECK(f.normal.x == doctest::Approx(-20.0 * penetration_m).epsilon(1e-6));
-	CHECK(f.normal.y == doctest::Approx(0.0).epsilon(1e-9));
-	CHECK(f.normal.z == 0.0);
-	CHECK(f.friction == Vec3{});
-	CHECK(f.total == f.normal);
-	CHECK(engine.output().proxy_constraints == 1);
+	CHECK(proxy_state(engine).proxy.x == doctest::Approx(116.0).epsilon(1e-6));
+	CHECK(proxy_state(engine).proxy.y == doctest::Approx(90.0));
+	CHECK(f.parts[WALL_FORCE].x == doctest::Approx(-20.0 * penetration_m).epsilon(1e-6));
+	CHECK(f.parts[WALL_FORCE].y == doctest::Approx(0.0).epsilon(1e-9));
+	CHECK(f.parts[WALL_FORCE].z == 0.0);
+	for (size_t part = WALL_FORCE + 1; part < MAX_FORCE_PARTS; ++part) {
+		CHECK(f.parts[part] == Vec3{}); // Only the walls push.
+	}
+	CHECK(f.total == f.parts[WALL_FORCE]);
+	CHECK(proxy_state(engine).constraints == 1);
 }
 
 TEST_CASE("constraint engine: clamp, start-up ramp and watchdog still apply") {
@@ -167,9 +181,9 @@ TEST_CASE("constraint engine: clamp, start-up ramp and watchdog still apply") {
 	SafetyConfig safety;
 	safety.slew_rate_n_per_s = 0.0;
 	safety.startup_ramp_s = 0.01;
-	REQUIRE(reconfigure(engine, [&](RenderConfig &c) { c.safety = safety; }));
+	REQUIRE(reconfigure(engine, [&](RenderConfig &c) { c.servo.safety = safety; }));
 	const Segment2 wall{ { 120.0, 0.0 }, { 120.0, 180.0 } };
-	REQUIRE(engine.set_constraint_geometry(&wall, 1, maze_mapping()));
+	REQUIRE(maze_port(engine).set_geometry(&wall, 1, maze_mapping()));
 	REQUIRE(engine.set_hand_target({ 0.0, 0.0, 0.0 }));
 	REQUIRE(engine.submit_frame(Frame{}));
 	REQUIRE(engine.step(DT)); // Placed at the centre.
@@ -178,16 +192,16 @@ TEST_CASE("constraint engine: clamp, start-up ramp and watchdog still apply") {
 	const ServoOutput ramping = engine.output();
 	CHECK(ramping.ramp_gain == doctest::Approx(0.2));
 	// Ramp first, then the clamp (safety.h): 0.2 of the proxy's force, at most 3.3 N.
-	CHECK(length(ramping.forces.total) == doctest::Approx(std::min(3.3, 0.2 * length(ramping.forces.normal))));
+	CHECK(length(ramping.forces.total) == doctest::Approx(std::min(3.3, 0.2 * length(ramping.forces.parts[WALL_FORCE]))));
 	for (int k = 0; k < 20; ++k) {
 		REQUIRE(engine.step(DT));
 	}
 	ServoOutput out = engine.output();
-	CHECK(length(out.forces.normal) > 3.3); // What the proxy asks for...
+	CHECK(length(out.forces.parts[WALL_FORCE]) > 3.3); // What the proxy asks for...
 	CHECK(length(out.forces.total) == doctest::Approx(3.3)); // ...and what the device gets.
 	CHECK(out.forces.total.x < 0.0);
 	CHECK((out.flags & TELEMETRY_FLAG_CLAMPED) != 0);
-	CHECK(out.proxy_maze.x < 120.0 - 4.0 + 1e-9);
+	CHECK(proxy_state(engine).proxy.x < 120.0 - 4.0 + 1e-9);
 	// No frames for longer than the watchdog's timeout + fade: the force fades out.
 	for (int k = 0; k < 200; ++k) {
 		REQUIRE(engine.step(DT));
@@ -195,16 +209,16 @@ TEST_CASE("constraint engine: clamp, start-up ramp and watchdog still apply") {
 	out = engine.output();
 	CHECK((out.flags & TELEMETRY_FLAG_WATCHDOG) != 0);
 	CHECK(out.forces.total == Vec3{});
-	CHECK(length(out.forces.normal) > 3.3); // Still computed, not rendered.
+	CHECK(length(out.forces.parts[WALL_FORCE]) > 3.3); // Still computed, not rendered.
 }
 
 TEST_CASE("constraint engine: switching modes hands over between the renderers") {
 	HapticsEngine engine;
 	set_up(engine, ProxyUpdate::SERVO_RATE);
-	REQUIRE(reconfigure(engine, [](RenderConfig &c) { c.smoothing = SmoothingConfig{ false, 13.0 }; }));
-	REQUIRE(reconfigure(engine, [](RenderConfig &c) { c.render_mode = RenderMode::MOVEMENT; }));
+	REQUIRE(reconfigure(engine, [](RenderConfig &c) { c.movement.smoothing = SmoothingConfig{ false, 13.0 }; }));
+	REQUIRE(reconfigure(engine, [](RenderConfig &c) { c.servo.render_mode = RenderMode::MOVEMENT; }));
 	const Segment2 wall{ { 120.0, 0.0 }, { 120.0, 180.0 } };
-	REQUIRE(engine.set_constraint_geometry(&wall, 1, maze_mapping()));
+	REQUIRE(maze_port(engine).set_geometry(&wall, 1, maze_mapping()));
 	Frame floor;
 	floor.add_contact({ 0.0, 1.0, 0.0 });
 	const double metres_per_unit = 0.16 / (180.0 * std::sqrt(2.0));
@@ -212,55 +226,55 @@ TEST_CASE("constraint engine: switching modes hands over between the renderers")
 	REQUIRE(engine.set_hand_target(on_the_wall));
 	REQUIRE(engine.submit_frame(floor));
 	REQUIRE(engine.step(DT));
-	const Vec3 movement = engine.forces().normal;
+	const Vec3 movement = engine.forces().parts[NORMAL_FORCE];
 	CHECK(movement.y > 0.0); // The movement model's floor force.
-	CHECK(engine.config().render_mode == RenderMode::MOVEMENT);
-	CHECK_FALSE(engine.output().proxy_placed);
+	CHECK(engine.config().servo.render_mode == RenderMode::MOVEMENT);
+	CHECK_FALSE(proxy_state(engine).placed);
 
-	REQUIRE(reconfigure(engine, [](RenderConfig &c) { c.render_mode = RenderMode::CONSTRAINT; }));
+	REQUIRE(reconfigure(engine, [](RenderConfig &c) { c.servo.render_mode = RenderMode::CONSTRAINT; }));
 	REQUIRE(engine.step(DT)); // The device maps inside the wall: the proxy waits.
-	CHECK(engine.config().render_mode == RenderMode::CONSTRAINT);
-	CHECK_FALSE(engine.output().proxy_placed);
+	CHECK(engine.config().servo.render_mode == RenderMode::CONSTRAINT);
+	CHECK_FALSE(proxy_state(engine).placed);
 	CHECK(engine.forces().total == Vec3{});
-	CHECK(engine.proxy_position() == engine.output().goal_maze);
+	CHECK(proxy_state(engine).proxy == proxy_state(engine).goal);
 	REQUIRE(engine.set_hand_target({ 0.0, 0.0, 0.0 }));
 	REQUIRE(engine.step(DT)); // Free space: placed, no force.
-	CHECK(engine.output().proxy_placed);
+	CHECK(proxy_state(engine).placed);
 	REQUIRE(engine.set_hand_target({ 0.03, -0.05, 0.0 }));
 	REQUIRE(engine.step(DT));
-	CHECK(engine.forces().normal.x < 0.0); // Now the wall pushes back, floor contact ignored.
-	CHECK(engine.proxy_position().x == doctest::Approx(116.0).epsilon(1e-6));
+	CHECK(engine.forces().parts[WALL_FORCE].x < 0.0); // Now the wall pushes back, floor contact ignored.
+	CHECK(proxy_state(engine).proxy.x == doctest::Approx(116.0).epsilon(1e-6));
 	REQUIRE(engine.set_hand_target(on_the_wall));
-	CHECK(engine.forces().normal.y == doctest::Approx(0.0).epsilon(1e-9));
+	CHECK(engine.forces().parts[WALL_FORCE].y == doctest::Approx(0.0).epsilon(1e-9));
 
-	REQUIRE(reconfigure(engine, [](RenderConfig &c) { c.render_mode = RenderMode::MOVEMENT; }));
+	REQUIRE(reconfigure(engine, [](RenderConfig &c) { c.servo.render_mode = RenderMode::MOVEMENT; }));
 	REQUIRE(engine.step(DT));
-	CHECK(engine.forces().normal == movement);
-	CHECK(reconfigure(engine, [](RenderConfig &c) { c.render_mode = static_cast<RenderMode>(9); }).code() == StatusCode::INVALID_ARGUMENT);
-	CHECK(engine.config().render_mode == RenderMode::MOVEMENT);
+	CHECK(engine.forces().parts[NORMAL_FORCE] == movement);
+	CHECK(reconfigure(engine, [](RenderConfig &c) { c.servo.render_mode = 9; }).code() == StatusCode::INVALID_ARGUMENT);
+	CHECK(engine.config().servo.render_mode == RenderMode::MOVEMENT);
 }
 
 TEST_CASE("constraint engine: rejected geometry or config names the problem and keeps the previous one") {
 	HapticsEngine engine;
 	set_up(engine, ProxyUpdate::SERVO_RATE);
 	const Segment2 wall{ { 120.0, 0.0 }, { 120.0, 180.0 } };
-	REQUIRE(engine.set_constraint_geometry(&wall, 1, maze_mapping()));
+	REQUIRE(maze_port(engine).set_geometry(&wall, 1, maze_mapping()));
 	REQUIRE(engine.set_hand_target({ 0.0, 0.0, 0.0 }));
 	REQUIRE(engine.submit_frame(Frame{}));
 	REQUIRE(engine.step(DT));
 	REQUIRE(engine.set_hand_target({ 0.03, 0.0, 0.0 }));
 	REQUIRE(engine.step(DT));
-	const Vec3 held = engine.forces().normal;
-	const Vec2 proxy = engine.proxy_position();
+	const Vec3 held = engine.forces().parts[WALL_FORCE];
+	const Vec2 proxy = proxy_state(engine).proxy;
 	REQUIRE(held.x < 0.0);
 
 	std::vector<Segment2> bad(5, wall);
 	bad[3].a.x = NaN;
-	Status status = engine.set_constraint_geometry(bad.data(), bad.size(), maze_mapping());
+	Status status = maze_port(engine).set_geometry(bad.data(), bad.size(), maze_mapping());
 	CHECK(status.code() == StatusCode::INVALID_ARGUMENT);
 	CHECK(std::strstr(status.message(), "constraint.segments[3].a") != nullptr);
 	bad[3] = Segment2{ { 5.0, 5.0 }, { 5.0, 5.0 } };
-	status = engine.set_constraint_geometry(bad.data(), bad.size(), maze_mapping());
+	status = maze_port(engine).set_geometry(bad.data(), bad.size(), maze_mapping());
 	CHECK(std::strstr(status.message(), "constraint.segments[3]: degenerate") != nullptr);
 	ConstraintConfig wild = constraint_config(ProxyUpdate::SERVO_RATE);
 	wild.proxy_radius = 0.0;
@@ -275,8 +289,8 @@ TEST_CASE("constraint engine: rejected geometry or config names the problem and 
 	for (int k = 0; k < 10; ++k) {
 		REQUIRE(engine.step(DT));
 	}
-	CHECK(engine.forces().normal == held); // The same wall, the same proxy, the same config.
-	CHECK(engine.proxy_position() == proxy);
+	CHECK(engine.forces().parts[WALL_FORCE] == held); // The same wall, the same proxy, the same config.
+	CHECK(proxy_state(engine).proxy == proxy);
 	CHECK(engine.config().constraint.proxy_radius == 4.0);
 }
 
@@ -286,7 +300,7 @@ TEST_CASE("constraint engine: walls swapped while the servo thread runs") {
 	device.rigid_hand = true;
 	REQUIRE(engine.open_simulated_device(device));
 	REQUIRE(reconfigure(engine, [&](RenderConfig &c) { c.constraint = constraint_config(ProxyUpdate::SERVO_RATE); }));
-	REQUIRE(reconfigure(engine, [](RenderConfig &c) { c.render_mode = RenderMode::CONSTRAINT; }));
+	REQUIRE(reconfigure(engine, [](RenderConfig &c) { c.servo.render_mode = RenderMode::CONSTRAINT; }));
 	ServoOptions options;
 	options.realtime.priority = 0;
 	REQUIRE(engine.start(options));
@@ -295,7 +309,7 @@ TEST_CASE("constraint engine: walls swapped while the servo thread runs") {
 	const auto wait_for = [&](auto p_condition) {
 		for (int k = 0; k < 2000; ++k) {
 			engine.submit_frame(Frame{});
-			if (p_condition(engine.output())) {
+			if (p_condition(engine.output(), proxy_state(engine))) {
 				return true;
 			}
 			sleep_for_ns(1'000'000);
@@ -316,20 +330,20 @@ TEST_CASE("constraint engine: walls swapped while the servo thread runs") {
 		// so the proxy can only reach its new place if the swap really happened.
 		REQUIRE(engine.set_hand_target({ 0.0, 0.0, 0.0 }));
 		for (int burst = 0; burst < 5; ++burst) {
-			REQUIRE(engine.set_constraint_geometry(decoys.data(), decoys.size(), maze_mapping()));
+			REQUIRE(maze_port(engine).set_geometry(decoys.data(), decoys.size(), maze_mapping()));
 		}
 		const double x = 110.0 + 2.0 * round;
 		const Segment2 wall{ { x, 0.0 }, { x, 180.0 } };
-		REQUIRE(engine.set_constraint_geometry(&wall, 1, maze_mapping()));
-		REQUIRE(wait_for([&](const ServoOutput &p_out) {
-			return p_out.geometry_segments == 1 && p_out.geometry_generation > generation && p_out.proxy_placed &&
-					length(p_out.proxy_maze - Vec2{ 90.0, 90.0 }) < 1e-9;
+		REQUIRE(maze_port(engine).set_geometry(&wall, 1, maze_mapping()));
+		REQUIRE(wait_for([&](const ServoOutput &, const ProxyState &p_proxy) {
+			return p_proxy.geometry_segments == 1 && p_proxy.geometry_generation > generation && p_proxy.placed &&
+					length(p_proxy.proxy - Vec2{ 90.0, 90.0 }) < 1e-9;
 		}));
-		generation = engine.output().geometry_generation;
+		generation = proxy_state(engine).geometry_generation;
 		REQUIRE(engine.set_hand_target({ 0.03, 0.0, 0.0 })); // Maze x = 137.7, past the wall.
-		const bool held = wait_for([x](const ServoOutput &p_out) {
-			return p_out.proxy_placed && p_out.proxy_constraints == 1 && p_out.forces.normal.x < 0.0 &&
-					std::abs(p_out.proxy_maze.x - (x - 4.0)) < 1e-4; // Less the skin.
+		const bool held = wait_for([x](const ServoOutput &p_out, const ProxyState &p_proxy) {
+			return p_proxy.placed && p_proxy.constraints == 1 && p_out.forces.parts[WALL_FORCE].x < 0.0 &&
+					std::abs(p_proxy.proxy.x - (x - 4.0)) < 1e-4; // Less the skin.
 		});
 		swaps += held ? 1 : 0;
 	}

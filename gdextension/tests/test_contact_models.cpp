@@ -2,9 +2,9 @@
 // (the default) and the paper's normalised sum. Vectors by hand in device axes (y up); a
 // floor's normal is (0, 1, 0), a wall on the player's right has (-1, 0, 0).
 
-#include "core/force_model.h"
-#include "core/movement_renderer.h"
-#include "core/unilateral_contacts.h"
+#include "renderers/movement/force_model.h"
+#include "renderers/movement/movement_renderer.h"
+#include "renderers/movement/unilateral_contacts.h"
 
 #include <doctest/doctest.h>
 
@@ -34,14 +34,13 @@ void check_vec(const Vec3 &p_actual, const Vec3 &p_expected, double p_tolerance 
 
 ForceModelConfig model(ContactModel p_model, double p_engage = 0.05) {
 	ForceModelConfig config;
-	config.dead_zone = 0.0;
 	config.contact_model = p_model;
 	config.friction_engage = p_engage;
 	config.default_contact = ContactMaterial{ 2.0, 1.0 };
 	return config;
 }
 
-ForceComponents forces(const Frame &p_frame, const Vec3 &p_input, ContactModel p_model, double p_engage = 0.05) {
+MovementForces forces(const Frame &p_frame, const Vec3 &p_input, ContactModel p_model, double p_engage = 0.05) {
 	return compute_forces(p_frame, p_input, model(p_model, p_engage));
 }
 
@@ -72,8 +71,8 @@ TEST_CASE("contact models: one pressed contact gives the paper's forces in both"
 		for (const Vec3 &i : { n * -0.6 + t * 0.3, n * -0.06 - t * 0.7, n * -0.3 + Vec3{ 0.0, 0.0, 0.4 } }) {
 			CAPTURE(degrees);
 			const Frame frame = frame_of({ contact(n * 3.0, 2.5, 1.5) }); // Any length.
-			const ForceComponents per = forces(frame, i, PER);
-			const ForceComponents paper = forces(frame, i, PAPER);
+			const MovementForces per = forces(frame, i, PER);
+			const MovementForces paper = forces(frame, i, PAPER);
 			check_vec(per.normal, paper.normal, 1e-12);
 			check_vec(per.friction, paper.friction, 1e-12);
 		}
@@ -108,14 +107,14 @@ TEST_CASE("contact models: floor and wall, a horizontal push into the wall") {
 	const Frame frame = frame_of({ contact(FLOOR, 2.0, 1.0), contact(RIGHT_WALL, 2.0, 1.0) });
 	const Vec3 push{ 0.6, 0.0, 0.0 };
 	SUBCASE("per_contact: exactly the wall's push-back, nothing upward, no friction") {
-		const ForceComponents f = forces(frame, push, PER);
+		const MovementForces f = forces(frame, push, PER);
 		check_vec(f.normal, { -1.2, 0.0, 0.0 });
 		check_vec(f.friction, {});
 		const Frame wall_alone = frame_of({ contact(RIGHT_WALL, 2.0, 1.0) });
 		check_vec(f.continuous, forces(wall_alone, push, PER).continuous);
 	}
 	SUBCASE("paper_sum: the 45 degree normal pushes up by k |i| / 2") {
-		const ForceComponents f = forces(frame, push, PAPER);
+		const MovementForces f = forces(frame, push, PAPER);
 		check_vec(f.normal, { -0.6, 0.6, 0.0 });
 		check_vec(f.friction, { -0.3, -0.3, 0.0 });
 	}
@@ -129,7 +128,7 @@ TEST_CASE("contact models: a 90 degree corner, pushing into both") {
 	// Floor k = 2, wall on the left k = 4; i presses 0.4 into the floor and 0.3 into the wall.
 	const Frame frame = frame_of({ contact(FLOOR, 2.0, 1.0), contact(LEFT_WALL, 4.0, 3.0) });
 	const Vec3 i{ -0.3, -0.4, 0.0 };
-	const ForceComponents f = forces(frame, i, PER);
+	const MovementForces f = forces(frame, i, PER);
 	check_vec(f.normal, { 1.2, 0.8, 0.0 }); // Each its own component with its own k.
 	check_vec(f.friction, {}); // Nothing slides in a corner.
 	// Sliding in depth rubs on both surfaces (both pushes exceed friction_engage).
@@ -152,12 +151,12 @@ TEST_CASE("contact models: an obtuse corner, a floor meeting a 45 degree ramp") 
 	}
 	SUBCASE("horizontally into the ramp: slides up it, pushed back along the ramp's normal") {
 		// lambda = 0.5 / sqrt 2, free part (0.25, 0.25) along the ramp.
-		const ForceComponents f = forces(frame, { 0.5, 0.0, 0.0 }, PER);
+		const MovementForces f = forces(frame, { 0.5, 0.0, 0.0 }, PER);
 		check_vec(f.normal, { -0.5, 0.5, 0.0 });
 		check_vec(f.friction, { -0.25, -0.25, 0.0 });
 	}
 	SUBCASE("down and right, between both normals: blocked entirely, -k i") {
-		const ForceComponents f = forces(frame, { 0.2, -0.6, 0.0 }, PER);
+		const MovementForces f = forces(frame, { 0.2, -0.6, 0.0 }, PER);
 		check_vec(f.normal, { -0.4, 1.2, 0.0 });
 		check_vec(f.friction, {});
 	}
@@ -179,7 +178,7 @@ TEST_CASE("contact models: an acute wedge holds an input one contact does not fa
 TEST_CASE("contact models: opposed contacts, squeezed between two walls") {
 	const Frame frame = frame_of({ contact(LEFT_WALL, 2.0, 1.0), contact(RIGHT_WALL, 4.0, 2.0) });
 	SUBCASE("per_contact: the wall pressed pushes back with its own material") {
-		const ForceComponents right = forces(frame, { 0.4, 0.3, 0.0 }, PER);
+		const MovementForces right = forces(frame, { 0.4, 0.3, 0.0 }, PER);
 		check_vec(right.normal, { -1.6, 0.0, 0.0 });
 		check_vec(right.friction, { 0.0, -0.6, 0.0 });
 		check_vec(forces(frame, { -0.4, 0.3, 0.0 }, PER).normal, { 0.8, 0.0, 0.0 });
@@ -195,13 +194,13 @@ TEST_CASE("contact models: one surface reported twice pushes once, with the aver
 	const Frame one = frame_of({ contact(FLOOR, 3.0, 2.0) });
 	for (const Vec3 &second : { FLOOR, FLOOR * 5.0, unit(1e-4, 1.0) }) {
 		const Frame twice = frame_of({ contact(FLOOR, 2.0, 1.0), contact(second, 4.0, 3.0) });
-		const ForceComponents f = forces(twice, i, PER);
+		const MovementForces f = forces(twice, i, PER);
 		check_vec(f.normal, forces(one, i, PER).normal, 1e-4);
 		check_vec(f.friction, forces(one, i, PER).friction, 1e-4);
 	}
 	// Two surfaces 2 degrees apart are not merged, and still do not double the push.
 	const Frame kinked = frame_of({ contact(unit(-0.0175, 1.0)), contact(unit(0.0175, 1.0)) });
-	const ForceComponents f = forces(kinked, { 0.0, -0.5, 0.0 }, PER);
+	const MovementForces f = forces(kinked, { 0.0, -0.5, 0.0 }, PER);
 	CHECK(length(f.normal) == doctest::Approx(1.0).epsilon(1e-3));
 }
 
@@ -277,7 +276,7 @@ TEST_CASE("contact models: degenerate normals are skipped, a non-finite input re
 	const Frame floor = frame_of({ contact(FLOOR) });
 	const Frame junk = frame_of({ contact({ nan, 0.0, 0.0 }), contact(FLOOR), contact({}), contact({ inf, 1.0, 0.0 }) });
 	check_vec(forces(junk, i, PER).continuous, forces(floor, i, PER).continuous);
-	const ForceComponents f = forces(floor, { nan, 0.0, 0.0 }, PER);
+	const MovementForces f = forces(floor, { nan, 0.0, 0.0 }, PER);
 	check_vec(f.normal, {});
 	check_vec(f.friction, {});
 }
@@ -330,7 +329,7 @@ TEST_CASE("contact models: weight and water are the paper's in both") {
 	frame.water = WaterState{ true, 0.5, 0.25 };
 	frame.player_velocity = { 1.0, 0.0, 0.0 };
 	for (const ContactModel m : { PER, PAPER }) {
-		const ForceComponents f = forces(frame, { 0.4, 0.3, 0.0 }, m);
+		const MovementForces f = forces(frame, { 0.4, 0.3, 0.0 }, m);
 		check_vec(f.weight, { 0.0, -1.5, 0.0 });
 		check_vec(f.drag, { -0.5, 0.0, 0.0 });
 		check_vec(f.inertia, { 0.0, -0.25, 0.0 });
@@ -338,12 +337,13 @@ TEST_CASE("contact models: weight and water are the paper's in both") {
 }
 
 TEST_CASE("contact models: the movement renderer follows the configured model") {
-	MovementRenderer renderer;
-	RenderConfig config;
+	MovementChannels channels;
+	MovementRenderer renderer(channels);
+	MovementConfig config;
 	config.smoothing.enabled = false;
-	config.force_model.dead_zone = 0.0;
+	channels.settings.store(config);
+	renderer.pick_up_settings(0.001, true);
 	renderer.begin_session(0.001);
-	renderer.configure(config, 0.001);
 	const Frame frame = frame_of({ contact(FLOOR), contact(RIGHT_WALL) });
 	const DeviceState device;
 	RenderResult result;
@@ -351,7 +351,8 @@ TEST_CASE("contact models: the movement renderer follows the configured model") 
 	renderer.render(RenderInput{ device, push, frame, true, 0.001, 0.1, false }, result);
 	check_vec(result.continuous, { -1.2, 0.0, 0.0 }); // The default: per_contact.
 	config.force_model.contact_model = PAPER;
-	renderer.configure(config, 0.001);
+	channels.settings.store(config);
+	renderer.pick_up_settings(0.001, false);
 	renderer.render(RenderInput{ device, push, frame, false, 0.001, 0.1, false }, result);
 	check_vec(result.continuous, { -0.9, 0.3, 0.0 }); // -k p and -b r on the 45 degree normal.
 }

@@ -1,9 +1,10 @@
 // The facade in manual-step mode: validation with named parameters and last-good-state,
 // telemetry layout, determinism, drops, unplugging and device replacement.
 
-#include "core/haptics_engine.h"
-#include "core/telemetry.h"
+#include "core/servo/telemetry.h"
+#include "engine/haptics_engine.h"
 #include "engine_config.h"
+#include "renderers/movement/force_model.h"
 
 #include <doctest/doctest.h>
 
@@ -29,14 +30,15 @@ void set_up(HapticsEngine &r_engine) {
 	device.rigid_hand = true;
 	REQUIRE(r_engine.open_simulated_device(device));
 	REQUIRE(r_engine.set_hand_target({ 0.03, -0.05, 0.0 }));
-	ForceModelConfig model;
-	model.dead_zone = 0.0;
-	REQUIRE(reconfigure(r_engine, [&](RenderConfig &c) { c.force_model = model; }));
-	REQUIRE(reconfigure(r_engine, [](RenderConfig &c) { c.smoothing = SmoothingConfig{ false, 13.0 }; }));
+	REQUIRE(reconfigure(r_engine, [](RenderConfig &c) {
+		c.movement.force_model = ForceModelConfig{};
+		c.servo.input.dead_zone = 0.0;
+	}));
+	REQUIRE(reconfigure(r_engine, [](RenderConfig &c) { c.movement.smoothing = SmoothingConfig{ false, 13.0 }; }));
 	SafetyConfig safety;
 	safety.startup_ramp_s = 0.0;
 	safety.slew_rate_n_per_s = 0.0;
-	REQUIRE(reconfigure(r_engine, [&](RenderConfig &c) { c.safety = safety; }));
+	REQUIRE(reconfigure(r_engine, [&](RenderConfig &c) { c.servo.safety = safety; }));
 }
 
 Frame floor_frame() {
@@ -68,8 +70,8 @@ TEST_CASE("engine: manual step renders the hand-computed forces") {
 	const ForceComponents f = engine.forces();
 	CHECK(engine.input_vector().x == doctest::Approx(0.3));
 	CHECK(engine.input_vector().y == doctest::Approx(-0.5));
-	CHECK(f.normal.y == doctest::Approx(1.0));
-	CHECK(f.friction.x == doctest::Approx(-0.3));
+	CHECK(f.parts[NORMAL_FORCE].y == doctest::Approx(1.0));
+	CHECK(f.parts[FRICTION_FORCE].x == doctest::Approx(-0.3));
 	CHECK(f.total.x == doctest::Approx(-0.3));
 	CHECK(f.total.y == doctest::Approx(1.0));
 	const ServoStats stats = engine.stats();
@@ -140,14 +142,14 @@ TEST_CASE("engine: every bad parameter is named") {
 		{ engine.submit_frame(stiff), StatusCode::OUT_OF_RANGE, "frame.contacts[0].material.stiffness" },
 		{ engine.push_impact(no_direction), StatusCode::INVALID_ARGUMENT, "impact.direction" },
 		{ engine.push_impact(nan_speed), StatusCode::INVALID_ARGUMENT, "impact.speed" },
-		{ reconfigure(engine, [&](RenderConfig &c) { c.smoothing = SmoothingConfig{ true, NaN }; }), StatusCode::INVALID_ARGUMENT,
+		{ reconfigure(engine, [&](RenderConfig &c) { c.movement.smoothing = SmoothingConfig{ true, NaN }; }), StatusCode::INVALID_ARGUMENT,
 				"smoothing.cutoff_hz" },
-		{ reconfigure(engine, [&](RenderConfig &c) { c.safety = slow_fade; }), StatusCode::OUT_OF_RANGE, "safety.watchdog_fade_s" },
-		{ reconfigure(engine, [&](RenderConfig &c) { c.force_model = soft; }), StatusCode::OUT_OF_RANGE, "force_model.contact_stiffness_n" },
-		{ reconfigure(engine, [](RenderConfig &c) { c.force_model.default_impact = ImpactMaterial{ 1.0, 5000.0, 0.01 }; }), StatusCode::OUT_OF_RANGE,
+		{ reconfigure(engine, [&](RenderConfig &c) { c.servo.safety = slow_fade; }), StatusCode::OUT_OF_RANGE, "safety.watchdog_fade_s" },
+		{ reconfigure(engine, [&](RenderConfig &c) { c.movement.force_model = soft; }), StatusCode::OUT_OF_RANGE, "force_model.contact_stiffness_n" },
+		{ reconfigure(engine, [](RenderConfig &c) { c.servo.default_impact = ImpactMaterial{ 1.0, 5000.0, 0.01 }; }), StatusCode::OUT_OF_RANGE,
 				"force_model.impact_frequency_hz" },
-		{ reconfigure(engine, [](RenderConfig &c) { c.force_model.input_radius_m = -1.0; }), StatusCode::OUT_OF_RANGE, "force_model.input_radius_m" },
-		{ reconfigure(engine, [](RenderConfig &c) { c.telemetry = TelemetryConfig{ 0, true }; }), StatusCode::OUT_OF_RANGE, "telemetry.decimation" },
+		{ reconfigure(engine, [](RenderConfig &c) { c.servo.input.input_radius_m = -1.0; }), StatusCode::OUT_OF_RANGE, "force_model.input_radius_m" },
+		{ reconfigure(engine, [](RenderConfig &c) { c.servo.telemetry = TelemetryConfig{ 0, true }; }), StatusCode::OUT_OF_RANGE, "telemetry.decimation" },
 		{ engine.set_hand_target({ 0.0, NaN, 0.0 }), StatusCode::INVALID_ARGUMENT, "hand_target" },
 		{ engine.start(100.0), StatusCode::OUT_OF_RANGE, "rate_hz" },
 		{ engine.start(NaN), StatusCode::INVALID_ARGUMENT, "rate_hz" },
@@ -161,10 +163,10 @@ TEST_CASE("engine: every bad parameter is named") {
 	}
 	// Nothing rejected reached the configuration.
 	const RenderConfig &config = engine.config();
-	CHECK_FALSE(config.smoothing.enabled);
-	CHECK(config.safety.watchdog_fade_s == SafetyConfig{}.watchdog_fade_s);
-	CHECK(config.force_model.default_contact.stiffness == ContactMaterial{}.stiffness);
-	CHECK(config.force_model.input_radius_m == 0.0);
+	CHECK_FALSE(config.movement.smoothing.enabled);
+	CHECK(config.servo.safety.watchdog_fade_s == SafetyConfig{}.watchdog_fade_s);
+	CHECK(config.movement.force_model.default_contact.stiffness == ContactMaterial{}.stiffness);
+	CHECK(config.servo.input.input_radius_m == 0.0);
 	CHECK_FALSE(engine.is_running());
 }
 
@@ -173,15 +175,15 @@ TEST_CASE("engine: configuration changes take effect on the next tick") {
 	set_up(engine);
 	REQUIRE(engine.submit_frame(floor_frame()));
 	REQUIRE(engine.step(DT));
-	CHECK(engine.forces().normal.y == doctest::Approx(1.0));
-	REQUIRE(reconfigure(engine, [](RenderConfig &c) { c.force_model.default_contact = ContactMaterial{ 4.0, 0.0 }; }));
+	CHECK(engine.forces().parts[NORMAL_FORCE].y == doctest::Approx(1.0));
+	REQUIRE(reconfigure(engine, [](RenderConfig &c) { c.movement.force_model.default_contact = ContactMaterial{ 4.0, 0.0 }; }));
 	REQUIRE(engine.step(DT));
-	CHECK(engine.forces().normal.y == doctest::Approx(2.0));
-	CHECK(engine.forces().friction == Vec3{});
-	REQUIRE(reconfigure(engine, [](RenderConfig &c) { c.force_model.input_radius_m = 0.2; })); // Same position, half the input.
+	CHECK(engine.forces().parts[NORMAL_FORCE].y == doctest::Approx(2.0));
+	CHECK(engine.forces().parts[FRICTION_FORCE] == Vec3{});
+	REQUIRE(reconfigure(engine, [](RenderConfig &c) { c.servo.input.input_radius_m = 0.2; })); // Same position, half the input.
 	REQUIRE(engine.step(DT));
 	CHECK(engine.input_vector().y == doctest::Approx(-0.25));
-	CHECK(engine.forces().normal.y == doctest::Approx(1.0));
+	CHECK(engine.forces().parts[NORMAL_FORCE].y == doctest::Approx(1.0));
 }
 
 TEST_CASE("engine: telemetry has the documented layout") {
@@ -204,11 +206,11 @@ TEST_CASE("engine: telemetry has the documented layout") {
 	CHECK(s[TELEMETRY_INPUT + 1] == doctest::Approx(-0.5));
 	CHECK(s[TELEMETRY_POSITION + 0] == doctest::Approx(0.03));
 	CHECK(s[TELEMETRY_POSITION + 1] == doctest::Approx(-0.05));
-	CHECK(s[TELEMETRY_NORMAL + 1] == doctest::Approx(1.0));
-	CHECK(s[TELEMETRY_FRICTION + 0] == doctest::Approx(-0.3));
-	CHECK(s[TELEMETRY_WEIGHT + 1] == doctest::Approx(-0.5));
-	CHECK(s[TELEMETRY_DRAG + 0] == doctest::Approx(-0.5));
-	CHECK(s[TELEMETRY_INERTIA + 1] == doctest::Approx(-0.25));
+	CHECK(s[telemetry_part_column(NORMAL_FORCE) + 1] == doctest::Approx(1.0));
+	CHECK(s[telemetry_part_column(FRICTION_FORCE) + 0] == doctest::Approx(-0.3));
+	CHECK(s[telemetry_part_column(WEIGHT_FORCE) + 1] == doctest::Approx(-0.5));
+	CHECK(s[telemetry_part_column(DRAG_FORCE) + 0] == doctest::Approx(-0.5));
+	CHECK(s[telemetry_part_column(INERTIA_FORCE) + 1] == doctest::Approx(-0.25));
 	CHECK(s[TELEMETRY_SMOOTHED + 0] == doctest::Approx(-0.8));
 	CHECK(s[TELEMETRY_SMOOTHED + 1] == doctest::Approx(0.25));
 	CHECK(s[TELEMETRY_IMPACT + 1] == 0.0f);
@@ -224,14 +226,14 @@ TEST_CASE("engine: telemetry has the documented layout") {
 TEST_CASE("engine: telemetry decimation, and overflow is counted") {
 	HapticsEngine engine;
 	set_up(engine);
-	REQUIRE(reconfigure(engine, [](RenderConfig &c) { c.telemetry = TelemetryConfig{ 5, true }; }));
+	REQUIRE(reconfigure(engine, [](RenderConfig &c) { c.servo.telemetry = TelemetryConfig{ 5, true }; }));
 	for (int k = 0; k < 100; ++k) {
 		REQUIRE(engine.step(DT));
 	}
 	std::vector<float> samples(TELEMETRY_QUEUE_CAPACITY * TELEMETRY_STRIDE);
 	CHECK(engine.drain_telemetry(samples.data(), TELEMETRY_QUEUE_CAPACITY) == 20);
 	CHECK(samples[TELEMETRY_STRIDE + TELEMETRY_TIME] == doctest::Approx(0.006)); // Ticks 1, 6, 11...
-	REQUIRE(reconfigure(engine, [](RenderConfig &c) { c.telemetry = TelemetryConfig{ 1, true }; }));
+	REQUIRE(reconfigure(engine, [](RenderConfig &c) { c.servo.telemetry = TelemetryConfig{ 1, true }; }));
 	for (size_t k = 0; k < TELEMETRY_QUEUE_CAPACITY + 100; ++k) {
 		REQUIRE(engine.step(DT));
 	}
@@ -294,7 +296,7 @@ TEST_CASE("engine: an unplugged device stops rendering with a clear error and ke
 	const Vec3 before = engine.forces().total;
 	const RenderConfig config_before = engine.config();
 
-	engine.simulated_device()->set_plugged(false);
+	engine.current_device()->software_cable()->set_plugged(false);
 	const Status status = engine.step(DT);
 	CHECK(status.code() == StatusCode::DEVICE_DISCONNECTED);
 	CHECK(mentions(status, "disconnected"));
@@ -306,7 +308,7 @@ TEST_CASE("engine: an unplugged device stops rendering with a clear error and ke
 	CHECK(engine.forces().total == before); // Last published output kept for the HUD.
 
 	// Plugged back in and re-opened, the retained frame and configuration render again.
-	engine.simulated_device()->set_plugged(true);
+	engine.current_device()->software_cable()->set_plugged(true);
 	SimulatedDeviceConfig device;
 	device.rigid_hand = true;
 	REQUIRE(engine.open_simulated_device(device));

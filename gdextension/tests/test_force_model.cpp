@@ -2,8 +2,9 @@
 // paper's literal contact model (PAPER_SUM) for eqs. 1-4, and weight and water, which both
 // models share. The per-contact model and the comparisons are in test_contact_models.cpp.
 
-#include "core/coordinates.h"
-#include "core/force_model.h"
+#include "core/base/coordinates.h"
+#include "core/servo/input_vector.h"
+#include "renderers/movement/force_model.h"
 
 #include <doctest/doctest.h>
 
@@ -26,7 +27,6 @@ void check_vec(const Vec3 &p_actual, const Vec3 &p_expected, double p_tolerance 
 ForceModelConfig config_with(double p_k, double p_b, double p_gravity = 1.0,
 		ContactModel p_model = ContactModel::PAPER_SUM) {
 	ForceModelConfig config;
-	config.dead_zone = 0.0;
 	config.gravity_n_per_kg = p_gravity;
 	config.default_contact = ContactMaterial{ p_k, p_b };
 	config.contact_model = p_model;
@@ -73,7 +73,7 @@ TEST_CASE("eqs 1-4: projection, rejection, normal force and friction on a floor"
 	frame.add_contact({ 0.0, 1.0, 0.0 }); // Floor: normal points up at the player.
 	const Vec3 i{ 0.3, -0.5, 0.0 }; // Pushing down and right.
 	// p = (0, -0.5, 0), r = (0.3, 0, 0); F_n = -2 p, F_f = -1 r.
-	const ForceComponents f = compute_forces(frame, i, config_with(2.0, 1.0));
+	const MovementForces f = compute_forces(frame, i, config_with(2.0, 1.0));
 	check_vec(f.normal, { 0.0, 1.0, 0.0 });
 	check_vec(f.friction, { -0.3, 0.0, 0.0 });
 	check_vec(f.continuous, { -0.3, 1.0, 0.0 });
@@ -87,19 +87,19 @@ TEST_CASE("eqs 1-4: a sloped surface, a non-unit normal and a depth component") 
 	frame.add_contact({ 1.2, 1.6, 0.0 }, ContactMaterial{ 2.0, 0.5 }); // |n| = 2, unit (0.6, 0.8).
 	const Vec3 i{ 0.5, -0.5, 0.1 };
 	// i.n = 0.3 - 0.4 = -0.1 -> p = (-0.06, -0.08, 0), r = (0.56, -0.42, 0.1).
-	const ForceComponents f = compute_forces(frame, i, config_with(9.0, 9.0));
+	const MovementForces f = compute_forces(frame, i, config_with(9.0, 9.0));
 	check_vec(f.normal, { 0.12, 0.16, 0.0 });
 	check_vec(f.friction, { -0.28, 0.21, -0.05 });
 	// Pulling away from the surface (i.n > 0) gives a force toward it: the paper's model is
 	// symmetric, the game decides when a contact exists.
-	const ForceComponents away = compute_forces(frame, { 0.6, 0.8, 0.0 }, config_with(9.0, 9.0));
+	const MovementForces away = compute_forces(frame, { 0.6, 0.8, 0.0 }, config_with(9.0, 9.0));
 	check_vec(away.normal, { -1.2, -1.6, 0.0 });
 	check_vec(away.friction, {});
 }
 
 TEST_CASE("no contact: no normal force and no friction") {
 	const Frame frame;
-	const ForceComponents f = compute_forces(frame, { 0.7, -0.7, 0.0 }, config_with(2.0, 1.0));
+	const MovementForces f = compute_forces(frame, { 0.7, -0.7, 0.0 }, config_with(2.0, 1.0));
 	check_vec(f.normal, {});
 	check_vec(f.friction, {});
 	check_vec(f.continuous, {});
@@ -115,7 +115,7 @@ TEST_CASE("several contacts: normalised sum of normals, materials weighted by sh
 	CHECK(resolved.stiffness == doctest::Approx(3.0)); // Equal shares.
 	CHECK(resolved.friction == doctest::Approx(2.0));
 	// i = (0.6, -0.2, 0): i.n = -0.8/sqrt2 -> p = (0.4, -0.4, 0), r = (0.2, 0.2, 0).
-	const ForceComponents f = compute_forces(frame, { 0.6, -0.2, 0.0 }, config_with(0.0, 0.0));
+	const MovementForces f = compute_forces(frame, { 0.6, -0.2, 0.0 }, config_with(0.0, 0.0));
 	check_vec(f.normal, { -1.2, 1.2, 0.0 });
 	check_vec(f.friction, { -0.4, -0.4, 0.0 });
 }
@@ -129,7 +129,7 @@ TEST_CASE("several contacts: a contact facing away from the combined normal has 
 	check_vec(resolved.normal, { 1.0, 0.0, 0.0 });
 	CHECK(resolved.stiffness == doctest::Approx(2.0));
 	CHECK(resolved.friction == doctest::Approx(1.0));
-	const ForceComponents f = compute_forces(frame, { -0.5, 0.25, 0.0 }, config_with(0.0, 0.0));
+	const MovementForces f = compute_forces(frame, { -0.5, 0.25, 0.0 }, config_with(0.0, 0.0));
 	check_vec(f.normal, { 1.0, 0.0, 0.0 });
 	check_vec(f.friction, { 0.0, -0.25, 0.0 });
 }
@@ -139,14 +139,14 @@ TEST_CASE("several contacts: opposite normals cancel and render nothing") {
 	frame.add_contact({ 1.0, 0.0, 0.0 });
 	frame.add_contact({ -1.0, 0.0, 0.0 });
 	CHECK_FALSE(resolve_contacts(frame, ContactMaterial{}).active);
-	const ForceComponents f = compute_forces(frame, { 0.5, 0.5, 0.0 }, config_with(2.0, 1.0));
+	const MovementForces f = compute_forces(frame, { 0.5, 0.5, 0.0 }, config_with(2.0, 1.0));
 	check_vec(f.continuous, {});
 }
 
 TEST_CASE("default material applies to contacts that ask for it") {
 	Frame frame;
 	frame.add_contact({ 0.0, 1.0, 0.0 }); // use_default_material
-	const ForceComponents f = compute_forces(frame, { 0.0, -0.5, 0.0 }, config_with(3.0, 1.0));
+	const MovementForces f = compute_forces(frame, { 0.0, -0.5, 0.0 }, config_with(3.0, 1.0));
 	check_vec(f.normal, { 0.0, 1.5, 0.0 });
 }
 
@@ -192,14 +192,14 @@ TEST_CASE("eqs 6-7: water drag and inertia only inside water") {
 	const ForceModelConfig config = config_with(2.0, 1.0);
 	SUBCASE("outside") {
 		frame.water.inside = false;
-		const ForceComponents f = compute_forces(frame, { 0.5, 0.0, 0.0 }, config);
+		const MovementForces f = compute_forces(frame, { 0.5, 0.0, 0.0 }, config);
 		check_vec(f.drag, {});
 		check_vec(f.inertia, {});
 		check_vec(f.continuous, {});
 	}
 	SUBCASE("inside") {
 		frame.water.inside = true;
-		const ForceComponents f = compute_forces(frame, { 0.5, 0.0, 0.0 }, config);
+		const MovementForces f = compute_forces(frame, { 0.5, 0.0, 0.0 }, config);
 		check_vec(f.drag, { -1.0, 0.5, 0.0 }); // -c v
 		check_vec(f.inertia, { 0.0, -0.8, 0.0 }); // w d
 		check_vec(f.continuous, { -1.0, -0.3, 0.0 });
@@ -212,7 +212,7 @@ TEST_CASE("the continuous sum is the sum of every component") {
 	frame.add_resting({ 0.0, -1.0, 0.0 }, 1.0);
 	frame.water = WaterState{ true, 0.5, 0.25 };
 	frame.player_velocity = { 1.0, 0.0, 0.0 };
-	const ForceComponents f = compute_forces(frame, { 0.4, -0.6, 0.0 }, config_with(2.0, 1.0, 1.0));
+	const MovementForces f = compute_forces(frame, { 0.4, -0.6, 0.0 }, config_with(2.0, 1.0, 1.0));
 	check_vec(f.normal, { 0.0, 1.2, 0.0 });
 	check_vec(f.friction, { -0.4, 0.0, 0.0 });
 	check_vec(f.weight, { 0.0, -1.0, 0.0 });
@@ -241,7 +241,7 @@ TEST_CASE("orientation invariance: a wall at any angle gives the same forces alo
 			const Vec3 i = input_vector(position, radius, 0.0);
 			Frame frame;
 			frame.add_contact(n, ContactMaterial{ k, b });
-			const ForceComponents f = compute_forces(frame, i, config_with(0.0, 0.0, 1.0, model));
+			const MovementForces f = compute_forces(frame, i, config_with(0.0, 0.0, 1.0, model));
 			check_vec(f.normal, n * (0.6 * k), 1e-12);
 			check_vec(f.friction, t * (-0.3 * b) + z * (-0.2 * b), 1e-12);
 			CHECK(dot(f.normal, n) == doctest::Approx(1.5));

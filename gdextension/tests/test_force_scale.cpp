@@ -1,8 +1,10 @@
 // The force scale lives in the servo: one gain on every renderer's output and on impacts,
 // whatever material (or none) the game gave a contact.
 
-#include "core/haptics_engine.h"
+#include "engine/haptics_engine.h"
 #include "engine_config.h"
+#include "renderers/constraint/constraint_port.h"
+#include "renderers/movement/force_model.h"
 
 #include <doctest/doctest.h>
 
@@ -22,12 +24,12 @@ void set_up(HapticsEngine &r_engine, double p_scale) {
 	REQUIRE(r_engine.open_simulated_device(device));
 	REQUIRE(r_engine.set_hand_target({ 0.03, -0.05, 0.0 }));
 	REQUIRE(reconfigure(r_engine, [&](RenderConfig &c) {
-		c.force_model.dead_zone = 0.0;
-		c.force_model.default_contact = ContactMaterial{ 2.0, 1.0 };
-		c.smoothing.enabled = false;
-		c.safety.startup_ramp_s = 0.0;
-		c.safety.slew_rate_n_per_s = 0.0;
-		c.safety.force_scale = p_scale;
+		c.servo.input.dead_zone = 0.0;
+		c.movement.force_model.default_contact = ContactMaterial{ 2.0, 1.0 };
+		c.movement.smoothing.enabled = false;
+		c.servo.safety.startup_ramp_s = 0.0;
+		c.servo.safety.slew_rate_n_per_s = 0.0;
+		c.servo.safety.force_scale = p_scale;
 	}));
 }
 
@@ -44,9 +46,9 @@ TEST_CASE("force scale: scales a default-material contact, its components and th
 		REQUIRE(engine.submit_frame(frame));
 		REQUIRE(engine.step(DT));
 		const ForceComponents f = engine.forces();
-		CHECK(f.normal.y == doctest::Approx(scale * 1.0)); // -k p, p = (0, -0.5).
-		CHECK(f.friction.x == doctest::Approx(scale * -0.3)); // -b r, r = (0.3, 0).
-		CHECK(f.weight.y == doctest::Approx(scale * -0.5)); // m g, g = 1.
+		CHECK(f.parts[NORMAL_FORCE].y == doctest::Approx(scale * 1.0)); // -k p, p = (0, -0.5).
+		CHECK(f.parts[FRICTION_FORCE].x == doctest::Approx(scale * -0.3)); // -b r, r = (0.3, 0).
+		CHECK(f.parts[WEIGHT_FORCE].y == doctest::Approx(scale * -0.5)); // m g, g = 1.
 		CHECK(f.total.x == doctest::Approx(scale * -0.3));
 		CHECK(f.total.y == doctest::Approx(scale * 0.5));
 	}
@@ -60,10 +62,10 @@ TEST_CASE("force scale: scales the constraint renderer and default-material impa
 	mapping.maze_min = { -100.0, -100.0 };
 	mapping.maze_max = { 100.0, 100.0 };
 	mapping.workspace_half_extent_m = 0.1 * std::numbers::sqrt2; // 1 maze unit = 1 mm.
-	REQUIRE(engine.set_constraint_geometry(&wall, 1, mapping));
+	REQUIRE(ConstraintPort(engine.renderers().constraint.channels).set_geometry(&wall, 1, mapping));
 	REQUIRE(engine.set_hand_target({ 0.0, 0.0, 0.0 }));
 	REQUIRE(reconfigure(engine, [](RenderConfig &c) {
-		c.render_mode = RenderMode::CONSTRAINT;
+		c.servo.render_mode = RenderMode::CONSTRAINT;
 		c.constraint.stiffness_n_per_m = 100.0;
 		c.constraint.proxy_radius = 5.0;
 	}));
@@ -71,7 +73,7 @@ TEST_CASE("force scale: scales the constraint renderer and default-material impa
 	REQUIRE(engine.step(DT)); // The proxy is placed at the centre.
 	REQUIRE(engine.set_hand_target({ 0.06, 0.0, 0.0 })); // 15 mm past the wall's face at 45 mm.
 	REQUIRE(engine.step(DT));
-	CHECK(engine.forces().normal.x == doctest::Approx(0.5 * 100.0 * -0.015).epsilon(1e-6));
+	CHECK(engine.forces().parts[WALL_FORCE].x == doctest::Approx(0.5 * 100.0 * -0.015).epsilon(1e-6));
 
 	ImpactEvent event;
 	event.direction = { 0.0, 1.0, 0.0 };
@@ -92,7 +94,7 @@ TEST_CASE("force scale: 0 renders nothing, out of range or NaN is refused and th
 	REQUIRE(engine.submit_frame(frame));
 	REQUIRE(engine.step(DT));
 	CHECK(engine.forces().total == Vec3{});
-	CHECK_FALSE(reconfigure(engine, [](RenderConfig &c) { c.safety.force_scale = 2.5; }));
-	CHECK_FALSE(reconfigure(engine, [](RenderConfig &c) { c.safety.force_scale = std::nan(""); }));
-	CHECK(engine.config().safety.force_scale == 0.0);
+	CHECK_FALSE(reconfigure(engine, [](RenderConfig &c) { c.servo.safety.force_scale = 2.5; }));
+	CHECK_FALSE(reconfigure(engine, [](RenderConfig &c) { c.servo.safety.force_scale = std::nan(""); }));
+	CHECK(engine.config().servo.safety.force_scale == 0.0);
 }

@@ -2,8 +2,8 @@
 // telemetry) and the seqlock snapshot (frames, config, output). The two-thread cases are
 // what ThreadSanitizer checks in the sanitizer builds.
 
-#include "core/seqlock.h"
-#include "core/spsc_queue.h"
+#include "core/base/seqlock.h"
+#include "core/base/spsc_queue.h"
 
 #include <doctest/doctest.h>
 

@@ -2,9 +2,9 @@
 // message), the workspace mapping, polygon outlines, and the uniform grid broad phase
 // (never misses a wall the brute force would test, reports each one once).
 
-#include "core/constraint_geometry.h"
-#include "core/maze_mapping.h"
-#include "core/swept_disc.h"
+#include "renderers/constraint/constraint_geometry.h"
+#include "renderers/constraint/maze_mapping.h"
+#include "renderers/constraint/swept_disc.h"
 #include "test_proxy_geometry.h"
 
 #include <doctest/doctest.h>

@@ -3,7 +3,7 @@
 // Wall sets for the proxy tests: random perfect mazes (every cell reachable, one path
 // between any two), deterministic for a seed.
 
-#include "core/swept_disc.h"
+#include "renderers/constraint/swept_disc.h"
 
 #include <cstdint>
 #include <random>

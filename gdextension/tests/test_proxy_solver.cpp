@@ -2,10 +2,10 @@
 // (slide, corner, dead end), no tunnelling through thin walls, and a long run through a
 // 10 000-wall maze.
 
-#include "core/constraint_geometry.h"
-#include "core/constraint_renderer.h"
-#include "core/finite_proxy.h"
-#include "core/swept_disc.h"
+#include "renderers/constraint/constraint_geometry.h"
+#include "renderers/constraint/constraint_renderer.h"
+#include "renderers/constraint/finite_proxy.h"
+#include "renderers/constraint/swept_disc.h"
 #include "test_proxy_geometry.h"
 
 #include <doctest/doctest.h>

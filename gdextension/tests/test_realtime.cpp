@@ -4,8 +4,8 @@
 // 0, and as root the switch to user nobody, which drops every capability), so they are tested
 // on any machine, root or not. No timed assertion.
 
-#include "core/haptics_engine.h"
-#include "core/realtime.h"
+#include "core/base/realtime.h"
+#include "engine/haptics_engine.h"
 
 #include <doctest/doctest.h>
 

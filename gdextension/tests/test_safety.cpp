@@ -1,8 +1,8 @@
 // Safety stage: clamp by scaling, slew limit, start-up ramp, watchdog, non-finite guard;
 // on the stage itself and end to end through the engine's manual step.
 
-#include "core/haptics_engine.h"
-#include "core/safety.h"
+#include "core/servo/safety.h"
+#include "engine/haptics_engine.h"
 #include "engine_config.h"
 
 #include <doctest/doctest.h>
@@ -31,11 +31,13 @@ void set_up_wall(HapticsEngine &r_engine, const SafetyConfig &p_safety) {
 	REQUIRE(r_engine.open_simulated_device(device));
 	REQUIRE(r_engine.set_hand_target({ 0.05, 0.0, 0.0 }));
 	ForceModelConfig model;
-	model.dead_zone = 0.0;
 	model.default_contact = ContactMaterial{ 4.0, 0.0 };
-	REQUIRE(reconfigure(r_engine, [&](RenderConfig &c) { c.force_model = model; }));
-	REQUIRE(reconfigure(r_engine, [](RenderConfig &c) { c.smoothing = SmoothingConfig{ false, 13.0 }; }));
-	REQUIRE(reconfigure(r_engine, [&](RenderConfig &c) { c.safety = p_safety; }));
+	REQUIRE(reconfigure(r_engine, [&](RenderConfig &c) {
+		c.movement.force_model = model;
+		c.servo.input.dead_zone = 0.0;
+	}));
+	REQUIRE(reconfigure(r_engine, [](RenderConfig &c) { c.movement.smoothing = SmoothingConfig{ false, 13.0 }; }));
+	REQUIRE(reconfigure(r_engine, [&](RenderConfig &c) { c.servo.safety = p_safety; }));
 }
 
 Frame wall_frame() {
@@ -132,9 +134,9 @@ TEST_CASE("safety stage: a non-finite input is zeroed and does not poison the ne
 TEST_CASE("engine: force clamped to the simulated device's 3.3 N, direction kept") {
 	HapticsEngine engine;
 	set_up_wall(engine, plain_safety());
-	ForceModelConfig model = engine.config().force_model;
+	ForceModelConfig model = engine.config().movement.force_model;
 	model.default_contact = ContactMaterial{ 20.0, 20.0 }; // 10 N normal, 4 N friction.
-	REQUIRE(reconfigure(engine, [&](RenderConfig &c) { c.force_model = model; }));
+	REQUIRE(reconfigure(engine, [&](RenderConfig &c) { c.movement.force_model = model; }));
 	REQUIRE(engine.set_hand_target({ 0.05, 0.02, 0.0 })); // i = (0.5, 0.2, 0)
 	REQUIRE(engine.submit_frame(wall_frame()));
 	REQUIRE(engine.step(DT));

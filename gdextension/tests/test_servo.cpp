@@ -3,8 +3,8 @@
 // thread using every channel concurrently. No timed assertion: waits poll with a generous
 // time-out that only fails a hung test.
 
-#include "core/haptics_engine.h"
-#include "core/telemetry.h"
+#include "core/servo/telemetry.h"
+#include "engine/haptics_engine.h"
 #include "engine_config.h"
 
 #include <doctest/doctest.h>
@@ -88,11 +88,11 @@ bool wait_for(Predicate p_done, double p_timeout_s = 20.0) {
 void render_full_force(HapticsEngine &r_engine) {
 	ForceModelConfig model;
 	model.default_contact = ContactMaterial{ 20.0, 0.0 };
-	REQUIRE(reconfigure(r_engine, [&](RenderConfig &c) { c.force_model = model; }));
+	REQUIRE(reconfigure(r_engine, [&](RenderConfig &c) { c.movement.force_model = model; }));
 	SafetyConfig safety;
 	safety.startup_ramp_s = 0.01;
 	safety.watchdog_timeout_s = 10.0; // Frames are not resubmitted here.
-	REQUIRE(reconfigure(r_engine, [&](RenderConfig &c) { c.safety = safety; }));
+	REQUIRE(reconfigure(r_engine, [&](RenderConfig &c) { c.servo.safety = safety; }));
 	REQUIRE(r_engine.set_hand_target({ 0.08, 0.0, 0.0 }));
 	Frame wall;
 	wall.add_contact({ -1.0, 0.0, 0.0 });
@@ -251,7 +251,7 @@ TEST_CASE("servo thread: the game thread uses every channel while the servo runs
 		REQUIRE(engine.push_impact(event));
 		SmoothingConfig smoothing;
 		smoothing.cutoff_hz = 10.0 + frame_index % 5;
-		REQUIRE(reconfigure(engine, [&](RenderConfig &c) { c.smoothing = smoothing; }));
+		REQUIRE(reconfigure(engine, [&](RenderConfig &c) { c.movement.smoothing = smoothing; }));
 		non_finite += is_finite(engine.forces().total) ? 0 : 1;
 		non_finite += is_finite(engine.input_vector()) ? 0 : 1;
 		(void)engine.stats();

@@ -1,8 +1,8 @@
 // The simulated device: a stylus held by a spring-damper hand, the rendered force acting on
 // it, end stops, determinism, stability over the servo rates, and unplugging.
 
-#include "core/haptics_engine.h"
 #include "devices/simulated_device.h"
+#include "engine/haptics_engine.h"
 #include "engine_config.h"
 
 #include <doctest/doctest.h>
@@ -147,9 +147,11 @@ TEST_CASE("engine + simulated device: pushing into a wall moves the stylus back 
 	HapticsEngine engine;
 	REQUIRE(engine.open_simulated_device());
 	ForceModelConfig model;
-	model.dead_zone = 0.0;
 	model.default_contact = ContactMaterial{ 2.0, 1.0 };
-	REQUIRE(reconfigure(engine, [&](RenderConfig &c) { c.force_model = model; })); // Default smoothing and safety.
+	REQUIRE(reconfigure(engine, [&](RenderConfig &c) { // Default smoothing and safety.
+		c.movement.force_model = model;
+		c.servo.input.dead_zone = 0.0;
+	}));
 	REQUIRE(engine.set_hand_target({ 0.05, 0.0, 0.0 }));
 	Frame wall;
 	wall.add_contact({ -1.0, 0.0, 0.0 }); // A wall on the right; normal points back at the player.

@@ -4,7 +4,7 @@
 //   - a step reaches 90 % within 40 ms,
 // measured at 1 kHz (the default) and at both ends of the allowed servo rates.
 
-#include "core/smoothing_filter.h"
+#include "renderers/movement/smoothing_filter.h"
 
 #include <doctest/doctest.h>
 

@@ -3,8 +3,9 @@
 // threaded servo runs exactly the same ServoPipeline::tick. Skipped under the sanitizers,
 // which bring their own allocator.
 
-#include "core/haptics_engine.h"
+#include "engine/haptics_engine.h"
 #include "engine_config.h"
+#include "renderers/pong/pong_port.h"
 
 #include <doctest/doctest.h>
 
@@ -86,7 +87,8 @@ TEST_CASE("a pong tick allocates nothing: contacts, bounces, effects, commands a
 	HapticsEngine engine;
 	REQUIRE(engine.open_simulated_device());
 	REQUIRE(engine.set_hand_target({ 0.0, 0.02, 0.0 }));
-	REQUIRE(reconfigure(engine, [](RenderConfig &r_config) { r_config.render_mode = RenderMode::PONG; }));
+	REQUIRE(reconfigure(engine, [](RenderConfig &r_config) { r_config.servo.render_mode = RenderMode::PONG; }));
+	PongPort pong(engine.renderers().pong.channels);
 	PongInput input;
 	input.local_player = 0;
 	input.players[0].avatar = { 0.0, 1.0, 2.0 };
@@ -100,22 +102,22 @@ TEST_CASE("a pong tick allocates nothing: contacts, bounces, effects, commands a
 	uint64_t contacts = 0;
 	for (int k = 0; k < 4000; ++k) {
 		if (k % 16 == 0) {
-			REQUIRE(engine.set_pong_input(input));
+			REQUIRE(pong.set_input(input));
 		}
 		if (k % 1000 == 0) {
 			PongCommand serve;
 			serve.type = PongCommandType::SET_BALL;
 			serve.position = { 0.0, 1.5, 2.0 }; // Onto the paddle, again and again.
 			serve.spin = { 0.0, 20.0, 0.0 };
-			REQUIRE(engine.push_pong_command(serve));
+			REQUIRE(pong.push_command(serve));
 			PongCommand effect;
 			effect.type = PongCommandType::EFFECT;
 			effect.player = 0;
 			effect.kind = k % 2000 == 0 ? PongEffectKind::REMOTE : PongEffectKind::SLOW;
-			REQUIRE(engine.push_pong_command(effect));
+			REQUIRE(pong.push_command(effect));
 			effect.kind = PongEffectKind::RECOIL;
 			effect.direction = { 0.0, 0.0, 1.0 };
-			REQUIRE(engine.push_pong_command(effect));
+			REQUIRE(pong.push_command(effect));
 		}
 		t_allocations = 0;
 		t_watching = true;
@@ -123,8 +125,8 @@ TEST_CASE("a pong tick allocates nothing: contacts, bounces, effects, commands a
 		t_watching = false;
 		allocations += t_allocations;
 		REQUIRE(status);
-		engine.drain_pong_events(events, 16);
-		contacts = engine.pong_state().paddle_contacts;
+		pong.drain_events(events, 16);
+		contacts = pong.state().paddle_contacts;
 	}
 	CHECK(contacts >= 4); // The ticks watched did the work: the ball met the paddle.
 	CHECK(allocations == 0);

@@ -1,8 +1,8 @@
 // Impact transients: A(v) e^(-t/tau) sin(2 pi f t) along a direction, superposed, bounded,
 // and overlaid raw on the smoothed continuous force.
 
-#include "core/haptics_engine.h"
-#include "core/transients.h"
+#include "core/servo/transients.h"
+#include "engine/haptics_engine.h"
 #include "engine_config.h"
 
 #include <doctest/doctest.h>
@@ -169,13 +169,15 @@ TEST_CASE("engine: impacts are overlaid raw on the smoothed continuous force") {
 	REQUIRE(engine.open_simulated_device(device));
 	REQUIRE(engine.set_hand_target({ 0.0, -0.05, 0.0 })); // Pressing down: i = (0, -0.5, 0).
 	ForceModelConfig model;
-	model.dead_zone = 0.0;
 	model.default_contact = ContactMaterial{ 2.0, 1.0 };
-	REQUIRE(reconfigure(engine, [&](RenderConfig &c) { c.force_model = model; }));
+	REQUIRE(reconfigure(engine, [&](RenderConfig &c) {
+		c.movement.force_model = model;
+		c.servo.input.dead_zone = 0.0;
+	}));
 	SafetyConfig safety;
 	safety.startup_ramp_s = 0.0;
 	safety.slew_rate_n_per_s = 0.0;
-	REQUIRE(reconfigure(engine, [&](RenderConfig &c) { c.safety = safety; }));
+	REQUIRE(reconfigure(engine, [&](RenderConfig &c) { c.servo.safety = safety; }));
 
 	Frame frame;
 	frame.add_contact({ 0.0, 1.0, 0.0 }); // Landing on a floor: continuous force steps to 1 N up.

@@ -74,7 +74,7 @@ func test_a_ball_landing_on_the_device_paddle_pushes_the_hand_down() -> void:
 	var contact: Vector3 = state["hand_force"]["contact"]
 	assert_lt(contact.y, 0.0, "the ball presses the hand down, along the paddle normal")
 	assert_almost_eq(Vector2(contact.x, contact.z), Vector2.ZERO, 1e-6)
-	assert_almost_eq(server.get_forces()["normal"].y, -contact.y, 1e-5, "get_forces: game axes")
+	assert_almost_eq(server.get_forces()["contact"].y, -contact.y, 1e-5, "get_forces: game axes")
 	assert_gt(state["paddle_contacts"], 0)
 	assert_gt(_count(events, "paddle"), 0)
 	var touch: Dictionary = _of_type(events, "paddle")[0]

@@ -8,6 +8,7 @@
 
 #include "device_bench.h"
 
+#include "dev_tools/dualsense/scripted_dualsense_device.h"
 #include "devices/dualsense/dualsense_backend.h"
 #include "devices/dualsense/dualsense_io.h"
 

@@ -3,6 +3,7 @@
 // (newtons -> (direction, level) -> the 48-byte ff_effect), and how many EVIOCSFF updates
 // per second the protocol layer sustains on one core when the "kernel" answers at once.
 
+#include "dev_tools/evdev/scripted_evdev_device.h"
 #include "device_bench.h"
 #include "devices/evdev/evdev_backend.h"
 #include "devices/evdev/evdev_effect.h"

@@ -4,11 +4,12 @@
 
 #include "device_bench.h"
 
-#include "core/haptics_engine.h"
+#include "dev_tools/falcon/scripted_falcon_device.h"
 #include "devices/falcon/falcon_axes.h"
 #include "devices/falcon/falcon_backend.h"
 #include "devices/falcon/falcon_codec.h"
 #include "devices/falcon/falcon_kinematics.h"
+#include "engine/haptics_engine.h"
 
 #include <chrono>
 #include <cmath>

@@ -31,7 +31,7 @@ DeviceBenchResult bench_openhaptics(double p_seconds) {
 
 	test::FakeHd &fake = test::fresh_fake_hd();
 	fake.set_recording(0);
-	auto device = openhaptics::make_scripted_device(test::fake_hd_path());
+	auto device = openhaptics::make_device_on_runtime(test::fake_hd_path());
 	if (!device->open()) {
 		result.note = "could not open the fake OpenHaptics device";
 		return result;

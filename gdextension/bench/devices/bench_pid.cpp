@@ -6,11 +6,12 @@
 
 #include "device_bench.h"
 
+#include "dev_tools/pid/scripted_pid_device.h"
+#include "dev_tools/pid/scripted_pid_joystick.h"
 #include "devices/hid/report_descriptor.h"
 #include "devices/pid/pid_backend.h"
 #include "devices/pid/pid_effect.h"
 #include "devices/pid/pid_force_mapping.h"
-#include "devices/pid/scripted_pid_joystick.h"
 
 #include <chrono>
 #include <cmath>

@@ -1,6 +1,7 @@
 #include "latency.h"
 
-#include "core/haptics_engine.h"
+#include "engine/haptics_engine.h"
+#include "renderers/constraint/constraint_port.h"
 
 #include <cmath>
 #include <cstdio>
@@ -40,9 +41,9 @@ LatencyResult measure(bool p_constraint, bool p_rigid) {
 		mapping.maze_max = { 180.0, 180.0 };
 		mapping.workspace_half_extent_m = 0.08;
 		const Segment2 wall{ { 120.0, 0.0 }, { 120.0, 180.0 } };
-		require(engine.set_constraint_geometry(&wall, 1, mapping), "geometry");
+		require(ConstraintPort(engine.renderers().constraint.channels).set_geometry(&wall, 1, mapping), "geometry");
 		RenderConfig config = engine.config();
-		config.render_mode = RenderMode::CONSTRAINT;
+		config.servo.render_mode = RenderMode::CONSTRAINT;
 		require(engine.configure(config), "constraint mode");
 		step_to = { 40.0 * 0.16 / (180.0 * std::sqrt(2.0)), 0.0, 0.0 };
 	} else {

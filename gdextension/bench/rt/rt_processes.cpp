@@ -1,6 +1,6 @@
 #include "rt_processes.h"
 
-#include "core/realtime.h"
+#include "core/base/realtime.h"
 
 #include <cerrno>
 #include <chrono>

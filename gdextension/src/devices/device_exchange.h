@@ -17,9 +17,9 @@
 // Each command carries the servo's monotonic time, so the I/O side can measure how old the
 // force was when it went on the wire (DeviceIoStats): the latency this design adds.
 
-#include "core/realtime.h"
-#include "core/seqlock.h"
-#include "devices/device.h"
+#include "core/base/realtime.h"
+#include "core/base/seqlock.h"
+#include "core/device/device.h"
 
 #include <atomic>
 #include <cstdarg>

@@ -13,7 +13,6 @@ inline constexpr std::string_view BACKEND_SIMULATED = "simulated";
 inline constexpr std::string_view BACKEND_HIDAPI = "hidapi";
 inline constexpr std::string_view BACKEND_LIBUSB = "libusb";
 inline constexpr std::string_view BACKEND_EVDEV = "evdev"; // Linux input event nodes.
-inline constexpr std::string_view BACKEND_SCRIPTED = "scripted"; // device_factory.h
 // The user's OpenHaptics runtime (devices by configuration name, not by bus).
 inline constexpr std::string_view BACKEND_OPENHAPTICS = "openhaptics";
 

@@ -1,6 +1,6 @@
 #include "devices/device_io_thread.h"
 
-#include "core/realtime.h"
+#include "core/base/realtime.h"
 
 #include <cmath>
 #include <system_error>

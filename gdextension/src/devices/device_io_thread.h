@@ -9,7 +9,7 @@
 // read: zero force, status on the HUD) and ends. stop() makes the thread run the worker's
 // io_stop() (write zero while the device is still reachable) and joins it.
 
-#include "core/status.h"
+#include "core/base/status.h"
 #include "devices/device_exchange.h"
 
 #include <atomic>

@@ -5,7 +5,7 @@
 // the I/O side's fault and statistics. Backends derive from it, set open_ and reset the
 // exchange in open(), and run their DeviceIoWorker against exchange_.
 
-#include "devices/device.h"
+#include "core/device/device.h"
 #include "devices/device_exchange.h"
 
 namespace haptics {

@@ -24,8 +24,8 @@
 // Threading: set_hand_target, set_buttons and set_plugged may be called from the game
 // thread while the servo runs (lock-free); the rest follows HapticDevice's contract.
 
-#include "core/seqlock.h"
-#include "devices/device.h"
+#include "core/base/seqlock.h"
+#include "core/device/device.h"
 
 #include <atomic>
 
@@ -46,7 +46,7 @@ struct SimulatedDeviceConfig {
 // [0, 1e5] N/m, damping [0, 1e4] N s/m. The message names the field.
 Status validate_simulated_device_config(const SimulatedDeviceConfig &p_config);
 
-class SimulatedDevice final : public HapticDevice {
+class SimulatedDevice final : public HapticDevice, public SoftwareCable {
 public:
 	explicit SimulatedDevice(const SimulatedDeviceConfig &p_config = {});
 
@@ -69,7 +69,8 @@ public:
 
 	// Nothing presses them yet: for the device issue's button tests and Pong's fire button.
 	void set_buttons(uint32_t p_buttons) { buttons_.store(p_buttons, std::memory_order_relaxed); }
-	void set_plugged(bool p_plugged) { plugged_.store(p_plugged, std::memory_order_release); }
+	SoftwareCable *software_cable() override { return this; }
+	void set_plugged(bool p_plugged) override { plugged_.store(p_plugged, std::memory_order_release); }
 	bool plugged() const { return plugged_.load(std::memory_order_acquire); }
 
 	const SimulatedDeviceConfig &config() const { return config_; }

@@ -1,6 +1,6 @@
 #include "godot/config_dictionary.h"
 
-#include "core/config_fields.h"
+#include "engine/config_table.h"
 #include "godot/dictionary_reader.h"
 
 namespace haptics::binding {
@@ -105,7 +105,7 @@ bool apply_config_section(const std::string &p_section, const gd::Dictionary &p_
 			r_error = valid.message();
 			return false;
 		}
-		field->set(r_config, number);
+		set_config_value(r_config, *field, number);
 	}
 	return true;
 }
@@ -116,7 +116,7 @@ gd::Dictionary config_to_dictionary(const RenderConfig &p_config) {
 		gd::Dictionary values;
 		for (const ConfigField &field : config_fields()) {
 			if (std::string_view(field.section) == section) {
-				values.set(field.key, to_variant(field, field.get(p_config)));
+				values.set(field.key, to_variant(field, config_value(p_config, field)));
 			}
 		}
 		sections.set(section, values.variant());
@@ -135,7 +135,7 @@ gd::Array config_fields_to_array() {
 		d.set("min", field.min);
 		d.set("max", field.max);
 		d.set("unit", field.unit);
-		d.set("default", to_variant(field, field.get(defaults)));
+		d.set("default", to_variant(field, config_value(defaults, field)));
 		d.set("zero_means", field.zero_means ? field.zero_means : "");
 		gd::Array choices;
 		for (const char *choice : field.choices) {

@@ -1,12 +1,12 @@
-// RenderConfig <-> GDScript dictionaries, driven by the core's field table
-// (core/config_fields.h): a section is a Dictionary of key -> value, a NUMBER a float, a
+// RenderConfig <-> GDScript dictionaries, driven by the engine's field table
+// (engine/config_table.h): a section is a Dictionary of key -> value, a NUMBER a float, a
 // COUNT an int, a FLAG a bool, a CHOICE an int (the enum's value, e.g.
 // HapticsServer.PROXY_UPDATE_FRAME_RATE) or its name ("frame").
 #pragma once
 
 #include <string>
 
-#include "core/config.h"
+#include "engine/render_config.h"
 #include "godot/containers.h"
 
 namespace haptics::binding {

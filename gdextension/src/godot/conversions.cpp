@@ -3,7 +3,7 @@
 #include <iterator>
 #include <utility>
 
-#include "core/coordinates.h"
+#include "core/base/coordinates.h"
 #include "godot/dictionary_reader.h"
 
 namespace haptics::binding {
@@ -221,14 +221,14 @@ bool mapping_from_dictionary(const gd::Dictionary &p_dictionary, MazeMapping &r_
 	return true;
 }
 
-gd::Dictionary proxy_state_to_dictionary(const ServoOutput &p_output) {
+gd::Dictionary proxy_state_to_dictionary(const ProxyState &p_state) {
 	gd::Dictionary d;
-	d.set("position", gd::Vector2{ static_cast<float>(p_output.proxy_maze.x), static_cast<float>(p_output.proxy_maze.y) });
-	d.set("goal", gd::Vector2{ static_cast<float>(p_output.goal_maze.x), static_cast<float>(p_output.goal_maze.y) });
-	d.set("constraints", static_cast<int64_t>(p_output.proxy_constraints));
-	d.set("placed", p_output.proxy_placed);
-	d.set("updates", static_cast<int64_t>(p_output.proxy_updates));
-	d.set("geometry_segments", static_cast<int64_t>(p_output.geometry_segments));
+	d.set("position", gd::Vector2{ static_cast<float>(p_state.proxy.x), static_cast<float>(p_state.proxy.y) });
+	d.set("goal", gd::Vector2{ static_cast<float>(p_state.goal.x), static_cast<float>(p_state.goal.y) });
+	d.set("constraints", static_cast<int64_t>(p_state.constraints));
+	d.set("placed", p_state.placed);
+	d.set("updates", static_cast<int64_t>(p_state.updates));
+	d.set("geometry_segments", static_cast<int64_t>(p_state.geometry_segments));
 	return d;
 }
 
@@ -237,13 +237,11 @@ gd::Vector2 to_game(const Vec3 &p_device) {
 	return { static_cast<float>(game.x), static_cast<float>(game.y) };
 }
 
-gd::Dictionary forces_to_dictionary(const ForceComponents &p_forces) {
+gd::Dictionary forces_to_dictionary(const ForceComponents &p_forces, std::span<const char *const> p_names) {
 	gd::Dictionary d;
-	d.set("normal", to_game(p_forces.normal));
-	d.set("friction", to_game(p_forces.friction));
-	d.set("weight", to_game(p_forces.weight));
-	d.set("drag", to_game(p_forces.drag));
-	d.set("inertia", to_game(p_forces.inertia));
+	for (size_t part = 0; part < p_names.size() && part < MAX_FORCE_PARTS; ++part) {
+		d.set(p_names[part], to_game(p_forces.parts[part]));
+	}
 	d.set("continuous", to_game(p_forces.continuous));
 	d.set("smoothed", to_game(p_forces.smoothed));
 	d.set("impact", to_game(p_forces.impact));

@@ -1,6 +1,6 @@
 // Engine values <-> the core's plain structs. GDScript speaks game axes (x right, y down) in
 // SI units (the probe has already turned pixels into metres); the core speaks device axes
-// (y up). The flip happens here and only here, through core/coordinates.h. The dictionary
+// (y up). The flip happens here and only here, through core/base/coordinates.h. The dictionary
 // layouts are documented for GDScript authors in doc_classes/HapticsServer.xml; keys end in
 // their unit, and the names used before 0.3.0 are still read, with a deprecation warning.
 #pragma once
@@ -9,13 +9,16 @@
 
 #include <vector>
 
-#include "core/constraint_geometry.h"
-#include "core/frame.h"
-#include "core/maze_mapping.h"
-#include "core/servo_pipeline.h"
-#include "core/servo_stats.h"
-#include "devices/device.h"
+#include <span>
+
+#include "core/device/device.h"
+#include "core/render/force_components.h"
+#include "core/render/frame.h"
+#include "core/servo/servo_stats.h"
 #include "godot/containers.h"
+#include "renderers/constraint/constraint_channels.h"
+#include "renderers/constraint/maze_mapping.h"
+#include "renderers/constraint/swept_disc.h"
 
 namespace haptics::binding {
 
@@ -31,10 +34,11 @@ bool segments_from_points(const gd::PackedVector2Array &p_points, std::vector<Se
 //   required.
 bool mapping_from_dictionary(const gd::Dictionary &p_dictionary, MazeMapping &r_mapping,
 		std::string &r_error);
-gd::Dictionary proxy_state_to_dictionary(const ServoOutput &p_output);
+gd::Dictionary proxy_state_to_dictionary(const ProxyState &p_state);
 
 gd::Vector2 to_game(const Vec3 &p_device);
-gd::Dictionary forces_to_dictionary(const ForceComponents &p_forces);
+// The parts by the active renderer's names (p_names), then continuous, smoothed, impact, total.
+gd::Dictionary forces_to_dictionary(const ForceComponents &p_forces, std::span<const char *const> p_names);
 gd::Dictionary stats_to_dictionary(const ServoStats &p_stats);
 gd::Dictionary limits_to_dictionary(const DeviceLimits &p_limits);
 // Limits plus input_dof, output_dof, output ("directional", "vibration", "none"),

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/config_fields.h"
-#include "core/coordinates.h"
-#include "core/telemetry.h"
-#include "devices/device_factory.h"
-#include "devices/scripted_device.h"
+#include "core/base/coordinates.h"
+#include "core/servo/telemetry.h"
+#include "engine/config_table.h"
+#include "engine/device_factory.h"
+#include "engine/renderer_registry.h"
 #include "godot/config_dictionary.h"
 #include "godot/conversions.h"
 #include "godot/log.h"
@@ -18,26 +18,6 @@ namespace haptics::binding {
 namespace {
 
 constexpr int64_t NS_PER_US = 1000;
-
-gd::Dictionary to_dictionary(const DeviceInfo &p_device) {
-	gd::Dictionary d;
-	d.set("id", p_device.id);
-	d.set("backend", p_device.backend);
-	d.set("vendor_id", static_cast<int64_t>(p_device.vendor_id));
-	d.set("product_id", static_cast<int64_t>(p_device.product_id));
-	d.set("path", p_device.path);
-	d.set("product", p_device.product);
-	d.set("manufacturer", p_device.manufacturer);
-	d.set("serial", p_device.serial);
-	d.set("usage_page", static_cast<int64_t>(p_device.usage_page));
-	d.set("usage", static_cast<int64_t>(p_device.usage));
-	d.set("known_haptic", p_device.known_haptic);
-	d.set("model", p_device.model);
-	d.set("driver", p_device.driver);
-	d.set("openable", p_device.openable);
-	d.set("unavailable_reason", p_device.unavailable_reason);
-	return d;
-}
 
 } // namespace
 
@@ -96,33 +76,22 @@ void HapticsServer::bind_methods(gd::ClassBinder<HapticsServer> &r_binder) {
 	static_assert(ServoOptions::DEFAULT_SPIN_NS % NS_PER_US == 0, "DEFAULT_SPIN_US is an integer constant");
 	r_binder.bind_constant("", "DEFAULT_SPIN_US", ServoOptions::DEFAULT_SPIN_NS / NS_PER_US);
 	r_binder.bind_constant("", "TELEMETRY_QUEUE_CAPACITY", static_cast<int64_t>(TELEMETRY_QUEUE_CAPACITY));
-	r_binder.bind_constant("RenderMode", "RENDER_MODE_MOVEMENT", static_cast<int64_t>(RenderMode::MOVEMENT));
-	r_binder.bind_constant("RenderMode", "RENDER_MODE_CONSTRAINT", static_cast<int64_t>(RenderMode::CONSTRAINT));
-	r_binder.bind_constant("RenderMode", "RENDER_MODE_PONG", static_cast<int64_t>(RenderMode::PONG));
+	for (size_t mode = 0; mode < registered_renderers().size(); ++mode) {
+		r_binder.bind_constant("RenderMode", registered_renderers()[mode].mode_constant, static_cast<int64_t>(mode));
+	}
 	r_binder.bind_constant("ProxyUpdate", "PROXY_UPDATE_SERVO_RATE", static_cast<int64_t>(ProxyUpdate::SERVO_RATE));
 	r_binder.bind_constant("ProxyUpdate", "PROXY_UPDATE_FRAME_RATE", static_cast<int64_t>(ProxyUpdate::FRAME_RATE));
 	r_binder.bind_constant("ContactModel", "CONTACT_MODEL_PER_CONTACT", static_cast<int64_t>(ContactModel::PER_CONTACT));
 	r_binder.bind_constant("ContactModel", "CONTACT_MODEL_PAPER_SUM", static_cast<int64_t>(ContactModel::PAPER_SUM));
 	r_binder.bind_constant("WorkspaceShape", "WORKSPACE_DISC", static_cast<int64_t>(WorkspaceShape::DISC));
 	r_binder.bind_constant("WorkspaceShape", "WORKSPACE_SQUARE", static_cast<int64_t>(WorkspaceShape::SQUARE));
-	const struct {
-		const char *name;
-		TelemetryFlag flag;
-	} flags[] = {
-		{ "TELEMETRY_FLAG_CONTACT", TELEMETRY_FLAG_CONTACT },
-		{ "TELEMETRY_FLAG_IN_WATER", TELEMETRY_FLAG_IN_WATER },
-		{ "TELEMETRY_FLAG_WATCHDOG", TELEMETRY_FLAG_WATCHDOG },
-		{ "TELEMETRY_FLAG_CLAMPED", TELEMETRY_FLAG_CLAMPED },
-		{ "TELEMETRY_FLAG_RAMPING", TELEMETRY_FLAG_RAMPING },
-		{ "TELEMETRY_FLAG_NON_FINITE", TELEMETRY_FLAG_NON_FINITE },
-		{ "TELEMETRY_FLAG_NEW_FRAME", TELEMETRY_FLAG_NEW_FRAME },
-		{ "TELEMETRY_FLAG_CONSTRAINT_MODE", TELEMETRY_FLAG_CONSTRAINT_MODE },
-		{ "TELEMETRY_FLAG_PROXY_CONTACT", TELEMETRY_FLAG_PROXY_CONTACT },
-		{ "TELEMETRY_FLAG_PONG_MODE", TELEMETRY_FLAG_PONG_MODE },
-		{ "TELEMETRY_FLAG_PADDLE_CONTACT", TELEMETRY_FLAG_PADDLE_CONTACT },
-	};
-	for (const auto &[name, flag] : flags) {
-		r_binder.bind_constant("TelemetryFlag", name, static_cast<int64_t>(flag), true);
+	for (const TelemetryFlagName &flag : servo_telemetry_flags()) {
+		r_binder.bind_constant("TelemetryFlag", flag.name, static_cast<int64_t>(flag.flag), true);
+	}
+	for (const RegisteredRenderer &renderer : registered_renderers()) {
+		for (const TelemetryFlagName &flag : renderer.info->telemetry_flags) {
+			r_binder.bind_constant("TelemetryFlag", flag.name, static_cast<int64_t>(flag.flag), true);
+		}
 	}
 }
 
@@ -131,128 +100,6 @@ bool HapticsServer::report(const char *p_method, const Status &p_status) const {
 		gd::print_error(std::string(p_method) + ": " + p_status.message(), p_method, __FILE__, __LINE__);
 	}
 	return p_status.ok();
-}
-
-gd::Array HapticsServer::list_devices() {
-	const DeviceList found = list_all_devices();
-	last_warnings_ = found.warnings;
-	gd::Array out;
-	for (const DeviceInfo &device : found.devices) {
-		out.append(to_dictionary(device).variant());
-	}
-	return out;
-}
-
-gd::Dictionary HapticsServer::get_device(const std::string &p_id) {
-	const DeviceList found = list_all_devices();
-	last_warnings_ = found.warnings;
-	for (const DeviceInfo &device : found.devices) {
-		if (device.id == p_id) {
-			return to_dictionary(device);
-		}
-	}
-	HAPTICS_ERROR("No device with id '" + p_id + "'; list_devices() shows what is present.");
-	return gd::Dictionary();
-}
-
-std::string HapticsServer::get_simulated_device_id() const {
-	return std::string(SIMULATED_DEVICE_ID);
-}
-
-gd::Array HapticsServer::get_device_warnings() const {
-	gd::Array out;
-	for (const std::string &warning : last_warnings_) {
-		out.append(warning);
-	}
-	return out;
-}
-
-bool HapticsServer::open_device(const std::string &p_id) {
-	if (p_id == SIMULATED_DEVICE_ID) {
-		if (!report("open_device", engine_.open_simulated_device())) {
-			return false;
-		}
-		device_id_ = p_id;
-		hand_target_ = {};
-		return true;
-	}
-	const DeviceList found = list_all_devices();
-	for (const DeviceInfo &device : found.devices) {
-		if (device.id != p_id) {
-			continue;
-		}
-		std::unique_ptr<HapticDevice> opened;
-		const Status status = open_listed_device(device, DeviceOpenOptions{}, opened);
-		if (!status) {
-			HAPTICS_ERROR("open_device: " + std::string(status.message()) + "; the current device stays open.");
-			return false;
-		}
-		if (!report("open_device", engine_.open_device(std::move(opened)))) {
-			return false;
-		}
-		device_id_ = p_id;
-		hand_target_ = {};
-		return true;
-	}
-	HAPTICS_ERROR("open_device: no device with id '" + p_id + "'; the current device stays open.");
-	return false;
-}
-
-void HapticsServer::close_device() {
-	engine_.close_device();
-	device_id_.clear();
-}
-
-std::string HapticsServer::get_device_id() const {
-	return engine_.has_device() ? device_id_ : std::string();
-}
-
-std::string HapticsServer::get_device_name() const {
-	return engine_.device_name();
-}
-
-gd::Dictionary HapticsServer::get_device_limits() const {
-	return limits_to_dictionary(engine_.device_limits());
-}
-
-gd::Dictionary HapticsServer::get_device_capabilities() const {
-	return engine_.has_device() ? capabilities_to_dictionary(engine_.device_capabilities()) : gd::Dictionary();
-}
-
-gd::Dictionary HapticsServer::get_device_status() const {
-	return device_status_to_dictionary(engine_.device_status());
-}
-
-bool HapticsServer::calibrate() {
-	return report("calibrate", engine_.calibrate());
-}
-
-bool HapticsServer::set_hand_target(gd::Vector2 p_target_m) {
-	const Vec3 target = game_to_device_scaled(p_target_m.x, p_target_m.y, 1.0);
-	if (!report("set_hand_target", engine_.set_hand_target(target))) {
-		return false;
-	}
-	hand_target_ = p_target_m;
-	return true;
-}
-
-gd::Vector2 HapticsServer::get_hand_target() const {
-	return hand_target_;
-}
-
-bool HapticsServer::set_simulated_plugged(bool p_plugged) {
-	// The simulated device's cable, or a scripted device's (which stays unplugged across
-	// reopen attempts, like a real one).
-	if (SimulatedDevice *simulated = engine_.simulated_device()) {
-		simulated->set_plugged(p_plugged);
-		return true;
-	}
-	if (auto *scripted = dynamic_cast<ScriptedDevice *>(engine_.current_device())) {
-		scripted->set_plugged(p_plugged);
-		return true;
-	}
-	HAPTICS_ERROR("set_simulated_plugged: the current device is neither simulated nor scripted.");
-	return false;
 }
 
 bool HapticsServer::start(double p_rate_hz, double p_spin_us) {
@@ -321,7 +168,9 @@ gd::Vector2 HapticsServer::get_device_position() const {
 }
 
 gd::Dictionary HapticsServer::get_forces() const {
-	return forces_to_dictionary(engine_.forces());
+	const ServoOutput output = engine_.output(); // The forces and whose they are, one tick.
+	const RegisteredRenderer &active = registered_renderers()[static_cast<size_t>(output.render_mode)];
+	return forces_to_dictionary(output.forces, active.info->force_names);
 }
 
 gd::Dictionary HapticsServer::get_stats() const {
@@ -348,12 +197,19 @@ int64_t HapticsServer::get_telemetry_stride() const {
 }
 
 gd::Array HapticsServer::get_telemetry_columns() const {
+	// The force parts' columns are named after the default renderer's components (the
+	// movement renderer's five); other renderers fill them in their own order.
+	const std::span<const char *const> parts = registered_renderers()[0].info->force_names;
+	std::vector<std::string> vectors = { "input", "position" };
+	for (size_t part = 0; part < MAX_FORCE_PARTS; ++part) {
+		vectors.push_back(part < parts.size() ? parts[part] : "part" + std::to_string(part));
+	}
+	vectors.insert(vectors.end(), { "smoothed", "impact", "total" });
 	gd::Array names;
 	names.append("t");
-	for (const char *vector : { "input", "position", "normal", "friction", "weight", "drag",
-				 "inertia", "smoothed", "impact", "total" }) {
+	for (const std::string &vector : vectors) {
 		for (const char *axis : { "_x", "_y", "_z" }) {
-			names.append(std::string(vector) + axis);
+			names.append(vector + axis);
 		}
 	}
 	names.append("flags");
@@ -381,18 +237,25 @@ bool HapticsServer::set_config(const std::string &p_section, const gd::Dictionar
 }
 
 bool HapticsServer::set_render_mode(int64_t p_mode) {
-	if (p_mode < 0 || p_mode >= static_cast<int64_t>(RENDER_MODE_COUNT)) {
-		HAPTICS_ERROR("set_render_mode: unknown mode " + std::to_string(p_mode) +
-				" (RENDER_MODE_MOVEMENT, RENDER_MODE_CONSTRAINT or RENDER_MODE_PONG); the current mode stays.");
+	const std::span<const RegisteredRenderer> renderers = registered_renderers();
+	if (p_mode < 0 || p_mode >= static_cast<int64_t>(renderers.size())) {
+		std::string modes; // "A, B or C"
+		for (size_t mode = 0; mode < renderers.size(); ++mode) {
+			modes += (mode == 0 ? "" : mode + 1 == renderers.size() ? " or "
+																	: ", ") +
+					std::string(renderers[mode].mode_constant);
+		}
+		HAPTICS_ERROR("set_render_mode: unknown mode " + std::to_string(p_mode) + " (" + modes +
+				"); the current mode stays.");
 		return false;
 	}
 	RenderConfig config = engine_.config();
-	config.render_mode = static_cast<RenderMode>(p_mode);
+	config.servo.render_mode = static_cast<int32_t>(p_mode);
 	return report("set_render_mode", engine_.configure(config));
 }
 
 int64_t HapticsServer::get_render_mode() const {
-	return static_cast<int64_t>(engine_.config().render_mode);
+	return static_cast<int64_t>(engine_.config().servo.render_mode);
 }
 
 bool HapticsServer::set_constraint_geometry(const gd::PackedVector2Array &p_segments,
@@ -405,12 +268,11 @@ bool HapticsServer::set_constraint_geometry(const gd::PackedVector2Array &p_segm
 		HAPTICS_ERROR("set_constraint_geometry: " + error + "; the previous walls stay.");
 		return false;
 	}
-	return report("set_constraint_geometry",
-			engine_.set_constraint_geometry(segments.data(), segments.size(), mapping));
+	return report("set_constraint_geometry", constraint_.set_geometry(segments.data(), segments.size(), mapping));
 }
 
 gd::Dictionary HapticsServer::get_proxy_state() const {
-	return proxy_state_to_dictionary(engine_.output());
+	return proxy_state_to_dictionary(constraint_.state());
 }
 
 gd::Dictionary HapticsServer::get_config() const {

@@ -1,7 +1,9 @@
 // HapticsServer: the one class GDScript talks to. A thin adapter over the engine-free
-// core's HapticsEngine: it converts engine values to the core's plain structs and back
-// (conversions.h) and reports rejected input through the engine's error printer, naming
-// the offending field; a rejected call changes nothing. All behaviour lives in the core.
+// HapticsEngine (engine/haptics_engine.h) and the ports of the renderers that offer more
+// than the servo (ConstraintPort, PongPort): it converts engine values to the core's plain
+// structs and back (conversions.h) and reports rejected input through the engine's error
+// printer, naming the offending field; a rejected call changes nothing. All behaviour lives
+// below the binding.
 //
 // Vectors are in game axes (x right, y down). Lengths are metres, forces newtons.
 #pragma once
@@ -9,9 +11,11 @@
 #include <string>
 #include <vector>
 
-#include "core/haptics_engine.h"
+#include "engine/haptics_engine.h"
 #include "godot/class_db.h"
 #include "godot/containers.h"
+#include "renderers/constraint/constraint_port.h"
+#include "renderers/pong/pong_port.h"
 
 namespace haptics::binding {
 
@@ -19,7 +23,7 @@ class HapticsServer : public gd::ExtensionObject {
 public:
 	static void bind_methods(gd::ClassBinder<HapticsServer> &r_binder);
 
-	// --- Devices ---
+	// --- Devices --- (haptics_server_devices.cpp)
 	// Every device present: the simulated one first, then hidapi, libusb, evdev and
 	// OpenHaptics devices, each a Dictionary (id, backend, vendor_id, product_id, path,
 	// product, manufacturer, serial, usage_page, usage, known_haptic, model, driver,
@@ -48,8 +52,8 @@ public:
 	// Simulated device only: where its hand pulls the stylus, in metres (game axes).
 	bool set_hand_target(gd::Vector2 p_target_m);
 	gd::Vector2 get_hand_target() const;
-	// Simulated or scripted device only: unplug (false) or replug it, to exercise disconnect
-	// handling.
+	// Devices in software only (HapticDevice::software_cable): unplug (false) or replug it, to
+	// exercise disconnect handling.
 	bool set_simulated_plugged(bool p_plugged);
 
 	// --- Rendering ---
@@ -71,7 +75,9 @@ public:
 	// --- Servo -> game ---
 	gd::Vector2 get_input_vector() const;
 	gd::Vector2 get_device_position() const;
-	// normal, friction, weight, drag, inertia, continuous, smoothed, impact, total: Vector2 N.
+	// The active renderer's components by its names (movement and constraint: normal,
+	// friction, weight, drag, inertia; Pong: contact, spin, effects), then continuous,
+	// smoothed, impact, total: Vector2 N.
 	gd::Dictionary get_forces() const;
 	gd::Dictionary get_stats() const;
 	// Up to p_max_samples samples of get_telemetry_stride() floats each, oldest first, in
@@ -105,7 +111,7 @@ public:
 	// user), metres, so the stylus can be moved in depth.
 	bool set_hand_target_3d(gd::Vector3 p_target_m);
 
-	// --- Configuration --- by section (core/config_fields.h); only the keys given change.
+	// --- Configuration --- by section (engine/config_table.h); only the keys given change.
 	// get_config() returns every section with every key, get_config_fields() the table
 	// itself (kinds, ranges, units, defaults).
 	bool set_config(const std::string &p_section, const gd::Dictionary &p_values);
@@ -118,6 +124,8 @@ private:
 	bool report(const char *p_method, const Status &p_status) const;
 
 	HapticsEngine engine_;
+	ConstraintPort constraint_{ engine_.renderers().constraint.channels };
+	PongPort pong_{ engine_.renderers().pong.channels };
 	std::string device_id_;
 	gd::Vector2 hand_target_;
 	std::vector<std::string> last_warnings_;

@@ -1,5 +1,5 @@
 // HapticsServer's Haptic Battle Pong methods: dictionaries in and out (pong_conversions.h),
-// everything else in the core's HapticsEngine.
+// everything else in the Pong renderer's port (renderers/pong/pong_port.h).
 
 #include "godot/haptics_server.h"
 
@@ -8,7 +8,7 @@
 #include "godot/conversions.h"
 #include "godot/log.h"
 #include "godot/pong_conversions.h"
-#include "pong/pong_channels.h"
+#include "renderers/pong/pong_channels.h"
 
 namespace haptics::binding {
 
@@ -19,7 +19,7 @@ bool HapticsServer::set_pong_input(const gd::Dictionary &p_input) {
 		HAPTICS_ERROR("set_pong_input: " + error + "; the previous input stays in force.");
 		return false;
 	}
-	return report("set_pong_input", engine_.set_pong_input(input));
+	return report("set_pong_input", pong_.set_input(input));
 }
 
 bool HapticsServer::pong_command(const gd::Dictionary &p_command) {
@@ -29,17 +29,17 @@ bool HapticsServer::pong_command(const gd::Dictionary &p_command) {
 		HAPTICS_ERROR("pong_command: " + error + "; nothing was queued.");
 		return false;
 	}
-	return report("pong_command", engine_.push_pong_command(command));
+	return report("pong_command", pong_.push_command(command));
 }
 
 gd::Dictionary HapticsServer::get_pong_state() const {
-	return pong_state_to_dictionary(engine_.pong_state());
+	return pong_state_to_dictionary(pong_.state());
 }
 
 gd::Array HapticsServer::drain_pong_events() {
 	// The whole queue at most: one drain per frame empties it.
 	std::array<PongEvent, PONG_EVENT_QUEUE_CAPACITY> events;
-	const size_t count = engine_.drain_pong_events(events.data(), events.size());
+	const size_t count = pong_.drain_events(events.data(), events.size());
 	gd::Array out;
 	for (size_t e = 0; e < count; ++e) {
 		out.append(pong_event_to_dictionary(events[e]).variant());

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "godot/dictionary_reader.h"
+#include "renderers/pong/pong_renderer.h"
 
 namespace haptics::binding {
 
@@ -206,9 +207,9 @@ gd::Dictionary pong_state_to_dictionary(const PongState &p_state) {
 	}
 	d.set("players", players.variant());
 	gd::Dictionary hand;
-	hand.set("contact", to_godot(p_state.hand_force.contact));
-	hand.set("spin", to_godot(p_state.hand_force.spin));
-	hand.set("effects", to_godot(p_state.hand_force.effects));
+	hand.set(PONG_FORCE_NAMES[CONTACT_FORCE], to_godot(p_state.hand_force.contact));
+	hand.set(PONG_FORCE_NAMES[SPIN_FORCE], to_godot(p_state.hand_force.spin));
+	hand.set(PONG_FORCE_NAMES[EFFECTS_FORCE], to_godot(p_state.hand_force.effects));
 	hand.set("total", to_godot(p_state.hand_force.total));
 	d.set("hand_force", hand.variant());
 	gd::Array effects;

@@ -1,5 +1,5 @@
-// Haptic Battle Pong's dictionaries <-> the core's plain structs (pong/pong_input.h,
-// pong/pong_output.h). World vectors are Godot's 3D world, which is the core's world too:
+// Haptic Battle Pong's dictionaries <-> the core's plain structs (renderers/pong/pong_input.h,
+// renderers/pong/pong_output.h). World vectors are Godot's 3D world, which is the core's world too:
 // they pass straight through (Vector3, metres). Only the hand forces are in device space.
 // Unknown keys are errors, missing keys keep the defaults; errors name the key
 // ("pong_input.players[1].normal: expected a Vector3, got Vector2"). The layouts are
@@ -9,8 +9,8 @@
 #include <string>
 
 #include "godot/containers.h"
-#include "pong/pong_input.h"
-#include "pong/pong_output.h"
+#include "renderers/pong/pong_input.h"
+#include "renderers/pong/pong_output.h"
 
 namespace haptics::binding {
 

@@ -1,11 +1,17 @@
 // The library's entry point: resolves the engine interface and registers our classes at
 // the scene level (they use scene-level types such as Dictionary only through Variants,
-// but their users live in scenes); in the editor, loads their class reference.
+// but their users live in scenes); in the editor, loads their class reference. A
+// development build (HAPTICS_DEV_TOOLS) also adds its software device models to the
+// device factory, here and nowhere else.
 #include "godot/class_db.h"
 #include "godot/doc_data.h"
 #include "godot/durable_file_binding.h"
 #include "godot/haptics_server.h"
 #include "godot/interface.h"
+
+#if HAPTICS_DEV_TOOLS
+#include "dev_tools/scripted_backends.h"
+#endif
 
 namespace {
 
@@ -16,6 +22,9 @@ void initialize(void * /*p_userdata*/, GDExtensionInitializationLevel p_level) {
 	if (p_level != GDEXTENSION_INITIALIZATION_SCENE) {
 		return;
 	}
+#if HAPTICS_DEV_TOOLS
+	haptics::register_scripted_devices();
+#endif
 	gd::register_class<haptics::binding::HapticsServer>("HapticsServer", "RefCounted");
 	gd::register_class<haptics::binding::DurableFile>("DurableFile", "RefCounted");
 }

@@ -12,7 +12,7 @@
 // zero force was the last command before the unplug stopped it and at the end, and so on.
 // Timing-tolerant: asserts invariants with generous bounds (a loaded 2-core CI machine).
 
-#include "core/haptics_engine.h"
+#include "engine/haptics_engine.h"
 
 #include <chrono>
 #include <functional>
@@ -60,8 +60,8 @@ inline void soak_frames(HapticsEngine &r_engine, const Vec3 &p_normal, double p_
 inline BackendSoakResult run_backend_soak(HapticsEngine &r_engine, const BackendSoakScript &p_script) {
 	BackendSoakResult result;
 	RenderConfig config = r_engine.config();
-	config.safety.startup_ramp_s = 0.05;
-	config.safety.start_force_n = 0.0; // The script presses at once; do not wait.
+	config.servo.safety.startup_ramp_s = 0.05;
+	config.servo.safety.start_force_n = 0.0; // The script presses at once; do not wait.
 	r_engine.configure(config);
 
 	result.opened_first = r_engine.open_device(p_script.make_device()).ok() && r_engine.start(1000.0).ok();

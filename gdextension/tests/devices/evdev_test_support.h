@@ -4,7 +4,7 @@
 // (field by field from FACTS §2's offsets), filters over the scripted kernel's record, and
 // a bounded wait for the device's I/O thread.
 
-#include "devices/evdev/scripted_evdev_kernel.h"
+#include "dev_tools/evdev/scripted_evdev_kernel.h"
 
 #include <chrono>
 #include <cstdint>

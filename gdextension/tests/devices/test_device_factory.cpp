@@ -1,9 +1,10 @@
 // The factory's routing: which backend's row claims an enumerated device, what the list
 // says about it, and the OpenHaptics entry that exists only through the runtime.
 
-#include "devices/device_factory.h"
+#include "dev_tools/scripted_backends.h"
 #include "devices/openhaptics/openhaptics_backend.h"
 #include "devices/pid/pid_usages.h"
+#include "engine/device_factory.h"
 
 #include <doctest/doctest.h>
 
@@ -109,6 +110,7 @@ TEST_CASE("device factory: the OpenHaptics entry appears when the runtime loads 
 }
 
 TEST_CASE("device factory: scripted devices for every threaded driver, listed only when enabled") {
+	register_scripted_devices(); // As a development build of the extension does at load.
 	{
 		ScopedVariable enabled(SCRIPTED_DEVICES_VARIABLE, "1");
 		const DeviceList list = list_all_devices();

@@ -2,6 +2,7 @@
 // calls io_cycle itself) and the pad's own checks. The hidapi transport and probe:
 // test_dualsense_backend.cpp.
 
+#include "dev_tools/dualsense/scripted_dualsense_device.h"
 #include "devices/dualsense/dualsense_backend.h"
 #include "devices/dualsense/dualsense_crc.h"
 #include "devices/dualsense/dualsense_io.h"

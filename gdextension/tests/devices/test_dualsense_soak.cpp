@@ -4,6 +4,7 @@
 
 #include "backend_soak.h"
 
+#include "dev_tools/dualsense/scripted_dualsense_device.h"
 #include "devices/dualsense/dualsense_backend.h"
 
 #include <doctest/doctest.h>
@@ -84,8 +85,8 @@ TEST_CASE("dualsense engine: a pushed impact reaches the pad's motors and dies a
 	auto pad = std::make_shared<ScriptedDualSense>();
 	HapticsEngine engine;
 	RenderConfig config = engine.config();
-	config.safety.startup_ramp_s = 0.01;
-	config.safety.start_force_n = 0.0;
+	config.servo.safety.startup_ramp_s = 0.01;
+	config.servo.safety.start_force_n = 0.0;
 	REQUIRE(engine.configure(config));
 	REQUIRE(engine.open_device(make_scripted_device(pad)));
 	REQUIRE(engine.start(1000.0));

@@ -2,6 +2,7 @@
 // through the I/O thread, the stick reaching read_state, close/unplug/error leaving the
 // device at rest, the player-facing reasons; and the real syscalls on this machine.
 
+#include "dev_tools/evdev/scripted_evdev_device.h"
 #include "devices/evdev/evdev_backend.h"
 #include "devices/evdev/evdev_device.h"
 #include "evdev_test_support.h"

@@ -3,10 +3,10 @@
 // through the scripted kernel, sysfs capability strings, absinfo ranges, forces, and
 // arbitrary ioctls/effects into the scripted kernel. Run under ASan+UBSan too.
 
+#include "dev_tools/evdev/scripted_evdev_kernel.h"
 #include "devices/evdev/evdev_bits.h"
 #include "devices/evdev/evdev_ff.h"
 #include "devices/evdev/evdev_input.h"
-#include "devices/evdev/scripted_evdev_kernel.h"
 #include "evdev_test_support.h"
 
 #include <doctest/doctest.h>

@@ -2,8 +2,8 @@
 // (joysticks report +Y toward the user), SDL-ordered buttons, frames committed at
 // SYN_REPORT, SYN_DROPPED recovery with EVIOCGABS/EVIOCGKEY, and garbage/short reads.
 
+#include "dev_tools/evdev/scripted_evdev_kernel.h"
 #include "devices/evdev/evdev_input.h"
-#include "devices/evdev/scripted_evdev_kernel.h"
 #include "evdev_test_support.h"
 
 #include <doctest/doctest.h>

@@ -2,8 +2,8 @@
 // upload (id -1 -> the kernel's id), play, updates (one EVIOCSFF with the same id, only on
 // a change, never a re-play), stop and erase; the force the device then renders; errors.
 
+#include "dev_tools/evdev/scripted_evdev_kernel.h"
 #include "devices/evdev/evdev_effect.h"
-#include "devices/evdev/scripted_evdev_kernel.h"
 #include "evdev_test_support.h"
 
 #include <doctest/doctest.h>

@@ -4,6 +4,7 @@
 // replugged, reopened, and at the end the kernel's record shows zero force, stop, erase.
 
 #include "backend_soak.h"
+#include "dev_tools/evdev/scripted_evdev_device.h"
 #include "devices/evdev/evdev_backend.h"
 #include "evdev_test_support.h"
 

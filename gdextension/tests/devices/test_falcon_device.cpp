@@ -2,11 +2,12 @@
 // mapping with explicit vectors, homing (ready, LED colours, zero torques until homed),
 // forces on the wire, zero torques on close / NaN, unplug and silence.
 
+#include "dev_tools/falcon/scripted_falcon.h"
+#include "dev_tools/falcon/scripted_falcon_device.h"
 #include "devices/falcon/falcon_axes.h"
 #include "devices/falcon/falcon_backend.h"
 #include "devices/falcon/falcon_codec.h"
 #include "devices/falcon/falcon_device.h"
-#include "devices/falcon/scripted_falcon.h"
 
 #include <doctest/doctest.h>
 

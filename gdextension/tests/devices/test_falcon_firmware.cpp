@@ -2,10 +2,11 @@
 // exact control transfers and bulk payloads, both handshake reply shapes, 100 failed tries,
 // echo mismatch, timeout, silence, split echoes; the firmware check; and the user's file.
 
+#include "dev_tools/falcon/scripted_falcon.h"
+#include "dev_tools/falcon/scripted_falcon_device.h"
 #include "devices/falcon/falcon_backend.h"
 #include "devices/falcon/falcon_firmware_loader.h"
 #include "devices/falcon/falcon_ftdi.h"
-#include "devices/falcon/scripted_falcon.h"
 
 #include "scratch_dir.h"
 

@@ -3,10 +3,11 @@
 // servo must stop itself, the Falcon is plugged back (firmware again) and renders once more.
 
 #include "backend_soak.h"
+#include "dev_tools/falcon/scripted_falcon.h"
+#include "dev_tools/falcon/scripted_falcon_device.h"
 #include "devices/falcon/falcon_backend.h"
 #include "devices/falcon/falcon_codec.h"
 #include "devices/falcon/falcon_kinematics.h"
-#include "devices/falcon/scripted_falcon.h"
 
 #include <doctest/doctest.h>
 

@@ -1,9 +1,9 @@
 // The stick's input report: found by usage (GD X/Y, Steering, Button page), decoded to the
 // byte, normalised by the logical range, and robust to foreign, short and random reports.
 
+#include "dev_tools/pid/virtual_pid_descriptor.h"
 #include "devices/hid/joystick_input.h"
 #include "devices/pid/aj_descriptor.h"
-#include "devices/pid/virtual_pid_descriptor.h"
 #include "hid_test_util.h"
 
 #include <doctest/doctest.h>

@@ -4,12 +4,12 @@
 // the parser, the PID layout finder, the encoders and the input decoder, which must stay
 // clean under ASan/UBSan.
 
+#include "dev_tools/pid/virtual_pid_descriptor.h"
 #include "devices/hid/joystick_input.h"
 #include "devices/hid/report_descriptor.h"
 #include "devices/pid/aj_descriptor.h"
 #include "devices/pid/pid_layout.h"
 #include "devices/pid/pid_protocol.h"
-#include "devices/pid/virtual_pid_descriptor.h"
 #include "hid_test_util.h"
 
 #include <doctest/doctest.h>

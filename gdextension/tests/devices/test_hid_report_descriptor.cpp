@@ -2,10 +2,10 @@
 // §1.4 field offsets, §1.3 quirks), on the composed AJ joystick descriptor and on our
 // OFB-like virtual descriptor.
 
+#include "dev_tools/pid/virtual_pid_descriptor.h"
 #include "devices/hid/report_descriptor.h"
 #include "devices/pid/aj_descriptor.h"
 #include "devices/pid/pid_usages.h"
-#include "devices/pid/virtual_pid_descriptor.h"
 #include "hid_test_util.h"
 #include "sha256.h"
 

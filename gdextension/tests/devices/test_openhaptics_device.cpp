@@ -62,7 +62,7 @@ unsigned long servo_handle(const FakeHd &p_fake) {
 }
 
 std::unique_ptr<HdDevice> open_fake_device(FakeHd &r_fake, HdDeviceOptions p_options = {}) {
-	auto device = make_scripted_device(haptics::test::fake_hd_path(), std::move(p_options));
+	auto device = make_device_on_runtime(haptics::test::fake_hd_path(), std::move(p_options));
 	const Status opened = device->open();
 	INFO(opened.message());
 	REQUIRE(opened);
@@ -337,7 +337,7 @@ TEST_CASE("openhaptics: scheduler rate out of range is refused before anything l
 	FakeHd &fake = fresh_fake_hd();
 	HdDeviceOptions options;
 	options.scheduler_rate_hz = 100;
-	auto device = make_scripted_device(haptics::test::fake_hd_path(), options);
+	auto device = make_device_on_runtime(haptics::test::fake_hd_path(), options);
 	const Status status = device->open();
 	CHECK(status.code() == StatusCode::OUT_OF_RANGE);
 	CHECK(std::strstr(status.message(), "scheduler_rate_hz") != nullptr);

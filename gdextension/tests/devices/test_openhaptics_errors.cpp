@@ -34,7 +34,7 @@ size_t count_calls(const FakeHd &p_fake, const char *p_name) {
 }
 
 std::unique_ptr<HdDevice> fake_device() {
-	return make_scripted_device(haptics::test::fake_hd_path());
+	return make_device_on_runtime(haptics::test::fake_hd_path());
 }
 
 // Opens, then waits until the servo side stops reading OK (the callback failed).

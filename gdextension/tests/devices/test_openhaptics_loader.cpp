@@ -73,7 +73,7 @@ TEST_CASE("openhaptics: a missing runtime library is a clean NO_DEVICE, never a 
 	CHECK(std::strncmp(through_search.message(), HD_RUNTIME_NOT_FOUND, std::strlen(HD_RUNTIME_NOT_FOUND)) == 0);
 
 	// The device stays closed and its servo side says so.
-	auto device = make_scripted_device(MISSING_LIBRARY);
+	auto device = make_device_on_runtime(MISSING_LIBRARY);
 	const Status opened = device->open();
 	CHECK(opened.code() == StatusCode::NO_DEVICE);
 	CHECK_FALSE(device->is_open());
@@ -105,7 +105,7 @@ TEST_CASE("openhaptics: a runtime without hdScheduleAsynchronous is refused, nam
 	CHECK_FALSE(library.is_loaded());
 
 	// Through the device: the same Status, and not one HD function was called.
-	auto device = make_scripted_device(HAPTICS_FAKE_HD_NO_ASYNC_PATH);
+	auto device = make_device_on_runtime(HAPTICS_FAKE_HD_NO_ASYNC_PATH);
 	const Status opened = device->open();
 	CHECK(opened.code() == StatusCode::DEVICE_ERROR);
 	CHECK(contains(opened.message(), "lacks the function hdScheduleAsynchronous"));

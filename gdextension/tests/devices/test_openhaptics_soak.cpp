@@ -30,7 +30,7 @@ TEST_CASE("openhaptics: backend soak through the servo: render, unplug (HD_COMM_
 
 	HapticsEngine engine;
 	haptics::test::BackendSoakScript script;
-	script.make_device = [] { return make_scripted_device(haptics::test::fake_hd_path()); };
+	script.make_device = [] { return make_device_on_runtime(haptics::test::fake_hd_path()); };
 	script.unplug = [&fake] { fake.set_unplugged(1); };
 	script.replug = [&fake] { fake.set_unplugged(0); };
 	const unsigned long long ticks_before = fake.ticks();

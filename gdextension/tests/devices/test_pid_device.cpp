@@ -3,10 +3,11 @@
 // as the position, only changed values on the wire, unplug, clean open failures, and the
 // force mapping itself.
 
+#include "dev_tools/pid/scripted_pid_device.h"
+#include "dev_tools/pid/scripted_pid_joystick.h"
 #include "devices/pid/pid_backend.h"
 #include "devices/pid/pid_device.h"
 #include "devices/pid/pid_force_mapping.h"
-#include "devices/pid/scripted_pid_joystick.h"
 
 #include <doctest/doctest.h>
 

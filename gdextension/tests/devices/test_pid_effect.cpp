@@ -4,8 +4,8 @@
 // a level-only change is exactly one Set Constant Force report and a direction-only change
 // exactly one Set Effect report.
 
+#include "dev_tools/pid/scripted_pid_joystick.h"
 #include "devices/pid/pid_effect.h"
-#include "devices/pid/scripted_pid_joystick.h"
 #include "hid_test_util.h"
 
 #include <doctest/doctest.h>

@@ -2,10 +2,10 @@
 // worked values), the §1.9 golden reports on the AJ descriptor, and the OFB-like branches
 // (bitmask Device Control, 16-bit direction, +-32767 magnitude) on our virtual descriptor.
 
+#include "dev_tools/pid/virtual_pid_descriptor.h"
 #include "devices/pid/aj_descriptor.h"
 #include "devices/pid/pid_layout.h"
 #include "devices/pid/pid_protocol.h"
-#include "devices/pid/virtual_pid_descriptor.h"
 #include "hid_test_util.h"
 
 #include <doctest/doctest.h>

@@ -4,8 +4,9 @@
 // plugged back, reopened, and rendering resumes. Then the wire record is checked.
 
 #include "backend_soak.h"
+#include "dev_tools/pid/scripted_pid_device.h"
+#include "dev_tools/pid/scripted_pid_joystick.h"
 #include "devices/pid/pid_backend.h"
-#include "devices/pid/scripted_pid_joystick.h"
 
 #include <doctest/doctest.h>
 

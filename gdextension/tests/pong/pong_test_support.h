@@ -3,7 +3,7 @@
 // Small builders shared by the Pong doctests: a game-driven paddle, a ball, the events a
 // sim raised, a few steps.
 
-#include "pong/pong_sim.h"
+#include "renderers/pong/pong_sim.h"
 
 #include <vector>
 

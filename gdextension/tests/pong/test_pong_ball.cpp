@@ -1,10 +1,10 @@
-// The ball out of paddle contact (pong/ball.h): spin turned into deflection by the court's
+// The ball out of paddle contact (renderers/pong/ball.h): spin turned into deflection by the court's
 // impulse bounces, the paper's air friction and speed cap, beginner mode's plane.
 
 #include "pong/pong_test_support.h"
 
-#include "pong/ball.h"
-#include "pong/pong_sim.h"
+#include "renderers/pong/ball.h"
+#include "renderers/pong/pong_sim.h"
 
 #include <doctest/doctest.h>
 

@@ -1,11 +1,11 @@
-// The ball-paddle contact law (pong/paddle_contact.h): the hand's two regimes, the paper's
+// The ball-paddle contact law (renderers/pong/paddle_contact.h): the hand's two regimes, the paper's
 // jump against the continuous default, swinging harder, the ball force's direction, the
 // side memory against tunnelling, and spin induction against its closed form.
 
 #include "pong/pong_test_support.h"
 
-#include "pong/paddle_contact.h"
-#include "pong/pong_sim.h"
+#include "renderers/pong/paddle_contact.h"
+#include "renderers/pong/pong_sim.h"
 
 #include <doctest/doctest.h>
 

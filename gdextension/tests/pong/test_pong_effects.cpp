@@ -1,11 +1,11 @@
-// The effects on the device player's hand (pong/hand_effects.h) through the simulation:
+// The effects on the device player's hand (renderers/pong/hand_effects.h) through the simulation:
 // directions and magnitudes in device space for both sides, the laws of slow, heavy and
 // remote, the remote's mirror, cap and low-pass, and the ramps' timing.
 
 #include "pong/pong_test_support.h"
 
-#include "pong/hand_effects.h"
-#include "pong/pong_sim.h"
+#include "renderers/pong/hand_effects.h"
+#include "renderers/pong/pong_sim.h"
 
 #include <doctest/doctest.h>
 

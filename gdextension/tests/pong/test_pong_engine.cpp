@@ -5,10 +5,12 @@
 
 #include "pong/pong_test_support.h"
 
-#include "core/haptics_engine.h"
-#include "core/telemetry.h"
+#include "core/servo/telemetry.h"
+#include "engine/config_table.h"
+#include "engine/haptics_engine.h"
 #include "engine_config.h"
-#include "pong/pong_channels.h"
+#include "renderers/pong/pong_port.h"
+#include "renderers/pong/pong_renderer.h"
 
 #include <doctest/doctest.h>
 
@@ -38,7 +40,12 @@ PongInput flat_paddle_input() {
 void start_pong(HapticsEngine &r_engine) {
 	REQUIRE(r_engine.open_simulated_device());
 	REQUIRE(r_engine.set_hand_target({ 0.0, 0.0, 0.0 }));
-	REQUIRE(reconfigure(r_engine, [](RenderConfig &r_config) { r_config.render_mode = RenderMode::PONG; }));
+	REQUIRE(reconfigure(r_engine, [](RenderConfig &r_config) { r_config.servo.render_mode = RenderMode::PONG; }));
+}
+
+// The engine's Pong renderer, as the game reaches it.
+PongPort pong(HapticsEngine &r_engine) {
+	return PongPort(r_engine.renderers().pong.channels);
 }
 
 bool mentions(const Status &p_status, const char *p_text) {
@@ -55,8 +62,8 @@ TEST_CASE("pong engine: a ball landing on the paddle pushes the hand along the p
 	HapticsEngine engine;
 	start_pong(engine);
 	const PongInput input = flat_paddle_input();
-	REQUIRE(engine.set_pong_input(input));
-	REQUIRE(engine.push_pong_command(set_ball({ 0.0, 1.4, 2.0 })));
+	REQUIRE(pong(engine).set_input(input));
+	REQUIRE(pong(engine).push_command(set_ball({ 0.0, 1.4, 2.0 })));
 	const double limit = engine.device_limits().max_force_n;
 	double strongest = 0.0;
 	int contact_ticks = 0;
@@ -64,24 +71,24 @@ TEST_CASE("pong engine: a ball landing on the paddle pushes the hand along the p
 	size_t paddle_events = 0;
 	for (int k = 0; k < 3000; ++k) {
 		if (k % 16 == 0) {
-			REQUIRE(engine.set_pong_input(input)); // A 60 Hz game.
+			REQUIRE(pong(engine).set_input(input)); // A 60 Hz game.
 		}
 		REQUIRE(engine.step(0.001));
 		const ForceComponents forces = engine.forces();
-		const PongState state = engine.pong_state();
+		const PongState state = pong(engine).state();
 		REQUIRE(is_finite(forces.total));
 		REQUIRE(length(forces.total) <= limit + 1e-12);
 		strongest = std::max(strongest, length(forces.total));
-		if (state.players[0].in_contact && length(forces.normal) > 0.05) {
+		if (state.players[0].in_contact && length(forces.parts[CONTACT_FORCE]) > 0.05) {
 			++contact_ticks;
 			// Down: the ball presses the flat paddle, and player 0's device frame is the world's.
-			CHECK(forces.normal.y < 0.0);
-			CHECK(std::abs(forces.normal.x) < 1e-9);
-			CHECK(std::abs(forces.normal.z) < 1e-9);
-			CHECK(state.hand_force.contact == forces.normal);
+			CHECK(forces.parts[CONTACT_FORCE].y < 0.0);
+			CHECK(std::abs(forces.parts[CONTACT_FORCE].x) < 1e-9);
+			CHECK(std::abs(forces.parts[CONTACT_FORCE].z) < 1e-9);
+			CHECK(state.hand_force.contact == forces.parts[CONTACT_FORCE]);
 			CHECK((engine.output().flags & TELEMETRY_FLAG_PADDLE_CONTACT) != 0u);
 		}
-		const size_t count = engine.drain_pong_events(events.data(), events.size());
+		const size_t count = pong(engine).drain_events(events.data(), events.size());
 		for (size_t e = 0; e < count; ++e) {
 			paddle_events += events[e].type == PongEventType::PADDLE && events[e].player == 0 ? 1 : 0;
 		}
@@ -91,7 +98,7 @@ TEST_CASE("pong engine: a ball landing on the paddle pushes the hand along the p
 	CHECK(paddle_events >= 1);
 	CHECK(strongest > 0.3); // Felt, not a rounding error.
 	CHECK_FALSE(engine.stats().watchdog_tripped);
-	const PongState state = engine.pong_state();
+	const PongState state = pong(engine).state();
 	CHECK(state.paddle_contacts >= 1);
 	CHECK(state.ball.position.y > 1.0); // Still on the paddle.
 	CHECK((engine.output().flags & TELEMETRY_FLAG_PONG_MODE) != 0u);
@@ -103,10 +110,10 @@ TEST_CASE("pong engine: before the game's first input no paddle plays and the ha
 	std::vector<PongEvent> events(PONG_EVENT_QUEUE_CAPACITY);
 	for (int k = 0; k < 500; ++k) {
 		REQUIRE(engine.step(0.001));
-		CHECK(engine.drain_pong_events(events.data(), events.size()) == 0);
+		CHECK(pong(engine).drain_events(events.data(), events.size()) == 0);
 	}
 	CHECK(engine.forces().continuous == Vec3{});
-	const PongState state = engine.pong_state();
+	const PongState state = pong(engine).state();
 	CHECK(state.paddle_contacts == 0);
 	CHECK_FALSE(state.players[0].in_contact);
 	CHECK(length(state.ball.velocity) < 1e-9); // At rest on the centre spot.
@@ -116,10 +123,10 @@ TEST_CASE("pong engine: before the game's first input no paddle plays and the ha
 TEST_CASE("pong engine: the input is the watchdog's heartbeat in pong mode") {
 	HapticsEngine engine;
 	start_pong(engine);
-	REQUIRE(engine.set_pong_input(flat_paddle_input()));
+	REQUIRE(pong(engine).set_input(flat_paddle_input()));
 	for (int k = 0; k < 300; ++k) {
 		if (k % 16 == 0) {
-			REQUIRE(engine.set_pong_input(flat_paddle_input()));
+			REQUIRE(pong(engine).set_input(flat_paddle_input()));
 		}
 		REQUIRE(engine.step(0.001));
 	}
@@ -134,14 +141,14 @@ TEST_CASE("pong engine: the input is the watchdog's heartbeat in pong mode") {
 TEST_CASE("pong engine: a serve sent before the switch to pong is not lost, and the state shows it") {
 	HapticsEngine engine;
 	REQUIRE(engine.open_simulated_device());
-	REQUIRE(engine.push_pong_command(set_ball({ 0.5, 1.5, -1.0 }, { 0.0, 0.0, 1.0 })));
+	REQUIRE(pong(engine).push_command(set_ball({ 0.5, 1.5, -1.0 }, { 0.0, 0.0, 1.0 })));
 	REQUIRE(engine.step(0.001)); // Movement mode: the command is taken, the ball waits.
-	PongState state = engine.pong_state();
+	PongState state = pong(engine).state();
 	CHECK(state.ball.position == Vec3{ 0.5, 1.5, -1.0 });
 	CHECK(state.territory == 1);
-	REQUIRE(reconfigure(engine, [](RenderConfig &r_config) { r_config.render_mode = RenderMode::PONG; }));
+	REQUIRE(reconfigure(engine, [](RenderConfig &r_config) { r_config.servo.render_mode = RenderMode::PONG; }));
 	REQUIRE(engine.step(0.001));
-	state = engine.pong_state();
+	state = pong(engine).state();
 	CHECK(state.ball.position.z > -1.0); // It flies on from where it was served.
 	CHECK(state.ball.position.z < -0.99);
 }
@@ -152,60 +159,60 @@ TEST_CASE("pong engine: bad input and commands are refused by name and change no
 	start_pong(engine);
 	start_pong(twin);
 	const PongInput good = flat_paddle_input();
-	REQUIRE(engine.set_pong_input(good));
-	REQUIRE(twin.set_pong_input(good));
-	REQUIRE(engine.push_pong_command(set_ball({ 0.0, 1.4, 2.0 })));
-	REQUIRE(twin.push_pong_command(set_ball({ 0.0, 1.4, 2.0 })));
+	REQUIRE(pong(engine).set_input(good));
+	REQUIRE(pong(twin).set_input(good));
+	REQUIRE(pong(engine).push_command(set_ball({ 0.0, 1.4, 2.0 })));
+	REQUIRE(pong(twin).push_command(set_ball({ 0.0, 1.4, 2.0 })));
 
 	PongInput bad = good;
 	bad.players[1].avatar.y = NaN;
-	Status status = engine.set_pong_input(bad);
+	Status status = pong(engine).set_input(bad);
 	CHECK(status.code() == StatusCode::INVALID_ARGUMENT);
 	CHECK(mentions(status, "pong_input.players[1].avatar"));
 	bad = good;
 	bad.players[0].normal = {};
-	status = engine.set_pong_input(bad);
+	status = pong(engine).set_input(bad);
 	CHECK(mentions(status, "pong_input.players[0].normal: zero length"));
 	bad = good;
 	bad.local_player = 4;
-	CHECK(mentions(engine.set_pong_input(bad), "pong_input.local_player must be -1 or 0..3"));
+	CHECK(mentions(pong(engine).set_input(bad), "pong_input.local_player must be -1 or 0..3"));
 	bad = good;
 	bad.players[0].paddle_velocity.z = std::numeric_limits<double>::infinity();
-	CHECK_FALSE(engine.set_pong_input(bad));
+	CHECK_FALSE(pong(engine).set_input(bad));
 
-	status = engine.push_pong_command(set_ball({ 0.0, NaN, 0.0 }));
+	status = pong(engine).push_command(set_ball({ 0.0, NaN, 0.0 }));
 	CHECK(status.code() == StatusCode::INVALID_ARGUMENT);
 	CHECK(mentions(status, "pong_command.position"));
-	CHECK(mentions(engine.push_pong_command(set_ball({ 0.0, 1.0, 9.0 })), "outside the court"));
-	CHECK(mentions(engine.push_pong_command(set_ball({ 0.0, 1.0, 0.0 }, { NaN, 0.0, 0.0 })), "pong_command.velocity"));
+	CHECK(mentions(pong(engine).push_command(set_ball({ 0.0, 1.0, 9.0 })), "outside the court"));
+	CHECK(mentions(pong(engine).push_command(set_ball({ 0.0, 1.0, 0.0 }, { NaN, 0.0, 0.0 })), "pong_command.velocity"));
 	PongCommand effect;
 	effect.type = PongCommandType::EFFECT;
 	effect.kind = PongEffectKind::RECOIL;
-	CHECK(mentions(engine.push_pong_command(effect), "pong_command.direction: zero length"));
+	CHECK(mentions(pong(engine).push_command(effect), "pong_command.direction: zero length"));
 	effect.direction = { 1.0, 0.0, 0.0 };
 	effect.magnitude_n = NaN;
 	effect.use_default_magnitude = false;
-	CHECK(mentions(engine.push_pong_command(effect), "pong_command.magnitude_n: not finite"));
+	CHECK(mentions(pong(engine).push_command(effect), "pong_command.magnitude_n: not finite"));
 	effect.use_default_magnitude = true;
 	effect.player = 2; // A seat of a 4-player court, not of this 2-player one.
-	CHECK(mentions(engine.push_pong_command(effect), "pong_command.player must be 0..1"));
+	CHECK(mentions(pong(engine).push_command(effect), "pong_command.player must be 0..1"));
 	effect.player = 0;
 	effect.kind = PongEffectKind::REMOTE;
 	effect.owner = 0;
-	CHECK(mentions(engine.push_pong_command(effect), "pong_command.owner must be another player"));
+	CHECK(mentions(pong(engine).push_command(effect), "pong_command.owner must be another player"));
 	effect.kind = static_cast<PongEffectKind>(17);
-	CHECK(mentions(engine.push_pong_command(effect), "pong_command.kind: unknown kind 17"));
+	CHECK(mentions(pong(engine).push_command(effect), "pong_command.kind: unknown kind 17"));
 
 	for (int k = 0; k < 1500; ++k) {
 		if (k % 16 == 0) {
-			REQUIRE(engine.set_pong_input(good));
-			REQUIRE(twin.set_pong_input(good));
+			REQUIRE(pong(engine).set_input(good));
+			REQUIRE(pong(twin).set_input(good));
 		}
 		REQUIRE(engine.step(0.001));
 		REQUIRE(twin.step(0.001));
 	}
-	CHECK(same_state(engine.pong_state(), twin.pong_state()));
-	CHECK(engine.pong_state().paddle_contacts >= 1);
+	CHECK(same_state(pong(engine).state(), pong(twin).state()));
+	CHECK(pong(engine).state().paddle_contacts >= 1);
 }
 
 TEST_CASE("pong engine: forces stay finite and within the limit under anything valid") {
@@ -234,12 +241,12 @@ TEST_CASE("pong engine: forces stay finite and within the limit under anything v
 				player.spin = uniform(0.0, 1.0) < 0.5;
 				player.gun = uniform(0.0, 1.0) < 0.1;
 			}
-			REQUIRE(engine.set_pong_input(input));
+			REQUIRE(pong(engine).set_input(input));
 			REQUIRE(engine.set_hand_target(random_vector(0.12)));
 		}
 		if (k % 50 == 0) {
 			const Vec3 inside{ uniform(-1.4, 1.4), uniform(0.1, 2.4), uniform(-2.9, 2.9) };
-			REQUIRE(engine.push_pong_command(set_ball(inside, random_vector(50.0), random_vector(500.0))));
+			REQUIRE(pong(engine).push_command(set_ball(inside, random_vector(50.0), random_vector(500.0))));
 		}
 		if (k % 70 == 0) {
 			PongCommand effect;
@@ -248,14 +255,14 @@ TEST_CASE("pong engine: forces stay finite and within the limit under anything v
 			effect.owner = 1 - effect.player;
 			effect.kind = static_cast<PongEffectKind>(static_cast<int>(uniform(0.0, 6.0)));
 			effect.direction = random_vector(1.0) + Vec3{ 1e-3, 0.0, 0.0 };
-			REQUIRE(engine.push_pong_command(effect));
+			REQUIRE(pong(engine).push_command(effect));
 		}
 		REQUIRE(engine.step(0.001));
 		const ForceComponents forces = engine.forces();
 		REQUIRE(is_finite(forces.continuous));
 		REQUIRE(is_finite(forces.total));
 		REQUIRE(length(forces.total) <= limit + 1e-12);
-		const PongState state = engine.pong_state();
+		const PongState state = pong(engine).state();
 		REQUIRE(is_finite(state.ball.position));
 		REQUIRE(length(state.ball.velocity) <= config.max_ball_speed_m_per_s + 1e-9);
 	}
@@ -276,22 +283,22 @@ TEST_CASE("pong engine: events past the queue's capacity are dropped and counted
 	input.players[0].active = false;
 	input.beginner = true;
 	const double height = PongConfig{}.beginner_height_m;
-	REQUIRE(engine.push_pong_command(set_ball({ 0.0, height, 1.0 }, { 9.0, 0.0, 0.0 })));
+	REQUIRE(pong(engine).push_command(set_ball({ 0.0, height, 1.0 }, { 9.0, 0.0, 0.0 })));
 	for (int k = 0; k < 60000; ++k) {
 		if (k % 16 == 0) {
-			REQUIRE(engine.set_pong_input(input));
+			REQUIRE(pong(engine).set_input(input));
 		}
 		REQUIRE(engine.step(0.001));
-		if (engine.pong_state().events_dropped > 0) {
+		if (pong(engine).state().events_dropped > 0) {
 			break;
 		}
 	}
-	const PongState state = engine.pong_state();
+	const PongState state = pong(engine).state();
 	CHECK(state.events_dropped > 0);
 	std::vector<PongEvent> events(2 * PONG_EVENT_QUEUE_CAPACITY);
-	CHECK(engine.drain_pong_events(events.data(), events.size()) == PONG_EVENT_QUEUE_CAPACITY);
+	CHECK(pong(engine).drain_events(events.data(), events.size()) == PONG_EVENT_QUEUE_CAPACITY);
 	CHECK(events[0].type == PongEventType::WALL);
-	CHECK(engine.drain_pong_events(nullptr, 4) == 0);
+	CHECK(pong(engine).drain_events(nullptr, 4) == 0);
 }
 
 TEST_CASE("pong engine: the pong config section validates its joint limits by name") {

@@ -4,8 +4,8 @@
 
 #include "pong/pong_test_support.h"
 
-#include "pong/pong_sim.h"
-#include "pong/pong_validation.h"
+#include "renderers/pong/pong_sim.h"
+#include "renderers/pong/pong_validation.h"
 
 #include <doctest/doctest.h>
 

@@ -1,10 +1,10 @@
-// The simulation as a whole (pong/pong_sim.h): a ball settling on a held paddle, the events,
+// The simulation as a whole (renderers/pong/pong_sim.h): a ball settling on a held paddle, the events,
 // the paddles' poses from the device on either side, and the extrapolation of game-driven
 // paddles and walking avatars.
 
 #include "pong/pong_test_support.h"
 
-#include "pong/pong_sim.h"
+#include "renderers/pong/pong_sim.h"
 
 #include <doctest/doctest.h>
 

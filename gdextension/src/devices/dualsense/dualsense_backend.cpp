@@ -78,18 +78,4 @@ Status open_device(const DeviceInfo &p_info, std::unique_ptr<HapticDevice> &r_de
 	return Status::success();
 }
 
-std::unique_ptr<DualSenseDevice> make_scripted_device(std::shared_ptr<ScriptedDualSense> p_pad, const DualSenseConfig &p_config) {
-	const DualSenseModel model = p_pad->options().edge ? DualSenseModel::EDGE : DualSenseModel::DUALSENSE;
-	return std::make_unique<DualSenseDevice>(make_scripted_transport(std::move(p_pad)), model, p_config);
-}
-
-ScriptedDualSenseSetup make_scripted_device(Bus p_bus, const ScriptedDualSenseOptions &p_options, const DualSenseConfig &p_config) {
-	ScriptedDualSenseOptions options = p_options;
-	options.bus = p_bus;
-	ScriptedDualSenseSetup setup;
-	setup.pad = std::make_shared<ScriptedDualSense>(options);
-	setup.device = make_scripted_device(setup.pad, p_config);
-	return setup;
-}
-
 } // namespace haptics::dualsense

@@ -1,7 +1,8 @@
 #pragma once
 
-// Entry points of the DualSense backend (FACTS §5): which enumerated devices it drives,
-// opening one over hidapi, and a device over a scripted pad (tests, demos, CI).
+// Entry points of the DualSense backend (FACTS §5): which enumerated devices it drives, and
+// opening one over hidapi. The same device over a software model of the pad is a development
+// tool (dev_tools/dualsense/scripted_dualsense_device.h).
 //
 //   probe(info)        handled: backend "hidapi", VID 054C, PID 0CE6 (DualSense) or 0DF2
 //                      (Edge). Openable unless the hidraw node is missing or we may not read
@@ -14,11 +15,10 @@
 // writes output reports through the same pad (LEDs at start-up, its own sequence on BT). Ours
 // go through hidraw beside it; the pad applies whichever came last, field by field.
 
-#include "core/status.h"
-#include "devices/device.h"
+#include "core/base/status.h"
+#include "core/device/device.h"
 #include "devices/device_info.h"
 #include "devices/dualsense/dualsense_device.h"
-#include "devices/dualsense/scripted_dualsense.h"
 
 #include <cstdint>
 #include <memory>
@@ -42,18 +42,5 @@ DeviceAvailability probe(const DeviceInfo &p_info);
 // NO_DEVICE when the node is gone) when it is not openable; else the open device or open()'s
 // Status. r_device is only set on success.
 Status open_device(const DeviceInfo &p_info, std::unique_ptr<HapticDevice> &r_device, const DualSenseConfig &p_config = {});
-
-// A DualSense device over p_pad (not opened; the engine opens it). The pad's options give
-// the link (USB or Bluetooth) and model (DualSense or Edge).
-std::unique_ptr<DualSenseDevice> make_scripted_device(std::shared_ptr<ScriptedDualSense> p_pad,
-		const DualSenseConfig &p_config = {});
-
-// Convenience: a new scripted pad on p_bus and a device over it.
-struct ScriptedDualSenseSetup {
-	std::shared_ptr<ScriptedDualSense> pad;
-	std::unique_ptr<DualSenseDevice> device;
-};
-ScriptedDualSenseSetup make_scripted_device(Bus p_bus, const ScriptedDualSenseOptions &p_options = {},
-		const DualSenseConfig &p_config = {});
 
 } // namespace haptics::dualsense

@@ -23,7 +23,7 @@
 //  - max_stiffness_n_per_m = continuous full-scale / radius (40 N/m): a position-control
 //    renderer at that stiffness reaches full trigger strength at full deflection.
 
-#include "devices/device.h"
+#include "core/device/device.h"
 #include "devices/device_exchange.h"
 #include "devices/device_io_thread.h"
 #include "devices/dualsense/dualsense_io.h"

@@ -46,9 +46,9 @@
 // (the pad's y grows downward, ours up), clamped to [-1, 1], times the nominal radius, so
 // full deflection is the workspace edge (|input| = 1 in the force model).
 
-#include "core/status.h"
-#include "core/vec3.h"
-#include "devices/device.h"
+#include "core/base/status.h"
+#include "core/base/vec3.h"
+#include "core/device/device.h"
 #include "devices/dualsense/dualsense_input.h"
 #include "devices/dualsense/dualsense_report.h"
 

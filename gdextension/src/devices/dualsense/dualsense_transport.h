@@ -1,15 +1,15 @@
 #pragma once
 
 // The DualSense backend's own seam to the HID layer: three calls, so the protocol and the
-// device are tested against a scripted pad (scripted_dualsense.h) and run against hidapi
-// (dualsense_hidapi_transport.h) unchanged. Deliberately small and local to this backend
+// device are tested against a scripted pad (dev_tools/dualsense/scripted_dualsense.h) and
+// run against hidapi (dualsense_hidapi_transport.h) unchanged. Deliberately small and local to this backend
 // (the PID backend has its own generic HID transport; the two may be unified later).
 //
 // Buffers are hidapi's: byte 0 is the report ID. The I/O calls are made by ONE thread at a
 // time (the device's I/O thread while it runs, the game thread in open/close) and must not
 // allocate on success; error_text() is only meaningful right after a failure.
 
-#include "core/status.h"
+#include "core/base/status.h"
 #include "devices/dualsense/dualsense_bus.h"
 
 #include <cstddef>

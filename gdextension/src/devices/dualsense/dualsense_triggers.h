@@ -15,7 +15,7 @@
 // Builders validate their parameters and return a Status naming the offending one; the
 // block is untouched on error.
 
-#include "core/status.h"
+#include "core/base/status.h"
 
 #include <cstddef>
 #include <cstdint>

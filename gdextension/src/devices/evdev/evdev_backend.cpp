@@ -62,12 +62,4 @@ Status open_device(const DeviceInfo &p_info, std::unique_ptr<HapticDevice> &r_de
 	return open_device(p_info, linux_evdev_syscalls(), r_device);
 }
 
-std::unique_ptr<HapticDevice> make_scripted_device(const std::shared_ptr<ScriptedEvdevKernel> &p_kernel,
-		EvdevDeviceConfig p_config) {
-	if (p_config.path.empty() && p_kernel) {
-		p_config.path = p_kernel->script().path;
-	}
-	return std::make_unique<EvdevDevice>(p_kernel, std::move(p_config));
-}
-
 } // namespace haptics::evdev

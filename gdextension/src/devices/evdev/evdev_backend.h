@@ -1,14 +1,14 @@
 #pragma once
 
 // The evdev backend's entry points, for enumeration, the binding and Settings: whether an
-// enumerated device is ours and openable (probe), opening it (open_device), and the same
-// device over the scripted kernel for tests, the headless Godot test and the benchmark.
+// enumerated device is ours and openable (probe) and opening it (open_device). The same
+// device over a software model of the kernel is a development tool
+// (dev_tools/evdev/scripted_evdev_device.h).
 
-#include "core/status.h"
-#include "devices/device.h"
+#include "core/base/status.h"
+#include "core/device/device.h"
 #include "devices/device_info.h"
 #include "devices/evdev/evdev_device.h"
-#include "devices/evdev/scripted_evdev_kernel.h"
 
 #include <memory>
 #include <string_view>
@@ -29,11 +29,5 @@ EvdevDeviceConfig device_config_for(const DeviceInfo &p_info);
 Status open_device(const DeviceInfo &p_info, std::unique_ptr<HapticDevice> &r_device);
 Status open_device(const DeviceInfo &p_info, const std::shared_ptr<EvdevSyscalls> &p_sys,
 		std::unique_ptr<HapticDevice> &r_device);
-
-// An EvdevDevice over p_kernel, NOT yet opened (HapticsEngine::open_device opens it). An
-// empty p_config.path means the kernel script's path. The test keeps p_kernel to script
-// the stick, unplug it and read what was sent.
-std::unique_ptr<HapticDevice> make_scripted_device(const std::shared_ptr<ScriptedEvdevKernel> &p_kernel,
-		EvdevDeviceConfig p_config = {});
 
 } // namespace haptics::evdev

@@ -7,7 +7,7 @@
 // (FF_RUMBLE) and bit 81. The text is parsed into the EVIOCGBIT byte form so one
 // test_bit() serves both.
 
-#include "core/status.h"
+#include "core/base/status.h"
 
 #include <cstddef>
 #include <cstdint>

@@ -23,8 +23,8 @@
 // DISCONNECTED with a reason; any other errno FAILED with strerror. close() and errors
 // leave the device at zero force, stopped, with the effect erased where it is reachable.
 
-#include "core/status.h"
-#include "devices/device.h"
+#include "core/base/status.h"
+#include "core/device/device.h"
 #include "devices/device_exchange.h"
 #include "devices/device_io_thread.h"
 #include "devices/evdev/evdev_effect.h"

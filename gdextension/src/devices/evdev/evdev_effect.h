@@ -21,7 +21,7 @@
 // update() runs on the device's I/O thread: no allocation, no lock, no formatting; errors
 // come back as -errno for the caller to report.
 
-#include "core/status.h"
+#include "core/base/status.h"
 #include "devices/evdev/evdev_ff.h"
 #include "devices/evdev/evdev_syscalls.h"
 

@@ -21,7 +21,7 @@
 // A wheel has one axis: it renders the x component with the fixed steering direction 0x4000
 // (SDL's SDL_HAPTIC_STEERING_AXIS, K-new's wheel direction) and a signed level.
 
-#include "core/vec3.h"
+#include "core/base/vec3.h"
 #include "devices/evdev/evdev_abi.h"
 
 #include <array>

@@ -22,7 +22,7 @@
 // kernel; anything else (a short read from a broken transport, unknown types and codes) is
 // counted and skipped, never read past.
 
-#include "core/status.h"
+#include "core/base/status.h"
 #include "devices/evdev/evdev_abi.h"
 #include "devices/evdev/evdev_syscalls.h"
 

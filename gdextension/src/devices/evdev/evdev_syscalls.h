@@ -4,7 +4,8 @@
 // /dev/input/eventN, with the kernel's error convention (a negative errno instead of -1 and
 // errno, so the seam is thread-safe and a scripted kernel can return errors without
 // touching the global). linux_evdev_syscalls() is the real one; ScriptedEvdevKernel
-// (scripted_evdev_kernel.h) answers like the kernel does, for tests and the benchmark.
+// (dev_tools/evdev/scripted_evdev_kernel.h) answers like the kernel does, for tests and the
+// benchmark.
 
 #include <cstddef>
 #include <cstdint>

@@ -17,7 +17,7 @@
 // (FACTS §6 lists physical directions as a per-device check): if the grip pushed right
 // reads -x, negate x AND the force's x here, nowhere else.
 
-#include "core/vec3.h"
+#include "core/base/vec3.h"
 #include "devices/falcon/falcon_kinematics.h"
 
 namespace haptics::falcon {

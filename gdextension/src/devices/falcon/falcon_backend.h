@@ -5,8 +5,9 @@
 //   probe(info)          which enumerated devices this backend drives (libusb 0403:cb48) and
 //                        whether one can be opened now, with the reason the player can act on
 //                        (the udev rule; the firmware file);
-//   open_device(info)    an opened FalconDevice on the real bus (libusb_transport.h);
-//   make_scripted_device a FalconDevice on a ScriptedFalcon (tests, benchmark, headless game).
+//   open_device(info)    an opened FalconDevice on the real bus (libusb_transport.h).
+// The same device over a software model of the Falcon is a development tool
+// (dev_tools/falcon/scripted_falcon_device.h).
 //
 // The firmware file is the user's (Novint's license forbids shipping it, FACTS §3.5): a path
 // passed in, else the HAPTICS_FALCON_FIRMWARE environment variable. probe() cannot know
@@ -14,11 +15,10 @@
 // asks for the file whenever none is set; open_device() only needs it when the Falcon has
 // no firmware running.
 
-#include "core/status.h"
-#include "devices/device.h"
+#include "core/base/status.h"
+#include "core/device/device.h"
 #include "devices/device_info.h"
 #include "devices/falcon/falcon_device.h"
-#include "devices/falcon/scripted_falcon.h"
 
 #include <memory>
 #include <string>
@@ -41,15 +41,5 @@ DeviceAvailability probe(const DeviceInfo &p_info, const std::string &p_firmware
 // r_device is set only on success.
 Status open_device(const DeviceInfo &p_info, std::unique_ptr<HapticDevice> &r_device);
 Status open_device(const DeviceInfo &p_info, const std::string &p_firmware_path, std::unique_ptr<HapticDevice> &r_device);
-
-// A synthetic image for scripted uploads: deterministic pseudo-random bytes, NOT Novint's
-// firmware (which the model never needs: it only echoes and then acts as the firmware).
-std::vector<uint8_t> make_test_firmware_image(size_t p_size = 7914, uint32_t p_seed = 1);
-// The scripted device's defaults: the synthetic image above, no file.
-FalconDeviceConfig scripted_device_config();
-// Not opened yet (HapticsEngine::open_device opens it). p_model must be held by a shared_ptr
-// (ScriptedFalcon hands out transports that share it).
-std::unique_ptr<FalconDevice> make_scripted_device(const std::shared_ptr<ScriptedFalcon> &p_model,
-		const FalconDeviceConfig &p_config = scripted_device_config());
 
 } // namespace haptics::falcon

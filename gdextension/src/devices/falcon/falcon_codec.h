@@ -16,7 +16,7 @@
 // turns that stream back into frames (strip, reassemble, keep the tail, resynchronise on
 // garbage). Nothing here allocates: it runs on the device's I/O thread.
 
-#include "core/status.h"
+#include "core/base/status.h"
 
 #include <cstddef>
 #include <cstdint>

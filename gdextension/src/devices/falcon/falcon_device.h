@@ -33,7 +33,7 @@
 // conservative choice), workspace radius 0.04 m (CHAI3D; the model reaches 0.05 m around the
 // centre, the advertised workspace is a 4-inch cube).
 
-#include "devices/device.h"
+#include "core/device/device.h"
 #include "devices/device_exchange.h"
 #include "devices/device_io_thread.h"
 #include "devices/exchanged_device.h"

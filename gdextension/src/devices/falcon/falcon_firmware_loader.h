@@ -20,7 +20,7 @@
 //
 // The firmware image is the USER's file: Novint's license does not let us ship it (§3.5).
 
-#include "core/status.h"
+#include "core/base/status.h"
 #include "devices/usb/usb_transport.h"
 
 #include <cstddef>

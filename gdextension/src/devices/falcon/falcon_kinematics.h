@@ -29,8 +29,8 @@
 // Every function returns an error, never NaN, for positions the model cannot reach or
 // singular configurations; nothing allocates.
 
-#include "core/status.h"
-#include "core/vec3.h"
+#include "core/base/status.h"
+#include "core/base/vec3.h"
 
 #include <cstdint>
 

@@ -10,8 +10,8 @@
 // sentence. The report calls may run on a device I/O thread: implementations must not
 // allocate on success paths.
 
-#include "core/status.h"
-#include "devices/device.h"
+#include "core/base/status.h"
+#include "core/device/device.h"
 
 #include <cstddef>
 #include <cstdint>

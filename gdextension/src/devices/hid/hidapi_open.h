@@ -4,7 +4,7 @@
 // the report calls: opening a hidraw node without ever handing hidapi anything else, a
 // reason for each failure the player can act on, and telling an unplug from another error.
 
-#include "core/status.h"
+#include "core/base/status.h"
 
 #include <cstddef>
 #include <string>

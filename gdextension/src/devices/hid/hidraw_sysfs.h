@@ -7,7 +7,7 @@
 // hidapi 0.13's device path on the hidraw backend is /dev/hidrawN; the HID device behind it
 // is /sys/class/hidraw/hidrawN/device. p_sysfs_root exists for tests (a fake tree).
 
-#include "core/status.h"
+#include "core/base/status.h"
 
 #include <cstdint>
 #include <string>

@@ -7,7 +7,7 @@
 // it needs, so it does not depend on the descriptor's lifetime, and decoding neither
 // allocates nor trusts the report: a short, foreign or garbled report is rejected.
 
-#include "core/status.h"
+#include "core/base/status.h"
 #include "devices/hid/report_descriptor.h"
 
 #include <cstdint>

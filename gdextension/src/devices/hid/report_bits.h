@@ -6,7 +6,7 @@
 // is an error, never an out-of-bounds access. The bool forms are for the I/O thread (no
 // Status to build); the Status forms name what failed.
 
-#include "core/status.h"
+#include "core/base/status.h"
 #include "devices/hid/report_descriptor.h"
 
 #include <cstdint>

@@ -21,7 +21,7 @@
 // ignores an END_COLLECTION that closes nothing and collections left open at the end
 // (FACTS §1.3 quirk 2), recording them in quirks.
 
-#include "core/status.h"
+#include "core/base/status.h"
 
 #include <cstddef>
 #include <cstdint>

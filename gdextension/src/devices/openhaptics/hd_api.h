@@ -13,7 +13,7 @@
 //  - Linux headers mark API functions and callbacks stdcall; GCC ignores that on x86-64 but
 //    not on i386, where both sides must keep it (HAPTICS_HD_CALL).
 
-#include "core/status.h"
+#include "core/base/status.h"
 
 #include <cstddef>
 #include <cstdint>

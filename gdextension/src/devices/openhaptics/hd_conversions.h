@@ -15,9 +15,9 @@
 // are rotations), which puts +z toward the user. Only a real Touch can confirm the signs by
 // feel: push the stylus right/up/toward you and watch the position's x/y/z grow.
 
-#include "core/status.h"
-#include "core/vec3.h"
-#include "devices/device.h"
+#include "core/base/status.h"
+#include "core/base/vec3.h"
+#include "core/device/device.h"
 
 namespace haptics::openhaptics {
 

@@ -54,7 +54,7 @@
 // it); that hdScheduleSynchronous returns while the device is gone; and the scheduler's
 // real timing, priority and per-tick cost.
 
-#include "core/status.h"
+#include "core/base/status.h"
 #include "devices/exchanged_device.h"
 #include "devices/openhaptics/hd_api.h"
 #include "devices/openhaptics/hd_conversions.h"

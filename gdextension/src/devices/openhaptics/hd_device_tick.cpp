@@ -3,7 +3,7 @@
 
 #include "devices/openhaptics/hd_device.h"
 
-#include "core/realtime.h"
+#include "core/base/realtime.h"
 
 #include <cstdio>
 

@@ -5,7 +5,7 @@
 // 3.0 installers create: "libHD.so", "libHD.so.3.4", "libHD.so.3.0" (found through the
 // dynamic linker's usual path: ld.so.cache, LD_LIBRARY_PATH).
 
-#include "core/status.h"
+#include "core/base/status.h"
 #include "devices/openhaptics/hd_api.h"
 
 #include <string>

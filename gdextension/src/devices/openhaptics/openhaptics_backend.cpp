@@ -52,7 +52,7 @@ Status open_device(const DeviceInfo &p_info, std::unique_ptr<HapticDevice> &r_de
 	return Status::success();
 }
 
-std::unique_ptr<HdDevice> make_scripted_device(const char *p_library_path, HdDeviceOptions p_options) {
+std::unique_ptr<HdDevice> make_device_on_runtime(const char *p_library_path, HdDeviceOptions p_options) {
 	p_options.library_path = p_library_path != nullptr ? p_library_path : "";
 	return std::make_unique<HdDevice>(std::move(p_options));
 }

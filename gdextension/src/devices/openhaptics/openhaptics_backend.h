@@ -6,8 +6,8 @@
 // runtime loads: "openhaptics:default" (HD_DEFAULT_DEVICE, the one set up in the Touch's
 // driver tool).
 
-#include "core/status.h"
-#include "devices/device.h"
+#include "core/base/status.h"
+#include "core/device/device.h"
 #include "devices/device_info.h"
 #include "devices/openhaptics/hd_device.h"
 #include "devices/openhaptics/hd_runtime.h"
@@ -40,6 +40,6 @@ DeviceAvailability probe(const DeviceInfo &p_info);
 Status open_device(const DeviceInfo &p_info, std::unique_ptr<HapticDevice> &r_device);
 
 // The same device class over a runtime given by path (the tests' fake libHD), not opened.
-std::unique_ptr<HdDevice> make_scripted_device(const char *p_library_path, HdDeviceOptions p_options = {});
+std::unique_ptr<HdDevice> make_device_on_runtime(const char *p_library_path, HdDeviceOptions p_options = {});
 
 } // namespace haptics::openhaptics

@@ -8,11 +8,10 @@
 // layout although the top level is a joystick: AJ-based sticks nest every PID collection
 // inside their Joystick application, so hidapi reports them as usage page 0x01.
 
-#include "core/status.h"
-#include "devices/device.h"
+#include "core/base/status.h"
+#include "core/device/device.h"
 #include "devices/device_info.h"
 #include "devices/pid/pid_device.h"
-#include "devices/pid/scripted_pid_joystick.h"
 
 #include <memory>
 #include <string>
@@ -29,10 +28,5 @@ DeviceAvailability probe_with_sysfs(const DeviceInfo &p_info, const std::string 
 
 // A PidDevice over hidapi for p_info.path; the engine opens it (HapticDevice::open).
 Status open_device(const DeviceInfo &p_info, std::unique_ptr<HapticDevice> &r_device, const PidDeviceConfig &p_config = {});
-
-// The same device class over a scripted joystick (AJ firmware unless p_joystick says
-// otherwise); keep p_joystick to script and inspect it.
-std::unique_ptr<HapticDevice> make_scripted_device(std::shared_ptr<ScriptedPidJoystick> p_joystick = {},
-		const PidDeviceConfig &p_config = {});
 
 } // namespace haptics::pid

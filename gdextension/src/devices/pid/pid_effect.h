@@ -17,8 +17,8 @@
 // upload/initialize run at open (feature transfers are slow control transfers); update,
 // play and stop run on the device I/O thread and neither allocate nor build a Status.
 
-#include "core/status.h"
-#include "devices/device.h"
+#include "core/base/status.h"
+#include "core/device/device.h"
 #include "devices/hid/hid_transport.h"
 #include "devices/pid/pid_layout.h"
 #include "devices/pid/pid_protocol.h"

@@ -23,7 +23,7 @@
 //  - a force that quantises to level 0 keeps the previous direction.
 // A wheel (one axis) renders only the x component: direction fixed at 90° (+X), signed level.
 
-#include "core/vec3.h"
+#include "core/base/vec3.h"
 
 #include <cstdint>
 

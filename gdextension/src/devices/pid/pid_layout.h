@@ -13,7 +13,7 @@
 // missing (K-new MISSING_DELAY), Device Control as a bitmask (Variable) rather than an array,
 // a device-control field without logical minimum 1 (K-new PERMISSIVE_CONTROL).
 
-#include "core/status.h"
+#include "core/base/status.h"
 #include "devices/hid/report_descriptor.h"
 
 #include <cstdint>

@@ -14,7 +14,7 @@
 // A private libusb context per transport: the game, or another library, may use libusb in
 // the same process.
 
-#include "core/status.h"
+#include "core/base/status.h"
 #include "devices/usb/usb_transport.h"
 
 #include <memory>

@@ -14,7 +14,7 @@
 // Threading: one thread at a time per transport (open on the game thread, then the device's
 // I/O thread only).
 
-#include "devices/device.h"
+#include "core/device/device.h"
 
 #include <cstdint>
 

@@ -1,0 +1,60 @@
+#pragma once
+
+// haptics_rt_bench's measurements: one measurement's distributions and figures
+// (ToolResult), a condition's (ConditionResult), and how the rounds of one measurement
+// combine into the figures printed (medians, the largest max).
+
+#include "core/servo/servo_stats.h"
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace haptics::bench {
+
+inline constexpr double US = 1e6;
+
+struct Distribution {
+	bool measured = false;
+	double p50 = 0.0, p99 = 0.0, p999 = 0.0, max = 0.0; // seconds
+	uint64_t count = 0;
+};
+
+struct ToolResult {
+	bool measured = false;
+	double steal_percent = 0.0; // CPU time the hypervisor took while it ran.
+	std::string why_not; // When not measured.
+	Distribution latency;
+	Distribution jitter;
+	double rate_error_percent = 0.0;
+	double worst_rate_error_percent = 0.0; // Over the rounds.
+	double cpu_fraction = 0.0;
+	int rounds = 1;
+	ServoStats stats; // Servo only.
+};
+
+struct ConditionResult {
+	std::string name;
+	bool measured = false;
+	std::string why_not;
+	std::string detail; // How the load was made.
+	ToolResult servo;
+	ToolResult cyclictest;
+	int32_t cyclictest_priority = 0;
+	std::vector<std::pair<std::string, ToolResult>> techniques;
+};
+
+// From the servo's own statistics.
+Distribution from_stats_latency(const ServoStats &p_stats);
+Distribution from_stats_jitter(const ServoStats &p_stats);
+double rate_error_percent(const ServoStats &p_stats);
+
+double median(std::vector<double> p_values);
+Distribution combine_distributions(const std::vector<const Distribution *> &p_rounds);
+// The rounds of one measurement: medians of the percentiles, rate error and CPU share; the
+// largest max; the last round's stats (what was granted) with the counters summed. Rounds
+// that could not be measured are left out; when none could, the first one's reason is kept.
+ToolResult combine(const std::vector<ToolResult> &p_rounds);
+
+} // namespace haptics::bench

@@ -1,0 +1,33 @@
+#pragma once
+
+// What the engine and the game know of a renderer without running it. Each renderer
+// describes itself once (its static info()); the engine's renderer table
+// (engine/renderer_table.h) names it and gives its render mode.
+
+#include "core/config/config_field.h"
+#include "core/render/force_components.h"
+
+#include <cstdint>
+#include <span>
+
+namespace haptics {
+
+// Telemetry flag bits below this one are the servo's own (core/servo/telemetry.h); a
+// renderer raises bits from here up, each renderer its own (a doctest checks they differ).
+inline constexpr uint32_t FIRST_RENDERER_FLAG_BIT = 7;
+
+struct TelemetryFlagName {
+	const char *name; // The GDScript constant, e.g. "TELEMETRY_FLAG_PONG_MODE".
+	uint32_t flag;
+};
+
+struct RendererInfo {
+	// What get_forces() calls ForceComponents::parts while this renderer is active, in order;
+	// at most MAX_FORCE_PARTS.
+	std::span<const char *const> force_names;
+	// Its rows of the configuration table, on its Config struct.
+	std::span<const ConfigField> config_fields;
+	std::span<const TelemetryFlagName> telemetry_flags;
+};
+
+} // namespace haptics

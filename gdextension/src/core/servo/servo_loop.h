@@ -1,0 +1,104 @@
+#pragma once
+
+// The servo thread: ticks a ServoPipeline at a fixed rate on absolute deadlines.
+//
+// Each iteration sleeps until the next deadline (clock_nanosleep TIMER_ABSTIME on
+// CLOCK_MONOTONIC), ticks, records timing, and moves the deadline on by exactly one period,
+// so the rate does not drift however late a wake-up is. After a stall of more than a whole
+// period the missed deadlines are skipped (and counted) rather than replayed in a burst:
+// a burst of ticks renders nothing a hand could feel and delays the next real one.
+//
+// At start the thread asks for what ServoOptions::realtime names (SCHED_FIFO priority, locked
+// memory, the CPU wake-up latency held at 0, pinning, a prefaulted stack; realtime.h), each
+// falling back quietly when refused; stats say what was granted. The process-wide holds are
+// released when the thread ends. With spin_ns > 0 it sleeps until that long before each
+// deadline and busy-waits the rest, absorbing the wake-up's lateness at a CPU cost
+// (ServoStats::thread_cpu_fraction).
+//
+// Stopping: stop() raises a flag, the thread finishes its tick, writes ZERO force to the
+// device itself, and only then exits; stop() joins it. So the last thing the device receives
+// from a stopping servo is always zero, before anyone can close it (the classic crash on
+// exit is a device closed under a running I/O thread). A device I/O failure (unplugged)
+// ends the thread the same way and leaves state() == FAULTED until stop() or start().
+
+#include "core/base/realtime.h"
+#include "core/base/status.h"
+#include "core/device/device.h"
+#include "core/servo/servo_pipeline.h"
+
+#include <atomic>
+#include <cstdint>
+#include <thread>
+
+namespace haptics {
+
+enum class ServoState : int32_t {
+	STOPPED = 0,
+	RUNNING = 1,
+	FAULTED = 2, // The thread ended itself on a device error; join with stop().
+};
+
+enum class LoopScheduling : int32_t {
+	DEADLINE = 0, // Absolute deadlines: the product.
+	NAIVE_SLEEP = 1, // sleep_for(period) after each tick: the benchmark's baseline only.
+};
+
+struct ServoOptions {
+	double rate_hz = 1000.0; // [250, 4000]
+	LoopScheduling scheduling = LoopScheduling::DEADLINE;
+	RealtimeRequest realtime; // What the thread asks of the system (defaults: realtime.h).
+	// Busy-wait before each deadline (DEADLINE scheduling only); 0 = sleep to the deadline.
+	// [0, half a period]. 50 us chosen by measurement (README, "Servo timing"): p99 wake
+	// latency 95 / 52 / 50 us idle / under CPU / under rendering load against 86-119 / 96-107 /
+	// 80-83 without, for about 1 % of a core (100 us: p99 13-35 us for 5 % of a core).
+	int64_t spin_ns = DEFAULT_SPIN_NS;
+
+	static constexpr int64_t DEFAULT_SPIN_NS = 50'000;
+};
+
+// The longest spin_ns a servo at p_rate_hz (a valid rate) accepts: half its period, so a tick
+// always has the other half to run in.
+int64_t max_spin_ns(double p_rate_hz);
+
+class ServoLoop {
+public:
+	ServoLoop(ServoPipeline &r_pipeline, ServoChannels &r_channels);
+	~ServoLoop(); // Stops (zero force, join).
+
+	ServoLoop(const ServoLoop &) = delete;
+	ServoLoop &operator=(const ServoLoop &) = delete;
+
+	// Game thread. Begins a pipeline session on p_device and spawns the thread. Options must
+	// be valid; the loop must not be running (a FAULTED loop is joined first).
+	Status start(HapticDevice *p_device, const ServoOptions &p_options);
+	// Game thread. Idempotent; returns once the thread has written zero and exited. A
+	// FAULTED state survives stop() so the game can still ask why rendering ended.
+	void stop();
+	// Game thread: stop(), then forget a fault (a new device or a manual session).
+	void clear_fault();
+
+	ServoState state() const { return state_.load(std::memory_order_acquire); }
+	// The I/O status that ended the last run (OK unless FAULTED).
+	DeviceIo fault() const { return fault_.load(std::memory_order_acquire); }
+	RealtimeResult scheduler() const;
+	// What the thread was granted (all false / -1 / 0 until it has started).
+	RealtimeGrants grants() const;
+	const ServoOptions &options() const { return options_; }
+
+private:
+	void run();
+
+	ServoPipeline &pipeline_;
+	ServoChannels &channels_;
+	HapticDevice *device_ = nullptr;
+	ServoOptions options_;
+	std::thread thread_;
+	std::atomic<bool> stop_requested_{ false };
+	std::atomic<ServoState> state_{ ServoState::STOPPED };
+	std::atomic<DeviceIo> fault_{ DeviceIo::OK };
+	// Written by the thread once at start, then published; read by the game thread.
+	RealtimeGrants grants_;
+	std::atomic<bool> grants_published_{ false };
+};
+
+} // namespace haptics

@@ -1,0 +1,123 @@
+#pragma once
+
+// Loop statistics recorded inside the tick without allocation or locks: fixed-size
+// histograms whose bins are relaxed atomics written by the servo thread alone (a plain load
+// + store, no read-modify-write) and read by any thread. A reader running while the servo
+// ticks may see counts from slightly different ticks in different bins; after stop() the
+// figures are exact. Percentiles are computed by the reader, never in the tick.
+
+#include "core/base/realtime.h"
+
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+
+namespace haptics {
+
+// Values in seconds, linear bins of BIN_WIDTH; larger values land in the last bin (the
+// exact maximum is kept separately).
+template <size_t BINS>
+class Histogram {
+public:
+	explicit Histogram(double p_bin_width_s) :
+			bin_width_s_(p_bin_width_s) {}
+
+	void reset();
+	void record(double p_value_s); // Single writer.
+
+	uint64_t count() const { return count_.load(std::memory_order_relaxed); }
+	double mean() const;
+	double max() const { return max_.load(std::memory_order_relaxed); }
+	// p_quantile in [0, 1]: the centre of the bin holding that rank, capped at max(); 0
+	// when empty.
+	double percentile(double p_quantile) const;
+
+private:
+	const double bin_width_s_;
+	std::atomic<uint32_t> bins_[BINS] = {};
+	std::atomic<uint64_t> count_{ 0 };
+	std::atomic<double> sum_{ 0.0 };
+	std::atomic<double> max_{ 0.0 };
+};
+
+extern template class Histogram<20000>;
+extern template class Histogram<10000>;
+
+// What the game reads. Times in seconds, rates in hertz.
+struct ServoStats {
+	bool running = false;
+	SchedulerKind scheduler = SchedulerKind::MANUAL;
+	int32_t realtime_priority = 0; // SCHED_FIFO priority when granted.
+	// The other real-time techniques (realtime.h) the servo thread asked for and got.
+	bool memory_locked = false; // mlockall
+	bool cpu_latency_held = false; // /dev/cpu_dma_latency at 0
+	int32_t pinned_cpu = -1; // -1 when not pinned
+	int32_t stack_prefaulted_kb = 0;
+	bool timer_slack_minimised = false; // SCHED_OTHER only
+	double spin_s = 0.0; // Busy-wait before each deadline (ServoOptions::spin_ns).
+	// Share of one CPU the servo thread used since its first tick (sleeping costs nothing;
+	// the spin and the tick do).
+	double thread_cpu_fraction = 0.0;
+	double nominal_rate_hz = 0.0;
+	double achieved_rate_hz = 0.0; // Ticks per second of servo time (wall clock if threaded).
+	uint64_t ticks = 0;
+	double period_mean_s = 0.0, period_p50_s = 0.0, period_p99_s = 0.0, period_p999_s = 0.0, period_max_s = 0.0;
+	// |period - nominal period|
+	double jitter_p50_s = 0.0, jitter_p99_s = 0.0, jitter_p999_s = 0.0, jitter_max_s = 0.0;
+	// Wake-up latency: how long after its deadline each tick woke (cyclictest's measure).
+	double latency_p50_s = 0.0, latency_p99_s = 0.0, latency_p999_s = 0.0, latency_max_s = 0.0;
+	uint64_t late_ticks = 0; // Woke more than half a period after the deadline.
+	uint64_t missed_deadlines = 0; // Whole periods skipped after a long stall.
+	double tick_cost_p50_s = 0.0, tick_cost_p99_s = 0.0, tick_cost_max_s = 0.0;
+	uint64_t frames_received = 0; // New frames the servo picked up.
+	uint64_t frames_rejected = 0; // submit_frame calls refused by validation.
+	double frame_age_s = 0.0; // Servo time since the last new frame; -1 when none yet.
+	bool watchdog_tripped = false;
+	uint64_t transient_drops = 0; // Impact queue full + transient bank full.
+	uint64_t telemetry_drops = 0; // Telemetry ring full (the game drains too rarely).
+	uint64_t clamped_ticks = 0; // Ticks whose output was scaled to the force limit.
+	uint64_t non_finite_ticks = 0; // Ticks where a non-finite force was zeroed.
+	// Devices with their own I/O thread (device_exchange.h): transfers done, and how old the
+	// servo's force was when it went on the wire (the latency the hand-over adds).
+	uint64_t device_io_cycles = 0;
+	double device_command_age_mean_s = 0.0;
+	double device_command_age_max_s = 0.0;
+};
+
+class ServoStatsRecorder {
+public:
+	ServoStatsRecorder();
+
+	// Not concurrent with record_tick (call before the thread starts).
+	void reset(double p_nominal_rate_hz);
+	// Single writer. p_period_s < 0 for the first tick of a session (no period yet).
+	void record_tick(double p_now_s, double p_period_s, double p_lateness_s, double p_cost_s);
+	void record_missed(uint64_t p_count);
+	// The servo thread's CPU time (thread_cpu_time_ns) at p_now_s; the first call of a
+	// session is the baseline.
+	void record_thread_cpu(double p_now_s, double p_cpu_s);
+
+	// Fills the loop-timing fields of r_stats (rate, period, jitter, late, cost, ticks).
+	void fill(ServoStats &r_stats) const;
+
+private:
+	static constexpr double PERIOD_BIN_S = 1e-6;
+	static constexpr double COST_BIN_S = 10e-9;
+
+	std::atomic<double> nominal_rate_hz_{ 0.0 };
+	std::atomic<double> first_tick_s_{ 0.0 };
+	std::atomic<double> last_tick_s_{ 0.0 };
+	std::atomic<uint64_t> ticks_{ 0 };
+	std::atomic<uint64_t> late_{ 0 };
+	std::atomic<uint64_t> missed_{ 0 };
+	Histogram<20000> period_{ PERIOD_BIN_S }; // 0-20 ms
+	Histogram<20000> jitter_{ PERIOD_BIN_S }; // 0-20 ms
+	Histogram<20000> latency_{ PERIOD_BIN_S }; // 0-20 ms
+	std::atomic<double> cpu_first_now_s_{ -1.0 };
+	std::atomic<double> cpu_first_s_{ 0.0 };
+	std::atomic<double> cpu_last_now_s_{ 0.0 };
+	std::atomic<double> cpu_last_s_{ 0.0 };
+	Histogram<10000> cost_{ COST_BIN_S }; // 0-100 us
+};
+
+} // namespace haptics

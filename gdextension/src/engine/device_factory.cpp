@@ -1,0 +1,150 @@
+#include "engine/device_factory.h"
+
+#include "devices/dualsense/dualsense_backend.h"
+#include "devices/evdev/evdev_backend.h"
+#include "devices/evdev/evdev_enumeration.h"
+#include "devices/falcon/falcon_backend.h"
+#include "devices/openhaptics/openhaptics_backend.h"
+#include "devices/pid/pid_backend.h"
+
+#include <cstdlib>
+#include <string_view>
+
+namespace haptics {
+
+namespace {
+
+struct BackendRow {
+	std::string_view driver;
+	DeviceAvailability (*probe)(const DeviceInfo &p_info);
+	Status (*open)(const DeviceInfo &p_info, const DeviceOpenOptions &p_options, std::unique_ptr<HapticDevice> &r_device);
+};
+
+DeviceAvailability probe_simulated(const DeviceInfo &p_info) {
+	DeviceAvailability availability;
+	availability.handled = p_info.backend == BACKEND_SIMULATED;
+	availability.openable = availability.handled;
+	return availability;
+}
+
+Status open_falcon(const DeviceInfo &p_info, const DeviceOpenOptions &p_options, std::unique_ptr<HapticDevice> &r_device) {
+	return falcon::open_device(p_info, p_options.falcon_firmware_path, r_device);
+}
+
+Status open_evdev(const DeviceInfo &p_info, const DeviceOpenOptions &, std::unique_ptr<HapticDevice> &r_device) {
+	return evdev::open_device(p_info, r_device);
+}
+
+Status open_hid_pid(const DeviceInfo &p_info, const DeviceOpenOptions &, std::unique_ptr<HapticDevice> &r_device) {
+	return pid::open_device(p_info, r_device);
+}
+
+Status open_openhaptics(const DeviceInfo &p_info, const DeviceOpenOptions &, std::unique_ptr<HapticDevice> &r_device) {
+	return openhaptics::open_device(p_info, r_device);
+}
+
+Status open_dualsense(const DeviceInfo &p_info, const DeviceOpenOptions &, std::unique_ptr<HapticDevice> &r_device) {
+	return dualsense::open_device(p_info, r_device);
+}
+
+// The first row whose probe handles a device drives it; order matters only where two
+// backends could claim one device.
+constexpr BackendRow BACKENDS[] = {
+	{ DRIVER_SIMULATED, probe_simulated, nullptr },
+	{ DRIVER_FALCON, falcon::probe, open_falcon },
+	{ DRIVER_DUALSENSE, dualsense::probe, open_dualsense },
+	// After the DualSense: any other hidapi device with PID reports. When the kernel's PID
+	// driver is bound it says so and the evdev row below drives the same stick.
+	{ DRIVER_HID_PID, pid::probe, open_hid_pid },
+	{ DRIVER_EVDEV, evdev::probe, open_evdev },
+	{ DRIVER_OPENHAPTICS, openhaptics::probe, open_openhaptics },
+};
+
+// Added at initialisation, before any listing, and only read afterwards: no lock.
+std::vector<DeviceSource> &sources() {
+	static std::vector<DeviceSource> added;
+	return added;
+}
+
+const DeviceSource *source_of(const DeviceInfo &p_info) {
+	for (const DeviceSource &source : sources()) {
+		if (p_info.backend == source.backend) {
+			return &source;
+		}
+	}
+	return nullptr;
+}
+
+} // namespace
+
+void add_device_source(const DeviceSource &p_source) {
+	for (const DeviceSource &source : sources()) {
+		if (source.backend == p_source.backend) {
+			return;
+		}
+	}
+	sources().push_back(p_source);
+}
+
+std::span<const DeviceSource> device_sources() {
+	return sources();
+}
+
+void probe_devices(std::vector<DeviceInfo> &r_devices) {
+	for (DeviceInfo &info : r_devices) {
+		info.driver.clear();
+		info.openable = false;
+		info.unavailable_reason = "no force-feedback driver for this device";
+		if (const DeviceSource *source = source_of(info)) {
+			source->probe(info);
+			continue;
+		}
+		for (const BackendRow &backend : BACKENDS) {
+			const DeviceAvailability availability = backend.probe(info);
+			if (availability.handled) {
+				// A driver found force feedback the catalog could not see (AJ sticks
+				// report a joystick top-level collection; evdev nodes have no catalog row).
+				info.known_haptic = true;
+				info.driver = backend.driver;
+				info.openable = availability.openable;
+				info.unavailable_reason = availability.openable ? std::string() : availability.reason;
+				break;
+			}
+		}
+	}
+}
+
+DeviceList list_all_devices() {
+	DeviceList list = list_devices();
+	// The kernel's force-feedback drivers (hid-pidff, wheel drivers) own most FFB devices
+	// and expose them here, not on hidraw.
+	evdev::enumerate_evdev_devices(list.devices, list.warnings);
+	// HD finds its device by configuration name, not on a bus: one entry when the runtime
+	// loads, or when the player pointed at one that does not (to say why).
+	const DeviceInfo openhaptics_entry = openhaptics::make_default_device_info();
+	if (openhaptics_entry.openable || std::getenv(openhaptics::HD_LIBRARY_ENV) != nullptr) {
+		list.devices.push_back(openhaptics_entry);
+	}
+	for (const DeviceSource &source : sources()) {
+		source.append(list.devices);
+	}
+	probe_devices(list.devices);
+	return list;
+}
+
+Status open_listed_device(const DeviceInfo &p_info, const DeviceOpenOptions &p_options,
+		std::unique_ptr<HapticDevice> &r_device) {
+	if (const DeviceSource *source = source_of(p_info)) {
+		return source->open(p_info, r_device);
+	}
+	for (const BackendRow &backend : BACKENDS) {
+		if (backend.open == nullptr || !backend.probe(p_info).handled) {
+			continue;
+		}
+		return backend.open(p_info, p_options, r_device);
+	}
+	return Status::error(StatusCode::UNSUPPORTED, "no force-feedback driver for '%s' (%s)", p_info.id.c_str(),
+			p_info.model.empty() ? p_info.product.c_str() : p_info.model.c_str());
+}
+
+} // namespace haptics

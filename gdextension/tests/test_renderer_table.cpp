@@ -1,0 +1,89 @@
+// The renderer table as the engine and the binding walk it: one row per renderer in
+// render-mode order, each naming its force components and raising telemetry flags of its
+// own, and its configuration rows in the one table.
+
+#include "core/servo/servo_config_fields.h"
+#include "core/servo/telemetry.h"
+#include "engine/config_table.h"
+#include "engine/render_config.h"
+#include "engine/renderer_registry.h"
+
+#include <doctest/doctest.h>
+
+#include <cctype>
+#include <set>
+#include <string>
+#include <vector>
+
+using namespace haptics;
+
+namespace {
+
+std::vector<std::string> names_of(std::span<const char *const> p_names) {
+	return std::vector<std::string>(p_names.begin(), p_names.end());
+}
+
+} // namespace
+
+TEST_CASE("renderer table: a row per render mode, named as GDScript's constants") {
+	const std::span<const RegisteredRenderer> rows = registered_renderers();
+	REQUIRE(rows.size() == RENDER_MODE_COUNT);
+	CHECK(std::string(rows[RenderMode::MOVEMENT].name) == "movement");
+	CHECK(std::string(rows[RenderMode::CONSTRAINT].name) == "constraint");
+	CHECK(std::string(rows[RenderMode::PONG].name) == "pong");
+	for (const RegisteredRenderer &row : rows) {
+		std::string constant = "RENDER_MODE_";
+		for (const char *c = row.name; *c != '\0'; ++c) {
+			constant += static_cast<char>(std::toupper(static_cast<unsigned char>(*c)));
+		}
+		CHECK(row.mode_constant == constant);
+	}
+}
+
+TEST_CASE("renderer table: each renderer names its own force components") {
+	const std::span<const RegisteredRenderer> rows = registered_renderers();
+	const std::vector<std::string> movement = { "normal", "friction", "weight", "drag", "inertia" };
+	CHECK(names_of(rows[RenderMode::MOVEMENT].info->force_names) == movement);
+	CHECK(names_of(rows[RenderMode::CONSTRAINT].info->force_names) == movement);
+	CHECK(names_of(rows[RenderMode::PONG].info->force_names) == std::vector<std::string>{ "contact", "spin", "effects" });
+	for (const RegisteredRenderer &row : rows) {
+		CAPTURE(row.name);
+		CHECK(!row.info->force_names.empty());
+		CHECK(row.info->force_names.size() <= MAX_FORCE_PARTS);
+	}
+}
+
+TEST_CASE("renderer table: telemetry flags are each renderer's own bits, above the servo's") {
+	std::set<uint32_t> bits;
+	for (const TelemetryFlagName &flag : servo_telemetry_flags()) {
+		CHECK(flag.flag < (1u << FIRST_RENDERER_FLAG_BIT));
+		CHECK(bits.insert(flag.flag).second);
+	}
+	for (const RegisteredRenderer &row : registered_renderers()) {
+		for (const TelemetryFlagName &flag : row.info->telemetry_flags) {
+			CAPTURE(flag.name);
+			CHECK(flag.flag >= (1u << FIRST_RENDERER_FLAG_BIT));
+			CHECK(bits.insert(flag.flag).second);
+		}
+	}
+}
+
+TEST_CASE("renderer table: the configuration table is the servo's rows, then each renderer's") {
+	size_t expected = servo_config_fields().size();
+	for (const RegisteredRenderer &row : registered_renderers()) {
+		expected += row.info->config_fields.size();
+	}
+	CHECK(config_fields().size() == expected);
+	CHECK(registered_renderers()[RenderMode::PONG].info->config_fields.size() == 40);
+	for (const ConfigField &row : registered_renderers()[RenderMode::PONG].info->config_fields) {
+		CHECK(std::string(row.section) == "pong"); // Pong's settings are Pong's alone.
+	}
+	// Each row reaches its own owner's part of a RenderConfig.
+	RenderConfig config;
+	set_config_value(config, *find_config_field("pong", "gravity_m_per_s2"), 4.0);
+	set_config_value(config, *find_config_field("force_model", "dead_zone"), 0.1);
+	set_config_value(config, *find_config_field("force_model", "gravity_n_per_kg"), 2.0);
+	CHECK(config.pong.gravity_m_per_s2 == 4.0);
+	CHECK(config.servo.input.dead_zone == 0.1);
+	CHECK(config.movement.force_model.gravity_n_per_kg == 2.0);
+}
