@@ -97,9 +97,11 @@ test-godot: import
 test-windowed: import
 	@tools/test-windowed.sh
 
-## lint: gdlint and gdformat --check over scripts/ and tests/ (gdtoolkit, pinned, in .venv),
-## and clang-format (Debian's, .clang-format: Godot's style) over the extension's C++
+## lint: the C++ layers' include directions and the 400-line limit (tools/check-includes.py),
+## gdlint and gdformat --check over addons/, scripts/ and tests/ (gdtoolkit, pinned, in
+## .venv), and clang-format (Debian's, .clang-format: Godot's style) over the extension's C++
 lint: deps
+	@python3 tools/check-includes.py
 	@tools/gdtoolkit.sh gdlint addons scripts tests
 	@tools/gdtoolkit.sh gdformat --check addons scripts tests
 	@find gdextension/src gdextension/tests gdextension/bench -name '*.h' -o -name '*.cpp' | \
