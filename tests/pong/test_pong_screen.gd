@@ -5,7 +5,7 @@ extends TestSuite
 ## setup, the pause menu's Quit to menu) leaving the servo as it was.
 
 const MAIN_SCENE: PackedScene = preload("res://scenes/main/main.tscn")
-const PONG_SCENE: PackedScene = preload("res://scenes/pong/pong.tscn")
+const PONG_SCENE: PackedScene = preload("res://scenes/pong/ui/pong.tscn")
 
 var _main: Main = null
 var _mode_before: StringName = &""
@@ -43,7 +43,9 @@ func test_the_menu_entry_opens_the_setup_and_escape_goes_back() -> void:
 
 func test_the_network_lobby_starts_with_the_setup_court() -> void:
 	for players: int in [4, 2]:
-		var pong: PongScreen = add_child_autofree(PONG_SCENE.instantiate()) as PongScreen
+		# The main scene opens the lobby (it is above Pong).
+		_main.show_pong()
+		var pong: PongScreen = _main.get_screen() as PongScreen
 		await wait_process_frames(1)
 		pong.setup.four_players_check.button_pressed = players == 4
 		pong.setup.network_button.pressed.emit()
@@ -54,8 +56,8 @@ func test_the_network_lobby_starts_with_the_setup_court() -> void:
 		assert_eq(lobby.chosen_seats(), players, "the setup's court is the lobby's seats")
 		assert_false(pong.setup.visible, "the lobby replaces the setup")
 		lobby.back_requested.emit()
-		pong.queue_free()
 		await wait_process_frames(2)
+		assert_true(pong.setup.visible, "Back shows the setup again")
 
 
 func test_a_real_time_match_serves_and_quitting_restores_the_servo() -> void:

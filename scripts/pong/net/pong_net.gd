@@ -17,7 +17,7 @@ signal match_started
 signal match_ended(winner: int, why: String)
 
 const NODE_NAME: String = "PongNet"
-const PONG_SCENE: PackedScene = preload("res://scenes/pong/pong.tscn")
+const PONG_SCENE: PackedScene = preload("res://scenes/pong/ui/pong.tscn")
 
 ## Seats of a match (territories): 2, or 4 on a square court. The server's choice, set
 ## before [method host]; a client takes the server's from the lobby.
