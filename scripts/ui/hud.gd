@@ -124,7 +124,7 @@ func get_legend_value(component: String) -> Label:
 
 
 ## The HUD's servo line while the servo runs: its rate, period p99 and which real-time
-## techniques it was granted ([method HapticsServer.get_stats]): the SCHED_FIFO priority, locked
+## techniques it was granted ([method HapticsServo.get_stats]): the SCHED_FIFO priority, locked
 ## memory, the CPU latency held, the pinned CPU, the spin before each deadline.
 static func servo_running_text(rate_hz: float, stats: Dictionary) -> String:
 	var p99_ms: float = stats.get("period_p99_ms", 0.0)

@@ -83,16 +83,16 @@ func test_a_real_time_match_serves_and_quitting_restores_the_servo() -> void:
 	match_node.auto_serve = false
 	Haptics.pong.set_ball(Vector3(-1.0, 2.0, 1.5), Vector3.ZERO)
 	await wait_until(func() -> bool: return match_node.snapshot.ball_position.y > 1.9, 2.0)
-	var caught: PongSnapshot = match_node.snapshot
+	var caught: HapticPongState = match_node.snapshot
 	pong.pause_menu.open()
 	assert_true(get_tree().paused)
 	await wait_seconds(0.6)
-	var resumed_at: float = PongSnapshot.from_state(Haptics.pong.get_state()).time_s
+	var resumed_at: float = Haptics.pong.get_state().time_s
 	pong.pause_menu.close()
 	await wait_process_frames(1)
 	# Put back after resumed_at, it has fallen at most since then (the frame's length,
 	# whatever the load); left alone it fell for the whole pause and bounces below 1.5 m.
-	var now: PongSnapshot = PongSnapshot.from_state(Haptics.pong.get_state())
+	var now: HapticPongState = Haptics.pong.get_state()
 	var fall: float = now.time_s - resumed_at
 	var lowest: float = (
 		caught.ball_position.y

@@ -295,5 +295,5 @@ func _send_constraint() -> bool:
 	}
 	var ok: bool = Haptics.configure("constraint", constraint)
 	var segments: PackedVector2Array = level.get_wall_segments()
-	var sent: bool = Haptics.set_constraint_geometry(segments, map.to_dictionary())
+	var sent: bool = Haptics.set_constraint_geometry(segments, map)
 	return ok and sent
