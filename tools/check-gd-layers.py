@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Checks that the GDScript folders form layers: each depends only on floors below it.
 
-Run from the project root: python3 tools/check-gd-layers.py [--graph]
+Run: python3 tools/check-gd-layers.py [--graph]   (--graph also prints every module edge)
 Exit 0 when every dependency runs downward, 1 with one line per offending edge otherwise.
 
 A module is a folder of addons/, scripts/ or scenes/; a script's folder and the scene
@@ -173,9 +173,9 @@ def resolve(target, uids, folder=""):
     return None
 
 
-def scan():
-    """Every dependency as (from file, to file, why), and door bypasses as (file, why)."""
-    files = project_files()
+def scan(files):
+    """Every dependency of [files] as (from file, to file, why), and door bypasses as
+    (file, why)."""
     uids = uid_table()
     sources = {}
     classes = {}
@@ -213,13 +213,15 @@ def scan():
 
 
 def main():
+    os.chdir(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
     floor_of = {}
     for level, modules in enumerate(FLOORS):
         for module in modules:
             floor_of[module] = level
-    edges, bypasses = scan()
+    files = project_files()
+    edges, bypasses = scan(files)
     problems = []
-    unplaced = set()
+    unplaced = {module_of(path) for path in files} - set(floor_of)
     module_edges = {}
     for source, target, why in edges:
         a = module_of(source)
@@ -230,11 +232,8 @@ def main():
         if b is None or a == b:
             continue
         module_edges.setdefault((a, b), []).append((source, target, why))
-        for module in (a, b):
-            if module not in floor_of:
-                unplaced.add(module)
     for module in sorted(unplaced):
-        problems.append(f"{module}: in no floor (add it to FLOORS in {sys.argv[0]})")
+        problems.append(f"{module}: in no floor (add it to FLOORS in tools/check-gd-layers.py)")
     for (a, b), uses in sorted(module_edges.items()):
         if a not in floor_of or b not in floor_of:
             continue

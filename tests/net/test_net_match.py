@@ -42,7 +42,7 @@ DIVERGENCE_P99_M = {
 DETECTION_BOUND_S = 6.0
 CONTACT_TOLERANCE = 0.10
 # The misbehaving peer (a test tool: not part of the game or its exports).
-ROGUE_SCENE = "res://tests/net/rogue_peer.tscn"
+ROGUE_SCENE = "res://tests/net/rogue/rogue_peer.tscn"
 RALLY_SECONDS = 12
 
 

@@ -3,7 +3,9 @@ extends Node
 ## like the game's networked-Pong command line ([PongNetCli], the same arguments) and, once
 ## its match runs, sends every kind of bad message a peer can send, through the same RPC
 ## surface as an honest peer. The others must drop each with a log line and play on.
-## A test tool: it lives under tests/, out of every export.
+## A test tool, out of every export: under tests/ (no export preset takes it), and in a
+## folder Godot does not scan (.gdignore), since an export lists the path of every file the
+## scan gave a uid. The harness runs it by path.
 
 ## Rounds of bad messages: unreliable ones may be dropped by ENet's throttle in a burst.
 const ROUNDS: int = 3
