@@ -1,8 +1,9 @@
 extends RefCounted
 ## The Haptics door's input side: the user's keys, buttons, sticks and mouse move the
 ## simulated device's hand, and the device's input vector is fed into input actions as
-## strengths. The door owns one and forwards its settings ([member hand_actions],
-## [member feed_actions]); when the door calls which part is the door's business.
+## strengths. The door owns one, forwards its two settings ([member hand_actions],
+## [member feed_actions]) and decides when each part runs (control mode, whether the hand
+## follows the user).
 
 ## Fed strengths below this release the action (a centred device presses nothing).
 const FEED_THRESHOLD := 0.05
