@@ -98,10 +98,12 @@ test-windowed: import
 	@tools/test-windowed.sh
 
 ## lint: the C++ layers' include directions and the 400-line limit (tools/check-includes.py),
-## gdlint and gdformat --check over addons/, scripts/ and tests/ (gdtoolkit, pinned, in
-## .venv), and clang-format (Debian's, .clang-format: Godot's style) over the extension's C++
+## the GDScript folders' layers and the Haptics door (tools/check-gd-layers.py), gdlint
+## (400 lines a file) and gdformat --check over addons/, scripts/ and tests/ (gdtoolkit,
+## pinned, in .venv), and clang-format (Debian's, .clang-format: Godot's style) over the C++
 lint: deps
 	@python3 tools/check-includes.py
+	@python3 tools/check-gd-layers.py
 	@tools/gdtoolkit.sh gdlint addons scripts tests
 	@tools/gdtoolkit.sh gdformat --check addons scripts tests
 	@find gdextension/src gdextension/tests gdextension/bench -name '*.h' -o -name '*.cpp' | \

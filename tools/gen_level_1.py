@@ -242,7 +242,7 @@ def build():
     water = s.ext_resource("PackedScene", "res://scenes/props/water.tscn")
     pearl = s.ext_resource("PackedScene", "res://scenes/props/pearl.tscn")
     goal = s.ext_resource("PackedScene", "res://scenes/props/goal.tscn")
-    effects = s.ext_resource("PackedScene", "res://scenes/levels/effects.tscn")
+    effects = s.ext_resource("PackedScene", "res://scenes/props/effects.tscn")
     mat = {k: s.ext_resource("Resource", f"res://addons/haptics/materials/{k}.tres")
            for k in ("hard", "soft", "slippery")}
     tex = {k: s.ext_resource("Texture2D", f"res://assets/art/{k}.svg")

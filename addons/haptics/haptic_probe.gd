@@ -15,7 +15,7 @@ extends Node
 ## [code]inertia_force[/code] properties, such as the addon's [HapticWater].
 
 ## Emitted after each frame is submitted, with the frame as sent.
-signal frame_submitted(frame: Dictionary)
+signal frame_submitted(frame: HapticFrame)
 ## Emitted when a new contact begins, with the approach speed in metres per second.
 signal impact(collider: Object, normal: Vector2, speed: float)
 
@@ -47,7 +47,7 @@ const HapticsDoor := preload("haptics.gd")
 ## of the [code]Haptics[/code] autoload's; set it before the probe enters the tree.
 var server: Object = null
 ## The last frame submitted (for HUDs and tests).
-var last_frame: Dictionary = {}
+var last_frame: HapticFrame = HapticFrame.new()
 ## Frames submitted so far.
 var frames_submitted: int = 0
 
@@ -133,19 +133,19 @@ func _physics_process(_delta: float) -> void:
 ## Gathers this tick's frame and sends it to the server (what the probe does every physics
 ## tick), pushing impacts for contacts that began.
 func submit() -> void:
-	var frame: Dictionary = build_frame()
+	var frame: HapticFrame = build_frame()
 	if server != null:
-		server.call(&"submit_frame", frame)
+		server.call(&"submit_frame", frame.to_dictionary())
 	last_frame = frame
 	frames_submitted += 1
 	frame_submitted.emit(frame)
 
 
-## Gathers this tick's haptic frame (the layout HapticsServer.submit_frame takes), and
-## pushes impacts for contacts that began this tick.
-func build_frame() -> Dictionary:
+## Gathers this tick's haptic frame, and pushes impacts for contacts that began this tick.
+func build_frame() -> HapticFrame:
 	var above: Array[Dictionary] = _objects_above()
-	var contacts: Array[Dictionary] = []
+	var frame: HapticFrame = HapticFrame.new()
+	var contacts: Array[HapticContact] = frame.contacts
 	var now_touching: Dictionary[String, bool] = {}
 	# Faces already sent, by collider and normal: two floor tiles side by side are one
 	# floor (each its own contact would count the floor's friction twice).
@@ -161,11 +161,7 @@ func build_frame() -> Dictionary:
 		var material: HapticMaterial = _material_of(collision)
 		if not faces.has(face):
 			faces[face] = true
-			var contact: Dictionary = {"normal": normal}
-			if material != null:
-				contact["stiffness_n"] = material.stiffness
-				contact["friction_n"] = material.friction
-			contacts.append(contact)
+			contacts.append(HapticContact.new(normal, material))
 		if normal.dot(Vector2.UP) > floor_normal.dot(Vector2.UP):
 			floor_normal = normal
 		if not _touching.has(key):
@@ -173,19 +169,21 @@ func build_frame() -> Dictionary:
 			_report_impact(collider, normal, material)
 	_touching = now_touching
 	_sequence += 1
-	var resting: Array[Dictionary] = _resting_objects(above)
+	var resting: Array[HapticLoad] = frame.resting
+	resting.assign(_resting_objects(above))
 	if own_weight_kg > 0.0 and floor_normal.dot(Vector2.UP) > 0.5 and resting.size() < _max_resting:
 		# The avatar's own weight, felt like an object resting on the hand: pressed along
 		# the floor's normal into the floor.
-		resting.append({"normal": -floor_normal, "mass_kg": own_weight_kg})
-	return {
-		"contacts": contacts,
-		"resting": resting,
-		"water": _water_state(),
-		"velocity_m_per_s": _body_velocity() / pixels_per_metre,
-		"sequence": _sequence,
-		"time_s": Time.get_ticks_msec() / 1000.0,
-	}
+		resting.append(HapticLoad.new(-floor_normal, own_weight_kg))
+	var water: Object = _water_area()
+	if water != null:
+		frame.in_water = true
+		frame.water_drag_n_s_per_m = water.get(&"drag_coefficient")
+		frame.water_inertia_n = water.get(&"inertia_force")
+	frame.velocity_m_per_s = _body_velocity() / pixels_per_metre
+	frame.sequence = _sequence
+	frame.time_s = Time.get_ticks_msec() / 1000.0
+	return frame
 
 
 ## Pixels per metre for a game whose gravity is [param gravity_px_per_s2] (e.g. the
@@ -323,26 +321,25 @@ func _objects_above() -> Array[Dictionary]:
 	return out
 
 
-func _resting_objects(above: Array[Dictionary]) -> Array[Dictionary]:
-	var out: Array[Dictionary] = []
+func _resting_objects(above: Array[Dictionary]) -> Array[HapticLoad]:
+	var out: Array[HapticLoad] = []
 	for entry: Dictionary in above:
 		var rigid: RigidBody2D = entry["collider"]
 		if out.size() < _max_resting:
-			out.append({"normal": entry["normal"], "mass_kg": rigid.mass})
+			out.append(HapticLoad.new(entry["normal"], rigid.mass))
 	return out
 
 
-func _water_state() -> Dictionary:
+# The water volume the body is in, or null.
+func _water_area() -> Object:
 	_query.position = _body.global_position
 	_query.collision_mask = 0xFFFFFFFF
 	var space: PhysicsDirectSpaceState2D = _body.get_world_2d().direct_space_state
 	for hit: Dictionary in space.intersect_point(_query, 8):
 		var area: Object = hit.get("collider")
 		if area != null and &"drag_coefficient" in area and &"inertia_force" in area:
-			var drag: float = area.get(&"drag_coefficient")
-			var inertia: float = area.get(&"inertia_force")
-			return {"inside": true, "drag_n_s_per_m": drag, "inertia_n": inertia}
-	return {"inside": false}
+			return area
+	return null
 
 
 func _report_impact(collider: Object, normal: Vector2, material: HapticMaterial) -> void:
@@ -353,14 +350,8 @@ func _report_impact(collider: Object, normal: Vector2, material: HapticMaterial)
 	if speed < min_impact_speed:
 		return
 	impact.emit(collider, normal, speed)
-	if server == null:
-		return
-	var event: Dictionary = {"direction": normal, "speed_m_per_s": speed}
-	if material != null:
-		event["gain_n_s_per_m"] = material.impact_gain
-		event["frequency_hz"] = material.impact_frequency
-		event["decay_s"] = material.impact_decay
-	server.call(&"push_impact", event)
+	if server != null:
+		server.call(&"push_impact", HapticImpact.new(normal, speed, material).to_dictionary())
 
 
 # The collider's own HapticMaterial, else the touched tile's (HapticMaterial.of_tile), else

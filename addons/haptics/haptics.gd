@@ -26,7 +26,8 @@ const SERVER_CLASS := &"HapticsServer"
 const CONTROL_DEVICE := &"device"
 ## The keyboard or gamepad drives the player.
 const CONTROL_KEYBOARD := &"keyboard"
-## Force names reported by [method get_forces].
+## Force names [method get_forces] reports while the movement or constraint renderer is
+## active (each renderer names its own: Pong's are contact, spin and effects).
 const FORCE_NAMES: Array[String] = [
 	"normal", "friction", "weight", "drag", "inertia", "continuous", "smoothed", "impact", "total"
 ]
@@ -43,8 +44,6 @@ const SETTING_FEED_ACTIONS := "haptics/input/feed_actions"
 ## own, HapticsServer.DEFAULT_SPIN_US). More spin, steadier ticks, more of a core; the
 ## README's "Servo timing" has the measurements.
 const SETTING_SPIN_US := "haptics/servo/spin_us"
-## Fed strengths below this release the action (a centred device presses nothing).
-const FEED_THRESHOLD := 0.05
 ## The hand's actions when the project names none: Godot's own, which every project has
 ## (arrow keys and a gamepad's d-pad).
 const DEFAULT_HAND_ACTIONS: PackedStringArray = ["ui_left", "ui_right", "ui_up", "ui_down"]
@@ -58,6 +57,8 @@ const SETTINGS: Dictionary[String, PackedStringArray] = {
 # The servo's settings while there is no server to keep them (nothing is rendered then),
 # starting from the defaults.
 const _OFFLINE_DEFAULTS: Dictionary = {"safety.force_scale": 1.0, "smoothing.enabled": true}
+# The keys, buttons, sticks and mouse that move the simulated hand, and the actions fed.
+const HapticsInput := preload("haptics_input.gd")
 
 ## The player's strength preference, a gain on everything rendered. Kept by the servo;
 ## finite values are clamped to its range ([method get_force_scale_range]), NaN is refused.
@@ -91,20 +92,20 @@ var hand_follows_input: bool = true
 ## The actions (left, right, up, down) that move the simulated hand (from
 ## [constant SETTING_HAND_ACTIONS]); empty: none. An action the project does not define
 ## counts as released.
-var hand_actions: PackedStringArray = []:
+var hand_actions: PackedStringArray:
+	get:
+		return _user_input.hand_actions
 	set(value):
-		hand_actions = _checked_actions(value, "hand_actions")
-		_hand_actions_complete = not hand_actions.is_empty()
-		for action: String in hand_actions:
-			_hand_actions_complete = _hand_actions_complete and InputMap.has_action(action)
+		_user_input.hand_actions = value
 ## The actions (left, right, up, down) the device's input vector is fed into every physics
 ## frame while [member control_mode] is "device" (from [constant SETTING_FEED_ACTIONS]);
 ## empty: none. A game reading [code]Input.get_vector(...)[/code] on them then moves with the
 ## device. Keys bound to them still work: the stronger of the two wins.
-var feed_actions: PackedStringArray = []:
+var feed_actions: PackedStringArray:
+	get:
+		return _user_input.feed_actions
 	set(value):
-		_release_fed_actions()
-		feed_actions = _checked_actions(value, "feed_actions")
+		_user_input.feed_actions = value
 ## The devices, the open one and the simulated hand.
 var device: HapticsDevice = null
 ## The rendering thread, its statistics and telemetry.
@@ -117,10 +118,7 @@ var _server: Object = null
 var _constants: Dictionary[StringName, int] = {}
 var _config_fields: Dictionary[String, Dictionary] = {}
 var _offline: Dictionary = _OFFLINE_DEFAULTS.duplicate()
-var _mouse_seen: bool = false
-# The actions this door pressed and has not released.
-var _fed: Dictionary[String, bool] = {}
-var _hand_actions_complete: bool = false
+var _user_input: HapticsInput = HapticsInput.new()
 
 
 func _init() -> void:
@@ -178,8 +176,7 @@ func _exit_tree() -> void:
 
 
 func _input(event: InputEvent) -> void:
-	if event is InputEventMouseMotion:
-		_mouse_seen = true
+	_user_input.notice(event)
 
 
 func _process(delta: float) -> void:
@@ -193,23 +190,9 @@ func _physics_process(_delta: float) -> void:
 		return
 	_follow_user_input()
 	if control_mode != CONTROL_DEVICE or _server == null:
-		_release_fed_actions()
-		return
-	var i: Vector2 = get_input_vector()
-	var strengths: PackedFloat32Array = [
-		maxf(-i.x, 0.0), maxf(i.x, 0.0), maxf(-i.y, 0.0), maxf(i.y, 0.0)
-	]
-	for k: int in feed_actions.size():
-		var action: String = feed_actions[k]
-		if not InputMap.has_action(action):
-			continue
-		if strengths[k] >= FEED_THRESHOLD:
-			Input.action_press(action, strengths[k])
-			_fed[action] = true
-		elif _fed.has(action):
-			# Only what this door pressed: a key held down stays pressed.
-			Input.action_release(action)
-			_fed.erase(action)
+		_user_input.release_fed()
+	else:
+		_user_input.feed(get_input_vector())
 
 
 ## Lists the project settings this door reads in the Project Settings dialog, with their
@@ -308,9 +291,12 @@ func get_render_mode() -> StringName:
 
 
 ## Walls for the constraint renderer as point pairs in maze units (pixels), and how the
-## maze maps onto the workspace (layout: HapticsServer.set_constraint_geometry).
-func set_constraint_geometry(segments: PackedVector2Array, mapping: Dictionary) -> bool:
-	return _server != null and _server.call(&"set_constraint_geometry", segments, mapping)
+## maze maps onto the workspace.
+func set_constraint_geometry(segments: PackedVector2Array, mapping: HapticMazeMapping) -> bool:
+	return (
+		_server != null
+		and _server.call(&"set_constraint_geometry", segments, mapping.to_dictionary())
+	)
 
 
 ## The constraint proxy: position (maze units), goal, constraints, placed, updates; empty
@@ -407,91 +393,4 @@ func _spin_us_setting() -> float:
 
 func _follow_user_input() -> void:
 	if hand_follows_input and control_mode == CONTROL_DEVICE and device.is_simulated():
-		device.set_hand_target(_hand_from_user_input())
-
-
-func _release_fed_actions() -> void:
-	for action: String in _fed:
-		if InputMap.has_action(action):
-			Input.action_release(action)
-	_fed.clear()
-
-
-# Four actions or none; an empty name is no action, names the project lacks are reported once;
-# both count as released.
-func _checked_actions(actions: PackedStringArray, what: String) -> PackedStringArray:
-	if not actions.is_empty() and actions.size() != 4:
-		push_error(
-			(
-				"Haptics.%s: give four actions (left, right, up, down) or none, not %s; keeping %s."
-				% [what, actions, get(what)]
-			)
-		)
-		return get(what)
-	var missing: PackedStringArray = []
-	for action: String in actions:
-		if not action.is_empty() and not InputMap.has_action(action):
-			missing.append(action)
-	if not missing.is_empty():
-		push_warning("Haptics.%s: no input action %s in this project." % [what, missing])
-	return actions
-
-
-func _action_strength(index: int) -> float:
-	var action: String = hand_actions[index]
-	if not InputMap.has_action(action):
-		return 0.0
-	return (
-		_physical_strength(action)
-		if not feed_actions.is_empty()
-		else Input.get_action_strength(action)
-	)
-
-
-# How far the keys, buttons and sticks bound to [param action] are pressed, without what
-# this door fed into it (reading the action itself, the hand would hold itself down).
-func _physical_strength(action: String) -> float:
-	var strength: float = 0.0
-	for event: InputEvent in InputMap.action_get_events(action):
-		var key: InputEventKey = event as InputEventKey
-		var button: InputEventJoypadButton = event as InputEventJoypadButton
-		var motion: InputEventJoypadMotion = event as InputEventJoypadMotion
-		var mouse: InputEventMouseButton = event as InputEventMouseButton
-		if key != null:
-			var down: bool = (
-				(
-					key.physical_keycode != KEY_NONE
-					and Input.is_physical_key_pressed(key.physical_keycode)
-				)
-				or (key.keycode != KEY_NONE and Input.is_key_pressed(key.keycode))
-			)
-			strength = maxf(strength, 1.0 if down else 0.0)
-		elif mouse != null and Input.is_mouse_button_pressed(mouse.button_index):
-			strength = 1.0
-		for pad: int in Input.get_connected_joypads():
-			if button != null and Input.is_joy_button_pressed(pad, button.button_index):
-				strength = 1.0
-			elif motion != null and signf(motion.axis_value) != 0.0:
-				var along: float = Input.get_joy_axis(pad, motion.axis) * signf(motion.axis_value)
-				if along > InputMap.action_get_deadzone(action):
-					strength = maxf(strength, minf(along, 1.0))
-	return strength
-
-
-# Keyboard/gamepad deflection wins; otherwise the mouse's offset from the window centre,
-# a quarter of the window's height being the workspace edge.
-func _hand_from_user_input() -> Vector2:
-	var keys: Vector2 = Vector2.ZERO
-	if _hand_actions_complete and feed_actions.is_empty():
-		keys = Input.get_vector(hand_actions[0], hand_actions[1], hand_actions[2], hand_actions[3])
-	elif not hand_actions.is_empty():
-		keys = Vector2(
-			_action_strength(1) - _action_strength(0), _action_strength(3) - _action_strength(2)
-		)
-		keys = keys.limit_length(1.0)
-	if not keys.is_zero_approx() or not _mouse_seen:
-		return keys
-	var viewport: Viewport = get_viewport()
-	var size: Vector2 = viewport.get_visible_rect().size
-	var offset: Vector2 = viewport.get_mouse_position() - size * 0.5
-	return (offset / (size.y * 0.25)).limit_length(1.0)
+		device.set_hand_target(_user_input.hand_target(get_viewport()))

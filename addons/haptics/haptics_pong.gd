@@ -78,10 +78,10 @@ func configure(values: Dictionary) -> bool:
 	return is_available() and _server.call(&"set_config", "pong", values)
 
 
-## Hands the servo this frame's input (layout: HapticsServer.set_pong_input): beginner,
-## local_player (0, 1, or -1 for no device paddle) and both players.
-func set_input(input: Dictionary) -> bool:
-	return is_available() and _server.call(&"set_pong_input", input)
+## Hands the servo this update's input: every player's avatar and paddle, who holds the
+## device, beginner mode.
+func set_input(input: HapticPongInput) -> bool:
+	return is_available() and _server.call(&"set_pong_input", input.to_dictionary())
 
 
 ## Puts the ball at [param position] with [param velocity] and [param spin] (a serve).
@@ -121,12 +121,10 @@ func clear_effects() -> bool:
 	return _command({"type": "clear_effects"})
 
 
-## The newest servo state: time_s, ball {position, velocity, spin}, territory, players
-## [{paddle_center, normal, paddle_velocity, in_contact} x2], hand_force {contact, spin,
-## effects, total}, effects [{kind, remaining_s}], paddle_contacts, bounces. Empty without
-## the extension.
-func get_state() -> Dictionary:
-	return _server.call(&"get_pong_state") if is_available() else {}
+## The newest servo state (a ball at rest at the origin without the extension).
+func get_state() -> HapticPongState:
+	var state: Dictionary = _server.call(&"get_pong_state") if is_available() else {}
+	return HapticPongState.from_dictionary(state)
 
 
 ## The events since the last call, oldest first: {type (floor, wall, paddle, release,
@@ -154,20 +152,13 @@ func set_hand_target_3d(target_m: Vector3) -> bool:
 func rumble(strength_n: float, decay_s: float) -> bool:
 	if not is_available():
 		return false
+	var ring: HapticMaterial = HapticMaterial.new()
+	ring.impact_gain = strength_n
+	ring.impact_frequency = RUMBLE_FREQUENCY_HZ
+	ring.impact_decay = decay_s
 	# A = gain * speed: a unit speed makes the gain the peak force.
-	return (
-		_server
-		. call(
-			&"push_impact",
-			{
-				"direction": Vector2.UP,
-				"speed_m_per_s": 1.0,
-				"gain_n_s_per_m": strength_n,
-				"frequency_hz": RUMBLE_FREQUENCY_HZ,
-				"decay_s": decay_s,
-			}
-		)
-	)
+	var impact: HapticImpact = HapticImpact.new(Vector2.UP, 1.0, ring)
+	return _server.call(&"push_impact", impact.to_dictionary())
 
 
 ## Runs [param ticks] servo ticks on this thread (the servo thread must be stopped): a

@@ -13,13 +13,15 @@ extends Node
 ## prints the winner and the simulated/wall time ratio.
 
 const MENU_SCENE: PackedScene = preload("res://scenes/ui/main_menu.tscn")
-const SETTINGS_SCENE: PackedScene = preload("res://scenes/ui/settings_screen.tscn")
+const SETTINGS_SCENE: PackedScene = preload("res://scenes/common/ui/settings_screen.tscn")
 ## The maze user study.
-const STUDY_SCENE: PackedScene = preload("res://scenes/study/study.tscn")
+const STUDY_SCENE: PackedScene = preload("res://scenes/study/session/study.tscn")
 ## One run of a level.
 const GAME_SCENE: PackedScene = preload("res://scenes/main/game.tscn")
 ## Haptic Battle Pong.
-const PONG_SCENE: PackedScene = preload("res://scenes/pong/pong.tscn")
+const PONG_SCENE: PackedScene = preload("res://scenes/pong/ui/pong.tscn")
+## Networked Pong's lobby, over the Pong setup.
+const PONG_LOBBY_SCENE: PackedScene = preload("res://scenes/pong/net/ui/pong_lobby.tscn")
 ## Health of each player in the headless Pong demo: a short match.
 const PONG_DEMO_HEALTH: int = 15
 
@@ -101,10 +103,7 @@ func show_maze() -> void:
 
 ## Opens Haptic Battle Pong on its setup; leaving it returns to the title screen.
 func show_pong() -> void:
-	var pong: PongScreen = PONG_SCENE.instantiate() as PongScreen
-	pong.menu_requested.connect(show_menu)
-	pong.play_again_requested.connect(_replay_pong.bind(pong))
-	_switch_to_node(pong)
+	_switch_to_node(_new_pong())
 
 
 ## A computer-vs-computer match with the servo stepped by the game, printing its result
@@ -150,15 +149,28 @@ func _switch_to_node(node: Node) -> void:
 
 # Play again: a new Pong screen with the same settings, straight into the match.
 func _replay_pong(previous: PongScreen) -> void:
-	var pong: PongScreen = PONG_SCENE.instantiate() as PongScreen
+	var pong: PongScreen = _new_pong()
 	pong.skip_setup = true
 	pong.mode = previous.mode
 	pong.beginner = previous.beginner
 	pong.start_health = previous.start_health
 	pong.stepped = previous.stepped
+	_switch_to_node(pong)
+
+
+func _new_pong() -> PongScreen:
+	var pong: PongScreen = PONG_SCENE.instantiate() as PongScreen
 	pong.menu_requested.connect(show_menu)
 	pong.play_again_requested.connect(_replay_pong.bind(pong))
-	_switch_to_node(pong)
+	pong.network_requested.connect(_open_pong_lobby.bind(pong))
+	return pong
+
+
+func _open_pong_lobby(seats: int, pong: PongScreen) -> void:
+	var lobby: PongLobby = PONG_LOBBY_SCENE.instantiate() as PongLobby
+	lobby.back_requested.connect(lobby.queue_free)
+	pong.cover_setup(lobby)
+	lobby.choose_seats(seats)
 
 
 func _on_autopilot_finished(_reason: String) -> void:

@@ -189,9 +189,10 @@ func _act_on_bodies(delta: float) -> void:
 		if n.y > 0.0:
 			# The body lies on the sub: carry the share of its weight that water does not,
 			# and cancel its approach so it comes to rest on the hull.
+			# A floating body (a crate in water) says how much of its weight water holds up.
 			var lift: float = 0.0
-			if body is Crate:
-				lift = (body as Crate).buoyancy
+			if &"buoyancy" in body:
+				lift = body.get(&"buoyancy")
 			var weight: float = body.mass * _gravity * body.gravity_scale * maxf(0.0, 1.0 - lift)
 			var approach: float = maxf(0.0, (body.linear_velocity - velocity).dot(n))
 			body.apply_central_force(

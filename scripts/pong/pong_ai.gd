@@ -108,7 +108,9 @@ func get_plan() -> Contact:
 	return _plan
 
 
-func update(now: float, dt: float, snapshot: PongSnapshot, opponent_avatar: Vector3) -> PongIntent:
+func update(
+	now: float, dt: float, snapshot: HapticPongState, opponent_avatar: Vector3
+) -> PongIntent:
 	return decide(now, dt, snapshot.ball_position, snapshot.ball_velocity, opponent_avatar)
 
 

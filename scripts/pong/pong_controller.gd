@@ -17,7 +17,7 @@ var speed_factor: float = 1.0
 ## This update's decision, [param dt] seconds at time [param now], from the newest servo
 ## state; [param opponent_avatar] is where the other player stands.
 func update(
-	_now: float, _dt: float, _snapshot: PongSnapshot, _opponent_avatar: Vector3
+	_now: float, _dt: float, _snapshot: HapticPongState, _opponent_avatar: Vector3
 ) -> PongIntent:
 	return intent
 

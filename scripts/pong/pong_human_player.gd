@@ -106,7 +106,7 @@ func handle_input(event: InputEvent, viewport_size: Vector2) -> void:
 		hand.z = clampf(hand.z, -1.0, 1.0)
 
 
-func update(_now: float, dt: float, _snapshot: PongSnapshot, _opponent: Vector3) -> PongIntent:
+func update(_now: float, dt: float, _snapshot: HapticPongState, _opponent: Vector3) -> PongIntent:
 	intent.fire = _take("fire")
 	intent.place_mine = _take("mine")
 	if _take("spin"):

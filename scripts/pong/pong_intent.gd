@@ -3,7 +3,7 @@ extends RefCounted
 ## What one player does this update, whoever decides it (the person at the device, the
 ## keyboard player, the computer): where the avatar is, the paddle (for a kinematic
 ## paddle), the modes, and the one-shot actions. The match turns it into the player's
-## part of [code]set_pong_input[/code].
+## part of the servo's input ([method to_input]).
 
 ## The avatar (the workspace centre), world metres.
 var avatar: Vector3 = Vector3.ZERO
@@ -29,15 +29,15 @@ var pose_age_s: float = 0.0
 
 ## The player's entry of the servo's input: [param kinematic] when the game moves the
 ## paddle (the offset and velocity are then sent).
-func to_input(kinematic: bool) -> Dictionary:
-	return {
-		"avatar": avatar,
-		"kinematic": kinematic,
-		"paddle_offset": paddle_offset if kinematic else Vector3.ZERO,
-		"paddle_velocity": paddle_velocity if kinematic else Vector3.ZERO,
-		"normal": normal,
-		"spin": spin,
-		"gun": gun,
-		"active": true,
-		"pose_age_s": pose_age_s if kinematic else 0.0,
-	}
+func to_input(kinematic: bool) -> HapticPongPlayerInput:
+	var entry: HapticPongPlayerInput = HapticPongPlayerInput.new()
+	entry.avatar = avatar
+	entry.kinematic = kinematic
+	if kinematic:
+		entry.paddle_offset = paddle_offset
+		entry.paddle_velocity = paddle_velocity
+		entry.pose_age_s = pose_age_s
+	entry.normal = normal
+	entry.spin = spin
+	entry.gun = gun
+	return entry

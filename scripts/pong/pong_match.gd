@@ -5,7 +5,8 @@ extends Node
 ## the events (floor bounces cost health, paddle contacts end the computer's swing), moves
 ## the bullets, sets mines off, asks each player's controller what it does, fires, places
 ## mines, serves when due, and hands the servo the input. The ball itself is only ever in
-## the servo.
+## the servo. Its hold on the servo is a [PongServoLink]; what the weapons make the player
+## at the device feel, a [PongHandFeedback].
 ##
 ## Real time: one update per rendered frame, the servo thread at 1 kHz. [member stepped]:
 ## the servo thread is stopped and each physics frame runs updates of
@@ -34,8 +35,6 @@ enum Mode { VS_COMPUTER, TWO_PLAYERS, DEMO }
 
 const STEP_CHUNK_S: float = 0.01
 const STEP_BUDGET_MS: float = 14.0
-## Peak of a mine's rumble on the hand, newtons.
-const MINE_RUMBLE_N: float = 1.2
 
 @export var mode: Mode = Mode.VS_COMPUTER
 @export var beginner: bool = false
@@ -72,34 +71,28 @@ var controllers: Array[PongController] = []
 ## The player on the device (0), or -1 when no paddle is the device's.
 var local_player: int = -1
 ## The newest servo state.
-var snapshot: PongSnapshot = PongSnapshot.new()
+var snapshot: HapticPongState = HapticPongState.new()
 ## Match time, seconds (simulated time in stepped mode).
 var now: float = 0.0
 ## The paddle's reach from the avatar: the device workspace radius times the scale.
 var reach: float = 0.0
 
 var _started: bool = false
+var _servo: PongServoLink = PongServoLink.new()
+var _feedback: PongHandFeedback = null
 var _device_orientation: bool = false
-var _telemetry_stride: int = 0
-var _telemetry_total: int = -1
-var _telemetry_capacity: int = 0
-var _stopped_servo: bool = false
 var _wall_start_us: int = 0
-var _paused_ball: PongSnapshot = null
-var _previous_players: int = -1
+var _paused_ball: HapticPongState = null
 
 
 ## Sets the match up and starts it; false (and nothing changes) without the Pong renderer.
 func start() -> bool:
 	if not Haptics.pong.is_available():
 		return false
-	var configured_count: float = Haptics.pong.get_config().get("players", 2.0)
-	var configured: int = roundi(configured_count)
-	if configured != players:
-		if not Haptics.pong.configure({"players": players}):
-			return false
-		_previous_players = configured
+	if not _servo.claim_court(players):
+		return false
 	court = PongCourt.from_config(Haptics.pong.get_config())
+	_feedback = PongHandFeedback.new(court)
 	effects.ramp_s = court.number("mine_effect_ramp_s")
 	rules = PongRules.new(start_health, court.players)
 	rules.health_changed.connect(health_changed.emit)
@@ -109,25 +102,14 @@ func start() -> bool:
 	var radius: float = Haptics.device.get_workspace_radius()
 	reach = radius * court.workspace_scale
 	effects.reach = reach
-	local_player = 0 if mode != Mode.DEMO and _device_usable() else -1
-	_device_orientation = Haptics.device.get_capabilities().get("has_orientation", false) == true
+	local_player = 0 if mode != Mode.DEMO and _servo.device_usable() else -1
+	_device_orientation = _servo.device_has_orientation()
 	controllers.clear()
 	for player: int in court.players:
 		controllers.append(_make_controller(player, radius))
 	_retarget()
-	Haptics.hand_follows_input = false
-	Haptics.pong.enter()
-	if stepped and Haptics.servo.is_running():
-		Haptics.servo.stop()
-		_stopped_servo = true
-	Haptics.pong.clear_effects()
-	Haptics.pong.drain_events()
+	_servo.enter(stepped)
 	Haptics.pong.set_ball(Vector3(0.0, court.ball_radius, 0.0), Vector3.ZERO)
-	var columns: PackedStringArray = Haptics.servo.get_telemetry_columns()
-	_telemetry_stride = columns.size()
-	_telemetry_total = columns.find("total_x")
-	_telemetry_capacity = Haptics.get_constant(&"TELEMETRY_QUEUE_CAPACITY")
-	Haptics.servo.drain_telemetry(_telemetry_capacity)
 	_send_input()
 	_wall_start_us = Time.get_ticks_usec()
 	_started = true
@@ -135,15 +117,8 @@ func start() -> bool:
 
 
 func _exit_tree() -> void:
-	if not _started:
-		return
-	Haptics.pong.set_hand_target_3d(Vector3.ZERO)
-	Haptics.pong.leave()
-	if _previous_players > 0:
-		Haptics.pong.configure({"players": _previous_players})
-	Haptics.hand_follows_input = true
-	if _stopped_servo:
-		Haptics.servo.start()
+	if _started:
+		_servo.leave()
 
 
 func _notification(what: int) -> void:
@@ -196,7 +171,7 @@ func run_until(condition: Callable, max_s: float) -> bool:
 ## of stepped mode).
 func advance(dt: float) -> void:
 	now += dt
-	snapshot = PongSnapshot.from_state(Haptics.pong.get_state())
+	snapshot = Haptics.pong.get_state()
 	for event: Dictionary in Haptics.pong.drain_events():
 		_on_event(event)
 	effects.advance(dt)
@@ -238,12 +213,7 @@ func speed_ratio() -> float:
 ## about 40 ms and falls between frames), else the newest state's.
 func take_peak_force() -> float:
 	var peak: float = snapshot.total_force().length()
-	if stepped or _telemetry_total < 0 or not Haptics.servo.is_running():
-		return peak
-	var samples: PackedFloat32Array = Haptics.servo.drain_telemetry(_telemetry_capacity)
-	for i: int in range(_telemetry_total, samples.size() - 2, _telemetry_stride):
-		peak = maxf(peak, Vector3(samples[i], samples[i + 1], samples[i + 2]).length())
-	return peak
+	return peak if stepped else _servo.peak_force(peak)
 
 
 ## The avatar of [param player].
@@ -295,13 +265,6 @@ func _make_controller(player: int, radius: float) -> PongController:
 	return controller
 
 
-func _device_usable() -> bool:
-	if Haptics.device.get_id().is_empty() or Haptics.device.is_lost():
-		return false
-	var input_dof: int = Haptics.device.get_capabilities().get("input_dof", 0)
-	return input_dof >= 3
-
-
 func _on_event(event: Dictionary) -> void:
 	var hurt: int = rules.apply_event(event, court, beginner) if rules_from_events else -1
 	if hurt >= 0 and beginner and str(event.get("type", "")) == "wall":
@@ -322,13 +285,7 @@ func _move_bullets(dt: float) -> void:
 		if not weapon_referee.judges(victim):
 			continue
 		if victim == local_player:
-			Haptics.pong.apply_effect(
-				victim,
-				"hit",
-				court.number("hit_force_n"),
-				court.number("hit_duration_s"),
-				direction
-			)
+			_feedback.hit(victim, direction)
 		var shooter: int = hit["owner"]
 		var shot: int = hit["id"]
 		weapon_referee.hurt(rules, victim, PongRules.CAUSE_BULLET, shooter, shot)
@@ -346,27 +303,9 @@ func _check_mines() -> void:
 		if mine.kind != "none" and player != local_player:
 			effects.start(player, mine.kind, duration, mine.owner)
 		if player == local_player:
-			Haptics.pong.rumble(MINE_RUMBLE_N, 0.35)
-			if mine.kind != "none":
-				Haptics.pong.apply_effect(
-					player,
-					mine.kind,
-					_effect_magnitude(mine.kind),
-					duration,
-					Vector3.ZERO,
-					mine.owner
-				)
+			_feedback.mine(player, mine.kind, duration, mine.owner)
 		weapon_referee.hurt(rules, player, PongRules.CAUSE_MINE, mine.owner, mine.id)
 		mine_exploded.emit(mine, player)
-
-
-func _effect_magnitude(kind: String) -> float:
-	match kind:
-		"heavy":
-			return court.number("heavy_force_n")
-		"remote":
-			return court.number("remote_max_force_n")
-	return 0.0
 
 
 func _decide(dt: float) -> void:
@@ -395,21 +334,17 @@ func _fire(player: int) -> void:
 	if bullet == null:
 		return
 	if player == local_player:
-		Haptics.pong.apply_effect(
-			player,
-			"recoil",
-			court.number("recoil_force_n"),
-			court.number("recoil_duration_s"),
-			-axis.normalized()
-		)
+		_feedback.recoil(player, axis)
 	bullet_fired.emit(bullet)
 
 
 func _send_input() -> void:
-	var entries: Array[Dictionary] = []
+	var input: HapticPongInput = HapticPongInput.new()
+	input.beginner = beginner
+	input.local_player = local_player
 	for player: int in court.players:
 		var controller: PongController = controllers[player]
-		var entry: Dictionary = controller.intent.to_input(controller.kinematic)
+		var entry: HapticPongPlayerInput = controller.intent.to_input(controller.kinematic)
 		if controller.kinematic:
 			var effect_owner: int = effects.owner_of(player)
 			var owner_offset: Vector3 = Vector3.ZERO
@@ -421,12 +356,12 @@ func _send_input() -> void:
 				owner_offset = controllers[effect_owner].intent.paddle_offset
 			elif effect_owner >= 0:
 				owner_offset = snapshot.paddle_centers[effect_owner] - avatar_of(effect_owner)
-			entry["paddle_offset"] = effects.affect_offset(
+			entry.paddle_offset = effects.affect_offset(
 				player, controller.intent.paddle_offset, owner_offset
 			)
-		entry["active"] = _paused_ball == null and not rules.is_out(player)
-		entries.append(entry)
-	Haptics.pong.set_input({"beginner": beginner, "local_player": local_player, "players": entries})
+		entry.active = _paused_ball == null and not rules.is_out(player)
+		input.players.append(entry)
+	Haptics.pong.set_input(input)
 
 
 func _on_match_over(winner: int) -> void:

@@ -13,7 +13,8 @@ extends RigidBody2D
 @export var impact_threshold: float = 70.0
 
 ## Upward buoyant force on the crate as a fraction of its weight, set each physics tick by
-## the [WaterVolume] it floats in (0 in air). Whoever holds the crate up carries the rest.
+## the [WaterVolume] it floats in (0 in air). Whoever holds the crate up carries the rest
+## (the player reads this property by name, whatever the body).
 var buoyancy: float = 0.0
 
 var _last_velocity: Vector2 = Vector2.ZERO

@@ -19,8 +19,6 @@ const LEGEND_ORDER: Array[String] = [
 const DIAGRAM_ZOOM: float = 2.0
 ## Seconds between refreshes of the text labels.
 const LABEL_PERIOD: float = 0.25
-## Scale used while no device reports a force limit (the Touch / Omni peak), newtons.
-const FALLBACK_MAX_FORCE: float = 3.3
 
 ## Poll the haptics every frame (off in tests, which feed [method show_forces]).
 @export var live: bool = true
@@ -50,8 +48,7 @@ var _label_timer: float = 0.0
 func _ready() -> void:
 	_build_legend()
 	_ignore_mouse(self)
-	var max_force: float = Haptics.device.get_max_force()
-	set_max_force(max_force if max_force > 0.0 else FALLBACK_MAX_FORCE)
+	set_max_force(ForcePlot.full_scale(Haptics.device.get_max_force()))
 	set_run_info(0.0, 0, -1)
 	_refresh_labels()
 
@@ -127,7 +124,7 @@ func get_legend_value(component: String) -> Label:
 
 
 ## The HUD's servo line while the servo runs: its rate, period p99 and which real-time
-## techniques it was granted ([method HapticsServer.get_stats]): the SCHED_FIFO priority, locked
+## techniques it was granted ([method HapticsServo.get_stats]): the SCHED_FIFO priority, locked
 ## memory, the CPU latency held, the pinned CPU, the spin before each deadline.
 static func servo_running_text(rate_hz: float, stats: Dictionary) -> String:
 	var p99_ms: float = stats.get("period_p99_ms", 0.0)

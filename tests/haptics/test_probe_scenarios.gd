@@ -64,7 +64,7 @@ func _projection(input: Vector2, normal: Vector2) -> Vector2:
 
 
 func _contact_normal() -> Vector2:
-	var contacts: Array = probe.last_frame.get("contacts", [])
+	var contacts: Array = probe.last_frame.to_dictionary().get("contacts", [])
 	assert_gt(contacts.size(), 0, "the probe reports a contact")
 	if contacts.is_empty():
 		return Vector2.ZERO
@@ -91,7 +91,7 @@ func test_the_force_scale_reaches_a_wall_without_any_material() -> void:
 	assert_true(server.set_config("safety", {"force_scale": 0.5}))
 	_hand(Vector2.RIGHT)
 	await _run_frames(200)
-	var contacts: Array = probe.last_frame["contacts"]
+	var contacts: Array = probe.last_frame.to_dictionary()["contacts"]
 	var first: Dictionary = contacts[0]
 	assert_false(first.has("stiffness_n"), "the frame names no material")
 	var i: Vector2 = server.get_input_vector()
@@ -135,7 +135,7 @@ func test_sliding_along_the_floor_feels_friction_against_the_motion() -> void:
 func test_no_contact_means_no_continuous_force() -> void:
 	_hand(Vector2(0.3, -0.2))
 	await _run_frames(10)
-	var contacts: Array = probe.last_frame["contacts"]
+	var contacts: Array = probe.last_frame.to_dictionary()["contacts"]
 	assert_eq(contacts.size(), 0)
 	assert_almost_eq(server.get_forces()["continuous"], Vector2.ZERO, 1e-5)
 
@@ -222,7 +222,7 @@ func test_water_drags_against_motion_and_pulls_down_until_left() -> void:
 	var inside_inertia: Vector2 = Vector2.ZERO
 	for frame: int in 150:
 		await _run_frames(1)
-		var water: Dictionary = probe.last_frame.get("water", {})
+		var water: Dictionary = probe.last_frame.to_dictionary().get("water", {})
 		if water.get("inside", false) and inside_drag == Vector2.ZERO and player.velocity.x > 50.0:
 			inside_drag = server.get_forces()["drag"]
 			inside_inertia = server.get_forces()["inertia"]
@@ -251,7 +251,7 @@ func test_the_probe_works_on_a_rigid_body_too() -> void:
 	ball.add_child(ball_probe)
 	room.add_child(ball)
 	await _run_frames(100)
-	var contacts: Array = ball_probe.last_frame["contacts"]
+	var contacts: Array = ball_probe.last_frame.to_dictionary()["contacts"]
 	assert_gt(contacts.size(), 0, "resting on the floor")
 	if not contacts.is_empty():
 		var first: Dictionary = contacts[0]

@@ -143,7 +143,7 @@ func _run_to_wall(frames: int) -> int:
 
 
 func _has_normal(normal: Vector2) -> bool:
-	for contact: Dictionary in probe.last_frame.get("contacts", []):
+	for contact: Dictionary in probe.last_frame.to_dictionary().get("contacts", []):
 		var contact_normal: Vector2 = contact["normal"]
 		if contact_normal.distance_to(normal) < 0.01:
 			return true
@@ -252,7 +252,7 @@ func test_a_tile_takes_its_material_from_the_tile_set_custom_data() -> void:
 	var found: Dictionary = {}
 	for frame: int in 150:
 		await _frame()
-		for contact: Dictionary in probe.last_frame.get("contacts", []):
+		for contact: Dictionary in probe.last_frame.to_dictionary().get("contacts", []):
 			found[contact["normal"]] = contact
 	var wall: Dictionary = found.get(Vector2.LEFT, {})
 	var ground: Dictionary = found.get(Vector2.UP, {})
@@ -273,7 +273,7 @@ func test_a_flipped_alternative_tile_feels_like_its_base_tile_unless_given_its_o
 		layer.set_cell(Vector2i(WALL_COLUMN, row), 0, Vector2i(1, 0), alternative)
 	assert_gt(await _run_to_wall(150), -1, "the runner reached the flipped wall")
 	var wall: Dictionary = {}
-	for contact: Dictionary in probe.last_frame.get("contacts", []):
+	for contact: Dictionary in probe.last_frame.to_dictionary().get("contacts", []):
 		if contact["normal"] == Vector2.LEFT:
 			wall = contact
 	assert_almost_eq(wall.get("stiffness_n", 0.0), material.stiffness, 1e-6, "the base tile's")
@@ -297,7 +297,7 @@ func test_a_physics_material_stands_in_when_no_haptic_material_is_given() -> voi
 	probe.default_material = null
 	await _frame()
 	await _frame()
-	var contacts: Array = probe.last_frame.get("contacts", [])
+	var contacts: Array = probe.last_frame.to_dictionary().get("contacts", [])
 	assert_eq(contacts.size(), 1, "standing on the floor")
 	if contacts.size() == 1:
 		var contact: Dictionary = contacts[0]

@@ -46,6 +46,9 @@ class Peer:
     # What runs it, before the "--" and the game's arguments: the source tree's engine, or an
     # exported build's launcher.
     command: tuple[str, ...] = (str(GODOT), "--headless", "--path", str(ROOT))
+    # A scene of the source tree to run instead of the game's main scene (a test peer such
+    # as tests/net/rogue_peer.tscn); empty: the game.
+    scene: str = ""
     proc: subprocess.Popen | None = None
     report: dict = field(default_factory=dict)
 
@@ -60,7 +63,8 @@ class Peer:
     def start(self) -> None:
         with open(self.log_path, "w") as log:
             self.proc = subprocess.Popen(
-                [*self.command, "--", *self.args, f"--pong-net-report={self.report_path}"],
+                [*self.command, *([self.scene] if self.scene else []), "--", *self.args,
+                 f"--pong-net-report={self.report_path}"],
                 stdout=log, stderr=subprocess.STDOUT, cwd=ROOT,
             )
 
@@ -177,12 +181,13 @@ def workspace():
 
 def run_match(workdir: Path, peers: int, network: Network, seconds: float,
               host_args: tuple[str, ...] = (), client_args: tuple[tuple[str, ...], ...] = (),
-              dedicated: bool = False, on_running=None,
+              client_scenes: tuple[str, ...] = (), dedicated: bool = False, on_running=None,
               force_relay: bool = False, seed: int = 1,
               server_command: tuple[str, ...] = ()) -> tuple[list[Peer], dict]:
     """Starts a host (or a dedicated server) and the clients, through one relay when the
     network is impaired, waits for all to exit; returns the peers (reports loaded) and the
-    relay's counts. [on_running](peers) runs once every client is connected; [seed] picks
+    relay's counts. [client_scenes][i] runs client i as that scene (see Peer.scene) with the
+    same arguments. [on_running](peers) runs once every client is connected; [seed] picks
     the relay's drop and delay sequence; [server_command] runs the dedicated server from an
     exported build instead of the source tree."""
     port = free_udp_port()
@@ -211,7 +216,8 @@ def run_match(workdir: Path, peers: int, network: Network, seconds: float,
         for i in range(clients):
             extra = client_args[i] if i < len(client_args) else ()
             peer = Peer(f"client{i + 1}", ["--pong-net=join", f"--port={target}",
-                                           f"--name=client{i + 1}", *common, *extra], workdir)
+                                           f"--name=client{i + 1}", *common, *extra], workdir,
+                        scene=client_scenes[i] if i < len(client_scenes) else "")
             peer.start()
             started.append(peer)
         if on_running is not None:

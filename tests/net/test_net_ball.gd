@@ -28,7 +28,7 @@ func test_a_correction_outside_the_court_lands_inside_it() -> void:
 		var outside: Vector3 = Vector3(court.half_width + 0.5, -0.2, -court.half_length - 0.44)
 		ball.put(outside, Vector3(0.0, 0.0, -1.0), Vector3.ZERO)
 		match_node.run_until(func() -> bool: return false, 0.002)
-		var at: Vector3 = Haptics.pong.get_state()["ball"]["position"]
+		var at: Vector3 = Haptics.pong.get_state().ball_position
 		var r: float = court.ball_radius
 		assert_almost_eq(at.y, r, 0.05, "%d players: on the floor, not under it" % players)
 		assert_lt(absf(at.x), court.half_width, "%d players: inside the side wall" % players)

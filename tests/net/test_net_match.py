@@ -41,6 +41,8 @@ DIVERGENCE_P99_M = {
 # each way once ENet has measured it; its first estimates run high), plus a ping interval.
 DETECTION_BOUND_S = 6.0
 CONTACT_TOLERANCE = 0.10
+# The misbehaving peer (a test tool: not part of the game or its exports).
+ROGUE_SCENE = "res://tests/net/rogue/rogue_peer.tscn"
 RALLY_SECONDS = 12
 
 
@@ -181,8 +183,7 @@ def test_killed_peer_is_taken_over_by_the_computer() -> None:
 
 def test_bad_messages_are_dropped_and_the_game_goes_on() -> None:
     with workspace() as work:
-        peers, _ = run_match(work, 2, NETWORKS["lan"], 6,
-                             client_args=(("--pong-net-rogue",),))
+        peers, _ = run_match(work, 2, NETWORKS["lan"], 6, client_scenes=(ROGUE_SCENE,))
         host = peers[0]
         assert host.report["exit_code"] == 0, host.log()
         refused = host.report["refused"]
@@ -196,7 +197,7 @@ def test_bad_messages_are_dropped_and_the_game_goes_on() -> None:
                        "seat 0 is not theirs", "only the server issues them",
                        "was not the master at epoch", "dropped hand-off request",
                        "cause xxxxxxxx", "owners from peer",
-                       # Weapons (PongNetRogue._attack_weapons).
+                       # Weapons (rogue_peer.gd, _attack_weapons).
                        "origin (99.0, 99.0, 99.0) is out of range", "is not after",
                        "after its last shot", "mine position is a String",
                        "is not mine 2's, remote", "is not theirs to judge",

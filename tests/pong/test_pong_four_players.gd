@@ -125,8 +125,7 @@ func test_a_four_computer_match_ends_with_one_winner() -> void:
 	add_child(_pong)
 	var match_node: PongMatch = _pong.match_node
 	assert_eq(match_node.court.players, 4)
-	var paddles: Array = Haptics.pong.get_state()["players"]
-	assert_eq(paddles.size(), 4, "the servo has four paddles")
+	assert_eq(Haptics.pong.get_state().players, 4, "the servo has four paddles")
 	var outs: Array[int] = []
 	match_node.player_out.connect(func(player: int) -> void: outs.append(player))
 	var territories: Dictionary = {}

@@ -178,7 +178,7 @@ func _saw(type: String, player: int) -> bool:
 
 
 func _ball_in(territory: int) -> bool:
-	var state: PongSnapshot = PongSnapshot.from_state(Haptics.pong.get_state())
+	var state: HapticPongState = Haptics.pong.get_state()
 	return PongCourt.territory_of(state.ball_position) == territory
 
 
@@ -193,4 +193,4 @@ func _count(type: String, key: String, value: int) -> int:
 
 
 func _servo_effect(kind: String) -> Dictionary:
-	return PongSnapshot.from_state(Haptics.pong.get_state()).effect(kind)
+	return Haptics.pong.get_state().effect(kind)

@@ -5,7 +5,7 @@ extends TestSuite
 ## setup, the pause menu's Quit to menu) leaving the servo as it was.
 
 const MAIN_SCENE: PackedScene = preload("res://scenes/main/main.tscn")
-const PONG_SCENE: PackedScene = preload("res://scenes/pong/pong.tscn")
+const PONG_SCENE: PackedScene = preload("res://scenes/pong/ui/pong.tscn")
 
 var _main: Main = null
 var _mode_before: StringName = &""
@@ -43,7 +43,9 @@ func test_the_menu_entry_opens_the_setup_and_escape_goes_back() -> void:
 
 func test_the_network_lobby_starts_with_the_setup_court() -> void:
 	for players: int in [4, 2]:
-		var pong: PongScreen = add_child_autofree(PONG_SCENE.instantiate()) as PongScreen
+		# The main scene opens the lobby (it is above Pong).
+		_main.show_pong()
+		var pong: PongScreen = _main.get_screen() as PongScreen
 		await wait_process_frames(1)
 		pong.setup.four_players_check.button_pressed = players == 4
 		pong.setup.network_button.pressed.emit()
@@ -54,8 +56,8 @@ func test_the_network_lobby_starts_with_the_setup_court() -> void:
 		assert_eq(lobby.chosen_seats(), players, "the setup's court is the lobby's seats")
 		assert_false(pong.setup.visible, "the lobby replaces the setup")
 		lobby.back_requested.emit()
-		pong.queue_free()
 		await wait_process_frames(2)
+		assert_true(pong.setup.visible, "Back shows the setup again")
 
 
 func test_a_real_time_match_serves_and_quitting_restores_the_servo() -> void:
@@ -81,16 +83,16 @@ func test_a_real_time_match_serves_and_quitting_restores_the_servo() -> void:
 	match_node.auto_serve = false
 	Haptics.pong.set_ball(Vector3(-1.0, 2.0, 1.5), Vector3.ZERO)
 	await wait_until(func() -> bool: return match_node.snapshot.ball_position.y > 1.9, 2.0)
-	var caught: PongSnapshot = match_node.snapshot
+	var caught: HapticPongState = match_node.snapshot
 	pong.pause_menu.open()
 	assert_true(get_tree().paused)
 	await wait_seconds(0.6)
-	var resumed_at: float = PongSnapshot.from_state(Haptics.pong.get_state()).time_s
+	var resumed_at: float = Haptics.pong.get_state().time_s
 	pong.pause_menu.close()
 	await wait_process_frames(1)
 	# Put back after resumed_at, it has fallen at most since then (the frame's length,
 	# whatever the load); left alone it fell for the whole pause and bounces below 1.5 m.
-	var now: PongSnapshot = PongSnapshot.from_state(Haptics.pong.get_state())
+	var now: HapticPongState = Haptics.pong.get_state()
 	var fall: float = now.time_s - resumed_at
 	var lowest: float = (
 		caught.ball_position.y

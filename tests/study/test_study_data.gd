@@ -35,7 +35,7 @@ const STUDY_SCRIPTS: PackedStringArray = [
 	"res://scripts/study/trials/study_probe.gd",
 	"res://scripts/study/trials/trial_flow.gd",
 	"res://scripts/study/trials/trial_recorder.gd",
-	"res://scripts/study/trials/trial_result.gd",
+	"res://scripts/study/data/trial_result.gd",
 	"res://tests/study/study_test_support.gd",
 	"res://tests/study/tour/study_tour.gd",
 ]

@@ -6,7 +6,7 @@ extends TestSuite
 ## and nothing is changed; invalid settings stop the study with a message.
 
 const Support := preload("res://tests/study/study_test_support.gd")
-const STUDY_SCENE: PackedScene = preload("res://scenes/study/study.tscn")
+const STUDY_SCENE: PackedScene = preload("res://scenes/study/session/study.tscn")
 
 var _root: String = ""
 
@@ -27,7 +27,7 @@ func test_a_scripted_participant_completes_the_study() -> void:
 	var recorded: Array[TrialResult] = []
 	study.trial_recorded.connect(func(result: TrialResult) -> void: recorded.append(result))
 	var done: bool = await wait_until(
-		func() -> bool: return study.phase == StudyRunner.Phase.DONE, 60.0
+		func() -> bool: return study.phase == StudySession.Phase.DONE, 60.0
 	)
 	if not assert_true(done, "the session ends (phase %d)" % study.phase):
 		return
@@ -63,7 +63,7 @@ func test_a_duplicate_id_is_refused() -> void:
 	var before: String = FileAccess.get_file_as_string(store.path_of("participant.json"))
 	var study: StudyRunner = _study("P02")
 	await wait_process_frames(5)
-	assert_eq(study.phase, StudyRunner.Phase.START, "the study does not start")
+	assert_eq(study.phase, StudySession.Phase.START, "the study does not start")
 	var screen: StartScreen = study.get_screen() as StartScreen
 	assert_has(screen.problem_label.text, "P02 already has data")
 	assert_has(screen.problem_label.text, "Resume participant")
@@ -91,7 +91,7 @@ func test_a_truncated_ratings_file_is_reported_at_resume() -> void:
 	expect_error("P03/ratings.csv:3: truncated record")
 	var study: StudyRunner = _study("P03", true)
 	await wait_process_frames(5)
-	assert_eq(study.phase, StudyRunner.Phase.START, "the session is not resumed")
+	assert_eq(study.phase, StudySession.Phase.START, "the session is not resumed")
 	var screen: StartScreen = study.get_screen() as StartScreen
 	assert_has(screen.problem_label.text, "Cannot resume P03")
 	assert_has(screen.problem_label.text, "P03/ratings.csv:3: truncated record")
@@ -110,7 +110,7 @@ func test_invalid_settings_stop_the_study_with_a_message() -> void:
 	expect_error("trials_per_condition")
 	var study: StudyRunner = _study("P04")
 	await wait_process_frames(3)
-	assert_eq(study.phase, StudyRunner.Phase.STOPPED)
+	assert_eq(study.phase, StudySession.Phase.STOPPED)
 	var screen: MessageScreen = study.get_screen() as MessageScreen
 	if assert_not_null(screen, "a message explains why"):
 		assert_has(screen.body.text, "trials_per_condition")
@@ -138,10 +138,10 @@ func test_several_trials_per_condition_count_their_indices() -> void:
 	set_timeout(30.0)
 	_write_root_config('{"trials_per_condition": 2}')
 	var study: StudyRunner = _study("P07")
-	var phases: Array[StudyRunner.Phase] = []
-	study.phase_changed.connect(func(phase: StudyRunner.Phase) -> void: phases.append(phase))
+	var phases: Array[StudySession.Phase] = []
+	study.phase_changed.connect(func(phase: StudySession.Phase) -> void: phases.append(phase))
 	var rated: bool = await wait_until(
-		func() -> bool: return StudyRunner.Phase.RATING in phases, 20.0
+		func() -> bool: return StudySession.Phase.RATING in phases, 20.0
 	)
 	if not assert_true(rated, "the first condition's rating comes after its trials"):
 		return
@@ -160,7 +160,7 @@ func test_latin_square_orders_follow_the_participants_in_the_folder() -> void:
 		assert_true(StudyStore.new(_root, id).create({"participant_id": id}))
 	var study: StudyRunner = _study("A3")
 	var started: bool = await wait_until(
-		func() -> bool: return study.phase == StudyRunner.Phase.PRACTICE, 5.0
+		func() -> bool: return study.phase == StudySession.Phase.PRACTICE, 5.0
 	)
 	assert_true(started)
 	var meta: Dictionary = Support.json_of(_root.path_join("A3/participant.json"))
@@ -176,12 +176,12 @@ func test_leaving_the_study_gives_back_the_haptics_settings() -> void:
 	var model: String = Haptics.get_choice("force_model", "contact_model")
 	var study: StudyRunner = _study("P06")
 	var in_trial: bool = await wait_until(
-		func() -> bool: return study.phase == StudyRunner.Phase.TRIAL, 15.0
+		func() -> bool: return study.phase == StudySession.Phase.TRIAL, 15.0
 	)
 	assert_true(in_trial, "a trial runs")
 	assert_false(Haptics.hand_follows_input, "the scripted participant holds the hand")
 	var condition: String = study.current_condition()
-	if not ConditionRig.is_position_control(condition):
+	if not StudyFormat.is_position_control(condition):
 		assert_eq(Haptics.get_choice("force_model", "contact_model"), "paper_sum", condition)
 	study.queue_free()
 	await wait_process_frames(2)
@@ -236,7 +236,7 @@ func _check_trials(folder: String, order: PackedStringArray, recorded: Array[Tri
 		assert_eq(record["condition"], condition)
 		assert_eq(record["level"], "tiny_maze")
 		assert_eq(record["trial_index"], "0")
-		var model: String = "" if ConditionRig.is_position_control(condition) else "paper_sum"
+		var model: String = "" if StudyFormat.is_position_control(condition) else "paper_sum"
 		assert_eq(record["contact_model"], model, "%s: the server's contact model" % condition)
 		assert_eq(recorded[i].contact_model, model)
 		assert_eq(record["completed"], "1", "the autopilot reached the goal")

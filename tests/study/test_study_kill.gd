@@ -7,7 +7,7 @@ extends TestSuite
 ## the next unused index, and finishes the study.
 
 const Support := preload("res://tests/study/study_test_support.gd")
-const STUDY_SCENE: PackedScene = preload("res://scenes/study/study.tscn")
+const STUDY_SCENE: PackedScene = preload("res://scenes/study/session/study.tscn")
 ## Seconds the child's scripted participant keeps still at the start of each trial, so the
 ## kill lands mid-trial.
 const HOLD_SECONDS: float = 4.0
@@ -37,7 +37,7 @@ func test_a_session_killed_mid_trial_keeps_its_records_and_resumes() -> void:
 		"--quiet",
 		"--path",
 		ProjectSettings.globalize_path("res://"),
-		"res://scenes/study/study.tscn",
+		"res://scenes/study/session/study.tscn",
 		"--",
 		"--study-root=" + ProjectSettings.globalize_path(_root),
 		"--study-config=" + Support.TINY_CONFIG,
@@ -97,12 +97,12 @@ func _resume() -> bool:
 	study.scripted_participant = "PK"
 	study.scripted_resume = true
 	add_child_autofree(study)
-	var phases: Array[StudyRunner.Phase] = []
-	study.phase_changed.connect(func(phase: StudyRunner.Phase) -> void: phases.append(phase))
+	var phases: Array[StudySession.Phase] = []
+	study.phase_changed.connect(func(phase: StudySession.Phase) -> void: phases.append(phase))
 	var done: bool = await wait_until(
-		func() -> bool: return study.phase == StudyRunner.Phase.DONE, 40.0
+		func() -> bool: return study.phase == StudySession.Phase.DONE, 40.0
 	)
-	assert_false(StudyRunner.Phase.PRACTICE in phases, "a resumed session skips the practice")
+	assert_false(StudySession.Phase.PRACTICE in phases, "a resumed session skips the practice")
 	return done
 
 

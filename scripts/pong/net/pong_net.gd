@@ -17,7 +17,7 @@ signal match_started
 signal match_ended(winner: int, why: String)
 
 const NODE_NAME: String = "PongNet"
-const PONG_SCENE: PackedScene = preload("res://scenes/pong/pong.tscn")
+const PONG_SCENE: PackedScene = preload("res://scenes/pong/ui/pong.tscn")
 
 ## Seats of a match (territories): 2, or 4 on a square court. The server's choice, set
 ## before [method host]; a client takes the server's from the lobby.
@@ -61,8 +61,6 @@ func _init() -> void:
 func _process(delta: float) -> void:
 	if play.is_running():
 		play.frame(delta)
-	if screen != null and play.is_running() and session.is_server and not dedicated:
-		pass
 
 
 ## Hosts a game on [param port]; a player's host takes seat 0. "" or the error.
@@ -195,7 +193,7 @@ func _take_over(peer: int) -> void:
 	seats_changed()
 	var pending: bool = authority.master_peer == 0 or not authority.is_master()
 	if was_master or (pending and authority.owner_of(authority.territory) == 1):
-		var s: PongSnapshot = play.match_node.snapshot
+		var s: HapticPongState = play.match_node.snapshot
 		play.issue(
 			PongNetProtocol.TRANSFER_TAKEOVER,
 			s.territory,
@@ -356,28 +354,16 @@ func _ready_up(is_ready: Variant) -> void:
 @rpc("any_peer", "call_remote", "reliable", PongNetProtocol.CHANNEL_RELIABLE)
 func _lobby(rows: Variant, seat_count: Variant) -> void:
 	var sender: int = multiplayer.get_remote_sender_id()
-	if sender != PongNetAuthority.SERVER_ID or typeof(rows) != TYPE_ARRAY:
-		printerr("PongNet: dropped lobby from peer %d" % sender)
-		return
-	if typeof(seat_count) != TYPE_INT or not PongNetProtocol.SEAT_COUNTS.has(seat_count):
-		printerr(
-			"PongNet: dropped lobby from peer %d: %s seats" % [sender, str(seat_count).left(16)]
-		)
+	var reason: String = PongNetProtocol.check_lobby(rows, seat_count)
+	if sender != PongNetAuthority.SERVER_ID:
+		reason = "only the server sends it"
+	if not reason.is_empty():
+		printerr("PongNet: dropped lobby from peer %d: %s" % [sender, reason])
 		return
 	var table: Dictionary[int, Dictionary] = {}
 	var list: Array = rows
-	for row: Variant in list:
-		var r: Array = row if typeof(row) == TYPE_ARRAY else []
-		if r.size() != 4 or typeof(r[0]) != TYPE_INT or typeof(r[2]) != TYPE_INT:
-			printerr("PongNet: dropped a malformed lobby row from peer %d" % sender)
-			return
-		if typeof(r[3]) != TYPE_BOOL or not PongNetProtocol.check_name(r[1]).is_empty():
-			printerr("PongNet: dropped a malformed lobby row from peer %d" % sender)
-			return
-		if r[2] < 0 or r[2] >= seat_count:
-			printerr("PongNet: dropped a lobby row with seat %d from peer %d" % [r[2], sender])
-			return
-		table[r[0]] = {"name": r[1], "seat": r[2], "ready": r[3]}
+	for row: Array in list:
+		table[row[0]] = {"name": row[1], "seat": row[2], "ready": row[3]}
 	seats = seat_count
 	players = table
 	lobby_changed.emit()

@@ -24,17 +24,11 @@ var _commanded_time: float = 0.0
 ## Our ball now, [position, velocity, spin]: the last set_ball while the servo has not
 ## taken it yet, else the servo's state.
 func local() -> Array[Vector3]:
-	var state: Dictionary = Haptics.pong.get_state()
-	var time_s: float = state.get("time_s", 0.0)
-	if not _commanded.is_empty() and time_s < _commanded_time + 1.5 * HapticsPong.TICK_S:
+	var state: HapticPongState = Haptics.pong.get_state()
+	if not _commanded.is_empty() and state.time_s < _commanded_time + 1.5 * HapticsPong.TICK_S:
 		return _commanded
 	_commanded = []
-	var ball: Dictionary = state.get("ball", {})
-	return [
-		ball.get("position", Vector3.ZERO),
-		ball.get("velocity", Vector3.ZERO),
-		ball.get("spin", Vector3.ZERO)
-	]
+	return [state.ball_position, state.ball_velocity, state.ball_spin]
 
 
 ## Puts the ball there (a serve, a new master's start).
@@ -42,7 +36,7 @@ func put(position: Vector3, velocity: Vector3, spin: Vector3) -> void:
 	var inside: Vector3 = position
 	if court != null:
 		inside = court.clamp_inside(position, court.ball_radius)
-	_commanded_time = Haptics.pong.get_state().get("time_s", 0.0)
+	_commanded_time = Haptics.pong.get_state().time_s
 	_commanded = [inside, velocity, spin]
 	Haptics.pong.set_ball(inside, velocity, spin)
 

@@ -18,8 +18,7 @@ extends Node
 ## profile; remote: [PongNetRemoteMineScript], seat 1 steps on seat 0's remote mine and
 ## reports the coupling's work on its hand, [code]--pong-net-passivity=off[/code] without
 ## the passivity rule), [code]--pong-net-health=N[/code], [code]--pong-net-version=V[/code] (claim
-## another protocol version: refused), [code]--pong-net-rogue[/code] (send malformed and
-## unauthorised messages once the match runs), [code]--pong-net-weapon-rate=X[/code] (the
+## another protocol version: refused), [code]--pong-net-weapon-rate=X[/code] (the
 ## computer players fire and place mines X times as often: the weapons test),
 ## [code]--pong-net-realtime[/code] (headless
 ## too, run the servo thread at 1 kHz as a windowed game does, instead of stepping it).
@@ -37,13 +36,11 @@ var report_path: String = ""
 var seconds: float = 0.0
 var script_name: String = "rally"
 var peers_wanted: int = 2
-var rogue: bool = false
 var max_seconds: float = 0.0
 
 var _match_clock: float = -1.0
 var _seat: int = -1
 var _readied: bool = false
-var _rogue_rounds: int = 0
 var _profile: PongNetContactProfile = null
 var _remote: PongNetRemoteMineScript = null
 var _finishing: bool = false
@@ -87,7 +84,6 @@ func _launch() -> void:
 	seconds = _option("pong-net-seconds", "0").to_float()
 	script_name = _option("pong-net-script", "rally")
 	peers_wanted = _option("pong-net-peers", "2").to_int()
-	rogue = options.has("pong-net-rogue")
 	max_seconds = _option("pong-net-max-seconds", "0").to_float()
 	if max_seconds > 0.0:
 		get_tree().create_timer(max_seconds, true, false, true).timeout.connect(
@@ -151,10 +147,6 @@ func _process(delta: float) -> void:
 	if _match_clock < 0.0:
 		return
 	_match_clock += delta
-	# Three rounds: unreliable messages may be dropped by ENet's throttle in a burst.
-	if rogue and _rogue_rounds < 3 and _match_clock > 1.0 + 0.5 * _rogue_rounds:
-		_rogue_rounds += 1
-		PongNetRogue.attack(net)
 	if seconds > 0.0 and _match_clock >= seconds:
 		_finish(0, "time")
 

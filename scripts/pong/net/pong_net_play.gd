@@ -7,9 +7,10 @@ extends PongNetWire
 ## servo at 1 kHz whatever the latency (contact is never sent). Followers carry the
 ## received state forward to now and blend their ball onto it ([PongNetSmoother]). Each
 ## peer sends the poses of the paddles it drives; other peers' paddles are kinematic
-## inputs of the local servo ([PongNetRemotePlayer]). Health changes come from the peer
-## that saw them (the master for floor bounces) as reliable messages. Every received
-## message is checked ([PongNetProtocol]); a bad one is dropped with a log line.
+## inputs of the local servo ([PongNetPoses], [PongNetRemotePlayer]). Health changes come
+## from the peer that saw them (the master for floor bounces) as reliable messages. Every
+## received message is checked ([PongNetProtocol]); a bad one is dropped with a log line.
+## Messages are aged by [PongNetLatency].
 ##
 ## RPC surface: the same methods at the same path on every peer (/root/PongNet/Play).
 ## The play node lives as long as the session (RPCs may arrive before or after a match).
@@ -28,8 +29,6 @@ const CHUNK_S: float = PongMatch.STEP_CHUNK_S
 ## The streams send on each new servo state, at most this often (a headless or fast
 ## machine renders hundreds of frames a second), Hz.
 const MAX_STREAM_HZ: float = 125.0
-## Paddle speeds sent are capped here (a teleported avatar is not a swing), m/s.
-const MAX_SENT_PADDLE_SPEED_M_PER_S: float = 20.0
 
 var authority: PongNetAuthority = null
 var match_node: PongMatch = null
@@ -48,16 +47,14 @@ var max_chunks_per_frame: int = 10
 var serve_aim: Callable = Callable()
 
 var _predictor: PongPredictor = null
-var _clocks: Dictionary[int, PongNetClock] = {}
-# Each peer's one-way delay to the server, ms, as its ball states and poses last reported it.
-var _legs: Dictionary[int, int] = {}
+# Kept for the session: the servo clocks' offsets and the legs peers reported.
+var _latency: PongNetLatency = null
 var _seq: int = 0
 var _last_sent_time: float = -INF
 var _last_pose_time: float = -INF
 var _settle_until: float = 0.0
 var _owe_s: float = 0.0
 var _last_now: float = 0.0
-var _last_centers: Dictionary[int, Vector3] = {}
 var _running: bool = false
 ## The newest state taken since the last frame, carried to now: [position, velocity, spin].
 ## A stalled peer takes dozens at once; only the newest becomes a command to the servo
@@ -78,7 +75,10 @@ func begin(p_match: PongMatch, p_authority: PongNetAuthority, seats: PackedInt32
 	match_node.event_seen.connect(_on_event)
 	match_node.match_over.connect(_on_match_over)
 	report.begin(authority.my_id)
+	if _latency == null:
+		_latency = PongNetLatency.new(session)
 	weapons = PongNetWeapons.new(self, match_node, authority, _reject, _age_of)
+	poses = PongNetPoses.new(self, match_node, authority, report, _reject, _age_of)
 	report.extra["weapons"] = weapons.to_dict()
 	# The servo's clock may have started over with the match.
 	_last_sent_time = -INF
@@ -94,6 +94,7 @@ func end() -> void:
 	if weapons != null:
 		weapons.expire_pending(true)
 	weapons = null
+	poses = null
 
 
 func is_running() -> bool:
@@ -114,7 +115,7 @@ func frame(delta: float) -> void:
 		_owe_s = minf(_owe_s - chunks * CHUNK_S, CHUNK_S)
 		if chunks > 0:
 			match_node.run_until(func() -> bool: return false, (chunks - 0.5) * CHUNK_S)
-	var snapshot: PongSnapshot = match_node.snapshot
+	var snapshot: HapticPongState = match_node.snapshot
 	var sim_dt: float = match_node.now - _last_now
 	_last_now = match_node.now
 	if authority.my_id == PongNetAuthority.SERVER_ID:
@@ -129,33 +130,15 @@ func frame(delta: float) -> void:
 		_seq += 1
 		report.sent += 1
 		send_all(
-			&"_ball", [authority.epoch, _seq, snapshot.time_s] + _ball_of(snapshot) + [_my_leg_ms()]
+			&"_ball",
+			[authority.epoch, _seq, snapshot.time_s] + _ball_of(snapshot) + [_latency.my_leg_ms()]
 		)
 	elif not authority.is_master():
 		ball.nudge(sim_dt)
 	if snapshot.time_s - _last_pose_time >= 1.0 / MAX_STREAM_HZ:
 		_last_pose_time = snapshot.time_s
-		_send_poses(snapshot)
+		poses.send(snapshot, local_seats, _latency.my_leg_ms())
 	report.sample(snapshot.ball_position, authority.is_master(), snapshot.time_s)
-
-
-## The poses of the seats this peer drives, each new servo state.
-func _send_poses(snapshot: PongSnapshot) -> void:
-	for seat: int in local_seats:
-		var avatar: Vector3 = match_node.avatar_of(seat)
-		var offset: Vector3 = snapshot.paddle_centers[seat] - avatar
-		var velocity: Vector3 = Vector3.ZERO
-		var dt: float = match_node.now - _last_centers.get(-1 - seat, Vector3.ZERO).x
-		if _last_centers.has(seat) and dt > 0.0:
-			velocity = (snapshot.paddle_centers[seat] - _last_centers[seat]) / dt
-		_last_centers[seat] = snapshot.paddle_centers[seat]
-		_last_centers[-1 - seat] = Vector3(match_node.now, 0.0, 0.0)
-		velocity = velocity.limit_length(MAX_SENT_PADDLE_SPEED_M_PER_S)
-		var normal: Vector3 = snapshot.paddle_normals[seat].normalized()
-		var flags: int = PongNetRemotePlayer.flags_of(match_node.controllers[seat].intent)
-		send_all(
-			&"_pose", [seat, avatar, offset, velocity, normal, flags, snapshot.time_s, _my_leg_ms()]
-		)
 
 
 func _referee(sim_dt: float) -> void:
@@ -193,7 +176,7 @@ func issue(
 	callv(&"_on_transfer", [authority.my_id] + args)
 
 
-func _hand_off(snapshot: PongSnapshot) -> void:
+func _hand_off(snapshot: HapticPongState) -> void:
 	var request: Dictionary = authority.relinquish(snapshot.territory)
 	if request.is_empty():
 		return
@@ -204,40 +187,15 @@ func _hand_off(snapshot: PongSnapshot) -> void:
 		send_to(PongNetAuthority.SERVER_ID, &"_request", args)
 
 
-func _ball_of(snapshot: PongSnapshot) -> Array:
+func _ball_of(snapshot: HapticPongState) -> Array:
 	return [snapshot.ball_position, snapshot.ball_velocity, snapshot.ball_spin]
 
 
-## One-way delay of our own leg to the server, ms (0 on the server).
-func _my_leg_ms() -> int:
-	return roundi(session.round_trip_s(PongNetAuthority.SERVER_ID) * 500.0)
-
-
-func _clock_of(peer: int, their_leg_ms: int) -> PongNetClock:
-	if not _clocks.has(peer):
-		_clocks[peer] = PongNetClock.new()
-	var clock: PongNetClock = _clocks[peer]
-	clock.base_latency_s = (_my_leg_ms() + their_leg_ms) / 1000.0
-	return clock
-
-
-## How old a message of [param sender] stamped with its servo time [param sent_at] is, s.
-## The path's base delay is our leg to the server plus the sender's: a client's message to
-## another client crosses both. The server measures a sender's leg itself; a client takes
-## what the sender's streams report ([param reported_leg_ms], kept for its other messages).
+## How old a message of [param sender] stamped with its servo time [param sent_at] is, s
+## ([method PongNetLatency.age_of]).
 func _age_of(sender: int, sent_at: float, reported_leg_ms: int = -1) -> float:
-	if reported_leg_ms >= 0:
-		_legs[sender] = reported_leg_ms
-	var their_leg_ms: int = _legs.get(sender, 0)
-	if authority.my_id == PongNetAuthority.SERVER_ID:
-		their_leg_ms = roundi(session.round_trip_s(sender) * 500.0)
-	elif sender == PongNetAuthority.SERVER_ID:
-		their_leg_ms = 0
-	return _clock_of(sender, their_leg_ms).observe(_local_now_s(), sent_at)
-
-
-func _local_now_s() -> float:
-	return Time.get_ticks_usec() / 1e6
+	var on_server: bool = authority.my_id == PongNetAuthority.SERVER_ID
+	return _latency.age_of(on_server, sender, sent_at, reported_leg_ms)
 
 
 func _reject(sender: int, what: String, reason: String) -> void:
@@ -287,52 +245,6 @@ func _on_ball(
 	_master_velocity = v
 
 
-func _on_pose(
-	sender: int,
-	seat: Variant,
-	avatar: Variant,
-	offset: Variant,
-	velocity: Variant,
-	normal: Variant,
-	flags: Variant,
-	time_s: Variant,
-	leg_ms: Variant
-) -> void:
-	if not _running:
-		return
-	var reason: String = PongNetProtocol.check_pose(
-		seat, authority.owners.size(), avatar, offset, velocity, normal, match_node.court, 2.0
-	)
-	if reason.is_empty():
-		reason = PongNetProtocol.check_int(flags, 0, 3, "flags")
-	if reason.is_empty():
-		reason = PongNetProtocol.check_float(time_s, 0.0, 1e7, "time")
-	if reason.is_empty():
-		reason = PongNetProtocol.check_int(leg_ms, 0, 10000, "leg")
-	if not reason.is_empty():
-		_reject(sender, "pose", reason)
-		return
-	var pose_seat: int = seat
-	var sent_at: float = time_s
-	var pose: Array[Vector3] = [avatar, offset, velocity, normal]
-	var pose_flags: int = flags
-	# The server may drive any seat: it takes over the seats of players who left, and its
-	# poses can overtake the reliable message that says so.
-	var seat_owner: int = authority.owner_of(pose_seat)
-	if seat_owner != sender and sender != PongNetAuthority.SERVER_ID:
-		_reject(sender, "pose", "seat %d is not theirs" % pose_seat)
-		return
-	var controller: PongController = match_node.controllers[pose_seat]
-	if not controller is PongNetRemotePlayer:
-		return
-	var leg: int = leg_ms
-	var age: float = _age_of(sender, sent_at, leg)
-	(controller as PongNetRemotePlayer).set_pose(
-		match_node.now, minf(age, 0.5), pose[0], pose[1], pose[2], pose[3], pose_flags
-	)
-	report.poses += 1
-
-
 func _on_request(
 	sender: int,
 	epoch: Variant,
@@ -358,7 +270,7 @@ func _on_request(
 	if not reason.is_empty():
 		_reject(sender, "hand-off request", reason)
 		return
-	var age_ms: int = roundi(session.round_trip_s(sender) * 500.0)
+	var age_ms: int = _latency.leg_ms(sender)
 	issue(PongNetProtocol.TRANSFER_HANDOFF, to, state[0], state[1], state[2], age_ms)
 
 
@@ -398,7 +310,7 @@ func _on_transfer(
 	_master_velocity = Vector3.INF
 	var state: Array[Vector3] = [position, velocity, spin]
 	var sent_age_ms: int = age_ms
-	var age: float = (sent_age_ms + _my_leg_ms()) / 1000.0
+	var age: float = (sent_age_ms + _latency.my_leg_ms()) / 1000.0
 	var target: Array[Vector3] = PongNetSmoother.extrapolate(
 		_predictor, state[0], state[1], _gravity(), age
 	)

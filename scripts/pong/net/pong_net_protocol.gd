@@ -137,6 +137,25 @@ static func check_name(value: Variant) -> String:
 	return ""
 
 
+## Why the server's lobby ([param rows] of [peer, name, seat, ready] for a court of
+## [param seat_count] seats) is malformed, or "".
+static func check_lobby(rows: Variant, seat_count: Variant) -> String:
+	if typeof(rows) != TYPE_ARRAY:
+		return "rows are a %s, not an Array" % type_string(typeof(rows))
+	if typeof(seat_count) != TYPE_INT or not SEAT_COUNTS.has(seat_count):
+		return "%s seats" % str(seat_count).left(16)
+	var list: Array = rows
+	for row: Variant in list:
+		var r: Array = row if typeof(row) == TYPE_ARRAY else []
+		if r.size() != 4 or typeof(r[0]) != TYPE_INT or typeof(r[2]) != TYPE_INT:
+			return "a malformed row"
+		if typeof(r[3]) != TYPE_BOOL or not check_name(r[1]).is_empty():
+			return "a malformed row"
+		if r[2] < 0 or r[2] >= seat_count:
+			return "a row with seat %d" % r[2]
+	return ""
+
+
 ## The box (half extents) received positions must lie in, for [param court].
 static func position_limit(court: PongCourt) -> Vector3:
 	var margin: Vector3 = Vector3.ONE * POSITION_MARGIN_M

@@ -34,7 +34,7 @@ class SwingingOwner:
 	var started: float = -1.0
 
 	func update(
-		now: float, _dt: float, _snapshot: PongSnapshot, _opponent_avatar: Vector3
+		now: float, _dt: float, _snapshot: HapticPongState, _opponent_avatar: Vector3
 	) -> PongIntent:
 		if started < 0.0:
 			started = now
@@ -167,8 +167,7 @@ func _process(_delta: float) -> void:
 
 # The servo's book of the coupling's work on the hand, J.
 func _remote_work() -> float:
-	var work: float = Haptics.pong.get_state().get("remote_work_j", 0.0)
-	return work
+	return Haptics.pong.get_state().remote_work_j
 
 
 ## {passivity, complete, work_j, peak_work_j, telemetry_work_j, allowance_j, hand_travel_m,

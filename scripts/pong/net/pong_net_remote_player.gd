@@ -50,7 +50,7 @@ static func flags_of(p_intent: PongIntent) -> int:
 
 
 func update(
-	now: float, _dt: float, _snapshot: PongSnapshot, _opponent_avatar: Vector3
+	now: float, _dt: float, _snapshot: HapticPongState, _opponent_avatar: Vector3
 ) -> PongIntent:
 	# Its peer fires and places its mines (and says so): never here. The intent may be the
 	# one of the computer player this seat had before.

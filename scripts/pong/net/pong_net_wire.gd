@@ -9,6 +9,8 @@ extends Node
 var session: PongNetSession = null
 ## The match's bullets and mines while a match runs (its messages go there).
 var weapons: PongNetWeapons = null
+## The match's paddle poses while a match runs (their messages go there).
+var poses: PongNetPoses = null
 
 
 ## Sends [param method] with [param args] to every other peer.
@@ -52,17 +54,18 @@ func _pose(
 	time_s: Variant,
 	leg_ms: Variant
 ) -> void:
-	_on_pose(
-		multiplayer.get_remote_sender_id(),
-		seat,
-		avatar,
-		offset,
-		velocity,
-		normal,
-		flags,
-		time_s,
-		leg_ms
-	)
+	if poses != null:
+		poses.on_pose(
+			multiplayer.get_remote_sender_id(),
+			seat,
+			avatar,
+			offset,
+			velocity,
+			normal,
+			flags,
+			time_s,
+			leg_ms
+		)
 
 
 @rpc("any_peer", "call_remote", "reliable", PongNetProtocol.CHANNEL_RELIABLE)
@@ -137,20 +140,6 @@ func _on_ball(
 	_position: Variant,
 	_velocity: Variant,
 	_spin: Variant,
-	_leg_ms: Variant
-) -> void:
-	pass
-
-
-func _on_pose(
-	_sender: int,
-	_seat: Variant,
-	_avatar: Variant,
-	_offset: Variant,
-	_velocity: Variant,
-	_normal: Variant,
-	_flags: Variant,
-	_time_s: Variant,
 	_leg_ms: Variant
 ) -> void:
 	pass

@@ -91,7 +91,7 @@ func refresh(match_node: PongMatch, delta: float) -> void:
 		var effect: Dictionary = match_node.effect_of(side)
 		var remaining: float = effect.get("remaining_s", 0.0)
 		panel.show_effect(str(effect.get("kind", "")), remaining)
-	var snapshot: PongSnapshot = match_node.snapshot
+	var snapshot: HapticPongState = match_node.snapshot
 	var total: float = match_node.take_peak_force()
 	_plot.advance(delta, total)
 	_force_value.text = "%.2f N" % total

@@ -231,9 +231,7 @@ func _check_values(source: String) -> void:
 			errors.append("%s: 'practice_conditions': unknown condition '%s'" % [source, name])
 	for name: String in StudyFormat.conditions:
 		var control: String = str(condition(name).get("control", ""))
-		var wanted: String = (
-			"position" if ConditionRig.is_position_control(name) else "acceleration"
-		)
+		var wanted: String = "position" if StudyFormat.is_position_control(name) else "acceleration"
 		if control != wanted:
 			errors.append("%s: 'conditions.%s.control' must be %s" % [source, name, wanted])
 

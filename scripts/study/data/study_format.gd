@@ -119,6 +119,12 @@ static func criterion_question(criterion: String) -> String:
 	return wording.left(1).to_upper() + wording.substr(1) + "?"
 
 
+## Whether [param condition] is position control (the constraint renderer); the others are
+## acceleration control.
+static func is_position_control(condition: String) -> bool:
+	return condition == "constraint"
+
+
 ## Whether [param id] is a valid participant id ([code][A-Za-z0-9][A-Za-z0-9_-]*[/code]).
 static func is_valid_id(id: String) -> bool:
 	return _matches("id", id)

@@ -1,8 +1,9 @@
 class_name ScriptedParticipant
 extends Node
 ## Plays a whole study session through the real screens, as a participant and researcher
-## would (fields filled, buttons pressed), for tests and unattended demonstrations. Added as
-## a child of a [StudyRunner] (see its [code]--scripted-participant[/code] option); the
+## would (fields filled, buttons pressed), for tests and unattended demonstrations. The
+## [StudyRunner] adds it (see its [code]--scripted-participant[/code] option), hands it the
+## session ([method setup]) and tells it each screen it shows ([method show_screen]); the
 ## runner's [member StudyRunner.autopilot] steers the simulated hand in the levels.
 ## Ratings are drawn from a generator seeded with the id, so a run is reproducible.
 
@@ -28,41 +29,46 @@ var favourite: PackedInt32Array = PackedInt32Array([2])
 ## Free text entered at the end.
 var differences_text: String = "Scripted run: the methods felt different."
 
-var _runner: StudyRunner = null
+var _session: StudySession = null
+var _screen: Control = null
 var _rng: RandomNumberGenerator = RandomNumberGenerator.new()
 var _practice_steps: int = -1
 var _practice_left: float = 0.0
 
 
-func _ready() -> void:
-	_runner = get_parent() as StudyRunner
-	if _runner == null:
-		push_error("ScriptedParticipant must be a child of a StudyRunner.")
-		return
+## Plays the session [param session] from its current screen [param screen] on.
+func setup(session: StudySession, screen: Control) -> void:
+	_session = session
+	_screen = screen
 	_rng.seed = hash(participant_id)
-	_runner.phase_changed.connect(_on_phase_changed)
-	if _runner.phase == StudyRunner.Phase.START and _runner.get_screen() is StartScreen:
-		_on_phase_changed.call_deferred(StudyRunner.Phase.START)
+	_session.phase_changed.connect(_on_phase_changed)
+	if _session.phase == StudySession.Phase.START and _screen is StartScreen:
+		_on_phase_changed.call_deferred(StudySession.Phase.START)
 
 
-func _on_phase_changed(phase: StudyRunner.Phase) -> void:
+## The runner shows [param screen] now.
+func show_screen(screen: Control) -> void:
+	_screen = screen
+
+
+func _on_phase_changed(phase: StudySession.Phase) -> void:
 	match phase:
-		StudyRunner.Phase.START:
+		StudySession.Phase.START:
 			_fill_start.call_deferred()
-		StudyRunner.Phase.PRACTICE:
+		StudySession.Phase.PRACTICE:
 			_practise()
-		StudyRunner.Phase.INTRO:
+		StudySession.Phase.INTRO:
 			_press_start.call_deferred()
-		StudyRunner.Phase.RATING:
+		StudySession.Phase.RATING:
 			_rate.call_deferred()
-		StudyRunner.Phase.FINAL:
+		StudySession.Phase.FINAL:
 			_answer_final.call_deferred()
-		StudyRunner.Phase.DONE:
+		StudySession.Phase.DONE:
 			finished.emit()
 
 
 func _fill_start() -> void:
-	var screen: StartScreen = _runner.get_screen() as StartScreen
+	var screen: StartScreen = _screen as StartScreen
 	if screen == null:
 		return
 	screen.id_edit.text = participant_id
@@ -82,13 +88,13 @@ func _practise() -> void:
 
 
 func _process(delta: float) -> void:
-	if _practice_steps < 0 or _runner == null or _runner.phase != StudyRunner.Phase.PRACTICE:
+	if _practice_steps < 0 or _session == null or _session.phase != StudySession.Phase.PRACTICE:
 		return
 	_practice_left -= delta
 	if _practice_left > 0.0:
 		return
 	_practice_left = practice_seconds
-	var stage: StudyStage = _runner.get_stage()
+	var stage: StudyStage = _screen as StudyStage
 	match _practice_steps:
 		0:
 			stage.next_condition_pressed.emit()
@@ -102,13 +108,13 @@ func _process(delta: float) -> void:
 
 
 func _press_start() -> void:
-	var stage: StudyStage = _runner.get_stage()
-	if _still(stage, StudyRunner.Phase.INTRO):
+	var stage: StudyStage = _screen as StudyStage
+	if _still(stage, StudySession.Phase.INTRO):
 		stage.start_button.pressed.emit()
 
 
 func _rate() -> void:
-	var screen: RatingScreen = _runner.get_screen() as RatingScreen
+	var screen: RatingScreen = _screen as RatingScreen
 	if screen == null:
 		return
 	for criterion: String in StudyFormat.criteria:
@@ -119,7 +125,7 @@ func _rate() -> void:
 
 
 func _answer_final() -> void:
-	var screen: FinalScreen = _runner.get_screen() as FinalScreen
+	var screen: FinalScreen = _screen as FinalScreen
 	if screen == null:
 		return
 	screen.text_edit.text = differences_text
@@ -127,5 +133,5 @@ func _answer_final() -> void:
 	screen.submit_button.pressed.emit()
 
 
-func _still(stage: StudyStage, phase: StudyRunner.Phase) -> bool:
-	return is_instance_valid(stage) and is_inside_tree() and _runner.phase == phase
+func _still(stage: StudyStage, phase: StudySession.Phase) -> bool:
+	return is_instance_valid(stage) and is_inside_tree() and _session.phase == phase

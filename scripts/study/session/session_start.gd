@@ -5,18 +5,29 @@ extends Node
 ## practice. Resume: the participant's folder is scanned ([ParticipantState]) and the
 ## session continues at its next step (refused, with every problem listed, while anything
 ## is corrupt). Either way the researcher's options of the start screen are applied first.
+## The session ([StudySession]) gets the participant; the signals say where it goes on.
 
-@onready var _runner: StudyRunner = get_parent() as StudyRunner
+## The session of a participant is set up: it goes on at [param step] (a new participant:
+## the practice).
+signal started(step: ParticipantState.Step)
+## Nothing was started: [param problem] says why (for the start screen).
+signal refused(problem: String)
+
+var _session: StudySession = null
+
+
+## Hands the step the session it sets up.
+func setup(session: StudySession) -> void:
+	_session = session
 
 
 ## Starts participant [param id] with the [param demographics] entered.
 func start(id: String, demographics: Dictionary, options: Dictionary) -> void:
-	var screen: StartScreen = _runner.get_screen() as StartScreen
-	var config: StudyConfig = _runner.config
+	var config: StudyConfig = _session.config
 	_apply_options(options)
 	var candidate: StudyStore = StudyStore.new(config.study_root(), id)
 	if candidate.has_data():
-		screen.show_problem(
+		refused.emit(
 			(
 				(
 					'Participant %s already has data in %s. Choose "Resume participant" to '
@@ -50,29 +61,28 @@ func start(id: String, demographics: Dictionary, options: Dictionary) -> void:
 		"trials_per_condition": config.trials_per_condition(),
 	}
 	if not candidate.create(meta):
-		screen.show_problem("Could not create the participant's data: %s" % candidate.last_error)
+		refused.emit("Could not create the participant's data: %s" % candidate.last_error)
 		push_error("Maze study: " + candidate.last_error)
 		return
-	_runner.meta = meta
-	_runner.store = candidate
-	_runner.condition_order = order
+	_session.meta = meta
+	_session.store = candidate
+	_session.condition_order = order
 	for condition: String in StudyFormat.conditions:
-		_runner.trial_counts[condition] = 0
-		_runner.next_index[condition] = 0
-	_runner.start_practice()
+		_session.trial_counts[condition] = 0
+		_session.next_index[condition] = 0
+	started.emit(ParticipantState.Step.PRACTICE)
 
 
 ## Resumes participant [param id] where the session stopped.
 func resume(id: String, options: Dictionary) -> void:
-	var screen: StartScreen = _runner.get_screen() as StartScreen
-	var root: String = _runner.config.study_root()
+	var root: String = _session.config.study_root()
 	_apply_options(options)
 	var state: ParticipantState = ParticipantState.scan(root, id)
-	_runner.report = state.report_lines()
+	_session.report = state.report_lines()
 	if not state.problems.is_empty():
 		for problem: String in state.problems:
 			push_error("Maze study data problem: " + problem)
-		screen.show_problem(
+		refused.emit(
 			(
 				(
 					"Cannot resume %s: the data has problems (nothing was changed; fix or move "
@@ -83,42 +93,28 @@ func resume(id: String, options: Dictionary) -> void:
 		)
 		return
 	if not state.exists:
-		screen.show_problem("There is no data for %s in %s: nothing to resume." % [id, root])
+		refused.emit("There is no data for %s in %s: nothing to resume." % [id, root])
 		return
 	for note: String in state.notes:
 		print("Maze study: resume %s: %s" % [id, note])
-	_runner.store = StudyStore.new(root, id)
-	_runner.meta = state.meta
-	_runner.condition_order = state.condition_order
-	_runner.trial_counts = state.trial_counts
-	_runner.next_index = state.next_index
-	_continue(state.next_step(_runner.config.trials_per_condition()), id)
-
-
-func _continue(next: Dictionary, id: String) -> void:
+	_session.store = StudyStore.new(root, id)
+	_session.meta = state.meta
+	_session.condition_order = state.condition_order
+	_session.trial_counts = state.trial_counts
+	_session.next_index = state.next_index
+	var next: Dictionary = state.next_step(_session.config.trials_per_condition())
 	var step: ParticipantState.Step = next["step"]
-	_runner.order_index = next["order_index"]
-	match step:
-		ParticipantState.Step.PRACTICE:
-			_runner.start_practice()
-		ParticipantState.Step.TRIALS:
-			if _runner.config.practice_on_resume():
-				_runner.start_practice()
-			else:
-				_runner.begin_condition(_runner.order_index)
-		ParticipantState.Step.RATING:
-			_runner.answers.show_rating()
-		ParticipantState.Step.FINAL:
-			_runner.answers.show_final()
-		ParticipantState.Step.FINISH:
-			_runner.answers.finish_session()
-		ParticipantState.Step.DONE:
-			var screen: StartScreen = _runner.get_screen() as StartScreen
-			screen.show_problem("%s has finished the study: there is nothing to resume." % id)
+	_session.order_index = next["order_index"]
+	if step == ParticipantState.Step.DONE:
+		refused.emit("%s has finished the study: there is nothing to resume." % id)
+	elif step == ParticipantState.Step.TRIALS and _session.config.practice_on_resume():
+		started.emit(ParticipantState.Step.PRACTICE)
+	else:
+		started.emit(step)
 
 
 func _apply_options(options: Dictionary) -> void:
-	var config: StudyConfig = _runner.config
+	var config: StudyConfig = _session.config
 	var trials: int = options.get("trials_per_condition", config.trials_per_condition())
 	var values: Dictionary = {
 		"trials_per_condition": trials,

@@ -94,11 +94,6 @@ static func restore_haptics(saved: Dictionary) -> void:
 		Haptics.configure("force_model", force_model)
 
 
-## Whether [param condition_name] is position control.
-static func is_position_control(condition_name: String) -> bool:
-	return condition_name == "constraint"
-
-
 ## Prepares [param p_condition] on [param p_level] with [param p_settings]; the avatar is
 ## held (see [method hold]). Returns false when the native server refused something.
 func setup(p_level: StudyLevel, p_condition: String, p_settings: Dictionary) -> bool:
@@ -123,7 +118,7 @@ func setup(p_level: StudyLevel, p_condition: String, p_settings: Dictionary) -> 
 	var ok: bool = true
 	if Haptics.is_available():
 		ok = Haptics.configure("telemetry", {"enabled": true, "decimation": 1})
-		if is_position_control(condition):
+		if StudyFormat.is_position_control(condition):
 			ok = _send_constraint() and ok
 		else:
 			var model: String = str(settings.get("contact_model", "paper_sum"))
@@ -153,7 +148,7 @@ func go() -> void:
 	is_live = true
 	var smoothing: bool = settings.get("smoothing", true)
 	Haptics.smoothing_enabled = smoothing
-	if is_position_control(condition):
+	if StudyFormat.is_position_control(condition):
 		Haptics.force_scale = 1.0
 		Haptics.set_render_mode(&"constraint")
 		probe.heartbeat_only = true
@@ -201,7 +196,7 @@ func avatar_position() -> Vector2:
 
 ## Proxy state from the server ({} outside position control or without the extension).
 func proxy_state() -> Dictionary:
-	if not is_position_control(condition) or not is_live:
+	if not StudyFormat.is_position_control(condition) or not is_live:
 		return {}
 	var state: Dictionary = Haptics.get_proxy_state()
 	return state
@@ -210,7 +205,7 @@ func proxy_state() -> Dictionary:
 ## The normalised hand position a trial starts from: the centre (acceleration control) or
 ## the point over the level's start (position control).
 func start_hand() -> Vector2:
-	if is_position_control(condition):
+	if StudyFormat.is_position_control(condition):
 		return map.hand_of(level.get_spawn_position())
 	return Vector2.ZERO
 
@@ -236,14 +231,14 @@ func set_hand(normalised: Vector2) -> void:
 func _process(delta: float) -> void:
 	if level == null or probe == null:
 		return
-	if is_position_control(condition):
+	if StudyFormat.is_position_control(condition):
 		_drive_simulated_hand(delta)
 		if is_live:
 			_follow_proxy(delta)
 
 
 func _physics_process(delta: float) -> void:
-	if probe != null and is_live and is_position_control(condition):
+	if probe != null and is_live and StudyFormat.is_position_control(condition):
 		_follow_proxy(delta)
 
 
@@ -284,7 +279,7 @@ func _drive_simulated_hand(delta: float) -> void:
 
 func _update_hand_following() -> void:
 	var own_hand: bool = (
-		piloted or (is_position_control(condition) and Haptics.device.is_simulated())
+		piloted or (StudyFormat.is_position_control(condition) and Haptics.device.is_simulated())
 	)
 	Haptics.hand_follows_input = not own_hand
 
@@ -300,5 +295,5 @@ func _send_constraint() -> bool:
 	}
 	var ok: bool = Haptics.configure("constraint", constraint)
 	var segments: PackedVector2Array = level.get_wall_segments()
-	var sent: bool = Haptics.set_constraint_geometry(segments, map.to_dictionary())
+	var sent: bool = Haptics.set_constraint_geometry(segments, map)
 	return ok and sent

@@ -1,21 +1,12 @@
 class_name MazeMap
-extends RefCounted
+extends HapticMazeMapping
 ## Position control's map between the maze (level pixels, y down) and the device's
-## workspace, the same affine map the native constraint renderer resolves from the mapping
-## handed to [code]set_constraint_geometry[/code]
-## ([code]gdextension/src/core/maze_mapping.h[/code]): one scale for both axes, chosen so
-## the maze rectangle fits the workspace shape (disc: its diagonal spans the diameter;
-## square: its longer side does), the maze centre on the workspace centre.
+## workspace: the [HapticMazeMapping] the native constraint renderer is handed, resolved
+## the same way ([code]gdextension/src/core/maze_mapping.h[/code]).
 ## [br][br]
 ## "Hand" positions are normalised like [code]Haptics.device.set_hand_target[/code]'s: metres over
 ## the device's workspace radius, game axes (x right, y down).
 
-## The maze rectangle, maze units.
-var bounds: Rect2 = Rect2(0.0, 0.0, 1.0, 1.0)
-## [code]disc[/code] or [code]square[/code].
-var workspace: String = "disc"
-## Half extent of the workspace the maze maps onto, metres (0: the device's radius).
-var half_extent_m: float = 0.0
 ## The device's workspace radius, metres.
 var device_radius_m: float = 0.1
 
@@ -26,20 +17,8 @@ func _init(
 	p_half_extent_m: float = 0.0,
 	p_device_radius_m: float = 0.1
 ) -> void:
-	bounds = p_bounds
-	workspace = p_workspace
-	half_extent_m = p_half_extent_m
+	super(p_bounds, p_workspace, p_half_extent_m)
 	device_radius_m = p_device_radius_m
-
-
-## The mapping dictionary [code]HapticsServer.set_constraint_geometry[/code] takes.
-func to_dictionary() -> Dictionary:
-	return {
-		"maze_min": bounds.position,
-		"maze_max": bounds.end,
-		"workspace": workspace,
-		"half_extent_m": half_extent_m,
-	}
 
 
 ## Metres of device travel per maze unit.

@@ -35,7 +35,7 @@ func steer(rig: ConditionRig, delta: float) -> Vector2:
 	if _held < hold_s:
 		_held += delta
 		return rig.start_hand()
-	if ConditionRig.is_position_control(rig.condition):
+	if StudyFormat.is_position_control(rig.condition):
 		return rig.map.hand_of(_advance(rig.avatar_position(), delta))
 	var player: Player = rig.player
 	return _autopilot.steer(

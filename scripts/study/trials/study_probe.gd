@@ -34,14 +34,14 @@ func configure(settings: Dictionary) -> void:
 
 
 ## The frame as [HapticProbe] builds it, with the disabled forces removed.
-func build_frame() -> Dictionary:
+func build_frame() -> HapticFrame:
 	if heartbeat_only:
-		return {}
-	var frame: Dictionary = super()
+		return HapticFrame.new()
+	var frame: HapticFrame = super()
 	if not weight_enabled:
-		frame["resting"] = []
+		frame.resting.clear()
 	if not water_enabled:
-		frame["water"] = {"inside": false}
+		frame.in_water = false
 	return frame
 
 

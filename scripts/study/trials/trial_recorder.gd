@@ -63,7 +63,7 @@ func _init(
 	_store = store
 	_map = map
 	_stiffness = stiffness
-	_position_control = ConditionRig.is_position_control(condition)
+	_position_control = StudyFormat.is_position_control(condition)
 	result = TrialResult.new()
 	result.condition = condition
 	result.level = level_id

@@ -72,7 +72,7 @@ func _on_impact(_collider: Object, normal: Vector2, speed: float) -> void:
 
 
 func _touches_wall() -> bool:
-	for contact: Dictionary in _probe.get(&"last_frame").get("contacts", []):
+	for contact: Dictionary in _probe.get(&"last_frame").to_dictionary().get("contacts", []):
 		var normal: Vector2 = contact["normal"]
 		if normal.is_equal_approx(Vector2.LEFT):
 			return true

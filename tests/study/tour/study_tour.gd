@@ -8,7 +8,7 @@ extends Node
 ## With [code]--menu[/code] it shows the way in from the title screen instead.
 ## The data goes to a fresh folder under user://study_tour/, never to the real study.
 
-const STUDY_SCENE: PackedScene = preload("res://scenes/study/study.tscn")
+const STUDY_SCENE: PackedScene = preload("res://scenes/study/session/study.tscn")
 const MAIN_SCENE: PackedScene = preload("res://scenes/main/main.tscn")
 
 var _out: String = "user://study_shots"
@@ -73,9 +73,9 @@ func _tour() -> void:
 	study.get_stage().start_pressed.emit()
 	for i: int in 3:
 		await _shot("centring_%d_%s" % [i, study.current_condition()], 0.15)
-		await _wait_phase(study, StudyRunner.Phase.TRIAL)
+		await _wait_phase(study, StudySession.Phase.TRIAL)
 		await _shot("trial_%d_%s" % [i, study.current_condition()], 2.0)
-		await _wait_phase(study, StudyRunner.Phase.RATING)
+		await _wait_phase(study, StudySession.Phase.RATING)
 		var rating: RatingScreen = study.get_screen() as RatingScreen
 		for criterion: String in ["realism", "ease", "aptness"]:
 			rating.set_rating(criterion, 7)
@@ -84,9 +84,9 @@ func _tour() -> void:
 			rating.set_rating(criterion, 3 + i * 3)
 		rating.submit_button.pressed.emit()
 		if i < 2:
-			await _wait_phase(study, StudyRunner.Phase.INTRO)
+			await _wait_phase(study, StudySession.Phase.INTRO)
 			study.get_stage().start_pressed.emit()
-	await _wait_phase(study, StudyRunner.Phase.FINAL)
+	await _wait_phase(study, StudySession.Phase.FINAL)
 	var final: FinalScreen = study.get_screen() as FinalScreen
 	final.text_edit.text = "The second one pushed back when I hit a wall."
 	final.set_favourite(PackedInt32Array([1, 2]))
@@ -96,7 +96,7 @@ func _tour() -> void:
 	get_tree().quit(0)
 
 
-func _wait_phase(study: StudyRunner, phase: StudyRunner.Phase) -> void:
+func _wait_phase(study: StudyRunner, phase: StudySession.Phase) -> void:
 	var deadline: int = Time.get_ticks_msec() + 60000
 	while study.phase != phase and Time.get_ticks_msec() < deadline:
 		await get_tree().process_frame

@@ -1,10 +1,10 @@
 class_name PongLobby
 extends CanvasLayer
-## The network game's lobby, opened from the Pong setup: host or join (name, address,
-## port), the players with their seats and whether they are ready, Ready, Start (the
-## host, once everyone is ready), Leave, Back. The match itself runs in the [PongScreen]
-## that [PongNet] makes; its winner screen's Play again readies up for a rematch and its
-## Menu leaves the game. It only talks to [PongNet] (signal up, call down).
+## The network game's lobby, shown over the Pong setup by the main scene: host or join
+## (name, address, port), the players with their seats and whether they are ready, Ready,
+## Start (the host, once everyone is ready), Leave, Back. The match itself runs in the
+## [PongScreen] that [PongNet] makes; its winner screen's Play again readies up for a
+## rematch and its Menu leaves the game. It only talks to [PongNet] (signal up, call down).
 
 ## Back to the Pong setup (the session is closed).
 signal back_requested

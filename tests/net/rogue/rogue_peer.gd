@@ -1,8 +1,41 @@
-class_name PongNetRogue
-extends RefCounted
-## A misbehaving peer for the fault tests: once its match runs it sends every kind of bad
-## message a peer can send, through the same RPC surface as an honest peer. The others
-## must drop each with a log line and play on.
+extends Node
+## A misbehaving peer for the fault tests (test_net_match.py starts this scene): it joins
+## like the game's networked-Pong command line ([PongNetCli], the same arguments) and, once
+## its match runs, sends every kind of bad message a peer can send, through the same RPC
+## surface as an honest peer. The others must drop each with a log line and play on.
+## A test tool, out of every export: under tests/ (no export preset takes it), and in a
+## folder Godot does not scan (.gdignore), since an export lists the path of every file the
+## scan gave a uid. The harness runs it by path.
+
+## Rounds of bad messages: unreliable ones may be dropped by ENet's throttle in a burst.
+const ROUNDS: int = 3
+## Match seconds before the first round, and between rounds.
+const FIRST_S: float = 1.0
+const EVERY_S: float = 0.5
+
+var _cli: PongNetCli = PongNetCli.new()
+var _match_clock: float = -1.0
+var _rounds: int = 0
+
+
+func _ready() -> void:
+	add_child(_cli)
+	# After the command line's own deferred launch, which makes its PongNet.
+	_follow.call_deferred()
+
+
+func _follow() -> void:
+	if _cli.net != null:
+		_cli.net.match_started.connect(func() -> void: _match_clock = 0.0)
+
+
+func _process(delta: float) -> void:
+	if _match_clock < 0.0 or _rounds >= ROUNDS:
+		return
+	_match_clock += delta
+	if _match_clock > FIRST_S + EVERY_S * _rounds:
+		_rounds += 1
+		attack(_cli.net)
 
 
 ## Sends the bad messages from [param net]'s peer.

@@ -8,7 +8,7 @@ extends CanvasLayer
 signal quit_requested
 
 ## The settings screen shown by the Settings button.
-const SETTINGS_SCENE: PackedScene = preload("res://scenes/ui/settings_screen.tscn")
+const SETTINGS_SCENE: PackedScene = preload("res://scenes/common/ui/settings_screen.tscn")
 
 ## Whether the pause action opens the menu (off once the goal screen shows).
 var enabled: bool = true

@@ -7,12 +7,15 @@ extends Control
 ## pushes as many samples as the elapsed time spans (the largest value seen since the last
 ## sample, so short impacts are not lost). Nothing is allocated per frame.
 
+## Full scale while no device reports a force limit (the Touch / Omni peak), newtons.
+const FALLBACK_MAX_FORCE: float = 3.3
+
 ## Length of the visible history, in seconds.
 @export var window_seconds: float = 5.0
 ## Samples per second kept in the ring.
 @export var sample_rate: float = 60.0
 ## Value drawn at the top edge (the device's maximum force); larger values are clipped.
-@export var y_max: float = 3.3:
+@export var y_max: float = FALLBACK_MAX_FORCE:
 	set(value):
 		y_max = maxf(value, 0.001)
 		queue_redraw()
@@ -31,6 +34,11 @@ var _points: PackedVector2Array = PackedVector2Array()
 var _fill: PackedVector2Array = PackedVector2Array()
 var _fill_indices: PackedInt32Array = PackedInt32Array()
 var _fill_colors: PackedColorArray = PackedColorArray()
+
+
+## The full scale for a device whose force limit is [param max_force_n] (0: none reported).
+static func full_scale(max_force_n: float) -> float:
+	return max_force_n if max_force_n > 0.0 else FALLBACK_MAX_FORCE
 
 
 func _init() -> void:

@@ -14,9 +14,11 @@ extends Node
 signal menu_requested
 ## Play again with the same settings.
 signal play_again_requested
+## The setup's Network game: whoever listens opens the lobby (a level above Pong's) over
+## this screen with [method cover_setup], [param seats] (the setup's court) its first
+## choice of seats. With nobody listening (the scene on its own) the button is hidden.
+signal network_requested(seats: int)
 
-## The network game's lobby (issue 11), opened from the setup.
-const LOBBY_SCENE_PATH: String = "res://scenes/pong/net/pong_lobby.tscn"
 ## Shown instead of a game when there is no Pong renderer.
 const OFFLINE_TEXT: String = (
 	"Haptic Battle Pong needs the haptics extension: the ball is simulated in its 1 kHz "
@@ -56,7 +58,8 @@ func _ready() -> void:
 	winner_screen.menu_requested.connect(_leave)
 	setup.start_requested.connect(_on_setup_start)
 	setup.back_requested.connect(_leave)
-	setup.network_requested.connect(_open_lobby)
+	setup.network_requested.connect(func() -> void: network_requested.emit(setup.get_players()))
+	setup.network_button.visible = not network_requested.get_connections().is_empty()
 	if not Haptics.pong.is_available():
 		setup.show_offline(OFFLINE_TEXT if not Haptics.is_available() else OLD_EXTENSION_TEXT)
 		if quit_when_over:
@@ -87,7 +90,6 @@ func start_match(p_mode: PongMatch.Mode, p_beginner: bool) -> bool:
 		return false
 	setup.visible = false
 	world.build(match_node.court, match_node.reach, beginner, maxi(match_node.local_player, 0))
-	var max_force: float = Haptics.device.get_max_force()
 	var titles: Array[String] = []
 	for player: int in match_node.court.players:
 		titles.append(player_name(player))
@@ -95,7 +97,7 @@ func start_match(p_mode: PongMatch.Mode, p_beginner: bool) -> bool:
 		titles,
 		PongView.PLAYER_COLORS,
 		start_health,
-		max_force if max_force > 0.0 else Hud.FALLBACK_MAX_FORCE,
+		ForcePlot.full_scale(Haptics.device.get_max_force()),
 		mode == PongMatch.Mode.TWO_PLAYERS
 	)
 	hud.visible = true
@@ -132,18 +134,12 @@ func player_name(player: int) -> String:
 	return "You · mouse" if player == 0 else "Player 2 · keyboard"
 
 
-func _open_lobby() -> void:
+## Shows [param screen] (the network lobby) instead of the setup, which comes back when
+## [param screen] leaves.
+func cover_setup(screen: Node) -> void:
 	setup.visible = false
-	var lobby: PongLobby = (load(LOBBY_SCENE_PATH) as PackedScene).instantiate() as PongLobby
-	lobby.back_requested.connect(_close_lobby.bind(lobby))
-	add_child(lobby)
-	# The setup's court is the lobby's first choice of seats for hosting.
-	lobby.choose_seats(setup.get_players())
-
-
-func _close_lobby(lobby: PongLobby) -> void:
-	lobby.queue_free()
-	setup.visible = true
+	screen.tree_exiting.connect(func() -> void: setup.visible = true)
+	add_child(screen)
 
 
 func _is_own_scene() -> bool:

@@ -1,0 +1,143 @@
+extends RefCounted
+## The Haptics door's input side: the user's keys, buttons, sticks and mouse move the
+## simulated device's hand, and the device's input vector is fed into input actions as
+## strengths. The door owns one, forwards its two settings ([member hand_actions],
+## [member feed_actions]) and decides when each part runs (control mode, whether the hand
+## follows the user).
+
+## Fed strengths below this release the action (a centred device presses nothing).
+const FEED_THRESHOLD := 0.05
+
+## The actions (left, right, up, down) that move the simulated hand; empty: none. An
+## action the project does not define counts as released.
+var hand_actions: PackedStringArray = []:
+	set(value):
+		hand_actions = _checked_actions(value, "hand_actions", hand_actions)
+		_hand_actions_complete = not hand_actions.is_empty()
+		for action: String in hand_actions:
+			_hand_actions_complete = _hand_actions_complete and InputMap.has_action(action)
+## The actions (left, right, up, down) [method feed] presses; empty: none.
+var feed_actions: PackedStringArray = []:
+	set(value):
+		release_fed()
+		feed_actions = _checked_actions(value, "feed_actions", feed_actions)
+
+var _mouse_seen: bool = false
+# The actions this door pressed and has not released.
+var _fed: Dictionary[String, bool] = {}
+var _hand_actions_complete: bool = false
+
+
+## Takes note of [param event] (the mouse moves the hand only once it has moved).
+func notice(event: InputEvent) -> void:
+	if event is InputEventMouseMotion:
+		_mouse_seen = true
+
+
+## Presses [member feed_actions] as far as [param input_vector] points their way.
+func feed(input_vector: Vector2) -> void:
+	var i: Vector2 = input_vector
+	var strengths: PackedFloat32Array = [
+		maxf(-i.x, 0.0), maxf(i.x, 0.0), maxf(-i.y, 0.0), maxf(i.y, 0.0)
+	]
+	for k: int in feed_actions.size():
+		var action: String = feed_actions[k]
+		if not InputMap.has_action(action):
+			continue
+		if strengths[k] >= FEED_THRESHOLD:
+			Input.action_press(action, strengths[k])
+			_fed[action] = true
+		elif _fed.has(action):
+			# Only what this door pressed: a key held down stays pressed.
+			Input.action_release(action)
+			_fed.erase(action)
+
+
+## Releases every action [method feed] pressed.
+func release_fed() -> void:
+	for action: String in _fed:
+		if InputMap.has_action(action):
+			Input.action_release(action)
+	_fed.clear()
+
+
+## Where the user puts the simulated hand (normalised): keyboard/gamepad deflection wins;
+## otherwise the mouse's offset from the centre of [param viewport], a quarter of its
+## height being the workspace edge.
+func hand_target(viewport: Viewport) -> Vector2:
+	var keys: Vector2 = Vector2.ZERO
+	if _hand_actions_complete and feed_actions.is_empty():
+		keys = Input.get_vector(hand_actions[0], hand_actions[1], hand_actions[2], hand_actions[3])
+	elif not hand_actions.is_empty():
+		keys = Vector2(
+			_action_strength(1) - _action_strength(0), _action_strength(3) - _action_strength(2)
+		)
+		keys = keys.limit_length(1.0)
+	if not keys.is_zero_approx() or not _mouse_seen:
+		return keys
+	var size: Vector2 = viewport.get_visible_rect().size
+	var offset: Vector2 = viewport.get_mouse_position() - size * 0.5
+	return (offset / (size.y * 0.25)).limit_length(1.0)
+
+
+# Four actions or none; an empty name is no action, names the project lacks are reported once;
+# both count as released.
+func _checked_actions(
+	actions: PackedStringArray, what: String, kept: PackedStringArray
+) -> PackedStringArray:
+	if not actions.is_empty() and actions.size() != 4:
+		push_error(
+			(
+				"Haptics.%s: give four actions (left, right, up, down) or none, not %s; keeping %s."
+				% [what, actions, kept]
+			)
+		)
+		return kept
+	var missing: PackedStringArray = []
+	for action: String in actions:
+		if not action.is_empty() and not InputMap.has_action(action):
+			missing.append(action)
+	if not missing.is_empty():
+		push_warning("Haptics.%s: no input action %s in this project." % [what, missing])
+	return actions
+
+
+func _action_strength(index: int) -> float:
+	var action: String = hand_actions[index]
+	if not InputMap.has_action(action):
+		return 0.0
+	return (
+		_physical_strength(action)
+		if not feed_actions.is_empty()
+		else Input.get_action_strength(action)
+	)
+
+
+# How far the keys, buttons and sticks bound to [param action] are pressed, without what
+# this door fed into it (reading the action itself, the hand would hold itself down).
+func _physical_strength(action: String) -> float:
+	var strength: float = 0.0
+	for event: InputEvent in InputMap.action_get_events(action):
+		var key: InputEventKey = event as InputEventKey
+		var button: InputEventJoypadButton = event as InputEventJoypadButton
+		var motion: InputEventJoypadMotion = event as InputEventJoypadMotion
+		var mouse: InputEventMouseButton = event as InputEventMouseButton
+		if key != null:
+			var down: bool = (
+				(
+					key.physical_keycode != KEY_NONE
+					and Input.is_physical_key_pressed(key.physical_keycode)
+				)
+				or (key.keycode != KEY_NONE and Input.is_key_pressed(key.keycode))
+			)
+			strength = maxf(strength, 1.0 if down else 0.0)
+		elif mouse != null and Input.is_mouse_button_pressed(mouse.button_index):
+			strength = 1.0
+		for pad: int in Input.get_connected_joypads():
+			if button != null and Input.is_joy_button_pressed(pad, button.button_index):
+				strength = 1.0
+			elif motion != null and signf(motion.axis_value) != 0.0:
+				var along: float = Input.get_joy_axis(pad, motion.axis) * signf(motion.axis_value)
+				if along > InputMap.action_get_deadzone(action):
+					strength = maxf(strength, minf(along, 1.0))
+	return strength

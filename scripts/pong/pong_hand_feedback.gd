@@ -1,0 +1,51 @@
+class_name PongHandFeedback
+extends RefCounted
+## What the weapons make the player at the device feel, as the servo's effects on the hand:
+## a bullet's hit, a mine's rumble and its effect, the gun's recoil. Strengths and
+## durations are the court's ([code]pong[/code] configuration).
+
+## Peak of a mine's rumble on the hand, newtons.
+const MINE_RUMBLE_N: float = 1.2
+## How long a mine's rumble decays, seconds.
+const MINE_RUMBLE_DECAY_S: float = 0.35
+
+var court: PongCourt = null
+
+
+func _init(p_court: PongCourt) -> void:
+	court = p_court
+
+
+## A bullet hit [param player] flying along [param direction] (world).
+func hit(player: int, direction: Vector3) -> void:
+	Haptics.pong.apply_effect(
+		player, "hit", court.number("hit_force_n"), court.number("hit_duration_s"), direction
+	)
+
+
+## [param player] stepped on a [param kind] mine of [param owner]'s: a rumble, then the
+## mine's effect for [param duration_s] ("none": the rumble only).
+func mine(player: int, kind: String, duration_s: float, owner: int) -> void:
+	Haptics.pong.rumble(MINE_RUMBLE_N, MINE_RUMBLE_DECAY_S)
+	if kind != "none":
+		Haptics.pong.apply_effect(player, kind, _magnitude(kind), duration_s, Vector3.ZERO, owner)
+
+
+## [param player] fired along [param axis]: the gun kicks back.
+func recoil(player: int, axis: Vector3) -> void:
+	Haptics.pong.apply_effect(
+		player,
+		"recoil",
+		court.number("recoil_force_n"),
+		court.number("recoil_duration_s"),
+		-axis.normalized()
+	)
+
+
+func _magnitude(kind: String) -> float:
+	match kind:
+		"heavy":
+			return court.number("heavy_force_n")
+		"remote":
+			return court.number("remote_max_force_n")
+	return 0.0

@@ -1,0 +1,77 @@
+class_name PongServoLink
+extends RefCounted
+## A match's hold on the servo through [code]Haptics.pong[/code]: the court size it sets
+## (and gives back), the Pong renderer, the simulated hand, the servo thread (stopped while
+## a stepped match runs it by hand), and the telemetry the peak force on the hand is read
+## from. [method claim_court], then [method enter]; [method leave] gives everything back.
+
+var _previous_players: int = -1
+var _stopped_servo: bool = false
+var _telemetry_stride: int = 0
+var _telemetry_total: int = -1
+var _telemetry_capacity: int = 0
+
+
+## Sets the servo's court to [param players] seats; false (nothing changed) when refused.
+func claim_court(players: int) -> bool:
+	var configured_count: float = Haptics.pong.get_config().get("players", 2.0)
+	var configured: int = roundi(configured_count)
+	if configured != players:
+		if not Haptics.pong.configure({"players": players}):
+			return false
+		_previous_players = configured
+	return true
+
+
+## Whether the open device can hold a paddle: present, not lost, with 3D input.
+func device_usable() -> bool:
+	if Haptics.device.get_id().is_empty() or Haptics.device.is_lost():
+		return false
+	var input_dof: int = Haptics.device.get_capabilities().get("input_dof", 0)
+	return input_dof >= 3
+
+
+## Whether the open device reports its stylus's orientation.
+func device_has_orientation() -> bool:
+	return Haptics.device.get_capabilities().get("has_orientation", false) == true
+
+
+## The Pong renderer on with no effect or event left over, the hand the game's, the
+## servo thread stopped when [param stepped], the telemetry emptied.
+func enter(stepped: bool) -> void:
+	Haptics.hand_follows_input = false
+	Haptics.pong.enter()
+	if stepped and Haptics.servo.is_running():
+		Haptics.servo.stop()
+		_stopped_servo = true
+	Haptics.pong.clear_effects()
+	Haptics.pong.drain_events()
+	var columns: PackedStringArray = Haptics.servo.get_telemetry_columns()
+	_telemetry_stride = columns.size()
+	_telemetry_total = columns.find("total_x")
+	_telemetry_capacity = Haptics.get_constant(&"TELEMETRY_QUEUE_CAPACITY")
+	Haptics.servo.drain_telemetry(_telemetry_capacity)
+
+
+## Gives back what [method claim_court] and [method enter] took.
+func leave() -> void:
+	Haptics.pong.set_hand_target_3d(Vector3.ZERO)
+	Haptics.pong.leave()
+	if _previous_players > 0:
+		Haptics.pong.configure({"players": _previous_players})
+	Haptics.hand_follows_input = true
+	if _stopped_servo:
+		Haptics.servo.start()
+
+
+## The largest |force on the hand| (N, device space) of every servo tick since the last
+## call, from the telemetry, and at least [param at_least]; just that while the servo
+## thread does not run.
+func peak_force(at_least: float) -> float:
+	var peak: float = at_least
+	if _telemetry_total < 0 or not Haptics.servo.is_running():
+		return peak
+	var samples: PackedFloat32Array = Haptics.servo.drain_telemetry(_telemetry_capacity)
+	for i: int in range(_telemetry_total, samples.size() - 2, _telemetry_stride):
+		peak = maxf(peak, Vector3(samples[i], samples[i + 1], samples[i + 2]).length())
+	return peak

@@ -1,0 +1,95 @@
+class_name StudyContext
+extends RefCounted
+## What the practice and the maze trials are handed: the session, the stage, the
+## [ConditionRig] that puts a condition into effect on the level shown, and the scripted
+## hand. It loads a level under a condition and waits for the handle at the start; what it
+## cannot do, it reports ([signal failed]) and the [StudyRunner] stops the study.
+
+## A level or its condition could not be set up.
+signal failed(error: String)
+## The goal of the level shown was reached.
+signal goal_reached
+
+## Seconds the handle must stay in the start zone before the avatar may move.
+const CENTRE_HOLD_S: float = 0.5
+
+var session: StudySession = null
+var rig: ConditionRig = null
+## The stage while it is shown, else null (the runner sets it).
+var stage: StudyStage = null
+## Steer with the [member pilot] (the scripted participant) instead of the mouse/keys.
+var autopilot: bool = false
+## The scripted participant's hand in the level shown (null until a level is loaded).
+var pilot: StudyPilot = null
+## The scripted participant keeps still this long at the start of each trial, seconds.
+var pilot_hold_s: float = 0.0
+
+var _centre_held: float = 0.0
+
+
+func _init(p_session: StudySession, p_rig: ConditionRig) -> void:
+	session = p_session
+	rig = p_rig
+
+
+## Shows [param scene] under [param condition] on the stage; false (and [signal failed])
+## when the level or the condition cannot be set up.
+func load_level(scene: PackedScene, condition: String) -> bool:
+	rig.release()
+	var level: StudyLevel = stage.show_level(scene) if scene != null else null
+	if level == null:
+		failed.emit("the level could not be loaded")
+		return false
+	level.goal_reached.connect(goal_reached.emit)
+	rig.piloted = autopilot
+	rig.pointer = stage.pointer_in_level
+	if not rig.setup(level, condition, session.config.condition(condition)):
+		failed.emit("the haptics server refused the settings of the condition '%s'" % condition)
+		return false
+	if autopilot:
+		pilot = StudyPilot.new(level.get_autopilot_path(), session.config.number("autopilot_speed"))
+	return true
+
+
+## The card that asks for the handle at the start position (the gauge shows where it is).
+func show_centring() -> void:
+	_centre_held = 0.0
+	stage.gauge.tolerance = session.config.number("centre_tolerance")
+	stage.gauge.target = rig.start_hand()
+	stage.gauge.progress = 0.0
+	var practice: bool = session.phase == StudySession.Phase.PRACTICE
+	stage.show_card(
+		"Hold still at the start",
+		(
+			"Bring the handle to the green zone of the gauge and hold it there; then %s."
+			% ("you can move" if practice else "the trial begins")
+		),
+		"",
+		true
+	)
+
+
+## One tick of waiting for the handle at the start; true once it has been held there long
+## enough.
+func centre(delta: float) -> bool:
+	var target: Vector2 = rig.start_hand()
+	if autopilot:
+		rig.set_hand(target)
+	var hand: Vector2 = rig.hand_position()
+	var position_control: bool = StudyFormat.is_position_control(rig.condition)
+	stage.show_hand(rig.map.point_of_hand(hand), position_control)
+	var tolerance: float = session.config.number("centre_tolerance")
+	if hand.distance_to(target) <= tolerance and rig.is_settled():
+		_centre_held += delta
+	else:
+		_centre_held = 0.0
+	stage.gauge.hand = hand
+	stage.gauge.progress = _centre_held / CENTRE_HOLD_S
+	return _centre_held >= CENTRE_HOLD_S
+
+
+## Lets go of the level shown (the rig releases the condition; the stage clears).
+func release_stage() -> void:
+	rig.release()
+	if stage != null:
+		stage.clear_level()
