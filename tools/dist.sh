@@ -25,7 +25,7 @@ controls=$(sed -n '/^### /,$p' "$stage/controls.log")
 devices=$(sed -n '/^| Device | Driver |/,/^$/p' README.md)
 udev=$(awk '/^\*\*Permissions\.\*\*/ { on = 1 } on && /^```/ { print; if (++fences == 2) exit; next }
   fences == 1 { print }' README.md | sed 's,tools/udev/,,')
-priority=$(sed -nE 's/.*int32_t priority = ([0-9]+); \/\/ SCHED_FIFO.*/\1/p' gdextension/src/core/realtime.h)
+priority=$(sed -nE 's/.*int32_t priority = ([0-9]+); \/\/ SCHED_FIFO.*/\1/p' gdextension/src/core/base/realtime.h)
 glibc=$(readelf -V "$build/runtime/lib/libc.so.6" | grep -oE "GLIBC_[0-9.]+" | sort -uV | tail -n 1)
 [[ -n $controls && -n $devices && $udev == *70-haptics.rules* && -n $priority && -n $glibc ]] ||
   die "README.md or realtime.h no longer has what the player README takes from them"

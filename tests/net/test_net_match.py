@@ -23,7 +23,7 @@ NETWORKS = {
 }
 # p99 of |ball(follower) - ball(master)|, metres. A hit is only seen by followers one path
 # delay (plus jitter) later, and meanwhile the two balls fly apart at up to twice the top
-# speed (src/pong/pong_config.h, max_ball_speed_m_per_s). The bound is what a LAN shows
+# speed (src/renderers/pong/pong_config.h, max_ball_speed_m_per_s). The bound is what a LAN shows
 # plus that separation, with half as much again for the stream and frame periods at both
 # ends, the relay's timers and the wall-clock alignment on a loaded machine.
 LAN_DIVERGENCE_P99_M = 0.3

@@ -2,7 +2,7 @@ class_name MazeMap
 extends HapticMazeMapping
 ## Position control's map between the maze (level pixels, y down) and the device's
 ## workspace: the [HapticMazeMapping] the native constraint renderer is handed, resolved
-## the same way ([code]gdextension/src/core/maze_mapping.h[/code]).
+## the same way ([code]gdextension/src/renderers/constraint/maze_mapping.h[/code]).
 ## [br][br]
 ## "Hand" positions are normalised like [code]Haptics.device.set_hand_target[/code]'s: metres over
 ## the device's workspace radius, game axes (x right, y down).

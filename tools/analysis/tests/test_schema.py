@@ -53,9 +53,11 @@ def test_the_fast_telemetry_pattern_matches_valid_rows_only():
 
 
 def test_the_contact_models_are_the_servers_names():
-    # The names are defined once beside the enum (config.h); the schema lists them for the data.
+    # The names are defined once beside the enum (the movement renderer's settings); the
+    # schema lists them for the data.
     project = schema.SCHEMA_PATH.parents[2]
-    header = (project / "gdextension" / "src" / "core" / "config.h").read_text("utf-8")
+    renderer = project / "gdextension" / "src" / "renderers" / "movement"
+    header = (renderer / "movement_config.h").read_text("utf-8")
     names = re.search(r"CONTACT_MODEL_NAMES\[\] = \{([^}]*)\}", header).group(1)
     assert tuple(re.findall(r'"([a-z_]+)"', names)) == schema.CONTACT_MODELS
 
