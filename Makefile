@@ -25,7 +25,7 @@ SOAK_SECONDS ?= 600
 
 .PHONY: play edit test deps engine build build-release import test-native test-godot lint pong-demo \
 	export test-export export-server test-export-server dist test-dist test-windowed test-net bench-net bench soak sanitize analyze export-study \
-	test-analysis addon test-addon test-editor clean distclean
+	test-analysis addon test-addon test-editor test-kernel clean distclean
 
 ## deps: install missing OS packages (apt-get; sudo when not root)
 deps:
@@ -106,7 +106,7 @@ lint: deps
 	@python3 tools/check-gd-layers.py
 	@tools/gdtoolkit.sh gdlint addons scripts tests
 	@tools/gdtoolkit.sh gdformat --check addons scripts tests
-	@find gdextension/src gdextension/tests gdextension/bench -name '*.h' -o -name '*.cpp' | \
+	@find gdextension/src gdextension/tests gdextension/bench gdextension/vm_tests -name '*.h' -o -name '*.cpp' | \
 		sort | xargs clang-format --dry-run -Werror
 	@echo "clang-format: the C++ is formatted"
 
@@ -162,6 +162,13 @@ test-addon: addon
 ## editor must not ask anything (tools/test-editor.sh)
 test-editor: addon
 	@tools/test-editor.sh
+
+## test-kernel: our device stack against the real Linux drivers: Debian's kernel (fetched once
+## into .kernel/) boots under QEMU with the VM test program (gdextension/vm_tests), whose
+## device models are real devices there (uhid, uinput, USB gadgets); every backend's
+## transport end to end through the servo, unplug and replug (tools/kernel/run.sh)
+test-kernel: build
+	@tools/kernel/run.sh $(BUILD)/debug/haptics_vm_tests bookworm
 
 ## bench: servo loop vs naive loop, the force model's and the proxy's tick cost, each device
 ## backend's tick cost and protocol rate against its scripted transport, the game's

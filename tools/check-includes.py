@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The extension's include directions and file sizes.
 
-Reads every #include "..." under gdextension/src, gdextension/tests and gdextension/bench,
+Reads every #include "..." under gdextension/src, tests, bench and vm_tests,
 resolves it the way the build does, and checks that the including file's folder may include
 the included file's folder (LAYERS below). Also checks that no C++ file under gdextension/ is
 over MAX_LINES lines. Prints one line per problem and exits 1 if there is any.
@@ -33,13 +33,14 @@ LAYERS = {
     "tests_support": [],
     "tests": ["src", "tests_support"],
     "bench": ["src", "tests", "tests_support"],
+    "vm_tests": ["src"],
 }
 # Where a quoted include is looked for after the including file's own folder (as the build's
 # include paths do), and headers from outside the tree.
 ROOTS = ["src", "tests", "tests_support", "bench"]
 EXTERNAL = {"gdextension_interface.h"}
 MAX_LINES = 400
-SOURCES = ("src", "tests", "bench")
+SOURCES = ("src", "tests", "bench", "vm_tests")
 CPP = (".h", ".cpp")
 
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')

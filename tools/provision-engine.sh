@@ -39,38 +39,10 @@ if [[ $(uname -s) != Linux || $(uname -m) != x86_64 ]] || ! command -v apt-get >
 Install Godot 4.5 or newer yourself and run again with GODOT=/path/to/godot."
 fi
 
-keyring=/usr/share/keyrings/debian-archive-keyring.gpg
+source "$project/tools/apt-private.sh"
 [[ -r $keyring ]] || die "missing $keyring: install the 'debian-archive-keyring' package
 (or install Godot 4.5+ yourself and set GODOT)."
-
-# Same Debian mirror the system uses where it names one (active lines only); deb.debian.org
-# otherwise.
-mirror=$(cat /etc/apt/sources.list /etc/apt/sources.list.d/*.list \
-  /etc/apt/sources.list.d/*.sources 2>/dev/null \
-  | sed -nE 's,^(deb[[:space:]]+(\[[^]]*\][[:space:]]+)?|URIs:[[:space:]]+)(https?://[^[:space:]]+/debian)/?([[:space:]].*)?$,\3,p' \
-  | head -n 1 || true)
-mirror=${mirror:-http://deb.debian.org/debian}
-
 apt_state="$engine_dir/apt"
-apt_opts() {
-  local cache=$1
-  opts=(
-    -o "Dir::Etc::SourceList=$apt_state/etc/sources.list"
-    -o "Dir::Etc::SourceParts=/dev/null"
-    -o "Dir::Etc::Preferences=/dev/null"
-    -o "Dir::Etc::PreferencesParts=/dev/null"
-    -o "Dir::State::Lists=$apt_state/lists"
-    -o "Dir::State::status=$apt_state/status"
-    -o "Dir::Cache=$cache"
-    -o "APT::Architecture=amd64"
-    -o "APT::Architectures::=amd64"
-    -o "APT::Get::List-Cleanup=0"
-    -o "Debug::NoLocking=1"
-  )
-  # Root would otherwise hand downloads to the _apt user, who cannot write our folders.
-  [[ $(id -u) -eq 0 ]] && opts+=(-o "APT::Sandbox::User=root")
-  return 0
-}
 
 # Writes DIR/<package>.list for each .deb given: one absolute path a line (symlinks without
 # their target).
@@ -106,9 +78,9 @@ mkdir -p "$apt_state/lists/partial" "$apt_state/cache/archives/partial" "$apt_st
 
 fetch() {
   local suite=$1
-  echo "deb [signed-by=$keyring] $mirror $suite main" >"$apt_state/etc/sources.list"
+  apt_private_init "$apt_state" "$suite"
   apt_opts "$apt_state/cache"
-  echo "provision-engine: resolving ${packages[*]} from Debian '$suite' ($mirror)"
+  echo "provision-engine: resolving ${packages[*]} from Debian '$suite'"
   apt-get "${opts[@]}" -qq update &&
     apt-get "${opts[@]}" -qq -y --download-only --no-install-recommends install "${packages[@]}" \
       >/dev/null

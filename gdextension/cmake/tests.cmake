@@ -41,6 +41,12 @@ if(HAPTICS_BUILD_TESTS)
   # pass: running no case fails.
   doctest_discover_tests(haptics_tests PROPERTIES ENVIRONMENT "TMPDIR=${HAPTICS_TEST_TMPDIR}" FIXTURES_REQUIRED scratch
     FAIL_REGULAR_EXPRESSION "test cases: *0 [|]")
+
+  # The program the kernel tests boot a VM for (tools/kernel/run.sh): our device stack against
+  # the VM's real drivers, the device models speaking through uhid, uinput and gadgets.
+  file(GLOB HAPTICS_VM_TEST_SOURCES CONFIGURE_DEPENDS vm_tests/*.cpp)
+  add_executable(haptics_vm_tests ${HAPTICS_VM_TEST_SOURCES})
+  target_link_libraries(haptics_vm_tests PRIVATE haptics_engine haptics_scripted)
 endif()
 
 if(HAPTICS_BUILD_BENCH)

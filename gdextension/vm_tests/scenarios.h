@@ -1,0 +1,9 @@
+#pragma once
+
+// The scenarios the VM's test program runs, one per device path; each returns its failures.
+
+namespace haptics::vm {
+
+int run_pid_hidraw();
+
+} // namespace haptics::vm

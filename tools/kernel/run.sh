@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# Boots a Debian kernel under QEMU (software emulation: this machine's KVM runs no stock
+# kernel) with the VM test program (gdextension/vm_tests) in its initramfs, reads what it
+# prints on the serial console and fails on any failed check, a missing end, or the timeout.
+#   tools/kernel/run.sh PROGRAM [SUITE [SCENARIO,...]]   SUITE: bookworm (default) or testing
+# The console log is .build/kernel/<suite>.log.
+set -euo pipefail
+project=$(cd "$(dirname "$0")/../.." && pwd)
+program=${1:?usage: tools/kernel/run.sh PROGRAM [SUITE [SCENARIO,...]]}
+suite=${2:-bookworm}
+scenarios=${3:-}
+# Guest seconds are several host seconds under emulation on a loaded machine.
+timeout_s=${KERNEL_TEST_TIMEOUT:-300}
+die() { echo "kernel/run: $*" >&2; exit 1; }
+
+qemu=$(command -v qemu-system-x86_64) || die "qemu-system-x86_64 missing (package qemu-system-x86; make deps installs it)"
+version=$("$project/tools/kernel/fetch.sh" "$suite" | tail -n 1) || die "could not fetch the '$suite' kernel"
+kernel_dir=$project/.kernel/$suite/root
+image=$(ls "$kernel_dir"/boot/vmlinuz-* | head -n 1)
+out=$project/.build/kernel
+mkdir -p "$out"
+"$project/tools/kernel/initramfs.sh" "$kernel_dir" "$version" "$program" "$out/$suite.cpio.gz" >/dev/null ||
+  die "could not pack the initramfs"
+log=$out/$suite.log
+start=$(date +%s)
+status=0
+timeout "$timeout_s" "$qemu" -accel tcg -cpu max -m 512M -smp 2 -nographic -no-reboot \
+  -kernel "$image" -initrd "$out/$suite.cpio.gz" \
+  -append "console=ttyS0 panic=-1 rdinit=/init loglevel=4 ktest.scenarios=$scenarios" \
+  </dev/null >"$log" 2>&1 || status=$?
+seconds=$(($(date +%s) - start))
+tr -d '\r' <"$log" >"$log.txt" && mv "$log.txt" "$log"
+
+grep -E '^(KTEST|KWIRE|KINFO)' "$log" | sed "s/^/[$suite] /"
+((status != 124)) || die "the VM did not finish within ${timeout_s} s (log: $log)"
+grep -q '^KTEST-KERNEL ' "$log" || die "the VM did not reach the test program (log: $log)"
+grep -q '^KTEST-DONE ' "$log" || die "the test program did not finish (log: $log)"
+failures=$(grep -cE '^KTEST (.* FAIL |-SETUP FAIL)' "$log" || true)
+checks=$(grep -cE '^KTEST [^ ]+ (PASS|FAIL) ' "$log" || true)
+((failures == 0)) && grep -q '^KTEST-EXIT 0$' "$log" ||
+  die "$failures of $checks checks failed on $(grep -m1 '^KTEST-KERNEL' "$log" | cut -d' ' -f2) (log: $log)"
+echo "kernel/run: $suite, Linux $version: $checks checks passed in ${seconds} s"
