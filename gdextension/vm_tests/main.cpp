@@ -5,9 +5,14 @@
 #include "ktest.h"
 #include "scenarios.h"
 
+#include <chrono>
+#include <condition_variable>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <mutex>
 #include <string>
+#include <thread>
 
 namespace {
 
@@ -18,6 +23,39 @@ struct Scenario {
 
 constexpr Scenario SCENARIOS[] = {
 	{ "pid-hidraw", haptics::vm::run_pid_hidraw },
+	{ "pid-usb", haptics::vm::run_pid_usb },
+};
+
+// A scenario that hangs (a transfer nobody completes) must still leave the kernel's log and
+// the other results readable: past this, the program says which one and exits.
+constexpr auto SCENARIO_LIMIT = std::chrono::seconds(90);
+
+class Watchdog {
+public:
+	explicit Watchdog(const char *p_scenario) :
+			thread_([this, p_scenario] {
+				std::unique_lock lock(mutex_);
+				if (!done_changed_.wait_for(lock, SCENARIO_LIMIT, [this] { return done_; })) {
+					std::printf("KTEST %s FAIL did not finish within %lld s\n", p_scenario,
+							static_cast<long long>(SCENARIO_LIMIT.count()));
+					std::fflush(stdout);
+					std::_Exit(101);
+				}
+			}) {}
+	~Watchdog() {
+		{
+			std::lock_guard lock(mutex_);
+			done_ = true;
+		}
+		done_changed_.notify_one();
+		thread_.join();
+	}
+
+private:
+	std::mutex mutex_;
+	std::condition_variable done_changed_;
+	bool done_ = false;
+	std::thread thread_;
 };
 
 } // namespace
@@ -35,6 +73,7 @@ int main(int p_argc, char **p_argv) {
 		}
 		std::printf("KTEST-BEGIN %s\n", scenario.name);
 		std::fflush(stdout);
+		const Watchdog watchdog(scenario.name);
 		failed += scenario.run();
 		++ran;
 	}

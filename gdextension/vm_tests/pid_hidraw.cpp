@@ -4,17 +4,11 @@
 // probed, opened by the factory, and driven by the servo: a hand pressing into a floor gives
 // the force the servo computed, on the wire. Then the cable is pulled and plugged back.
 
-#include "dev_tools/pid/scripted_pid_joystick.h"
 #include "dev_tools/uhid/pid_uhid.h"
-#include "engine/device_factory.h"
-#include "engine/haptics_engine.h"
-#include "ktest.h"
+#include "rig.h"
 #include "scenarios.h"
 
-#include <chrono>
-#include <cmath>
 #include <memory>
-#include <thread>
 
 namespace haptics::vm {
 
@@ -25,81 +19,27 @@ constexpr uint16_t AJ_VENDOR = 0x2341;
 constexpr uint16_t AJ_PRODUCT = 0x8036;
 constexpr uint8_t SET_CONSTANT_FORCE = 0x05; // AJ's report ID.
 
-bool find_listed(DeviceInfo &r_info) {
-	for (const DeviceInfo &info : list_all_devices().devices) {
-		if (info.vendor_id == AJ_VENDOR && info.product_id == AJ_PRODUCT && info.backend == BACKEND_HIDAPI) {
-			r_info = info;
-			return true;
-		}
-	}
-	return false;
-}
-
-// The game's frames at 50 Hz for p_seconds: the player stands on a floor.
-void stand_on_floor(HapticsEngine &p_engine, double p_seconds) {
-	Frame frame;
-	frame.add_contact(Vec3{ 0.0, 1.0, 0.0 });
-	const int count = static_cast<int>(p_seconds * 50.0);
-	for (int i = 0; i < count; ++i) {
-		frame.sequence = static_cast<uint64_t>(i);
-		(void)p_engine.submit_frame(frame);
-		std::this_thread::sleep_for(std::chrono::milliseconds(20));
-	}
-}
-
-// The firmware's force in device space (y up is HID -Y), newtons.
-Vec3 on_wire_n(const pid::ScriptedPidJoystick &p_joystick, double p_max_force_n) {
-	const pid::ScriptedForce force = p_joystick.rendered_force();
-	return Vec3{ force.x * p_max_force_n, -force.y * p_max_force_n, 0.0 };
-}
-
-std::vector<uint8_t> last_output(const pid::ScriptedPidJoystick &p_joystick, uint8_t p_report_id) {
-	std::vector<uint8_t> last;
-	for (const pid::ScriptedTransfer &transfer : p_joystick.records()) {
-		if (transfer.kind == pid::TransferKind::OUTPUT && transfer.length > 0 && transfer.bytes[0] == p_report_id) {
-			last = transfer.to_vector();
-		}
-	}
-	return last;
-}
-
-// Opens the listed stick and renders a hand pressing down into a floor; true when the
-// force on the wire is the servo's.
-bool press_into_floor(Report &r_report, pid::ScriptedPidJoystick &p_joystick, HapticsEngine &p_engine, const char *p_when) {
+void press_into_floor(Report &r_report, pid::ScriptedPidJoystick &p_joystick, HapticsEngine &r_engine, const std::string &p_when) {
 	DeviceInfo info;
-	if (!r_report.check(eventually([&] { return find_listed(info); }, 5.0), std::string(p_when) + ": list_all_devices() finds the stick")) {
-		return false;
+	if (!r_report.check(find_listed(AJ_VENDOR, AJ_PRODUCT, BACKEND_HIDAPI, info), p_when + ": list_all_devices() finds the stick")) {
+		return;
 	}
-	r_report.info(std::string(p_when) + ": " + info.path + ", driver '" + info.driver + "', " +
+	r_report.info(p_when + ": " + info.path + ", driver '" + info.driver + "', " +
 			(info.openable ? "openable" : "not openable: " + info.unavailable_reason));
-	r_report.check(info.driver == DRIVER_HID_PID && info.openable, std::string(p_when) + ": the HID PID backend drives it");
-	std::unique_ptr<HapticDevice> device;
-	const Status opened = open_listed_device(info, {}, device);
-	if (!r_report.check(opened.ok(), std::string(p_when) + ": the factory opens it " + opened.message())) {
-		return false;
-	}
-	const double max_force_n = device->limits().max_force_n;
-	const Status engine_opened = p_engine.open_device(std::move(device));
-	const Status started = p_engine.start(1000.0);
-	if (!r_report.check(engine_opened.ok() && started.ok(), std::string(p_when) + ": the servo runs it " +
-					engine_opened.message() + started.message())) {
-		return false;
+	r_report.check(info.driver == DRIVER_HID_PID && info.openable, p_when + ": the HID PID backend drives it");
+	double max_force_n = 0.0;
+	if (!open_and_run(r_report, info, r_engine, max_force_n, p_when)) {
+		return;
 	}
 	p_joystick.set_stick(0.0, 0.0);
-	stand_on_floor(p_engine, 0.5);
-	p_joystick.clear_records();
+	stand_on_floor(r_engine, 0.5);
 	p_joystick.set_stick(0.0, 0.8); // Pulled toward the user: the hand presses down.
-	stand_on_floor(p_engine, 1.0);
-	const Vec3 servo = p_engine.forces().total;
-	const Vec3 wire = on_wire_n(p_joystick, max_force_n);
-	char text[160];
-	std::snprintf(text, sizeof(text), "%s: servo (%.3f, %.3f) N, on the wire (%.3f, %.3f) N", p_when, servo.x, servo.y, wire.x,
-			wire.y);
-	r_report.info(text);
-	r_report.wire(std::string(p_when) + ": last Set Constant Force", last_output(p_joystick, SET_CONSTANT_FORCE));
+	stand_on_floor(r_engine, 1.0);
+	const Vec3 servo = r_engine.forces().total;
+	r_report.wire(p_when + ": last Set Constant Force", pid_last_output(p_joystick, SET_CONSTANT_FORCE));
+	r_report.check(servo.y > 0.3, p_when + ": the floor pushes the hand up");
 	// AJ's direction has 256 steps (1.4 degrees): 3 % of full scale sideways.
-	const bool same = std::fabs(wire.x - servo.x) < 0.03 * max_force_n && std::fabs(wire.y - servo.y) < 0.03 * max_force_n;
-	return r_report.check(servo.y > 0.3 && same, std::string(p_when) + ": the floor pushes the hand up, and the wire has the servo's force");
+	same_force(r_report, servo, pid_wire_n(p_joystick, max_force_n), 0.03 * max_force_n, p_when);
 }
 
 } // namespace
@@ -120,13 +60,10 @@ int run_pid_hidraw() {
 	press_into_floor(report, *joystick, engine, "plugged");
 
 	stick.unplug();
-	const bool noticed = eventually([&] { return engine.device_status().io == DeviceIo::DISCONNECTED; }, 3.0);
-	report.check(noticed, std::string("unplugged: the device says so: ") + engine.device_status().reason);
-	report.check(!engine.servo_status().ok(), std::string("unplugged: the servo stopped: ") + engine.servo_status().message());
+	expect_unplugged(report, engine, "unplugged");
 	engine.close_device();
 
-	const Status replugged = stick.plug(identity);
-	report.check(replugged.ok(), "replugged");
+	report.check(stick.plug(identity).ok(), "replugged");
 	press_into_floor(report, *joystick, engine, "replugged");
 	engine.stop();
 	engine.close_device();

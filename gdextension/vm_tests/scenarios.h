@@ -5,5 +5,6 @@
 namespace haptics::vm {
 
 int run_pid_hidraw();
+int run_pid_usb();
 
 } // namespace haptics::vm

@@ -35,7 +35,7 @@ grep -E '^(KTEST|KWIRE|KINFO)' "$log" | sed "s/^/[$suite] /"
 ((status != 124)) || die "the VM did not finish within ${timeout_s} s (log: $log)"
 grep -q '^KTEST-KERNEL ' "$log" || die "the VM did not reach the test program (log: $log)"
 grep -q '^KTEST-DONE ' "$log" || die "the test program did not finish (log: $log)"
-failures=$(grep -cE '^KTEST (.* FAIL |-SETUP FAIL)' "$log" || true)
+failures=$(grep -cE '^KTEST( .* FAIL |-SETUP FAIL)' "$log" || true)
 checks=$(grep -cE '^KTEST [^ ]+ (PASS|FAIL) ' "$log" || true)
 ((failures == 0)) && grep -q '^KTEST-EXIT 0$' "$log" ||
   die "$failures of $checks checks failed on $(grep -m1 '^KTEST-KERNEL' "$log" | cut -d' ' -f2) (log: $log)"

@@ -97,8 +97,8 @@ TEST_CASE("pid device: opening an AJ stick sends the init sequence, creates and 
 	CHECK(joystick->records().size() == 3);
 }
 
-TEST_CASE("pid device: the rendered force reaches the firmware with its direction (AJ and OFB-like)") {
-	for (const ScriptedFirmware firmware : { ScriptedFirmware::AJ, ScriptedFirmware::VIRTUAL }) {
+TEST_CASE("pid device: the rendered force reaches the firmware with its direction (AJ, AJ with a Start Delay, OFB-like)") {
+	for (const ScriptedFirmware firmware : { ScriptedFirmware::AJ, ScriptedFirmware::AJ_START_DELAY, ScriptedFirmware::VIRTUAL }) {
 		CAPTURE(static_cast<int>(firmware));
 		auto joystick = std::make_shared<ScriptedPidJoystick>(firmware);
 		std::unique_ptr<HapticDevice> device = make_scripted_device(joystick);

@@ -21,6 +21,15 @@ constexpr ScriptedPidJoystick::Profile AJ_PROFILE = {
 	0x7FFF, 0x7FFF, // USB_DURATION_INFINITE
 };
 
+constexpr ScriptedPidJoystick::Profile AJ_START_DELAY_PROFILE = {
+	0x01, 7, 1, 2, 3, 5, 0x02, //
+	0x01, 20, 1, 2, 3, 11, 13, 14, false, 360.0 / 255.0, // Start Delay u16 at 9: the rest 2 later
+	0x05, 4, 10000, //
+	0x0A, 0x0B, 0x0C, 0x0D, false, //
+	0x05, 4, 0x06, 5, 0x07, 5, //
+	0x7FFF, 0x7FFF, //
+};
+
 constexpr ScriptedPidJoystick::Profile VIRTUAL_PROFILE = {
 	0x01, 6, 1, 1, 2, 4, 0x02, // 8 buttons, X, Y s16
 	0x01, 16, 1, 2, 3, 11, 13, 14, true, 0.01, // u16 direction, centidegrees
@@ -61,6 +70,8 @@ const ScriptedPidJoystick::Profile &ScriptedPidJoystick::profile_for(ScriptedFir
 			return VIRTUAL_PROFILE;
 		case ScriptedFirmware::VIRTUAL_WHEEL:
 			return VIRTUAL_WHEEL_PROFILE;
+		case ScriptedFirmware::AJ_START_DELAY:
+			return AJ_START_DELAY_PROFILE;
 	}
 	return AJ_PROFILE;
 }

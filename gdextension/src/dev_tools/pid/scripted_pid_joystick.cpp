@@ -16,6 +16,8 @@ ScriptedPidJoystick::ScriptedPidJoystick(ScriptedFirmware p_firmware, size_t p_r
 		firmware_(p_firmware), profile_(profile_for(p_firmware)), record_capacity_(p_record_capacity) {
 	if (p_firmware == ScriptedFirmware::AJ) {
 		descriptor_ = compose_aj_descriptor(16);
+	} else if (p_firmware == ScriptedFirmware::AJ_START_DELAY) {
+		descriptor_ = aj_start_delay_descriptor();
 	} else if (p_firmware == ScriptedFirmware::VIRTUAL_WHEEL) {
 		descriptor_ = virtual_pid_wheel_descriptor();
 	} else {

@@ -37,6 +37,9 @@ enum class ScriptedFirmware : uint8_t {
 	AJ = 0, // compose_aj_descriptor(16 buttons) + AJ firmware behaviour.
 	VIRTUAL = 1, // virtual_pid_descriptor(): OFB-like bitmask control, 16-bit direction.
 	VIRTUAL_WHEEL = 2, // The same firmware with a one-axis (X) stick report.
+	// AJ with a Start Delay in Set Effect (aj_start_delay_descriptor()): the layout Linux 6.1's
+	// hid-pidff accepts, so the kernel drives it through evdev.
+	AJ_START_DELAY = 3,
 };
 
 enum class TransferKind : uint8_t {

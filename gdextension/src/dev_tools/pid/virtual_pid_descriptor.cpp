@@ -1,5 +1,7 @@
 #include "dev_tools/pid/virtual_pid_descriptor.h"
 
+#include "devices/pid/aj_descriptor.h"
+
 #include <algorithm>
 #include <iterator>
 
@@ -100,6 +102,17 @@ std::vector<uint8_t> virtual_pid_wheel_descriptor() {
 		*(at + 1) = 0x01;
 		bytes.erase(at + 4, at + 6);
 	}
+	return bytes;
+}
+
+std::vector<uint8_t> aj_start_delay_descriptor() {
+	// Where AJ's PID part ends Set Effect's three 16-bit times (Output), before it resets the
+	// unit: the Start Delay shares their size, range and unit (ms).
+	constexpr size_t AFTER_SAMPLE_PERIOD = 0x00A3;
+	constexpr uint8_t START_DELAY[] = { 0x09, 0xA7, 0x95, 0x01, 0x91, 0x02 };
+	std::vector<uint8_t> bytes = compose_aj_descriptor(16);
+	const size_t at = bytes.size() - AJ_PID_DESCRIPTOR_SIZE + AFTER_SAMPLE_PERIOD;
+	bytes.insert(bytes.begin() + static_cast<std::ptrdiff_t>(at), std::begin(START_DELAY), std::end(START_DELAY));
 	return bytes;
 }
 

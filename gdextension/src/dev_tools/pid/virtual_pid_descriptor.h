@@ -36,4 +36,9 @@ std::span<const uint8_t> virtual_pid_descriptor();
 // so PidDevice renders one axis.
 std::vector<uint8_t> virtual_pid_wheel_descriptor();
 
+// AJ's composed descriptor (16 buttons) with a 16-bit Start Delay (ms) after Set Effect's
+// Sample Period: without one, Linux 6.1's hid-pidff refuses the device ("unknown set_effect
+// report layout"); with it, the kernel drives the stick and hidraw is not ours to use.
+std::vector<uint8_t> aj_start_delay_descriptor();
+
 } // namespace haptics::pid
