@@ -91,6 +91,9 @@ Status EvdevDevice::open() {
 		return opened;
 	}
 	exchange_.reset(state_from_input());
+	report_interval_s_ = output_report_interval_s(config_.path, config_.sysfs_root);
+	since_update_s_ = 0.0;
+	hold_s_ = 0.0;
 	DeviceIoThreadOptions options;
 	options.rate_hz = config_.rate_hz;
 	const Status started = io_thread_.start(*this, exchange_, options);
@@ -245,13 +248,21 @@ DeviceIo EvdevDevice::fail(DeviceExchange &r_exchange, int p_error, const char *
 }
 
 DeviceIo EvdevDevice::io_cycle(DeviceExchange &r_exchange, double p_dt_s) {
-	(void)p_dt_s;
 	const ForceCommand command = r_exchange.latest_command();
-	int result = effect_.update(map_force_to_constant(command.force_n, mapping_));
-	if (result < 0) {
-		return fail(r_exchange, result, "updating the force");
+	const FfConstantForce wanted = map_force_to_constant(command.force_n, mapping_);
+	since_update_s_ += p_dt_s;
+	// A force that changes while the device drains waits; the newest is sent when it may be,
+	// so the last command always reaches the device.
+	if (since_update_s_ >= hold_s_ && !(wanted == effect_.current())) {
+		const FfConstantForce before = effect_.current();
+		const int result = effect_.update(wanted);
+		if (result < 0) {
+			return fail(r_exchange, result, "updating the force");
+		}
+		hold_s_ = update_hold_s(before, wanted, report_interval_s_);
+		since_update_s_ = 0.0;
 	}
-	result = drain_input_events(*sys_, fd_, input_, read_buffer_);
+	const int result = drain_input_events(*sys_, fd_, input_, read_buffer_);
 	if (result < 0) {
 		return fail(r_exchange, result, "reading the stick");
 	}

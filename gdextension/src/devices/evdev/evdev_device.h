@@ -15,11 +15,10 @@
 // sustained full torque. Stiffness 300 N/m over a 5 cm "radius" reaches full force at
 // a third of the travel: stable at a 500 Hz update with a few ms of USB latency.
 //
-// I/O runs on a DeviceIoThread at rate_hz (500 Hz default: hid-pidff turns one update into
-// up to two HID output reports, set-effect for the direction and set-constant for the
-// level, and a full-speed interrupt endpoint carries one report per ms). Each cycle takes
-// the newest servo force, uploads it if its quantised (direction, level) changed, drains
-// the input events and publishes the state. An unplugged device (ENODEV) becomes
+// I/O runs on a DeviceIoThread at rate_hz (500 Hz default). Each cycle takes the newest servo
+// force, uploads it if its quantised (direction, level) changed and the device has drained
+// the previous update (evdev_pacing.h: the kernel drops what outruns the endpoint, silently),
+// drains the input events and publishes the state. An unplugged device (ENODEV) becomes
 // DISCONNECTED with a reason; any other errno FAILED with strerror. close() and errors
 // leave the device at zero force, stopped, with the effect erased where it is reachable.
 
@@ -29,6 +28,7 @@
 #include "devices/device_io_thread.h"
 #include "devices/evdev/evdev_effect.h"
 #include "devices/evdev/evdev_input.h"
+#include "devices/evdev/evdev_pacing.h"
 #include "devices/evdev/evdev_syscalls.h"
 #include "devices/exchanged_device.h"
 
@@ -56,6 +56,7 @@ struct EvdevDeviceConfig {
 	// evdev_ff.h); these flip the force, never the input.
 	bool invert_force_x = false;
 	bool invert_force_y = false;
+	std::string sysfs_root = "/sys"; // Where the endpoint's interval is read; tests fake it.
 };
 
 // Ranges above; the message names the field.
@@ -102,6 +103,9 @@ private:
 	EvdevFfFeatures features_;
 	FfForceMapping mapping_;
 	EvdevConstantForce effect_;
+	double report_interval_s_ = 0.0; // Of the interrupt OUT endpoint, read at open.
+	double since_update_s_ = 0.0;
+	double hold_s_ = 0.0; // Until the device has drained the last update.
 	EvdevInputDecoder input_;
 	uint8_t read_buffer_[INPUT_READ_BUFFER_SIZE] = {};
 	DeviceIoThread io_thread_;
