@@ -102,8 +102,10 @@ TEST_CASE("evdev pacing: a force turning every cycle is sent no faster than the 
 	const auto start = std::chrono::steady_clock::now();
 	double elapsed = 0.0;
 	for (int i = 0; elapsed < 0.5; ++i) {
+		// Direction and level both change: two reports per update.
 		const double angle = 0.3 * i;
-		REQUIRE(device->write_force({ Vec3(2.0 * std::sin(angle), 2.0 * std::cos(angle), 0.0), {} }) == DeviceIo::OK);
+		const double magnitude = 2.0 + std::sin(1.7 * i);
+		REQUIRE(device->write_force({ Vec3(magnitude * std::sin(angle), magnitude * std::cos(angle), 0.0), {} }) == DeviceIo::OK);
 		std::this_thread::sleep_for(std::chrono::milliseconds(1));
 		elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 	}
