@@ -24,6 +24,7 @@ struct Scenario {
 constexpr Scenario SCENARIOS[] = {
 	{ "pid-hidraw", haptics::vm::run_pid_hidraw },
 	{ "pid-usb", haptics::vm::run_pid_usb },
+	{ "falcon-usb", haptics::vm::run_falcon_usb },
 };
 
 // A scenario that hangs (a transfer nobody completes) must still leave the kernel's log and

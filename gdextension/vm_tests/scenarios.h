@@ -6,5 +6,6 @@ namespace haptics::vm {
 
 int run_pid_hidraw();
 int run_pid_usb();
+int run_falcon_usb();
 
 } // namespace haptics::vm

@@ -3,12 +3,18 @@
 #include <libusb.h>
 
 #include <charconv>
+#include <chrono>
 #include <climits>
 #include <cstdio>
+#include <thread>
 
 namespace haptics::usb {
 
 namespace {
+
+// How long LibusbTransport::explain() gives the kernel to notice an unplug: 5 x 20 ms.
+constexpr int PRESENCE_ATTEMPTS = 5;
+constexpr unsigned PRESENCE_TIMEOUT_MS = 20;
 
 bool parse_decimal(std::string_view p_text, int32_t p_max, int32_t &r_value) {
 	if (p_text.empty()) {
@@ -283,7 +289,7 @@ UsbTransfer LibusbTransport::control_transfer(uint8_t p_request_type, uint8_t p_
 		uint16_t p_index, uint8_t *p_data, uint16_t p_length, uint32_t p_timeout_ms) {
 	const int done = libusb_control_transfer(handle_, p_request_type, p_request, p_value, p_index, p_data, p_length,
 			p_timeout_ms);
-	return done >= 0 ? UsbTransfer{ UsbResult::OK, done } : UsbTransfer{ usb_result_from_libusb(done), 0 };
+	return done >= 0 ? UsbTransfer{ UsbResult::OK, done } : UsbTransfer{ explain(usb_result_from_libusb(done)), 0 };
 }
 
 UsbTransfer LibusbTransport::bulk_write(uint8_t p_endpoint, const uint8_t *p_bytes, int32_t p_length,
@@ -292,13 +298,35 @@ UsbTransfer LibusbTransport::bulk_write(uint8_t p_endpoint, const uint8_t *p_byt
 	// libusb takes a non-const buffer for both directions; an OUT transfer does not write it.
 	const int code = libusb_bulk_transfer(handle_, p_endpoint, const_cast<uint8_t *>(p_bytes), p_length, &transferred,
 			p_timeout_ms);
-	return { usb_result_from_libusb(code), transferred };
+	return { explain(usb_result_from_libusb(code)), transferred };
 }
 
 UsbTransfer LibusbTransport::bulk_read(uint8_t p_endpoint, uint8_t *r_buffer, int32_t p_length, uint32_t p_timeout_ms) {
 	int transferred = 0;
 	const int code = libusb_bulk_transfer(handle_, p_endpoint, r_buffer, p_length, &transferred, p_timeout_ms);
-	return { usb_result_from_libusb(code), transferred };
+	return { explain(usb_result_from_libusb(code)), transferred };
+}
+
+UsbResult LibusbTransport::explain(UsbResult p_result) {
+	if (p_result != UsbResult::IO || handle_ == nullptr) {
+		return p_result;
+	}
+	// A transfer the unplug cut short fails with LIBUSB_ERROR_IO (the URB's -EPROTO or
+	// -ESHUTDOWN), and the kernel notices the device has gone a few ms later (measured on
+	// Linux 6.1 with dummy_hcd): ask the device until it answers or is known gone.
+	for (int attempt = 0; attempt < PRESENCE_ATTEMPTS; ++attempt) {
+		uint8_t status[2] = {};
+		const int done = libusb_control_transfer(handle_, LIBUSB_ENDPOINT_IN, LIBUSB_REQUEST_GET_STATUS, 0, 0, status,
+				sizeof(status), PRESENCE_TIMEOUT_MS);
+		if (done >= 0) {
+			return p_result; // Still there: a real I/O error.
+		}
+		if (done == LIBUSB_ERROR_NO_DEVICE) {
+			return UsbResult::NO_DEVICE;
+		}
+		std::this_thread::sleep_for(std::chrono::milliseconds(PRESENCE_TIMEOUT_MS));
+	}
+	return p_result;
 }
 
 } // namespace haptics::usb

@@ -70,6 +70,8 @@ public:
 private:
 	LibusbTransport() = default;
 	void close();
+	// p_result, or NO_DEVICE when an I/O error was the device leaving.
+	UsbResult explain(UsbResult p_result);
 
 	libusb_context *context_ = nullptr;
 	libusb_device_handle *handle_ = nullptr;
