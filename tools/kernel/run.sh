@@ -16,7 +16,7 @@ die() { echo "kernel/run: $*" >&2; exit 1; }
 qemu=$(command -v qemu-system-x86_64) || die "qemu-system-x86_64 missing (package qemu-system-x86; make deps installs it)"
 version=$("$project/tools/kernel/fetch.sh" "$suite" | tail -n 1) || die "could not fetch the '$suite' kernel"
 kernel_dir=$project/.kernel/$suite/root
-image=$(ls "$kernel_dir"/boot/vmlinuz-* | head -n 1)
+image=$project/.kernel/$suite/vmlinuz
 out=$project/.build/kernel
 mkdir -p "$out"
 "$project/tools/kernel/initramfs.sh" "$kernel_dir" "$version" "$program" "$out/$suite.cpio.gz" >/dev/null ||
