@@ -18,6 +18,8 @@ struct Scenario {
 
 constexpr Scenario SCENARIOS[] = {
 	{ "pid-hidraw", haptics::vm::run_pid_hidraw },
+	{ "dualsense", haptics::vm::run_dualsense },
+	{ "evdev-uinput", haptics::vm::run_evdev_uinput },
 };
 
 } // namespace

@@ -8,6 +8,7 @@
 #include "dev_tools/uhid/pid_uhid.h"
 #include "engine/device_factory.h"
 #include "engine/haptics_engine.h"
+#include "game.h"
 #include "ktest.h"
 #include "scenarios.h"
 
@@ -24,28 +25,6 @@ namespace {
 constexpr uint16_t AJ_VENDOR = 0x2341;
 constexpr uint16_t AJ_PRODUCT = 0x8036;
 constexpr uint8_t SET_CONSTANT_FORCE = 0x05; // AJ's report ID.
-
-bool find_listed(DeviceInfo &r_info) {
-	for (const DeviceInfo &info : list_all_devices().devices) {
-		if (info.vendor_id == AJ_VENDOR && info.product_id == AJ_PRODUCT && info.backend == BACKEND_HIDAPI) {
-			r_info = info;
-			return true;
-		}
-	}
-	return false;
-}
-
-// The game's frames at 50 Hz for p_seconds: the player stands on a floor.
-void stand_on_floor(HapticsEngine &p_engine, double p_seconds) {
-	Frame frame;
-	frame.add_contact(Vec3{ 0.0, 1.0, 0.0 });
-	const int count = static_cast<int>(p_seconds * 50.0);
-	for (int i = 0; i < count; ++i) {
-		frame.sequence = static_cast<uint64_t>(i);
-		(void)p_engine.submit_frame(frame);
-		std::this_thread::sleep_for(std::chrono::milliseconds(20));
-	}
-}
 
 // The firmware's force in device space (y up is HID -Y), newtons.
 Vec3 on_wire_n(const pid::ScriptedPidJoystick &p_joystick, double p_max_force_n) {
@@ -67,7 +46,7 @@ std::vector<uint8_t> last_output(const pid::ScriptedPidJoystick &p_joystick, uin
 // force on the wire is the servo's.
 bool press_into_floor(Report &r_report, pid::ScriptedPidJoystick &p_joystick, HapticsEngine &p_engine, const char *p_when) {
 	DeviceInfo info;
-	if (!r_report.check(eventually([&] { return find_listed(info); }, 5.0), std::string(p_when) + ": list_all_devices() finds the stick")) {
+	if (!r_report.check(eventually([&] { return find_listed(AJ_VENDOR, AJ_PRODUCT, BACKEND_HIDAPI, info); }, 5.0), std::string(p_when) + ": list_all_devices() finds the stick")) {
 		return false;
 	}
 	r_report.info(std::string(p_when) + ": " + info.path + ", driver '" + info.driver + "', " +
@@ -81,8 +60,7 @@ bool press_into_floor(Report &r_report, pid::ScriptedPidJoystick &p_joystick, Ha
 	const double max_force_n = device->limits().max_force_n;
 	const Status engine_opened = p_engine.open_device(std::move(device));
 	const Status started = p_engine.start(1000.0);
-	if (!r_report.check(engine_opened.ok() && started.ok(), std::string(p_when) + ": the servo runs it " +
-					engine_opened.message() + started.message())) {
+	if (!r_report.check(engine_opened.ok() && started.ok(), std::string(p_when) + ": the servo runs it " + engine_opened.message() + started.message())) {
 		return false;
 	}
 	p_joystick.set_stick(0.0, 0.0);
@@ -122,7 +100,8 @@ int run_pid_hidraw() {
 	stick.unplug();
 	const bool noticed = eventually([&] { return engine.device_status().io == DeviceIo::DISCONNECTED; }, 3.0);
 	report.check(noticed, std::string("unplugged: the device says so: ") + engine.device_status().reason);
-	report.check(!engine.servo_status().ok(), std::string("unplugged: the servo stopped: ") + engine.servo_status().message());
+	const bool stopped = servo_stops(engine, 3.0);
+	report.check(stopped, std::string("unplugged: the servo stopped: ") + engine.servo_status().message());
 	engine.close_device();
 
 	const Status replugged = stick.plug(identity);

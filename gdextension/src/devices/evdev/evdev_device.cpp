@@ -117,7 +117,7 @@ Status EvdevDevice::open_node() {
 	}
 	Status status = query_ff_features(*sys_, fd_, path, features_);
 	if (status) {
-		status = require_constant_force(features_, path);
+		status = choose_ff_output(features_, path, output_);
 	}
 	EvdevInputLayout layout;
 	if (status) {
@@ -128,6 +128,9 @@ Status EvdevDevice::open_node() {
 	}
 	input_.configure(layout);
 	mapping_ = FfForceMapping{ config_.max_force_n, mapping_.shape, config_.invert_force_x, config_.invert_force_y };
+	if (output_ == EvdevOutput::RUMBLE) {
+		return rumble_.start(*sys_, fd_, features_, path);
+	}
 	return effect_.start(*sys_, fd_, features_, path);
 }
 
@@ -188,6 +191,7 @@ void EvdevDevice::release() {
 	io_thread_.stop(); // Runs io_stop() (zero force) unless the thread failed.
 	if (fd_ >= 0) {
 		effect_.stop_and_erase(); // Errors ignored: an unplugged device has nothing to stop.
+		rumble_.stop_and_erase();
 		sys_->close(fd_);
 		fd_ = -1;
 	}
@@ -214,8 +218,8 @@ DeviceCapabilities EvdevDevice::capabilities() const {
 	DeviceCapabilities capabilities;
 	const bool wheel = mapping_.shape == EvdevShape::WHEEL;
 	capabilities.input_dof = wheel ? 1 : 2;
-	capabilities.output_dof = wheel ? 1 : 2;
-	capabilities.output = ForceOutput::DIRECTIONAL;
+	capabilities.output_dof = output_ == EvdevOutput::RUMBLE ? 0 : (wheel ? 1 : 2);
+	capabilities.output = output_ == EvdevOutput::RUMBLE ? ForceOutput::VIBRATION : ForceOutput::DIRECTIONAL;
 	capabilities.limits = { config_.max_force_n, config_.max_continuous_force_n, config_.max_stiffness_n_per_m,
 		config_.workspace_radius_m };
 	capabilities.native_rate_hz = config_.rate_hz;
@@ -240,14 +244,15 @@ DeviceIo EvdevDevice::fail(DeviceExchange &r_exchange, int p_error, const char *
 	}
 	// Still reachable: leave it at rest now, not whenever the game gets to close().
 	effect_.stop_and_erase();
+	rumble_.stop_and_erase();
 	r_exchange.fail(DeviceIo::FAILED, "%s: %s failed: %s (%s)", path, p_doing, errno_text(p_error), errno_name(p_error));
 	return DeviceIo::FAILED;
 }
 
 DeviceIo EvdevDevice::io_cycle(DeviceExchange &r_exchange, double p_dt_s) {
-	(void)p_dt_s;
 	const ForceCommand command = r_exchange.latest_command();
-	int result = effect_.update(map_force_to_constant(command.force_n, mapping_));
+	int result = output_ == EvdevOutput::RUMBLE ? rumble_.render(p_dt_s)
+												: effect_.update(map_force_to_constant(command.force_n, mapping_));
 	if (result < 0) {
 		return fail(r_exchange, result, "updating the force");
 	}
@@ -261,6 +266,14 @@ DeviceIo EvdevDevice::io_cycle(DeviceExchange &r_exchange, double p_dt_s) {
 
 void EvdevDevice::io_stop() {
 	effect_.update(FfConstantForce{});
+	rumble_.update(FfRumbleLevels{});
+}
+
+DeviceIo EvdevDevice::write_force(const ForceCommand &p_command) {
+	if (open_ && output_ == EvdevOutput::RUMBLE) {
+		rumble_.offer_impact(p_command.impact_n);
+	}
+	return ExchangedDevice::write_force(p_command);
 }
 
 } // namespace haptics::evdev

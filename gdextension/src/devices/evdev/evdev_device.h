@@ -22,6 +22,10 @@
 // the input events and publishes the state. An unplugged device (ENODEV) becomes
 // DISCONNECTED with a reason; any other errno FAILED with strerror. close() and errors
 // leave the device at zero force, stopped, with the effect erased where it is reachable.
+//
+// A node whose driver offers rumble but no FF_CONSTANT (a gamepad) opens as a vibration
+// device: the same sequence with one FF_RUMBLE effect rendering the servo's impacts
+// (evdev_rumble.h); output VIBRATION, no force axes.
 
 #include "core/base/status.h"
 #include "core/device/device.h"
@@ -29,6 +33,7 @@
 #include "devices/device_io_thread.h"
 #include "devices/evdev/evdev_effect.h"
 #include "devices/evdev/evdev_input.h"
+#include "devices/evdev/evdev_rumble.h"
 #include "devices/evdev/evdev_syscalls.h"
 #include "devices/exchanged_device.h"
 
@@ -81,9 +86,14 @@ public:
 	Status calibrate() override;
 	DeviceCapabilities capabilities() const override;
 	const char *name() const override { return name_; }
+	// A vibration device hands the transients' peak to the I/O thread, every tick.
+	DeviceIo write_force(const ForceCommand &p_command) override;
 
 	EvdevShape shape() const { return mapping_.shape; }
 	const EvdevDeviceConfig &config() const { return config_; }
+	// What the kernel offered at open, and what renders the servo.
+	const EvdevFfFeatures &features() const { return features_; }
+	EvdevOutput output() const { return output_; }
 
 private:
 	DeviceIo io_cycle(DeviceExchange &r_exchange, double p_dt_s) override;
@@ -100,8 +110,10 @@ private:
 	char name_[128] = "evdev force-feedback device";
 	int fd_ = -1;
 	EvdevFfFeatures features_;
+	EvdevOutput output_ = EvdevOutput::CONSTANT;
 	FfForceMapping mapping_;
 	EvdevConstantForce effect_;
+	EvdevRumble rumble_;
 	EvdevInputDecoder input_;
 	uint8_t read_buffer_[INPUT_READ_BUFFER_SIZE] = {};
 	DeviceIoThread io_thread_;
