@@ -25,6 +25,8 @@ constexpr Scenario SCENARIOS[] = {
 	{ "pid-hidraw", haptics::vm::run_pid_hidraw },
 	{ "pid-usb", haptics::vm::run_pid_usb },
 	{ "falcon-usb", haptics::vm::run_falcon_usb },
+	{ "dualsense", haptics::vm::run_dualsense },
+	{ "evdev-uinput", haptics::vm::run_evdev_uinput },
 };
 
 // A scenario that hangs (a transfer nobody completes) must still leave the kernel's log and

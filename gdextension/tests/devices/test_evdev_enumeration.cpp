@@ -1,5 +1,5 @@
 // Enumeration over a fake sysfs tree built in a temporary folder (removed afterwards, also
-// when a check fails): which event nodes are listed (FF_CONSTANT only), the DeviceInfo
+// when a check fails): which event nodes are listed (FF_CONSTANT or FF_RUMBLE), the DeviceInfo
 // fields, stable ids, the HID directory for pairing with hidraw, and probe() through the
 // REAL syscalls on files that are not evdev nodes.
 
@@ -75,13 +75,16 @@ constexpr const char *HID_PARENT = "pci0000:00/0000:00:14.0/usb1/1-2/1-2:1.0/000
 
 } // namespace
 
-TEST_CASE("evdev enumeration: lists FF_CONSTANT nodes only, in event order, with sysfs fields") {
+TEST_CASE("evdev enumeration: lists FF_CONSTANT and FF_RUMBLE nodes, in event order, with sysfs fields") {
 	FakeSysfs sysfs;
 	sysfs.mark_hid(sysfs.root() / "sys/devices" / HID_PARENT);
 	sysfs.add(HID_PARENT, "input5", "event7", "1077e0000 0", "Arduino LLC Arduino Leonardo",
 			"usb-0000:00:14.0-2/input0");
-	// A rumble gamepad (no FF_CONSTANT), a keyboard (no ff file), a garbled capability.
-	sysfs.add("pci0000:00/usb1/1-3/1-3:1.0/0003:045E:028E.0002", "input6", "event3", "107030000 0", "Pad", "usb-3");
+	// A rumble gamepad (no FF_CONSTANT), a keyboard (no ff file), a garbled capability, a node
+	// whose driver offers only the gain (nothing to render with).
+	sysfs.add("pci0000:00/usb1/1-3/1-3:1.0/0003:045E:028E.0002", "input6", "event3", "107030000 0", "Pad", "usb-3", "045e",
+			"028e");
+	sysfs.add("virtual", "input7", "event5", "100000000 0", "Gain only", "");
 	sysfs.add("platform/i8042/serio0", "input1", "event0", nullptr, "AT keyboard", "isa0060/serio0/input0");
 	sysfs.add("virtual/broken", "input9", "event4", "zz 0", "Broken", "");
 	// A virtual (uinput) wheel: constant force, no phys, not on HID.
@@ -91,11 +94,17 @@ TEST_CASE("evdev enumeration: lists FF_CONSTANT nodes only, in event order, with
 	std::vector<DeviceInfo> devices;
 	std::vector<std::string> warnings;
 	enumerate_evdev_devices(devices, warnings, sysfs.class_input().string(), sysfs.dev_input().string());
-	REQUIRE(devices.size() == 2);
+	REQUIRE(devices.size() == 3);
 	REQUIRE(warnings.size() == 1);
 	CHECK(warnings[0] == "evdev: event4 capabilities/ff: 'z' in 'zz' is not a hex digit");
 
-	const DeviceInfo &stick = devices[0];
+	const DeviceInfo &pad = devices[0]; // event3: rumble renders the impacts.
+	CHECK(pad.id == "evdev:usb-3");
+	CHECK(pad.vendor_id == 0x045e);
+	CHECK(pad.product_id == 0x028e);
+	CHECK(pad.driver == "evdev");
+
+	const DeviceInfo &stick = devices[1];
 	CHECK(stick.id == "evdev:usb-0000:00:14.0-2/input0");
 	CHECK(stick.backend == "evdev");
 	CHECK(stick.driver == "evdev");
@@ -109,7 +118,7 @@ TEST_CASE("evdev enumeration: lists FF_CONSTANT nodes only, in event order, with
 	CHECK(stick.unavailable_reason.find("EVIOCGBIT(EV_FF) failed") != std::string::npos);
 	CHECK(stick.unavailable_reason.find("not an evdev node?") != std::string::npos);
 
-	const DeviceInfo &wheel = devices[1];
+	const DeviceInfo &wheel = devices[2];
 	CHECK(wheel.id == "evdev:event12"); // No phys: the node's name.
 	CHECK(wheel.vendor_id == 0x1209);
 	CHECK(wheel.product_id == 0xffb0);

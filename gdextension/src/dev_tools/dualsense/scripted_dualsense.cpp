@@ -74,7 +74,6 @@ uint8_t raw_axis(double p_value) {
 // writes and ioctls, the poll error for reads.
 constexpr const char *WRITE_GONE = "hid_write: No such device";
 constexpr const char *READ_GONE = "hid_read: hid_read_timeout: unexpected poll error (device disconnected)";
-constexpr const char *FEATURE_GONE = "hid_get_feature_report: No such device";
 
 } // namespace
 
@@ -295,31 +294,6 @@ TransportIo ScriptedDualSense::produce_input(uint8_t *r_buffer, size_t p_capacit
 	++poll_burst_;
 	r_size = build_input(r_buffer, p_capacity);
 	input_reports_.fetch_add(1, std::memory_order_relaxed);
-	return TransportIo::OK;
-}
-
-TransportIo ScriptedDualSense::produce_feature(uint8_t p_report_id, uint8_t *r_buffer, size_t p_capacity, size_t &r_size,
-		const char *&r_error) {
-	r_size = 0;
-	if (!plugged()) {
-		r_error = FEATURE_GONE;
-		return TransportIo::DISCONNECTED;
-	}
-	feature_reads_.fetch_add(1, std::memory_order_relaxed);
-	if (options_.firmware_info_fails || p_report_id != FEATURE_FIRMWARE_INFO_ID || p_capacity < FEATURE_FIRMWARE_INFO_SIZE) {
-		r_error = "hid_get_feature_report: Broken pipe";
-		return TransportIo::FAILED;
-	}
-	uint8_t report[FEATURE_FIRMWARE_INFO_SIZE] = {};
-	report[0] = FEATURE_FIRMWARE_INFO_ID;
-	report[FIRMWARE_UPDATE_VERSION_OFFSET] = static_cast<uint8_t>(options_.update_version);
-	report[FIRMWARE_UPDATE_VERSION_OFFSET + 1] = static_cast<uint8_t>(options_.update_version >> 8);
-	if (options_.bus == Bus::BLUETOOTH) {
-		write_le32(report + FEATURE_FIRMWARE_INFO_SIZE - 4,
-				crc32_seeded(CRC_SEED_FEATURE, report, FEATURE_FIRMWARE_INFO_SIZE - 4));
-	}
-	std::memcpy(r_buffer, report, sizeof(report));
-	r_size = sizeof(report);
 	return TransportIo::OK;
 }
 

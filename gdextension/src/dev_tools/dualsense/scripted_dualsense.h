@@ -14,8 +14,12 @@
 //    report arrives (SDL: any output report switches the pad to full reports). Each poll
 //    returns reports_per_poll reports, then one NO_DATA, so a reader that drains the queue
 //    is exercised the way hidraw's queue would.
-//  - Feature report 0x20 (firmware info) carries the scripted update version at bytes 44..45
-//    (on BT with a seed-0xA3 CRC), or fails when scripted to.
+//  - Feature reports, as hid-playstation reads them when it binds the pad (PS-K
+//    dualsense_create; each must be exactly its size, on BT with a seed-0xA3 CRC in the last
+//    4 bytes): 0x09 pairing info (20 bytes, the MAC at 1..6, least significant byte first),
+//    0x20 firmware info (64 bytes: hardware and firmware versions at 24 and 28, the scripted
+//    update version at 44..45; fails when scripted to) and 0x05 IMU calibration (41 bytes,
+//    scripted_dualsense_features.cpp). Any other ID fails as a stalled request does.
 //  - The BT sequence nibble is checked within a session (from a transport's open): a new
 //    host process starts its own count, so a jump between sessions is not an error.
 //  - unplug(): every call then fails as hidapi does on hidraw (DISCONNECTED, its texts), and
@@ -42,6 +46,9 @@ struct ScriptedDualSenseOptions {
 	bool edge = false; // A DualSense Edge (054C:0DF2).
 	uint16_t update_version = 0x0224; // Firmware-info bytes 44..45.
 	bool firmware_info_fails = false;
+	// Pairing info: hid-playstation names the pad by it and refuses a second pad with the
+	// same one ("Duplicate device found for MAC address").
+	uint8_t mac_address[6] = { 0x5a, 0x3e, 0x21, 0x7c, 0x4b, 0xa0 }; // As shown: A0:4B:7C:21:3E:5A.
 	// False: the transport reports Bus::UNKNOWN, like hidapi < 0.13, so the backend must
 	// infer the link from the first input report.
 	bool transport_knows_bus = true;
@@ -62,6 +69,14 @@ struct ScriptedPadHeld {
 	uint8_t last_report[MAX_OUTPUT_SIZE] = {};
 	size_t last_report_size = 0;
 };
+
+// The feature reports the pad answers besides firmware info (dualsense_input.h), with the
+// sizes hid-playstation asks for (PS-K DS_FEATURE_REPORT_*).
+inline constexpr uint8_t FEATURE_CALIBRATION_ID = 0x05;
+inline constexpr size_t FEATURE_CALIBRATION_SIZE = 41;
+inline constexpr uint8_t FEATURE_PAIRING_INFO_ID = 0x09;
+inline constexpr size_t FEATURE_PAIRING_INFO_SIZE = 20;
+inline constexpr size_t FEATURE_MAX_SIZE = 64;
 
 struct ScriptedPadCounters {
 	uint64_t reports_accepted = 0;
@@ -122,6 +137,8 @@ private:
 	bool accept(const uint8_t *p_report, size_t p_size);
 	void apply(const uint8_t *p_common, ScriptedPadHeld &r_held) const;
 	size_t build_input(uint8_t *r_buffer, size_t p_capacity);
+	// The report p_report_id without its BT CRC; 0 for an ID the pad does not answer.
+	size_t build_feature(uint8_t p_report_id, uint8_t (&r_report)[FEATURE_MAX_SIZE]) const;
 	void record(const uint8_t *p_report, size_t p_size, bool p_accepted);
 
 	ScriptedDualSenseOptions options_;

@@ -148,8 +148,10 @@ int ScriptedEvdevKernel::copy_bits(uint32_t p_event_type, uint8_t *r_out, size_t
 			break;
 		case EVDEV_EV_FF:
 			kernel_size = EVDEV_FF_BITS_BYTES;
-			for (uint16_t code : script_.ff_codes) {
-				set_bit(bits, kernel_size, code);
+			for (uint16_t code = 0; code <= EVDEV_FF_MAX; ++code) {
+				if (advertises(code)) {
+					set_bit(bits, kernel_size, code);
+				}
 			}
 			break;
 		default:
@@ -231,12 +233,32 @@ int ScriptedEvdevKernel::ioctl_locked(Client &r_client, uint32_t p_request, void
 	return -EINVAL;
 }
 
+bool ScriptedEvdevKernel::advertises(uint16_t p_code) const {
+	// input_ff_create: "we can emulate RUMBLE with periodic effects".
+	return has(script_.ff_codes, p_code) || (p_code == EVDEV_FF_RUMBLE && has(script_.ff_codes, EVDEV_FF_PERIODIC));
+}
+
 int ScriptedEvdevKernel::upload(Client &r_client, uint8_t *r_effect) {
 	FfEffectBytes bytes;
 	std::memcpy(bytes.data(), r_effect, bytes.size());
-	const FfEffectFields effect = decode_ff_effect(bytes);
-	if (effect.type < EVDEV_FF_RUMBLE || effect.type > EVDEV_FF_RAMP || !has(script_.ff_codes, effect.type)) {
+	FfEffectFields effect = decode_ff_effect(bytes);
+	// input_ff_upload's checks, against what the device advertises; then compat_effect for a
+	// rumble the driver itself does not take: a 50 ms sine of 2/3 strong + 1/3 weak (halved).
+	if (effect.type < EVDEV_FF_RUMBLE || effect.type > EVDEV_FF_RAMP || !advertises(effect.type)) {
 		return -EINVAL;
+	}
+	if (effect.type == EVDEV_FF_PERIODIC &&
+			(effect.periodic_waveform < EVDEV_FF_SQUARE || effect.periodic_waveform > 0x5d || !advertises(effect.periodic_waveform))) {
+		return -EINVAL;
+	}
+	if (!has(script_.ff_codes, effect.type)) {
+		const int magnitude = effect.rumble_strong / 3 + effect.rumble_weak / 6;
+		effect.type = EVDEV_FF_PERIODIC;
+		effect.periodic_waveform = EVDEV_FF_SINE;
+		effect.periodic_period_ms = 50;
+		effect.periodic_magnitude = static_cast<int16_t>(magnitude);
+		effect.rumble_strong = 0;
+		effect.rumble_weak = 0;
 	}
 	int id = effect.id;
 	if (id == -1) {
@@ -250,8 +272,9 @@ int ScriptedEvdevKernel::upload(Client &r_client, uint8_t *r_effect) {
 		return -EINVAL;
 	} else if (slots_[static_cast<size_t>(id)].owner_fd != r_client.fd) {
 		return -EACCES;
-	} else if (slots_[static_cast<size_t>(id)].effect.type != effect.type) {
-		return -EINVAL;
+	} else if (const FfEffectFields &old = slots_[static_cast<size_t>(id)].effect;
+			   old.type != effect.type || (effect.type == EVDEV_FF_PERIODIC && old.periodic_waveform != effect.periodic_waveform)) {
+		return -EINVAL; // check_effects_compatible.
 	}
 	Slot &slot = slots_[static_cast<size_t>(id)];
 	slot.in_use = true;

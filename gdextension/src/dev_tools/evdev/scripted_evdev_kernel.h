@@ -8,16 +8,23 @@
 //  - EVIOCGBIT(EV_FF / EV_ABS / EV_KEY / 0), EVIOCGABS, EVIOCGNAME, EVIOCGID, EVIOCGKEY and
 //    EVIOCGEFFECTS answer from the script, copying at most the size the request encodes and
 //    returning the count where the kernel does;
+//  - EV_FF bits as ff-core shows them: the script's codes (the driver's), plus FF_RUMBLE
+//    wherever they include FF_PERIODIC (input_ff_create emulates rumble with periodic
+//    effects, so a PID stick offers it too);
 //  - EVIOCSFF with id -1 allocates a slot and writes the id back into the caller's struct;
-//    with an id it updates that slot (-EINVAL for a slot not in use or another type,
-//    -EACCES for another fd's); EVIOCRMFF takes the id by value and frees (stops) it;
+//    with an id it updates that slot (-EINVAL for a slot not in use or another type or
+//    waveform, -EACCES for another fd's); a type the device does not advertise, or a waveform,
+//    is -EINVAL; a rumble the driver does not take itself is stored as ff-core hands it to the
+//    driver (compat_effect: a 50 ms FF_SINE of strong / 3 + weak / 6); EVIOCRMFF takes the
+//    id by value and frees (stops) it;
 //  - write() takes whole 24-byte events: EV_FF FF_GAIN / FF_AUTOCENTER / effect id with a
 //    repeat count (0 stops), ignored when out of range like the kernel;
 //  - read() returns queued events whole (per fd, like evdev clients), -EAGAIN when none; a
 //    full queue is replaced by SYN_DROPPED;
 //  - set_plugged(false) makes every open fd answer -ENODEV (close still succeeds) and open()
 //    -ENOENT; replugging is a new device: old fds stay dead;
-//  - closing an fd erases the effects it uploaded (ff.rst: effects belong to the file).
+//  - closing an fd stops and erases the effects it uploaded (input_ff_flush: effects belong
+//    to the file), so a client that opens the node again starts with none of its own.
 // Every call is recorded with its bytes (set_recording(false) for benchmarks; counters are
 // kept either way), and rendered() computes the force the device would render.
 // Thread-safe: the device's I/O thread and the test thread share it (one mutex).
@@ -60,6 +67,10 @@ ScriptedEvdevScript scripted_joystick_script();
 // A wheel: ABS_WHEEL in [0, 65535], FF_CONSTANT, FF_GAIN, FF_AUTOCENTER, 2 paddles
 // (BTN_SOUTH, BTN_EAST).
 ScriptedEvdevScript scripted_wheel_script();
+// A DualSense's gamepad node under hid-playstation: 054C:0CE6, sticks in [0, 255], rumble
+// through ff-memless (FF_RUMBLE; FF_PERIODIC with square, triangle and sine, FF_GAIN, 16
+// effects: what memless adds), no constant force.
+ScriptedEvdevScript scripted_gamepad_script();
 
 struct ScriptedEvdevCall {
 	enum class Kind : int32_t {
@@ -91,6 +102,9 @@ struct ScriptedEvdevCounters {
 // The force the device renders now, as the firmwares of FACTS §1.6 do: the sum over the
 // playing FF_CONSTANT effects of level / 0x7FFF * gain / 0xFFFF along (sin t, -cos t), t the
 // direction, in the stick's axis frame (+x right, +y toward the user); fractions of full.
+// Rumble as ff-memless combines it: the playing FF_RUMBLE effects' magnitudes, each scaled by
+// the gain, summed and clamped to 0xFFFF; periodic effects (a converted rumble among them)
+// are counted with the last one's magnitude.
 struct ScriptedRenderedForce {
 	int32_t playing = 0; // Constant effects playing.
 	double axis_x = 0.0;
@@ -98,7 +112,16 @@ struct ScriptedRenderedForce {
 	uint16_t direction = 0; // Of the last playing effect.
 	int16_t level = 0;
 	uint16_t gain = 0xffff;
+	int32_t rumbles_playing = 0;
+	uint16_t rumble_strong = 0;
+	uint16_t rumble_weak = 0;
+	int32_t periodic_playing = 0;
+	int16_t periodic_magnitude = 0;
 };
+
+// What a device playing p_playing at p_gain renders (the rules above); shared with the
+// uinput model (dev_tools/uinput), which plays what the real kernel hands it.
+ScriptedRenderedForce render_playing_effects(const std::vector<FfEffectFields> &p_playing, uint16_t p_gain);
 
 class ScriptedEvdevKernel final : public EvdevSyscalls {
 public:
@@ -163,6 +186,7 @@ private:
 	void post_event(uint16_t p_type, uint16_t p_code, int32_t p_value);
 	void reset_device();
 	bool has(const std::vector<uint16_t> &p_codes, uint16_t p_code) const;
+	bool advertises(uint16_t p_code) const; // EV_FF bits as ff-core shows them.
 	AbsRange *axis(uint16_t p_code);
 	int ioctl_locked(Client &r_client, uint32_t p_request, void *p_arg, size_t &r_answered);
 	int upload(Client &r_client, uint8_t *r_effect);

@@ -39,6 +39,21 @@ ScriptedEvdevScript scripted_wheel_script() {
 	return script;
 }
 
+ScriptedEvdevScript scripted_gamepad_script() {
+	ScriptedEvdevScript script;
+	script.path = "/dev/input/event11";
+	script.name = "Sony Interactive Entertainment DualSense Wireless Controller";
+	script.vendor = 0x054c;
+	script.product = 0x0ce6;
+	script.version = 0x8100; // hid-playstation sets bit 15 (HID_PLAYSTATION_VERSION_PATCH).
+	script.ff_codes = { EVDEV_FF_RUMBLE, EVDEV_FF_PERIODIC, EVDEV_FF_SQUARE, EVDEV_FF_TRIANGLE, EVDEV_FF_SINE, EVDEV_FF_GAIN };
+	const AbsRange stick{ 128, 0, 255, 0, 0, 0 };
+	script.axes = { { EVDEV_ABS_X, stick }, { EVDEV_ABS_Y, stick } };
+	script.key_codes = { EVDEV_BTN_SOUTH, 0x131, 0x133, 0x134 };
+	script.max_effects = 16;
+	return script;
+}
+
 bool ScriptedEvdevKernel::has(const std::vector<uint16_t> &p_codes, uint16_t p_code) const {
 	return std::find(p_codes.begin(), p_codes.end(), p_code) != p_codes.end();
 }
@@ -212,23 +227,43 @@ ScriptedEvdevCounters ScriptedEvdevKernel::counters() const {
 	return counters_;
 }
 
+ScriptedRenderedForce render_playing_effects(const std::vector<FfEffectFields> &p_playing, uint16_t p_gain) {
+	ScriptedRenderedForce force;
+	force.gain = p_gain;
+	uint32_t strong = 0;
+	uint32_t weak = 0;
+	for (const FfEffectFields &effect : p_playing) {
+		if (effect.type == EVDEV_FF_RUMBLE) {
+			strong += static_cast<uint32_t>(effect.rumble_strong) * p_gain / 0xffff;
+			weak += static_cast<uint32_t>(effect.rumble_weak) * p_gain / 0xffff;
+			++force.rumbles_playing;
+		} else if (effect.type == EVDEV_FF_PERIODIC) {
+			force.periodic_magnitude = effect.periodic_magnitude;
+			++force.periodic_playing;
+		} else if (effect.type == EVDEV_FF_CONSTANT) {
+			const double theta = effect.direction / 65536.0 * 2.0 * std::numbers::pi;
+			const double fraction = effect.constant_level / 32767.0 * (p_gain / 65535.0);
+			force.axis_x += fraction * std::sin(theta);
+			force.axis_y += -fraction * std::cos(theta);
+			force.direction = effect.direction;
+			force.level = effect.constant_level;
+			++force.playing;
+		}
+	}
+	force.rumble_strong = static_cast<uint16_t>(std::min<uint32_t>(strong, 0xffff));
+	force.rumble_weak = static_cast<uint16_t>(std::min<uint32_t>(weak, 0xffff));
+	return force;
+}
+
 ScriptedRenderedForce ScriptedEvdevKernel::rendered() const {
 	std::lock_guard<std::mutex> lock(mutex_);
-	ScriptedRenderedForce force;
-	force.gain = gain_;
+	std::vector<FfEffectFields> playing;
 	for (const Slot &slot : slots_) {
-		if (!slot.in_use || !slot.playing || slot.effect.type != EVDEV_FF_CONSTANT) {
-			continue;
+		if (slot.in_use && slot.playing) {
+			playing.push_back(slot.effect);
 		}
-		const double theta = slot.effect.direction / 65536.0 * 2.0 * std::numbers::pi;
-		const double fraction = slot.effect.constant_level / 32767.0 * (gain_ / 65535.0);
-		force.axis_x += fraction * std::sin(theta);
-		force.axis_y += -fraction * std::cos(theta);
-		force.direction = slot.effect.direction;
-		force.level = slot.effect.constant_level;
-		++force.playing;
 	}
-	return force;
+	return render_playing_effects(playing, gain_);
 }
 
 int32_t ScriptedEvdevKernel::effects_in_use() const {

@@ -57,7 +57,8 @@ Status UhidDevice::create(const UhidIdentity &p_identity, std::span<const uint8_
 	uhid_event event{};
 	event.type = UHID_CREATE2;
 	copy_text(reinterpret_cast<char *>(event.u.create2.name), sizeof(event.u.create2.name), p_identity.name);
-	copy_text(reinterpret_cast<char *>(event.u.create2.phys), sizeof(event.u.create2.phys), "haptics-uhid");
+	copy_text(reinterpret_cast<char *>(event.u.create2.phys), sizeof(event.u.create2.phys), p_identity.phys);
+	copy_text(reinterpret_cast<char *>(event.u.create2.uniq), sizeof(event.u.create2.uniq), p_identity.uniq);
 	event.u.create2.rd_size = static_cast<uint16_t>(p_descriptor.size());
 	event.u.create2.bus = p_identity.bus;
 	event.u.create2.vendor = p_identity.vendor;

@@ -36,6 +36,10 @@ public:
 
 struct UhidIdentity {
 	std::string name = "haptics test device";
+	// The kernel's physical path: an input device a HID driver makes inherits it (evdev ids
+	// are made from it when there is one), so each model gets its own.
+	std::string phys = "haptics-uhid";
+	std::string uniq; // The serial number hidraw and hidapi report; empty: none.
 	uint16_t bus = 0x03; // BUS_USB.
 	uint32_t vendor = 0;
 	uint32_t product = 0;

@@ -48,6 +48,9 @@ inline constexpr uint16_t EVDEV_FF_RUMBLE = 0x50;
 inline constexpr uint16_t EVDEV_FF_PERIODIC = 0x51;
 inline constexpr uint16_t EVDEV_FF_CONSTANT = 0x52;
 inline constexpr uint16_t EVDEV_FF_RAMP = 0x57;
+inline constexpr uint16_t EVDEV_FF_SQUARE = 0x58;
+inline constexpr uint16_t EVDEV_FF_TRIANGLE = 0x59;
+inline constexpr uint16_t EVDEV_FF_SINE = 0x5a;
 inline constexpr uint16_t EVDEV_FF_GAIN = 0x60;
 inline constexpr uint16_t EVDEV_FF_AUTOCENTER = 0x61;
 inline constexpr uint16_t EVDEV_FF_MAX = 0x7f;
@@ -73,6 +76,13 @@ inline constexpr size_t FF_EFFECT_REPLAY_DELAY_OFFSET = 12;
 inline constexpr size_t FF_EFFECT_UNION_OFFSET = 16;
 inline constexpr size_t FF_CONSTANT_LEVEL_OFFSET = 16;
 inline constexpr size_t FF_CONSTANT_ENVELOPE_OFFSET = 18; // 4 x u16, all zero here.
+// FF_RUMBLE: strong_magnitude u16 @16, weak_magnitude u16 @18. FF_PERIODIC: waveform u16 @16,
+// period u16 @18, magnitude s16 @20, offset s16 @22, phase u16 @24, envelope @26.
+inline constexpr size_t FF_RUMBLE_STRONG_OFFSET = 16;
+inline constexpr size_t FF_RUMBLE_WEAK_OFFSET = 18;
+inline constexpr size_t FF_PERIODIC_WAVEFORM_OFFSET = 16;
+inline constexpr size_t FF_PERIODIC_PERIOD_OFFSET = 18;
+inline constexpr size_t FF_PERIODIC_MAGNITUDE_OFFSET = 20;
 
 // struct input_event [FACTS §2]: struct timeval (16 bytes) then type u16 @16, code u16 @18,
 // value s32 @20.

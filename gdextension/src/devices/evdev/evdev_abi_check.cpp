@@ -24,6 +24,11 @@ static_assert(offsetof(struct ff_effect, replay.delay) == FF_EFFECT_REPLAY_DELAY
 static_assert(offsetof(struct ff_effect, u) == FF_EFFECT_UNION_OFFSET);
 static_assert(offsetof(struct ff_effect, u.constant.level) == FF_CONSTANT_LEVEL_OFFSET);
 static_assert(offsetof(struct ff_effect, u.constant.envelope) == FF_CONSTANT_ENVELOPE_OFFSET);
+static_assert(offsetof(struct ff_effect, u.rumble.strong_magnitude) == FF_RUMBLE_STRONG_OFFSET);
+static_assert(offsetof(struct ff_effect, u.rumble.weak_magnitude) == FF_RUMBLE_WEAK_OFFSET);
+static_assert(offsetof(struct ff_effect, u.periodic.waveform) == FF_PERIODIC_WAVEFORM_OFFSET);
+static_assert(offsetof(struct ff_effect, u.periodic.period) == FF_PERIODIC_PERIOD_OFFSET);
+static_assert(offsetof(struct ff_effect, u.periodic.magnitude) == FF_PERIODIC_MAGNITUDE_OFFSET);
 
 static_assert(sizeof(struct input_event) == INPUT_EVENT_SIZE, "FACTS §2: struct input_event is 24 bytes on x86-64");
 static_assert(offsetof(struct input_event, type) == INPUT_EVENT_TYPE_OFFSET);
@@ -50,6 +55,7 @@ static_assert(EVDEV_BTN_MISC == BTN_MISC && EVDEV_BTN_TRIGGER == BTN_TRIGGER && 
 static_assert(EVDEV_BTN_SOUTH == BTN_SOUTH && EVDEV_BTN_TRIGGER_HAPPY == BTN_TRIGGER_HAPPY && EVDEV_KEY_MAX == KEY_MAX);
 static_assert(EVDEV_FF_RUMBLE == FF_RUMBLE && EVDEV_FF_PERIODIC == FF_PERIODIC && EVDEV_FF_CONSTANT == FF_CONSTANT);
 static_assert(EVDEV_FF_RAMP == FF_RAMP && EVDEV_FF_GAIN == FF_GAIN && EVDEV_FF_AUTOCENTER == FF_AUTOCENTER);
+static_assert(EVDEV_FF_SQUARE == FF_SQUARE && EVDEV_FF_TRIANGLE == FF_TRIANGLE && EVDEV_FF_SINE == FF_SINE);
 static_assert(EVDEV_FF_MAX == FF_MAX);
 
 // Bitmaps: whole longs, as the kernel copies them.

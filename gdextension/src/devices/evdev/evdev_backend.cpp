@@ -19,9 +19,10 @@ DeviceAvailability probe(const DeviceInfo &p_info, EvdevSyscalls &r_sys) {
 		return availability;
 	}
 	EvdevFfFeatures features;
+	EvdevOutput output = EvdevOutput::CONSTANT;
 	Status status = query_ff_features(r_sys, fd, path, features);
 	if (status) {
-		status = require_constant_force(features, path);
+		status = choose_ff_output(features, path, output);
 	}
 	r_sys.close(fd);
 	if (!status) {

@@ -15,9 +15,10 @@
 
 namespace haptics::evdev {
 
-// handled when p_info.backend is "evdev". Opens the node O_RDWR and checks FF_CONSTANT, so
-// `reason` says what the player can do: the udev rule / 'input' group (EACCES), unplugged
-// (ENOENT), "the kernel driver offers no constant force on this device". Closes it again.
+// handled when p_info.backend is "evdev". Opens the node O_RDWR and checks it offers
+// FF_CONSTANT or FF_RUMBLE, so `reason` says what the player can do: the udev rule / 'input'
+// group (EACCES), unplugged (ENOENT), "the kernel driver offers neither constant force nor
+// rumble on this device". Closes it again.
 DeviceAvailability probe(const DeviceInfo &p_info);
 DeviceAvailability probe(const DeviceInfo &p_info, EvdevSyscalls &r_sys);
 

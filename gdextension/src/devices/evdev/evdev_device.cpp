@@ -120,7 +120,7 @@ Status EvdevDevice::open_node() {
 	}
 	Status status = query_ff_features(*sys_, fd_, path, features_);
 	if (status) {
-		status = require_constant_force(features_, path);
+		status = choose_ff_output(features_, path, output_);
 	}
 	EvdevInputLayout layout;
 	if (status) {
@@ -131,6 +131,9 @@ Status EvdevDevice::open_node() {
 	}
 	input_.configure(layout);
 	mapping_ = FfForceMapping{ config_.max_force_n, mapping_.shape, config_.invert_force_x, config_.invert_force_y };
+	if (output_ == EvdevOutput::RUMBLE) {
+		return rumble_.start(*sys_, fd_, features_, path);
+	}
 	return effect_.start(*sys_, fd_, features_, path);
 }
 
@@ -191,6 +194,7 @@ void EvdevDevice::release() {
 	io_thread_.stop(); // Runs io_stop() (zero force) unless the thread failed.
 	if (fd_ >= 0) {
 		effect_.stop_and_erase(); // Errors ignored: an unplugged device has nothing to stop.
+		rumble_.stop_and_erase();
 		sys_->close(fd_);
 		fd_ = -1;
 	}
@@ -217,8 +221,8 @@ DeviceCapabilities EvdevDevice::capabilities() const {
 	DeviceCapabilities capabilities;
 	const bool wheel = mapping_.shape == EvdevShape::WHEEL;
 	capabilities.input_dof = wheel ? 1 : 2;
-	capabilities.output_dof = wheel ? 1 : 2;
-	capabilities.output = ForceOutput::DIRECTIONAL;
+	capabilities.output_dof = output_ == EvdevOutput::RUMBLE ? 0 : (wheel ? 1 : 2);
+	capabilities.output = output_ == EvdevOutput::RUMBLE ? ForceOutput::VIBRATION : ForceOutput::DIRECTIONAL;
 	capabilities.limits = { config_.max_force_n, config_.max_continuous_force_n, config_.max_stiffness_n_per_m,
 		config_.workspace_radius_m };
 	capabilities.native_rate_hz = config_.rate_hz;
@@ -243,24 +247,32 @@ DeviceIo EvdevDevice::fail(DeviceExchange &r_exchange, int p_error, const char *
 	}
 	// Still reachable: leave it at rest now, not whenever the game gets to close().
 	effect_.stop_and_erase();
+	rumble_.stop_and_erase();
 	r_exchange.fail(DeviceIo::FAILED, "%s: %s failed: %s (%s)", path, p_doing, errno_text(p_error), errno_name(p_error));
 	return DeviceIo::FAILED;
 }
 
 DeviceIo EvdevDevice::io_cycle(DeviceExchange &r_exchange, double p_dt_s) {
 	const ForceCommand command = r_exchange.latest_command();
-	const FfConstantForce wanted = map_force_to_constant(command.force_n, mapping_);
 	since_update_s_ += p_dt_s;
-	// A force that changes while the device drains waits; the newest is sent when it may be,
-	// so the last command always reaches the device.
-	if (since_update_s_ >= hold_s_ && !(wanted == effect_.current())) {
-		const FfConstantForce before = effect_.current();
-		const int result = effect_.update(wanted);
-		if (result < 0) {
-			return fail(r_exchange, result, "updating the force");
+	if (output_ == EvdevOutput::RUMBLE) {
+		const int rumbled = rumble_.render(p_dt_s);
+		if (rumbled < 0) {
+			return fail(r_exchange, rumbled, "updating the rumble");
 		}
-		hold_s_ = update_hold_s(before, wanted, report_interval_s_);
-		since_update_s_ = 0.0;
+	} else {
+		const FfConstantForce wanted = map_force_to_constant(command.force_n, mapping_);
+		// A force that changes while the device drains waits; the newest is sent when it may
+		// be, so the last command always reaches the device.
+		if (since_update_s_ >= hold_s_ && !(wanted == effect_.current())) {
+			const FfConstantForce before = effect_.current();
+			const int updated = effect_.update(wanted);
+			if (updated < 0) {
+				return fail(r_exchange, updated, "updating the force");
+			}
+			hold_s_ = update_hold_s(before, wanted, report_interval_s_);
+			since_update_s_ = 0.0;
+		}
 	}
 	const int result = drain_input_events(*sys_, fd_, input_, read_buffer_);
 	if (result < 0) {
@@ -272,6 +284,14 @@ DeviceIo EvdevDevice::io_cycle(DeviceExchange &r_exchange, double p_dt_s) {
 
 void EvdevDevice::io_stop() {
 	effect_.update(FfConstantForce{});
+	rumble_.update(FfRumbleLevels{});
+}
+
+DeviceIo EvdevDevice::write_force(const ForceCommand &p_command) {
+	if (open_ && output_ == EvdevOutput::RUMBLE) {
+		rumble_.offer_impact(p_command.impact_n);
+	}
+	return ExchangedDevice::write_force(p_command);
 }
 
 } // namespace haptics::evdev

@@ -21,6 +21,10 @@
 // drains the input events and publishes the state. An unplugged device (ENODEV) becomes
 // DISCONNECTED with a reason; any other errno FAILED with strerror. close() and errors
 // leave the device at zero force, stopped, with the effect erased where it is reachable.
+//
+// A node whose driver offers rumble but no FF_CONSTANT (a gamepad) opens as a vibration
+// device: the same sequence with one FF_RUMBLE effect rendering the servo's impacts
+// (evdev_rumble.h); output VIBRATION, no force axes.
 
 #include "core/base/status.h"
 #include "core/device/device.h"
@@ -29,6 +33,7 @@
 #include "devices/evdev/evdev_effect.h"
 #include "devices/evdev/evdev_input.h"
 #include "devices/evdev/evdev_pacing.h"
+#include "devices/evdev/evdev_rumble.h"
 #include "devices/evdev/evdev_syscalls.h"
 #include "devices/exchanged_device.h"
 
@@ -82,9 +87,14 @@ public:
 	Status calibrate() override;
 	DeviceCapabilities capabilities() const override;
 	const char *name() const override { return name_; }
+	// A vibration device hands the transients' peak to the I/O thread, every tick.
+	DeviceIo write_force(const ForceCommand &p_command) override;
 
 	EvdevShape shape() const { return mapping_.shape; }
 	const EvdevDeviceConfig &config() const { return config_; }
+	// What the kernel offered at open, and what renders the servo.
+	const EvdevFfFeatures &features() const { return features_; }
+	EvdevOutput output() const { return output_; }
 
 private:
 	DeviceIo io_cycle(DeviceExchange &r_exchange, double p_dt_s) override;
@@ -101,11 +111,13 @@ private:
 	char name_[128] = "evdev force-feedback device";
 	int fd_ = -1;
 	EvdevFfFeatures features_;
+	EvdevOutput output_ = EvdevOutput::CONSTANT;
 	FfForceMapping mapping_;
 	EvdevConstantForce effect_;
 	double report_interval_s_ = 0.0; // Of the interrupt OUT endpoint, read at open.
 	double since_update_s_ = 0.0;
 	double hold_s_ = 0.0; // Until the device has drained the last update.
+	EvdevRumble rumble_;
 	EvdevInputDecoder input_;
 	uint8_t read_buffer_[INPUT_READ_BUFFER_SIZE] = {};
 	DeviceIoThread io_thread_;

@@ -1,15 +1,57 @@
 #include "devices/evdev/evdev_effect.h"
 
 #include <cerrno>
+#include <utility>
 
 namespace haptics::evdev {
 
 EvdevFfFeatures ff_features_from_bits(const uint8_t *p_bits, size_t p_size) {
 	EvdevFfFeatures features;
 	features.constant = test_bit(p_bits, p_size, EVDEV_FF_CONSTANT);
+	features.periodic = test_bit(p_bits, p_size, EVDEV_FF_PERIODIC);
+	features.rumble = test_bit(p_bits, p_size, EVDEV_FF_RUMBLE);
 	features.gain = test_bit(p_bits, p_size, EVDEV_FF_GAIN);
 	features.autocenter = test_bit(p_bits, p_size, EVDEV_FF_AUTOCENTER);
 	return features;
+}
+
+std::string describe_ff_features(const EvdevFfFeatures &p_features) {
+	std::string text;
+	const std::pair<bool, const char *> names[] = {
+		{ p_features.constant, "constant" },
+		{ p_features.periodic, "periodic" },
+		{ p_features.rumble, "rumble" },
+		{ p_features.gain, "gain" },
+		{ p_features.autocenter, "autocenter" },
+	};
+	for (const auto &[offered, name] : names) {
+		if (offered) {
+			text += text.empty() ? "" : " ";
+			text += name;
+		}
+	}
+	if (text.empty()) {
+		text = "no force feedback";
+	}
+	if (p_features.max_effects > 0) {
+		text += ", " + std::to_string(p_features.max_effects) + " effects";
+	}
+	return text;
+}
+
+Status choose_ff_output(const EvdevFfFeatures &p_features, const char *p_path, EvdevOutput &r_output) {
+	if (p_features.constant) {
+		r_output = EvdevOutput::CONSTANT;
+		return Status::success();
+	}
+	if (p_features.rumble) {
+		r_output = EvdevOutput::RUMBLE;
+		return Status::success();
+	}
+	return Status::error(StatusCode::UNSUPPORTED,
+			"the kernel driver offers neither constant force nor rumble on this device (%s: no FF_CONSTANT or FF_RUMBLE in "
+			"EVIOCGBIT(EV_FF))",
+			p_path);
 }
 
 Status query_ff_features(EvdevSyscalls &r_sys, int p_fd, const char *p_path, EvdevFfFeatures &r_features) {

@@ -27,11 +27,18 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
 
 namespace haptics::evdev {
 
+// What the kernel says the device offers, as EVIOCGBIT(EV_FF) and sysfs show it: the
+// input device's bits, to which ff-core adds FF_RUMBLE wherever the driver offers
+// FF_PERIODIC (it turns an uploaded rumble into a sine for the driver) and ff-memless adds
+// FF_PERIODIC with its waveforms and FF_GAIN wherever the driver offers FF_RUMBLE.
 struct EvdevFfFeatures {
 	bool constant = false;
+	bool periodic = false;
+	bool rumble = false;
 	bool gain = false;
 	bool autocenter = false;
 	int32_t max_effects = 0; // EVIOCGEFFECTS; 0 when unknown.
@@ -39,6 +46,18 @@ struct EvdevFfFeatures {
 
 // From an EVIOCGBIT(EV_FF) bitmap (either spelling, see evdev_bits.h).
 EvdevFfFeatures ff_features_from_bits(const uint8_t *p_bits, size_t p_size);
+// "constant periodic rumble gain, 16 effects": for logs and the player's device details.
+std::string describe_ff_features(const EvdevFfFeatures &p_features);
+
+// How a device renders the servo: the force itself (FF_CONSTANT), or where the driver offers
+// only rumble, the impacts as vibration (evdev_rumble.h).
+enum class EvdevOutput : int32_t {
+	CONSTANT = 0,
+	RUMBLE = 1,
+};
+// CONSTANT when the driver offers FF_CONSTANT, else RUMBLE when it offers FF_RUMBLE; else
+// UNSUPPORTED: "the kernel driver offers neither constant force nor rumble on this device".
+Status choose_ff_output(const EvdevFfFeatures &p_features, const char *p_path, EvdevOutput &r_output);
 
 // EVIOCGBIT(EV_FF) and EVIOCGEFFECTS on an open fd. Errors name p_path; a driver without
 // FF_CONSTANT is UNSUPPORTED: "the kernel driver offers no constant force on this device".

@@ -142,8 +142,8 @@ void enumerate_evdev_devices(std::vector<DeviceInfo> &r_devices, std::vector<std
 			r_warnings.emplace_back(parsed.message());
 			continue;
 		}
-		if (!test_bit(ff_bits, sizeof(ff_bits), EVDEV_FF_CONSTANT)) {
-			continue; // No force feedback, or rumble only.
+		if (!test_bit(ff_bits, sizeof(ff_bits), EVDEV_FF_CONSTANT) && !test_bit(ff_bits, sizeof(ff_bits), EVDEV_FF_RUMBLE)) {
+			continue; // No force feedback (ff-core shows FF_RUMBLE for FF_PERIODIC too).
 		}
 		DeviceInfo info;
 		std::string stable = read_attribute(device / "phys");

@@ -3,7 +3,9 @@
 // Finds the force-feedback evdev nodes through sysfs, without opening anything but the
 // candidates' probe: /sys/class/input/eventN/device is the input device, whose
 // capabilities/ff (evdev_bits.h) says which effects the kernel driver offers. A node is
-// listed when that includes FF_CONSTANT (rumble-only gamepads are not ours).
+// listed when that includes FF_CONSTANT (it renders the force) or FF_RUMBLE (it renders the
+// impacts as vibration: gamepads, and any FF_PERIODIC device, for which ff-core adds
+// FF_RUMBLE to what sysfs shows).
 //
 // Each DeviceInfo: backend and driver "evdev"; id "evdev:<phys>" (the kernel's physical
 // path, e.g. "usb-0000:00:14.0-2/input0": stable while the device stays in the same

@@ -17,6 +17,16 @@ void encode_constant_effect(const FfConstantEffect &p_effect, FfEffectBytes &r_b
 	put_u16(bytes, FF_CONSTANT_LEVEL_OFFSET, static_cast<uint16_t>(p_effect.level));
 }
 
+void encode_rumble_effect(const FfRumbleEffect &p_effect, FfEffectBytes &r_bytes) {
+	r_bytes.fill(0);
+	uint8_t *bytes = r_bytes.data();
+	put_u16(bytes, FF_EFFECT_TYPE_OFFSET, EVDEV_FF_RUMBLE);
+	put_u16(bytes, FF_EFFECT_ID_OFFSET, static_cast<uint16_t>(p_effect.id));
+	put_u16(bytes, FF_EFFECT_REPLAY_LENGTH_OFFSET, p_effect.replay_length_ms);
+	put_u16(bytes, FF_RUMBLE_STRONG_OFFSET, p_effect.strong_magnitude);
+	put_u16(bytes, FF_RUMBLE_WEAK_OFFSET, p_effect.weak_magnitude);
+}
+
 FfEffectFields decode_ff_effect(const FfEffectBytes &p_bytes) {
 	const uint8_t *bytes = p_bytes.data();
 	FfEffectFields fields;
@@ -28,6 +38,11 @@ FfEffectFields decode_ff_effect(const FfEffectBytes &p_bytes) {
 	fields.replay_length_ms = get_u16(bytes, FF_EFFECT_REPLAY_LENGTH_OFFSET);
 	fields.replay_delay_ms = get_u16(bytes, FF_EFFECT_REPLAY_DELAY_OFFSET);
 	fields.constant_level = get_s16(bytes, FF_CONSTANT_LEVEL_OFFSET);
+	fields.rumble_strong = get_u16(bytes, FF_RUMBLE_STRONG_OFFSET);
+	fields.rumble_weak = get_u16(bytes, FF_RUMBLE_WEAK_OFFSET);
+	fields.periodic_waveform = get_u16(bytes, FF_PERIODIC_WAVEFORM_OFFSET);
+	fields.periodic_period_ms = get_u16(bytes, FF_PERIODIC_PERIOD_OFFSET);
+	fields.periodic_magnitude = get_s16(bytes, FF_PERIODIC_MAGNITUDE_OFFSET);
 	return fields;
 }
 

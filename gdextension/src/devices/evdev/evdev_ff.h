@@ -46,7 +46,18 @@ void encode_constant_effect(const FfConstantEffect &p_effect, FfEffectBytes &r_b
 // compare both, so our offsets are checked against the compiler's, not only a comment.
 void encode_constant_effect_kernel_struct(const FfConstantEffect &p_effect, FfEffectBytes &r_bytes);
 
-// Every field of an ff_effect this backend or the scripted kernel looks at.
+// FF_RUMBLE: two motors, 0..0xFFFF each (ff.rst: "strong" the low-frequency one). Direction
+// is unused.
+struct FfRumbleEffect {
+	int16_t id = -1;
+	uint16_t strong_magnitude = 0;
+	uint16_t weak_magnitude = 0;
+	uint16_t replay_length_ms = 0; // 0 = infinite.
+};
+void encode_rumble_effect(const FfRumbleEffect &p_effect, FfEffectBytes &r_bytes);
+
+// Every field of an ff_effect this backend or the scripted kernel looks at; the union's
+// fields are decoded for every type (only the effect's own type's are meaningful).
 struct FfEffectFields {
 	uint16_t type = 0;
 	int16_t id = 0;
@@ -56,6 +67,11 @@ struct FfEffectFields {
 	uint16_t replay_length_ms = 0;
 	uint16_t replay_delay_ms = 0;
 	int16_t constant_level = 0;
+	uint16_t rumble_strong = 0;
+	uint16_t rumble_weak = 0;
+	uint16_t periodic_waveform = 0;
+	uint16_t periodic_period_ms = 0;
+	int16_t periodic_magnitude = 0;
 };
 FfEffectFields decode_ff_effect(const FfEffectBytes &p_bytes);
 
