@@ -1,6 +1,7 @@
 // FalconDevice against the scripted Falcon: open with and without firmware, the axis
 // mapping with explicit vectors, homing (ready, LED colours, zero torques until homed),
-// forces on the wire, zero torques on close / NaN, unplug and silence.
+// forces on the wire, zero torques on close / NaN, unplug, silence, and a transport that
+// reports more bytes than the read buffer holds.
 
 #include "dev_tools/falcon/scripted_falcon.h"
 #include "dev_tools/falcon/scripted_falcon_device.h"
@@ -8,6 +9,7 @@
 #include "devices/falcon/falcon_backend.h"
 #include "devices/falcon/falcon_codec.h"
 #include "devices/falcon/falcon_device.h"
+#include "devices/falcon/falcon_ftdi.h"
 
 #include <doctest/doctest.h>
 
@@ -17,6 +19,7 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <string>
 #include <thread>
 
 using namespace haptics;
@@ -286,4 +289,17 @@ TEST_CASE("falcon device: a Falcon that stops answering fails after the silence 
 	DeviceState state;
 	CHECK(eventually([&] { return device->read_state(state) == DeviceIo::FAILED; }));
 	CHECK(std::strstr(device->status().reason, "Falcon stopped answering") != nullptr);
+}
+
+TEST_CASE("falcon device: a read claiming more bytes than its buffer fails the device, nothing read past it") {
+	auto model = homed_model();
+	std::unique_ptr<FalconDevice> device = make_scripted_device(model);
+	REQUIRE(device->open());
+	ScriptedFalconOptions lying;
+	lying.overstated_read_bytes = FTDI_PACKET_SIZE; // 64-byte reads reported as up to 128.
+	model->set_options(lying);
+	DeviceState state;
+	CHECK(eventually([&] { return device->read_state(state) == DeviceIo::FAILED; }));
+	CHECK(std::string(device->status().reason) ==
+			"Falcon USB read failed: LIBUSB_ERROR_OVERFLOW (the transfer claimed more bytes than its buffer holds)");
 }

@@ -1,6 +1,7 @@
 // The firmware-load sequence of FACTS §3.5 against the scripted FTDI bridge and loader: the
 // exact control transfers and bulk payloads, both handshake reply shapes, 100 failed tries,
-// echo mismatch, timeout, silence, split echoes; the firmware check; and the user's file.
+// echo mismatch, timeout, silence, split echoes, reads claiming more than their buffer; the
+// firmware check; and the user's file.
 
 #include "dev_tools/falcon/scripted_falcon.h"
 #include "dev_tools/falcon/scripted_falcon_device.h"
@@ -17,6 +18,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <unistd.h>
@@ -261,6 +263,26 @@ TEST_CASE("falcon firmware: the firmware check sees a framed reply only once the
 	CHECK(loaded);
 	rig.model->unplug();
 	CHECK(falcon_probe_firmware(*rig.transport, 5, 10, loaded).code() == StatusCode::DEVICE_DISCONNECTED);
+}
+
+TEST_CASE("falcon firmware: reads claiming more bytes than their buffer are refused, not stripped past it") {
+	ScriptedFalconOptions options;
+	options.overstated_read_bytes = 4 * FTDI_PACKET_SIZE;
+	Rig loading(options);
+	const std::vector<uint8_t> image = make_test_firmware_image(200);
+	FirmwareLoader loader(*loading.transport, image.data(), image.size());
+	Status status = loader.run();
+	CHECK(status.code() == StatusCode::DEVICE_ERROR);
+	CHECK(std::string(status.message()) == "Falcon loader handshake: reading the handshake reply failed: LIBUSB_ERROR_OVERFLOW");
+	CHECK(loader.report().handshake_tries == 1);
+
+	options.firmware_loaded = true;
+	Rig running(options);
+	bool loaded = true;
+	status = falcon_probe_firmware(*running.transport, 5, 10, loaded);
+	CHECK(status.code() == StatusCode::DEVICE_ERROR);
+	CHECK(std::string(status.message()) == "Falcon firmware check: read failed: LIBUSB_ERROR_OVERFLOW");
+	CHECK_FALSE(loaded);
 }
 
 TEST_CASE("falcon firmware: the user's file, with messages that say what to do") {

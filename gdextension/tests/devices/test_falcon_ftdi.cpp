@@ -1,5 +1,6 @@
-// FTDI facts (FACTS §3.2-3.4): baud divisor encoding, status-byte stripping, and the USB
-// seam's result names and DeviceIo mapping; the libusb path parser.
+// FTDI facts (FACTS §3.2-3.4): baud divisor encoding, status-byte stripping (never past the
+// buffer), and the USB seam's result names, DeviceIo mapping and refusal of counts larger
+// than the buffer; the libusb path parser.
 
 #include "devices/falcon/falcon_ftdi.h"
 #include "devices/usb/libusb_transport.h"
@@ -8,6 +9,7 @@
 #include <doctest/doctest.h>
 
 #include <cstring>
+#include <span>
 #include <vector>
 
 using namespace haptics;
@@ -50,7 +52,7 @@ TEST_CASE("falcon ftdi: status bytes are stripped per 64-byte packet") {
 	}
 	uint8_t out[256];
 	size_t overflow = 99;
-	const size_t n = ftdi_strip_status(in.data(), in.size(), out, sizeof(out), &overflow);
+	const size_t n = ftdi_strip_status(in, in.size(), out, sizeof(out), &overflow);
 	CHECK(n == 62 + 62 + 8);
 	CHECK(overflow == 0);
 	CHECK(out[0] == 2);
@@ -58,10 +60,62 @@ TEST_CASE("falcon ftdi: status bytes are stripped per 64-byte packet") {
 	CHECK(out[62] == 66); // Bytes 64, 65 were the second packet's status.
 	CHECK(out[124] == 130);
 	// A last packet of 1 byte holds no payload; a small output counts the overflow.
-	CHECK(ftdi_strip_status(in.data(), 65, out, sizeof(out)) == 62);
-	CHECK(ftdi_strip_status(in.data(), 64, out, 10, &overflow) == 10);
+	CHECK(ftdi_strip_status(in, 65, out, sizeof(out)) == 62);
+	CHECK(ftdi_strip_status(in, 64, out, 10, &overflow) == 10);
 	CHECK(overflow == 52);
-	CHECK(ftdi_strip_status(in.data(), 2, out, sizeof(out)) == 0);
+	CHECK(ftdi_strip_status(in, 2, out, sizeof(out)) == 0);
+	// A length past the buffer (a transport's word) stops at the buffer's end.
+	const std::span<const uint8_t> first_packet(in.data(), 64);
+	CHECK(ftdi_strip_status(first_packet, 4096, out, sizeof(out), &overflow) == 62);
+	CHECK(overflow == 0);
+	CHECK(out[61] == 63);
+}
+
+namespace {
+
+// Reports whatever count it is told, whatever the buffer: a broken driver or fake.
+class MiscountingTransport final : public usb::UsbTransport {
+public:
+	int32_t reported = 0;
+	const char *describe() const override { return "miscounting"; }
+
+private:
+	usb::UsbTransfer raw_control_transfer(uint8_t, uint8_t, uint16_t, uint16_t, uint8_t *, uint16_t, uint32_t) override {
+		return { usb::UsbResult::OK, reported };
+	}
+	usb::UsbTransfer raw_bulk_write(uint8_t, const uint8_t *, int32_t, uint32_t) override { return { usb::UsbResult::OK, reported }; }
+	usb::UsbTransfer raw_bulk_read(uint8_t, uint8_t *, int32_t, uint32_t) override { return { usb::UsbResult::OK, reported }; }
+};
+
+} // namespace
+
+TEST_CASE("falcon usb seam: a count larger than the buffer is OVERFLOW with nothing transferred, a negative one OTHER") {
+	MiscountingTransport transport;
+	uint8_t buffer[FTDI_PACKET_SIZE] = {};
+	const auto all = [&] {
+		return std::vector<usb::UsbTransfer>{ transport.bulk_read(FALCON_ENDPOINT_IN, buffer, sizeof(buffer), 10),
+			transport.bulk_write(FALCON_ENDPOINT_OUT, buffer, sizeof(buffer), 10),
+			transport.control_transfer(usb::USB_REQUEST_TYPE_VENDOR_IN, 0x90, 0, 0, buffer, sizeof(buffer), 10) };
+	};
+	transport.reported = FTDI_PACKET_SIZE;
+	for (const usb::UsbTransfer &transfer : all()) {
+		CHECK(transfer.result == usb::UsbResult::OK);
+		CHECK(transfer.transferred == FTDI_PACKET_SIZE);
+	}
+	transport.reported = FTDI_PACKET_SIZE + 1;
+	for (const usb::UsbTransfer &transfer : all()) {
+		CHECK(transfer.result == usb::UsbResult::OVERFLOW);
+		CHECK(transfer.transferred == 0);
+	}
+	transport.reported = -5;
+	for (const usb::UsbTransfer &transfer : all()) {
+		CHECK(transfer.result == usb::UsbResult::OTHER);
+		CHECK(transfer.transferred == 0);
+	}
+	// Without a data stage nothing can have been transferred.
+	transport.reported = 1;
+	CHECK(ftdi_send(transport, FtdiRequest{ FTDI_REQUEST_RESET, FTDI_PURGE_RX, 0 }).result == usb::UsbResult::OVERFLOW);
+	CHECK(std::strcmp(usb::usb_result_name(usb::UsbResult::OVERFLOW), "LIBUSB_ERROR_OVERFLOW") == 0);
 }
 
 TEST_CASE("falcon usb seam: result names are libusb's, NO_DEVICE means DISCONNECTED") {

@@ -1,6 +1,6 @@
 // Untrusted descriptors: every malformed or absurd input is a clear Status naming the byte
-// offset, never a crash; tolerant mode accepts the unbalanced collections real firmware
-// ships. Then a bounded fuzz loop (fixed seed) over random and mutated-AJ descriptors through
+// offset, never a crash; a descriptor cut short says it is truncated, in both modes; tolerant
+// mode accepts the unmatched END_COLLECTION real firmware ships. Then a bounded fuzz loop (fixed seed) over random and mutated-AJ descriptors through
 // the parser, the PID layout finder, the encoders and the input decoder, which must stay
 // clean under ASan/UBSan.
 
@@ -114,13 +114,44 @@ TEST_CASE("hid malformed: truncated, oversized and empty descriptors name the of
 	CHECK(parse_status({ 0x0C }, false).ok()); // Tolerant: skipped.
 }
 
-TEST_CASE("hid malformed: unbalanced collections (strict fails, tolerant records)") {
+TEST_CASE("hid malformed: an unmatched END_COLLECTION (strict fails, tolerant records)") {
 	check_error({ 0x05, 0x01, 0xC0 }, StatusCode::INVALID_ARGUMENT, "END_COLLECTION at byte 2 closes no open collection");
-	check_error({ 0x05, 0x01, 0x09, 0x04, 0xA1, 0x01 }, StatusCode::INVALID_ARGUMENT, "still open at the end (outermost opened at byte 4)");
 	Status status;
-	const ReportDescriptor tolerant = test::parse_bytes({ 0xA1, 0x01, 0xA1, 0x02, 0xC0 }, &status, false);
+	const ReportDescriptor tolerant = test::parse_bytes({ 0xA1, 0x01, 0xC0, 0xC0 }, &status, false);
 	CHECK(status.ok());
-	CHECK(tolerant.quirks.unclosed_collections == 1);
+	CHECK(tolerant.quirks.unmatched_end_collections == 1);
+	CHECK(tolerant.quirks.first_unmatched_end_offset == 3);
+}
+
+TEST_CASE("hid malformed: a descriptor cut short is truncated, saying so with the byte offset, strict or tolerant") {
+	// The AJ descriptor cut at an item boundary inside its Joystick application (opened at
+	// byte 4), just after Set Effect's End Collection: tolerant parsing used to accept it and
+	// lose every report after the cut.
+	std::vector<uint8_t> cut = pid::compose_aj_descriptor(16);
+	cut.resize(cut.size() - pid::AJ_PID_DESCRIPTOR_SIZE + 0x134);
+	const std::string cut_error = "HID descriptor is truncated at byte " + std::to_string(cut.size()) +
+			": 1 collection(s) still open at the end (outermost opened at byte 4)";
+	const struct {
+		std::vector<uint8_t> bytes;
+		std::string expected;
+	} cases[] = {
+		{ { 0x05, 0x01, 0x09, 0x30, 0x26, 0xFF }, "HID descriptor is truncated: item 0x26 at byte 4 needs 2 data bytes, 1 left" },
+		{ { 0x05, 0x01, 0xFE, 0x05, 0x10, 0x01 }, "HID descriptor is truncated: long item at byte 2 declares 5 data bytes, 1 left" },
+		{ { 0x05, 0x01, 0x09, 0x04, 0xA1, 0x01, 0xA1, 0x00, 0xC0 },
+				"HID descriptor is truncated at byte 9: 1 collection(s) still open at the end (outermost opened at byte 4)" },
+		{ cut, cut_error },
+	};
+	for (const auto &test : cases) {
+		for (const bool strict : { true, false }) {
+			CAPTURE(test.expected);
+			CAPTURE(strict);
+			Status status;
+			const ReportDescriptor descriptor = test::parse_or_empty(test.bytes, strict, &status);
+			CHECK(status.code() == StatusCode::INVALID_ARGUMENT);
+			CHECK(std::string(status.message()) == test.expected);
+			CHECK(descriptor.reports.empty());
+		}
+	}
 }
 
 TEST_CASE("hid malformed: absurd sizes and counts hit the hard limits") {

@@ -1,5 +1,6 @@
 // HDAPI arrays -> device space (FACTS §4.6): mm -> m centred on the usable box, the
-// column-major transform -> quaternion, and the last force guard before the motors.
+// column-major transform -> quaternion, the plausible-position bound, and the last force
+// guard before the motors.
 
 #include "devices/openhaptics/hd_conversions.h"
 
@@ -79,6 +80,16 @@ TEST_CASE("openhaptics: positions in mm become metres from the workspace centre 
 	CHECK(velocity.x == doctest::Approx(0.1));
 	CHECK(velocity.y == doctest::Approx(-0.2));
 	CHECK(velocity.z == doctest::Approx(0.3));
+}
+
+TEST_CASE("openhaptics: a position is plausible when finite and within MAX_PLAUSIBLE_POSITION_M of the centre") {
+	CHECK(MAX_PLAUSIBLE_POSITION_M == 10.0);
+	CHECK(position_plausible(Vec3{ 0.2, -0.1, 0.1 })); // A Touch's reach.
+	CHECK(position_plausible(Vec3{ 0.0, 0.0, -10.0 }));
+	CHECK_FALSE(position_plausible(Vec3{ 0.0, 0.0, -10.001 }));
+	CHECK_FALSE(position_plausible(Vec3{ 6.0, 6.0, 6.0 })); // Each axis under 10 m, the distance not.
+	CHECK_FALSE(position_plausible(Vec3{ 1e300, 1e300, 0.0 })); // Its length overflows to infinity.
+	CHECK_FALSE(position_plausible(Vec3{ 0.0, std::numeric_limits<double>::quiet_NaN(), 0.0 }));
 }
 
 TEST_CASE("openhaptics: the column-major transform's rotation becomes the quaternion - translation ignored") {

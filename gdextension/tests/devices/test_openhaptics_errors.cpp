@@ -1,7 +1,7 @@
 // HdDevice's failure paths against the fake libHD: hdInitDevice failing (HD_INVALID_HANDLE
 // + error), nonsense device parameters, HD_COMM_ERROR mid-run (unplugged -> DISCONNECTED),
 // another HD error inside the callback (its 12-byte struct -> FAILED with code, name, text),
-// a non-finite position, calibration (inkwell), and a second device pre-empting the first.
+// a non-finite or impossibly far position, calibration (inkwell), and a second device pre-empting the first.
 // Each leaves the backend closed or disabled with a Status that says why; none crashes.
 
 #include "devices/openhaptics/openhaptics_backend.h"
@@ -205,6 +205,20 @@ TEST_CASE("openhaptics: a non-finite position from the runtime fails the device,
 	fake.set_doubles(HD_CURRENT_POSITION, position, 3);
 	CHECK(run_until_failure(*device) == DeviceIo::FAILED);
 	CHECK(contains(device->status().reason, "HD_CURRENT_POSITION"));
+	device->close();
+	check_reopens(fake);
+}
+
+TEST_CASE("openhaptics: a position beyond any workspace fails the device like a non-finite one, naming it") {
+	FakeHd &fake = fresh_fake_hd();
+	auto device = fake_device();
+	REQUIRE(device->open());
+	const double position_mm[3] = { 0.0, 0.0, 1.0e6 }; // 1 km: garbage, not a stylus.
+	fake.set_doubles(HD_CURRENT_POSITION, position_mm, 3);
+	CHECK(run_until_failure(*device) == DeviceIo::FAILED);
+	const std::string reason = device->status().reason;
+	CHECK(reason.starts_with("OpenHaptics: the device reported an HD_CURRENT_POSITION 1e+03 m from the workspace centre"));
+	CHECK(reason.ends_with("(no device reaches 10 m)"));
 	device->close();
 	check_reopens(fake);
 }

@@ -1,6 +1,7 @@
 // PID layout detection and report encoding, byte for byte: the kernel's scaling (FACTS §1.6
 // worked values), the §1.9 golden reports on the AJ descriptor, and the OFB-like branches
-// (bitmask Device Control, 16-bit direction, +-32767 magnitude) on our virtual descriptor.
+// (bitmask Device Control, 16-bit direction, +-32767 magnitude) on our virtual descriptor;
+// fields whose bits cannot hold their logical range are refused when the layout is built.
 
 #include "dev_tools/pid/virtual_pid_descriptor.h"
 #include "devices/pid/aj_descriptor.h"
@@ -143,6 +144,40 @@ TEST_CASE("pid layout: a descriptor missing what a constant force needs is refus
 	CHECK_FALSE(has_pid_layout(joystick, &status));
 	CHECK(std::string(status.message()).find("no Set Effect report (0x21)") != std::string::npos);
 	CHECK(has_pid_layout(compose_aj_descriptor(16)));
+}
+
+TEST_CASE("pid layout: a field whose bits cannot hold its logical range is refused at layout time, naming report and usage") {
+	// Set Effect Gain 0..1000 in 8 bits: Linux writes the logical maximum, so the first effect
+	// would fail. Set Constant Force Magnitude -10000..10000 in 8 signed bits, likewise.
+	struct Case {
+		Bytes item; // Unique in the AJ descriptor.
+		size_t patch_at;
+		Bytes patch;
+		size_t main_item_offset; // In the PID part: the Output item of the field.
+		const char *expected;
+	};
+	const Case cases[] = {
+		{ { 0x09, 0x52, 0x15, 0x00, 0x26, 0xFF, 0x00 }, 5, { 0xE8, 0x03 }, 0xB8,
+				"PID layout: Set Effect report 1: Gain (0x52) has logical range 0..1000, which 8 unsigned bits cannot hold" },
+		{ { 0x09, 0x70, 0x16, 0xF0, 0xD8, 0x26, 0x10, 0x27, 0x36, 0xF0, 0xD8, 0x46, 0x10, 0x27, 0x75, 0x10 }, 15, { 0x08 }, 0x2A0,
+				"PID layout: Set Constant Force report 5: Magnitude (0x70) has logical range -10000..10000, which 8 signed bits cannot hold" },
+	};
+	for (const Case &test : cases) {
+		CAPTURE(test.expected);
+		Bytes bytes = compose_aj_descriptor(16);
+		const auto at = std::search(bytes.begin(), bytes.end(), test.item.begin(), test.item.end());
+		REQUIRE(at != bytes.end());
+		std::copy(test.patch.begin(), test.patch.end(), at + static_cast<std::ptrdiff_t>(test.patch_at));
+		const size_t offset = bytes.size() - AJ_PID_DESCRIPTOR_SIZE + test.main_item_offset;
+		const std::string expected = std::string(test.expected) + " (descriptor byte " + std::to_string(offset) + ")";
+		PidLayout layout;
+		Status status = PidLayout::build(test::parse_or_empty(bytes, false), layout);
+		CHECK(status.code() == StatusCode::UNSUPPORTED);
+		CHECK(std::string(status.message()) == expected);
+		// The probe's check says the same, so the device is listed as unusable with the reason.
+		CHECK_FALSE(has_pid_layout(bytes, &status));
+		CHECK(std::string(status.message()) == expected);
+	}
 }
 
 TEST_CASE("pid protocol: FACTS §1.9 golden reports on the AJ descriptor (Linux infinite = all ones)") {

@@ -18,24 +18,25 @@ public:
 	explicit ScriptedFalconTransport(std::shared_ptr<ScriptedFalcon> p_model) :
 			model_(std::move(p_model)) {}
 
-	usb::UsbTransfer control_transfer(uint8_t p_request_type, uint8_t p_request, uint16_t p_value, uint16_t p_index,
+	const char *describe() const override { return "scripted Falcon"; }
+
+private:
+	usb::UsbTransfer raw_control_transfer(uint8_t p_request_type, uint8_t p_request, uint16_t p_value, uint16_t p_index,
 			uint8_t *p_data, uint16_t p_length, uint32_t p_timeout_ms) override {
 		(void)p_data;
 		(void)p_length;
 		(void)p_timeout_ms;
 		return model_->control_transfer(p_request_type, p_request, p_value, p_index);
 	}
-	usb::UsbTransfer bulk_write(uint8_t p_endpoint, const uint8_t *p_bytes, int32_t p_length, uint32_t p_timeout_ms) override {
+	usb::UsbTransfer raw_bulk_write(uint8_t p_endpoint, const uint8_t *p_bytes, int32_t p_length, uint32_t p_timeout_ms) override {
 		(void)p_timeout_ms;
 		return model_->bulk_write(p_endpoint, p_bytes, p_length);
 	}
-	usb::UsbTransfer bulk_read(uint8_t p_endpoint, uint8_t *r_buffer, int32_t p_length, uint32_t p_timeout_ms) override {
+	usb::UsbTransfer raw_bulk_read(uint8_t p_endpoint, uint8_t *r_buffer, int32_t p_length, uint32_t p_timeout_ms) override {
 		(void)p_timeout_ms;
 		return model_->bulk_read(p_endpoint, r_buffer, p_length);
 	}
-	const char *describe() const override { return "scripted Falcon"; }
 
-private:
 	std::shared_ptr<ScriptedFalcon> model_;
 };
 
@@ -350,7 +351,7 @@ usb::UsbTransfer ScriptedFalcon::bulk_read(uint8_t p_endpoint, uint8_t *r_buffer
 	}
 	counters_.bytes_read += length;
 	record_bulk(reads_, p_endpoint, r_buffer, length, result);
-	return { result, static_cast<int32_t>(length) };
+	return { result, static_cast<int32_t>(length) + options_.overstated_read_bytes };
 }
 
 } // namespace haptics::falcon

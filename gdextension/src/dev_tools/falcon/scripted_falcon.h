@@ -16,6 +16,8 @@
 //    scripted end-effector position through the inverse kinematics, so the device's forward
 //    kinematics recovers it; homing bits and buttons as scripted; the motor words and flags
 //    of the last command are kept, with the force they render at the scripted position.
+//  - overstated_read_bytes: IN transfers report more bytes than they wrote (a broken
+//    transport), which the USB seam must refuse.
 //  - unplug(): every transfer fails with NO_DEVICE until replug(), which powers the model
 //    up again (firmware gone, unless keep_firmware_on_replug).
 //
@@ -60,6 +62,9 @@ struct ScriptedFalconOptions {
 	// < 0: never by itself (set_homed() decides).
 	int32_t homing_commands = 0;
 	bool record = true; // Keep every transfer (tests); false keeps counters only (benchmark).
+	// Added to the length every successful IN transfer reports (the bytes written stay as
+	// they were): a broken transport claiming more than the buffer holds.
+	int32_t overstated_read_bytes = 0;
 };
 
 struct ControlRecord {

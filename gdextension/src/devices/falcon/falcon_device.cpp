@@ -248,8 +248,13 @@ DeviceIo FalconDevice::io_cycle(DeviceExchange &r_exchange, double p_dt_s) {
 	} else if (read.result == usb::UsbResult::TIMEOUT) {
 		counters_.read_timeouts.fetch_add(1, std::memory_order_relaxed); // The reply comes next cycle.
 	} else {
-		r_exchange.fail(usb::usb_result_io(read.result), "Falcon USB read failed: %s%s", usb::usb_result_name(read.result),
-				read.result == usb::UsbResult::NO_DEVICE ? " (unplugged?)" : "");
+		const char *hint = "";
+		if (read.result == usb::UsbResult::NO_DEVICE) {
+			hint = " (unplugged?)";
+		} else if (read.result == usb::UsbResult::OVERFLOW) {
+			hint = " (the transfer claimed more bytes than its buffer holds)";
+		}
+		r_exchange.fail(usb::usb_result_io(read.result), "Falcon USB read failed: %s%s", usb::usb_result_name(read.result), hint);
 		return usb::usb_result_io(read.result);
 	}
 	take_replies(p_dt_s);

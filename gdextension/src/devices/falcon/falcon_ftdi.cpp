@@ -61,12 +61,13 @@ double ftdi_decoded_baud(const FtdiBaud &p_baud) {
 	return FTDI_BASE_CLOCK_HZ * 8.0 / static_cast<double>(integer * 8 + eighths);
 }
 
-size_t ftdi_strip_status(const uint8_t *p_transfer, size_t p_length, uint8_t *r_payload, size_t p_capacity,
+size_t ftdi_strip_status(std::span<const uint8_t> p_transfer, size_t p_length, uint8_t *r_payload, size_t p_capacity,
 		size_t *r_overflow) {
+	const size_t length = p_length < p_transfer.size() ? p_length : p_transfer.size();
 	size_t written = 0;
 	size_t overflow = 0;
-	for (size_t packet = 0; packet < p_length; packet += FTDI_PACKET_SIZE) {
-		const size_t end = packet + FTDI_PACKET_SIZE < p_length ? packet + FTDI_PACKET_SIZE : p_length;
+	for (size_t packet = 0; packet < length; packet += FTDI_PACKET_SIZE) {
+		const size_t end = packet + FTDI_PACKET_SIZE < length ? packet + FTDI_PACKET_SIZE : length;
 		for (size_t i = packet + FTDI_STATUS_BYTES; i < end; ++i) {
 			if (written < p_capacity) {
 				r_payload[written++] = p_transfer[i];

@@ -12,6 +12,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <span>
 
 namespace haptics::falcon {
 
@@ -76,11 +77,13 @@ Status ftdi_encode_baud(int32_t p_baud, FtdiBaud &r_baud, double &r_actual_baud)
 // The rate an encoded setting runs at (the inverse, for checking NIF's constants).
 double ftdi_decoded_baud(const FtdiBaud &p_baud);
 
-// Copies the payload of a bulk-IN transfer to r_payload: every 64-byte packet of it starts
-// with two status bytes (modem, line status), which are dropped; a trailing packet shorter
-// than two bytes is malformed and dropped too. Returns the payload length (<= p_capacity;
-// bytes that do not fit are dropped and counted in r_overflow, if given).
-size_t ftdi_strip_status(const uint8_t *p_transfer, size_t p_length, uint8_t *r_payload, size_t p_capacity,
+// Copies the payload of a bulk-IN transfer of p_length bytes, received into p_transfer, to
+// r_payload: every 64-byte packet of it starts with two status bytes (modem, line status),
+// which are dropped; a trailing packet shorter than two bytes is malformed and dropped too.
+// Returns the payload length (<= p_capacity; bytes that do not fit are dropped and counted
+// in r_overflow, if given). A p_length past the end of p_transfer is clamped to it: the
+// length comes from the transport, the buffer's size from us.
+size_t ftdi_strip_status(std::span<const uint8_t> p_transfer, size_t p_length, uint8_t *r_payload, size_t p_capacity,
 		size_t *r_overflow = nullptr);
 
 } // namespace haptics::falcon

@@ -23,7 +23,7 @@ Status DescriptorParser::run() {
 			const size_t data_size = bytes_[position + 1];
 			if (position + 3 + data_size > length) {
 				return Status::error(StatusCode::INVALID_ARGUMENT,
-						"HID descriptor: long item at byte %u declares %zu data bytes, %zu left", offset_, data_size,
+						"HID descriptor is truncated: long item at byte %u declares %zu data bytes, %zu left", offset_, data_size,
 						length - position - 3);
 			}
 			++out_.quirks.long_items;
@@ -34,7 +34,7 @@ Status DescriptorParser::run() {
 		const uint32_t size = size_code == 3 ? 4 : size_code;
 		if (position + 1 + size > length) {
 			return Status::error(StatusCode::INVALID_ARGUMENT,
-					"HID descriptor: item 0x%02X at byte %u needs %u data bytes, %zu left", prefix, offset_, size,
+					"HID descriptor is truncated: item 0x%02X at byte %u needs %u data bytes, %zu left", prefix, offset_, size,
 					length - position - 1);
 		}
 		uint32_t data = 0;

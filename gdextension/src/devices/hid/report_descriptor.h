@@ -17,9 +17,10 @@
 //  - A variable field with fewer usages than values repeats the last usage (usage()).
 //
 // Untrusted input: every item is bounds-checked and hard limits stop absurd descriptors;
-// errors name the byte offset. Strict mode rejects unbalanced collections; tolerant mode
-// ignores an END_COLLECTION that closes nothing and collections left open at the end
-// (FACTS §1.3 quirk 2), recording them in quirks.
+// errors name the byte offset. A descriptor that ends inside an item or inside a collection
+// is truncated and refused in both modes, saying so. Strict mode also rejects an
+// END_COLLECTION that closes nothing; tolerant mode ignores it (FACTS §1.3 quirk 2),
+// recording it in quirks.
 
 #include "core/base/status.h"
 
@@ -138,7 +139,6 @@ struct ParseOptions {
 struct ParseQuirks {
 	uint32_t unmatched_end_collections = 0;
 	uint32_t first_unmatched_end_offset = 0;
-	uint32_t unclosed_collections = 0;
 	uint32_t ignored_items = 0; // Reserved tags skipped in tolerant mode.
 	uint32_t long_items = 0; // Long items are skipped (HID 1.11 §6.2.2.3) in both modes.
 };

@@ -39,6 +39,10 @@ Vec3 position_from_hd(const double p_position_mm[3], const Vec3 &p_centre_m) {
 	return Vec3{ p_position_mm[0], p_position_mm[1], p_position_mm[2] } * MM_TO_M - p_centre_m;
 }
 
+bool position_plausible(const Vec3 &p_position_m) {
+	return is_finite(p_position_m) && length(p_position_m) <= MAX_PLAUSIBLE_POSITION_M;
+}
+
 Vec3 velocity_from_hd(const double p_velocity_mm_s[3]) {
 	return Vec3{ p_velocity_mm_s[0], p_velocity_mm_s[1], p_velocity_mm_s[2] } * MM_TO_M;
 }

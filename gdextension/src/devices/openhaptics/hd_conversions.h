@@ -2,7 +2,7 @@
 
 // Pure conversions between HDAPI's arrays and our device space, kept apart from the device
 // so that each is tested on its own (and cheap enough for the scheduler callback: no
-// allocation, no branches on the hot path beyond finiteness).
+// allocation, no branches on the hot path beyond finiteness and plausibility).
 //
 // Units (FACTS §4.6): positions mm, velocities mm/s, the workspace box mm
 // (minX, minY, minZ, maxX, maxY, maxZ), forces N, stiffness N/mm. Ours: m, m/s, N, N/m.
@@ -24,6 +24,14 @@ namespace haptics::openhaptics {
 inline constexpr double MM_TO_M = 1e-3;
 inline constexpr double N_PER_MM_TO_N_PER_M = 1e3;
 
+// The farthest a position may lie from the workspace centre before it is a corrupt reading,
+// not a stylus. Touch/Omni workspaces are about 0.16 m across, the desktop Phantoms' about
+// 0.4 m and the largest Phantom Premium's under 1 m, so no real stylus gets near 10 m; yet
+// the bound catches the garbage a broken runtime or a bad frame writes (1e300, stale
+// memory) before it becomes a position the game acts on. A bound near the workspace would
+// turn a device we do not know, or a slightly off calibration, into a failure.
+inline constexpr double MAX_PLAUSIBLE_POSITION_M = 10.0;
+
 struct HdWorkspace {
 	Vec3 centre_m; // Centre of the usable box: subtracted so positions are centred.
 	Vec3 half_extent_m;
@@ -39,6 +47,9 @@ Status workspace_from_hd_box(const double p_box_mm[6], HdWorkspace &r_workspace)
 
 // HD_CURRENT_POSITION (mm) -> metres, centred on the workspace.
 Vec3 position_from_hd(const double p_position_mm[3], const Vec3 &p_centre_m);
+// Whether a position from position_from_hd() can be a real one: finite and no farther than
+// MAX_PLAUSIBLE_POSITION_M from the workspace centre.
+bool position_plausible(const Vec3 &p_position_m);
 // HD_CURRENT_VELOCITY (mm/s) -> m/s.
 Vec3 velocity_from_hd(const double p_velocity_mm_s[3]);
 // HD_CURRENT_TRANSFORM (4x4, column-major: rotation columns at [0..2], [4..6], [8..10],

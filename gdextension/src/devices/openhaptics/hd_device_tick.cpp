@@ -96,6 +96,13 @@ HDCallbackCode HdDevice::tick() {
 				is_finite(state.position_m) ? "HD_CURRENT_VELOCITY" : "HD_CURRENT_POSITION");
 		return stop_on_error(DeviceIo::FAILED, reason);
 	}
+	if (!position_plausible(state.position_m)) {
+		char reason[DeviceStatus::REASON_CAPACITY];
+		std::snprintf(reason, sizeof(reason),
+				"OpenHaptics: the device reported an HD_CURRENT_POSITION %.3g m from the workspace centre (no device reaches %g m)",
+				length(state.position_m), MAX_PLAUSIBLE_POSITION_M);
+		return stop_on_error(DeviceIo::FAILED, reason);
+	}
 	state.orientation = orientation_from_hd_transform(transform);
 	state.buttons = static_cast<uint32_t>(buttons); // HD_DEVICE_BUTTON_n is bit n-1: ours.
 	state.ready = ready;

@@ -125,13 +125,13 @@ Status missing(const char *p_what, uint16_t p_usage) {
 Status check_report(const PidLayout &p_layout, int32_t p_report, const char *p_name) {
 	const Report &report = p_layout.report(p_report);
 	if (report.byte_length > PID_MAX_REPORT_BYTES) {
-		return Status::error(StatusCode::UNSUPPORTED, "PID layout: %s report %u is %u bytes (limit %u)", p_name, report.id,
+		return Status::error(StatusCode::UNSUPPORTED, "PID layout: %s %u is %u bytes (limit %u)", p_name, report.id,
 				report.byte_length, PID_MAX_REPORT_BYTES);
 	}
 	for (const Field &field : p_layout.descriptor.report_fields(report)) {
 		if (field.bit_size > 32) {
-			return Status::error(StatusCode::UNSUPPORTED, "PID layout: %s report %u has a %u-bit value (limit 32)", p_name,
-					report.id, field.bit_size);
+			return Status::error(StatusCode::UNSUPPORTED, "PID layout: %s %u has a %u-bit value (limit 32)", p_name, report.id,
+					field.bit_size);
 		}
 	}
 	return Status::success();
@@ -318,6 +318,10 @@ Status PidLayout::build(hid::ReportDescriptor &&p_descriptor, PidLayout &r_layou
 		return Status::error(StatusCode::UNSUPPORTED,
 				"PID layout: constant force is type %u in Create New Effect but %u in Set Effect", r_layout.create_constant_key,
 				r_layout.set_effect.constant_key);
+	}
+	status = check_field_ranges(r_layout);
+	if (!status) {
+		return status;
 	}
 	// AJ's firmware ends an effect at its duration unless it is 0x7FFF, its logical maximum
 	// (FACTS §1.9 caveat); its descriptor is recognisable: no Start Delay, 16-bit duration

@@ -104,6 +104,13 @@ struct PidLayout {
 	const hid::Field &field(const FieldRef &p_ref) const { return field(p_ref.field); }
 };
 
+// Whether every field p_layout writes or reads can hold its logical range in its bits
+// (Report Size 8 with Logical Maximum 1000 cannot, nor -10000..10000 in 8 signed bits).
+// PidLayout::build runs it, so such a descriptor is refused at probe and open, naming the
+// report and usage, e.g. "PID layout: Set Effect report 1: Gain (0x52) has logical range
+// 0..1000, which 8 unsigned bits cannot hold (descriptor byte 240)".
+Status check_field_ranges(const PidLayout &p_layout);
+
 inline constexpr uint32_t PID_EFFECTS_MAX = 64; // K-old/K-new PID_EFFECTS_MAX.
 inline constexpr uint32_t PID_MAX_REPORT_BYTES = 64; // Our fixed buffers: a full-speed packet.
 

@@ -285,14 +285,14 @@ Status LibusbTransport::check_access(const LibusbOpenRequest &p_request, UsbResu
 	return status;
 }
 
-UsbTransfer LibusbTransport::control_transfer(uint8_t p_request_type, uint8_t p_request, uint16_t p_value,
+UsbTransfer LibusbTransport::raw_control_transfer(uint8_t p_request_type, uint8_t p_request, uint16_t p_value,
 		uint16_t p_index, uint8_t *p_data, uint16_t p_length, uint32_t p_timeout_ms) {
 	const int done = libusb_control_transfer(handle_, p_request_type, p_request, p_value, p_index, p_data, p_length,
 			p_timeout_ms);
 	return done >= 0 ? UsbTransfer{ UsbResult::OK, done } : UsbTransfer{ explain(usb_result_from_libusb(done)), 0 };
 }
 
-UsbTransfer LibusbTransport::bulk_write(uint8_t p_endpoint, const uint8_t *p_bytes, int32_t p_length,
+UsbTransfer LibusbTransport::raw_bulk_write(uint8_t p_endpoint, const uint8_t *p_bytes, int32_t p_length,
 		uint32_t p_timeout_ms) {
 	int transferred = 0;
 	// libusb takes a non-const buffer for both directions; an OUT transfer does not write it.
@@ -301,7 +301,7 @@ UsbTransfer LibusbTransport::bulk_write(uint8_t p_endpoint, const uint8_t *p_byt
 	return { explain(usb_result_from_libusb(code)), transferred };
 }
 
-UsbTransfer LibusbTransport::bulk_read(uint8_t p_endpoint, uint8_t *r_buffer, int32_t p_length, uint32_t p_timeout_ms) {
+UsbTransfer LibusbTransport::raw_bulk_read(uint8_t p_endpoint, uint8_t *r_buffer, int32_t p_length, uint32_t p_timeout_ms) {
 	int transferred = 0;
 	const int code = libusb_bulk_transfer(handle_, p_endpoint, r_buffer, p_length, &transferred, p_timeout_ms);
 	return { explain(usb_result_from_libusb(code)), transferred };

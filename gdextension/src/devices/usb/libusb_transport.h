@@ -61,14 +61,14 @@ public:
 	// the interface is not claimed, so a running game keeps its device). For probe().
 	static Status check_access(const LibusbOpenRequest &p_request, UsbResult *r_result = nullptr);
 
-	UsbTransfer control_transfer(uint8_t p_request_type, uint8_t p_request, uint16_t p_value, uint16_t p_index,
-			uint8_t *p_data, uint16_t p_length, uint32_t p_timeout_ms) override;
-	UsbTransfer bulk_write(uint8_t p_endpoint, const uint8_t *p_bytes, int32_t p_length, uint32_t p_timeout_ms) override;
-	UsbTransfer bulk_read(uint8_t p_endpoint, uint8_t *r_buffer, int32_t p_length, uint32_t p_timeout_ms) override;
 	const char *describe() const override { return description_.c_str(); }
 
 private:
 	LibusbTransport() = default;
+	UsbTransfer raw_control_transfer(uint8_t p_request_type, uint8_t p_request, uint16_t p_value, uint16_t p_index,
+			uint8_t *p_data, uint16_t p_length, uint32_t p_timeout_ms) override;
+	UsbTransfer raw_bulk_write(uint8_t p_endpoint, const uint8_t *p_bytes, int32_t p_length, uint32_t p_timeout_ms) override;
+	UsbTransfer raw_bulk_read(uint8_t p_endpoint, uint8_t *r_buffer, int32_t p_length, uint32_t p_timeout_ms) override;
 	void close();
 	// p_result, or NO_DEVICE when an I/O error was the device leaving.
 	UsbResult explain(UsbResult p_result);

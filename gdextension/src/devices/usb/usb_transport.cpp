@@ -47,4 +47,29 @@ DeviceIo usb_result_io(UsbResult p_result) {
 	}
 }
 
+UsbTransfer bounded_transfer(const UsbTransfer &p_transfer, int32_t p_capacity) {
+	const int32_t capacity = p_capacity > 0 ? p_capacity : 0;
+	if (p_transfer.transferred > capacity) {
+		return { UsbResult::OVERFLOW, 0 };
+	}
+	if (p_transfer.transferred < 0) {
+		return { UsbResult::OTHER, 0 };
+	}
+	return p_transfer;
+}
+
+UsbTransfer UsbTransport::control_transfer(uint8_t p_request_type, uint8_t p_request, uint16_t p_value, uint16_t p_index,
+		uint8_t *p_data, uint16_t p_length, uint32_t p_timeout_ms) {
+	return bounded_transfer(raw_control_transfer(p_request_type, p_request, p_value, p_index, p_data, p_length, p_timeout_ms),
+			p_data != nullptr ? p_length : 0);
+}
+
+UsbTransfer UsbTransport::bulk_write(uint8_t p_endpoint, const uint8_t *p_bytes, int32_t p_length, uint32_t p_timeout_ms) {
+	return bounded_transfer(raw_bulk_write(p_endpoint, p_bytes, p_length, p_timeout_ms), p_bytes != nullptr ? p_length : 0);
+}
+
+UsbTransfer UsbTransport::bulk_read(uint8_t p_endpoint, uint8_t *r_buffer, int32_t p_length, uint32_t p_timeout_ms) {
+	return bounded_transfer(raw_bulk_read(p_endpoint, r_buffer, p_length, p_timeout_ms), r_buffer != nullptr ? p_length : 0);
+}
+
 } // namespace haptics::usb

@@ -56,19 +56,34 @@ inline constexpr uint8_t USB_REQUEST_TYPE_VENDOR_OUT = 0x40; // Vendor, host to 
 inline constexpr uint8_t USB_REQUEST_TYPE_VENDOR_IN = 0xC0; // Vendor, device to host, device.
 inline constexpr uint8_t USB_ENDPOINT_IN = 0x80;
 
+// p_transfer when its count lies in [0, p_capacity]; otherwise nothing was transferred as
+// far as the caller is concerned: OVERFLOW for a count past the buffer (libusb's word for a
+// device sending more than asked for), OTHER for a negative one.
+UsbTransfer bounded_transfer(const UsbTransfer &p_transfer, int32_t p_capacity);
+
 class UsbTransport {
 public:
 	virtual ~UsbTransport() = default;
 
+	// What callers use. Each returns the implementation's result through bounded_transfer()
+	// with its own buffer length, so a transport that reports more bytes than the buffer
+	// holds (a driver bug, a broken fake) never makes protocol code read or copy past it.
 	// p_data/p_length: the data stage (read into for IN requests, sent for OUT); nullptr/0
 	// for requests without one.
-	virtual UsbTransfer control_transfer(uint8_t p_request_type, uint8_t p_request, uint16_t p_value, uint16_t p_index,
-			uint8_t *p_data, uint16_t p_length, uint32_t p_timeout_ms) = 0;
-	virtual UsbTransfer bulk_write(uint8_t p_endpoint, const uint8_t *p_bytes, int32_t p_length, uint32_t p_timeout_ms) = 0;
+	UsbTransfer control_transfer(uint8_t p_request_type, uint8_t p_request, uint16_t p_value, uint16_t p_index,
+			uint8_t *p_data, uint16_t p_length, uint32_t p_timeout_ms);
+	UsbTransfer bulk_write(uint8_t p_endpoint, const uint8_t *p_bytes, int32_t p_length, uint32_t p_timeout_ms);
 	// Reads at most p_length bytes (one or more max-size packets) into r_buffer.
-	virtual UsbTransfer bulk_read(uint8_t p_endpoint, uint8_t *r_buffer, int32_t p_length, uint32_t p_timeout_ms) = 0;
+	UsbTransfer bulk_read(uint8_t p_endpoint, uint8_t *r_buffer, int32_t p_length, uint32_t p_timeout_ms);
 	// Human-readable place of the device, for messages ("usb:1-4.2", "scripted Falcon").
 	virtual const char *describe() const = 0;
+
+private:
+	// The implementations' side, same arguments; their counts are not trusted.
+	virtual UsbTransfer raw_control_transfer(uint8_t p_request_type, uint8_t p_request, uint16_t p_value, uint16_t p_index,
+			uint8_t *p_data, uint16_t p_length, uint32_t p_timeout_ms) = 0;
+	virtual UsbTransfer raw_bulk_write(uint8_t p_endpoint, const uint8_t *p_bytes, int32_t p_length, uint32_t p_timeout_ms) = 0;
+	virtual UsbTransfer raw_bulk_read(uint8_t p_endpoint, uint8_t *r_buffer, int32_t p_length, uint32_t p_timeout_ms) = 0;
 };
 
 } // namespace haptics::usb
