@@ -80,7 +80,7 @@ pong-demo: import
 
 ## test: every suite; any failure fails the target
 test: import test-native test-godot lint test-analysis test-net test-export test-export-server \
-	test-dist test-windowed test-addon test-editor
+	test-dist test-windowed test-addon test-editor test-kernel
 	@echo "make test: all suites passed"
 
 ## test-native: the C++ doctest suite through CTest
@@ -163,12 +163,14 @@ test-addon: addon
 test-editor: addon
 	@tools/test-editor.sh
 
-## test-kernel: our device stack against the real Linux drivers: Debian's kernel (fetched once
-## into .kernel/) boots under QEMU with the VM test program (gdextension/vm_tests), whose
-## device models are real devices there (uhid, uinput, USB gadgets); every backend's
-## transport end to end through the servo, unplug and replug (tools/kernel/run.sh)
+## test-kernel: our device stack against the real Linux drivers: Debian 12's kernel and Debian
+## testing's (each fetched once into .kernel/) boot under QEMU with the VM test program
+## (gdextension/vm_tests), whose device models are real devices there (uhid, uinput, USB
+## gadgets); every backend's transport end to end through the servo, unplug and replug
+## (tools/kernel/run.sh). KERNEL_SUITES=bookworm runs one.
+KERNEL_SUITES ?= bookworm testing
 test-kernel: build
-	@tools/kernel/run.sh $(BUILD)/debug/haptics_vm_tests bookworm
+	@for suite in $(KERNEL_SUITES); do tools/kernel/run.sh $(BUILD)/debug/haptics_vm_tests $$suite || exit 1; done
 
 ## bench: servo loop vs naive loop, the force model's and the proxy's tick cost, each device
 ## backend's tick cost and protocol rate against its scripted transport, the game's

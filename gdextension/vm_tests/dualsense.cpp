@@ -11,8 +11,7 @@
 #include "devices/dualsense/dualsense_mapping.h"
 #include "engine/device_factory.h"
 #include "engine/haptics_engine.h"
-#include "game.h"
-#include "ktest.h"
+#include "rig.h"
 #include "scenarios.h"
 
 #include <algorithm>
@@ -66,8 +65,7 @@ std::vector<uint8_t> strongest_rumble(const uhid::DualSenseUhidPad &p_pad) {
 // why) when it cannot.
 bool open_on_hidraw(Report &r_report, HapticsEngine &p_engine, const char *p_when) {
 	DeviceInfo info;
-	const bool listed = eventually(
-			[&] { return find_listed(dualsense::SONY_VENDOR_ID, dualsense::DUALSENSE_PRODUCT_ID, BACKEND_HIDAPI, info); }, 8.0);
+	const bool listed = find_listed(dualsense::SONY_VENDOR_ID, dualsense::DUALSENSE_PRODUCT_ID, BACKEND_HIDAPI, info, 8.0);
 	if (!r_report.check(listed, std::string(p_when) + ": list_all_devices() finds the pad on hidapi")) {
 		return false;
 	}

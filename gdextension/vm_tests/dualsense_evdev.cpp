@@ -7,8 +7,7 @@
 #include "devices/dualsense/dualsense_backend.h"
 #include "devices/evdev/evdev_backend.h"
 #include "engine/haptics_engine.h"
-#include "game.h"
-#include "ktest.h"
+#include "rig.h"
 #include "recording_syscalls.h"
 #include "scenarios.h"
 
@@ -48,8 +47,7 @@ std::vector<KernelRumble> kernel_rumbles(const uhid::DualSenseUhidPad &p_pad) {
 
 void run_dualsense_evdev(Report &r_report, uhid::DualSenseUhidPad &p_pad) {
 	DeviceInfo info;
-	const bool listed = eventually(
-			[&] { return find_listed(dualsense::SONY_VENDOR_ID, dualsense::DUALSENSE_PRODUCT_ID, BACKEND_EVDEV, info); }, 8.0);
+	const bool listed = find_listed(dualsense::SONY_VENDOR_ID, dualsense::DUALSENSE_PRODUCT_ID, BACKEND_EVDEV, info, 8.0);
 	if (!r_report.check(listed, "evdev: list_all_devices() finds hid-playstation's gamepad node")) {
 		return;
 	}

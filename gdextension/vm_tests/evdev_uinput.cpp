@@ -11,8 +11,7 @@
 #include "devices/evdev/evdev_backend.h"
 #include "engine/device_factory.h"
 #include "engine/haptics_engine.h"
-#include "game.h"
-#include "ktest.h"
+#include "rig.h"
 #include "scenarios.h"
 
 #include <cmath>
@@ -48,7 +47,7 @@ bool last_record(const uinput::UinputFfDevice &p_stick, uinput::UinputRecord::Ki
 std::unique_ptr<HapticDevice> open_listed(Report &r_report, uinput::UinputFfDevice &p_stick, const char *p_when, bool p_reopen) {
 	const evdev::ScriptedEvdevScript script = evdev::scripted_joystick_script();
 	DeviceInfo info;
-	if (!r_report.check(eventually([&] { return find_listed(script.vendor, script.product, BACKEND_EVDEV, info); }, 5.0),
+	if (!r_report.check(find_listed(script.vendor, script.product, BACKEND_EVDEV, info, 5.0),
 				std::string(p_when) + ": list_all_devices() finds the stick's event node")) {
 		return nullptr;
 	}

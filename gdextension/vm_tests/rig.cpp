@@ -66,10 +66,14 @@ bool same_force(Report &r_report, const Vec3 &p_servo, const Vec3 &p_wire, doubl
 	return r_report.check(same, text);
 }
 
+bool servo_stops(const HapticsEngine &p_engine, double p_seconds) {
+	return eventually([&] { return !p_engine.servo_status().ok(); }, p_seconds);
+}
+
 void expect_unplugged(Report &r_report, HapticsEngine &r_engine, const std::string &p_when) {
 	const bool noticed = eventually([&] { return r_engine.device_status().io == DeviceIo::DISCONNECTED; }, 5.0);
 	r_report.check(noticed, p_when + ": the device says so: " + r_engine.device_status().reason);
-	const bool stopped = eventually([&] { return !r_engine.servo_status().ok(); }, 2.0);
+	const bool stopped = servo_stops(r_engine, 3.0);
 	r_report.check(stopped, p_when + ": the servo stopped: " + r_engine.servo_status().message());
 }
 

@@ -35,6 +35,10 @@ bool open_and_run(Report &r_report, const DeviceInfo &p_info, HapticsEngine &r_e
 // reports both.
 bool same_force(Report &r_report, const Vec3 &p_servo, const Vec3 &p_wire, double p_tolerance_n, const std::string &p_what);
 
+// Whether the servo stops within p_seconds (it notices a device fault at its next tick, which
+// under emulation may come a while after the device's I/O thread raised it).
+bool servo_stops(const HapticsEngine &p_engine, double p_seconds);
+
 // Waits for the device to say it was unplugged and the servo to stop; reports both.
 void expect_unplugged(Report &r_report, HapticsEngine &r_engine, const std::string &p_when);
 
