@@ -7,8 +7,8 @@
 #include "devices/dualsense/dualsense_backend.h"
 #include "devices/evdev/evdev_backend.h"
 #include "engine/haptics_engine.h"
-#include "rig.h"
 #include "recording_syscalls.h"
+#include "rig.h"
 #include "scenarios.h"
 
 #include <algorithm>

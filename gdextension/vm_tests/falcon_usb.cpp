@@ -71,8 +71,7 @@ int run_falcon_usb() {
 	Report report("falcon-usb");
 	{
 		const std::vector<uint8_t> image = falcon::make_test_firmware_image();
-		std::ofstream(FIRMWARE_PATH, std::ios::binary).write(reinterpret_cast<const char *>(image.data()),
-				static_cast<std::streamsize>(image.size()));
+		std::ofstream(FIRMWARE_PATH, std::ios::binary).write(reinterpret_cast<const char *>(image.data()), static_cast<std::streamsize>(image.size()));
 	}
 	// Where a player points the game at Novint's file.
 	::setenv("HAPTICS_FALCON_FIRMWARE", FIRMWARE_PATH, 1);

@@ -59,8 +59,7 @@ bool choose(Report &r_report, bool p_kernel_owns, DeviceInfo &r_choice, const st
 		return false;
 	}
 	const std::string_view expected = p_kernel_owns ? BACKEND_EVDEV : BACKEND_HIDAPI;
-	return r_report.check(r_choice.backend == expected, p_when + ": the probe chose " + r_choice.backend + " (" +
-					(p_kernel_owns ? "hid-pidff drives it" : "hid-pidff refused it") + ")");
+	return r_report.check(r_choice.backend == expected, p_when + ": the probe chose " + r_choice.backend + " (" + (p_kernel_owns ? "hid-pidff drives it" : "hid-pidff refused it") + ")");
 }
 
 bool press_into_floor(Report &r_report, pid::ScriptedPidJoystick &p_joystick, HapticsEngine &r_engine,
