@@ -1,5 +1,7 @@
 #include "dev_tools/gadget/usb_gadget.h"
 
+#include "dev_tools/kernel_device_io.h"
+
 #include <dirent.h>
 #include <fcntl.h>
 #include <linux/usb/functionfs.h>
@@ -20,14 +22,10 @@ namespace {
 constexpr const char *GADGETS = "/sys/kernel/config/usb_gadget";
 constexpr const char *UDC_CLASS = "/sys/class/udc";
 // How long ep0's poll waits before it looks at the wake pipe again: shutdown latency only.
-constexpr int POLL_TIMEOUT_MS = 50;
+constexpr int KERNEL_DEVICE_POLL_MS = 50;
 constexpr size_t EP0_DATA_MAX = 4096;
 
 std::atomic<int> g_next_gadget{ 0 };
-
-Status errno_status(const char *p_what, const std::string &p_path) {
-	return Status::error(StatusCode::DEVICE_ERROR, "%s %s: %s", p_what, p_path.c_str(), std::strerror(errno));
-}
 
 Status write_text(const std::string &p_path, const std::string &p_text) {
 	const int fd = ::open(p_path.c_str(), O_WRONLY | O_CLOEXEC);
@@ -147,7 +145,7 @@ Status UsbGadget::create(const GadgetIdentity &p_identity, const GadgetFunction 
 		endpoints_.push_back(fd);
 	}
 	if (status && ::pipe2(wake_, O_CLOEXEC) != 0) {
-		status = errno_status("pipe", "");
+		status = errno_status("pipe");
 	}
 	if (!status) {
 		destroy();
@@ -248,7 +246,7 @@ void UsbGadget::run() {
 	pollfd fds[2] = { { ep0_, POLLIN, 0 }, { wake_[0], POLLIN, 0 } };
 	usb_functionfs_event events[4];
 	while (true) {
-		const int ready = ::poll(fds, 2, POLL_TIMEOUT_MS);
+		const int ready = ::poll(fds, 2, KERNEL_DEVICE_POLL_MS);
 		if ((ready < 0 && errno != EINTR) || fds[1].revents != 0) {
 			return;
 		}

@@ -1,5 +1,7 @@
 #include "dev_tools/uhid/uhid_device.h"
 
+#include "dev_tools/kernel_device_io.h"
+
 #include <fcntl.h>
 #include <linux/uhid.h>
 #include <poll.h>
@@ -14,12 +16,6 @@ namespace haptics::uhid {
 namespace {
 
 constexpr const char *UHID_PATH = "/dev/uhid";
-// How long a poll waits before it looks at the wake pipe again: shutdown latency only.
-constexpr int POLL_TIMEOUT_MS = 50;
-
-Status errno_status(const char *p_what) {
-	return Status::error(StatusCode::DEVICE_ERROR, "%s: %s", p_what, std::strerror(errno));
-}
 
 void copy_text(char *r_to, size_t p_capacity, const std::string &p_text) {
 	const size_t n = std::min(p_text.size(), p_capacity - 1);
@@ -126,7 +122,7 @@ void UhidDevice::run() {
 	pollfd fds[2] = { { fd_, POLLIN, 0 }, { wake_[0], POLLIN, 0 } };
 	uhid_event event{};
 	while (true) {
-		const int ready = ::poll(fds, 2, POLL_TIMEOUT_MS);
+		const int ready = ::poll(fds, 2, KERNEL_DEVICE_POLL_MS);
 		if (ready < 0 && errno != EINTR) {
 			return;
 		}

@@ -1,5 +1,7 @@
 #include "dev_tools/uinput/uinput_ff_device.h"
 
+#include "dev_tools/kernel_device_io.h"
+
 #include <fcntl.h>
 #include <linux/input.h>
 #include <linux/uinput.h>
@@ -19,12 +21,6 @@ namespace haptics::uinput {
 namespace {
 
 constexpr const char *UINPUT_PATH = "/dev/uinput";
-// How long a poll waits before it looks at the wake pipe again: shutdown latency only.
-constexpr int POLL_TIMEOUT_MS = 50;
-
-Status errno_status(const char *p_what) {
-	return Status::error(StatusCode::DEVICE_ERROR, "%s: %s", p_what, std::strerror(errno));
-}
 
 // /sys/devices/virtual/input/<p_sysname>/eventN -> /dev/input/eventN (devtmpfs names it so).
 std::string event_path_of(const char *p_sysname) {
@@ -169,7 +165,7 @@ void UinputFfDevice::run() {
 	pollfd fds[2] = { { fd_, POLLIN, 0 }, { wake_[0], POLLIN, 0 } };
 	input_event events[16];
 	while (true) {
-		const int ready = ::poll(fds, 2, POLL_TIMEOUT_MS);
+		const int ready = ::poll(fds, 2, KERNEL_DEVICE_POLL_MS);
 		if (ready < 0 && errno != EINTR) {
 			return;
 		}

@@ -79,61 +79,18 @@ Status require_constant_force(const EvdevFfFeatures &p_features, const char *p_p
 	return Status::success();
 }
 
-int EvdevConstantForce::write_event(uint16_t p_code, int32_t p_value) {
-	encode_input_event(EVDEV_EV_FF, p_code, p_value, event_);
-	const int64_t written = sys_->write(fd_, event_.data(), event_.size());
-	if (written < 0) {
-		return static_cast<int>(written);
-	}
-	return written == static_cast<int64_t>(event_.size()) ? 0 : -EIO;
-}
-
-int EvdevConstantForce::upload(FfConstantEffect &r_effect) {
-	encode_constant_effect(r_effect, bytes_);
-	const int result = sys_->ioctl(fd_, EVDEV_EVIOCSFF, bytes_.data());
-	if (result < 0) {
-		return result;
-	}
-	// The kernel writes the id it chose back into the struct (always the same on update).
-	r_effect.id = get_s16(bytes_.data(), FF_EFFECT_ID_OFFSET);
-	++uploads_;
-	return 0;
-}
-
 Status EvdevConstantForce::start(EvdevSyscalls &r_sys, int p_fd, const EvdevFfFeatures &p_features, const char *p_path) {
 	stop_and_erase();
-	sys_ = &r_sys;
-	fd_ = p_fd;
-	uploads_ = 0;
-	const auto failed = [&](int p_error, const char *p_step) {
-		stop_and_erase();
-		return Status::error(p_error == -ENODEV ? StatusCode::DEVICE_DISCONNECTED : StatusCode::DEVICE_ERROR,
-				"%s: %s failed: %s (%s)", p_path, p_step, errno_text(p_error), errno_name(p_error));
-	};
-	int result = 0;
-	if (p_features.gain && (result = write_event(EVDEV_FF_GAIN, 0xffff)) < 0) {
-		return failed(result, "setting the gain (FF_GAIN)");
-	}
-	if (p_features.autocenter && (result = write_event(EVDEV_FF_AUTOCENTER, 0)) < 0) {
-		return failed(result, "turning autocentre off (FF_AUTOCENTER)");
-	}
 	FfConstantEffect effect; // id -1, level 0, infinite: nothing felt until the first update.
-	if ((result = upload(effect)) < 0) {
-		return failed(result, "uploading the constant force (EVIOCSFF)");
-	}
-	if (effect.id < 0) {
-		return failed(-EINVAL, "uploading the constant force (the kernel returned no effect id)");
-	}
+	encode_constant_effect(effect, slot_.bytes());
+	const Status started = slot_.start(r_sys, p_fd, p_features, true, "the constant force", p_path);
 	effect_ = effect;
-	started_ = true;
-	if ((result = write_event(static_cast<uint16_t>(effect_.id), 1)) < 0) {
-		return failed(result, "playing the constant force");
-	}
-	return Status::success();
+	effect_.id = slot_.id();
+	return started;
 }
 
 int EvdevConstantForce::update(const FfConstantForce &p_force) {
-	if (!started_) {
+	if (!slot_.started()) {
 		return -EBADF;
 	}
 	if (p_force == current()) {
@@ -142,7 +99,8 @@ int EvdevConstantForce::update(const FfConstantForce &p_force) {
 	FfConstantEffect next = effect_;
 	next.direction = p_force.direction;
 	next.level = p_force.level;
-	const int result = upload(next);
+	encode_constant_effect(next, slot_.bytes());
+	const int result = slot_.upload();
 	if (result < 0) {
 		return result;
 	}
@@ -151,20 +109,12 @@ int EvdevConstantForce::update(const FfConstantForce &p_force) {
 }
 
 int EvdevConstantForce::stop_and_erase() {
-	if (!started_) {
+	if (!slot_.started()) {
 		return 0;
 	}
-	// Each step on its own: an unplugged device fails them all, and a zero upload that
-	// fails must not keep the effect from being stopped and erased.
-	int first_error = update(FfConstantForce{});
-	const int stopped = write_event(static_cast<uint16_t>(effect_.id), 0);
-	first_error = first_error < 0 ? first_error : stopped;
-	const int erased = sys_->ioctl(fd_, EVDEV_EVIOCRMFF,
-			reinterpret_cast<void *>(static_cast<intptr_t>(effect_.id)));
-	first_error = first_error < 0 ? first_error : erased;
-	started_ = false;
+	const int zeroed = update(FfConstantForce{});
 	effect_ = FfConstantEffect{};
-	return first_error < 0 ? first_error : 0;
+	return slot_.stop_and_erase(zeroed);
 }
 
 } // namespace haptics::evdev

@@ -22,6 +22,7 @@
 // come back as -errno for the caller to report.
 
 #include "core/base/status.h"
+#include "devices/evdev/evdev_effect_slot.h"
 #include "devices/evdev/evdev_ff.h"
 #include "devices/evdev/evdev_syscalls.h"
 
@@ -75,22 +76,14 @@ public:
 	// Best effort, idempotent: zero, stop, erase; returns the first error (0 if none).
 	int stop_and_erase();
 
-	bool started() const { return started_; }
-	int16_t id() const { return effect_.id; }
+	bool started() const { return slot_.started(); }
+	int16_t id() const { return slot_.id(); }
 	FfConstantForce current() const { return { effect_.direction, effect_.level }; }
-	uint64_t uploads() const { return uploads_; } // EVIOCSFF calls that succeeded.
+	uint64_t uploads() const { return slot_.uploads(); } // EVIOCSFF calls that succeeded.
 
 private:
-	int upload(FfConstantEffect &r_effect);
-	int write_event(uint16_t p_code, int32_t p_value);
-
-	EvdevSyscalls *sys_ = nullptr;
-	int fd_ = -1;
+	EvdevEffectSlot slot_;
 	FfConstantEffect effect_;
-	bool started_ = false;
-	uint64_t uploads_ = 0;
-	FfEffectBytes bytes_{};
-	InputEventBytes event_{};
 };
 
 } // namespace haptics::evdev

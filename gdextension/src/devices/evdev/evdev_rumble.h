@@ -63,26 +63,18 @@ public:
 	// Best effort, idempotent: zero, stop, erase; the first error (0 if none).
 	int stop_and_erase();
 
-	bool started() const { return started_; }
-	int16_t id() const { return effect_.id; }
+	bool started() const { return slot_.started(); }
+	int16_t id() const { return slot_.id(); }
 	FfRumbleLevels current() const { return { effect_.strong_magnitude, effect_.weak_magnitude }; }
-	uint64_t uploads() const { return uploads_; }
+	uint64_t uploads() const { return slot_.uploads(); }
 	const RumbleMapping &mapping() const { return mapping_; }
 
 private:
-	int upload(FfRumbleEffect &r_effect);
-	int write_event(uint16_t p_code, int32_t p_value);
-
-	EvdevSyscalls *sys_ = nullptr;
-	int fd_ = -1;
+	EvdevEffectSlot slot_;
 	FfRumbleEffect effect_;
-	bool started_ = false;
-	uint64_t uploads_ = 0;
 	RumbleMapping mapping_;
 	RumbleEnvelope envelope_;
 	std::atomic<double> peak_n_{ 0.0 };
-	FfEffectBytes bytes_{};
-	InputEventBytes event_{};
 };
 
 } // namespace haptics::evdev
