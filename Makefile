@@ -25,7 +25,7 @@ SOAK_SECONDS ?= 600
 
 .PHONY: play edit test deps engine build build-release import test-native test-godot lint pong-demo \
 	export test-export export-server test-export-server dist test-dist test-windowed test-net bench-net bench soak sanitize analyze export-study \
-	test-analysis addon test-addon test-editor test-kernel clean distclean
+	test-analysis addon test-addon test-editor test-kernel test-rt clean distclean
 
 ## deps: install missing OS packages (apt-get; sudo when not root)
 deps:
@@ -80,7 +80,7 @@ pong-demo: import
 
 ## test: every suite; any failure fails the target
 test: import test-native test-godot lint test-analysis test-net test-export test-export-server \
-	test-dist test-windowed test-addon test-editor test-kernel
+	test-dist test-windowed test-addon test-editor test-kernel test-rt
 	@echo "make test: all suites passed"
 
 ## test-native: the C++ doctest suite through CTest
@@ -106,7 +106,7 @@ lint: deps
 	@python3 tools/check-gd-layers.py
 	@tools/gdtoolkit.sh gdlint addons scripts tests
 	@tools/gdtoolkit.sh gdformat --check addons scripts tests
-	@find gdextension/src gdextension/tests gdextension/bench gdextension/vm_tests -name '*.h' -o -name '*.cpp' | \
+	@find gdextension/src gdextension/tests gdextension/bench gdextension/vm_tests gdextension/rt_probe -name '*.h' -o -name '*.cpp' | \
 		sort | xargs clang-format --dry-run -Werror
 	@echo "clang-format: the C++ is formatted"
 
@@ -171,6 +171,12 @@ test-editor: addon
 KERNEL_SUITES ?= bookworm testing
 test-kernel: build
 	@for suite in $(KERNEL_SUITES); do tools/kernel/run.sh $(BUILD)/debug/haptics_vm_tests $$suite || exit 1; done
+
+## test-rt: the servo as an ordinary user gets it: a private system bus, polkitd and RealtimeKit
+## started for the test, the servo run as 'nobody', the kernel's view of its thread checked
+## against its stats (SCHED_RR from RealtimeKit; a nice level; nothing) (tools/rt/test-rtkit.sh)
+test-rt: build
+	@tools/rt/test-rtkit.sh $(BUILD)/debug/haptics_rt_probe
 
 ## bench: servo loop vs naive loop, the force model's and the proxy's tick cost, each device
 ## backend's tick cost and protocol rate against its scripted transport, the game's

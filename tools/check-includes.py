@@ -34,13 +34,14 @@ LAYERS = {
     "tests": ["src", "tests_support"],
     "bench": ["src", "tests", "tests_support"],
     "vm_tests": ["src"],
+    "rt_probe": ["src"],
 }
 # Where a quoted include is looked for after the including file's own folder (as the build's
 # include paths do), and headers from outside the tree.
 ROOTS = ["src", "tests", "tests_support", "bench"]
 EXTERNAL = {"gdextension_interface.h"}
 MAX_LINES = 400
-SOURCES = ("src", "tests", "bench", "vm_tests")
+SOURCES = ("src", "tests", "bench", "vm_tests", "rt_probe")
 CPP = (".h", ".cpp")
 
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')

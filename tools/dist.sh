@@ -3,8 +3,7 @@
 # .export/haptic-game-linux-x86_64.tar.gz, one folder haptic-game/ holding the build, the
 # player README (tools/dist/README.player.md, completed from the project's own sources: the
 # controls from the input map, the devices table and the udev commands from README.md, the
-# real-time priority from the servo's defaults, the glibc version from the shipped one) and
-# the udev rules. Prints the archive's size.
+# glibc version from the shipped one) and the udev rules. Prints the archive's size.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=.export/linux
@@ -25,16 +24,15 @@ controls=$(sed -n '/^### /,$p' "$stage/controls.log")
 devices=$(sed -n '/^| Device | Driver |/,/^$/p' README.md)
 udev=$(awk '/^\*\*Permissions\.\*\*/ { on = 1 } on && /^```/ { print; if (++fences == 2) exit; next }
   fences == 1 { print }' README.md | sed 's,tools/udev/,,')
-priority=$(sed -nE 's/.*int32_t priority = ([0-9]+); \/\/ SCHED_FIFO.*/\1/p' gdextension/src/core/base/realtime.h)
 glibc=$(readelf -V "$build/runtime/lib/libc.so.6" | grep -oE "GLIBC_[0-9.]+" | sort -uV | tail -n 1)
-[[ -n $controls && -n $devices && $udev == *70-haptics.rules* && -n $priority && -n $glibc ]] ||
-  die "README.md or realtime.h no longer has what the player README takes from them"
-# Whole-line placeholders take a block; @FIFO_PRIORITY@ and @GLIBC@ are replaced within lines.
-controls=$controls devices=$devices udev=$udev priority=$priority glibc=${glibc#GLIBC_} awk '
+[[ -n $controls && -n $devices && $udev == *70-haptics.rules* && -n $glibc ]] ||
+  die "README.md no longer has what the player README takes from it"
+# Whole-line placeholders take a block; @GLIBC@ is replaced within lines.
+controls=$controls devices=$devices udev=$udev glibc=${glibc#GLIBC_} awk '
   $0 == "@CONTROLS@" { print ENVIRON["controls"]; next }
   $0 == "@DEVICES@" { print ENVIRON["devices"]; next }
   $0 == "@UDEV@" { print ENVIRON["udev"]; next }
-  { gsub(/@FIFO_PRIORITY@/, ENVIRON["priority"]); gsub(/@GLIBC@/, ENVIRON["glibc"]); print }
+  { gsub(/@GLIBC@/, ENVIRON["glibc"]); print }
 ' tools/dist/README.player.md >"$top/README.md"
 ! grep -q "@[A-Z_]*@" "$top/README.md" || die "a placeholder of the player README was left unfilled"
 

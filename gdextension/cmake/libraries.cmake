@@ -19,7 +19,8 @@ function(haptics_library target folder)
   target_link_libraries(${target} PUBLIC ${ARGN})
 endfunction()
 
-haptics_library(haptics_core core Threads::Threads)
+haptics_library(haptics_core core Threads::Threads ${CMAKE_DL_LIBS})
+target_include_directories(haptics_core SYSTEM PRIVATE ${DBUS_INCLUDE_DIRS})
 haptics_library(haptics_renderers renderers haptics_core)
 # ${CMAKE_DL_LIBS}: the OpenHaptics backend dlopens the user's libHD at run time.
 haptics_library(haptics_devices devices haptics_core PkgConfig::HIDAPI PkgConfig::LIBUSB ${CMAKE_DL_LIBS})

@@ -47,6 +47,11 @@ if(HAPTICS_BUILD_TESTS)
   file(GLOB HAPTICS_VM_TEST_SOURCES CONFIGURE_DEPENDS vm_tests/*.cpp)
   add_executable(haptics_vm_tests ${HAPTICS_VM_TEST_SOURCES})
   target_link_libraries(haptics_vm_tests PRIVATE haptics_engine haptics_scripted)
+
+  # What an unprivileged player's servo thread gets, with and without RealtimeKit
+  # (tools/rt/test-rtkit.sh).
+  add_executable(haptics_rt_probe rt_probe/rt_probe.cpp)
+  target_link_libraries(haptics_rt_probe PRIVATE haptics_engine)
 endif()
 
 if(HAPTICS_BUILD_BENCH)

@@ -124,14 +124,20 @@ func get_legend_value(component: String) -> Label:
 
 
 ## The HUD's servo line while the servo runs: its rate, period p99 and which real-time
-## techniques it was granted ([method HapticsServo.get_stats]): the SCHED_FIFO priority, locked
-## memory, the CPU latency held, the pinned CPU, the spin before each deadline.
+## techniques it was granted ([method HapticsServo.get_stats]): the real-time priority (from
+## RealtimeKit for a normal user) or what the servo has without one, locked memory, the CPU
+## latency held, the pinned CPU, the spin before each deadline.
 static func servo_running_text(rate_hz: float, stats: Dictionary) -> String:
 	var p99_ms: float = stats.get("period_p99_ms", 0.0)
 	var parts: PackedStringArray = ["servo %d Hz" % roundi(rate_hz), "p99 %.2f ms" % p99_ms]
 	if stats.get("realtime", false) == true:
 		var priority: int = stats.get("realtime_priority", 0)
-		parts.append("RT %d" % priority)
+		var via_rtkit: bool = stats.get("scheduler", "") == "realtime_rr"
+		parts.append("RT %d%s" % [priority, " (RealtimeKit)" if via_rtkit else ""])
+	else:
+		var without: String = realtime_missing_text(stats)
+		if not without.is_empty():
+			parts.append(without)
 	if stats.get("memory_locked", false) == true:
 		parts.append("mlock")
 	if stats.get("cpu_latency_held", false) == true:
@@ -143,6 +149,22 @@ static func servo_running_text(rate_hz: float, stats: Dictionary) -> String:
 	if spin_us > 0.0:
 		parts.append("spin %d µs" % roundi(spin_us))
 	return "  ·  ".join(parts)
+
+
+## Without real time, what the servo has instead and the one step that gives more, from
+## what RealtimeKit answered; "" when it was not asked.
+static func realtime_missing_text(stats: Dictionary) -> String:
+	match str(stats.get("realtime_kit", "not asked")):
+		"high priority":
+			return (
+				"nice %d (no real time outside a desktop session)"
+				% int(stats.get("realtime_kit_nice", 0))
+			)
+		"refused":
+			return "no real time: RealtimeKit refused (no desktop session?)"
+		"unavailable":
+			return "no real time: install rtkit (sudo apt install rtkit)"
+	return ""
 
 
 ## The HUD's servo line when the servo is not running: why, and what happens now.

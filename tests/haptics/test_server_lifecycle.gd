@@ -21,7 +21,7 @@ func test_the_thread_runs_and_reports_its_statistics() -> void:
 	assert_true(stats["running"])
 	assert_eq(stats["nominal_rate_hz"], 1000.0)
 	assert_gt(stats["ticks"], 100)
-	assert_has(["normal", "realtime_fifo"], stats["scheduler"])
+	assert_has(["normal", "realtime_fifo", "realtime_rr"], stats["scheduler"])
 	for key: String in ["period_p99_ms", "tick_cost_p50_us", "late_ticks", "frame_age_ms"]:
 		assert_has(stats, key)
 	server.stop()

@@ -153,6 +153,32 @@ func test_the_servo_line_names_the_techniques_granted() -> void:
 	assert_eq(Hud.servo_running_text(1000.0, refused), "servo 1000 Hz  ·  p99 1.20 ms")
 
 
+func test_the_servo_line_says_what_realtimekit_gave_a_normal_user() -> void:
+	var base: Dictionary = {"period_p99_ms": 1.0, "realtime": false, "realtime_priority": 0}
+	var rr: Dictionary = base.merged(
+		{
+			"realtime": true,
+			"realtime_priority": 20,
+			"scheduler": "realtime_rr",
+			"realtime_kit": "realtime"
+		},
+		true
+	)
+	assert_eq(
+		Hud.servo_running_text(1000.0, rr), "servo 1000 Hz  ·  p99 1.00 ms  ·  RT 20 (RealtimeKit)"
+	)
+	var nice: Dictionary = base.merged({"realtime_kit": "high priority", "realtime_kit_nice": -15})
+	assert_eq(
+		Hud.servo_running_text(1000.0, nice),
+		"servo 1000 Hz  ·  p99 1.00 ms  ·  nice -15 (no real time outside a desktop session)"
+	)
+	var none: Dictionary = base.merged({"realtime_kit": "unavailable"})
+	assert_eq(
+		Hud.servo_running_text(1000.0, none),
+		"servo 1000 Hz  ·  p99 1.00 ms  ·  no real time: install rtkit (sudo apt install rtkit)"
+	)
+
+
 func _collect_blocking(node: Node, out: Array[String]) -> void:
 	if node is Control and (node as Control).mouse_filter != Control.MOUSE_FILTER_IGNORE:
 		out.append(str(node.get_path()))

@@ -290,6 +290,7 @@ ServoStats HapticsEngine::stats() const {
 		stats.pinned_cpu = grants.cpu;
 		stats.stack_prefaulted_kb = grants.stack_prefaulted_kb;
 		stats.timer_slack_minimised = grants.timer_slack_minimised;
+		stats.realtime_kit = grants.realtime_kit;
 		stats.spin_s = static_cast<double>(impl_->loop.options().spin_ns) * 1e-9;
 	}
 	stats.frames_received = output.frames_received;

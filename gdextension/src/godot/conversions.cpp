@@ -249,18 +249,34 @@ gd::Dictionary forces_to_dictionary(const ForceComponents &p_forces, std::span<c
 	return d;
 }
 
+// Stable lowercase names for scripts.
+static const char *scheduler_script_name(SchedulerKind p_kind) {
+	switch (p_kind) {
+		case SchedulerKind::MANUAL:
+			return "manual";
+		case SchedulerKind::REALTIME_FIFO:
+			return "realtime_fifo";
+		case SchedulerKind::REALTIME_RR:
+			return "realtime_rr";
+		case SchedulerKind::NORMAL:
+			break;
+	}
+	return "normal";
+}
+
 gd::Dictionary stats_to_dictionary(const ServoStats &p_stats) {
 	constexpr double MS = 1e3;
 	constexpr double US = 1e6;
 	gd::Dictionary d;
 	d.set("running", p_stats.running);
-	// Stable lowercase names for scripts: manual, normal, realtime_fifo.
-	const char *scheduler = p_stats.scheduler == SchedulerKind::MANUAL ? "manual"
-			: p_stats.scheduler == SchedulerKind::REALTIME_FIFO		   ? "realtime_fifo"
-																	   : "normal";
-	d.set("scheduler", scheduler);
-	d.set("realtime", p_stats.scheduler == SchedulerKind::REALTIME_FIFO);
+	d.set("scheduler", scheduler_script_name(p_stats.scheduler));
+	d.set("realtime", p_stats.scheduler == SchedulerKind::REALTIME_FIFO || p_stats.scheduler == SchedulerKind::REALTIME_RR);
 	d.set("realtime_priority", static_cast<int64_t>(p_stats.realtime_priority));
+	// What RealtimeKit was asked and gave: "not asked", "realtime", "high priority",
+	// "refused", "unavailable"; the nice level it granted; why, in words.
+	d.set("realtime_kit", rtkit_outcome_name(p_stats.realtime_kit.outcome));
+	d.set("realtime_kit_nice", static_cast<int64_t>(p_stats.realtime_kit.nice));
+	d.set("realtime_kit_reason", p_stats.realtime_kit.reason);
 	d.set("memory_locked", p_stats.memory_locked);
 	d.set("cpu_latency_held", p_stats.cpu_latency_held);
 	d.set("pinned_cpu", static_cast<int64_t>(p_stats.pinned_cpu));

@@ -26,6 +26,8 @@ const char *scheduler_kind_name(SchedulerKind p_kind) {
 			return "SCHED_OTHER";
 		case SchedulerKind::REALTIME_FIFO:
 			return "SCHED_FIFO";
+		case SchedulerKind::REALTIME_RR:
+			return "SCHED_RR";
 	}
 	return "unknown";
 }
@@ -276,7 +278,14 @@ RealtimeGrants apply_realtime_request(const RealtimeRequest &p_request) {
 	const RealtimeResult scheduler = try_make_current_thread_realtime(p_request.priority);
 	grants.kind = scheduler.kind;
 	grants.priority = scheduler.priority;
-	if (p_request.minimise_timer_slack && grants.kind != SchedulerKind::REALTIME_FIFO) {
+	if (grants.kind == SchedulerKind::NORMAL && p_request.priority > 0 && p_request.ask_realtime_kit) {
+		grants.realtime_kit = request_realtime_from_rtkit(p_request.priority);
+		if (grants.realtime_kit.outcome == RtkitOutcome::REALTIME) {
+			grants.kind = SchedulerKind::REALTIME_RR;
+			grants.priority = grants.realtime_kit.priority;
+		}
+	}
+	if (p_request.minimise_timer_slack && grants.kind == SchedulerKind::NORMAL) {
 		grants.timer_slack_minimised = minimise_current_timer_slack();
 	}
 	grants.cpu = try_pin_current_thread(p_request.cpu);

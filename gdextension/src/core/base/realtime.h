@@ -12,6 +12,8 @@
 // to one CPU, a prefaulted stack, and, when SCHED_FIFO is refused, the smallest timer slack.
 // None of these functions logs; each says what it got.
 
+#include "core/base/realtime_kit.h"
+
 #include <cstdint>
 
 namespace haptics {
@@ -20,6 +22,7 @@ enum class SchedulerKind : int32_t {
 	MANUAL = 0, // step(dt): no thread.
 	NORMAL = 1, // SCHED_OTHER: SCHED_FIFO was refused (no privilege) or not asked for.
 	REALTIME_FIFO = 2, // SCHED_FIFO granted.
+	REALTIME_RR = 3, // SCHED_RR from RealtimeKit (realtime_kit.h): a normal user's real time.
 };
 
 const char *scheduler_kind_name(SchedulerKind p_kind);
@@ -107,7 +110,10 @@ struct RealtimeRequest {
 	bool hold_cpu_latency = true;
 	int32_t cpu = PIN_NONE; // A CPU index, PIN_NONE or PIN_AUTO.
 	int32_t prefault_stack_kb = 0; // 0 = none.
-	bool minimise_timer_slack = true; // Only when SCHED_FIFO is not granted.
+	bool minimise_timer_slack = true; // Only when real time is not granted.
+	// When SCHED_FIFO is refused (a normal user), ask RealtimeKit for SCHED_RR at priority
+	// (or the most it allows), else for a raised nice level.
+	bool ask_realtime_kit = true;
 };
 
 // What it got.
@@ -118,7 +124,8 @@ struct RealtimeGrants {
 	bool cpu_latency_held = false;
 	int32_t cpu = -1; // Pinned CPU, -1 when not pinned.
 	int32_t stack_prefaulted_kb = 0;
-	bool timer_slack_minimised = false; // Only tried when SCHED_FIFO was not granted.
+	bool timer_slack_minimised = false; // Only tried when real time was not granted.
+	RtkitGrant realtime_kit; // What RealtimeKit was asked and gave (NOT_ASKED under SCHED_FIFO).
 };
 
 // On the thread to be made real-time: asks for everything p_request names, in that order

@@ -1,5 +1,7 @@
 #include "core/servo/servo_loop.h"
 
+#include <pthread.h>
+
 #include <algorithm>
 #include <cmath>
 #include <system_error>
@@ -81,6 +83,8 @@ void ServoLoop::clear_fault() {
 }
 
 void ServoLoop::run() {
+	// The name top, ps -L and /proc/<pid>/task/*/comm show (15 characters at most).
+	::pthread_setname_np(::pthread_self(), SERVO_THREAD_NAME);
 	grants_ = apply_realtime_request(options_.realtime);
 	grants_published_.store(true, std::memory_order_release);
 

@@ -32,6 +32,9 @@
 
 namespace haptics {
 
+// The servo thread's name, as the system shows it.
+inline constexpr const char *SERVO_THREAD_NAME = "haptics-servo";
+
 enum class ServoState : int32_t {
 	STOPPED = 0,
 	RUNNING = 1,

@@ -47,13 +47,14 @@ extern template class Histogram<10000>;
 struct ServoStats {
 	bool running = false;
 	SchedulerKind scheduler = SchedulerKind::MANUAL;
-	int32_t realtime_priority = 0; // SCHED_FIFO priority when granted.
+	int32_t realtime_priority = 0; // SCHED_FIFO or SCHED_RR priority when granted.
 	// The other real-time techniques (realtime.h) the servo thread asked for and got.
 	bool memory_locked = false; // mlockall
 	bool cpu_latency_held = false; // /dev/cpu_dma_latency at 0
 	int32_t pinned_cpu = -1; // -1 when not pinned
 	int32_t stack_prefaulted_kb = 0;
 	bool timer_slack_minimised = false; // SCHED_OTHER only
+	RtkitGrant realtime_kit; // Asked when SCHED_FIFO was refused (realtime_kit.h).
 	double spin_s = 0.0; // Busy-wait before each deadline (ServoOptions::spin_ns).
 	// Share of one CPU the servo thread used since its first tick (sleeping costs nothing;
 	// the spin and the tick do).
