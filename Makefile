@@ -189,7 +189,7 @@ bench: import
 	@cmake --build $(BUILD)/bench -j $(JOBS) --target haptics_bench haptics_device_bench haptics_rt_bench
 	@mkdir -p .bench
 	@$(BUILD)/bench/haptics_bench --seconds $(BENCH_SECONDS) --json .bench/servo.json
-	@$(BUILD)/bench/haptics_rt_bench --project $(CURDIR) --json .bench/rt.json
+	@tools/rt/bench-users.sh $(BUILD)/bench/haptics_rt_bench $(CURDIR) .bench/rt.json
 	@$(BUILD)/bench/haptics_device_bench --seconds 1 --json .bench/devices.json
 	@$(GODOT) --headless --path . --fixed-fps 50 res://tests/bench/game_bench.tscn -- \
 		--frames=1500 --json=.bench/game.json

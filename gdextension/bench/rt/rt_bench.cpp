@@ -13,7 +13,12 @@
 // and nothing else), and spins of several lengths with their CPU cost.
 //
 //   haptics_rt_bench [--seconds S] [--rounds R] [--json PATH] [--project DIR]
-//                    [--conditions idle,cpu,render] [--techniques]
+//                    [--conditions idle,cpu,render] [--techniques] [--user USER [--rtkit-bus ADDRESS]]
+//
+// With --user (as root) each round also measures the servo as that ordinary user gets it
+// (rt_users.h): without RealtimeKit, and with the one on the system bus ADDRESS (a private
+// one, tools/rt/bench-users.sh), under the same loads. cyclictest refuses to run for a user
+// without real-time rights, so the ratios of those rows are to root's cyclictest.
 //
 // Also prints the end-to-end latency in ticks (latency.h). Reports; never asserts. A
 // condition that cannot be set up here (no Xvfb, no engine, no cyclictest) is reported as not
@@ -25,6 +30,7 @@
 #include "rt_processes.h"
 #include "rt_report.h"
 #include "rt_results.h"
+#include "rt_users.h"
 
 #include "core/base/realtime.h"
 #include "core/servo/servo_stats.h"
@@ -56,48 +62,38 @@ struct Options {
 	std::string project = ".";
 	std::vector<std::string> conditions = { "idle", "cpu", "render" };
 	bool techniques = false;
+	std::string user; // Also measure the servo as this user.
+	std::string rtkit_bus; // And as that user with the RealtimeKit on this bus.
+	double child_seconds = 0.0; // > 0: this is a child of --user's: measure once, report, exit.
 };
 
-// The machine's CPU time from /proc/stat's first line, in clock ticks: all of it, and the
-// part the hypervisor gave to other guests (steal).
-struct CpuTimes {
-	unsigned long long total = 0;
-	unsigned long long steal = 0;
-};
-
-CpuTimes read_cpu_times() {
-	CpuTimes times;
-	std::ifstream stat("/proc/stat");
-	std::string cpu;
-	unsigned long long field[8] = {};
-	stat >> cpu;
-	for (unsigned long long &value : field) {
-		stat >> value;
-	}
-	for (const unsigned long long value : field) {
-		times.total += value;
-	}
-	times.steal = field[7];
-	return times;
-}
-
-double steal_percent(const CpuTimes &p_before, const CpuTimes &p_after) {
-	const unsigned long long total = p_after.total - p_before.total;
-	return total > 0 ? 100.0 * static_cast<double>(p_after.steal - p_before.steal) / static_cast<double>(total) : 0.0;
+ToolResult servo_result(const ServoStats &p_stats, double p_steal_percent) {
+	ToolResult result;
+	result.steal_percent = p_steal_percent;
+	result.measured = true;
+	result.stats = p_stats;
+	result.latency = from_stats_latency(p_stats);
+	result.jitter = from_stats_jitter(p_stats);
+	result.rate_error_percent = rate_error_percent(p_stats);
+	result.cpu_fraction = p_stats.thread_cpu_fraction;
+	return result;
 }
 
 ToolResult run_servo(const ServoOptions &p_options, double p_seconds) {
 	const CpuTimes before = read_cpu_times();
 	const LoopResult loop = run_servo_workload("servo", p_options, p_seconds);
-	ToolResult result;
-	result.steal_percent = steal_percent(before, read_cpu_times());
-	result.measured = true;
-	result.stats = loop.stats;
-	result.latency = from_stats_latency(loop.stats);
-	result.jitter = from_stats_jitter(loop.stats);
-	result.rate_error_percent = rate_error_percent(loop.stats);
-	result.cpu_fraction = loop.stats.thread_cpu_fraction;
-	return result;
+	return servo_result(loop.stats, steal_percent(before, read_cpu_times()));
+}
+
+ToolResult run_servo_as(const std::string &p_user, const std::string &p_bus, double p_seconds) {
+	ServoChildReport report;
+	std::string error;
+	if (!run_servo_child(p_user, p_bus, p_seconds, report, error)) {
+		ToolResult result;
+		result.why_not = error;
+		return result;
+	}
+	return servo_result(report.stats, report.steal_percent);
 }
 
 // cyclictest at the servo's period and priority, its default tuning (memory locked with -m,
@@ -253,6 +249,12 @@ bool parse(int p_argc, char **p_argv, Options &r_options) {
 			}
 		} else if (arg == "--techniques") {
 			r_options.techniques = true;
+		} else if (arg == "--user" && has_value) {
+			r_options.user = p_argv[++a];
+		} else if (arg == "--rtkit-bus" && has_value) {
+			r_options.rtkit_bus = p_argv[++a];
+		} else if (arg == "--servo-child" && has_value) {
+			r_options.child_seconds = std::atof(p_argv[++a]);
 		} else {
 			return false;
 		}
@@ -267,11 +269,15 @@ int main(int p_argc, char **p_argv) {
 	if (!parse(p_argc, p_argv, options)) {
 		std::fprintf(stderr,
 				"usage: %s [--seconds S] [--rounds R] [--json PATH] [--project DIR] [--conditions idle,cpu,render] "
-				"[--techniques]\n",
+				"[--techniques] [--user USER [--rtkit-bus ADDRESS]]\n",
 				p_argv[0]);
 		return 1;
 	}
 	const ServoOptions shipped;
+	if (options.child_seconds > 0.0) {
+		const ToolResult once = run_servo(shipped, options.child_seconds);
+		return write_child_report({ once.stats, once.steal_percent }) ? 0 : 1;
+	}
 	std::printf("haptics_rt_bench: the servo (shipped defaults, simulated device, 50 Hz producer) next to cyclictest "
 				"at %.0f Hz: %d rounds of %.1f s each per condition, order rotating; %u hardware threads\n",
 			shipped.rate_hz, options.rounds, options.seconds, std::thread::hardware_concurrency());
@@ -307,12 +313,22 @@ int main(int p_argc, char **p_argv) {
 			}
 			result.detail = render_load->describe();
 		}
-		// Job 0: the servo as shipped; job 1: cyclictest; then the techniques.
+		// Job 0: the servo as shipped; job 1: cyclictest; then the techniques, then the servo as
+		// the ordinary user (bus "-": none).
 		std::vector<std::pair<std::string, ServoOptions>> jobs = { { "servo", shipped } };
 		jobs.emplace_back("cyclictest", shipped);
 		if (options.techniques) {
 			for (const auto &configuration : technique_configurations(shipped.rate_hz)) {
 				jobs.push_back(configuration);
+			}
+		}
+		std::vector<std::string> job_bus(jobs.size());
+		if (!options.user.empty()) {
+			jobs.emplace_back("as " + options.user + ", no RealtimeKit", shipped);
+			job_bus.emplace_back("-");
+			if (!options.rtkit_bus.empty()) {
+				jobs.emplace_back("as " + options.user + ", RealtimeKit", shipped);
+				job_bus.push_back(options.rtkit_bus);
 			}
 		}
 		std::printf("\n[%s] measuring: %d rounds of %zu measurements x %.1f s...\n", name.c_str(), options.rounds, jobs.size(),
@@ -325,8 +341,14 @@ int main(int p_argc, char **p_argv) {
 		for (int round = 0; round < options.rounds; ++round) {
 			for (size_t k = 0; k < jobs.size(); ++k) {
 				const size_t job = (k + static_cast<size_t>(round)) % jobs.size();
-				runs[job].push_back(job == 1 ? run_cyclictest(priority, shipped.rate_hz, options.seconds)
-											 : run_servo(jobs[job].second, options.seconds));
+				if (job == 1) {
+					runs[job].push_back(run_cyclictest(priority, shipped.rate_hz, options.seconds));
+				} else if (!job_bus[job].empty()) {
+					const std::string bus = job_bus[job] == "-" ? "" : job_bus[job];
+					runs[job].push_back(run_servo_as(options.user, bus, options.seconds));
+				} else {
+					runs[job].push_back(run_servo(jobs[job].second, options.seconds));
+				}
 			}
 		}
 		result.servo = combine(runs[0]);
@@ -342,6 +364,7 @@ int main(int p_argc, char **p_argv) {
 		result.measured = true;
 		print_condition(result);
 		print_techniques(result);
+		print_user_comparison(result);
 		std::fflush(stdout);
 		results.push_back(result);
 	}

@@ -91,6 +91,10 @@ void print_techniques(const ConditionResult &p_result) {
 	const Distribution &cl = p_result.cyclictest.latency;
 	const Distribution &cj = p_result.cyclictest.jitter;
 	for (const auto &[label, r] : p_result.techniques) {
+		if (!r.measured) {
+			std::printf("  %-34s not measured: %s\n", label.c_str(), r.why_not.c_str());
+			continue;
+		}
 		const double lr99 = cl.measured && cl.p99 > 0.0 ? r.latency.p99 / cl.p99 : 0.0;
 		const double lr999 = cl.measured && cl.p999 > 0.0 ? r.latency.p999 / cl.p999 : 0.0;
 		const double jr99 = cj.measured && cj.p99 > 0.0 ? r.jitter.p99 / cj.p99 : 0.0;

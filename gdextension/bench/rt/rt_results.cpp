@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <string>
 
 namespace haptics::bench {
 
@@ -44,6 +46,27 @@ Distribution combine_distributions(const std::vector<const Distribution *> &p_ro
 	combined.p99 = median(p99);
 	combined.p999 = median(p999);
 	return combined;
+}
+
+CpuTimes read_cpu_times() {
+	CpuTimes times;
+	std::ifstream stat("/proc/stat");
+	std::string cpu;
+	unsigned long long field[8] = {};
+	stat >> cpu;
+	for (unsigned long long &value : field) {
+		stat >> value;
+	}
+	for (const unsigned long long value : field) {
+		times.total += value;
+	}
+	times.steal = field[7];
+	return times;
+}
+
+double steal_percent(const CpuTimes &p_before, const CpuTimes &p_after) {
+	const unsigned long long total = p_after.total - p_before.total;
+	return total > 0 ? 100.0 * static_cast<double>(p_after.steal - p_before.steal) / static_cast<double>(total) : 0.0;
 }
 
 ToolResult combine(const std::vector<ToolResult> &p_rounds) {

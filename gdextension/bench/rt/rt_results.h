@@ -45,6 +45,15 @@ struct ConditionResult {
 	std::vector<std::pair<std::string, ToolResult>> techniques;
 };
 
+// The machine's CPU time from /proc/stat's first line, in clock ticks: all of it, and the
+// part the hypervisor gave to other guests (steal).
+struct CpuTimes {
+	unsigned long long total = 0;
+	unsigned long long steal = 0;
+};
+CpuTimes read_cpu_times();
+double steal_percent(const CpuTimes &p_before, const CpuTimes &p_after);
+
 // From the servo's own statistics.
 Distribution from_stats_latency(const ServoStats &p_stats);
 Distribution from_stats_jitter(const ServoStats &p_stats);
