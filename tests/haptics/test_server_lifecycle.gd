@@ -40,6 +40,9 @@ func test_the_stats_say_which_realtime_techniques_were_granted() -> void:
 		"pinned_cpu": TYPE_INT,
 		"stack_prefaulted_kb": TYPE_INT,
 		"timer_slack_minimised": TYPE_BOOL,
+		"realtime_kit": TYPE_STRING,
+		"realtime_kit_nice": TYPE_INT,
+		"realtime_kit_reason": TYPE_STRING,
 		"spin_us": TYPE_FLOAT,
 		"servo_cpu_percent": TYPE_FLOAT,
 		"latency_p99_us": TYPE_FLOAT,
@@ -48,7 +51,7 @@ func test_the_stats_say_which_realtime_techniques_were_granted() -> void:
 	for key: String in types:
 		if assert_has(stats, key):
 			assert_eq(typeof(stats[key]), types[key], key)
-	# SCHED_FIFO and the timer-slack fallback exclude each other.
+	# Real time and the timer-slack fallback exclude each other.
 	assert_ne(stats["realtime"], stats["timer_slack_minimised"])
 	var cpu_percent: float = stats["servo_cpu_percent"]
 	var latency_max_us: float = stats["latency_max_us"]
