@@ -14,6 +14,11 @@ probe=${1:?usage: tools/rt/test-rtkit.sh PROBE}
 [[ -x $probe ]] || { echo "test-rt: no probe at $probe" >&2; exit 1; }
 source "$(dirname "$0")/private-rtkit.sh"
 rtkit_setup nobody
+# The user runs a copy where it may: the build folder can sit in a private temporary folder
+# (a fresh clone in mktemp -d is 0700).
+cp "$probe" "$rtkit_work/haptics_rt_probe"
+chmod 755 "$rtkit_work/haptics_rt_probe"
+probe=$rtkit_work/haptics_rt_probe
 
 failures=0
 expect() {
