@@ -154,12 +154,10 @@ static func servo_running_text(rate_hz: float, stats: Dictionary) -> String:
 ## Without real time, what the servo has instead and the one step that gives more, from
 ## what RealtimeKit answered; "" when it was not asked.
 static func realtime_missing_text(stats: Dictionary) -> String:
+	var nice: int = stats.get("realtime_kit_nice", 0)
 	match str(stats.get("realtime_kit", "not asked")):
 		"high priority":
-			return (
-				"nice %d (no real time outside a desktop session)"
-				% int(stats.get("realtime_kit_nice", 0))
-			)
+			return "nice %d (no real time outside a desktop session)" % nice
 		"refused":
 			return "no real time: RealtimeKit refused (no desktop session?)"
 		"unavailable":
