@@ -21,8 +21,6 @@ namespace {
 
 constexpr const char *GADGETS = "/sys/kernel/config/usb_gadget";
 constexpr const char *UDC_CLASS = "/sys/class/udc";
-// How long ep0's poll waits before it looks at the wake pipe again: shutdown latency only.
-constexpr int KERNEL_DEVICE_POLL_MS = 50;
 constexpr size_t EP0_DATA_MAX = 4096;
 
 std::atomic<int> g_next_gadget{ 0 };
@@ -243,14 +241,13 @@ int UsbGadget::endpoint(uint32_t p_index) const {
 }
 
 void UsbGadget::run() {
-	pollfd fds[2] = { { ep0_, POLLIN, 0 }, { wake_[0], POLLIN, 0 } };
 	usb_functionfs_event events[4];
 	while (true) {
-		const int ready = ::poll(fds, 2, KERNEL_DEVICE_POLL_MS);
-		if ((ready < 0 && errno != EINTR) || fds[1].revents != 0) {
+		const KernelDeviceWait waited = wait_kernel_device(ep0_, wake_[0]);
+		if (waited == KernelDeviceWait::STOP) {
 			return;
 		}
-		if (ready <= 0 || (fds[0].revents & POLLIN) == 0) {
+		if (waited == KernelDeviceWait::IDLE) {
 			continue;
 		}
 		const ssize_t got = ::read(ep0_, events, sizeof(events));

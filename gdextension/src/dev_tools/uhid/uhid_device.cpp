@@ -119,17 +119,13 @@ UhidCounts UhidDevice::counts() const {
 }
 
 void UhidDevice::run() {
-	pollfd fds[2] = { { fd_, POLLIN, 0 }, { wake_[0], POLLIN, 0 } };
 	uhid_event event{};
 	while (true) {
-		const int ready = ::poll(fds, 2, KERNEL_DEVICE_POLL_MS);
-		if (ready < 0 && errno != EINTR) {
+		const KernelDeviceWait waited = wait_kernel_device(fd_, wake_[0]);
+		if (waited == KernelDeviceWait::STOP) {
 			return;
 		}
-		if (fds[1].revents != 0) {
-			return;
-		}
-		if (ready <= 0 || (fds[0].revents & POLLIN) == 0) {
+		if (waited == KernelDeviceWait::IDLE) {
 			continue;
 		}
 		const ssize_t got = ::read(fd_, &event, sizeof(event));

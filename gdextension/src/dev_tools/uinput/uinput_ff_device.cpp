@@ -162,17 +162,13 @@ Status UinputFfDevice::set_stick_axes(double p_x, double p_y) {
 }
 
 void UinputFfDevice::run() {
-	pollfd fds[2] = { { fd_, POLLIN, 0 }, { wake_[0], POLLIN, 0 } };
 	input_event events[16];
 	while (true) {
-		const int ready = ::poll(fds, 2, KERNEL_DEVICE_POLL_MS);
-		if (ready < 0 && errno != EINTR) {
+		const KernelDeviceWait waited = wait_kernel_device(fd_, wake_[0]);
+		if (waited == KernelDeviceWait::STOP) {
 			return;
 		}
-		if (fds[1].revents != 0) {
-			return;
-		}
-		if (ready <= 0 || (fds[0].revents & POLLIN) == 0) {
+		if (waited == KernelDeviceWait::IDLE) {
 			continue;
 		}
 		const ssize_t got = ::read(fd_, events, sizeof(events));
