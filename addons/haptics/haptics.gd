@@ -40,9 +40,9 @@ const SETTING_HAND_ACTIONS := "haptics/input/hand_actions"
 ## [method Input.get_axis]; an empty list (the default): none.
 const SETTING_FEED_ACTIONS := "haptics/input/feed_actions"
 ## The project setting for the servo's busy-wait before each deadline, in microseconds
-## (HapticsServer.start's [code]spin_us[/code]: 0 to half a period; by default the servo's
-## own, HapticsServer.DEFAULT_SPIN_US). More spin, steadier ticks, more of a core; the
-## README's "Servo timing" has the measurements.
+## (HapticsServer.start's [code]spin_us[/code]: 0 to half a period, or -1, the default: the
+## servo's own, HapticsServer.DEFAULT_SPIN_US under real time and none without). More spin,
+## steadier ticks, more of a core; the README's "Servo timing" has the measurements.
 const SETTING_SPIN_US := "haptics/servo/spin_us"
 ## The hand's actions when the project names none: Godot's own, which every project has
 ## (arrow keys and a gamepad's d-pad).
@@ -201,7 +201,8 @@ func _physics_process(_delta: float) -> void:
 static func add_project_settings() -> void:
 	if not ClassDB.class_exists(SERVER_CLASS):
 		return
-	var spin_us: float = ClassDB.class_get_integer_constant(SERVER_CLASS, &"DEFAULT_SPIN_US")
+	# -1 is the servo's own choice, which depends on whether the thread gets real time.
+	var spin_us: float = HapticsServo.SPIN_US_DEFAULT
 	# The slowest servo allows the longest spin; start() refuses more than the rate in use allows.
 	var longest_spin_us: float = (
 		0.5e6 / ClassDB.class_get_integer_constant(SERVER_CLASS, &"MIN_RATE_HZ")
@@ -213,7 +214,7 @@ static func add_project_settings() -> void:
 		"name": SETTING_SPIN_US,
 		"type": TYPE_FLOAT,
 		"hint": PROPERTY_HINT_RANGE,
-		"hint_string": "0,%d,1,suffix:µs" % longest_spin_us,
+		"hint_string": "%d,%d,1,suffix:µs" % [spin_us, longest_spin_us],
 	}
 	ProjectSettings.add_property_info(info)
 

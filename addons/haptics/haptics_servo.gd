@@ -8,7 +8,8 @@ extends RefCounted
 signal changed
 
 ## [method start] given this spin uses [member default_spin_us]; HapticsServer.start given
-## it uses the servo's own (HapticsServer.DEFAULT_SPIN_US).
+## it uses the servo's own (HapticsServer.DEFAULT_SPIN_US when the thread has real time,
+## none without).
 const SPIN_US_DEFAULT := -1.0
 
 ## The busy-wait before each deadline, in microseconds, that [method start] uses when given

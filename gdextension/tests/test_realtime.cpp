@@ -263,7 +263,7 @@ TEST_CASE("servo thread: spin and techniques show in the stats, a spin over half
 	ServoOptions options;
 	options.spin_ns = 600'000;
 	CHECK(engine.start(options).code() == StatusCode::INVALID_ARGUMENT);
-	options.spin_ns = -1;
+	options.spin_ns = -2; // -1 is SPIN_AUTO.
 	CHECK(engine.start(options).code() == StatusCode::INVALID_ARGUMENT);
 	options.spin_ns = 50'000;
 	options.realtime.cpu = PIN_AUTO;
@@ -301,4 +301,33 @@ TEST_CASE("servo thread: a spin of exactly half a period is accepted, a nanoseco
 	REQUIRE(engine.start(options));
 	engine.stop();
 	CHECK(engine.stats().spin_s == doctest::Approx(125e-6));
+}
+
+TEST_CASE("servo thread: the automatic spin is the default under real time and none without it") {
+	ServoOptions options;
+	REQUIRE(options.spin_ns == ServoOptions::SPIN_AUTO);
+	CHECK(effective_spin_ns(options, SchedulerKind::REALTIME_FIFO) == ServoOptions::DEFAULT_SPIN_NS);
+	CHECK(effective_spin_ns(options, SchedulerKind::REALTIME_RR) == ServoOptions::DEFAULT_SPIN_NS);
+	CHECK(effective_spin_ns(options, SchedulerKind::NORMAL) == 0);
+	options.spin_ns = 120'000; // Asked for: kept, real time or not.
+	CHECK(effective_spin_ns(options, SchedulerKind::NORMAL) == 120'000);
+	CHECK(effective_spin_ns(options, SchedulerKind::REALTIME_RR) == 120'000);
+	options.scheduling = LoopScheduling::NAIVE_SLEEP;
+	CHECK(effective_spin_ns(options, SchedulerKind::REALTIME_FIFO) == 0);
+
+	// A thread that is not real-time (nothing asked) reports no spin.
+	HapticsEngine engine;
+	REQUIRE(engine.open_simulated_device());
+	ServoOptions normal;
+	normal.realtime.priority = 0;
+	normal.realtime.hold_cpu_latency = false;
+	REQUIRE(engine.start(normal));
+	const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+	while (engine.stats().ticks < 10 && std::chrono::steady_clock::now() < give_up) {
+		std::this_thread::sleep_for(std::chrono::milliseconds(5));
+	}
+	const ServoStats stats = engine.stats();
+	engine.stop();
+	CHECK(stats.scheduler == SchedulerKind::NORMAL);
+	CHECK(stats.spin_s == 0.0);
 }

@@ -47,6 +47,7 @@ expect "the kernel runs the servo thread at" "$(field policy "$kernel")" SCHED_R
 expect "its priority is the one the stats report" "$(field rt_priority "$kernel")" "$(field priority "$stats")"
 expect "which is the daemon's maximum" "$(field priority "$stats")" "$(field rtkit_max "$stats")"
 expect "the stats say" "$(field scheduler "$stats")" SCHED_RR
+expect "a real-time servo spins before each deadline (us)" "$(field spin_us "$stats")" "$(field realtime_spin_us "$stats")"
 rtkit_stop_last
 rtkit_stop_last
 
@@ -57,6 +58,7 @@ probe_lines
 expect "the kernel runs the servo thread at" "$(field policy "$kernel")" SCHED_OTHER
 expect "its nice level is the one the stats report" "$(field nice "$kernel")" "$(field nice "$stats")"
 expect "RealtimeKit's answer in the stats" "$(field realtime_kit "$stats")" "high priority"
+expect "a servo without real time does not spin (us)" "$(field spin_us "$stats")" 0
 rtkit_stop_last
 rtkit_stop_last
 
@@ -65,6 +67,7 @@ probe_lines
 expect "the kernel runs the servo thread at" "$(field policy "$kernel")" SCHED_OTHER
 expect "the stats say" "$(field scheduler "$stats")" SCHED_OTHER
 expect "RealtimeKit's answer in the stats" "$(field realtime_kit "$stats")" unavailable
+expect "a servo without real time does not spin (us)" "$(field spin_us "$stats")" 0
 
 rtkit_cleanup
 left=0

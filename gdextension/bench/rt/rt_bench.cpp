@@ -13,12 +13,15 @@
 // and nothing else), and spins of several lengths with their CPU cost.
 //
 //   haptics_rt_bench [--seconds S] [--rounds R] [--json PATH] [--project DIR]
-//                    [--conditions idle,cpu,render] [--techniques] [--user USER [--rtkit-bus ADDRESS]]
+//                    [--conditions idle,cpu,render] [--techniques]
+//                    [--user USER [--rtkit-bus ADDRESS] [--user-techniques]]
 //
 // With --user (as root) each round also measures the servo as that ordinary user gets it
 // (rt_users.h): without RealtimeKit, and with the one on the system bus ADDRESS (a private
-// one, tools/rt/bench-users.sh), under the same loads. cyclictest refuses to run for a user
-// without real-time rights, so the ratios of those rows are to root's cyclictest.
+// one, tools/rt/bench-users.sh), under the same loads, and root configured like the user's
+// grant; --user-techniques adds what else the user can set (rt_jobs.h). cyclictest refuses to
+// run for a user without real-time rights, so the ratios of those rows are to root's
+// cyclictest.
 //
 // Also prints the end-to-end latency in ticks (latency.h). Reports; never asserts. A
 // condition that cannot be set up here (no Xvfb, no engine, no cyclictest) is reported as not
@@ -27,6 +30,7 @@
 
 #include "../servo_workload.h"
 #include "latency.h"
+#include "rt_jobs.h"
 #include "rt_processes.h"
 #include "rt_report.h"
 #include "rt_results.h"
@@ -64,6 +68,8 @@ struct Options {
 	bool techniques = false;
 	std::string user; // Also measure the servo as this user.
 	std::string rtkit_bus; // And as that user with the RealtimeKit on this bus.
+	bool user_techniques = false; // And what else that user can set (rt_jobs.h).
+	ServoOptions child_options; // --servo-child: what the parent asked for (rt_jobs.h).
 	double child_seconds = 0.0; // > 0: this is a child of --user's: measure once, report, exit.
 };
 
@@ -85,10 +91,11 @@ ToolResult run_servo(const ServoOptions &p_options, double p_seconds) {
 	return servo_result(loop.stats, steal_percent(before, read_cpu_times()));
 }
 
-ToolResult run_servo_as(const std::string &p_user, const std::string &p_bus, double p_seconds) {
+ToolResult run_servo_as(const std::string &p_user, const std::string &p_bus, const ServoOptions &p_options,
+		double p_seconds) {
 	ServoChildReport report;
 	std::string error;
-	if (!run_servo_child(p_user, p_bus, p_seconds, report, error)) {
+	if (!run_servo_child(p_user, p_bus, p_options, p_seconds, report, error)) {
 		ToolResult result;
 		result.why_not = error;
 		return result;
@@ -175,56 +182,6 @@ private:
 	std::vector<std::thread> threads_;
 };
 
-// The old servo: SCHED_FIFO 50 and none of the other techniques.
-ServoOptions baseline_options(double p_rate_hz) {
-	ServoOptions options;
-	options.rate_hz = p_rate_hz;
-	options.realtime.priority = 50;
-	options.realtime.lock_memory = false;
-	options.realtime.hold_cpu_latency = false;
-	options.realtime.cpu = PIN_NONE;
-	options.realtime.prefault_stack_kb = 0;
-	options.realtime.minimise_timer_slack = false;
-	options.spin_ns = 0;
-	return options;
-}
-
-std::vector<std::pair<std::string, ServoOptions>> technique_configurations(double p_rate_hz) {
-	std::vector<std::pair<std::string, ServoOptions>> configurations;
-	const ServoOptions base = baseline_options(p_rate_hz);
-	configurations.emplace_back("before: SCHED_FIFO 50 only", base);
-	ServoOptions o = base;
-	o.realtime.lock_memory = true;
-	configurations.emplace_back("+ mlockall", o);
-	o = base;
-	o.realtime.hold_cpu_latency = true;
-	configurations.emplace_back("+ cpu_dma_latency 0", o);
-	o = base;
-	o.realtime.priority = 80;
-	configurations.emplace_back("+ SCHED_FIFO 80", o);
-	o = base;
-	o.realtime.cpu = PIN_AUTO;
-	configurations.emplace_back("+ pinned (last CPU)", o);
-	o = base;
-	o.realtime.prefault_stack_kb = 256;
-	configurations.emplace_back("+ stack prefault 256 KiB", o);
-	o = base;
-	o.realtime.priority = 0;
-	o.realtime.minimise_timer_slack = false;
-	configurations.emplace_back("SCHED_OTHER, default timer slack", o);
-	o.realtime.minimise_timer_slack = true;
-	configurations.emplace_back("SCHED_OTHER + timer slack 1 ns", o);
-	ServoOptions defaults;
-	defaults.rate_hz = p_rate_hz;
-	for (int64_t spin_us : { 0, 10, 25, 50, 100 }) {
-		ServoOptions spun = defaults;
-		spun.spin_ns = spin_us * 1000;
-		configurations.emplace_back("defaults, spin " + std::to_string(spin_us) + " us", spun);
-	}
-	configurations.emplace_back("defaults (as shipped)", defaults);
-	return configurations;
-}
-
 bool parse(int p_argc, char **p_argv, Options &r_options) {
 	for (int a = 1; a < p_argc; ++a) {
 		const std::string arg = p_argv[a];
@@ -253,9 +210,11 @@ bool parse(int p_argc, char **p_argv, Options &r_options) {
 			r_options.user = p_argv[++a];
 		} else if (arg == "--rtkit-bus" && has_value) {
 			r_options.rtkit_bus = p_argv[++a];
+		} else if (arg == "--user-techniques") {
+			r_options.user_techniques = true;
 		} else if (arg == "--servo-child" && has_value) {
 			r_options.child_seconds = std::atof(p_argv[++a]);
-		} else {
+		} else if (!parse_user_child_argument(p_argc, p_argv, a, r_options.child_options)) {
 			return false;
 		}
 	}
@@ -269,13 +228,13 @@ int main(int p_argc, char **p_argv) {
 	if (!parse(p_argc, p_argv, options)) {
 		std::fprintf(stderr,
 				"usage: %s [--seconds S] [--rounds R] [--json PATH] [--project DIR] [--conditions idle,cpu,render] "
-				"[--techniques] [--user USER [--rtkit-bus ADDRESS]]\n",
+				"[--techniques] [--user USER [--rtkit-bus ADDRESS] [--user-techniques]]\n",
 				p_argv[0]);
 		return 1;
 	}
 	const ServoOptions shipped;
 	if (options.child_seconds > 0.0) {
-		const ToolResult once = run_servo(shipped, options.child_seconds);
+		const ToolResult once = run_servo(options.child_options, options.child_seconds);
 		return write_child_report({ once.stats, once.steal_percent }) ? 0 : 1;
 	}
 	std::printf("haptics_rt_bench: the servo (shipped defaults, simulated device, 50 Hz producer) next to cyclictest "
@@ -313,24 +272,8 @@ int main(int p_argc, char **p_argv) {
 			}
 			result.detail = render_load->describe();
 		}
-		// Job 0: the servo as shipped; job 1: cyclictest; then the techniques, then the servo as
-		// the ordinary user (bus "-": none).
-		std::vector<std::pair<std::string, ServoOptions>> jobs = { { "servo", shipped } };
-		jobs.emplace_back("cyclictest", shipped);
-		if (options.techniques) {
-			for (const auto &configuration : technique_configurations(shipped.rate_hz)) {
-				jobs.push_back(configuration);
-			}
-		}
-		std::vector<std::string> job_bus(jobs.size());
-		if (!options.user.empty()) {
-			jobs.emplace_back("as " + options.user + ", no RealtimeKit", shipped);
-			job_bus.emplace_back("-");
-			if (!options.rtkit_bus.empty()) {
-				jobs.emplace_back("as " + options.user + ", RealtimeKit", shipped);
-				job_bus.push_back(options.rtkit_bus);
-			}
-		}
+		const std::vector<Job> jobs = plan_jobs({ options.techniques, options.user, !options.rtkit_bus.empty(),
+				options.user_techniques });
 		std::printf("\n[%s] measuring: %d rounds of %zu measurements x %.1f s...\n", name.c_str(), options.rounds, jobs.size(),
 				options.seconds);
 		std::fflush(stdout);
@@ -340,14 +283,20 @@ int main(int p_argc, char **p_argv) {
 		std::thread([&] { priority = try_make_current_thread_realtime(shipped.realtime.priority).priority; }).join();
 		for (int round = 0; round < options.rounds; ++round) {
 			for (size_t k = 0; k < jobs.size(); ++k) {
-				const size_t job = (k + static_cast<size_t>(round)) % jobs.size();
-				if (job == 1) {
-					runs[job].push_back(run_cyclictest(priority, shipped.rate_hz, options.seconds));
-				} else if (!job_bus[job].empty()) {
-					const std::string bus = job_bus[job] == "-" ? "" : job_bus[job];
-					runs[job].push_back(run_servo_as(options.user, bus, options.seconds));
-				} else {
-					runs[job].push_back(run_servo(jobs[job].second, options.seconds));
+				const size_t index = (k + static_cast<size_t>(round)) % jobs.size();
+				const Job &job = jobs[index];
+				std::vector<ToolResult> &run = runs[index];
+				switch (job.kind) {
+					case JobKind::CYCLICTEST:
+						run.push_back(run_cyclictest(priority, shipped.rate_hz, options.seconds));
+						break;
+					case JobKind::USER_SERVO:
+						run.push_back(run_servo_as(options.user, job.rtkit ? options.rtkit_bus : "", job.options,
+								options.seconds));
+						break;
+					case JobKind::SERVO:
+						run.push_back(run_servo(job.options, options.seconds));
+						break;
 				}
 			}
 		}
@@ -355,7 +304,7 @@ int main(int p_argc, char **p_argv) {
 		result.cyclictest_priority = result.servo.stats.realtime_priority;
 		result.cyclictest = combine(runs[1]);
 		for (size_t job = 2; job < jobs.size(); ++job) {
-			result.techniques.emplace_back(jobs[job].first, combine(runs[job]));
+			result.techniques.emplace_back(jobs[job].label, combine(runs[job]));
 		}
 		if (render_load) {
 			result.detail = render_load->describe(); // Now with its restarts.

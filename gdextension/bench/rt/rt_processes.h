@@ -14,6 +14,10 @@
 
 namespace haptics::bench {
 
+// A bus nobody listens on: RealtimeKit is then "unavailable" to whoever is given it, as on a
+// machine without a system bus.
+inline constexpr const char *NO_SYSTEM_BUS = "unix:path=/nonexistent/haptics-no-bus";
+
 // Runs p_argv (searched on PATH) to completion, stdout into r_output; false with the reason in
 // r_error if it cannot start, exceeds p_timeout_s (then it is killed) or exits non-zero.
 bool run_and_capture(const std::vector<std::string> &p_argv, double p_timeout_s, std::string &r_output,

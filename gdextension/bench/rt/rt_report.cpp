@@ -92,14 +92,14 @@ void print_techniques(const ConditionResult &p_result) {
 	const Distribution &cj = p_result.cyclictest.jitter;
 	for (const auto &[label, r] : p_result.techniques) {
 		if (!r.measured) {
-			std::printf("  %-34s not measured: %s\n", label.c_str(), r.why_not.c_str());
+			std::printf("  %-46s not measured: %s\n", label.c_str(), r.why_not.c_str());
 			continue;
 		}
 		const double lr99 = cl.measured && cl.p99 > 0.0 ? r.latency.p99 / cl.p99 : 0.0;
 		const double lr999 = cl.measured && cl.p999 > 0.0 ? r.latency.p999 / cl.p999 : 0.0;
 		const double jr99 = cj.measured && cj.p99 > 0.0 ? r.jitter.p99 / cj.p99 : 0.0;
 		const double jr999 = cj.measured && cj.p999 > 0.0 ? r.jitter.p999 / cj.p999 : 0.0;
-		std::printf("  %-34s lat %6.1f %6.1f %7.1f %8.1f (x%.2f x%.2f)  jit %6.1f %6.1f %7.1f %8.1f (x%.2f x%.2f)  CPU "
+		std::printf("  %-46s lat %6.1f %6.1f %7.1f %8.1f (x%.2f x%.2f)  jit %6.1f %6.1f %7.1f %8.1f (x%.2f x%.2f)  CPU "
 					"%5.1f %%  rate err %.4f %% (worst %.4f %%)\n",
 				label.c_str(), r.latency.p50 * US, r.latency.p99 * US, r.latency.p999 * US, r.latency.max * US, lr99, lr999,
 				r.jitter.p50 * US, r.jitter.p99 * US, r.jitter.p999 * US, r.jitter.max * US, jr99, jr999,

@@ -6,6 +6,7 @@
 // RealtimeKit on it, or none), measures the servo once and hands its statistics back on
 // stdout. The loads (CPU, rendering) are the root benchmark's own, running meanwhile.
 
+#include "core/servo/servo_loop.h"
 #include "core/servo/servo_stats.h"
 #include "rt_results.h"
 
@@ -22,13 +23,15 @@ struct ServoChildReport {
 bool write_child_report(const ServoChildReport &p_report);
 
 // Runs this program as p_user, on the system bus p_bus ("" = none: RealtimeKit unavailable),
-// measuring the servo for p_seconds. False with the reason when it could not.
-bool run_servo_child(const std::string &p_user, const std::string &p_bus, double p_seconds, ServoChildReport &r_report,
-		std::string &r_error);
+// measuring the servo with what p_options sets of user_child_arguments() (rt_jobs.h) for
+// p_seconds. False with the reason when it could not.
+bool run_servo_child(const std::string &p_user, const std::string &p_bus, const ServoOptions &p_options,
+		double p_seconds, ServoChildReport &r_report, std::string &r_error);
 
-// The rows of p_result measured as an ordinary user (labels starting "as "), next to root's
-// servo in the same condition: wake latency p99 and p99.9 and their ratios (goal for the user
-// with RealtimeKit: within GOAL_RATIO).
+// The rows of p_result measured as an ordinary user (labels starting "as ") and root's rows
+// configured like the user's grant (starting "root, "), next to root's servo as shipped in
+// the same condition: wake latency p99 and p99.9 and their ratios (goal for the user with
+// RealtimeKit: within GOAL_RATIO), and the CPU each used.
 void print_user_comparison(const ConditionResult &p_result);
 
 } // namespace haptics::bench

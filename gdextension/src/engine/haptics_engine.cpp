@@ -291,7 +291,7 @@ ServoStats HapticsEngine::stats() const {
 		stats.stack_prefaulted_kb = grants.stack_prefaulted_kb;
 		stats.timer_slack_minimised = grants.timer_slack_minimised;
 		stats.realtime_kit = grants.realtime_kit;
-		stats.spin_s = static_cast<double>(impl_->loop.options().spin_ns) * 1e-9;
+		stats.spin_s = static_cast<double>(impl_->loop.spin_ns()) * 1e-9;
 	}
 	stats.frames_received = output.frames_received;
 	stats.frames_rejected = impl_->frames_rejected;

@@ -39,13 +39,29 @@ RealtimeGrants ServoLoop::grants() const {
 	return grants_published_.load(std::memory_order_acquire) ? grants_ : RealtimeGrants{};
 }
 
+int64_t ServoLoop::spin_ns() const {
+	return grants_published_.load(std::memory_order_acquire) ? spin_ns_ : 0;
+}
+
+int64_t effective_spin_ns(const ServoOptions &p_options, SchedulerKind p_kind) {
+	if (p_options.scheduling == LoopScheduling::NAIVE_SLEEP) {
+		return 0;
+	}
+	if (p_options.spin_ns == ServoOptions::SPIN_AUTO) {
+		const bool realtime = p_kind == SchedulerKind::REALTIME_FIFO || p_kind == SchedulerKind::REALTIME_RR;
+		return realtime ? std::min(ServoOptions::DEFAULT_SPIN_NS, max_spin_ns(p_options.rate_hz)) : 0;
+	}
+	return std::clamp<int64_t>(p_options.spin_ns, 0, max_spin_ns(p_options.rate_hz));
+}
+
 Status ServoLoop::start(HapticDevice *p_device, const ServoOptions &p_options) {
 	if (state() == ServoState::RUNNING) {
 		return Status::error(StatusCode::INVALID_STATE, "the servo is already running");
 	}
 	const int64_t max_spin = max_spin_ns(p_options.rate_hz);
-	if (p_options.spin_ns < 0 || p_options.spin_ns > max_spin) {
-		return Status::error(StatusCode::INVALID_ARGUMENT, "spin_ns must be in [0, %lld] (half a period), got %lld",
+	if (p_options.spin_ns != ServoOptions::SPIN_AUTO && (p_options.spin_ns < 0 || p_options.spin_ns > max_spin)) {
+		return Status::error(StatusCode::INVALID_ARGUMENT,
+				"spin_ns must be in [0, %lld] (half a period) or SPIN_AUTO, got %lld",
 				static_cast<long long>(max_spin), static_cast<long long>(p_options.spin_ns));
 	}
 	stop(); // Joins a thread that ended on a fault.
@@ -86,12 +102,13 @@ void ServoLoop::run() {
 	// The name top, ps -L and /proc/<pid>/task/*/comm show (15 characters at most).
 	::pthread_setname_np(::pthread_self(), SERVO_THREAD_NAME);
 	grants_ = apply_realtime_request(options_.realtime);
+	spin_ns_ = effective_spin_ns(options_, grants_.kind);
 	grants_published_.store(true, std::memory_order_release);
 
 	const int64_t period_ns = std::llround(1e9 / options_.rate_hz);
 	const double dt_s = static_cast<double>(period_ns) * S_PER_NS;
 	const bool naive = options_.scheduling == LoopScheduling::NAIVE_SLEEP;
-	const int64_t spin_ns = naive ? 0 : std::clamp<int64_t>(options_.spin_ns, 0, max_spin_ns(options_.rate_hz));
+	const int64_t spin_ns = spin_ns_;
 	int64_t deadline_ns = monotonic_now_ns() + period_ns;
 	int64_t previous_wake_ns = -1;
 	uint64_t tick_index = 0;

@@ -11,8 +11,8 @@
 // At start the thread asks for what ServoOptions::realtime names (SCHED_FIFO priority, locked
 // memory, the CPU wake-up latency held at 0, pinning, a prefaulted stack; realtime.h), each
 // falling back quietly when refused; stats say what was granted. The process-wide holds are
-// released when the thread ends. With spin_ns > 0 it sleeps until that long before each
-// deadline and busy-waits the rest, absorbing the wake-up's lateness at a CPU cost
+// released when the thread ends. With a spin (ServoOptions::spin_ns) it sleeps until that
+// long before each deadline and busy-waits the rest, absorbing the wake-up's lateness at a CPU cost
 // (ServoStats::thread_cpu_fraction).
 //
 // Stopping: stop() raises a flag, the thread finishes its tick, writes ZERO force to the
@@ -51,13 +51,23 @@ struct ServoOptions {
 	LoopScheduling scheduling = LoopScheduling::DEADLINE;
 	RealtimeRequest realtime; // What the thread asks of the system (defaults: realtime.h).
 	// Busy-wait before each deadline (DEADLINE scheduling only); 0 = sleep to the deadline.
-	// [0, half a period]. 50 us chosen by measurement (README, "Servo timing"): p99 wake
-	// latency 95 / 52 / 50 us idle / under CPU / under rendering load against 86-119 / 96-107 /
-	// 80-83 without, for about 1 % of a core (100 us: p99 13-35 us for 5 % of a core).
-	int64_t spin_ns = DEFAULT_SPIN_NS;
+	// [0, half a period], or SPIN_AUTO: DEFAULT_SPIN_NS once the thread has real time
+	// (SCHED_FIFO, or SCHED_RR from RealtimeKit), 0 without it. Both chosen by measurement
+	// (README, "Servo timing"):
+	//   - real time: 50 us gives p99 wake latency 95 / 52 / 50 us idle / under CPU / under
+	//     rendering load against 86-119 / 96-107 / 80-83 without, for about 1 % of a core
+	//     (100 us: p99 13-35 us for 5 % of a core); as an ordinary user with RealtimeKit the
+	//     same: p99 7.5-10 / 0.5 / 0.5 against 58-72 / 28 / 30 without.
+	//   - SCHED_OTHER: a spinning thread that is not real-time is preempted mid-spin by the
+	//     load it competes with: p99 178 and 351 us under CPU load against 28 without.
+	int64_t spin_ns = SPIN_AUTO;
 
+	static constexpr int64_t SPIN_AUTO = -1;
 	static constexpr int64_t DEFAULT_SPIN_NS = 50'000;
 };
+
+// The spin a servo with p_options spins once granted p_kind (SPIN_AUTO resolved).
+int64_t effective_spin_ns(const ServoOptions &p_options, SchedulerKind p_kind);
 
 // The longest spin_ns a servo at p_rate_hz (a valid rate) accepts: half its period, so a tick
 // always has the other half to run in.
@@ -86,6 +96,8 @@ public:
 	RealtimeResult scheduler() const;
 	// What the thread was granted (all false / -1 / 0 until it has started).
 	RealtimeGrants grants() const;
+	// The spin the thread uses (effective_spin_ns; 0 until it has started).
+	int64_t spin_ns() const;
 	const ServoOptions &options() const { return options_; }
 
 private:
@@ -101,6 +113,7 @@ private:
 	std::atomic<DeviceIo> fault_{ DeviceIo::OK };
 	// Written by the thread once at start, then published; read by the game thread.
 	RealtimeGrants grants_;
+	int64_t spin_ns_ = 0;
 	std::atomic<bool> grants_published_{ false };
 };
 
