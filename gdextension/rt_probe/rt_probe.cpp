@@ -98,11 +98,11 @@ int main() {
 	const KernelView kernel = servo_thread_in_proc();
 	std::printf("RTPROBE uid=%u euid=%u\n", ::getuid(), ::geteuid());
 	std::printf("RTPROBE stats scheduler=%s priority=%d realtime_kit=\"%s\" rtkit_max=%d rttime_usec=%lld nice=%d "
-				"spin_us=%lld realtime_spin_us=%lld reason=\"%s\"\n",
+				"spin_us=%lld unheld_spin_us=%lld reason=\"%s\"\n",
 			haptics::scheduler_kind_name(stats.scheduler), stats.realtime_priority,
 			haptics::rtkit_outcome_name(stats.realtime_kit.outcome), stats.realtime_kit.max_priority,
 			static_cast<long long>(stats.realtime_kit.rttime_usec), stats.realtime_kit.nice,
-			std::llround(stats.spin_s * 1e6), static_cast<long long>(haptics::ServoOptions::DEFAULT_SPIN_NS / 1000),
+			std::llround(stats.spin_s * 1e6), static_cast<long long>(haptics::ServoOptions::UNHELD_SPIN_NS / 1000),
 			stats.realtime_kit.reason);
 	std::printf("RTPROBE kernel found=%d policy=%s rt_priority=%ld nice=%ld\n", kernel.found ? 1 : 0,
 			policy_name(kernel.policy), kernel.rt_priority, kernel.nice);

@@ -9,6 +9,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -303,25 +304,34 @@ TEST_CASE("servo thread: a spin of exactly half a period is accepted, a nanoseco
 	CHECK(engine.stats().spin_s == doctest::Approx(125e-6));
 }
 
-TEST_CASE("servo thread: the automatic spin is the default under real time and none without it") {
+TEST_CASE("servo thread: the automatic spin follows what the thread was granted") {
 	ServoOptions options;
 	REQUIRE(options.spin_ns == ServoOptions::SPIN_AUTO);
-	CHECK(effective_spin_ns(options, SchedulerKind::REALTIME_FIFO) == ServoOptions::DEFAULT_SPIN_NS);
-	CHECK(effective_spin_ns(options, SchedulerKind::REALTIME_RR) == ServoOptions::DEFAULT_SPIN_NS);
-	CHECK(effective_spin_ns(options, SchedulerKind::NORMAL) == 0);
+	RealtimeGrants root; // SCHED_FIFO with the CPU latency held.
+	root.kind = SchedulerKind::REALTIME_FIFO;
+	root.cpu_latency_held = true;
+	RealtimeGrants user; // RealtimeKit's SCHED_RR; the latency file is root's.
+	user.kind = SchedulerKind::REALTIME_RR;
+	const RealtimeGrants normal;
+	CHECK(effective_spin_ns(options, root) == ServoOptions::DEFAULT_SPIN_NS);
+	CHECK(effective_spin_ns(options, user) == ServoOptions::UNHELD_SPIN_NS);
+	CHECK(effective_spin_ns(options, normal) == 0);
+	options.rate_hz = 4000.0; // Never more than half a period (125 us).
+	CHECK(effective_spin_ns(options, user) == std::min(ServoOptions::UNHELD_SPIN_NS, max_spin_ns(4000.0)));
+	options.rate_hz = 1000.0;
 	options.spin_ns = 120'000; // Asked for: kept, real time or not.
-	CHECK(effective_spin_ns(options, SchedulerKind::NORMAL) == 120'000);
-	CHECK(effective_spin_ns(options, SchedulerKind::REALTIME_RR) == 120'000);
+	CHECK(effective_spin_ns(options, normal) == 120'000);
+	CHECK(effective_spin_ns(options, user) == 120'000);
 	options.scheduling = LoopScheduling::NAIVE_SLEEP;
-	CHECK(effective_spin_ns(options, SchedulerKind::REALTIME_FIFO) == 0);
+	CHECK(effective_spin_ns(options, root) == 0);
 
 	// A thread that is not real-time (nothing asked) reports no spin.
 	HapticsEngine engine;
 	REQUIRE(engine.open_simulated_device());
-	ServoOptions normal;
-	normal.realtime.priority = 0;
-	normal.realtime.hold_cpu_latency = false;
-	REQUIRE(engine.start(normal));
+	ServoOptions unprivileged;
+	unprivileged.realtime.priority = 0;
+	unprivileged.realtime.hold_cpu_latency = false;
+	REQUIRE(engine.start(unprivileged));
 	const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(20);
 	while (engine.stats().ticks < 10 && std::chrono::steady_clock::now() < give_up) {
 		std::this_thread::sleep_for(std::chrono::milliseconds(5));

@@ -75,6 +75,8 @@ void HapticsServer::bind_methods(gd::ClassBinder<HapticsServer> &r_binder) {
 	r_binder.bind_constant("", "DEFAULT_RATE_HZ", static_cast<int64_t>(DEFAULT_RATE_HZ));
 	static_assert(ServoOptions::DEFAULT_SPIN_NS % NS_PER_US == 0, "DEFAULT_SPIN_US is an integer constant");
 	r_binder.bind_constant("", "DEFAULT_SPIN_US", ServoOptions::DEFAULT_SPIN_NS / NS_PER_US);
+	static_assert(ServoOptions::UNHELD_SPIN_NS % NS_PER_US == 0, "UNHELD_SPIN_US is an integer constant");
+	r_binder.bind_constant("", "UNHELD_SPIN_US", ServoOptions::UNHELD_SPIN_NS / NS_PER_US);
 	r_binder.bind_constant("", "TELEMETRY_QUEUE_CAPACITY", static_cast<int64_t>(TELEMETRY_QUEUE_CAPACITY));
 	for (size_t mode = 0; mode < registered_renderers().size(); ++mode) {
 		r_binder.bind_constant("RenderMode", registered_renderers()[mode].mode_constant, static_cast<int64_t>(mode));

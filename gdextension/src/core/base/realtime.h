@@ -104,6 +104,13 @@ void release_cpu_latency_hold();
 //   - stack prefault: no difference beyond the noise: off (available).
 //   - timer slack 1 ns under SCHED_OTHER: p50 wake latency 52 against 98 us idle, 29 against
 //     87 under CPU load: on (it only applies where SCHED_FIFO is refused).
+// As an ordinary user (haptics_rt_bench --user nobody --user-techniques, the user's rows
+// beside root's in the same rounds): SCHED_FIFO, mlockall and cpu_dma_latency need root (or
+// CAP_SYS_NICE / an rtprio limit, CAP_IPC_LOCK / an unlimited memlock limit, write access to
+// the file); RealtimeKit's SCHED_RR 20 stands in for the first, and root's servo configured
+// like that grant (FIFO 20, no latency hold) was within the noise of root's as shipped.
+// Pinning, the timer slack, the spin and RLIMIT_RTTIME need nothing; pinning gained nothing
+// for the user either, and the spin is worth it only to a real-time thread (ServoOptions).
 struct RealtimeRequest {
 	int32_t priority = 80; // SCHED_FIFO priority; 0 = do not ask.
 	bool lock_memory = false;

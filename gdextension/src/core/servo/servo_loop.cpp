@@ -43,15 +43,19 @@ int64_t ServoLoop::spin_ns() const {
 	return grants_published_.load(std::memory_order_acquire) ? spin_ns_ : 0;
 }
 
-int64_t effective_spin_ns(const ServoOptions &p_options, SchedulerKind p_kind) {
+int64_t effective_spin_ns(const ServoOptions &p_options, const RealtimeGrants &p_grants) {
 	if (p_options.scheduling == LoopScheduling::NAIVE_SLEEP) {
 		return 0;
 	}
-	if (p_options.spin_ns == ServoOptions::SPIN_AUTO) {
-		const bool realtime = p_kind == SchedulerKind::REALTIME_FIFO || p_kind == SchedulerKind::REALTIME_RR;
-		return realtime ? std::min(ServoOptions::DEFAULT_SPIN_NS, max_spin_ns(p_options.rate_hz)) : 0;
+	int64_t spin_ns = p_options.spin_ns;
+	if (spin_ns == ServoOptions::SPIN_AUTO) {
+		const bool realtime =
+				p_grants.kind == SchedulerKind::REALTIME_FIFO || p_grants.kind == SchedulerKind::REALTIME_RR;
+		spin_ns = !realtime ? 0
+				: p_grants.cpu_latency_held ? ServoOptions::DEFAULT_SPIN_NS
+											: ServoOptions::UNHELD_SPIN_NS;
 	}
-	return std::clamp<int64_t>(p_options.spin_ns, 0, max_spin_ns(p_options.rate_hz));
+	return std::clamp<int64_t>(spin_ns, 0, max_spin_ns(p_options.rate_hz));
 }
 
 Status ServoLoop::start(HapticDevice *p_device, const ServoOptions &p_options) {
@@ -102,7 +106,7 @@ void ServoLoop::run() {
 	// The name top, ps -L and /proc/<pid>/task/*/comm show (15 characters at most).
 	::pthread_setname_np(::pthread_self(), SERVO_THREAD_NAME);
 	grants_ = apply_realtime_request(options_.realtime);
-	spin_ns_ = effective_spin_ns(options_, grants_.kind);
+	spin_ns_ = effective_spin_ns(options_, grants_);
 	grants_published_.store(true, std::memory_order_release);
 
 	const int64_t period_ns = std::llround(1e9 / options_.rate_hz);

@@ -51,23 +51,26 @@ struct ServoOptions {
 	LoopScheduling scheduling = LoopScheduling::DEADLINE;
 	RealtimeRequest realtime; // What the thread asks of the system (defaults: realtime.h).
 	// Busy-wait before each deadline (DEADLINE scheduling only); 0 = sleep to the deadline.
-	// [0, half a period], or SPIN_AUTO: DEFAULT_SPIN_NS once the thread has real time
-	// (SCHED_FIFO, or SCHED_RR from RealtimeKit), 0 without it. Both chosen by measurement
-	// (README, "Servo timing"):
-	//   - real time: 50 us gives p99 wake latency 95 / 52 / 50 us idle / under CPU / under
-	//     rendering load against 86-119 / 96-107 / 80-83 without, for about 1 % of a core
-	//     (100 us: p99 13-35 us for 5 % of a core); as an ordinary user with RealtimeKit the
-	//     same: p99 7.5-10 / 0.5 / 0.5 against 58-72 / 28 / 30 without.
-	//   - SCHED_OTHER: a spinning thread that is not real-time is preempted mid-spin by the
+	// [0, half a period], or SPIN_AUTO, chosen by what the thread was granted, each by
+	// measurement (README, "Servo timing"):
+	//   - real time with /dev/cpu_dma_latency held (root): DEFAULT_SPIN_NS. p99 wake latency
+	//     95 / 52 / 50 us idle / under CPU / under rendering load against 86-119 / 96-107 /
+	//     80-83 without, for about 1 % of a core.
+	//   - real time without the hold (an ordinary user's SCHED_RR from RealtimeKit):
+	//     UNHELD_SPIN_NS. An idle core may sleep deeper and wake later; the longer spin
+	//     absorbs it: p99 0.5 us idle in two runs against 7.5-18.5 at 50 us, for 9-10 % of a
+	//     core instead of 4-5 %.
+	//   - SCHED_OTHER: none. A thread that is not real-time is preempted mid-spin by the
 	//     load it competes with: p99 178 and 351 us under CPU load against 28 without.
 	int64_t spin_ns = SPIN_AUTO;
 
 	static constexpr int64_t SPIN_AUTO = -1;
 	static constexpr int64_t DEFAULT_SPIN_NS = 50'000;
+	static constexpr int64_t UNHELD_SPIN_NS = 100'000;
 };
 
-// The spin a servo with p_options spins once granted p_kind (SPIN_AUTO resolved).
-int64_t effective_spin_ns(const ServoOptions &p_options, SchedulerKind p_kind);
+// The spin a servo with p_options spins once granted p_grants (SPIN_AUTO resolved).
+int64_t effective_spin_ns(const ServoOptions &p_options, const RealtimeGrants &p_grants);
 
 // The longest spin_ns a servo at p_rate_hz (a valid rate) accepts: half its period, so a tick
 // always has the other half to run in.
