@@ -205,8 +205,7 @@ bool RenderLoad::spawn_game(std::string &r_why_not) {
 		args = { "unshare", "--mount", "--", "sh", "-c", "mount --bind /dev/null /dev/cpu_dma_latency && exec \"$@\"", "sh",
 			"setpriv", "--bounding-set=-sys_nice", "--inh-caps=-sys_nice", "--" };
 	}
-	args.insert(args.end(), { godot, "--path", project_, "--rendering-driver", "opengl3", "--audio-driver", "Dummy", "--",
-								  "--autopilot", "--autopilot-seconds=0" });
+	args.insert(args.end(), { godot, "--path", project_, "--rendering-driver", "opengl3", "--audio-driver", "Dummy", "--", "--autopilot", "--autopilot-seconds=0" });
 	std::vector<std::string> environment;
 	for (char **entry = environ; *entry; ++entry) {
 		if (std::strncmp(*entry, "DISPLAY=", 8) != 0 && std::strncmp(*entry, "DBUS_SYSTEM_BUS_ADDRESS=", 24) != 0) {

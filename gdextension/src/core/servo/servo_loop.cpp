@@ -40,7 +40,8 @@ RealtimeGrants ServoLoop::grants() const {
 }
 
 int64_t ServoLoop::spin_ns() const {
-	return grants_published_.load(std::memory_order_acquire) ? spin_ns_ : 0;
+	// Before the thread has its grants, an explicit spin is already known; SPIN_AUTO is not.
+	return grants_published_.load(std::memory_order_acquire) ? spin_ns_ : effective_spin_ns(options_, RealtimeGrants{});
 }
 
 int64_t effective_spin_ns(const ServoOptions &p_options, const RealtimeGrants &p_grants) {
@@ -51,7 +52,7 @@ int64_t effective_spin_ns(const ServoOptions &p_options, const RealtimeGrants &p
 	if (spin_ns == ServoOptions::SPIN_AUTO) {
 		const bool realtime =
 				p_grants.kind == SchedulerKind::REALTIME_FIFO || p_grants.kind == SchedulerKind::REALTIME_RR;
-		spin_ns = !realtime ? 0
+		spin_ns = !realtime					? 0
 				: p_grants.cpu_latency_held ? ServoOptions::DEFAULT_SPIN_NS
 											: ServoOptions::UNHELD_SPIN_NS;
 	}

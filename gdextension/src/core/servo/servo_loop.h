@@ -99,7 +99,8 @@ public:
 	RealtimeResult scheduler() const;
 	// What the thread was granted (all false / -1 / 0 until it has started).
 	RealtimeGrants grants() const;
-	// The spin the thread uses (effective_spin_ns; 0 until it has started).
+	// The spin the thread uses (effective_spin_ns; until it has its grants, the spin asked
+	// for, or 0 for SPIN_AUTO).
 	int64_t spin_ns() const;
 	const ServoOptions &options() const { return options_; }
 
