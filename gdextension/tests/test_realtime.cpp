@@ -28,6 +28,14 @@ using namespace haptics;
 
 namespace {
 
+// Waits (bounded: a loaded machine) until the servo has ticked p_ticks times.
+void wait_for_ticks(const HapticsEngine &p_engine, uint64_t p_ticks) {
+	const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+	while (p_engine.stats().ticks < p_ticks && std::chrono::steady_clock::now() < give_up) {
+		std::this_thread::sleep_for(std::chrono::milliseconds(1));
+	}
+}
+
 RealtimeRequest everything() {
 	RealtimeRequest request;
 	request.priority = 80;
@@ -105,10 +113,7 @@ RefusedReport run_unprivileged() {
 		});
 		HapticsEngine engine;
 		if (engine.open_simulated_device() && engine.start(1000.0)) {
-			const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(20);
-			while (engine.stats().ticks < 50 && std::chrono::steady_clock::now() < give_up) {
-				std::this_thread::sleep_for(std::chrono::milliseconds(1));
-			}
+			wait_for_ticks(engine, 50);
 			engine.stop();
 			report.servo = engine.stats();
 			report.servo_ticks = report.servo.ticks;
@@ -269,10 +274,7 @@ TEST_CASE("servo thread: spin and techniques show in the stats, a spin over half
 	options.spin_ns = 50'000;
 	options.realtime.cpu = PIN_AUTO;
 	REQUIRE(engine.start(options));
-	const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(20);
-	while (engine.stats().ticks < 1500 && std::chrono::steady_clock::now() < give_up) {
-		std::this_thread::sleep_for(std::chrono::milliseconds(5));
-	}
+	wait_for_ticks(engine, 1500);
 	const ServoStats running = engine.stats();
 	engine.stop();
 	CHECK(running.ticks >= 1500);
@@ -332,10 +334,7 @@ TEST_CASE("servo thread: the automatic spin follows what the thread was granted"
 	unprivileged.realtime.priority = 0;
 	unprivileged.realtime.hold_cpu_latency = false;
 	REQUIRE(engine.start(unprivileged));
-	const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(20);
-	while (engine.stats().ticks < 10 && std::chrono::steady_clock::now() < give_up) {
-		std::this_thread::sleep_for(std::chrono::milliseconds(5));
-	}
+	wait_for_ticks(engine, 10);
 	const ServoStats stats = engine.stats();
 	engine.stop();
 	CHECK(stats.scheduler == SchedulerKind::NORMAL);
