@@ -51,6 +51,7 @@ func _ready() -> void:
 		elif arg.begins_with("--pong-players="):
 			pong_players = 4 if arg.get_slice("=", 1).to_int() == 4 else 2
 	if PongNetCli.wants(args):
+		_background.visible = DisplayServer.get_name() != "headless"
 		add_child(PongNetCli.new())
 		return
 	if args.has("--pong-demo"):

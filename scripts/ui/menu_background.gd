@@ -35,6 +35,9 @@ func _process(delta: float) -> void:
 func _notification(what: int) -> void:
 	if what == NOTIFICATION_RESIZED:
 		_build_seabed()
+	elif what == NOTIFICATION_VISIBILITY_CHANGED:
+		# Hidden (a headless server, a screen over it), it would still redraw every frame.
+		set_process(is_visible_in_tree())
 
 
 func _build_seabed() -> void:

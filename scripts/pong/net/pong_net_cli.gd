@@ -24,9 +24,13 @@ extends Node
 ## too, run the servo thread at 1 kHz as a windowed game does, instead of stepping it).
 ## Exit codes: 0 done, 2 connection failed or refused, 3 no Pong renderer.
 
-## Headless peers sleep this long per frame (FACTS §1.6: the default 6900 us makes every
-## message wait up to a frame).
-const TEST_SLEEP_USEC: int = 1000
+## Headless peers sleep this long per frame during a match (FACTS §1.6: the default
+## 6900 us makes every message wait up to a frame, and a stepped peer steps its servo once a
+## frame).
+const MATCH_SLEEP_USEC: int = 1000
+## And this long between matches: a lobby message may wait 10 ms, and a server waiting for
+## players runs 100 frames a second instead of 1000.
+const LOBBY_SLEEP_USEC: int = 10000
 ## The custom feature of the dedicated server's export preset.
 const SERVER_FEATURE: String = "pong_server"
 
@@ -89,8 +93,7 @@ func _launch() -> void:
 		get_tree().create_timer(max_seconds, true, false, true).timeout.connect(
 			_finish.bind(0, "deadline")
 		)
-	if DisplayServer.get_name() == "headless":
-		OS.low_processor_usage_mode_sleep_usec = TEST_SLEEP_USEC
+	_pace(false)
 	if role == "local":
 		_profile = PongNetContactProfile.new()
 		add_child(_profile)
@@ -104,6 +107,10 @@ func _launch() -> void:
 	net.dedicated = role == "server"
 	net.autopilot = options.has("pong-net-autopilot") or net.dedicated
 	net.stepped = DisplayServer.get_name() == "headless" and not options.has("pong-net-realtime")
+	if net.stepped:
+		# A stepped peer runs the servo by hand during a match; between matches nothing here
+		# needs the autoload's 1 kHz thread.
+		Haptics.servo.stop()
 	net.start_health = _option("pong-net-health", str(PongRules.DEFAULT_START_HEALTH)).to_int()
 	var seats_default: int = PongNetProtocol.MAX_SEATS if peers_wanted > 2 else 2
 	net.seats = _option("pong-net-seats", str(seats_default)).to_int()
@@ -160,6 +167,7 @@ func _on_lobby_changed() -> void:
 
 
 func _on_match_started() -> void:
+	_pace(true)
 	_match_clock = 0.0
 	_readied = false
 	_seat = net.my_seat()
@@ -182,6 +190,7 @@ func _on_match_started() -> void:
 
 
 func _on_match_ended(_winner: int, why: String) -> void:
+	_pace(false)
 	if net.dedicated and why == "over" and seconds <= 0.0:
 		net.close_screen()
 		return
@@ -242,3 +251,9 @@ func _controllers() -> Array[String]:
 		else:
 			kinds.append("local")
 	return kinds
+
+
+# Headless, nothing waits for a display: the frame rate is the sleep between frames.
+func _pace(in_match: bool) -> void:
+	if DisplayServer.get_name() == "headless":
+		OS.low_processor_usage_mode_sleep_usec = MATCH_SLEEP_USEC if in_match else LOBBY_SLEEP_USEC
