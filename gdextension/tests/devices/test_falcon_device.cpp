@@ -163,20 +163,28 @@ TEST_CASE("falcon device: velocity is estimated from successive positions") {
 	std::unique_ptr<FalconDevice> device = make_scripted_device(model);
 	REQUIRE(device->open());
 	CHECK(eventually([&] { return state_of(*device).ready; }));
-	// Move right at ~0.05 m/s for 0.3 s.
+	// Move right at 0.05 m/s for 0.3 s. On a loaded machine this thread may sleep for tens of
+	// milliseconds, and the position then jumps within one of the device's frames: the
+	// estimate spikes (rightly) for what it saw. Its mean over the motion does not: a low-pass
+	// filter keeps the mean of what it is given, the distance over the time.
+	constexpr double SPEED = 0.05;
 	const auto start = std::chrono::steady_clock::now();
-	double peak_vx = 0.0;
+	double sum_vx = 0.0;
+	int samples = 0;
 	while (true) {
 		const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 		if (t > 0.3) {
 			break;
 		}
-		model->set_device_position({ -0.01 + 0.05 * t, 0.0, 0.0 });
-		peak_vx = std::fmax(peak_vx, state_of(*device).velocity_m_per_s.x);
+		model->set_device_position({ -0.01 + SPEED * t, 0.0, 0.0 });
+		if (t > 0.05) { // The filter (40 Hz) has settled.
+			sum_vx += state_of(*device).velocity_m_per_s.x;
+			++samples;
+		}
 		std::this_thread::sleep_for(std::chrono::milliseconds(1));
 	}
-	CHECK(peak_vx > 0.02);
-	CHECK(peak_vx < 0.2);
+	REQUIRE(samples > 0);
+	CHECK(sum_vx / samples == doctest::Approx(SPEED).epsilon(0.5));
 	CHECK(eventually([&] { return std::fabs(state_of(*device).velocity_m_per_s.x) < 0.002; })); // At rest again.
 }
 
