@@ -39,11 +39,13 @@ class Network:
     @property
     def label(self) -> str:
         jitter = f"±{self.jitter_ms:g}" if self.centred else f"+{self.jitter_ms:g}j"
-        text = f"{self.delay_ms:g}ms{jitter}/{self.loss * 100:g}%"
+        text = f"{self.delay_ms:g}ms{jitter}"
+        if self.loss > 0 or self.burst_loss == 0:
+            text += f"/{self.loss * 100:g}%"
         if not self.reorder:
             text += " in order"
         if self.burst_loss > 0:
-            text += f" +{self.burst_loss * 100:g}% in bursts of {self.burst_length:g}"
+            text += f" {self.burst_loss * 100:g}% lost in bursts of {self.burst_length:g}"
         if self.duplicate > 0:
             text += f" {self.duplicate * 100:g}% twice"
         return text

@@ -42,6 +42,7 @@ import json
 import os
 import random
 import signal
+import socket
 import sys
 from dataclasses import asdict
 from typing import Callable, cast
@@ -52,6 +53,10 @@ Address = tuple[str, int]
 DIRECTIONS = ("up", "down")  # client -> server, server -> client
 # A command line longer than this is refused (and the relay reads on).
 MAX_COMMAND_BYTES = 1024
+# Asked of the kernel for each socket's receive buffer (it grants up to net.core.rmem_max):
+# a datagram the kernel drops while this process waits for a core on a loaded machine is a
+# loss nobody asked for; the default buffer holds about 200 small ones.
+RECEIVE_BUFFER_BYTES = 4 << 20
 
 
 class UsageError(Exception):
@@ -67,6 +72,11 @@ def say(p_message: dict) -> None:
         devnull = os.open(os.devnull, os.O_WRONLY)
         os.dup2(devnull, sys.stdout.fileno())
         os.close(devnull)
+
+
+def _enlarge_receive_buffer(p_transport: asyncio.BaseTransport) -> None:
+    sock = p_transport.get_extra_info("socket")
+    sock.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, RECEIVE_BUFFER_BYTES)
 
 
 def _text(p_address: Address) -> str:
@@ -188,7 +198,9 @@ class Relay(asyncio.DatagramProtocol):
         loop = asyncio.get_running_loop()
 
         async def connect() -> None:
-            await loop.create_datagram_endpoint(lambda: upstream, remote_addr=self._server)
+            transport, _ = await loop.create_datagram_endpoint(
+                lambda: upstream, remote_addr=self._server)
+            _enlarge_receive_buffer(transport)
             self._upstreams[p_client] = upstream
             for data in self._pending.pop(p_client):
                 self._send_later(p_client, "up", data)
@@ -299,6 +311,7 @@ async def run(p_args: argparse.Namespace) -> Relay:
     transport, _ = await loop.create_datagram_endpoint(
         lambda: relay, local_addr=(p_args.listen_host, p_args.listen_port)
     )
+    _enlarge_receive_buffer(transport)
     stop = asyncio.Event()
     for signum in (signal.SIGTERM, signal.SIGINT):
         loop.add_signal_handler(signum, stop.set)

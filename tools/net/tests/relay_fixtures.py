@@ -16,6 +16,14 @@ from pathlib import Path
 RELAY = Path(__file__).resolve().parents[1] / "udp_relay.py"
 # Generous bound for anything that waits on the relay process on a loaded 2-core machine.
 PATIENCE_S = 20.0
+# The test's own sockets: room for a few thousand datagrams while a reader waits for a core.
+RECEIVE_BUFFER_BYTES = 4 << 20
+
+
+def udp_socket() -> socket.socket:
+    sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+    sock.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, RECEIVE_BUFFER_BYTES)
+    return sock
 
 
 class EchoServer:
@@ -23,7 +31,7 @@ class EchoServer:
     and can send to a sender on its own (push)."""
 
     def __init__(self, p_echo: bool = True) -> None:
-        self.sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+        self.sock = udp_socket()
         self.sock.bind(("127.0.0.1", 0))
         self.sock.settimeout(0.1)
         self.port = self.sock.getsockname()[1]
@@ -117,7 +125,7 @@ class RelayProcess:
 
 
 def client(p_port: int) -> socket.socket:
-    sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+    sock = udp_socket()
     sock.connect(("127.0.0.1", p_port))
     sock.settimeout(PATIENCE_S)
     return sock
