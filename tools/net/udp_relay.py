@@ -258,7 +258,8 @@ def parse_arguments(p_argv: list[str]) -> argparse.Namespace:
     parser.add_argument("--listen-host", default="127.0.0.1")
     parser.add_argument("--listen-port", type=int, default=0, help="0 picks a free port")
     parser.add_argument("--delay-ms", type=_milliseconds, default=0.0, help="each way")
-    parser.add_argument("--jitter-ms", type=_milliseconds, default=0.0, help="uniform extra")
+    parser.add_argument("--jitter-ms", type=_milliseconds, default=0.0,
+                        help="uniform extra 0..J per datagram (+-J with --jitter-centred)")
     parser.add_argument("--jitter-centred", action="store_true",
                         help="delay +- jitter (needs jitter <= delay) instead of delay + 0..jitter")
     parser.add_argument("--in-order", action="store_true",
@@ -276,7 +277,7 @@ def parse_arguments(p_argv: list[str]) -> argparse.Namespace:
     parser.add_argument("--max-seconds", type=float, default=600.0)
     parser.add_argument("--stats", help="write the counts here as JSON at exit")
     args = parser.parse_args(p_argv)
-    if (args.burst_loss > 0.0) != (args.burst_length > 0.0):
+    if (args.burst_loss > 0.0) != (args.burst_length != 0.0):
         parser.error("--burst-loss and --burst-length go together")
     try:
         bursts = (BurstLoss.from_mean(args.burst_loss, args.burst_length)
