@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""A UDP relay that puts the networks players have between ENet peers: latency, jitter that
-reorders, loss (independent and in bursts), duplicates, and paths that die.
+"""A UDP relay that puts the networks players have between ENet peers.
+
+Latency, jitter that reorders, loss (independent and in bursts), duplicates, paths that die.
 
 Godot's ENet has no network emulation and netem is unavailable here, so the network tests put
 this relay between the clients and the server (shared/pong/FACTS.md §1.8). Clients connect to
@@ -266,7 +267,7 @@ def parse_arguments(p_argv: list[str]) -> argparse.Namespace:
                         help="jitter never reorders: each datagram waits for the one before it")
     parser.add_argument("--loss", type=_probability, default=0.0, help="each way, 0..1")
     parser.add_argument("--burst-loss", type=_probability, default=0.0,
-                        help="average loss in Gilbert-Elliott bursts, each way (needs --burst-length)")
+                        help="average loss in Gilbert-Elliott bursts (with --burst-length)")
     parser.add_argument("--burst-length", type=float, default=0.0,
                         help="mean burst length in datagrams, >= 1")
     parser.add_argument("--duplicate", type=_probability, default=0.0,
