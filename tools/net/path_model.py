@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import heapq
 import random
-from dataclasses import dataclass, field, fields
+from dataclasses import dataclass, fields
 
 # An in-order lane releases each datagram at least this much after the one before it: two
 # timers due at the same instant may fire in either order.
@@ -131,23 +131,23 @@ class DirectionStats:
             setattr(self, item.name, getattr(self, item.name) + getattr(p_other, item.name))
 
 
-@dataclass
 class Lane:
     """One direction of one client's path: decides each datagram's fate and counts it."""
 
-    model: PathModel
-    rng: random.Random
-    stats: DirectionStats = field(default_factory=DirectionStats)
-    # Dropping everything, arrivals and datagrams on their way (a dead path).
-    cut: bool = False
-    _arrived: int = 0
-    _newest_delivered: int = -1
-    _last_release_s: float = float("-inf")
-    _bad: bool | None = None
-    _last_lost: bool = False
-    # Sequences on their way (a copy appears twice), as a heap with counts for removal.
-    _on_way: list[int] = field(default_factory=list)
-    _on_way_count: dict[int, int] = field(default_factory=dict)
+    def __init__(self, p_model: PathModel, p_rng: random.Random) -> None:
+        self.model = p_model
+        self.rng = p_rng
+        self.stats = DirectionStats()
+        # Dropping everything, arrivals and datagrams on their way (a dead path).
+        self.cut = False
+        self._arrived = 0
+        self._newest_delivered = -1
+        self._last_release_s = float("-inf")
+        self._bad: bool | None = None  # the burst chain's state; None until the first draw
+        self._last_lost = False
+        # Sequences on their way (a copy appears twice), as a heap with counts for removal.
+        self._on_way: list[int] = []
+        self._on_way_count: dict[int, int] = {}
 
     def admit(self, p_now_s: float) -> list[tuple[int, float]]:
         """(sequence, release time) for each copy of the datagram that arrived at [p_now_s]
