@@ -231,8 +231,9 @@ test-net: import
 	@tools/analysis/run.sh -m pytest tools/net/tests tests/net -q -p no:cacheprovider \
 		--ignore=tests/net/test_exported_server.py
 
-## bench-net: networked Pong's bytes/s, hand-off gap, divergence and corrections for each
-## network setting (numbers, not tests; JSON in .bench/net.json)
+## bench-net: networked Pong's bytes/s, hand-off gap, divergence, corrections, ball states
+## taken, and each headless peer's CPU share and peak memory for each network setting, the
+## issue's rough network included (numbers, not tests; JSON in .bench/net.json)
 bench-net: import
 	@tools/analysis/run.sh tests/net/bench_net.py --peers 2 4 --json .bench/net.json
 

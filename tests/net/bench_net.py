@@ -1,8 +1,10 @@
 """make bench-net: networked Pong's numbers for each network setting and player count (not
 tests: nothing here passes or fails). Bytes per second per client through the relay, the
 hand-off gap (no master while the transfer travels), the ball's divergence between peers
-p50/p99 (serves left out, see net_harness.divergences) and the followers' correction sizes.
-JSON into .bench/net.json (or --json FILE).
+p50/p99 (serves left out, see net_harness.divergences), the followers' correction sizes,
+the share of the masters' ball states the followers took, what the relay did (losses, bursts,
+duplicates, reordering) and each headless peer's share of a core and peak resident memory
+from all connected to its exit (net_measure). JSON into .bench/net.json (or --json FILE).
 
     python tests/net/bench_net.py [--seconds 12] [--peers 2] [--json .bench/net.json]
 """
@@ -13,20 +15,29 @@ import argparse
 import json
 from pathlib import Path
 
-from net_harness import (ROOT, Network, detection_s, divergences, handoff_gaps, killer,
+from net_harness import (ROOT, ROUGH, Network, detection_s, divergences, handoff_gaps, killer,
                          quantile, run_match, transfers, workspace)
+from net_measure import ProcessMeter, ball_state_use
 
 SETTINGS = {
     "0ms": Network(0, 0, 0.0),
     "50ms+10j": Network(50, 10, 0.0),
     "50ms+10j/5%": Network(50, 10, 0.05),
     "150ms+20j/5%": Network(150, 20, 0.05),
+    # 200 +- 60 ms, 10 % lost in bursts of 6.5 on average, 1 % twice (issue 24).
+    "rough": ROUGH,
 }
 
 
 def measure(peers: int, label: str, network: Network, seconds: float) -> dict:
+    meter = ProcessMeter()
     with workspace() as work:
-        started, relay = run_match(work, peers, network, seconds, force_relay=True)
+        try:
+            started, relay = run_match(
+                work, peers, network, seconds, force_relay=True,
+                on_running=lambda running: meter.start({p.name: p.proc.pid for p in running}))
+        finally:
+            meter.stop()
     reports = [p.report for p in started]
     clients = max(1, relay.get("clients", 1))
     spread = divergences(reports, network.path_s + 0.1)
@@ -49,8 +60,26 @@ def measure(peers: int, label: str, network: Network, seconds: float) -> dict:
         "correction_max_m": max(c["max_m"] for c in corrections),
         "snaps": sum(c["snaps"] for c in corrections),
         "states_per_peer": [r["states"] for r in reports],
+        "ball_states": ball_state_use(reports),
+        "processes": meter.result(),
+        "conditions": network.label,
     }
     return row
+
+
+def describe(row: dict) -> str:
+    """The second line of a row: the peers' cost, the ball states taken, the relay's doing."""
+    costs = ", ".join(
+        f"{name} {p['cpu_share'] * 100:.0f} % {p['peak_rss_kib'] / 1024:.0f} MiB"
+        for name, p in row["processes"].items() if p["cpu_share"] is not None)
+    taken = row["ball_states"]["taken_share"]
+    up = row["relay"]["up"]
+    runs = max(1, up["loss_runs"])
+    return (f"    CPU of a core and peak memory: {costs}; ball states taken "
+            f"{'-' if taken is None else f'{taken * 100:.0f} %'}; relay up: lost "
+            f"{up['dropped'] / max(1, up['received']) * 100:.1f} % in runs of "
+            f"{up['dropped'] / runs:.1f}, {up['duplicated']} twice, {up['reordered']} after a "
+            f"newer one")
 
 
 def detection(label: str, network: Network) -> dict:
@@ -79,6 +108,7 @@ def main() -> None:
                   f"{row['divergence_p50_m']:.3f}/{row['divergence_p99_m']:.3f} m, corrections "
                   f"p50/p99/max {row['correction_p50_m']:.3f}/{row['correction_p99_m']:.3f}/"
                   f"{row['correction_max_m']:.3f} m, snaps {row['snaps']}", flush=True)
+            print(describe(row), flush=True)
     kills = []
     for label in ("0ms", "50ms+10j/5%"):
         kills.append(detection(label, SETTINGS[label]))

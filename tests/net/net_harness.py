@@ -23,9 +23,10 @@ from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from net_relay import ROUGH, Network, Relay, udp_ports  # noqa: F401 (the tests' one import)
+
 ROOT = Path(__file__).resolve().parents[2]
 GODOT = ROOT / "tools" / "godot"
-RELAY = ROOT / "tools" / "net" / "udp_relay.py"
 FAILURES = ROOT / ".build" / "net-failures"
 # Generous bounds for a loaded 2-core machine (never timing assertions).
 START_PATIENCE_S = 30.0
@@ -94,58 +95,6 @@ class Peer:
             self.proc.wait()
 
 
-class Relay:
-    """tools/net/udp_relay.py in front of the server."""
-
-    def __init__(self, server_port: int, workdir: Path, delay_ms: float, jitter_ms: float,
-                 loss: float, seed: int = 1) -> None:
-        self.stats_path = workdir / f"relay-{seed}.json"
-        self.proc = subprocess.Popen(
-            [sys.executable, str(RELAY), "--server", f"127.0.0.1:{server_port}",
-             "--listen-port", "0", "--delay-ms", str(delay_ms), "--jitter-ms", str(jitter_ms),
-             "--loss", str(loss), "--seed", str(seed), "--max-seconds", "240",
-             "--stats", str(self.stats_path)],
-            stdout=subprocess.PIPE, text=True,
-        )
-        self.port = json.loads(self.proc.stdout.readline())["listen_port"]
-        self.stats: dict = {}
-
-    def stop(self) -> None:
-        if self.proc.poll() is None:
-            os.kill(self.proc.pid, signal.SIGTERM)
-        try:
-            self.proc.wait(timeout=20)
-        finally:
-            if self.proc.poll() is None:
-                os.kill(self.proc.pid, signal.SIGKILL)
-                self.proc.wait()
-            self.proc.stdout.close()
-        if self.stats_path.exists():
-            self.stats = json.loads(self.stats_path.read_text())
-
-
-@dataclass
-class Network:
-    delay_ms: float = 0.0
-    jitter_ms: float = 0.0
-    loss: float = 0.0
-
-    @property
-    def label(self) -> str:
-        return f"{self.delay_ms:g}ms+{self.jitter_ms:g}j/{self.loss * 100:g}%"
-
-    @property
-    def path_s(self) -> float:
-        """Worst one-way delay between two players through the relay (two legs when both
-        are clients)."""
-        return 2.0 * (self.delay_ms + self.jitter_ms) / 1000.0
-
-    @property
-    def round_trip_s(self) -> float:
-        """Worst client-to-client round trip through the relay (two legs each way)."""
-        return 4.0 * (self.delay_ms + self.jitter_ms) / 1000.0
-
-
 # Godot's SceneMultiplayer tells the remaining clients of a departure on the reliable system
 # channel; when two clients' goodbyes reach the server in the same poll, ENet has already
 # emptied the second one, and the notice to it fails with this line. The peer is gone
@@ -208,9 +157,8 @@ def run_match(workdir: Path, peers: int, network: Network, seconds: float,
         host.start()
         started.append(host)
         assert host.wait_for_log("Hosting on port"), host.log()
-        impaired = network.delay_ms > 0 or network.jitter_ms > 0 or network.loss > 0
-        if impaired or force_relay:
-            relay = Relay(port, workdir, network.delay_ms, network.jitter_ms, network.loss, seed)
+        if network.impaired or force_relay:
+            relay = Relay(port, workdir, network, seed)
         target = relay.port if relay is not None else port
         clients = players if dedicated else players - 1
         for i in range(clients):

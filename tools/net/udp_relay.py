@@ -1,22 +1,38 @@
 #!/usr/bin/env python3
-"""A UDP relay that puts latency, jitter, reordering and loss between ENet peers.
+"""A UDP relay that puts the networks players have between ENet peers.
+
+Latency, jitter that reorders, loss (independent and in bursts), duplicates, paths that die.
 
 Godot's ENet has no network emulation and netem is unavailable here, so the network tests put
 this relay between the clients and the server (shared/pong/FACTS.md §1.8). Clients connect to
 the relay's port; for each client address the relay opens its own upstream socket to the
 server, so one relay serves any number of clients and the server sees them as distinct peers.
+Clients are numbered from 0 in the order their first datagram arrived.
 
-Every datagram, in each direction, is dropped with probability --loss, otherwise delivered
-after --delay-ms plus a uniform extra of up to --jitter-ms. The extra delay is drawn per
-datagram, so a jitter larger than the gap between datagrams reorders them, as on a real path.
-The random generator is seeded (--seed): a run's drop and delay sequence is reproducible.
+Each direction of each client's path decides every datagram's fate (path_model.py): lost
+with probability --loss, and/or in Gilbert-Elliott bursts (--burst-loss L --burst-length B:
+the two-state chain that loses L of the datagrams in bursts of B on average); otherwise
+delivered after --delay-ms plus a uniform 0..--jitter-ms (or, with --jitter-centred, delay
++- jitter), drawn per datagram and released at its own time, so a jitter larger than the
+gap between datagrams reorders them as on a real path (--in-order: each waits for the one
+before it instead); with probability --duplicate a second copy goes too, with its own delay.
+Every lane has its own generator seeded from --seed: a run's fates are reproducible.
 
-When it is listening it prints one JSON line, {"listen_port": N}, and flushes. It exits on
-SIGTERM or SIGINT, or after --max-seconds (so a relay a crashed test forgot never outlives it
-by much), and then writes its counts to --stats as JSON.
+With --control it reads commands from stdin, one a line, and answers each with one JSON
+line on stdout: `blackhole CLIENT` drops everything on that client's path from now on, both
+ways, datagrams on their way included (a dead path; the other clients play on), `restore
+CLIENT` lets it through again; CLIENT is its number or its HOST:PORT as the relay sees it.
+
+When it is listening it prints one JSON line, {"listen_port": N}, and flushes; then one line
+{"client": N, "address": "HOST:PORT"} for each new client. It exits on SIGTERM or SIGINT, or
+after --max-seconds (so a relay a crashed test forgot never outlives it by much), and then
+writes its counts to --stats as JSON: per direction in total ("up", "down") and per client
+("paths"), the fields of path_model.DirectionStats.
 
     udp_relay.py --server 127.0.0.1:7000 [--listen-port 0] [--delay-ms 50] [--jitter-ms 10]
-                 [--loss 0.05] [--seed 1] [--max-seconds 120] [--stats stats.json]
+                 [--jitter-centred] [--in-order] [--loss 0.05] [--burst-loss 0.1
+                 --burst-length 6.5] [--duplicate 0.01] [--control] [--seed 1]
+                 [--max-seconds 120] [--stats stats.json]
 """
 
 from __future__ import annotations
@@ -24,68 +40,48 @@ from __future__ import annotations
 import argparse
 import asyncio
 import json
+import os
 import random
 import signal
+import socket
 import sys
-from dataclasses import asdict, dataclass, field
+from dataclasses import asdict
 from typing import Callable, cast
 
+from path_model import BurstLoss, DirectionStats, Lane, PathModel
+
 Address = tuple[str, int]
+DIRECTIONS = ("up", "down")  # client -> server, server -> client
+# A command line longer than this is refused (and the relay reads on).
+MAX_COMMAND_BYTES = 1024
+# Asked of the kernel for each socket's receive buffer (it grants up to net.core.rmem_max):
+# a datagram the kernel drops while this process waits for a core on a loaded machine is a
+# loss nobody asked for; the default buffer holds about 200 small ones.
+RECEIVE_BUFFER_BYTES = 4 << 20
 
 
-@dataclass
-class DirectionStats:
-    """What happened to the datagrams travelling one way."""
-
-    received: int = 0
-    dropped: int = 0
-    delivered: int = 0
-    # Delivered after a datagram that was sent later (same client, same direction).
-    reordered: int = 0
-    bytes_delivered: int = 0
+class UsageError(Exception):
+    """The relay cannot run as asked (found only once it starts)."""
 
 
-@dataclass
-class RelayStats:
-    up: DirectionStats = field(default_factory=DirectionStats)  # client -> server
-    down: DirectionStats = field(default_factory=DirectionStats)  # server -> client
-    clients: int = 0
+def say(p_message: dict) -> None:
+    """One JSON line on stdout for whoever drives the relay; a reader that went away is no
+    reason to stop relaying."""
+    try:
+        print(json.dumps(p_message), flush=True)
+    except BrokenPipeError:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        os.close(devnull)
 
 
-@dataclass
-class Impairment:
-    """The path's behaviour, the same each way."""
-
-    delay_s: float
-    jitter_s: float
-    loss: float
+def _enlarge_receive_buffer(p_transport: asyncio.BaseTransport) -> None:
+    sock = p_transport.get_extra_info("socket")
+    sock.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, RECEIVE_BUFFER_BYTES)
 
 
-class _Lane:
-    """One direction of one client's path: decides each datagram's fate and counts it."""
-
-    def __init__(self, p_stats: DirectionStats, p_rng: random.Random) -> None:
-        self._stats = p_stats
-        self._rng = p_rng
-        self._sent = 0
-        self._newest_delivered = -1
-
-    def admit(self, p_path: Impairment) -> tuple[int, float] | None:
-        """Returns (sequence, delay in seconds), or None when the datagram is lost."""
-        self._stats.received += 1
-        sequence = self._sent
-        self._sent += 1
-        if self._rng.random() < p_path.loss:
-            self._stats.dropped += 1
-            return None
-        return sequence, p_path.delay_s + self._rng.uniform(0.0, p_path.jitter_s)
-
-    def delivered(self, p_sequence: int, p_size: int) -> None:
-        self._stats.delivered += 1
-        self._stats.bytes_delivered += p_size
-        if p_sequence < self._newest_delivered:
-            self._stats.reordered += 1
-        self._newest_delivered = max(self._newest_delivered, p_sequence)
+def _text(p_address: Address) -> str:
+    return f"{p_address[0]}:{p_address[1]}"
 
 
 class _Upstream(asyncio.DatagramProtocol):
@@ -109,18 +105,15 @@ class _Upstream(asyncio.DatagramProtocol):
 class Relay(asyncio.DatagramProtocol):
     """The relay's front socket, where clients send."""
 
-    def __init__(
-        self, p_server: Address, p_path: Impairment, p_seed: int, p_stats: RelayStats
-    ) -> None:
+    def __init__(self, p_server: Address, p_model: PathModel, p_seed: int) -> None:
         self._server = p_server
-        self._path = p_path
+        self._model = p_model
         self._seed = p_seed
-        self._client_numbers: dict[Address, int] = {}
-        self._stats = p_stats
+        self._clients: list[Address] = []
         self._front: asyncio.DatagramTransport | None = None
         self._upstreams: dict[Address, _Upstream] = {}
         self._pending: dict[Address, list[bytes]] = {}
-        self._lanes: dict[tuple[Address, str], _Lane] = {}
+        self._lanes: dict[tuple[Address, str], Lane] = {}
 
     def connection_made(self, transport: asyncio.BaseTransport) -> None:
         self._front = cast(asyncio.DatagramTransport, transport)
@@ -136,21 +129,63 @@ class Relay(asyncio.DatagramProtocol):
         self._send_later(addr, "up", data)
 
     def close(self) -> None:
+        for lane in self._lanes.values():
+            lane.abandon()
         for upstream in self._upstreams.values():
             if upstream.transport is not None:
                 upstream.transport.close()
         if self._front is not None:
             self._front.close()
 
-    def _lane(self, p_client: Address, p_direction: str) -> _Lane:
+    def stats(self) -> dict:
+        """The counts: per direction in total, and per client path."""
+        totals = {direction: DirectionStats() for direction in DIRECTIONS}
+        paths = []
+        for number, client in enumerate(self._clients):
+            path: dict = {"client": number, "address": _text(client)}
+            for direction in DIRECTIONS:
+                lane = self._lanes.get((client, direction))
+                counts = lane.stats if lane is not None else DirectionStats()
+                totals[direction].add(counts)
+                path[direction] = asdict(counts)
+            paths.append(path)
+        return {
+            **{direction: asdict(counts) for direction, counts in totals.items()},
+            "clients": len(self._clients),
+            "paths": paths,
+        }
+
+    def command(self, p_text: str) -> dict:
+        """Carries out one control line; the answer, an error that changed nothing included."""
+        words = p_text.split()
+        if len(words) != 2 or words[0] not in ("blackhole", "restore"):
+            return {"error": f"unknown command {p_text[:80]!r}: expected 'blackhole CLIENT' "
+                             "or 'restore CLIENT'"}
+        client = self._find_client(words[1])
+        if client is None:
+            return {"error": f"no client {words[1][:80]!r} (clients: "
+                             f"{[_text(c) for c in self._clients]})"}
+        for direction in DIRECTIONS:
+            self._lane(client, direction).cut = words[0] == "blackhole"
+        return {words[0]: self._clients.index(client), "address": _text(client)}
+
+    def _find_client(self, p_word: str) -> Address | None:
+        if p_word.isdigit():
+            number = int(p_word)
+            return self._clients[number] if number < len(self._clients) else None
+        for client in self._clients:
+            if _text(client) == p_word:
+                return client
+        return None
+
+    def _lane(self, p_client: Address, p_direction: str) -> Lane:
         key = (p_client, p_direction)
         if key not in self._lanes:
-            stats = self._stats.up if p_direction == "up" else self._stats.down
             # A generator per lane: a datagram's fate depends on its place in its own lane,
             # not on how the two directions happened to interleave, so a seed reproduces a run.
-            number = self._client_numbers.setdefault(p_client, len(self._client_numbers))
+            number = self._clients.index(p_client)
             rng = random.Random(f"{self._seed}/{number}/{p_direction}")
-            self._lanes[key] = _Lane(stats, rng)
+            self._lanes[key] = Lane(self._model, rng)
         return self._lanes[key]
 
     def _open_upstream(self, p_client: Address, p_first: bytes) -> None:
@@ -158,12 +193,15 @@ class Relay(asyncio.DatagramProtocol):
             self._pending[p_client].append(p_first)
             return
         self._pending[p_client] = [p_first]
-        self._stats.clients += 1
+        self._clients.append(p_client)
+        say({"client": len(self._clients) - 1, "address": _text(p_client)})
         upstream = _Upstream(lambda data: self._send_later(p_client, "down", data))
         loop = asyncio.get_running_loop()
 
         async def connect() -> None:
-            await loop.create_datagram_endpoint(lambda: upstream, remote_addr=self._server)
+            transport, _ = await loop.create_datagram_endpoint(
+                lambda: upstream, remote_addr=self._server)
+            _enlarge_receive_buffer(transport)
             self._upstreams[p_client] = upstream
             for data in self._pending.pop(p_client):
                 self._send_later(p_client, "up", data)
@@ -172,27 +210,25 @@ class Relay(asyncio.DatagramProtocol):
 
     def _send_later(self, p_client: Address, p_direction: str, p_data: bytes) -> None:
         lane = self._lane(p_client, p_direction)
-        fate = lane.admit(self._path)
-        if fate is None:
-            return
-        sequence, delay = fate
-        asyncio.get_running_loop().call_later(
-            delay, self._deliver, p_client, p_direction, p_data, lane, sequence
-        )
+        loop = asyncio.get_running_loop()
+        for sequence, release_s in lane.admit(loop.time()):
+            loop.call_at(release_s, self._deliver, p_client, p_direction, p_data, lane, sequence)
 
     def _deliver(
-        self, p_client: Address, p_direction: str, p_data: bytes, p_lane: _Lane, p_sequence: int
+        self, p_client: Address, p_direction: str, p_data: bytes, p_lane: Lane, p_sequence: int
     ) -> None:
         if p_direction == "up":
             transport = self._upstreams[p_client].transport
-            if transport is None or transport.is_closing():
-                return
-            transport.sendto(p_data)
         else:
-            if self._front is None or self._front.is_closing():
-                return
-            self._front.sendto(p_data, p_client)
-        p_lane.delivered(p_sequence, len(p_data))
+            transport = self._front
+        if transport is None or transport.is_closing():
+            p_lane.lost_on_way(p_sequence)
+            return
+        if p_lane.release(p_sequence, len(p_data)):
+            if p_direction == "up":
+                transport.sendto(p_data)
+            else:
+                transport.sendto(p_data, p_client)
 
 
 def _address(p_text: str) -> Address:
@@ -217,46 +253,100 @@ def _milliseconds(p_text: str) -> float:
 
 
 def parse_arguments(p_argv: list[str]) -> argparse.Namespace:
+    """The options, and in .model the path they describe (an impossible one is refused)."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--server", type=_address, required=True, help="HOST:PORT to relay to")
     parser.add_argument("--listen-host", default="127.0.0.1")
     parser.add_argument("--listen-port", type=int, default=0, help="0 picks a free port")
     parser.add_argument("--delay-ms", type=_milliseconds, default=0.0, help="each way")
-    parser.add_argument("--jitter-ms", type=_milliseconds, default=0.0, help="uniform extra")
+    parser.add_argument("--jitter-ms", type=_milliseconds, default=0.0,
+                        help="uniform extra 0..J per datagram (+-J with --jitter-centred)")
+    parser.add_argument("--jitter-centred", action="store_true",
+                        help="delay +- jitter (needs jitter <= delay) instead of delay + 0..jitter")
+    parser.add_argument("--in-order", action="store_true",
+                        help="jitter never reorders: each datagram waits for the one before it")
     parser.add_argument("--loss", type=_probability, default=0.0, help="each way, 0..1")
+    parser.add_argument("--burst-loss", type=_probability, default=0.0,
+                        help="average loss in Gilbert-Elliott bursts (with --burst-length)")
+    parser.add_argument("--burst-length", type=float, default=0.0,
+                        help="mean burst length in datagrams, >= 1")
+    parser.add_argument("--duplicate", type=_probability, default=0.0,
+                        help="probability that a datagram goes twice")
+    parser.add_argument("--control", action="store_true",
+                        help="read blackhole/restore commands from stdin (a pipe)")
     parser.add_argument("--seed", type=int, default=1)
     parser.add_argument("--max-seconds", type=float, default=600.0)
     parser.add_argument("--stats", help="write the counts here as JSON at exit")
-    return parser.parse_args(p_argv)
+    args = parser.parse_args(p_argv)
+    if (args.burst_loss > 0.0) != (args.burst_length != 0.0):
+        parser.error("--burst-loss and --burst-length go together")
+    try:
+        bursts = (BurstLoss.from_mean(args.burst_loss, args.burst_length)
+                  if args.burst_loss > 0.0 else None)
+        args.model = PathModel(
+            delay_s=args.delay_ms / 1000.0, jitter_s=args.jitter_ms / 1000.0,
+            centred=args.jitter_centred, reorder=not args.in_order, loss=args.loss,
+            bursts=bursts, duplicate=args.duplicate,
+        )
+    except ValueError as error:
+        parser.error(str(error))
+    return args
 
 
-async def run(p_args: argparse.Namespace) -> RelayStats:
-    stats = RelayStats()
-    path = Impairment(p_args.delay_ms / 1000.0, p_args.jitter_ms / 1000.0, p_args.loss)
-    relay = Relay(p_args.server, path, p_args.seed, stats)
+async def _read_commands(p_relay: Relay, p_reader: asyncio.StreamReader) -> None:
+    while True:
+        try:
+            line = await p_reader.readline()
+        except ValueError:
+            say({"error": f"command longer than {MAX_COMMAND_BYTES} bytes"})
+            continue
+        if not line:
+            return  # the driver closed its end: no more commands, the relay goes on
+        text = line.decode("utf-8", "replace").strip()
+        if text:
+            say(p_relay.command(text))
+
+
+async def run(p_args: argparse.Namespace) -> Relay:
+    relay = Relay(p_args.server, p_args.model, p_args.seed)
     loop = asyncio.get_running_loop()
     transport, _ = await loop.create_datagram_endpoint(
         lambda: relay, local_addr=(p_args.listen_host, p_args.listen_port)
     )
+    _enlarge_receive_buffer(transport)
     stop = asyncio.Event()
     for signum in (signal.SIGTERM, signal.SIGINT):
         loop.add_signal_handler(signum, stop.set)
-    port = transport.get_extra_info("sockname")[1]
-    print(json.dumps({"listen_port": port}), flush=True)
+    commands = None
+    if p_args.control:
+        reader = asyncio.StreamReader(limit=MAX_COMMAND_BYTES)
+        try:
+            await loop.connect_read_pipe(lambda: asyncio.StreamReaderProtocol(reader), sys.stdin)
+        except (ValueError, OSError) as error:
+            transport.close()
+            raise UsageError(f"--control needs stdin to be a pipe: {error}") from error
+        commands = loop.create_task(_read_commands(relay, reader))
+    say({"listen_port": transport.get_extra_info("sockname")[1]})
     try:
         await asyncio.wait_for(stop.wait(), timeout=p_args.max_seconds)
     except asyncio.TimeoutError:
         pass
+    if commands is not None:
+        commands.cancel()
     relay.close()
-    return stats
+    return relay
 
 
 def main(p_argv: list[str]) -> int:
     args = parse_arguments(p_argv)
-    stats = asyncio.run(run(args))
+    try:
+        relay = asyncio.run(run(args))
+    except UsageError as error:
+        print(f"udp_relay.py: error: {error}", file=sys.stderr)
+        return 2
     if args.stats:
         with open(args.stats, "w", encoding="utf-8") as out:
-            json.dump(asdict(stats), out, indent=1)
+            json.dump(relay.stats(), out, indent=1)
     return 0
 
 

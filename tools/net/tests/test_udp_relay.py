@@ -3,69 +3,12 @@
 from __future__ import annotations
 
 import json
-import signal
-import socket
 import subprocess
 import sys
-import threading
 import time
-from pathlib import Path
 
 import pytest
-
-RELAY = Path(__file__).resolve().parents[1] / "udp_relay.py"
-# Generous bound for anything that waits on the relay process on a loaded 2-core machine.
-PATIENCE_S = 20.0
-
-
-class EchoServer:
-    """Sends every datagram back to its sender and remembers who sent."""
-
-    def __init__(self) -> None:
-        self.sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
-        self.sock.bind(("127.0.0.1", 0))
-        self.sock.settimeout(0.1)
-        self.port = self.sock.getsockname()[1]
-        self.senders: set[tuple[str, int]] = set()
-        self._running = True
-        self._thread = threading.Thread(target=self._serve, daemon=True)
-        self._thread.start()
-
-    def _serve(self) -> None:
-        while self._running:
-            try:
-                data, addr = self.sock.recvfrom(65536)
-            except socket.timeout:
-                continue
-            self.senders.add(addr)
-            self.sock.sendto(data, addr)
-
-    def close(self) -> None:
-        self._running = False
-        self._thread.join()
-        self.sock.close()
-
-
-class RelayProcess:
-    def __init__(self, p_server_port: int, p_stats: Path, *p_args: str) -> None:
-        self.proc = subprocess.Popen(
-            [sys.executable, str(RELAY), "--server", f"127.0.0.1:{p_server_port}",
-             "--stats", str(p_stats), "--max-seconds", "60", *p_args],
-            stdout=subprocess.PIPE, text=True,
-        )
-        line = self.proc.stdout.readline()
-        self.port = json.loads(line)["listen_port"]
-
-    def stop(self) -> int:
-        if self.proc.poll() is None:
-            self.proc.send_signal(signal.SIGTERM)
-        try:
-            return self.proc.wait(timeout=PATIENCE_S)
-        finally:
-            if self.proc.poll() is None:
-                self.proc.kill()
-                self.proc.wait()
-            self.proc.stdout.close()
+from relay_fixtures import RELAY, PATIENCE_S, Collector, EchoServer, RelayProcess, client, collect
 
 
 @pytest.fixture
@@ -73,40 +16,6 @@ def echo():
     server = EchoServer()
     yield server
     server.close()
-
-
-def client(p_port: int) -> socket.socket:
-    sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
-    sock.connect(("127.0.0.1", p_port))
-    sock.settimeout(PATIENCE_S)
-    return sock
-
-
-def collect(p_sock: socket.socket, p_count: int, p_quiet_s: float) -> list[bytes]:
-    """Datagrams until p_count arrived or nothing came for p_quiet_s."""
-    got: list[bytes] = []
-    p_sock.settimeout(p_quiet_s)
-    while len(got) < p_count:
-        try:
-            got.append(p_sock.recv(65536))
-        except socket.timeout:
-            break
-    return got
-
-
-class Collector:
-    """Reads a socket on a thread while the test sends (a burst would overflow its buffer)."""
-
-    def __init__(self, p_sock: socket.socket, p_count: int, p_quiet_s: float) -> None:
-        self.got: list[bytes] = []
-        self._thread = threading.Thread(
-            target=lambda: self.got.extend(collect(p_sock, p_count, p_quiet_s)), daemon=True
-        )
-        self._thread.start()
-
-    def join(self) -> list[bytes]:
-        self._thread.join()
-        return self.got
 
 
 def test_clean_path_echoes_everything_and_keeps_clients_apart(echo, tmp_path):
@@ -157,8 +66,10 @@ def test_loss_drops_about_the_stated_fraction_each_way(echo, tmp_path):
         reader = Collector(sock, 1000, 1.5)
         for i in range(1000):
             sock.send(b"%04d" % i)
-            if i % 50 == 49:
-                time.sleep(0.01)  # stay well under the socket buffers
+            if i % 10 == 9:
+                # About one a millisecond: well under the socket buffers even where the
+                # kernel caps them at 200 datagrams and the relay waits for a core.
+                time.sleep(0.01)
         got = reader.join()
         sock.close()
     finally:
@@ -230,10 +141,34 @@ def test_exits_by_itself_after_max_seconds(echo, tmp_path):
 
 @pytest.mark.parametrize(
     "bad", [["--server", "nohost"], ["--server", "127.0.0.1:7", "--loss", "1.5"],
-            ["--server", "127.0.0.1:7", "--delay-ms", "-3"]],
+            ["--server", "127.0.0.1:7", "--delay-ms", "-3"],
+            ["--server", "127.0.0.1:7", "--duplicate", "1"],
+            # Bursts need both numbers, a mean of at least one datagram, and a possible chain:
+            # bursts of 1 on average cannot lose more than half.
+            ["--server", "127.0.0.1:7", "--burst-loss", "0.1"],
+            ["--server", "127.0.0.1:7", "--burst-length", "4"],
+            ["--server", "127.0.0.1:7", "--burst-loss", "0.1", "--burst-length", "0.5"],
+            ["--server", "127.0.0.1:7", "--burst-loss", "0.6", "--burst-length", "1"],
+            # A centred jitter larger than the delay would ask for negative delays.
+            ["--server", "127.0.0.1:7", "--delay-ms", "20", "--jitter-ms", "30",
+             "--jitter-centred"]],
 )
 def test_bad_arguments_are_refused(bad):
     result = subprocess.run([sys.executable, str(RELAY), *bad], capture_output=True, text=True,
                             timeout=PATIENCE_S)
     assert result.returncode == 2
     assert "error:" in result.stderr
+    assert result.stdout == ""  # it never listened
+
+
+def test_control_needs_a_pipe(echo, tmp_path):
+    not_a_pipe = tmp_path / "commands.txt"
+    not_a_pipe.write_text("blackhole 0\n")
+    with open(not_a_pipe) as stdin:
+        result = subprocess.run(
+            [sys.executable, str(RELAY), "--server", f"127.0.0.1:{echo.port}", "--control",
+             "--max-seconds", "5"], stdin=stdin, capture_output=True, text=True,
+            timeout=PATIENCE_S)
+    assert result.returncode == 2
+    assert "--control needs stdin to be a pipe" in result.stderr
+    assert result.stdout == ""
