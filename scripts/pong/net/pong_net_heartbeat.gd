@@ -37,13 +37,20 @@ func due(now_s: float) -> bool:
 	if now_s < _next_beat_s:
 		return false
 	var interval: float = 1.0 / PongNetProtocol.HEARTBEAT_HZ
-	_next_beat_s = maxf(_next_beat_s + interval, now_s + interval * 0.5)
+	_next_beat_s += interval
+	if _next_beat_s <= now_s:
+		_next_beat_s = now_s + interval
 	return true
 
 
 ## Seconds since [param peer] was last heard (0 for a peer not watched).
 func silence_s(peer: int, now_s: float) -> float:
 	return now_s - _last_heard[peer] if _last_heard.has(peer) else 0.0
+
+
+## The peers watched.
+func peers() -> Array[int]:
+	return _last_heard.keys()
 
 
 ## The peers silent at [param now_s] for longer than their limit
@@ -58,13 +65,3 @@ func overdue(now_s: float, limit_of: Callable) -> Array[Array]:
 			_last_heard.erase(peer)
 			dead.append([peer, silence, limit])
 	return dead
-
-
-## The silence that drops the peer at the end of [param path], from ENet's measures of its
-## round trip and deviation (the ceiling when there is no such peer).
-static func timeout_on(path: ENetPacketPeer) -> float:
-	if path == null:
-		return PongNetProtocol.HEARTBEAT_TIMEOUT_MAX_S
-	var rtt_ms: float = path.get_statistic(ENetPacketPeer.PEER_ROUND_TRIP_TIME)
-	var jitter_ms: float = path.get_statistic(ENetPacketPeer.PEER_ROUND_TRIP_TIME_VARIANCE)
-	return PongNetProtocol.heartbeat_timeout_s(rtt_ms / 1000.0, jitter_ms / 1000.0)

@@ -5,13 +5,11 @@ extends Node
 ## peer 1) or joins, checks the protocol version at connect (auth: each side sends its
 ## [constant PongNetProtocol.VERSION]; a mismatch is refused with a message on both sides)
 ## and shortens ENet's timeouts; the cap follows each connection's round trip.
-## [br]A heartbeat ([PongNetHeartbeat], raw one-byte packets each way) drops a peer that has
-## been silent for [method PongNetProtocol.heartbeat_timeout_s] (1 to 3 s) at once, whatever
-## ENet's retransmissions are doing. The server takes at most
-## [constant PongNetProtocol.HALF_OPEN_PER_ADDRESS] unauthenticated connections per address
+## [br]A heartbeat ([PongNetHeartbeat], one-byte raw packets each way) drops a peer silent
+## for [method PongNetProtocol.heartbeat_timeout_s] (1 to 3 s) at once, whatever ENet's
+## retransmissions do. The server takes a few unauthenticated connections per address
 ## ([PongNetHalfOpen]), tells a client it refuses why ([method refuse]), and disconnects a
-## peer whose bad messages reach [constant PongNetProtocol.MISBEHAVIOUR_BUDGET]
-## ([method misbehaved], [PongNetBudget]).
+## peer whose bad messages reach the budget ([method misbehaved], [PongNetBudget]).
 
 ## Connected and authenticated (a client: to the server).
 signal connected
@@ -50,6 +48,9 @@ var _heartbeat: PongNetHeartbeat = PongNetHeartbeat.new()
 var _half_open: PongNetHalfOpen = PongNetHalfOpen.new()
 # The reason the server sent before it drops us (a client), or "".
 var _refusal: String = ""
+# Peers to drop at the next frame (see drop_now).
+var _drops: Array[int] = []
+var _patient_until: float = -INF
 
 
 ## Hosts on [param port] (all interfaces unless [param bind_ip]); "" or the error.
@@ -136,9 +137,7 @@ func refuse(peer: int, reason: String) -> void:
 	api.send_bytes(
 		packet, peer, MultiplayerPeer.TRANSFER_MODE_RELIABLE, PongNetProtocol.CHANNEL_RELIABLE
 	)
-	get_tree().create_timer(REFUSAL_GRACE_S, true, false, true).timeout.connect(
-		drop_now.bind(peer)
-	)
+	get_tree().create_timer(REFUSAL_GRACE_S, true, false, true).timeout.connect(drop_now.bind(peer))
 
 
 ## [param peer] sent a bad message ([param what], [param reason]). The first from a peer is
@@ -157,18 +156,18 @@ func misbehaved(peer: int, what: String, reason: String) -> bool:
 	return false
 
 
-## Drops [param peer] at once (no goodbye awaited); a server sees it leave at its next poll,
-## a client that drops the server loses it.
+## Server: drops [param peer] at this node's next frame, without awaiting a goodbye: its
+## departure is reported as any other (a match gives its seats to the computer).
 func drop_now(peer: int) -> void:
-	var api: SceneMultiplayer = _api()
-	if _peer == null or api == null:
-		return
-	var known: bool = api.get_peers().has(peer) or api.get_authenticating_peers().has(peer)
-	if not known or (not is_server and peer != PongNetAuthority.SERVER_ID):
-		return
-	var packet_peer: ENetPacketPeer = _peer.get_peer(peer)
-	if packet_peer != null:
-		packet_peer.peer_disconnect_now()
+	if is_server and not _drops.has(peer):
+		_drops.append(peer)
+
+
+## Every peer's silence may last up to [constant PongNetProtocol.HEARTBEAT_TIMEOUT_MAX_S] for
+## the next [param seconds]: every peer stalls as a match starts (it loads the court; 1.3
+## to 1.7 s here with four peers on two busy cores).
+func expect_stall(seconds: float) -> void:
+	_patient_until = maxf(_patient_until, _now_s() + seconds)
 
 
 func _exit_tree() -> void:
@@ -179,6 +178,7 @@ func _exit_tree() -> void:
 # round trip.
 func _process(delta: float) -> void:
 	if _peer != null:
+		_flush_drops()
 		_beat()
 	_retune_in -= delta
 	if _peer == null or _retune_in > 0.0:
@@ -194,21 +194,7 @@ func _process(delta: float) -> void:
 
 
 func _tune(id: int) -> void:
-	var packet_peer: ENetPacketPeer = _peer.get_peer(id)
-	if packet_peer == null:
-		return
-	var rtt: float = packet_peer.get_statistic(ENetPacketPeer.PEER_ROUND_TRIP_TIME)
-	var variance: float = packet_peer.get_statistic(ENetPacketPeer.PEER_ROUND_TRIP_TIME_VARIANCE)
-	packet_peer.set_timeout(
-		PongNetProtocol.TIMEOUT_LIMIT,
-		PongNetProtocol.TIMEOUT_MIN_MS,
-		PongNetProtocol.timeout_max_ms(rtt, variance)
-	)
-	packet_peer.throttle_configure(
-		PongNetProtocol.THROTTLE_INTERVAL_MS,
-		PongNetProtocol.THROTTLE_ACCELERATION,
-		PongNetProtocol.THROTTLE_DECELERATION
-	)
+	PongNetEnet.tune(_peer.get_peer(id))
 
 
 func _install() -> void:
@@ -224,6 +210,8 @@ func _install() -> void:
 
 
 func _reset() -> void:
+	_drops.clear()
+	_patient_until = -INF
 	last_error = ""
 	lost_reason = ""
 	_refusal = ""
@@ -239,34 +227,44 @@ static func _now_s() -> float:
 # Sends our beats when due, then drops every peer silent for longer than its path allows.
 func _beat() -> void:
 	var api: SceneMultiplayer = _api()
-	if api == null or _peer.get_connection_status() != MultiplayerPeer.CONNECTION_CONNECTED:
+	if api == null or _peer == null:
+		return
+	if _peer.get_connection_status() != MultiplayerPeer.CONNECTION_CONNECTED:
 		return
 	var now: float = _now_s()
 	var peers: PackedInt32Array = api.get_peers()
 	if beating and _heartbeat.due(now):
-		var beat: PackedByteArray = PackedByteArray([PongNetProtocol.PACKET_BEAT])
-		for peer: int in peers:
-			if is_server or peer == PongNetAuthority.SERVER_ID:
-				api.send_bytes(
-					beat, peer, MultiplayerPeer.TRANSFER_MODE_UNRELIABLE,
-					PongNetProtocol.CHANNEL_BEAT
-				)
+		PongNetEnet.beat(api, is_server)
+	var patient: bool = now < _patient_until
 	var limit_of: Callable = func(peer: int) -> float:
-		return PongNetHeartbeat.timeout_on(_peer.get_peer(peer) if peers.has(peer) else null)
+		if patient or not peers.has(peer):
+			return PongNetProtocol.HEARTBEAT_TIMEOUT_MAX_S
+		return PongNetEnet.heartbeat_limit(_peer.get_peer(peer))
 	for dead: Array in _heartbeat.overdue(now, limit_of):
 		var peer: int = dead[0]
 		var silence: float = dead[1]
+		var limit: float = dead[2]
 		printerr(
-			"PongNet: no word from peer %d for %.2f s (its limit %.2f s): dropped"
-			% [peer, silence, dead[2]]
+			"PongNet: peer %d silent for %.2f s (limit %.2f s): dropped" % [peer, silence, limit]
 		)
 		peer_silent.emit(peer, silence)
 		if is_server:
 			drop_now(peer)
+			_flush_drops()
 		else:
 			lost_reason = "no word from the server for %.1f s" % silence
 			_on_server_disconnected()
 			return
+
+
+# Drops the peers queued by drop_now (PongNetEnet.drop: Godot forgets them at once).
+func _flush_drops() -> void:
+	var api: SceneMultiplayer = _api()
+	if _drops.is_empty() or api == null:
+		return
+	var dropping: Array[int] = _drops
+	_drops = []
+	PongNetEnet.drop(api, _peer, dropping)
 
 
 # A raw packet: a heartbeat, or (from the server) why it refuses us.
@@ -307,10 +305,7 @@ func _on_authenticating(peer: int) -> void:
 		var address: String = _peer.get_peer(peer).get_remote_address()
 		for oldest: int in _half_open.add(peer, address, _now_s()):
 			printerr(
-				(
-					"PongNet: dropped unauthenticated peer %d: %s holds more than %d"
-					% [oldest, address, _half_open.per_address]
-				)
+				"PongNet: dropped unauthenticated peer %d of %s (too many)" % [oldest, address]
 			)
 			drop_now(oldest)
 	_api().send_auth(peer, version.to_utf8_buffer())

@@ -50,7 +50,6 @@ func _ball(
 # call with a wrong count with an error line per message, which a peer could flood the log
 # with; here it is one of the peer's bad messages (PongNetSession.misbehaved).
 
-
 @rpc("any_peer", "call_remote", "unreliable_ordered", PongNetProtocol.CHANNEL_POSE)
 func _pose(...args: Array) -> void:
 	var pose: Array = _args(args, 8, "pose")
