@@ -188,6 +188,30 @@ func test_a_turn_high_in_the_air_is_no_bounce() -> void:
 	assert_eq(judge.bounces().size(), 1)
 
 
+func test_a_bounce_counts_only_within_the_claimants_epoch() -> void:
+	var judge: PongNetHurtJudge = _judge()
+	judge.observe_floor(4.0, NEAR)
+	# The near seat's ball bounced at 4.0 s. A master from 1.0 to 3.0 s, or from 5.0 s on,
+	# cannot have seen it.
+	var ended: Array = judge.judge(5.5, 4.2, 0, 0, 1.0, 3.0)
+	assert_eq(ended[0], PongNetHurtJudge.Verdict.REFUSE, "after the claimant's epoch ended")
+	var later: Array = judge.judge(6.5, 5.2, 0, 0, 5.0)
+	assert_eq(later[0], PongNetHurtJudge.Verdict.REFUSE, "before the claimant's epoch began")
+	var slack: Array = judge.judge(4.3, 4.2, 0, 0, 1.0, 3.8)
+	assert_eq(slack[0], PongNetHurtJudge.Verdict.ACCEPT, "a leg's slack at the epoch's end")
+
+
+func test_the_master_trusts_its_servos_floor_events_not_turns_of_the_ball() -> void:
+	var judge: PongNetHurtJudge = _judge()
+	# Our own paddle lifts the ball just above the floor while we are the master.
+	judge.observe(1.0, Vector3(0.0, 0.15, 1.0), Vector3(0.0, -3.0, 1.0), true)
+	judge.observe(1.005, Vector3(0.0, 0.16, 1.0), Vector3(0.0, 4.0, -3.0), true)
+	assert_eq(judge.bounces(), [], "no floor event: no bounce")
+	judge.observe_floor(2.0, NEAR, true)
+	assert_eq(judge.bounces().size(), 1, "the servo's bounce, charged already")
+	assert_eq(judge.judge(3.5, 2.1, 0, 0)[0], PongNetHurtJudge.Verdict.REFUSE)
+
+
 func test_the_margin_is_only_for_the_territory_the_ball_was_in() -> void:
 	var judge: PongNetHurtJudge = _judge()
 	# Our copy bounced 0.4 m past the line into the near half; the master's, in the far.

@@ -19,6 +19,9 @@ var _report: PongNetReport = null
 var _reject: Callable = Callable()
 # Claims waiting for their bounce to show in our path: [sender, epoch, victim, arrived at].
 var _pending: Array[Array] = []
+# When (match seconds) this peer first saw each epoch, and the last epoch it saw.
+var _epoch_from: Dictionary[int, float] = {}
+var _seen_epoch: int = 0
 
 
 ## Follows [param p_match]; sends through [param wire]; [param p_reject] as
@@ -61,7 +64,11 @@ func on_event(event: Dictionary) -> void:
 func observe(snapshot: HapticPongState) -> void:
 	if not _is_server():
 		return
-	judge.observe(_match.now, snapshot.ball_position, snapshot.ball_velocity)
+	for epoch: int in range(_seen_epoch + 1, _authority.epoch + 1):
+		_epoch_from[epoch] = _match.now
+	_seen_epoch = maxi(_seen_epoch, _authority.epoch)
+	var master: bool = _authority.is_master()
+	judge.observe(_match.now, snapshot.ball_position, snapshot.ball_velocity, master)
 	_settle()
 
 
@@ -115,7 +122,9 @@ func _settle() -> void:
 		var victim: int = claim[2]
 		var territory: int = _authority.territory_at(epoch)
 		var arrived: float = claim[3]
-		var verdict: Array = judge.judge(_match.now, arrived, victim, territory)
+		var from: float = _epoch_from.get(epoch, -INF)
+		var to: float = _epoch_from.get(epoch + 1, INF)
+		var verdict: Array = judge.judge(_match.now, arrived, victim, territory, from, to)
 		match verdict[0]:
 			PongNetHurtJudge.Verdict.ACCEPT:
 				_charge(epoch, victim)

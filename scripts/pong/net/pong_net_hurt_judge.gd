@@ -1,13 +1,16 @@
 class_name PongNetHurtJudge
 extends RefCounted
 ## The server's judgement of a floor hurt a master reports: possible only when the ball's
-## path, as this peer's servo ran it, bounced on the floor in the victim's territory at
-## about that time, when that bounce has not been charged already (one hurt per bounce),
-## and when the victim has not lost more floor points lately than a ball can bounce.
-## [br]The path is recorded from two sources: the servo's own floor events, and the ball's
-## state each frame, where a vertical velocity that turns from down to up near the floor
-## is a bounce too (a follower's ball takes the master's velocity with each state it
-## receives, so it may turn before touching the floor itself). Times are match seconds.
+## path, as this peer's servo ran it, bounced on the floor in the victim's territory while
+## the claimant was the master (within the claim's epoch), when that bounce has not been
+## charged already (one hurt per bounce), and when the victim has not lost more floor points
+## lately than a ball can bounce.
+## [br]The path is recorded from two sources: the servo's own floor events, and, while this
+## peer follows another's ball, its state each frame, where a vertical velocity that turns
+## from down to up near the floor is a bounce too (a follower's ball takes the master's
+## velocity with each state it receives, so it may turn before touching the floor itself).
+## While this peer is the master its servo's events are the whole truth. Times are match
+## seconds.
 ## [br]A claim of the territory the ball was in at the claim's epoch may match a bounce up to
 ## [constant TERRITORY_MARGIN_M] outside it (our copy of the ball follows the master's a
 ## little late and blended); a claim of any other territory (the master's ball crossed and
@@ -20,6 +23,9 @@ enum Verdict { ACCEPT, WAIT, REFUSE }
 const LOOKBACK_S: float = 3.0
 ## How long a claim may wait for its bounce to appear in our path, seconds.
 const WAIT_S: float = 1.0
+## How far outside its epoch (as this peer applied the transfers) a bounce may lie: our copy
+## of the ball and the transfers each come about a leg late, seconds.
+const EPOCH_SLACK_S: float = 0.3
 ## Two bounces recorded closer in time than this are one (the servo's event and the turn
 ## of the velocity seen at the next frame); a real ball bounces again no sooner than
 ## 2 x 0.8 m/s / 6 m/s^2 = 0.27 s.
@@ -61,9 +67,10 @@ func _init(p_court: PongCourt, p_seats: int) -> void:
 	_tokens_at.fill(-INF)
 
 
-## The ball at [param t]: [param position], [param velocity] (each frame).
-func observe(t: float, position: Vector3, velocity: Vector3) -> void:
-	if not _last.is_empty():
+## The ball at [param t]: [param position], [param velocity] (each frame); [param master]:
+## this peer simulates it for everyone (its floor events say when it bounced).
+func observe(t: float, position: Vector3, velocity: Vector3, master: bool = false) -> void:
+	if not _last.is_empty() and not master:
 		var t0: float = _last[0]
 		var p0: Vector3 = _last[1]
 		var v0: Vector3 = _last[2]
@@ -82,18 +89,28 @@ func observe_floor(t: float, position: Vector3, charged: bool = false) -> void:
 
 
 ## A claim that arrived at [param claimed_at] that [param victim] lost a point to a floor
-## bounce while the ball was in [param epoch_territory], judged at [param now]: [verdict,
-## why]. ACCEPT charges the bounce; WAIT: ask again later (no bounce yet, and the claim is
-## younger than [constant WAIT_S]).
-func judge(now: float, claimed_at: float, victim: int, epoch_territory: int) -> Array:
+## bounce in an epoch that put the ball in [param epoch_territory] and lasted from
+## [param epoch_from] to [param epoch_to] (INF: it still does), judged at [param now]:
+## [verdict, why]. ACCEPT charges the bounce; WAIT: ask again later (no bounce yet, and the
+## claim is younger than [constant WAIT_S]).
+func judge(
+	now: float,
+	claimed_at: float,
+	victim: int,
+	epoch_territory: int,
+	epoch_from: float = -INF,
+	epoch_to: float = INF
+) -> Array:
 	if victim < 0 or victim >= seats:
 		return [Verdict.REFUSE, "victim %d of %d seats" % [victim, seats]]
 	var margin: float = TERRITORY_MARGIN_M if victim == epoch_territory else 0.0
+	var earliest: float = maxf(claimed_at - LOOKBACK_S, epoch_from - EPOCH_SLACK_S)
+	var latest: float = minf(now, epoch_to + EPOCH_SLACK_S)
 	var charged_match: bool = false
 	for bounce: Array in _bounces:
 		var t: float = bounce[0]
 		var at: Vector3 = bounce[1]
-		if t < claimed_at - LOOKBACK_S or t > now or not _near(at, victim, margin):
+		if t < earliest or t > latest or not _near(at, victim, margin):
 			continue
 		if bounce[2]:
 			charged_match = true
@@ -109,10 +126,7 @@ func judge(now: float, claimed_at: float, victim: int, epoch_territory: int) -> 
 		return [Verdict.WAIT, ""]
 	if charged_match:
 		return [Verdict.REFUSE, "its bounce in territory %d was charged already" % victim]
-	return [
-		Verdict.REFUSE,
-		"no floor bounce in territory %d here within %.1f s" % [victim, LOOKBACK_S + WAIT_S]
-	]
+	return [Verdict.REFUSE, "no floor bounce in territory %d in its epoch here" % victim]
 
 
 ## Bounces recorded and still remembered, [time, position, charged] each.
