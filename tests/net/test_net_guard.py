@@ -179,7 +179,8 @@ def test_a_client_refused_by_a_running_match_is_told_why() -> None:
             finally:
                 late.kill()
 
-        peers, _ = run_match(work, 2, NETWORKS["lan"], 8, on_running=join_late)
+        # The match lasts long enough for a third engine to start on a busy machine.
+        peers, _ = run_match(work, 2, NETWORKS["lan"], 25, on_running=join_late)
         late = refused[0]
         assert late.report["exit"] == "failed" and late.proc.returncode == 2, late.log()
         assert late.report["error"] == "the server refused us: a match is running", late.report
@@ -244,7 +245,10 @@ def test_a_connect_flood_and_silent_connections_do_not_keep_a_player_out() -> No
                   f"joined in {join_s:.2f} s")
             assert join_s < JOIN_BOUND_S
             assert client.wait() == 0 and host.wait() == 0, _logs(started)
-            assert host.report["exit"] == "time" and client.report["exit"] == "time"
+            # Each quits at its own match clock: the client may see the host go first.
+            assert host.report["exit"] == "time", _logs(started)
+            assert client.report["exit"] in ("time", "server lost"), _logs(started)
+            assert client.report["seat"] == 1, client.report
             _no_engine_errors(host)
             # The silent connections from this address beyond the first few were let go.
             dropped = host.log().count("dropped unauthenticated peer")
