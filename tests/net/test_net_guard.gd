@@ -56,6 +56,19 @@ func test_a_silent_peer_is_overdue_once_and_a_heard_one_never() -> void:
 	assert_eq(beat.peers(), [], "a beat from a peer not watched is ignored")
 
 
+func test_a_peer_that_says_it_stalls_may_be_silent_until_its_next_beat() -> void:
+	var beat: PongNetHeartbeat = PongNetHeartbeat.new()
+	beat.watch(7, 0.0)
+	beat.heard(7, 1.0)
+	beat.stalls(7, 1.1)
+	assert_true(beat.is_stalling(7))
+	assert_almost_eq(beat.silence_s(7, 2.6), 1.5, 1e-9, "silent since its notice")
+	beat.heard(7, 2.6)
+	assert_false(beat.is_stalling(7), "its next beat ends the stall")
+	beat.stalls(9, 3.0)
+	assert_false(beat.is_stalling(9), "a peer not watched cannot stall")
+
+
 # --- bad messages ---
 
 

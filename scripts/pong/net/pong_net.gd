@@ -199,7 +199,7 @@ func _begin(owners: PackedInt64Array, health: int) -> void:
 	close_screen()
 	get_tree().paused = false
 	var me: int = multiplayer.get_unique_id()
-	session.expect_stall(PongNetProtocol.MATCH_START_STALL_S)
+	session.announce_stall()
 	screen = PONG_SCENE.instantiate() as PongScreen
 	screen.stepped = stepped
 	screen.players = seats

@@ -24,15 +24,26 @@ static func tune(packet_peer: ENetPacketPeer) -> void:
 
 
 ## Sends a heartbeat (one byte, unreliable, its own channel) through [param api]: a server
-## to every client, a client to the server once it has passed the version check.
+## to every client, a client to the server once it has passed the version check. Ordered,
+## so that ENet never hands over a beat older than a stall notice that followed it.
 static func beat(api: SceneMultiplayer, server: bool) -> void:
-	var packet: PackedByteArray = PackedByteArray([PongNetProtocol.PACKET_BEAT])
+	var ordered: MultiplayerPeer.TransferMode = MultiplayerPeer.TRANSFER_MODE_UNRELIABLE_ORDERED
+	_send_watch(api, server, PongNetProtocol.PACKET_BEAT, ordered)
+
+
+## Says to the same peers, reliably on the heartbeat's channel (no beat overtakes it), that
+## this peer is about to stall.
+static func send_stall(api: SceneMultiplayer, server: bool) -> void:
+	_send_watch(api, server, PongNetProtocol.PACKET_STALL, MultiplayerPeer.TRANSFER_MODE_RELIABLE)
+
+
+static func _send_watch(
+	api: SceneMultiplayer, server: bool, kind: int, mode: MultiplayerPeer.TransferMode
+) -> void:
+	var packet: PackedByteArray = PackedByteArray([kind])
 	for peer: int in api.get_peers():
-		if not server and peer != PongNetAuthority.SERVER_ID:
-			continue
-		api.send_bytes(
-			packet, peer, MultiplayerPeer.TRANSFER_MODE_UNRELIABLE, PongNetProtocol.CHANNEL_BEAT
-		)
+		if server or peer == PongNetAuthority.SERVER_ID:
+			api.send_bytes(packet, peer, mode, PongNetProtocol.CHANNEL_BEAT)
 
 
 ## The silence that drops the peer at the end of [param path], from ENet's measures of its

@@ -6,6 +6,8 @@ extends RefCounted
 
 var _last_heard: Dictionary[int, float] = {}
 var _next_beat_s: float = -INF
+# Peers that said they are about to stall, until their next beat.
+var _stalling: Dictionary[int, bool] = {}
 
 
 ## Starts watching [param peer] (just connected): it counts as heard at [param now_s].
@@ -16,11 +18,13 @@ func watch(peer: int, now_s: float) -> void:
 ## Stops watching [param peer] (gone).
 func forget(peer: int) -> void:
 	_last_heard.erase(peer)
+	_stalling.erase(peer)
 
 
 ## Forgets everyone (the session closed).
 func clear() -> void:
 	_last_heard.clear()
+	_stalling.clear()
 	_next_beat_s = -INF
 
 
@@ -29,6 +33,20 @@ func clear() -> void:
 func heard(peer: int, now_s: float) -> void:
 	if _last_heard.has(peer):
 		_last_heard[peer] = maxf(_last_heard[peer], now_s)
+		_stalling.erase(peer)
+
+
+## [param peer] said it is about to stall (it loads a match); it counts as heard at
+## [param now_s], and [method is_stalling] until its next beat.
+func stalls(peer: int, now_s: float) -> void:
+	if _last_heard.has(peer):
+		_last_heard[peer] = maxf(_last_heard[peer], now_s)
+		_stalling[peer] = true
+
+
+## Whether [param peer] said it stalls and has not beaten since.
+func is_stalling(peer: int) -> bool:
+	return _stalling.has(peer)
 
 
 ## Whether our beats are due at [param now_s]; when they are, the next ones are scheduled

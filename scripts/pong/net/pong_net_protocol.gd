@@ -107,13 +107,14 @@ const HEARTBEAT_MISSES: int = 4
 ## four-peer match on two cores (170 ms) several times over; the ceiling is the promise.
 const HEARTBEAT_TIMEOUT_MIN_S: float = 1.0
 const HEARTBEAT_TIMEOUT_MAX_S: float = 3.0
-## Seconds after a match starts during which a peer's silence may last the ceiling: every
-## peer loads the court then (1.3 to 1.7 s of silence with four peers on two busy cores).
-const MATCH_START_STALL_S: float = 6.0
-## Raw packets (SceneMultiplayer.send_bytes) start with their kind: a heartbeat, or the
-## reason the server refuses a client (UTF-8 after the kind byte).
+## Raw packets (SceneMultiplayer.send_bytes) start with their kind: a heartbeat, the reason
+## the server refuses a client (UTF-8 after the kind byte), or a peer's word that it is
+## about to stall (it loads a match's court: 1.3 to 1.7 s of silence with four peers on two
+## busy cores), sent reliably on the heartbeat's channel, after which its silence may last
+## the ceiling until its next beat.
 const PACKET_BEAT: int = 1
 const PACKET_REFUSAL: int = 2
+const PACKET_STALL: int = 3
 ## Longest refusal reason sent or taken, bytes.
 const MAX_REFUSAL_BYTES: int = 200
 

@@ -50,7 +50,6 @@ var _half_open: PongNetHalfOpen = PongNetHalfOpen.new()
 var _refusal: String = ""
 # Peers to drop at the next frame (see drop_now).
 var _drops: Array[int] = []
-var _patient_until: float = -INF
 
 
 ## Hosts on [param port] (all interfaces unless [param bind_ip]); "" or the error.
@@ -163,11 +162,13 @@ func drop_now(peer: int) -> void:
 		_drops.append(peer)
 
 
-## Every peer's silence may last up to [constant PongNetProtocol.HEARTBEAT_TIMEOUT_MAX_S] for
-## the next [param seconds]: every peer stalls as a match starts (it loads the court; 1.3
-## to 1.7 s here with four peers on two busy cores).
-func expect_stall(seconds: float) -> void:
-	_patient_until = maxf(_patient_until, _now_s() + seconds)
+## Tells the connected peers that this one is about to stall (it loads a match's court): its
+## silence may then last the ceiling, [constant PongNetProtocol.HEARTBEAT_TIMEOUT_MAX_S],
+## until its next beat.
+func announce_stall() -> void:
+	var api: SceneMultiplayer = _api()
+	if _peer != null and api != null:
+		PongNetEnet.send_stall(api, is_server)
 
 
 func _exit_tree() -> void:
@@ -211,7 +212,6 @@ func _install() -> void:
 
 func _reset() -> void:
 	_drops.clear()
-	_patient_until = -INF
 	last_error = ""
 	lost_reason = ""
 	_refusal = ""
@@ -235,9 +235,8 @@ func _beat() -> void:
 	var peers: PackedInt32Array = api.get_peers()
 	if beating and _heartbeat.due(now):
 		PongNetEnet.beat(api, is_server)
-	var patient: bool = now < _patient_until
 	var limit_of: Callable = func(peer: int) -> float:
-		if patient or not peers.has(peer):
+		if _heartbeat.is_stalling(peer) or not peers.has(peer):
 			return PongNetProtocol.HEARTBEAT_TIMEOUT_MAX_S
 		return PongNetEnet.heartbeat_limit(_peer.get_peer(peer))
 	for dead: Array in _heartbeat.overdue(now, limit_of):
@@ -272,6 +271,9 @@ func _on_packet(peer: int, packet: PackedByteArray) -> void:
 	var kind: int = packet[0] if not packet.is_empty() else -1
 	if kind == PongNetProtocol.PACKET_BEAT and packet.size() == 1:
 		_heartbeat.heard(peer, _now_s())
+		return
+	if kind == PongNetProtocol.PACKET_STALL and packet.size() == 1:
+		_heartbeat.stalls(peer, _now_s())
 		return
 	var from_server: bool = peer == PongNetAuthority.SERVER_ID and not is_server
 	if kind == PongNetProtocol.PACKET_REFUSAL and from_server:

@@ -25,6 +25,8 @@ const EVERY_S: float = 0.5
 const FORGED: int = 120
 const FORGED_PER_FRAME: int = 10
 const HIT_MARK: String = "PongNet rogue: my paddle hit the ball, I am the master"
+## Match seconds before a hit is marked: past the court's loading stall, and its first beat.
+const MARK_AFTER_S: float = 3.0
 
 var _cli: PongNetCli = PongNetCli.new()
 var _mode: String = "bad"
@@ -67,7 +69,7 @@ func _on_event(event: Dictionary) -> void:
 	if str(event.get("type", "")) != "paddle" or not play.authority.is_master():
 		return
 	var seat: int = event.get("player", -1)
-	if seat == _cli.net.my_seat() and _match_clock > PongNetProtocol.MATCH_START_STALL_S:
+	if seat == _cli.net.my_seat() and _match_clock > MARK_AFTER_S:
 		print("%s (match second %.2f)" % [HIT_MARK, _match_clock])
 
 
