@@ -298,3 +298,31 @@ func test_only_the_server_charges_floor_hurts_on_a_client() -> void:
 	hurts.on_hurt(HOST, 0, 5, "floor")
 	assert_eq(rules.get_health(0), start - 1)
 	assert_eq(play.report.refused.get("hurt", 0), 3)
+
+
+func test_a_weapon_hurt_needs_a_weapon_that_could_reach_the_victim() -> void:
+	var play: RecordingPlay = _open_play()
+	if play == null:
+		return
+	var weapons: PongNetWeapons = play.weapons
+	var rules: PongRules = play.match_node.rules
+	# The client's shots from its half: one toward its own back wall, one toward the host.
+	var origin: Vector3 = Vector3(0.0, 0.8, -2.0)
+	weapons.on_bullet(CLIENT, 1, 0, origin, Vector3.FORWARD, 10.0)
+	weapons.on_bullet(CLIENT, 1, 1, origin, Vector3.BACK, 10.5)
+	assert_eq(weapons.shots, [[1, 0], [1, 1]], "both flew")
+	weapons.on_hurt(HOST, 0, "bullet", 1, 0)
+	assert_eq(rules.get_health(0), 99, "a shot away from the host's half cannot hit it")
+	assert_eq(play.report.refused.get("weapon hurt", 0), 1)
+	weapons.on_hurt(HOST, 0, "bullet", 1, 1)
+	assert_eq(rules.get_health(0), 99 - PongRules.DAMAGE[PongRules.CAUSE_BULLET], "this one can")
+
+
+func test_a_mine_reaches_only_the_territory_it_lies_in_or_next_to() -> void:
+	var reach: float = PongMines.TRIGGER_RADIUS_M
+	var near: Callable = PongNetProtocol.near_territory
+	# The square court: territory 0 is z >= |x|, 2 is x > |z|.
+	assert_true(near.call(Vector3(0.0, 0.0, 2.0), 0, 4, reach))
+	assert_false(near.call(Vector3(0.0, 0.0, 2.0), 2, 4, reach), "deep in 0: not 2's")
+	assert_true(near.call(Vector3(1.0, 0.0, 1.2), 2, 4, reach), "0.14 m from the diagonal")
+	assert_false(near.call(Vector3(0.0, 0.0, -2.0), 0, 4, reach), "across the court")
