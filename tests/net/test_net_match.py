@@ -41,8 +41,6 @@ DIVERGENCE_P99_M = {
 # each way once ENet has measured it; its first estimates run high), plus a ping interval.
 DETECTION_BOUND_S = 6.0
 CONTACT_TOLERANCE = 0.10
-# The misbehaving peer (a test tool: not part of the game or its exports).
-ROGUE_SCENE = "res://tests/net/rogue/rogue_peer.tscn"
 RALLY_SECONDS = 12
 
 
@@ -179,37 +177,6 @@ def test_killed_peer_is_taken_over_by_the_computer() -> None:
         later = [t for t in host["transfers"] if t["wall_s"] > left[0]["wall_s"]]
         assert all(t["master"] == 1 for t in later), later
         assert len([t for t in later if t["kind"] == 2]) <= 1
-
-
-def test_bad_messages_are_dropped_and_the_game_goes_on() -> None:
-    with workspace() as work:
-        peers, _ = run_match(work, 2, NETWORKS["lan"], 6, client_scenes=(ROGUE_SCENE,))
-        host = peers[0]
-        assert host.report["exit_code"] == 0, host.log()
-        refused = host.report["refused"]
-        for kind in ("ball state", "pose", "transfer", "hurt", "hand-off request", "owners",
-                     "bullet", "mine", "weapon hurt"):
-            assert refused.get(kind, 0) >= 1, (kind, refused)
-        log = host.log()
-        for reason in ("epoch is a String", "position (99.0, 99.0, 99.0) is out of range",
-                       "velocity is not finite", "avatar is a String", "seat 7 is out of",
-                       "leg -5 is out of",
-                       "seat 0 is not theirs", "only the server issues them",
-                       "was not the master at epoch", "dropped hand-off request",
-                       "cause xxxxxxxx", "owners from peer",
-                       # Weapons (rogue_peer.gd, _attack_weapons).
-                       "origin (99.0, 99.0, 99.0) is out of range", "is not after",
-                       "after its last shot", "mine position is a String",
-                       "is not mine 2's, remote", "is not theirs to judge",
-                       "of seat 0 came here", "is not a weapon"):
-            assert reason in log, (reason, [l for l in log.splitlines() if "dropped" in l])
-        # Still playing after the attack: both masters kept sending (how much each sent depends
-        # on how long the rally stayed on its side: measured 37 to 186 of the rogue's in 6 s),
-        # the host took the rogue's honest states, and the rogue did not touch its health.
-        sent = peers[1].report["sent"]
-        assert sent > 0 and host.report["sent"] > 0, (sent, host.report["sent"])
-        assert host.report["states"] >= 0.9 * sent, (sent, host.report["states"])
-        assert host.report["health"][1] >= host.report["health"][0] - 10
 
 
 def test_version_mismatch_is_refused_on_both_sides() -> None:

@@ -65,7 +65,7 @@ func _process(delta: float) -> void:
 
 ## Hosts a game on [param port]; a player's host takes seat 0. "" or the error.
 func host(port: int) -> String:
-	var error: String = session.host(port, PongNetProtocol.MAX_SEATS + 2)
+	var error: String = session.host(port, PongNetProtocol.ENET_SLOTS)
 	if not error.is_empty():
 		status_changed.emit(error)
 		return error
@@ -179,33 +179,15 @@ func _after_peer_left(peer: int) -> void:
 		return
 	_broadcast_lobby()
 	if play.is_running():
-		_take_over(peer)
-
-
-# Server: the peer's seats go to the computer; a ball it was master of is taken over.
-func _take_over(peer: int) -> void:
-	var authority: PongNetAuthority = play.authority
-	var was_master: bool = authority.master_peer == peer
-	var freed: PackedInt32Array = authority.release_peer(peer)
-	var left: Array = play.report.extra.get_or_add("peers_left", [])
-	left.append({"peer": peer, "seats": Array(freed), "wall_s": PongNetReport.now()})
-	play.send_all(&"_owners", [authority.owners])
-	seats_changed()
-	var pending: bool = authority.master_peer == 0 or not authority.is_master()
-	if was_master or (pending and authority.owner_of(authority.territory) == 1):
-		var s: HapticPongState = play.match_node.snapshot
-		play.issue(
-			PongNetProtocol.TRANSFER_TAKEOVER,
-			s.territory,
-			s.ball_position,
-			s.ball_velocity,
-			s.ball_spin,
-			0
-		)
+		play.take_over(peer)
 
 
 func _on_server_lost() -> void:
-	status_changed.emit("The server is gone")
+	status_changed.emit("The server is gone (%s)" % session.lost_reason)
+	if play.is_running():
+		play.report.extra["server_lost"] = {
+			"wall_s": PongNetReport.now(), "why": session.lost_reason
+		}
 	_end_match(-1, "server lost")
 	players.clear()
 	lobby_changed.emit()
@@ -217,6 +199,7 @@ func _begin(owners: PackedInt64Array, health: int) -> void:
 	close_screen()
 	get_tree().paused = false
 	var me: int = multiplayer.get_unique_id()
+	session.announce_stall()
 	screen = PONG_SCENE.instantiate() as PongScreen
 	screen.stepped = stepped
 	screen.players = seats
@@ -309,7 +292,7 @@ func _broadcast_lobby() -> void:
 
 func _on_ready(peer: int, is_ready: Variant) -> void:
 	if typeof(is_ready) != TYPE_BOOL or not players.has(peer):
-		printerr("PongNet: dropped ready from peer %d: not a bool or not in the lobby" % peer)
+		session.misbehaved(peer, "ready", "not a bool or not in the lobby")
 		return
 	players[peer]["ready"] = is_ready
 	_broadcast_lobby()
@@ -325,63 +308,80 @@ func _free_seat() -> int:
 	return -1
 
 
+# The lobby's messages take their arguments as a list, so a wrong count is one of our bad
+# messages, not an engine error (PongNetProtocol.check_arity); [] when it is wrong.
+func _args(args: Array, count: int, what: String) -> Array:
+	var reason: String = PongNetProtocol.check_arity(args, count)
+	if reason.is_empty():
+		return args
+	session.misbehaved(multiplayer.get_remote_sender_id(), what, reason)
+	return []
+
+
 @rpc("any_peer", "call_remote", "reliable", PongNetProtocol.CHANNEL_HANDSHAKE)
-func _hello(player_name: Variant) -> void:
+func _hello(...args: Array) -> void:
 	var sender: int = multiplayer.get_remote_sender_id()
-	if not session.is_server:
+	var hello: Array = _args(args, 1, "hello")
+	if not session.is_server or hello.is_empty():
 		return
-	var reason: String = PongNetProtocol.check_name(player_name)
-	if reason.is_empty() and play.is_running():
-		reason = "a match is running"
+	var reason: String = PongNetProtocol.check_name(hello[0])
+	if not reason.is_empty() or players.has(sender):
+		session.misbehaved(sender, "hello", reason if not reason.is_empty() else "a second one")
+		return
 	var seat: int = _free_seat()
-	if reason.is_empty() and seat < 0:
-		reason = "the game is full"
-	if not reason.is_empty():
-		printerr("PongNet: refused peer %d: %s" % [sender, reason])
-		(multiplayer as SceneMultiplayer).disconnect_peer(sender)
+	if play.is_running() or seat < 0:
+		session.refuse(sender, "a match is running" if play.is_running() else "the server is full")
 		return
+	var player_name: String = hello[0]
 	players[sender] = {"name": player_name, "seat": seat, "ready": false}
 	status_changed.emit("%s joined (seat %d)" % [player_name, seat])
 	_broadcast_lobby()
 
 
 @rpc("any_peer", "call_remote", "reliable", PongNetProtocol.CHANNEL_RELIABLE)
-func _ready_up(is_ready: Variant) -> void:
-	if session.is_server:
-		_on_ready(multiplayer.get_remote_sender_id(), is_ready)
+func _ready_up(...args: Array) -> void:
+	var ready_args: Array = _args(args, 1, "ready")
+	if session.is_server and not ready_args.is_empty():
+		_on_ready(multiplayer.get_remote_sender_id(), ready_args[0])
 
 
 @rpc("any_peer", "call_remote", "reliable", PongNetProtocol.CHANNEL_RELIABLE)
-func _lobby(rows: Variant, seat_count: Variant) -> void:
+func _lobby(...args: Array) -> void:
 	var sender: int = multiplayer.get_remote_sender_id()
-	var reason: String = PongNetProtocol.check_lobby(rows, seat_count)
+	var lobby: Array = _args(args, 2, "lobby")
+	if lobby.is_empty():
+		return
+	var reason: String = PongNetProtocol.check_lobby(lobby[0], lobby[1])
 	if sender != PongNetAuthority.SERVER_ID:
 		reason = "only the server sends it"
 	if not reason.is_empty():
-		printerr("PongNet: dropped lobby from peer %d: %s" % [sender, reason])
+		session.misbehaved(sender, "lobby", reason)
 		return
 	var table: Dictionary[int, Dictionary] = {}
-	var list: Array = rows
+	var list: Array = lobby[0]
 	for row: Array in list:
 		table[row[0]] = {"name": row[1], "seat": row[2], "ready": row[3]}
-	seats = seat_count
+	seats = lobby[1]
 	players = table
 	lobby_changed.emit()
 
 
 @rpc("any_peer", "call_remote", "reliable", PongNetProtocol.CHANNEL_RELIABLE)
-func _start(owners: Variant, health: Variant) -> void:
+func _start(...args: Array) -> void:
 	var sender: int = multiplayer.get_remote_sender_id()
-	var reason: String = PongNetProtocol.check_int(health, 1, 999, "health")
+	var start: Array = _args(args, 2, "start")
+	if start.is_empty():
+		return
+	var reason: String = PongNetProtocol.check_int(start[1], 1, 999, "health")
 	if sender != PongNetAuthority.SERVER_ID:
 		reason = "only the server starts a match"
 	var list: PackedInt64Array = PackedInt64Array()
-	if typeof(owners) == TYPE_PACKED_INT64_ARRAY:
-		list = owners
+	if typeof(start[0]) == TYPE_PACKED_INT64_ARRAY:
+		list = start[0]
 	if reason.is_empty() and list.size() != seats:
 		reason = "owners is not %d peer ids" % seats
 	if not reason.is_empty():
-		printerr("PongNet: dropped start from peer %d: %s" % [sender, reason])
+		session.misbehaved(sender, "start", reason)
 		return
-	var start_with: int = health
+	var start_with: int = start[1]
 	_begin(list, start_with)

@@ -119,6 +119,14 @@ func master_at(at_epoch: int) -> int:
 	return 0
 
 
+## The territory transfer [param at_epoch] put the ball in (-1 before the first or unknown).
+func territory_at(at_epoch: int) -> int:
+	for transfer: Dictionary in history:
+		if transfer.get("epoch", -1) == at_epoch:
+			return transfer.get("territory", -1)
+	return -1
+
+
 ## The peer left: its seats go to the server (a computer player). Returns the seats.
 func release_peer(peer: int) -> PackedInt32Array:
 	var freed: PackedInt32Array = PackedInt32Array()

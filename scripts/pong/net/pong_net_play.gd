@@ -8,9 +8,11 @@ extends PongNetWire
 ## received state forward to now and blend their ball onto it ([PongNetSmoother]). Each
 ## peer sends the poses of the paddles it drives; other peers' paddles are kinematic
 ## inputs of the local servo ([PongNetPoses], [PongNetRemotePlayer]). Health changes come
-## from the peer that saw them (the master for floor bounces) as reliable messages. Every
-## received message is checked ([PongNetProtocol]); a bad one is dropped with a log line.
-## Messages are aged by [PongNetLatency].
+## as reliable messages: floor bounces from the server, which judges the master's claims
+## against the ball's path ([PongNetFloorHurts]), weapon hurts from the victim's peer
+## ([PongNetWeapons]). Every received message is checked ([PongNetProtocol]); a bad one is
+## dropped and counted against its sender ([method PongNetSession.misbehaved]). Messages are
+## aged by [PongNetLatency].
 ##
 ## RPC surface: the same methods at the same path on every peer (/root/PongNet/Play).
 ## The play node lives as long as the session (RPCs may arrive before or after a match).
@@ -79,6 +81,7 @@ func begin(p_match: PongMatch, p_authority: PongNetAuthority, seats: PackedInt32
 		_latency = PongNetLatency.new(session)
 	weapons = PongNetWeapons.new(self, match_node, authority, _reject, _age_of)
 	poses = PongNetPoses.new(self, match_node, authority, report, _reject, _age_of)
+	floor_hurts = PongNetFloorHurts.new(self, match_node, authority, report, _reject)
 	report.extra["weapons"] = weapons.to_dict()
 	# The servo's clock may have started over with the match.
 	_last_sent_time = -INF
@@ -95,6 +98,7 @@ func end() -> void:
 		weapons.expire_pending(true)
 	weapons = null
 	poses = null
+	floor_hurts = null
 
 
 func is_running() -> bool:
@@ -139,6 +143,7 @@ func frame(delta: float) -> void:
 		_last_pose_time = snapshot.time_s
 		poses.send(snapshot, local_seats, _latency.my_leg_ms())
 	report.sample(snapshot.ball_position, authority.is_master(), snapshot.time_s)
+	floor_hurts.observe(snapshot)
 
 
 func _referee(sim_dt: float) -> void:
@@ -162,6 +167,30 @@ func _referee(sim_dt: float) -> void:
 	issue(
 		PongNetProtocol.TRANSFER_SERVE, territory, serve.position, serve.velocity, Vector3.ZERO, 0
 	)
+
+
+## Server: [param peer] left. Its seats go to the computer (driven here), and a ball it was
+## master of, or one whose hand-off is pending while the server owns the territory, is taken
+## over at once from the server's own ball, so the ball is never left without a master.
+func take_over(peer: int) -> void:
+	var was_master: bool = authority.master_peer == peer
+	var freed: PackedInt32Array = authority.release_peer(peer)
+	var left: Array = report.extra.get_or_add("peers_left", [])
+	left.append({"peer": peer, "seats": Array(freed), "wall_s": PongNetReport.now()})
+	send_all(&"_owners", [authority.owners])
+	owners_changed.emit()
+	var pending: bool = authority.master_peer == 0 or not authority.is_master()
+	var ours: bool = authority.owner_of(authority.territory) == PongNetAuthority.SERVER_ID
+	if was_master or (pending and ours):
+		var s: HapticPongState = match_node.snapshot
+		issue(
+			PongNetProtocol.TRANSFER_TAKEOVER,
+			s.territory,
+			s.ball_position,
+			s.ball_velocity,
+			s.ball_spin,
+			0
+		)
 
 
 ## Server: issues the next transfer to everyone, itself included.
@@ -200,7 +229,7 @@ func _age_of(sender: int, sent_at: float, reported_leg_ms: int = -1) -> float:
 
 func _reject(sender: int, what: String, reason: String) -> void:
 	report.refuse(what)
-	printerr("PongNet: dropped %s from peer %d: %s" % [what, sender, reason])
+	super(sender, what, reason)
 
 
 # --- handlers of PongNetWire, with the sender's id ---
@@ -266,10 +295,8 @@ func _on_request(
 	var seen: int = epoch
 	var to: int = territory
 	var state: Array[Vector3] = [position, velocity, spin]
-	reason = authority.check_request(sender, seen, to)
-	if not reason.is_empty():
-		_reject(sender, "hand-off request", reason)
-		return
+	if not authority.check_request(sender, seen, to).is_empty():
+		return  # A race with a newer transfer (the authority counts it), not a bad message.
 	var age_ms: int = _latency.leg_ms(sender)
 	issue(PongNetProtocol.TRANSFER_HANDOFF, to, state[0], state[1], state[2], age_ms)
 
@@ -324,27 +351,6 @@ func _on_transfer(
 	_settle_until = match_node.snapshot.time_s + SETTLE_S
 
 
-func _on_hurt(sender: int, epoch: Variant, player: Variant, cause: Variant) -> void:
-	if not _running:
-		return
-	var reason: String = PongNetProtocol.check_int(epoch, 0, authority.epoch, "epoch")
-	if reason.is_empty():
-		reason = PongNetProtocol.check_int(player, 0, authority.owners.size() - 1, "player")
-	if reason.is_empty() and (typeof(cause) != TYPE_STRING or cause != "floor"):
-		reason = "cause %s is not one the network carries" % str(cause).left(32)
-	if not reason.is_empty():
-		_reject(sender, "hurt", reason)
-		return
-	var at_epoch: int = epoch
-	var victim: int = player
-	var master_then: int = authority.master_at(at_epoch)
-	if sender != master_then:
-		_reject(sender, "hurt", "peer %d was not the master at epoch %d" % [sender, at_epoch])
-		return
-	match_node.rules.hurt(victim, PongRules.CAUSE_FLOOR)
-	report.hurts.append([at_epoch, victim, "floor"])
-
-
 func _on_owners(sender: int, owners: Variant) -> void:
 	if sender != PongNetAuthority.SERVER_ID or typeof(owners) != TYPE_PACKED_INT64_ARRAY:
 		_reject(sender, "owners", "not from the server or not a PackedInt64Array")
@@ -360,14 +366,8 @@ func _on_owners(sender: int, owners: Variant) -> void:
 
 
 func _on_event(event: Dictionary) -> void:
-	if str(event.get("type", "")) != "floor" or not authority.is_master():
-		return
-	var territory: int = event.get("territory", -1)
-	if territory < 0 or territory >= authority.owners.size() or match_node.rules.is_over():
-		return
-	var args: Array = [authority.epoch, territory, "floor"]
-	send_all(&"_hurt", args)
-	callv(&"_on_hurt", [authority.my_id] + args)
+	if floor_hurts != null:
+		floor_hurts.on_event(event)
 
 
 func _on_match_over(winner: int) -> void:

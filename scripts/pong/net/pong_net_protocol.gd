@@ -9,7 +9,7 @@ extends RefCounted
 ## reliable traffic; lobby, hand-offs and rules share one reliable channel.
 
 ## Sent and compared at connect (auth): peers of another protocol version are refused.
-const VERSION: String = "hbp-net-2"
+const VERSION: String = "hbp-net-3"
 const DEFAULT_PORT: int = 7420
 ## The client's first message (its hello) goes on the channel of the version check. Godot
 ## 4.6 admits a client once each side has sent the other its "auth complete" on channel 0,
@@ -22,6 +22,8 @@ const CHANNEL_HANDSHAKE: int = 0
 const CHANNEL_BALL: int = 1
 const CHANNEL_POSE: int = 2
 const CHANNEL_RELIABLE: int = 3
+## The heartbeat's channel (raw packets, unreliable): nothing queues in front of it.
+const CHANNEL_BEAT: int = 4
 ## Seats (territories) a match may have.
 const MAX_SEATS: int = 4
 ## The courts a match can have: two players, or four on a square court.
@@ -91,6 +93,56 @@ const THROTTLE_DECELERATION: int = 0
 ## 150 ms and 25 % loss here, and two in a CI run at 5 %. It only bounds how long a silent
 ## peer holds a slot.
 const AUTH_TIMEOUT_S: float = 15.0
+
+## The heartbeat: every connected pair sends each other a one-byte raw packet this often, and
+## drops the other when nothing has come from it for [method heartbeat_timeout_s]. It does
+## not wait for ENet, which notices a dead peer only when a reliable packet goes unanswered
+## for its whole retransmission schedule (a client killed with nothing reliable in flight
+## went unnoticed for 14.7 s, a dead server for 8.5 to 9.8 s).
+const HEARTBEAT_HZ: float = 5.0
+## Beats in a row a live peer may lose before it is dropped (5 % loss per leg: four in a
+## row once in 160 000 windows).
+const HEARTBEAT_MISSES: int = 4
+## Bounds of the silence that drops a peer, seconds. The floor covers the longest frame of a
+## four-peer match on two cores (170 ms) several times over; the ceiling is the promise.
+const HEARTBEAT_TIMEOUT_MIN_S: float = 1.0
+const HEARTBEAT_TIMEOUT_MAX_S: float = 3.0
+## Raw packets (SceneMultiplayer.send_bytes) start with their kind: a heartbeat, the reason
+## the server refuses a client (UTF-8 after the kind byte), or a peer's word that it is
+## about to stall (it loads a match's court: 1.3 to 1.7 s of silence with four peers on two
+## busy cores), sent reliably on the heartbeat's channel, after which its silence may last
+## the ceiling until its next beat.
+const PACKET_BEAT: int = 1
+const PACKET_REFUSAL: int = 2
+const PACKET_STALL: int = 3
+## Longest refusal reason sent or taken, bytes.
+const MAX_REFUSAL_BYTES: int = 200
+
+## ENet peer slots of a server. ENet keeps a peer for every CONNECT datagram it answers
+## until the handshake completes or about 30 s pass, and Godot shows no such half-open peer
+## to a script (ENetConnection.get_peers() lists a peer only once it has connected), so
+## slots are what a flood of crafted CONNECTs uses up: six slots let 12 datagrams lock the
+## players out for 30 s. With 1024 a flood must keep up 34 datagrams a second. An empty slot
+## costs a few hundred bytes and next to nothing per frame (an idle server polling at 1 kHz
+## here: 5 % of a core with 6 slots, 6 % with 512, 7 % with 4095).
+const ENET_SLOTS: int = 1024
+## Connections from one address that have connected at ENet's level but not passed the
+## version check: more are not taken (the oldest is dropped), so one address cannot hold
+## the lobby's attention. A household behind one NAT joins with up to a seat each.
+const HALF_OPEN_PER_ADDRESS: int = MAX_SEATS
+
+## Bad messages (malformed, or impossible such as a forged hurt) a peer may send: the first
+## is logged, the rest are counted, and the server disconnects a peer that reaches this
+## many. An honest peer sends none (races of the authority are not counted).
+const MISBEHAVIOUR_BUDGET: int = 16
+
+
+## Why the arguments of an RPC ([param args], taken as a variadic list so that the engine
+## never fails a call for its count) are not [param count] of them, or "".
+static func check_arity(args: Array, count: int) -> String:
+	if args.size() != count:
+		return "%d arguments, not %d" % [args.size(), count]
+	return ""
 
 
 ## Why [param value] is not a finite [Vector3] within [param limit] of the origin along
@@ -222,6 +274,32 @@ static func check_pose(
 static func timeout_max_ms(rtt_ms: float, variance_ms: float) -> int:
 	var rto_ms: float = maxf(rtt_ms, 0.0) + 4.0 * maxf(variance_ms, 0.0)
 	return clampi(roundi(TIMEOUT_RTOS * rto_ms), TIMEOUT_MAX_MS, TIMEOUT_CEILING_MS)
+
+
+## Silence after which a peer is taken for dead, seconds, on a path of round trip
+## [param rtt_s] with mean deviation [param jitter_s] (ENet's measures): the beats a live
+## peer may lose in a row, plus the round trip (a queue on the path can hold a beat that
+## long) and four deviations, within [[constant HEARTBEAT_TIMEOUT_MIN_S],
+## [constant HEARTBEAT_TIMEOUT_MAX_S]].
+static func heartbeat_timeout_s(rtt_s: float, jitter_s: float) -> float:
+	var patience: float = HEARTBEAT_MISSES / HEARTBEAT_HZ + maxf(rtt_s, 0.0)
+	patience += 4.0 * maxf(jitter_s, 0.0)
+	return clampf(patience, HEARTBEAT_TIMEOUT_MIN_S, HEARTBEAT_TIMEOUT_MAX_S)
+
+
+## Whether [param point] lies in [param territory] of a court of [param seats], or within
+## [param margin] metres of it along the floor.
+static func near_territory(point: Vector3, territory: int, seats: int, margin: float) -> bool:
+	if PongCourt.territory_of(point, seats) == territory:
+		return true
+	if margin <= 0.0:
+		return false
+	for step: int in 8:
+		var angle: float = step * TAU / 8.0
+		var offset: Vector3 = Vector3(cos(angle), 0.0, sin(angle)) * margin
+		if PongCourt.territory_of(point + offset, seats) == territory:
+			return true
+	return false
 
 
 ## Why [param value] is not a unit [Vector3] (within 1 %), or "".

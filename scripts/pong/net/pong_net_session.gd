@@ -4,18 +4,25 @@ extends Node
 ## own below it. It hosts (a player's machine or the dedicated server; the server is always
 ## peer 1) or joins, checks the protocol version at connect (auth: each side sends its
 ## [constant PongNetProtocol.VERSION]; a mismatch is refused with a message on both sides)
-## and shortens ENet's timeouts so a dead peer is noticed in about a second on a LAN
-## (FACTS §1.7), not ten; the cap follows each connection's round trip.
+## and shortens ENet's timeouts; the cap follows each connection's round trip.
+## [br]A heartbeat ([PongNetHeartbeat], one-byte raw packets each way) drops a peer silent
+## for [method PongNetProtocol.heartbeat_timeout_s] (1 to 3 s) at once, whatever ENet's
+## retransmissions do. The server takes a few unauthenticated connections per address
+## ([PongNetHalfOpen]), tells a client it refuses why ([method refuse]), and disconnects a
+## peer whose bad messages reach the budget ([method misbehaved], [PongNetBudget]).
 
 ## Connected and authenticated (a client: to the server).
 signal connected
-## The connection could not be made or was refused ([param reason] says why).
+## The connection could not be made or was refused ([param reason] says why: a client the
+## server refuses in its lobby gets the server's reason here, not [signal server_lost]).
 signal failed(reason: String)
 ## A peer passed the version check (on the server: a new client).
 signal peer_joined(peer: int)
 signal peer_left(peer: int)
-## A client lost its server.
+## A client lost its server ([member lost_reason] says how).
 signal server_lost
+## A peer went silent and was dropped after [param silence_s] seconds (the heartbeat).
+signal peer_silent(peer: int, silence_s: float)
 
 ## Seconds a refused client keeps its connection, so it learns why before it is dropped.
 const REFUSAL_GRACE_S: float = 0.5
@@ -28,14 +35,27 @@ var last_error: String = ""
 var left_at_ms: Dictionary[int, int] = {}
 ## The version this peer claims (a test may set another to be refused).
 var version: String = PongNetProtocol.VERSION
+## How the server was lost (a client): it left, or it went silent.
+var lost_reason: String = ""
+## Bad messages by peer (see [method misbehaved]).
+var budget: PongNetBudget = PongNetBudget.new()
+## Whether to send heartbeats (a test turns them off to play a peer that hangs).
+var beating: bool = true
 
 var _peer: ENetMultiplayerPeer = null
 var _retune_in: float = 0.0
+var _heartbeat: PongNetHeartbeat = PongNetHeartbeat.new()
+var _half_open: PongNetHalfOpen = PongNetHalfOpen.new()
+# The reason the server sent before it drops us (a client), or "".
+var _refusal: String = ""
+# Peers to drop at the next frame (see drop_now).
+var _drops: Array[int] = []
 
 
 ## Hosts on [param port] (all interfaces unless [param bind_ip]); "" or the error.
 func host(port: int, max_clients: int, bind_ip: String = "*") -> String:
 	close()
+	_reset()
 	_peer = ENetMultiplayerPeer.new()
 	_peer.set_bind_ip(bind_ip)
 	var error: Error = _peer.create_server(port, max_clients)
@@ -51,6 +71,7 @@ func host(port: int, max_clients: int, bind_ip: String = "*") -> String:
 ## [signal connected] or [signal failed]).
 func join(address: String, port: int) -> String:
 	close()
+	_reset()
 	_peer = ENetMultiplayerPeer.new()
 	var error: Error = _peer.create_client(address, port)
 	if error != OK:
@@ -77,12 +98,14 @@ func close() -> void:
 		closing.close()
 	if api != null:
 		api.multiplayer_peer = OfflineMultiplayerPeer.new()
-		for pair: Array in _connections(api):
+		for pair: Array in _connections(api) + [[api.peer_packet, _on_packet]]:
 			var sig: Signal = pair[0]
 			var handler: Callable = pair[1]
 			if sig.is_connected(handler):
 				sig.disconnect(handler)
 	is_server = false
+	_heartbeat.clear()
+	_half_open.clear()
 
 
 func is_open() -> bool:
@@ -100,12 +123,64 @@ func round_trip_s(peer: int) -> float:
 	return packet_peer.get_statistic(ENetPacketPeer.PEER_ROUND_TRIP_TIME) / 1000.0
 
 
+## Server: refuses [param peer] (connected, not a player) for [param reason]: the client
+## gets the reason, then is dropped [constant REFUSAL_GRACE_S] later.
+func refuse(peer: int, reason: String) -> void:
+	printerr("PongNet: refused peer %d: %s" % [peer, reason])
+	var api: SceneMultiplayer = _api()
+	if not is_server or api == null or not api.get_peers().has(peer):
+		return
+	var text: PackedByteArray = reason.to_utf8_buffer()
+	text.resize(mini(text.size(), PongNetProtocol.MAX_REFUSAL_BYTES))
+	var packet: PackedByteArray = PackedByteArray([PongNetProtocol.PACKET_REFUSAL]) + text
+	api.send_bytes(
+		packet, peer, MultiplayerPeer.TRANSFER_MODE_RELIABLE, PongNetProtocol.CHANNEL_RELIABLE
+	)
+	get_tree().create_timer(REFUSAL_GRACE_S, true, false, true).timeout.connect(drop_now.bind(peer))
+
+
+## [param peer] sent a bad message ([param what], [param reason]). The first from a peer is
+## logged, the rest counted; a server disconnects the peer when its count reaches the budget.
+## Returns whether the peer is being disconnected for it.
+func misbehaved(peer: int, what: String, reason: String) -> bool:
+	var verdict: PongNetBudget.Verdict = budget.note(peer)
+	var line: String = budget.log_line(verdict, peer, what, reason)
+	if verdict == PongNetBudget.Verdict.DISCONNECT and not is_server:
+		line = ""  # A client cannot disconnect the server; it has said so once.
+	if not line.is_empty():
+		printerr(line)
+	if verdict == PongNetBudget.Verdict.DISCONNECT and is_server:
+		drop_now(peer)
+		return true
+	return false
+
+
+## Server: drops [param peer] at this node's next frame, without awaiting a goodbye: its
+## departure is reported as any other (a match gives its seats to the computer).
+func drop_now(peer: int) -> void:
+	if is_server and not _drops.has(peer):
+		_drops.append(peer)
+
+
+## Tells the connected peers that this one is about to stall (it loads a match's court): its
+## silence may then last the ceiling, [constant PongNetProtocol.HEARTBEAT_TIMEOUT_MAX_S],
+## until its next beat.
+func announce_stall() -> void:
+	var api: SceneMultiplayer = _api()
+	if _peer != null and api != null:
+		PongNetEnet.send_stall(api, is_server)
+
+
 func _exit_tree() -> void:
 	close()
 
 
-# Every second: the timeouts follow each connection's round trip.
+# Heartbeats each frame they are due; every second the timeouts follow each connection's
+# round trip.
 func _process(delta: float) -> void:
+	if _peer != null:
+		_flush_drops()
+		_beat()
 	_retune_in -= delta
 	if _peer == null or _retune_in > 0.0:
 		return
@@ -120,33 +195,92 @@ func _process(delta: float) -> void:
 
 
 func _tune(id: int) -> void:
-	var packet_peer: ENetPacketPeer = _peer.get_peer(id)
-	if packet_peer == null:
-		return
-	var rtt: float = packet_peer.get_statistic(ENetPacketPeer.PEER_ROUND_TRIP_TIME)
-	var variance: float = packet_peer.get_statistic(ENetPacketPeer.PEER_ROUND_TRIP_TIME_VARIANCE)
-	packet_peer.set_timeout(
-		PongNetProtocol.TIMEOUT_LIMIT,
-		PongNetProtocol.TIMEOUT_MIN_MS,
-		PongNetProtocol.timeout_max_ms(rtt, variance)
-	)
-	packet_peer.throttle_configure(
-		PongNetProtocol.THROTTLE_INTERVAL_MS,
-		PongNetProtocol.THROTTLE_ACCELERATION,
-		PongNetProtocol.THROTTLE_DECELERATION
-	)
+	PongNetEnet.tune(_peer.get_peer(id))
 
 
 func _install() -> void:
 	var api: SceneMultiplayer = _api()
 	api.auth_callback = _on_auth
 	api.auth_timeout = PongNetProtocol.AUTH_TIMEOUT_S
-	for pair: Array in _connections(api):
+	for pair: Array in _connections(api) + [[api.peer_packet, _on_packet]]:
 		var sig: Signal = pair[0]
 		var handler: Callable = pair[1]
 		if not sig.is_connected(handler):
 			sig.connect(handler)
 	api.multiplayer_peer = _peer
+
+
+func _reset() -> void:
+	_drops.clear()
+	last_error = ""
+	lost_reason = ""
+	_refusal = ""
+	budget = PongNetBudget.new()
+	_heartbeat.clear()
+	_half_open.clear()
+
+
+static func _now_s() -> float:
+	return Time.get_ticks_usec() / 1e6
+
+
+# Sends our beats when due, then drops every peer silent for longer than its path allows.
+func _beat() -> void:
+	var api: SceneMultiplayer = _api()
+	if api == null or _peer == null:
+		return
+	if _peer.get_connection_status() != MultiplayerPeer.CONNECTION_CONNECTED:
+		return
+	var now: float = _now_s()
+	var peers: PackedInt32Array = api.get_peers()
+	if beating and _heartbeat.due(now):
+		PongNetEnet.beat(api, is_server)
+	var limit_of: Callable = func(peer: int) -> float:
+		if _heartbeat.is_stalling(peer) or not peers.has(peer):
+			return PongNetProtocol.HEARTBEAT_TIMEOUT_MAX_S
+		return PongNetEnet.heartbeat_limit(_peer.get_peer(peer))
+	for dead: Array in _heartbeat.overdue(now, limit_of):
+		var peer: int = dead[0]
+		var silence: float = dead[1]
+		var limit: float = dead[2]
+		printerr(
+			"PongNet: peer %d silent for %.2f s (limit %.2f s): dropped" % [peer, silence, limit]
+		)
+		peer_silent.emit(peer, silence)
+		if is_server:
+			drop_now(peer)
+			_flush_drops()
+		else:
+			lost_reason = "no word from the server for %.1f s" % silence
+			_on_server_disconnected()
+			return
+
+
+# Drops the peers queued by drop_now (PongNetEnet.drop: Godot forgets them at once).
+func _flush_drops() -> void:
+	var api: SceneMultiplayer = _api()
+	if _drops.is_empty() or api == null:
+		return
+	var dropping: Array[int] = _drops
+	_drops = []
+	PongNetEnet.drop(api, _peer, dropping)
+
+
+# A raw packet: a heartbeat, or (from the server) why it refuses us.
+func _on_packet(peer: int, packet: PackedByteArray) -> void:
+	var kind: int = packet[0] if not packet.is_empty() else -1
+	if kind == PongNetProtocol.PACKET_BEAT and packet.size() == 1:
+		_heartbeat.heard(peer, _now_s())
+		return
+	if kind == PongNetProtocol.PACKET_STALL and packet.size() == 1:
+		_heartbeat.stalls(peer, _now_s())
+		return
+	var from_server: bool = peer == PongNetAuthority.SERVER_ID and not is_server
+	if kind == PongNetProtocol.PACKET_REFUSAL and from_server:
+		var text: PackedByteArray = packet.slice(1, 1 + PongNetProtocol.MAX_REFUSAL_BYTES)
+		_refusal = text.get_string_from_utf8()
+		return
+	misbehaved(peer, "raw packet", "%d bytes of kind %d" % [packet.size(), kind])
 
 
 func _connections(api: SceneMultiplayer) -> Array[Array]:
@@ -169,6 +303,13 @@ func _on_authenticating(peer: int) -> void:
 	# Somebody answered: from here the cap follows the round trip (the short connect cap
 	# dropped lossy handshakes, and a server's pending peers kept ENet's 30 s).
 	_tune(peer)
+	if is_server:
+		var address: String = _peer.get_peer(peer).get_remote_address()
+		for oldest: int in _half_open.add(peer, address, _now_s()):
+			printerr(
+				"PongNet: dropped unauthenticated peer %d of %s (too many)" % [oldest, address]
+			)
+			drop_now(oldest)
 	_api().send_auth(peer, version.to_utf8_buffer())
 
 
@@ -202,6 +343,7 @@ func _drop(peer: int) -> void:
 
 
 func _on_authentication_failed(peer: int) -> void:
+	_half_open.remove(peer)
 	if not is_server:
 		_fail("the server refused the connection (version check or timeout)")
 	else:
@@ -211,11 +353,15 @@ func _on_authentication_failed(peer: int) -> void:
 func _on_peer_connected(peer: int) -> void:
 	if is_server:
 		_tune(peer)
+		_half_open.remove(peer)
+		_heartbeat.watch(peer, _now_s())
 	peer_joined.emit(peer)
 
 
 func _on_peer_disconnected(peer: int) -> void:
 	left_at_ms[peer] = Time.get_ticks_msec()
+	_heartbeat.forget(peer)
+	_half_open.remove(peer)
 	peer_left.emit(peer)
 
 
@@ -223,6 +369,7 @@ func _on_connected() -> void:
 	# From the round trip ENet assumes before it has measured one (500 ms): a fixed LAN cap
 	# here dropped a live server on a slow lossy path before the first retune.
 	_tune(1)
+	_heartbeat.watch(PongNetAuthority.SERVER_ID, _now_s())
 	connected.emit()
 
 
@@ -232,6 +379,12 @@ func _on_connection_failed() -> void:
 
 
 func _on_server_disconnected() -> void:
+	if not _refusal.is_empty():
+		_fail("the server refused us: %s" % _refusal)
+		close()
+		return
+	if lost_reason.is_empty():
+		lost_reason = "the server left"
 	server_lost.emit()
 	close()
 

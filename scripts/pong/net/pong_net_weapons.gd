@@ -16,8 +16,10 @@ extends PongWeaponReferee
 ##
 ## Every received message is checked: the protocol's types and ranges, the sender owns the
 ## seat (a shot, a mine) or the victim (a hurt), numbers are not reused, a seat's shots keep
-## its cooldown, a hurt names a weapon this peer knows and hurts only once. A bad one is
-## dropped with a log line and counted. A hurt may overtake its weapon: a client's message
+## its cooldown, a hurt names a weapon this peer knows, that could reach the victim (a mine
+## in or next to its territory, a bullet whose flight crosses it; from the weapon's own
+## message, so every peer judges alike) and hurts only once. A bad one is dropped and
+## counted against its sender. A hurt may overtake its weapon: a client's message
 ## to all goes to each peer on its own until Godot has confirmed the node's path with all of
 ## them, so the victim's word (one leg) can come before a shot held up on the other leg by a
 ## lost packet. Such a hurt waits up to [constant PENDING_HURT_S] for its weapon.
@@ -25,6 +27,10 @@ extends PongWeaponReferee
 ## How long a hurt waits for the weapon it names, seconds (ENet's fifth retransmission on
 ## a 150 ms path comes after about 13 s; a weapon later than this is as good as lost).
 const PENDING_HURT_S: float = 3.0
+## A bullet's flight is followed in steps this long (less than a body's reach) and no
+## farther than the court's diagonal allows, metres.
+const REACH_STEP_M: float = 0.1
+const REACH_LIMIT_M: float = 20.0
 
 ## Where this peer's messages go out.
 var wire: PongNetWire = null
@@ -39,6 +45,8 @@ var hurts: Array[Array] = []
 
 # Weapon keys (see _key) this peer knows of, and those that have hurt someone.
 var _known: Dictionary[int, bool] = {}
+# Where each known weapon was: a bullet's [origin, direction], a mine's [position].
+var _where: Dictionary[int, Array] = {}
 var _spent: Dictionary[int, bool] = {}
 # Hurts waiting for their weapon, by its key: [sender, victim, cause, seat, id, wall time].
 var _pending: Dictionary[int, Array] = {}
@@ -97,8 +105,8 @@ static func _key(cause: String, seat: int, id: int) -> int:
 func _on_bullet_fired(bullet: PongBullets.Bullet) -> void:
 	if not judges(bullet.owner):
 		return
-	_take_shot(bullet.owner, bullet.id, match_node.snapshot.time_s)
 	var direction: Vector3 = bullet.velocity.normalized()
+	_take_shot(bullet.owner, bullet.id, match_node.snapshot.time_s, bullet.position, direction)
 	wire.send_all(
 		&"_bullet",
 		[bullet.owner, bullet.id, bullet.position, direction, match_node.snapshot.time_s]
@@ -112,15 +120,17 @@ func _on_mine_placed(mine: PongMines.Mine) -> void:
 	wire.send_all(&"_mine", [mine.owner, mine.id, mine.position, mine.kind])
 
 
-func _take_shot(seat: int, id: int, time_s: float) -> void:
+func _take_shot(seat: int, id: int, time_s: float, origin: Vector3, direction: Vector3) -> void:
 	_last_shot[seat] = id
 	_last_shot_s[seat] = time_s
 	_known[_key("bullet", seat, id)] = true
+	_where[_key("bullet", seat, id)] = [origin, direction]
 	shots.append([seat, id])
 
 
 func _take_mine(mine: PongMines.Mine) -> void:
 	_known[_key("mine", mine.owner, mine.id)] = true
+	_where[_key("mine", mine.owner, mine.id)] = [mine.position]
 	mines_placed.append([mine.owner, mine.id, mine.kind, mine.position.x, mine.position.z])
 
 
@@ -145,7 +155,7 @@ func on_bullet(
 	if not reason.is_empty():
 		_reject.call(sender, "bullet", reason)
 		return
-	_take_shot(shooter, shot, sent_at)
+	_take_shot(shooter, shot, sent_at, from, along)
 	if _resolve_pending(_key("bullet", shooter, shot)):
 		return  # It has already hit its victim.
 	# Where it is by now: it flew on for the message's age.
@@ -213,6 +223,8 @@ func on_hurt(sender: int, victim: Variant, cause: Variant, seat: Variant, id: Va
 		reason = "no %s %d of seat %d is known here" % [what, weapon_id, weapon_seat]
 	if reason.is_empty() and _spent.has(key):
 		reason = "%s %d of seat %d has already hurt" % [what, weapon_id, weapon_seat]
+	if reason.is_empty() and not _could_reach(key, hurt_seat):
+		reason = "%s %d of seat %d cannot reach seat %d" % [what, weapon_id, weapon_seat, hurt_seat]
 	if not reason.is_empty():
 		_reject.call(sender, "weapon hurt", reason)
 		return
@@ -237,6 +249,32 @@ func on_hurt(sender: int, victim: Variant, cause: Variant, seat: Variant, id: Va
 	var mine: PongMines.Mine = match_node.mines.take(weapon_seat, weapon_id)
 	if mine != null:
 		match_node.mine_exploded.emit(mine, hurt_seat)
+
+
+## Whether the weapon [param key] could hurt [param victim]: a mine lies within its trigger
+## radius of the victim's territory (an avatar never leaves its own), a bullet's flight
+## through the court passes within a body's reach of it.
+func _could_reach(key: int, victim: int) -> bool:
+	var where: Array = _where.get(key, [])
+	var seats: int = authority.owners.size()
+	if where.size() == 1:
+		var mine_at: Vector3 = where[0]
+		return PongNetProtocol.near_territory(mine_at, victim, seats, PongMines.TRIGGER_RADIUS_M)
+	if where.size() != 2:
+		return false
+	var origin: Vector3 = where[0]
+	var direction: Vector3 = where[1]
+	var reach: float = PongCourt.AVATAR_BODY_RADIUS_M + PongBullets.RADIUS_M
+	var court: PongCourt = match_node.court
+	var travelled: float = 0.0
+	while travelled <= REACH_LIMIT_M:
+		var at: Vector3 = origin + direction * travelled
+		if PongNetProtocol.near_territory(at, victim, seats, reach):
+			return true
+		if court.clamp_inside(at, 0.0) != at:
+			return false  # It left the court here.
+		travelled += REACH_STEP_M
+	return false
 
 
 ## Refuses the hurts that waited longer than [constant PENDING_HURT_S] for their weapon, or

@@ -1,0 +1,85 @@
+class_name PongNetHeartbeat
+extends RefCounted
+## When this peer last heard each connected peer's heartbeat, and when to send its own
+## ([constant PongNetProtocol.HEARTBEAT_HZ]). Times are seconds of one monotonic clock the
+## caller passes in, so the rules can be tested without waiting.
+
+var _last_heard: Dictionary[int, float] = {}
+var _next_beat_s: float = -INF
+# Peers that said they are about to stall, until their next beat.
+var _stalling: Dictionary[int, bool] = {}
+
+
+## Starts watching [param peer] (just connected): it counts as heard at [param now_s].
+func watch(peer: int, now_s: float) -> void:
+	_last_heard[peer] = now_s
+
+
+## Stops watching [param peer] (gone).
+func forget(peer: int) -> void:
+	_last_heard.erase(peer)
+	_stalling.erase(peer)
+
+
+## Forgets everyone (the session closed).
+func clear() -> void:
+	_last_heard.clear()
+	_stalling.clear()
+	_next_beat_s = -INF
+
+
+## A beat of [param peer] came at [param now_s]; ignored for a peer not watched (one that
+## has not passed the version check, or was dropped).
+func heard(peer: int, now_s: float) -> void:
+	if _last_heard.has(peer):
+		_last_heard[peer] = maxf(_last_heard[peer], now_s)
+		_stalling.erase(peer)
+
+
+## [param peer] said it is about to stall (it loads a match); it counts as heard at
+## [param now_s], and [method is_stalling] until its next beat.
+func stalls(peer: int, now_s: float) -> void:
+	if _last_heard.has(peer):
+		_last_heard[peer] = maxf(_last_heard[peer], now_s)
+		_stalling[peer] = true
+
+
+## Whether [param peer] said it stalls and has not beaten since.
+func is_stalling(peer: int) -> bool:
+	return _stalling.has(peer)
+
+
+## Whether our beats are due at [param now_s]; when they are, the next ones are scheduled
+## (after a stall, one round goes out, not the ones missed).
+func due(now_s: float) -> bool:
+	if now_s < _next_beat_s:
+		return false
+	var interval: float = 1.0 / PongNetProtocol.HEARTBEAT_HZ
+	_next_beat_s += interval
+	if _next_beat_s <= now_s:
+		_next_beat_s = now_s + interval
+	return true
+
+
+## Seconds since [param peer] was last heard (0 for a peer not watched).
+func silence_s(peer: int, now_s: float) -> float:
+	return now_s - _last_heard[peer] if _last_heard.has(peer) else 0.0
+
+
+## The peers watched.
+func peers() -> Array[int]:
+	return _last_heard.keys()
+
+
+## The peers silent at [param now_s] for longer than their limit
+## ([param limit_of]: Callable(peer) -> seconds), each [peer, silence, limit]; they are no
+## longer watched.
+func overdue(now_s: float, limit_of: Callable) -> Array[Array]:
+	var dead: Array[Array] = []
+	for peer: int in _last_heard.keys():
+		var silence: float = now_s - _last_heard[peer]
+		var limit: float = limit_of.call(peer)
+		if silence > limit:
+			_last_heard.erase(peer)
+			dead.append([peer, silence, limit])
+	return dead

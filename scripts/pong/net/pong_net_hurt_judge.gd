@@ -1,0 +1,162 @@
+class_name PongNetHurtJudge
+extends RefCounted
+## The server's judgement of a floor hurt a master reports: possible only when the ball's
+## path, as this peer's servo ran it, bounced on the floor in the victim's territory while
+## the claimant was the master (within the claim's epoch), when that bounce has not been
+## charged already (one hurt per bounce), and when the victim has not lost more floor points
+## lately than a ball can bounce.
+## [br]The path is recorded from two sources: the servo's own floor events, and, while this
+## peer follows another's ball, its state each frame, where a vertical velocity that turns
+## from down to up near the floor is a bounce too (a follower's ball takes the master's
+## velocity with each state it receives, so it may turn before touching the floor itself).
+## While this peer is the master its servo's events are the whole truth. Times are match
+## seconds.
+## [br]A claim of the territory the ball was in at the claim's epoch may match a bounce up to
+## [constant TERRITORY_MARGIN_M] outside it (our copy of the ball follows the master's a
+## little late and blended); a claim of any other territory (the master's ball crossed and
+## bounced within one frame) only a bounce strictly inside it.
+
+enum Verdict { ACCEPT, WAIT, REFUSE }
+
+## How far back before its arrival a claim may find its bounce: one leg and ENet's resends
+## of a lost reliable packet on a slow lossy path, seconds.
+const LOOKBACK_S: float = 3.0
+## How long a claim may wait for its bounce to appear in our path, seconds.
+const WAIT_S: float = 1.0
+## How far outside its epoch (as this peer applied the transfers) a bounce may lie: our copy
+## of the ball and the transfers each come about a leg late, seconds.
+const EPOCH_SLACK_S: float = 0.3
+## Two bounces recorded closer in time than this are one (the servo's event and the turn
+## of the velocity seen at the next frame); a real ball bounces again no sooner than
+## 2 x 0.8 m/s / 6 m/s^2 = 0.27 s.
+const SAME_BOUNCE_S: float = 0.15
+## How high above the floor a ball may turn upward and still count as a bounce, besides what
+## it falls in the frame: a follower's copy is blended onto the master's and may turn a
+## few centimetres up, metres.
+const LOW_M: float = 0.35
+const TERRITORY_MARGIN_M: float = 1.0
+## Floor hurts a victim may take in a burst; the rate is [member rate_per_s].
+const BURST: float = 2.0
+
+var court: PongCourt = null
+## Seats of the match.
+var seats: int = 2
+## Floor hurts per second a victim may take at most, over a burst: a ball bounces on the
+## floor at least twice its slowest counted bounce speed over gravity apart.
+var rate_per_s: float = 4.0
+
+# Bounces recorded: [time, position, charged].
+var _bounces: Array[Array] = []
+# The last state observed: [time, position, velocity], or empty.
+var _last: Array = []
+var _tokens: PackedFloat64Array = PackedFloat64Array()
+var _tokens_at: PackedFloat64Array = PackedFloat64Array()
+
+
+func _init(p_court: PongCourt, p_seats: int) -> void:
+	court = p_court
+	seats = p_seats
+	var slowest: float = 0.8
+	if court.config.has("min_bounce_speed_m_per_s"):
+		slowest = court.number("min_bounce_speed_m_per_s")
+	if court.gravity > 0.0 and slowest > 0.0:
+		rate_per_s = court.gravity / (2.0 * slowest)
+	_tokens.resize(seats)
+	_tokens.fill(BURST)
+	_tokens_at.resize(seats)
+	_tokens_at.fill(-INF)
+
+
+## The ball at [param t]: [param position], [param velocity] (each frame); [param master]:
+## this peer simulates it for everyone (its floor events say when it bounced).
+func observe(t: float, position: Vector3, velocity: Vector3, master: bool = false) -> void:
+	if not _last.is_empty() and not master:
+		var t0: float = _last[0]
+		var p0: Vector3 = _last[1]
+		var v0: Vector3 = _last[2]
+		var dt: float = maxf(t - t0, 0.0)
+		var low: float = LOW_M + absf(v0.y) * dt + court.ball_radius
+		if v0.y < 0.0 and velocity.y > 0.0 and minf(p0.y, position.y) <= low:
+			_record(t, (p0 + position) * 0.5, false)
+	_last = [t, position, velocity]
+	_forget_before(t - 2.0 * LOOKBACK_S)
+
+
+## The servo bounced the ball on the floor at [param t], [param position]; [param charged]:
+## the hurt is already taken (this peer's own master's bounce).
+func observe_floor(t: float, position: Vector3, charged: bool = false) -> void:
+	_record(t, position, charged)
+
+
+## A claim that arrived at [param claimed_at] that [param victim] lost a point to a floor
+## bounce in an epoch that put the ball in [param epoch_territory] and lasted from
+## [param epoch_from] to [param epoch_to] (INF: it still does), judged at [param now]:
+## [verdict, why]. ACCEPT charges the bounce; WAIT: ask again later (no bounce yet, and the
+## claim is younger than [constant WAIT_S]).
+func judge(
+	now: float,
+	claimed_at: float,
+	victim: int,
+	epoch_territory: int,
+	epoch_from: float = -INF,
+	epoch_to: float = INF
+) -> Array:
+	if victim < 0 or victim >= seats:
+		return [Verdict.REFUSE, "victim %d of %d seats" % [victim, seats]]
+	var margin: float = TERRITORY_MARGIN_M if victim == epoch_territory else 0.0
+	var earliest: float = maxf(claimed_at - LOOKBACK_S, epoch_from - EPOCH_SLACK_S)
+	var latest: float = minf(now, epoch_to + EPOCH_SLACK_S)
+	var charged_match: bool = false
+	for bounce: Array in _bounces:
+		var t: float = bounce[0]
+		var at: Vector3 = bounce[1]
+		if t < earliest or t > latest or not _near(at, victim, margin):
+			continue
+		if bounce[2]:
+			charged_match = true
+			continue
+		if _take_token(victim, now) < 1.0:
+			return [
+				Verdict.REFUSE,
+				"seat %d would lose more than %.1f floor points a second" % [victim, rate_per_s]
+			]
+		bounce[2] = true
+		return [Verdict.ACCEPT, ""]
+	if now - claimed_at < WAIT_S:
+		return [Verdict.WAIT, ""]
+	if charged_match:
+		return [Verdict.REFUSE, "its bounce in territory %d was charged already" % victim]
+	return [Verdict.REFUSE, "no floor bounce in territory %d in its epoch here" % victim]
+
+
+## Bounces recorded and still remembered, [time, position, charged] each.
+func bounces() -> Array[Array]:
+	return _bounces
+
+
+func _near(point: Vector3, territory: int, margin: float) -> bool:
+	return PongNetProtocol.near_territory(point, territory, seats, margin)
+
+
+func _record(t: float, position: Vector3, charged: bool) -> void:
+	for bounce: Array in _bounces:
+		var earlier: float = bounce[0]
+		if absf(earlier - t) < SAME_BOUNCE_S:
+			bounce[2] = bounce[2] or charged
+			return
+	_bounces.append([t, position, charged])
+
+
+func _forget_before(t: float) -> void:
+	while not _bounces.is_empty() and _bounces[0][0] < t:
+		_bounces.pop_front()
+
+
+# Refills [param victim]'s tokens to [param now] and takes one if there is one; returns the
+# tokens there were.
+func _take_token(victim: int, now: float) -> float:
+	var since: float = now - _tokens_at[victim]
+	var tokens: float = minf(BURST, _tokens[victim] + since * rate_per_s)
+	_tokens_at[victim] = now
+	_tokens[victim] = tokens - 1.0 if tokens >= 1.0 else tokens
+	return tokens

@@ -1,0 +1,328 @@
+extends "res://tests/net/net_play_suite.gd"
+## The guards of networked Pong, without sockets: the heartbeat's timeout and schedule, the
+## budget of bad messages, the cap on unauthenticated connections per address, and the
+## server's judgement of floor hurts against the ball's recorded path (on its own, then on
+## the host of a real stepped match, where a client was the master).
+
+const PongTestCourt := preload("res://tests/pong/pong_test_court.gd")
+## A point of each territory of the test court (territory 0: z >= 0).
+const NEAR: Vector3 = Vector3(0.3, 0.07, 1.5)
+const FAR: Vector3 = Vector3(0.3, 0.07, -1.5)
+
+# --- the heartbeat ---
+
+
+func test_the_heartbeat_timeout_follows_the_path_within_one_to_three_seconds() -> void:
+	var timeout: Callable = PongNetProtocol.heartbeat_timeout_s
+	var misses: float = PongNetProtocol.HEARTBEAT_MISSES / PongNetProtocol.HEARTBEAT_HZ
+	assert_almost_eq(misses, 0.8, 1e-9, "four beats at 5 Hz")
+	assert_almost_eq(timeout.call(0.0, 0.0), 1.0, 1e-9, "a LAN: the floor")
+	assert_almost_eq(timeout.call(0.12, 0.01), 1.0, 1e-9, "50 ms each way: still the floor")
+	assert_almost_eq(timeout.call(0.34, 0.02), 0.8 + 0.34 + 0.08, 1e-9, "150 ms: misses + rtt")
+	assert_almost_eq(timeout.call(2.0, 0.5), 3.0, 1e-9, "a terrible path: the ceiling")
+	assert_almost_eq(timeout.call(-5.0, -1.0), 1.0, 1e-9, "nonsense measures: the floor")
+	var last: float = 0.0
+	for rtt_ms: int in range(0, 3000, 50):
+		var t: float = timeout.call(rtt_ms / 1000.0, rtt_ms / 8000.0)
+		assert_true(t >= last and t >= 1.0 and t <= 3.0, "monotonic and bounded at %d ms" % rtt_ms)
+		last = t
+
+
+func test_the_heartbeat_beats_at_five_hertz_without_catching_up_after_a_stall() -> void:
+	var beat: PongNetHeartbeat = PongNetHeartbeat.new()
+	var sent: int = 0
+	for frame: int in 1000:  # 1 s of 1 ms frames
+		sent += 1 if beat.due(10.0 + frame * 0.001) else 0
+	assert_eq(sent, 5, "five beats in a second")
+	assert_true(beat.due(14.0), "after a 3 s stall: a beat at once")
+	assert_false(beat.due(14.001), "but one, not the fifteen missed")
+
+
+func test_a_silent_peer_is_overdue_once_and_a_heard_one_never() -> void:
+	var beat: PongNetHeartbeat = PongNetHeartbeat.new()
+	beat.watch(7, 100.0)
+	beat.watch(8, 100.0)
+	var limit: Callable = func(_peer: int) -> float: return 1.0
+	for step: int in 5:
+		beat.heard(8, 100.0 + step * 0.2)
+		assert_eq(beat.overdue(100.0 + step * 0.2, limit), [], "nobody silent for 1 s yet")
+	beat.heard(8, 101.8)
+	var dead: Array[Array] = beat.overdue(101.8, limit)
+	assert_eq(dead.size(), 1, "peer 7 has been silent 1.8 s")
+	assert_eq(dead[0][0], 7)
+	assert_almost_eq(dead[0][1], 1.8, 1e-6)
+	assert_eq(beat.overdue(105.0, limit).size(), 1, "peer 8 now, peer 7 not again")
+	beat.heard(7, 106.0)
+	assert_eq(beat.peers(), [], "a beat from a peer not watched is ignored")
+
+
+func test_a_peer_that_says_it_stalls_may_be_silent_until_its_next_beat() -> void:
+	var beat: PongNetHeartbeat = PongNetHeartbeat.new()
+	beat.watch(7, 0.0)
+	beat.heard(7, 1.0)
+	beat.stalls(7, 1.1)
+	assert_true(beat.is_stalling(7))
+	assert_almost_eq(beat.silence_s(7, 2.6), 1.5, 1e-9, "silent since its notice")
+	beat.heard(7, 2.6)
+	assert_false(beat.is_stalling(7), "its next beat ends the stall")
+	beat.stalls(9, 3.0)
+	assert_false(beat.is_stalling(9), "a peer not watched cannot stall")
+
+
+# --- bad messages ---
+
+
+func test_the_budget_warns_once_then_counts_then_disconnects_once() -> void:
+	var budget: PongNetBudget = PongNetBudget.new(4)
+	var verdicts: Array = []
+	for i: int in 6:
+		verdicts.append(budget.note(5))
+	assert_eq(
+		verdicts,
+		[
+			PongNetBudget.Verdict.WARN,
+			PongNetBudget.Verdict.COUNT,
+			PongNetBudget.Verdict.COUNT,
+			PongNetBudget.Verdict.DISCONNECT,
+			PongNetBudget.Verdict.COUNT,
+			PongNetBudget.Verdict.COUNT
+		]
+	)
+	assert_eq(budget.note(6), PongNetBudget.Verdict.WARN, "each peer has its own count")
+	assert_eq(budget.count_of(5), 6)
+	var warn: String = budget.log_line(
+		PongNetBudget.Verdict.WARN, 5, "pose", "seat 7 is out of [0, 1]"
+	)
+	assert_true(warn.contains("peer 5 sent a bad pose (seat 7") and warn.contains("4"), warn)
+	assert_eq(
+		budget.log_line(PongNetBudget.Verdict.COUNT, 5, "pose", "x"), "", "counted, not logged"
+	)
+	var huge: String = budget.log_line(
+		PongNetBudget.Verdict.DISCONNECT, 5, "hurt", "x".repeat(65536)
+	)
+	assert_true(huge.begins_with("PongNet: disconnecting peer 5: 4 bad"), huge.left(80))
+	assert_lt(huge.length(), 400, "a huge reason is cut")
+	budget.forget(5)
+	assert_eq(budget.note(5), PongNetBudget.Verdict.WARN, "a new peer with an old id starts afresh")
+	assert_eq(PongNetBudget.new().limit, PongNetProtocol.MISBEHAVIOUR_BUDGET)
+
+
+func test_an_rpc_with_the_wrong_count_is_a_bad_message_not_an_engine_error() -> void:
+	assert_eq(PongNetProtocol.check_arity([1, 2, 3], 3), "")
+	assert_eq(PongNetProtocol.check_arity([1], 3), "1 arguments, not 3")
+	assert_eq(PongNetProtocol.check_arity([1, 2, 3, 4], 3), "4 arguments, not 3")
+
+
+func test_one_address_holds_a_few_unauthenticated_connections_the_oldest_go() -> void:
+	var open: PongNetHalfOpen = PongNetHalfOpen.new(2)
+	assert_eq(open.add(10, "10.0.0.1", 1.0), [])
+	assert_eq(open.add(11, "10.0.0.1", 1.0), [])
+	assert_eq(open.add(20, "10.0.0.2", 1.0), [], "another address has its own")
+	assert_eq(open.add(12, "10.0.0.1", 1.0), [10], "a third from one address: the oldest goes")
+	assert_eq(open.add(13, "10.0.0.1", 2.0), [11])
+	assert_eq([open.count("10.0.0.1"), open.count("10.0.0.2")], [2, 1])
+	open.remove(12)
+	assert_eq(open.add(14, "10.0.0.1", 3.0), [], "one passed the check: room again")
+	assert_eq(PongNetHalfOpen.new().per_address, PongNetProtocol.HALF_OPEN_PER_ADDRESS)
+
+
+# --- floor hurts against the recorded path ---
+
+
+func _judge() -> PongNetHurtJudge:
+	return PongNetHurtJudge.new(PongTestCourt.make(), 2)
+
+
+# A ball falling onto [param at] at [param t] and rising again, sampled every 5 ms.
+func _bounce_path(judge: PongNetHurtJudge, at: Vector3, t: float) -> void:
+	for i: int in range(-10, 10):
+		var dt: float = i * 0.005
+		var vy: float = -3.0 if i < 0 else 2.5
+		var height: float = absf(vy * dt) + 0.07
+		judge.observe(t + dt, Vector3(at.x, height, at.z), Vector3(0.5, vy, -1.0))
+
+
+func test_a_claim_is_accepted_for_one_bounce_in_the_victims_territory_once() -> void:
+	var judge: PongNetHurtJudge = _judge()
+	var accept: int = PongNetHurtJudge.Verdict.ACCEPT
+	var wait: int = PongNetHurtJudge.Verdict.WAIT
+	var refuse: int = PongNetHurtJudge.Verdict.REFUSE
+	_bounce_path(judge, FAR, 10.0)
+	assert_eq(judge.bounces().size(), 1, "the turn near the floor is one bounce")
+	assert_eq(judge.judge(10.1, 10.1, 1, 1)[0], accept, "the far seat's bounce, claimed")
+	assert_eq(judge.judge(10.2, 10.2, 1, 1)[0], wait, "a second claim waits for another bounce")
+	var again: Array = judge.judge(11.3, 10.2, 1, 1)
+	assert_eq(again[0], refuse)
+	assert_true(str(again[1]).contains("charged already"), str(again[1]))
+	var forged: Array = judge.judge(11.3, 10.2, 0, 1)
+	assert_eq(forged[0], refuse, "no bounce in the near territory: the near seat loses nothing")
+	assert_true(str(forged[1]).contains("no floor bounce in territory 0"), str(forged[1]))
+
+
+func test_a_forged_flood_is_refused_and_real_bounces_are_not_lost() -> void:
+	var judge: PongNetHurtJudge = _judge()
+	var forged: int = 0
+	var real: int = 0
+	# The issue's attack: 120 claims that the near seat lost points while the ball bounced
+	# in the far territory (the cheat's own), over 12 s with a bounce there every second;
+	# the cheat's real bounces are claimed too.
+	for second: int in 12:
+		var t: float = 20.0 + second
+		_bounce_path(judge, FAR, t)
+		for claim: int in 10:
+			var at: float = t + 0.1 + claim * 0.05
+			var verdict: Array = judge.judge(at + PongNetHurtJudge.WAIT_S, at, 0, 1)
+			forged += 1 if verdict[0] == PongNetHurtJudge.Verdict.ACCEPT else 0
+		var own: Array = judge.judge(t + 0.2, t + 0.1, 1, 1)
+		real += 1 if own[0] == PongNetHurtJudge.Verdict.ACCEPT else 0
+	assert_eq(forged, 0, "none of 120 forged hurts")
+	assert_eq(real, 12, "every real bounce, once")
+	assert_eq(judge.judge(33.5, 31.5, 1, 1)[0], PongNetHurtJudge.Verdict.REFUSE, "no 13th")
+
+
+func test_a_claim_may_come_before_our_copy_of_the_ball_bounces() -> void:
+	var judge: PongNetHurtJudge = _judge()
+	assert_eq(judge.judge(5.0, 5.0, 0, 0)[0], PongNetHurtJudge.Verdict.WAIT)
+	judge.observe_floor(5.3, NEAR)
+	assert_eq(judge.judge(5.3, 5.0, 0, 0)[0], PongNetHurtJudge.Verdict.ACCEPT)
+	var late: Array = judge.judge(5.5, 5.01, 0, 0)
+	assert_eq(late[0], PongNetHurtJudge.Verdict.WAIT, "no second bounce yet, still waiting")
+
+
+func test_a_turn_high_in_the_air_is_no_bounce() -> void:
+	var judge: PongNetHurtJudge = _judge()
+	# A paddle lifts a falling ball 1.1 m above the floor.
+	judge.observe(1.0, Vector3(0.0, 1.1, 1.0), Vector3(0.0, -3.0, 1.0))
+	judge.observe(1.005, Vector3(0.0, 1.1, 1.0), Vector3(0.0, 4.0, -3.0))
+	assert_eq(judge.bounces(), [], "not near the floor")
+	# A follower's copy turns up a little above the floor when the master's state arrives.
+	judge.observe(2.0, Vector3(0.0, 0.2, 1.0), Vector3(0.0, -3.0, 1.0))
+	judge.observe(2.008, Vector3(0.0, 0.18, 1.0), Vector3(0.0, 2.5, 1.0))
+	assert_eq(judge.bounces().size(), 1)
+
+
+func test_a_bounce_counts_only_within_the_claimants_epoch() -> void:
+	var judge: PongNetHurtJudge = _judge()
+	judge.observe_floor(4.0, NEAR)
+	# The near seat's ball bounced at 4.0 s. A master from 1.0 to 3.0 s, or from 5.0 s on,
+	# cannot have seen it.
+	var ended: Array = judge.judge(5.5, 4.2, 0, 0, 1.0, 3.0)
+	assert_eq(ended[0], PongNetHurtJudge.Verdict.REFUSE, "after the claimant's epoch ended")
+	var later: Array = judge.judge(6.5, 5.2, 0, 0, 5.0)
+	assert_eq(later[0], PongNetHurtJudge.Verdict.REFUSE, "before the claimant's epoch began")
+	var slack: Array = judge.judge(4.3, 4.2, 0, 0, 1.0, 3.8)
+	assert_eq(slack[0], PongNetHurtJudge.Verdict.ACCEPT, "a leg's slack at the epoch's end")
+
+
+func test_the_master_trusts_its_servos_floor_events_not_turns_of_the_ball() -> void:
+	var judge: PongNetHurtJudge = _judge()
+	# Our own paddle lifts the ball just above the floor while we are the master.
+	judge.observe(1.0, Vector3(0.0, 0.15, 1.0), Vector3(0.0, -3.0, 1.0), true)
+	judge.observe(1.005, Vector3(0.0, 0.16, 1.0), Vector3(0.0, 4.0, -3.0), true)
+	assert_eq(judge.bounces(), [], "no floor event: no bounce")
+	judge.observe_floor(2.0, NEAR, true)
+	assert_eq(judge.bounces().size(), 1, "the servo's bounce, charged already")
+	assert_eq(judge.judge(3.5, 2.1, 0, 0)[0], PongNetHurtJudge.Verdict.REFUSE)
+
+
+func test_the_margin_is_only_for_the_territory_the_ball_was_in() -> void:
+	var judge: PongNetHurtJudge = _judge()
+	# Our copy bounced 0.4 m past the line into the near half; the master's, in the far.
+	judge.observe_floor(3.0, Vector3(0.0, 0.07, 0.4))
+	var strict: Array = judge.judge(4.2, 3.1, 1, 0)
+	assert_eq(strict[0], PongNetHurtJudge.Verdict.REFUSE, "the far seat, claimed at epoch near")
+	assert_eq(judge.judge(3.1, 3.1, 1, 1)[0], PongNetHurtJudge.Verdict.ACCEPT, "at epoch far")
+	judge.observe_floor(6.0, Vector3(0.0, 0.07, 0.4))
+	assert_eq(judge.judge(6.1, 6.1, 0, 1)[0], PongNetHurtJudge.Verdict.ACCEPT, "strictly inside")
+
+
+func test_a_victim_loses_no_more_floor_points_than_a_ball_can_bounce() -> void:
+	var judge: PongNetHurtJudge = _judge()
+	assert_almost_eq(judge.rate_per_s, 6.0 / 1.6, 1e-9, "g / (2 x 0.8 m/s)")
+	# Bounces recorded 0.2 s apart (faster than a ball bounces), each claimed at once.
+	var accepted: int = 0
+	for i: int in 10:
+		judge.observe_floor(1.0 + i * 0.2, NEAR)
+		var verdict: Array = judge.judge(1.0 + i * 0.2, 1.0 + i * 0.2, 0, 0)
+		accepted += 1 if verdict[0] == PongNetHurtJudge.Verdict.ACCEPT else 0
+	# A burst of 2, then 3.75 a second over 1.8 s: at most 2 + 6.75.
+	assert_true(accepted >= 8 and accepted <= 9, "accepted %d of 10" % accepted)
+
+
+# --- on the host of a stepped match ---
+
+
+func _client_master_at_epoch_one(play: RecordingPlay) -> void:
+	var transfer: Dictionary = play.authority.next_transfer(PongNetProtocol.TRANSFER_SERVE, 1)
+	assert_eq(play.authority.apply_transfer(HOST, transfer), "")
+	assert_eq(play.authority.master_at(1), CLIENT)
+
+
+func test_the_host_charges_a_clients_claim_for_a_bounce_it_saw_and_no_forgery() -> void:
+	var play: RecordingPlay = _open_play()
+	if play == null:
+		return
+	_client_master_at_epoch_one(play)
+	var rules: PongRules = play.match_node.rules
+	var start: int = rules.get_health(0)
+	var hurts: PongNetFloorHurts = play.floor_hurts
+	for i: int in 40:
+		hurts.on_claim(CLIENT, 1, 0)
+	for i: int in 3:
+		hurts.on_claim(HOST, 1, 1)
+	play.match_node.now += PongNetHurtJudge.WAIT_S + 0.1
+	hurts.observe(play.match_node.snapshot)
+	assert_eq(rules.get_health(0), start, "40 forged claims on the host's seat: nothing")
+	assert_eq(play.report.refused.get("floor claim", 0), 43, "each refused and counted")
+	assert_eq(play.session.budget.count_of(CLIENT), 40)
+	assert_eq(play.sent_of(&"_hurt"), [], "nothing charged")
+	hurts.judge.observe_floor(play.match_node.now, FAR)
+	hurts.on_claim(CLIENT, 1, 1)
+	assert_eq(rules.get_health(1), start - 1, "the client's own bounce costs it a point")
+	assert_eq(play.sent_of(&"_hurt"), [[&"_hurt", 1, 1, "floor"]], "charged on every peer")
+	assert_eq(play.report.hurts, [[1, 1, "floor"]])
+
+
+func test_only_the_server_charges_floor_hurts_on_a_client() -> void:
+	var play: RecordingPlay = _open_play()
+	if play == null:
+		return
+	var rules: PongRules = play.match_node.rules
+	var start: int = rules.get_health(0)
+	var hurts: PongNetFloorHurts = play.floor_hurts
+	hurts.on_hurt(CLIENT, 0, 0, "floor")
+	assert_eq(rules.get_health(0), start, "a client's word is not a charge")
+	hurts.on_hurt(HOST, 0, 0, "floor")
+	assert_eq(rules.get_health(0), start - 1, "the server's is")
+	hurts.on_hurt(HOST, 0, 0, "x".repeat(65536))
+	hurts.on_hurt(HOST, 0, 5, "floor")
+	assert_eq(rules.get_health(0), start - 1)
+	assert_eq(play.report.refused.get("hurt", 0), 3)
+
+
+func test_a_weapon_hurt_needs_a_weapon_that_could_reach_the_victim() -> void:
+	var play: RecordingPlay = _open_play()
+	if play == null:
+		return
+	var weapons: PongNetWeapons = play.weapons
+	var rules: PongRules = play.match_node.rules
+	# The client's shots from its half: one toward its own back wall, one toward the host.
+	var origin: Vector3 = Vector3(0.0, 0.8, -2.0)
+	weapons.on_bullet(CLIENT, 1, 0, origin, Vector3.FORWARD, 10.0)
+	weapons.on_bullet(CLIENT, 1, 1, origin, Vector3.BACK, 10.5)
+	assert_eq(weapons.shots, [[1, 0], [1, 1]], "both flew")
+	weapons.on_hurt(HOST, 0, "bullet", 1, 0)
+	assert_eq(rules.get_health(0), 99, "a shot away from the host's half cannot hit it")
+	assert_eq(play.report.refused.get("weapon hurt", 0), 1)
+	weapons.on_hurt(HOST, 0, "bullet", 1, 1)
+	assert_eq(rules.get_health(0), 99 - PongRules.DAMAGE[PongRules.CAUSE_BULLET], "this one can")
+
+
+func test_a_mine_reaches_only_the_territory_it_lies_in_or_next_to() -> void:
+	var reach: float = PongMines.TRIGGER_RADIUS_M
+	var near: Callable = PongNetProtocol.near_territory
+	# The square court: territory 0 is z >= |x|, 2 is x > |z|.
+	assert_true(near.call(Vector3(0.0, 0.0, 2.0), 0, 4, reach))
+	assert_false(near.call(Vector3(0.0, 0.0, 2.0), 2, 4, reach), "deep in 0: not 2's")
+	assert_true(near.call(Vector3(1.0, 0.0, 1.2), 2, 4, reach), "0.14 m from the diagonal")
+	assert_false(near.call(Vector3(0.0, 0.0, -2.0), 0, 4, reach), "across the court")
