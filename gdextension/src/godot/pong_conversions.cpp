@@ -171,6 +171,7 @@ bool pong_command_from_dictionary(const gd::Dictionary &p_dictionary, PongComman
 	bool ok = true;
 	switch (command.type) {
 		case PongCommandType::SET_BALL:
+		case PongCommandType::CORRECT_BALL:
 			ok = reader.only_keys({ "type", "position", "velocity", "spin" }) &&
 					read_vec3(reader, "position", command.position, true) &&
 					read_vec3(reader, "velocity", command.velocity) && read_vec3(reader, "spin", command.spin);
