@@ -28,7 +28,9 @@ func send_to(peer: int, method: StringName, args: Array) -> void:
 			callv(&"rpc_id", [peer, method] + args)
 
 
-@rpc("any_peer", "call_remote", "unreliable_ordered", PongNetProtocol.CHANNEL_BALL)
+# Unreliable, not unreliable_ordered: ENet would drop every state that arrives after a newer
+# one before this handler sees it; the follower's buffer orders them (PongNetBallBuffer).
+@rpc("any_peer", "call_remote", "unreliable", PongNetProtocol.CHANNEL_BALL)
 func _ball(
 	epoch: Variant,
 	seq: Variant,
