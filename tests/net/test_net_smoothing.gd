@@ -38,6 +38,23 @@ func test_in_order_states_play_at_once_and_a_reordered_one_fills_its_gap() -> vo
 	assert_eq(buffer.played.seq, 2)
 
 
+func test_a_gap_is_not_waited_for_past_a_strike() -> void:
+	var buffer: PongNetBallBuffer = PongNetBallBuffer.new()
+	buffer.push(_state(1, 0.0, 0.1))
+	buffer.advance(0.1)
+	var calm: Callable = func(_a: PongNetBallBuffer.State, _b: PongNetBallBuffer.State) -> bool:
+		return true
+	var struck: Callable = func(_a: PongNetBallBuffer.State, _b: PongNetBallBuffer.State) -> bool:
+		return false
+	buffer.push(_state(3, 0.016, 0.12))
+	buffer.delay_s = 0.1  # As if measured.
+	assert_false(buffer.advance(0.121, calm), "where the flight leads: 3 waits for 2")
+	assert_true(buffer.advance(0.121, struck), "news: 3 is played at once")
+	assert_eq(buffer.played.seq, 3)
+	assert_eq(buffer.skipped, 1, "the gap given up")
+	assert_eq(buffer.push(_state(2, 0.008, 0.13)), PongNetBallBuffer.Taken.LATE)
+
+
 func test_the_wait_is_sized_from_the_measured_jitter() -> void:
 	var rng: RandomNumberGenerator = RandomNumberGenerator.new()
 	rng.seed = 7

@@ -375,10 +375,11 @@ func _on_match_over(winner: int) -> void:
 	finished.emit(winner)
 
 
-## A paddle this peer drives touched the ball: states sent before that do not correct it.
+## A paddle touched the ball in our servo: ours (what the hand felt) or a remote one at the
+## pose its peer sent (a hit predicted, not learnt a whole path late). States sent before
+## that cannot know of it and do not correct the ball.
 func _on_ball_touch(event: Dictionary) -> void:
-	var player: int = event.get("player", -1)
-	if str(event.get("type", "")) == "paddle" and local_seats.has(player):
+	if str(event.get("type", "")) == "paddle":
 		ball.touched(_clock_s())
 
 
