@@ -4,11 +4,9 @@ extends RefCounted
 ## into [member buffer] (by sequence, jitter-buffered); each one it plays is carried to now
 ## ([method PongNetSmoother.extrapolate]) and handed to the servo as a correction
 ## ([method HapticsPong.correct_ball]), which the servo blends in at 1 kHz without a jump
-## while the ball flies on. A serve is put at once ([method put]). A paddle's touch in our
-## servo stands: our own paddle's is what the hand felt, a remote paddle's (at the pose its
-## peer sent) predicts the master's hit instead of learning it a whole path late. A state
-## the master sent before the touch cannot know of it and does not correct the ball (it
-## would undo the touch, under the hand).
+## while the ball flies on. A serve is put at once ([method put]). Our own paddle's touch
+## is what the hand felt: a state the master sent before it cannot know of it and does not
+## correct the ball (it would undo the touch under the hand).
 
 ## How far a state may lie from where the previous one's flight leads (the predictor models
 ## neither the air's drag nor the court's friction: a few centimetres over a gap) before it
@@ -25,7 +23,7 @@ var stepped: bool = false
 ## The court the ball stays in: an extrapolation can end past a wall or under the floor,
 ## where the servo refuses the ball.
 var court: PongCourt = null
-## States played that did not correct the ball: sent before a paddle touched it here.
+## States played that did not correct the ball: sent before our paddle touched it.
 var ignored: int = 0
 
 var _commanded: Array[Vector3] = []
@@ -62,8 +60,8 @@ func correct(position: Vector3, velocity: Vector3, spin: Vector3) -> void:
 
 
 ## A transfer carried the ball's state, [param age_s] old, to now: [param ball]. A serve
-## puts it; any other transfer corrects ours, unless a paddle touched it here since that
-## state was sent (our ball then knows more than the state does).
+## puts it; any other transfer corrects ours, unless our paddle touched it since that state
+## was sent (our ball then knows more than the state does).
 func transfer(serve: bool, ball: Array[Vector3], age_s: float, now_s: float) -> void:
 	if serve:
 		put(ball[0], ball[1], ball[2])
@@ -73,7 +71,7 @@ func transfer(serve: bool, ball: Array[Vector3], age_s: float, now_s: float) -> 
 		ignored += 1
 
 
-## A paddle touched the ball in our servo at [param now_s] (this machine's clock).
+## A paddle this peer drives touched the ball at [param now_s] (this machine's clock).
 func touched(now_s: float) -> void:
 	_touched_at = now_s
 
