@@ -3,7 +3,7 @@ extends PongNetWire
 ## One networked match on this peer: the private haptic space. Every peer runs the servo
 ## and simulates the ball; the owner of the territory the ball is in is its master
 ## ([PongNetAuthority]): it sends the ball state on every new servo state (>= 60 Hz,
-## unreliable_ordered, its own channel) and its contact with the ball stays in its own
+## unreliable, its own channel) and its contact with the ball stays in its own
 ## servo at 1 kHz whatever the latency (contact is never sent). Followers play the
 ## received states out in order from a jitter buffer, carry each forward to now, and the
 ## servo blends their ball onto it ([PongNetBall]). Each
@@ -105,7 +105,7 @@ func frame(delta: float) -> void:
 	if not _running:
 		return
 	weapons.expire_pending()
-	if not authority.is_master() and ball.follow(_clock_s(), _predictor, _gravity()):
+	if not authority.is_master() and ball.follow(PongNetBall.clock_s(), _predictor, _gravity()):
 		# Only the newest state played becomes a command to the servo (whose queue holds 64).
 		_master_velocity = ball.buffer.played.velocity
 		report.extra["ball_stream"] = ball.to_dict()
@@ -235,7 +235,7 @@ func _on_ball(
 	if not reason.is_empty() and not in_stream:
 		report.late += 1
 		return
-	var arrival: float = _clock_s()
+	var arrival: float = PongNetBall.clock_s()
 	var age: float = _age_of(sender, sent_at, leg)
 	var state: PongNetBallBuffer.State = PongNetBallBuffer.State.new(
 		state_seq, sent_at, [position, velocity, spin], arrival, age
@@ -320,7 +320,7 @@ func _on_transfer(
 	var local: Vector3 = ball.local()[0]
 	report.handoff_corrections.append((target[0] - local).length())
 	var serve: bool = kind == PongNetProtocol.TRANSFER_SERVE
-	ball.transfer(serve, [target[0], target[1], state[2]], age, _clock_s())
+	ball.transfer(serve, [target[0], target[1], state[2]], age, PongNetBall.clock_s())
 	_settle_until = match_node.snapshot.time_s + SETTLE_S
 
 
@@ -375,19 +375,11 @@ func _on_match_over(winner: int) -> void:
 	finished.emit(winner)
 
 
-## A paddle this peer drives touched the ball: states sent before that cannot know of it and
-## do not correct the ball. Not a remote paddle's touch here: its pose arrives a path late
-## and carried on, and trusting it as a predicted hit made the divergence worse (issue 24,
-## p99 2.3 m against 1.5 m at 200 +- 60 ms).
+## A paddle this peer drives touched the ball ([method PongNetBall.touched]).
 func _on_ball_touch(event: Dictionary) -> void:
 	var player: int = event.get("player", -1)
 	if str(event.get("type", "")) == "paddle" and local_seats.has(player):
-		ball.touched(_clock_s())
-
-
-## This machine's clock, s (the one [PongNetLatency] ages messages by).
-func _clock_s() -> float:
-	return Time.get_ticks_usec() / 1e6
+		ball.touched(PongNetBall.clock_s())
 
 
 func _gravity() -> float:
