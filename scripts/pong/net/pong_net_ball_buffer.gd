@@ -105,12 +105,12 @@ func push(state: State) -> Taken:
 		duplicates += 1
 		return Taken.DUPLICATE
 	_seen[state.seq] = true
+	_measure(state)  # A late state's delay is the jitter the wait is for.
 	if played != null and state.seq <= played.seq:
 		late += 1
 		return Taken.LATE
 	received += 1
 	_pending[state.seq] = state
-	_measure(state)
 	if state.seq > _newest_seq:
 		_newest_seq = state.seq
 		return Taken.NEWEST
