@@ -181,8 +181,8 @@ TEST_CASE("pong correction: near the device player's paddle the hand's force cha
 		++ticks;
 	}
 	MESSAGE("a put jumps the hand's force by " << put_jump << " N in a tick; the correction changes it by "
-												<< largest_change << " N a tick at most (budget " << budget_n
-												<< " N), done after " << ticks << " ticks");
+											   << largest_change << " N a tick at most (budget " << budget_n
+											   << " N), done after " << ticks << " ticks");
 	CHECK(put_jump > 5.0 * budget_n); // What the blend is for.
 	CHECK(largest_change <= budget_n + 1e-9);
 	CHECK_FALSE(sim.correction().active());
