@@ -200,6 +200,7 @@ gd::Dictionary pong_state_to_dictionary(const PongState &p_state) {
 	ball.set("position", to_godot(p_state.ball.position));
 	ball.set("velocity", to_godot(p_state.ball.velocity));
 	ball.set("spin", to_godot(p_state.ball.spin));
+	ball.set("correction", to_godot(p_state.ball_correction));
 	d.set("ball", ball.variant());
 	d.set("territory", static_cast<int64_t>(p_state.territory));
 	gd::Array players;

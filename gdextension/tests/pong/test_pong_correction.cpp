@@ -138,6 +138,11 @@ TEST_CASE("pong correction: the territory is the corrected ball's, taken without
 	CHECK(sim.territory() == 1);
 	CHECK(sim.ball().position.z > 0.0);
 	CHECK(take_events(sim).empty());
+	// The state tells the game where the corrected ball is (what a master streams).
+	PongState state;
+	sim.fill_state(state);
+	CHECK(state.ball_correction == sim.correction().position_left());
+	CHECK((state.ball.position + state.ball_correction).z == doctest::Approx(-0.5).epsilon(0.01));
 	// A correction outside the court is refused like a serve there.
 	PongConfig config;
 	const Status refused =

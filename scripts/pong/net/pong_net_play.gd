@@ -185,8 +185,11 @@ func _hand_off(snapshot: HapticPongState) -> void:
 		send_to(PongNetAuthority.SERVER_ID, &"_request", args)
 
 
+## The ball as the master gives it: the corrected one (a hand-off's correction may still be
+## gliding in), which followers and the server aim at.
 func _ball_of(snapshot: HapticPongState) -> Array:
-	return [snapshot.ball_position, snapshot.ball_velocity, snapshot.ball_spin]
+	var corrected: Vector3 = snapshot.ball_position + snapshot.ball_correction
+	return [corrected, snapshot.ball_velocity, snapshot.ball_spin]
 
 
 ## How old a message of [param sender] stamped with its servo time [param sent_at] is, s

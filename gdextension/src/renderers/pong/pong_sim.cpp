@@ -332,6 +332,7 @@ void PongSim::step(double p_dt_s, const HandSample *p_hand) {
 void PongSim::fill_state(PongState &r_state) const {
 	r_state.time_s = time_s_;
 	r_state.ball = ball_;
+	r_state.ball_correction = correction_.position_left();
 	r_state.territory = territory_;
 	r_state.player_count = players();
 	for (int p = 0; p < players(); ++p) {
