@@ -105,16 +105,17 @@ func frame(delta: float) -> void:
 	if not _running:
 		return
 	weapons.expire_pending()
-	if not authority.is_master() and ball.follow(PongNetBall.clock_s(), _predictor, _gravity()):
-		# Only the newest state played becomes a command to the servo (whose queue holds 64).
-		_master_velocity = ball.buffer.played.velocity
-		report.extra["ball_stream"] = ball.to_dict()
 	if stepped:
 		_owe_s += delta
 		var chunks: int = mini(floori(_owe_s / CHUNK_S), max_chunks_per_frame)
 		_owe_s = minf(_owe_s - chunks * CHUNK_S, CHUNK_S)
 		if chunks > 0:
 			match_node.run_until(func() -> bool: return false, (chunks - 0.5) * CHUNK_S)
+	# After the stepping: the target is carried to now, where the servo is.
+	if not authority.is_master() and ball.follow(PongNetBall.clock_s(), _predictor, _gravity()):
+		# Only the newest state played becomes a command to the servo (whose queue holds 64).
+		_master_velocity = ball.buffer.played.velocity
+		report.extra["ball_stream"] = ball.to_dict()
 	var snapshot: HapticPongState = match_node.snapshot
 	var sim_dt: float = match_node.now - _last_now
 	_last_now = match_node.now
