@@ -196,3 +196,34 @@ TEST_CASE("pong correction: near the device player's paddle the hand's force cha
 			(config.hand_stiffness_n_per_m + config.spin_force_gain * config.max_spin_rad_per_s);
 	CHECK(ticks * PONG_DT <= correction_bound_s(config, error_m, near_cap_m_per_s));
 }
+
+TEST_CASE("pong correction: a game-driven paddle's contact is a prediction the corrections supersede") {
+	const PongConfig config;
+	const Vec3 paddle{ 0.0, config.beginner_height_m, -2.0 };
+	PongSim sim;
+	PongInput input = idle_input();
+	input.players[1] = game_paddle(paddle, { 0.0, 0.0, 1.0 }); // A remote player's, facing +z.
+	sim.set_input(input);
+	// The master's ball flies on through where this servo has the paddle (its player had
+	// moved it away): -z at 2 m/s, from just touching the paddle's face.
+	const Vec3 velocity{ 0.0, 0.0, -2.0 };
+	const Vec3 start = paddle + Vec3{ 0.0, 0.0, config.ball_radius_m - 0.005 };
+	sim.apply(set_ball(start, velocity));
+	sim.step(PONG_DT, nullptr);
+	REQUIRE(sim.contact(1).touching);
+	// A correction every 16 ticks (a frame), toward the master's ball then. Gravity is off
+	// (beginner) so the master's flight is a straight line at the paddle's height.
+	input.beginner = true;
+	sim.set_input(input);
+	Vec3 master = start + velocity * PONG_DT;
+	for (int frame = 0; frame < 30; ++frame) {
+		sim.apply(correct_ball(BallState{ master, velocity, {} }));
+		for (int k = 0; k < 16; ++k) {
+			sim.step(PONG_DT, nullptr);
+			master += velocity * PONG_DT;
+		}
+	}
+	MESSAGE("after 0.48 s the ball is " << length(sim.ball().position - master) << " m from the master's");
+	CHECK(length(sim.ball().position - master) < 0.05);
+	CHECK(sim.ball().velocity.z < 0.0); // Not thrown back the way it came.
+}

@@ -3,7 +3,8 @@
 // A network correction of the ball (CORRECT_BALL, issue 24). A follower's servo simulates the
 // ball between the master's states, and each state, carried to now, corrects it. Put at once
 // (SET_BALL) the ball jumped, by up to metres within a tick, and so did the force on a hand
-// touching it. Instead the correction is blended in while the ball's physics keeps running:
+// touching it. Instead the correction is blended in while the ball's physics keeps running
+// (its contacts start afresh, pong_sim.h):
 //   start     e = target - ball (position, velocity, spin)
 //   each tick the ball takes the part s = e (1 - exp(-dt / tau)) of each error, at least the
 //             floor |e_0| dt / (FINISH_TIME_CONSTANTS tau) (all of e when less: an exponential

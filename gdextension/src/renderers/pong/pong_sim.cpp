@@ -128,6 +128,12 @@ void PongSim::apply(const PongCommand &p_command) {
 				cap_length(p_command.spin, config_.max_spin_rad_per_s) };
 			correction_.start(ball_, target, config_.correction_time_constant_s);
 			territory_ = territory_of(target.position, players());
+			// Contacts start afresh, as after a SET_BALL: a paddle's remembered side would push
+			// the corrected ball back through it (a follower's ball ran off at twice the master's
+			// speed, LAN divergence p99 0.5-2 m). Kept for the device player's paddle alone, the
+			// same happened through the hand's own paddle. The force on a hand still touching
+			// the ball is the same either way: the contact restarts on the side the ball is on.
+			clear_contacts();
 			break;
 		}
 		case PongCommandType::EFFECT:

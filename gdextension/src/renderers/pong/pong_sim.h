@@ -32,9 +32,9 @@
 // the ball coming to rest), PADDLE and RELEASE, TERRITORY. A SET_BALL moves the ball without
 // events (a serve is not play) and starts contacts afresh. A CORRECT_BALL (a network
 // correction) is blended in over the next ticks, before each tick's contacts, with the
-// ball's physics and contacts running on (ball_correction.h); the territory is the corrected
-// ball's (the ball plus what is still to blend in), taken without an event when the
-// correction arrives.
+// ball's physics running on (ball_correction.h); contacts start afresh as after a SET_BALL;
+// the territory is the corrected ball's (the ball plus what is still to blend in), taken
+// without an event when the correction arrives.
 
 #include "core/base/vec3.h"
 #include "core/device/device.h"
