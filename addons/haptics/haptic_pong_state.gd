@@ -10,7 +10,12 @@ var time_s: float = 0.0
 var ball_position: Vector3 = Vector3.ZERO
 var ball_velocity: Vector3 = Vector3.ZERO
 var ball_spin: Vector3 = Vector3.ZERO
-## The territory the ball is in.
+## What a network correction still has to blend in (world metres): the corrected ball is at
+## [member ball_position] + this ([method HapticsPong.correct_ball]).
+var ball_correction: Vector3 = Vector3.ZERO
+## The most a correction has moved the ball in one servo tick this session, metres.
+var ball_correction_step_max: float = 0.0
+## The territory the (corrected) ball is in.
 var territory: int = 0
 ## How many players' paddles the state holds (the court's seats: 2 or 4).
 var players: int = 0
@@ -46,6 +51,8 @@ static func from_dictionary(state: Dictionary) -> HapticPongState:
 	out.ball_position = ball.get("position", Vector3.ZERO)
 	out.ball_velocity = ball.get("velocity", Vector3.ZERO)
 	out.ball_spin = ball.get("spin", Vector3.ZERO)
+	out.ball_correction = ball.get("correction", Vector3.ZERO)
+	out.ball_correction_step_max = ball.get("correction_step_max", 0.0)
 	out.territory = state.get("territory", 0)
 	var paddles: Array = state.get("players", [])
 	out.players = paddles.size()

@@ -89,6 +89,15 @@ func set_ball(position: Vector3, velocity: Vector3, spin: Vector3 = Vector3.ZERO
 	return _command({"type": "set_ball", "position": position, "velocity": velocity, "spin": spin})
 
 
+## Corrects the ball toward [param position], [param velocity] and [param spin] (where it
+## should be now, a network update): the servo blends it in over the next ticks while the
+## ball flies on, never jumping ([code]pong.correction_*[/code] settings).
+func correct_ball(position: Vector3, velocity: Vector3, spin: Vector3 = Vector3.ZERO) -> bool:
+	return _command(
+		{"type": "correct_ball", "position": position, "velocity": velocity, "spin": spin}
+	)
+
+
 ## Starts an effect on [param player]'s hand (it acts only on the device player's):
 ## [param kind] one of [constant EFFECT_KINDS]; [param direction] (world unit) for recoil
 ## and hit; [param owner] the mine's owner for remote.

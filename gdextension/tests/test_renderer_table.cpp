@@ -74,7 +74,7 @@ TEST_CASE("renderer table: the configuration table is the servo's rows, then eac
 		expected += row.info->config_fields.size();
 	}
 	CHECK(config_fields().size() == expected);
-	CHECK(registered_renderers()[RenderMode::PONG].info->config_fields.size() == 40);
+	CHECK(registered_renderers()[RenderMode::PONG].info->config_fields.size() == 43);
 	for (const ConfigField &row : registered_renderers()[RenderMode::PONG].info->config_fields) {
 		CHECK(std::string(row.section) == "pong"); // Pong's settings are Pong's alone.
 	}

@@ -266,7 +266,7 @@ func test_the_state_has_every_key_in_its_type() -> void:
 	]:
 		assert_has(state, key)
 	var ball: Dictionary = state["ball"]
-	assert_eq(ball.keys(), ["position", "velocity", "spin"])
+	assert_eq(ball.keys(), ["position", "velocity", "spin", "correction", "correction_step_max"])
 	var players: Array = state["players"]
 	assert_eq(players.size(), 2)
 	var far: Dictionary = players[1]

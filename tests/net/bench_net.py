@@ -2,9 +2,11 @@
 tests: nothing here passes or fails). Bytes per second per client through the relay, the
 hand-off gap (no master while the transfer travels), the ball's divergence between peers
 p50/p99 (serves left out, see net_harness.divergences), the followers' correction sizes,
-the share of the masters' ball states the followers took, what the relay did (losses, bursts,
-duplicates, reordering) and each headless peer's share of a core and peak resident memory
-from all connected to its exit (net_measure). JSON into .bench/net.json (or --json FILE).
+the share of the masters' ball states the followers took and of those that reached them the
+share they used, the most a correction moved a servo's ball in one tick, the hand-off
+corrections over 1 m, what the relay did (losses, bursts, duplicates, reordering) and each
+headless peer's share of a core and peak resident memory from all connected to its exit
+(net_measure), and how soon a killed client is noticed. JSON into .bench/net.json (or --json FILE).
 
     python tests/net/bench_net.py [--seconds 12] [--peers 2] [--json .bench/net.json]
 """
@@ -35,7 +37,7 @@ def measure(peers: int, label: str, network: Network, seconds: float) -> dict:
         try:
             started, relay = run_match(
                 work, peers, network, seconds, force_relay=True,
-                on_running=lambda running: meter.start({p.name: p.proc.pid for p in running}))
+                on_running=lambda running, _relay: meter.start({p.name: p.proc.pid for p in running}))
         finally:
             meter.stop()
     reports = [p.report for p in started]
@@ -61,6 +63,10 @@ def measure(peers: int, label: str, network: Network, seconds: float) -> dict:
         "snaps": sum(c["snaps"] for c in corrections),
         "states_per_peer": [r["states"] for r in reports],
         "ball_states": ball_state_use(reports),
+        "correction_step_max_m": max(r["correction_step_max_m"] for r in reports),
+        "handoff_corrections_over_1m": sum(
+            1 for r in reports for c in r["handoff_corrections_m"] if c > 1.0),
+        "handoff_corrections": sum(len(r["handoff_corrections_m"]) for r in reports),
         "processes": meter.result(),
         "conditions": network.label,
     }
@@ -68,15 +74,22 @@ def measure(peers: int, label: str, network: Network, seconds: float) -> dict:
 
 
 def describe(row: dict) -> str:
-    """The second line of a row: the peers' cost, the ball states taken, the relay's doing."""
+    """The second line of a row: the peers' cost, the ball states taken and used, the
+    corrections, the relay's doing."""
     costs = ", ".join(
         f"{name} {p['cpu_share'] * 100:.0f} % {p['peak_rss_kib'] / 1024:.0f} MiB"
         for name, p in row["processes"].items() if p["cpu_share"] is not None)
-    taken = row["ball_states"]["taken_share"]
+    shares = row["ball_states"]
+    used = ", ".join("-" if p["used_share"] is None else f"{p['used_share'] * 100:.1f} %"
+                     for p in shares["per_peer"])
+    taken = shares["taken_share"]
     up = row["relay"]["up"]
     runs = max(1, up["loss_runs"])
-    return (f"    CPU of a core and peak memory: {costs}; ball states taken "
-            f"{'-' if taken is None else f'{taken * 100:.0f} %'}; relay up: lost "
+    return (f"    CPU of a core and peak memory: {costs}; ball states taken of those sent "
+            f"{'-' if taken is None else f'{taken * 100:.0f} %'}, used of those that reached "
+            f"each peer {used}; largest correction step {row['correction_step_max_m'] * 1000:.1f}"
+            f" mm; hand-off corrections over 1 m {row['handoff_corrections_over_1m']} of "
+            f"{row['handoff_corrections']}; relay up: lost "
             f"{up['dropped'] / max(1, up['received']) * 100:.1f} % in runs of "
             f"{up['dropped'] / runs:.1f}, {up['duplicated']} twice, {up['reordered']} after a "
             f"newer one")
@@ -110,7 +123,7 @@ def main() -> None:
                   f"{row['correction_max_m']:.3f} m, snaps {row['snaps']}", flush=True)
             print(describe(row), flush=True)
     kills = []
-    for label in ("0ms", "50ms+10j/5%"):
+    for label in ("0ms", "50ms+10j/5%", "rough"):
         kills.append(detection(label, SETTINGS[label]))
         seconds = kills[-1]["detection_s"]
         shown = "not noticed" if seconds is None else f"{seconds:.2f} s"

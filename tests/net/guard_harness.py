@@ -15,7 +15,7 @@ import struct
 import time
 from pathlib import Path
 
-from net_harness import Peer
+from net_harness import Peer, Relay, udp_ports
 
 ENET_MAXIMUM_PEER_ID = 0xFFF
 ENET_FLAG_SENT_TIME = 0x8000
@@ -28,6 +28,12 @@ ENET_COMMAND_MASK = 0x0F
 # A CONNECT as an ENet 1.3 client sends it: 4 header bytes, 48 of command (the issue's 12
 # datagrams were 624 bytes).
 CONNECT_BYTES = 52
+# The rogue peer (tests/net/rogue/): with --rogue=mark it prints HIT_MARK when its paddle hit
+# the ball and it became the master.
+ROGUE_SCENE = "res://tests/net/rogue/rogue_peer.tscn"
+HIT_MARK = "PongNet rogue: my paddle hit the ball, I am the master"
+# PongNetAuthority's transfer kinds.
+TRANSFER_TAKEOVER = 2
 
 
 def connect_datagram(connect_id: int, data: int) -> bytes:
@@ -160,11 +166,28 @@ def kill_on_line(index: int, text: str, killed_at: list[float], patience_s: floa
     """An on_running hook for run_match: SIGKILLs peer [index] as soon as [text] shows in its
     log and appends the wall time to [killed_at] (nothing if it never shows)."""
 
-    def hook(peers: list[Peer]) -> None:
+    def hook(peers: list[Peer], _relay: Relay | None) -> None:
         target = peers[index]
         if LogWatch(target).wait([text], patience_s):
             os.kill(target.proc.pid, signal.SIGKILL)
             killed_at.append(time.time())
+
+    return hook
+
+
+def cut_on_line(index: int, text: str, cut_at: list[float], patience_s: float = 40.0):
+    """An on_running hook for run_match: as soon as [text] shows in peer [index]'s log, the
+    relay cuts that peer's path both ways (the peer lives on, its datagrams vanish); appends
+    the wall time to [cut_at] (nothing if it never shows)."""
+
+    def hook(peers: list[Peer], relay: Relay | None) -> None:
+        assert relay is not None, "a path is cut in the relay: run the match through one"
+        target = peers[index]
+        ports = udp_ports(target.proc.pid)
+        if LogWatch(target).wait([text], patience_s):
+            address = next(a for a in relay.clients if int(a.rsplit(":", 1)[1]) in ports)
+            relay.blackhole(address)
+            cut_at.append(time.time())
 
     return hook
 
@@ -174,3 +197,21 @@ def start_peer(workdir: Path, name: str, args: list[str], scene: str = "") -> Pe
     peer = Peer(name, args, workdir, scene=scene)
     peer.start()
     return peer
+
+
+def check_taken_over(report: dict, seat: int = 1) -> None:
+    """Asserts what the server [report] shows after the peer playing [seat] was lost: the
+    lost master's ball was taken over at once, every transfer since is the server's (the
+    ball was never left without a master), the computer plays the seat and the rally goes
+    on."""
+    left = report["extra"]["peers_left"]
+    assert len(left) == 1 and left[0]["seats"] == [seat], left
+    later = [t for t in report["transfers"] if t["wall_s"] >= left[0]["wall_s"]]
+    assert later and later[0]["kind"] == TRANSFER_TAKEOVER, later[:3]
+    assert later[0]["wall_s"] - left[0]["wall_s"] < 0.5, (later[0], left[0])
+    assert all(t["master"] == 1 for t in later), later
+    assert all(c == "computer" for c in report["controllers"]), report["controllers"]
+    assert len(later) >= 3, later
+    moving = [s for s in report["samples"] if s[0] > left[0]["wall_s"] + 1.0]
+    heights = [s[3] for s in moving]
+    assert moving and max(heights) - min(heights) > 0.3, "the ball still flies"

@@ -136,7 +136,8 @@ def run_match(workdir: Path, peers: int, network: Network, seconds: float,
     """Starts a host (or a dedicated server) and the clients, through one relay when the
     network is impaired, waits for all to exit; returns the peers (reports loaded) and the
     relay's counts. [client_scenes][i] runs client i as that scene (see Peer.scene) with the
-    same arguments. [on_running](peers) runs once every client is connected; [seed] picks
+    same arguments. [on_running](peers, relay) runs once every client is connected (relay:
+    the Relay, None when there is none); [seed] picks
     the relay's drop and delay sequence; [server_command] runs the dedicated server from an
     exported build instead of the source tree."""
     port = free_udp_port()
@@ -171,7 +172,7 @@ def run_match(workdir: Path, peers: int, network: Network, seconds: float,
         if on_running is not None:
             for peer in started[1:]:
                 peer.wait_for_log("Connected")
-            on_running(started)
+            on_running(started, relay)
         codes = [peer.wait() for peer in started[1:]] + [host.wait()]
         for peer, code in zip(started[1:] + [host], codes):
             peer.report["exit_code"] = code
@@ -187,7 +188,7 @@ def killer(after_s: float, index: int, killed_at: list[float]):
     """An on_running hook for run_match: SIGKILLs peer [index] [after_s] into the match and
     appends the wall time to [killed_at]."""
 
-    def kill(peers: list[Peer]) -> None:
+    def kill(peers: list[Peer], _relay: Relay | None) -> None:
         time.sleep(after_s)
         killed_at.append(time.time())
         os.kill(peers[index].proc.pid, signal.SIGKILL)

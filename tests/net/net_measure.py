@@ -98,24 +98,29 @@ class ProcessMeter:
 
 
 def ball_state_use(reports: list[dict]) -> dict:
-    """Of the ball states the masters sent, the share each follower took (and received:
-    taken + refused as stale). A master sends every state to every other peer, so a peer was
-    offered what all the others sent; ENet's unreliable ordered channel drops one that
-    arrives after a newer one before the game sees it, so that loss is in neither count."""
+    """Of the ball states the masters sent, the share each follower took (its handler kept:
+    neither a copy nor late), and of those that reached it, the share its jitter buffer used
+    (played in sequence order; the rest arrived after the play had passed them). A master
+    sends every state to every other peer, so a peer was offered what all the others sent."""
     sent = sum(r["sent"] for r in reports)
     per_peer = []
     for r in reports:
         offered = sent - r["sent"]
+        stream = r.get("extra", {}).get("ball_stream", {})
+        reached = stream.get("received", 0) + stream.get("late", 0)
         per_peer.append({
             "peer": r["peer"],
             "offered": offered,
             "taken": r["states"],
-            "stale": r["late"],
             "taken_share": r["states"] / offered if offered else None,
-            "received_share": (r["states"] + r["late"]) / offered if offered else None,
+            "reached": reached,
+            "used": stream.get("used", 0),
+            "used_share": stream.get("used", 0) / reached if reached else None,
         })
     offered_all = sum(p["offered"] for p in per_peer)
+    reached_all = sum(p["reached"] for p in per_peer)
     return {
         "per_peer": per_peer,
         "taken_share": sum(r["states"] for r in reports) / offered_all if offered_all else None,
+        "used_share": sum(p["used"] for p in per_peer) / reached_all if reached_all else None,
     }

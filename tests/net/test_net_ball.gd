@@ -2,7 +2,8 @@ extends TestSuite
 ## A follower's ball in the real servo: a correction that would put it under the floor or
 ## past a wall (a blend pointing down as the ball lands, an extrapolation beyond the back
 ## wall of a four-player court) is kept inside the court, where the servo takes it, instead
-## of being refused with an engine error.
+## of being refused with an engine error; a transfer glides the ball over (no jump) unless a
+## paddle touched it since the transfer's state was sent; a serve is put at once.
 
 const PongTestScreen := preload("res://tests/pong/pong_test_screen.gd")
 
@@ -37,6 +38,70 @@ func test_a_correction_outside_the_court_lands_inside_it() -> void:
 		_pong.queue_free()
 		_pong = null
 		await wait_process_frames(2)
+
+
+func test_a_transfer_glides_the_ball_over_unless_our_paddle_touched_it_since() -> void:
+	var match_node: PongMatch = _open(2)
+	if match_node == null:
+		return
+	var court: PongCourt = match_node.court
+	_no_paddles()
+	var ball: PongNetBall = PongNetBall.new()
+	ball.stepped = true
+	ball.court = court
+	var here: Vector3 = Vector3(0.0, 1.5, 1.0)
+	var there: Vector3 = Vector3(0.8, 1.5, -1.0)  # 2.15 m away, in the other territory.
+	ball.put(here, Vector3.ZERO, Vector3.ZERO)
+	Haptics.pong.step_ticks(1)
+	ball.transfer(false, [there, Vector3(0, 1, 0), Vector3.ZERO], 0.05, 10.0)
+	Haptics.pong.step_ticks(1)
+	var state: HapticPongState = Haptics.pong.get_state()
+	var moved: float = (state.ball_position - here).length()
+	assert_gt(moved, 0.001, "on its way")
+	assert_lt(moved, 0.05, "no jump: a glide")
+	assert_almost_eq(state.ball_velocity.y, 1.0, 0.01, "the velocity taken at once")
+	assert_eq(state.territory, 1, "the corrected ball's territory")
+	Haptics.pong.step_ticks(300)
+	state = Haptics.pong.get_state()
+	var predictor: PongPredictor = PongPredictor.new(court)
+	var target: Array[Vector3] = PongNetSmoother.extrapolate(
+		predictor, there, Vector3(0, 1, 0), court.gravity, 0.301
+	)
+	assert_lt((state.ball_position - target[0]).length(), 0.03, "on the master's flight")
+
+	# Our paddle touched the ball at 20.0 s: a state sent before is not news to us.
+	ball.touched(20.0)
+	var before: Vector3 = state.ball_position
+	ball.transfer(false, [here, Vector3.ZERO, Vector3.ZERO], 0.1, 20.05)
+	Haptics.pong.step_ticks(1)
+	state = Haptics.pong.get_state()
+	assert_lt((state.ball_position - before).length(), 0.01, "kept: it only flew on")
+	assert_eq(ball.ignored, 1)
+	ball.transfer(false, [here, Vector3.ZERO, Vector3.ZERO], 0.01, 20.05)
+	Haptics.pong.step_ticks(1)
+	assert_lt(
+		(Haptics.pong.get_state().ball_position - here).length(),
+		(state.ball_position - here).length() - 0.005,
+		"a state sent after the touch corrects it"
+	)
+	# A serve is put at once.
+	ball.transfer(true, [here, Vector3.ZERO, Vector3.ZERO], 0.0, 30.0)
+	Haptics.pong.step_ticks(1)
+	assert_lt((Haptics.pong.get_state().ball_position - here).length(), 0.001, "served")
+	# The door checks a correction like a serve.
+	expect_error("outside the court")
+	assert_false(Haptics.pong.correct_ball(Vector3(0, -1, 0), Vector3.ZERO))
+
+
+## No paddle in play: nothing but the court and the commands move the ball.
+func _no_paddles() -> void:
+	var input: HapticPongInput = HapticPongInput.new()
+	for seat: int in 2:
+		var player: HapticPongPlayerInput = HapticPongPlayerInput.new()
+		player.active = false
+		player.kinematic = true
+		input.players.append(player)
+	Haptics.pong.set_input(input)
 
 
 func _open(players: int) -> PongMatch:

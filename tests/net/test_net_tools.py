@@ -7,38 +7,15 @@ import os
 import socket
 import subprocess
 import sys
-import threading
 
 import pytest
 
-from net_harness import ROUGH, Network, Relay, udp_ports
+from net_harness import ROOT, ROUGH, Network, Relay, udp_ports
 from net_measure import ProcessMeter, ball_state_use, read_process
 
-
-class Echo:
-    """Sends every datagram back, on a thread, until closed."""
-
-    def __init__(self) -> None:
-        self.sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
-        self.sock.bind(("127.0.0.1", 0))
-        self.sock.settimeout(0.1)
-        self.port = self.sock.getsockname()[1]
-        self._running = True
-        self._thread = threading.Thread(target=self._serve, daemon=True)
-        self._thread.start()
-
-    def _serve(self) -> None:
-        while self._running:
-            try:
-                data, addr = self.sock.recvfrom(2048)
-            except socket.timeout:
-                continue
-            self.sock.sendto(data, addr)
-
-    def close(self) -> None:
-        self._running = False
-        self._thread.join()
-        self.sock.close()
+# The relay's own tests' echo server (tools/net/tests), one for both suites.
+sys.path.insert(0, str(ROOT / "tools" / "net" / "tests"))
+from relay_fixtures import EchoServer  # noqa: E402
 
 
 def echoes(sock: socket.socket, count: int, quiet_s: float) -> int:
@@ -77,7 +54,7 @@ def test_the_rough_network_asks_the_relay_for_the_issues_conditions():
 
 
 def test_relay_cuts_and_restores_a_path(tmp_path):
-    echo = Echo()
+    echo = EchoServer()
     relay = Relay(echo.port, tmp_path, Network(5, 5, 0.0), seed=3)
     sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
     try:
@@ -133,10 +110,14 @@ def test_meter_sees_a_busy_process_and_its_memory():
 
 
 def test_ball_state_shares_are_of_what_the_other_peers_sent():
-    reports = [{"peer": 1, "sent": 600, "states": 350, "late": 10},
+    stream = {"received": 340, "late": 20, "used": 330, "duplicates": 4}
+    reports = [{"peer": 1, "sent": 600, "states": 350, "late": 10,
+                "extra": {"ball_stream": stream}},
                {"peer": 2, "sent": 400, "states": 540, "late": 0}]
     use = ball_state_use(reports)
     assert [p["offered"] for p in use["per_peer"]] == [400, 600]
     assert use["per_peer"][0]["taken_share"] == pytest.approx(350 / 400)
-    assert use["per_peer"][0]["received_share"] == pytest.approx(360 / 400)
+    assert use["per_peer"][0]["used_share"] == pytest.approx(330 / 360)
+    assert use["per_peer"][1]["used_share"] is None  # A peer that never followed.
     assert use["taken_share"] == pytest.approx(890 / 1000)
+    assert use["used_share"] == pytest.approx(330 / 360)

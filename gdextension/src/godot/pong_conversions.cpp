@@ -171,6 +171,7 @@ bool pong_command_from_dictionary(const gd::Dictionary &p_dictionary, PongComman
 	bool ok = true;
 	switch (command.type) {
 		case PongCommandType::SET_BALL:
+		case PongCommandType::CORRECT_BALL:
 			ok = reader.only_keys({ "type", "position", "velocity", "spin" }) &&
 					read_vec3(reader, "position", command.position, true) &&
 					read_vec3(reader, "velocity", command.velocity) && read_vec3(reader, "spin", command.spin);
@@ -199,6 +200,8 @@ gd::Dictionary pong_state_to_dictionary(const PongState &p_state) {
 	ball.set("position", to_godot(p_state.ball.position));
 	ball.set("velocity", to_godot(p_state.ball.velocity));
 	ball.set("spin", to_godot(p_state.ball.spin));
+	ball.set("correction", to_godot(p_state.ball_correction));
+	ball.set("correction_step_max", p_state.correction_step_max_m);
 	d.set("ball", ball.variant());
 	d.set("territory", static_cast<int64_t>(p_state.territory));
 	gd::Array players;

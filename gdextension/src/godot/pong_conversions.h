@@ -18,7 +18,7 @@ namespace haptics::binding {
 //  kinematic: bool, paddle_offset: Vector3, paddle_velocity: Vector3, normal: Vector3,
 //  spin: bool, gun: bool, active: bool}]}
 bool pong_input_from_dictionary(const gd::Dictionary &p_dictionary, PongInput &r_input, std::string &r_error);
-// {type: "set_ball", position: Vector3 (required), velocity: Vector3, spin: Vector3}
+// {type: "set_ball" | "correct_ball", position: Vector3 (required), velocity: Vector3, spin: Vector3}
 // {type: "effect", player: int, kind: "recoil" | "hit" | "slow" | "heavy" | "remote" | "none",
 //  direction: Vector3 (recoil, hit), magnitude_n: float, duration_s: float, owner: int}
 // {type: "clear_effects"}

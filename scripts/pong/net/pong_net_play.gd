@@ -3,9 +3,10 @@ extends PongNetWire
 ## One networked match on this peer: the private haptic space. Every peer runs the servo
 ## and simulates the ball; the owner of the territory the ball is in is its master
 ## ([PongNetAuthority]): it sends the ball state on every new servo state (>= 60 Hz,
-## unreliable_ordered, its own channel) and its contact with the ball stays in its own
-## servo at 1 kHz whatever the latency (contact is never sent). Followers carry the
-## received state forward to now and blend their ball onto it ([PongNetSmoother]). Each
+## unreliable, its own channel) and its contact with the ball stays in its own
+## servo at 1 kHz whatever the latency (contact is never sent). Followers play the
+## received states out in order from a jitter buffer, carry each forward to now, and the
+## servo blends their ball onto it ([PongNetBall]). Each
 ## peer sends the poses of the paddles it drives; other peers' paddles are kinematic
 ## inputs of the local servo ([PongNetPoses], [PongNetRemotePlayer]). Health changes come
 ## as reliable messages: floor bounces from the server, which judges the master's claims
@@ -58,10 +59,6 @@ var _settle_until: float = 0.0
 var _owe_s: float = 0.0
 var _last_now: float = 0.0
 var _running: bool = false
-## The newest state taken since the last frame, carried to now: [position, velocity, spin].
-## A stalled peer takes dozens at once; only the newest becomes a command to the servo
-## (whose queue holds 64).
-var _newest: Array[Vector3] = []
 ## The ball's velocity as its master last streamed it (Vector3.INF: none since the last
 ## transfer): what the server judges a stall by while it follows.
 var _master_velocity: Vector3 = Vector3.INF
@@ -75,6 +72,7 @@ func begin(p_match: PongMatch, p_authority: PongNetAuthority, seats: PackedInt32
 	ball.court = match_node.court
 	_predictor = PongPredictor.new(match_node.court)
 	match_node.event_seen.connect(_on_event)
+	match_node.event_seen.connect(_on_ball_touch)
 	match_node.match_over.connect(_on_match_over)
 	report.begin(authority.my_id)
 	if _latency == null:
@@ -83,10 +81,11 @@ func begin(p_match: PongMatch, p_authority: PongNetAuthority, seats: PackedInt32
 	poses = PongNetPoses.new(self, match_node, authority, report, _reject, _age_of)
 	floor_hurts = PongNetFloorHurts.new(self, match_node, authority, report, _reject)
 	report.extra["weapons"] = weapons.to_dict()
+	report.extra["ball_stream"] = ball.to_dict()
 	# The servo's clock may have started over with the match.
 	_last_sent_time = -INF
 	_last_pose_time = -INF
-	_newest = []
+	ball.restart()
 	_master_velocity = Vector3.INF
 	_running = true
 
@@ -110,15 +109,17 @@ func frame(delta: float) -> void:
 	if not _running:
 		return
 	weapons.expire_pending()
-	if not _newest.is_empty() and not authority.is_master():
-		ball.correct(_newest[0], _newest[1], _newest[2])
-	_newest = []
 	if stepped:
 		_owe_s += delta
 		var chunks: int = mini(floori(_owe_s / CHUNK_S), max_chunks_per_frame)
 		_owe_s = minf(_owe_s - chunks * CHUNK_S, CHUNK_S)
 		if chunks > 0:
 			match_node.run_until(func() -> bool: return false, (chunks - 0.5) * CHUNK_S)
+	# After the stepping: the target is carried to now, where the servo is.
+	if not authority.is_master() and ball.follow(PongNetBall.clock_s(), _predictor, _gravity()):
+		# Only the newest state played becomes a command to the servo (whose queue holds 64).
+		_master_velocity = ball.buffer.played.velocity
+		report.extra["ball_stream"] = ball.to_dict()
 	var snapshot: HapticPongState = match_node.snapshot
 	var sim_dt: float = match_node.now - _last_now
 	_last_now = match_node.now
@@ -137,12 +138,10 @@ func frame(delta: float) -> void:
 			&"_ball",
 			[authority.epoch, _seq, snapshot.time_s] + _ball_of(snapshot) + [_latency.my_leg_ms()]
 		)
-	elif not authority.is_master():
-		ball.nudge(sim_dt)
 	if snapshot.time_s - _last_pose_time >= 1.0 / MAX_STREAM_HZ:
 		_last_pose_time = snapshot.time_s
 		poses.send(snapshot, local_seats, _latency.my_leg_ms())
-	report.sample(snapshot.ball_position, authority.is_master(), snapshot.time_s)
+	report.sample(snapshot, authority.is_master())
 	floor_hurts.observe(snapshot)
 
 
@@ -216,8 +215,11 @@ func _hand_off(snapshot: HapticPongState) -> void:
 		send_to(PongNetAuthority.SERVER_ID, &"_request", args)
 
 
+## The ball as the master gives it: the corrected one (a hand-off's correction may still be
+## gliding in), which followers and the server aim at.
 func _ball_of(snapshot: HapticPongState) -> Array:
-	return [snapshot.ball_position, snapshot.ball_velocity, snapshot.ball_spin]
+	var corrected: Vector3 = snapshot.ball_position + snapshot.ball_correction
+	return [corrected, snapshot.ball_velocity, snapshot.ball_spin]
 
 
 ## How old a message of [param sender] stamped with its servo time [param sent_at] is, s
@@ -258,20 +260,25 @@ func _on_ball(
 	var state_epoch: int = epoch
 	var state_seq: int = seq
 	var sent_at: float = time_s
-	var p: Vector3 = position
-	var v: Vector3 = velocity
-	var w: Vector3 = spin
 	var leg: int = leg_ms
+	# The stream is unordered: the authority judges the epoch and the sender, the buffer the
+	# order (a state older than the newest may fill a gap).
 	reason = authority.accept_state(sender, state_epoch, state_seq)
-	if not reason.is_empty():
+	var in_stream: bool = state_epoch == authority.epoch and sender == authority.master_peer
+	if not reason.is_empty() and not in_stream:
+		report.late += 1
+		return
+	var arrival: float = PongNetBall.clock_s()
+	var age: float = _age_of(sender, sent_at, leg)
+	var state: PongNetBallBuffer.State = PongNetBallBuffer.State.new(
+		state_seq, sent_at, [position, velocity, spin], arrival, age
+	)
+	var taken: PongNetBallBuffer.Taken = ball.take(state)
+	if taken == PongNetBallBuffer.Taken.DUPLICATE or taken == PongNetBallBuffer.Taken.LATE:
 		report.late += 1
 		return
 	report.states += 1
-	var age: float = _age_of(sender, sent_at, leg)
 	report.ages.append(age)
-	var target: Array[Vector3] = PongNetSmoother.extrapolate(_predictor, p, v, _gravity(), age)
-	_newest = [target[0], target[1], w]
-	_master_velocity = v
 
 
 func _on_request(
@@ -333,7 +340,7 @@ func _on_transfer(
 		_reject(sender, "transfer", reason)
 		return
 	report.transfer(authority.history[-1])
-	_newest = []
+	ball.restart()
 	_master_velocity = Vector3.INF
 	var state: Array[Vector3] = [position, velocity, spin]
 	var sent_age_ms: int = age_ms
@@ -343,11 +350,8 @@ func _on_transfer(
 	)
 	var local: Vector3 = ball.local()[0]
 	report.handoff_corrections.append((target[0] - local).length())
-	if kind == PongNetProtocol.TRANSFER_SERVE or authority.is_master():
-		ball.smoother.pending = Vector3.ZERO
-		ball.put(target[0], target[1], state[2])
-	else:
-		ball.correct(target[0], target[1], state[2])
+	var serve: bool = kind == PongNetProtocol.TRANSFER_SERVE
+	ball.transfer(serve, [target[0], target[1], state[2]], age, PongNetBall.clock_s())
 	_settle_until = match_node.snapshot.time_s + SETTLE_S
 
 
@@ -373,6 +377,13 @@ func _on_event(event: Dictionary) -> void:
 func _on_match_over(winner: int) -> void:
 	report.winner = winner
 	finished.emit(winner)
+
+
+## A paddle this peer drives touched the ball ([method PongNetBall.touched]).
+func _on_ball_touch(event: Dictionary) -> void:
+	var player: int = event.get("player", -1)
+	if str(event.get("type", "")) == "paddle" and local_seats.has(player):
+		ball.touched(PongNetBall.clock_s())
 
 
 func _gravity() -> float:

@@ -4,9 +4,9 @@ extends RefCounted
 ## received message passes before it touches the game. A message that fails a check is
 ## dropped with one log line naming the sender and the reason; the game goes on.
 ##
-## Channels (ENet, through SceneMultiplayer's transfer_channel): the ball state stream and
-## the pose stream each get their own unreliable_ordered channel so they never queue behind
-## reliable traffic; lobby, hand-offs and rules share one reliable channel.
+## Channels (ENet, through SceneMultiplayer's transfer_channel): the ball state stream
+## (unreliable) and the pose stream (unreliable_ordered) each get their own channel so they
+## never queue behind reliable traffic; lobby, hand-offs and rules share one reliable channel.
 
 ## Sent and compared at connect (auth): peers of another protocol version are refused.
 const VERSION: String = "hbp-net-3"
@@ -19,6 +19,9 @@ const DEFAULT_PORT: int = 7420
 ## run in three of four peers at 150 ms and 5 % loss here). On channel 0 ENet delivers it
 ## after the "complete".
 const CHANNEL_HANDSHAKE: int = 0
+## The ball stream: unreliable and unordered (ENet's unsequenced), so a state that arrives
+## after a newer one still reaches the follower's jitter buffer ([PongNetBallBuffer]); on an
+## unreliable_ordered channel ENet drops it, two thirds of the states on a path that reorders.
 const CHANNEL_BALL: int = 1
 const CHANNEL_POSE: int = 2
 const CHANNEL_RELIABLE: int = 3

@@ -16,6 +16,8 @@ var late: int = 0
 var poses: int = 0
 ## Age estimate of each state taken, seconds.
 var ages: PackedFloat32Array = PackedFloat32Array()
+## The most a network correction moved the servo's ball in one tick, metres.
+var correction_step_max_m: float = 0.0
 ## |target - local| at each transfer, metres.
 var handoff_corrections: PackedFloat32Array = PackedFloat32Array()
 ## [epoch, player, cause] of each health loss applied.
@@ -52,9 +54,12 @@ func transfer(entry: Dictionary) -> void:
 	_transfers.append(copy)
 
 
-## The ball at [param position] on this peer's servo at [param sim_s]; [param master]:
-## whether this peer simulates it for everyone.
-func sample(position: Vector3, master: bool, sim_s: float) -> void:
+## The ball in this peer's servo [param snapshot]; [param master]: whether this peer
+## simulates it for everyone.
+func sample(snapshot: HapticPongState, master: bool) -> void:
+	correction_step_max_m = maxf(correction_step_max_m, snapshot.ball_correction_step_max)
+	var position: Vector3 = snapshot.ball_position
+	var sim_s: float = snapshot.time_s
 	var t: float = now()
 	if master and _master_since < 0.0:
 		_master_since = t
@@ -95,6 +100,7 @@ func to_dict(smoother: PongNetSmoother, authority: PongNetAuthority) -> Dictiona
 			"max_m": PongNetSmoother.quantile(smoother.sizes, 1.0),
 		},
 		"handoff_corrections_m": Array(handoff_corrections),
+		"correction_step_max_m": correction_step_max_m,
 		"transfers": _transfers,
 		"master_intervals": intervals,
 		"samples": _samples,

@@ -1,24 +1,21 @@
 class_name PongNetSmoother
 extends RefCounted
-## How a follower brings its own ball (simulated by its servo) onto the master's.
+## How a follower brings its own ball (simulated by its servo) onto the master's: the
+## prediction and the bookkeeping. The blend itself is the servo's (CORRECT_BALL, its
+## [code]pong.correction_*[/code] settings): the velocity and spin are taken at once, the
+## position error is blended out with a 40 ms time constant at 20 m/s at most, so the ball
+## never jumps (it moves at most 38 mm in a 1 ms tick because of a correction), and near the
+## local player's paddle no faster than the hand's force may change (the slew rate).
 ##
-## Each received state is extrapolated to "now" on the follower with the same ballistic
-## model the computer player uses ([PongPredictor]: gravity and bounces) over its estimated
-## age. The velocity and spin are taken at once (no visible jump: positions stay
-## continuous), the position error is blended out exponentially with time constant
-## [member tau_s] (95 % gone after 3 tau, about 120 ms), unless it is larger than
-## [member snap_distance_m] (a serve, a missed hand-off): then the ball is put there.
+## Each played state is extrapolated to "now" on the follower with the same ballistic model
+## the computer player uses ([PongPredictor]: gravity and bounces) over its estimated age.
 ## Each correction's size is recorded for the report.
 
-## Time constant of the position blend, seconds.
-var tau_s: float = 0.04
-## Larger errors are not blended but snapped, metres.
-var snap_distance_m: float = 2.5
-## Position error not yet blended out, metres (world).
-var pending: Vector3 = Vector3.ZERO
-## The size of each received correction, metres (before blending).
+## The size of each correction, metres (before blending).
 var sizes: PackedFloat32Array = PackedFloat32Array()
-## Snaps made.
+## Corrections put at once instead of blended. The servo blends every correction now,
+## however large (a serve is no correction), so this stays 0; the report keeps the count so
+## runs before and after compare.
 var snaps: int = 0
 
 
@@ -33,24 +30,9 @@ static func extrapolate(
 	return [PongPredictor.position_at(path, age_s), PongPredictor.velocity_at(path, age_s)]
 
 
-## A new target: the master's ball extrapolated to now is [param target]; ours is at
-## [param local]. Returns true when the ball is to be snapped to [param target].
-func on_target(local: Vector3, target: Vector3) -> bool:
-	var error: Vector3 = target - local
-	sizes.append(error.length())
-	if error.length() > snap_distance_m:
-		snaps += 1
-		pending = Vector3.ZERO
-		return true
-	pending = error
-	return false
-
-
-## The part of the pending error to apply over the next [param dt] seconds.
-func take(dt: float) -> Vector3:
-	var part: Vector3 = pending * (1.0 - exp(-maxf(dt, 0.0) / tau_s))
-	pending -= part
-	return part
+## A correction from our ball at [param local] to [param target]: its size is recorded.
+func record(local: Vector3, target: Vector3) -> void:
+	sizes.append((target - local).length())
 
 
 ## The [param q] quantile (0..1) of [param values] (0 when empty).

@@ -31,24 +31,17 @@ func send_to(peer: int, method: StringName, args: Array) -> void:
 			callv(&"rpc_id", [peer, method] + args)
 
 
-@rpc("any_peer", "call_remote", "unreliable_ordered", PongNetProtocol.CHANNEL_BALL)
-func _ball(
-	epoch: Variant,
-	seq: Variant,
-	time_s: Variant,
-	position: Variant,
-	velocity: Variant,
-	spin: Variant,
-	leg_ms: Variant
-) -> void:
-	_on_ball(
-		multiplayer.get_remote_sender_id(), epoch, seq, time_s, position, velocity, spin, leg_ms
-	)
+# Every stub takes its arguments as a list and checks their count: the engine fails a call
+# with a wrong count with an error line per message, which a peer could flood the log with;
+# here it is one of the peer's bad messages (PongNetSession.misbehaved). The ball's channel
+# is unreliable, not unreliable_ordered: ENet would drop every state that arrives after a
+# newer one before the handler sees it; the follower's buffer orders them (PongNetBallBuffer).
+@rpc("any_peer", "call_remote", "unreliable", PongNetProtocol.CHANNEL_BALL)
+func _ball(...args: Array) -> void:
+	var state: Array = _args(args, 7, "ball state")
+	if not state.is_empty():
+		callv(&"_on_ball", [multiplayer.get_remote_sender_id()] + state)
 
-
-# Every stub below takes its arguments as a list and checks their count: the engine fails a
-# call with a wrong count with an error line per message, which a peer could flood the log
-# with; here it is one of the peer's bad messages (PongNetSession.misbehaved).
 
 @rpc("any_peer", "call_remote", "unreliable_ordered", PongNetProtocol.CHANNEL_POSE)
 func _pose(...args: Array) -> void:

@@ -9,6 +9,8 @@
 //
 // World space is Godot's 3D world: metres, y up, the court floor at y = 0 (court.h).
 
+#include "core/servo/servo_config.h"
+
 namespace haptics {
 
 struct PongConfig {
@@ -124,6 +126,17 @@ struct PongConfig {
 	// The time-domain passivity rule on the remote coupling (hand_effects.h). Off only to show
 	// what it prevents (a doctest keeps that case): a delayed coupling then pumps energy.
 	bool remote_passivity = true;
+
+	// --- Network corrections of the ball (CORRECT_BALL, ball_correction.h) ---------------
+	// A follower's ball is blended onto the master's with this time constant: 95 % of an
+	// error is gone after 3 tau (120 ms), all of it after 5 tau unless the cap below holds it.
+	double correction_time_constant_s = 0.04;
+	// The blend moves the ball at most this fast: 20 mm a tick at 1 kHz, well under the
+	// issue's 50 mm; a 2.5 m correction (a missed hand-off) is a 125 ms glide, not a jump.
+	double correction_max_speed_m_per_s = 20.0;
+	// Near the device player's paddle a correction changes the hand's force no faster than
+	// this: the safety stage's default slew rate, so the slew limit never has to clip one.
+	double correction_force_rate_n_per_s = SafetyConfig{}.slew_rate_n_per_s;
 
 	// --- Beginner mode (the paper's "Haptic Battle Air Hockey") -------------------------
 	// No gravity; the ball centre is held at this height, about a seated player's paddle.

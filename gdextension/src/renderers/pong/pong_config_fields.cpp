@@ -51,6 +51,9 @@ const ConfigField FIELDS[] = {
 	{ "pong", "remote_max_force_n", K::NUMBER, 0.0, 10.0, "N", nullptr, {}, nullptr, PONG_FIELD(remote_max_force_n) },
 	{ "pong", "remote_max_extrapolation_s", K::NUMBER, 0.0, 1.0, "s", nullptr, {}, nullptr, PONG_FIELD(remote_max_extrapolation_s) },
 	{ "pong", "remote_passivity", K::FLAG, 0.0, 1.0, "", nullptr, {}, nullptr, PONG_FIELD(remote_passivity) },
+	{ "pong", "correction_time_constant_s", K::NUMBER, 0.001, 1.0, "s", nullptr, {}, nullptr, PONG_FIELD(correction_time_constant_s) },
+	{ "pong", "correction_max_speed_m_per_s", K::NUMBER, 0.1, 50.0, "m/s", nullptr, {}, nullptr, PONG_FIELD(correction_max_speed_m_per_s) },
+	{ "pong", "correction_force_rate_n_per_s", K::NUMBER, 1.0, 1e6, "N/s", nullptr, {}, nullptr, PONG_FIELD(correction_force_rate_n_per_s) },
 	{ "pong", "beginner_height_m", K::NUMBER, 0.05, 2.0, "m", nullptr, {}, nullptr, PONG_FIELD(beginner_height_m) },
 	{ "pong", "beginner_target_half_width_m", K::NUMBER, 0.05, 1.5, "m", nullptr, {}, nullptr, PONG_FIELD(beginner_target_half_width_m) },
 

@@ -76,15 +76,18 @@ inline constexpr int PONG_EFFECT_KIND_COUNT = 6;
 inline constexpr const char *PONG_EFFECT_NAMES[] = { "none", "recoil", "hit", "slow", "heavy", "remote" };
 
 enum class PongCommandType : int32_t {
-	SET_BALL = 0, // Serve, or a network update from the territory's owner.
+	SET_BALL = 0, // A serve: the ball is put there at once.
 	EFFECT = 1,
 	CLEAR_EFFECTS = 2,
+	// A network correction: the ball's state as it should be now, blended in without a jump
+	// while the ball flies on (ball_correction.h).
+	CORRECT_BALL = 3,
 };
-inline constexpr const char *PONG_COMMAND_NAMES[] = { "set_ball", "effect", "clear_effects" };
+inline constexpr const char *PONG_COMMAND_NAMES[] = { "set_ball", "effect", "clear_effects", "correct_ball" };
 
 struct PongCommand {
 	PongCommandType type = PongCommandType::SET_BALL;
-	// SET_BALL: the ball's whole state, world.
+	// SET_BALL, CORRECT_BALL: the ball's whole state, world.
 	Vec3 position;
 	Vec3 velocity;
 	Vec3 spin; // rad/s.

@@ -68,6 +68,11 @@ struct PongEffectState {
 struct PongState {
 	double time_s = 0.0;
 	BallState ball;
+	// What a running CORRECT_BALL still has to blend in, m: the corrected ball, the one a
+	// master streams and the territory is taken from, is at ball.position + this.
+	Vec3 ball_correction;
+	// The most a correction moved the ball in one tick this session, m (issue 24's bound: 0.05).
+	double correction_step_max_m = 0.0;
 	int32_t territory = 0;
 	int32_t player_count = PONG_DEFAULT_PLAYERS; // The first player_count entries of players.
 	PongPaddleState players[PONG_MAX_PLAYERS];

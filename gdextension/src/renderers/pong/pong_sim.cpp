@@ -70,11 +70,13 @@ void PongSim::reset() {
 		velocity = Vec3{};
 	}
 	ball_ = BallState{ { 0.0, config_.ball_radius_m, 0.0 }, {}, {} };
+	correction_.clear();
 	territory_ = territory_of(ball_.position, players());
 	clear_contacts();
 	effects_.clear();
 	hand_ = HandForces{};
 	paddle_contacts_ = 0;
+	correction_step_max_m_ = 0.0;
 	bounces_ = 0;
 	events_.clear();
 	events_.reset_dropped();
@@ -118,9 +120,23 @@ void PongSim::apply(const PongCommand &p_command) {
 			ball_.position = p_command.position;
 			ball_.velocity = cap_length(p_command.velocity, config_.max_ball_speed_m_per_s);
 			ball_.spin = cap_length(p_command.spin, config_.max_spin_rad_per_s);
+			correction_.clear();
 			territory_ = territory_of(ball_.position, players());
 			clear_contacts();
 			break;
+		case PongCommandType::CORRECT_BALL: {
+			const BallState target{ p_command.position, cap_length(p_command.velocity, config_.max_ball_speed_m_per_s),
+				cap_length(p_command.spin, config_.max_spin_rad_per_s) };
+			correction_.start(ball_, target, config_.correction_time_constant_s);
+			territory_ = territory_of(target.position, players());
+			// Contacts start afresh, as after a SET_BALL: a paddle's remembered side would push
+			// the corrected ball back through it (a follower's ball ran off at twice the master's
+			// speed, LAN divergence p99 0.5-2 m). Kept for the device player's paddle alone, the
+			// same happened through the hand's own paddle. The force on a hand still touching
+			// the ball is the same either way: the contact restarts on the side the ball is on.
+			clear_contacts();
+			break;
+		}
 		case PongCommandType::EFFECT:
 			start_effect(p_command);
 			break;
@@ -168,6 +184,29 @@ void PongSim::start_effect(const PongCommand &p_command) {
 	order.magnitude_n = p_command.use_default_magnitude ? magnitude : p_command.magnitude_n;
 	order.duration_s = p_command.use_default_duration ? duration : p_command.duration_s;
 	effects_.start(order, hand_position_m_);
+}
+
+CorrectionCaps PongSim::correction_caps(int p_device, double p_dt_s) const {
+	CorrectionCaps caps;
+	caps.position_m = config_.correction_max_speed_m_per_s * p_dt_s;
+	if (p_device < 0 || !poses_[p_device].touchable) {
+		return caps;
+	}
+	// Near: within a tick of touching, its own flight and the correction's step included.
+	const double r = config_.ball_radius_m;
+	const double reach = config_.paddle_radius_m + r + (config_.max_ball_speed_m_per_s * p_dt_s + caps.position_m);
+	if (length(ball_.position - poses_[p_device].center) > reach) {
+		return caps;
+	}
+	const double budget = 0.5 * config_.correction_force_rate_n_per_s * p_dt_s; // Each half.
+	const double per_metre = law_.hand_stiffness_n_per_m + law_.spin_force_gain * config_.max_spin_rad_per_s;
+	if (per_metre > 0.0) {
+		caps.position_m = std::min(caps.position_m, budget / per_metre);
+	}
+	caps.spin_rad_per_s = law_.spin_force_gain > 0.0 ? budget / (law_.spin_force_gain * r)
+													 : std::numeric_limits<double>::infinity();
+	caps.blend_velocity_and_spin = true;
+	return caps;
 }
 
 void PongSim::pose_paddles(const HandSample *p_hand) {
@@ -229,6 +268,16 @@ void PongSim::step(double p_dt_s, const HandSample *p_hand) {
 	pose_paddles(p_hand);
 	const int device = p_hand != nullptr ? device_player() : -1;
 	const bool beginner = input_.beginner;
+	if (correction_.active()) {
+		// Before the contacts, so this tick's forces already see the corrected ball.
+		const Vec3 velocity_before = ball_.velocity;
+		const Vec3 step =
+				correction_.advance(ball_, p_dt_s, config_.correction_time_constant_s, correction_caps(device, p_dt_s));
+		// What the correction moved the ball this tick: its step, and the velocity it changed
+		// flown for the tick (the ball would otherwise have flown on with the old one).
+		const double moved = length(step + (ball_.velocity - velocity_before) * p_dt_s);
+		correction_step_max_m_ = std::max(correction_step_max_m_, moved);
+	}
 
 	Vec3 ball_force;
 	Vec3 spin_rate;
@@ -278,10 +327,11 @@ void PongSim::step(double p_dt_s, const HandSample *p_hand) {
 		emit(floor ? PongEventType::FLOOR : PongEventType::WALL, hit.position, hit.bounce.normal_speed, -1,
 				hit.surface);
 	}
-	const int territory = territory_of(ball_.position, players());
+	const Vec3 corrected = ball_.position + correction_.position_left();
+	const int territory = territory_of(corrected, players());
 	if (territory != territory_) {
 		territory_ = territory;
-		emit(PongEventType::TERRITORY, ball_.position, length(ball_.velocity));
+		emit(PongEventType::TERRITORY, corrected, length(ball_.velocity));
 	}
 
 	// Effects keep time without a device too; only a device player feels them.
@@ -295,6 +345,8 @@ void PongSim::step(double p_dt_s, const HandSample *p_hand) {
 void PongSim::fill_state(PongState &r_state) const {
 	r_state.time_s = time_s_;
 	r_state.ball = ball_;
+	r_state.ball_correction = correction_.position_left();
+	r_state.correction_step_max_m = correction_step_max_m_;
 	r_state.territory = territory_;
 	r_state.player_count = players();
 	for (int p = 0; p < players(); ++p) {

@@ -30,11 +30,16 @@
 // drops the vertical part of the paddles' push), semi-implicit Euler, court bounces, the
 // territory. Events: FLOOR (normal speed >= min_bounce_speed), WALL (any bounce that is not
 // the ball coming to rest), PADDLE and RELEASE, TERRITORY. A SET_BALL moves the ball without
-// events (a serve or a network correction is not play) and starts contacts afresh.
+// events (a serve is not play) and starts contacts afresh. A CORRECT_BALL (a network
+// correction) is blended in over the next ticks, before each tick's contacts, with the
+// ball's physics running on (ball_correction.h); contacts start afresh as after a SET_BALL;
+// the territory is the corrected ball's (the ball plus what is still to blend in), taken
+// without an event when the correction arrives.
 
 #include "core/base/vec3.h"
 #include "core/device/device.h"
 #include "renderers/pong/ball.h"
+#include "renderers/pong/ball_correction.h"
 #include "renderers/pong/hand_effects.h"
 #include "renderers/pong/paddle_contact.h"
 #include "renderers/pong/pong_config.h"
@@ -88,6 +93,7 @@ public:
 	int device_player() const;
 	double time_s() const { return time_s_; }
 	const BallState &ball() const { return ball_; }
+	const BallCorrection &correction() const { return correction_; }
 	int territory() const { return territory_; }
 	const PaddlePose &paddle(int p_player) const { return poses_[p_player]; }
 	const PaddleContact &contact(int p_player) const { return contacts_[p_player]; }
@@ -104,6 +110,8 @@ public:
 private:
 	void pose_paddles(const HandSample *p_hand);
 	void start_effect(const PongCommand &p_command);
+	// What a correction may take this tick, p_device the device player this tick (-1: none).
+	CorrectionCaps correction_caps(int p_device, double p_dt_s) const;
 	void emit(PongEventType p_type, const Vec3 &p_position, double p_speed, int p_player = -1,
 			CourtSurface p_wall = CourtSurface::FLOOR);
 	int players() const { return config_.players; }
@@ -118,6 +126,7 @@ private:
 
 	double time_s_ = 0.0;
 	BallState ball_;
+	BallCorrection correction_;
 	int territory_ = 0;
 	PaddleContactTracker trackers_[PONG_MAX_PLAYERS];
 	PaddlePose poses_[PONG_MAX_PLAYERS];
@@ -130,6 +139,7 @@ private:
 	Vec3 hand_position_m_; // The latest device position (an effect starts from it).
 
 	uint64_t paddle_contacts_ = 0;
+	double correction_step_max_m_ = 0.0;
 	uint64_t bounces_ = 0;
 	PongEventRing events_;
 };

@@ -53,7 +53,8 @@ Status validate_pong_input(const PongInput &p_input) {
 
 Status validate_pong_command(const PongCommand &p_command, const PongConfig &p_config) {
 	switch (p_command.type) {
-		case PongCommandType::SET_BALL: {
+		case PongCommandType::SET_BALL:
+		case PongCommandType::CORRECT_BALL: {
 			const Vec3 &p = p_command.position;
 			HAPTICS_RETURN_IF_ERROR(check_vector("pong_command.position", p, false, MAX_WORLD_M));
 			const double w = court_half_x(p_config);

@@ -15,7 +15,7 @@ namespace haptics {
 // normals, local_player -1 or a seat 0..PONG_MAX_PLAYERS - 1 (seats beyond the configured
 // count are ignored by the servo).
 Status validate_pong_input(const PongInput &p_input);
-// SET_BALL inside the court of p_config; EFFECT: a player of its count, a kind, a
+// SET_BALL and CORRECT_BALL inside the court of p_config; EFFECT: a player of its count, a kind, a
 // direction for RECOIL and HIT, a magnitude and duration when given, an owner (another
 // player) for REMOTE.
 Status validate_pong_command(const PongCommand &p_command, const PongConfig &p_config);
