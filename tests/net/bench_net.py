@@ -8,7 +8,8 @@ corrections over 1 m, what the relay did (losses, bursts, duplicates, reordering
 headless peer's share of a core and peak resident memory from all connected to its exit
 (net_measure), and how soon a killed client is noticed. JSON into .bench/net.json (or --json FILE).
 
-    python tests/net/bench_net.py [--seconds 12] [--peers 2] [--json .bench/net.json]
+    python tests/net/bench_net.py [--seconds 12] [--peers 2] [--networks rough ...]
+        [--json .bench/net.json]
 """
 
 from __future__ import annotations
@@ -108,12 +109,13 @@ def main() -> None:
     parser = argparse.ArgumentParser()
     parser.add_argument("--seconds", type=float, default=12.0)
     parser.add_argument("--peers", type=int, nargs="+", default=[2])
+    parser.add_argument("--networks", nargs="+", choices=list(SETTINGS), default=list(SETTINGS))
     parser.add_argument("--json", type=Path, default=ROOT / ".bench" / "net.json")
     args = parser.parse_args()
     rows = []
     for peers in args.peers:
-        for label, network in SETTINGS.items():
-            row = measure(peers, label, network, args.seconds)
+        for label in args.networks:
+            row = measure(peers, label, SETTINGS[label], args.seconds)
             rows.append(row)
             print(f"{peers} peers {label:>13}: up {row['client_up_bytes_per_s']:7.0f} B/s "
                   f"down {row['client_down_bytes_per_s']:7.0f} B/s, {row['handoffs']:2d} hand-offs "
@@ -123,7 +125,7 @@ def main() -> None:
                   f"{row['correction_max_m']:.3f} m, snaps {row['snaps']}", flush=True)
             print(describe(row), flush=True)
     kills = []
-    for label in ("0ms", "50ms+10j/5%", "rough"):
+    for label in [n for n in ("0ms", "50ms+10j/5%", "rough") if n in args.networks]:
         kills.append(detection(label, SETTINGS[label]))
         seconds = kills[-1]["detection_s"]
         shown = "not noticed" if seconds is None else f"{seconds:.2f} s"
