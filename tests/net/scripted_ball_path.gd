@@ -47,3 +47,14 @@ func arrivals(sent_s: float) -> PackedFloat64Array:
 
 func _one_delay() -> float:
 	return delay_s + _rng.randf_range(-jitter_s, jitter_s)
+
+
+## Takes every paddle out of play in the servo: only the court and the commands move the ball.
+static func no_paddles() -> void:
+	var input: HapticPongInput = HapticPongInput.new()
+	for seat: int in 2:
+		var player: HapticPongPlayerInput = HapticPongPlayerInput.new()
+		player.active = false
+		player.kinematic = true
+		input.players.append(player)
+	Haptics.pong.set_input(input)

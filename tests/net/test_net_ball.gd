@@ -6,6 +6,7 @@ extends TestSuite
 ## paddle touched it since the transfer's state was sent; a serve is put at once.
 
 const PongTestScreen := preload("res://tests/pong/pong_test_screen.gd")
+const ScriptedBallPath := preload("res://tests/net/scripted_ball_path.gd")
 
 var _pong: PongScreen = null
 
@@ -45,7 +46,7 @@ func test_a_transfer_glides_the_ball_over_unless_our_paddle_touched_it_since() -
 	if match_node == null:
 		return
 	var court: PongCourt = match_node.court
-	_no_paddles()
+	ScriptedBallPath.no_paddles()
 	var ball: PongNetBall = PongNetBall.new()
 	ball.stepped = true
 	ball.court = court
@@ -91,17 +92,6 @@ func test_a_transfer_glides_the_ball_over_unless_our_paddle_touched_it_since() -
 	# The door checks a correction like a serve.
 	expect_error("outside the court")
 	assert_false(Haptics.pong.correct_ball(Vector3(0, -1, 0), Vector3.ZERO))
-
-
-## No paddle in play: nothing but the court and the commands move the ball.
-func _no_paddles() -> void:
-	var input: HapticPongInput = HapticPongInput.new()
-	for seat: int in 2:
-		var player: HapticPongPlayerInput = HapticPongPlayerInput.new()
-		player.active = false
-		player.kinematic = true
-		input.players.append(player)
-	Haptics.pong.set_input(input)
 
 
 func _open(players: int) -> PongMatch:

@@ -33,7 +33,7 @@ func test_a_follower_on_the_issue_path_uses_its_states_and_its_ball_never_jumps(
 	_pong = PongTestScreen.stepped(PongMatch.Mode.DEMO, 2)
 	add_child(_pong)
 	var court: PongCourt = _pong.match_node.court
-	_no_paddles()
+	ScriptedBallPath.no_paddles()
 	var rng: RandomNumberGenerator = RandomNumberGenerator.new()
 	rng.seed = 24
 	var master: Dictionary = _fly_master(court, rng)
@@ -182,14 +182,3 @@ func _fly_master(court: PongCourt, rng: RandomNumberGenerator) -> Dictionary:
 		if tick < ticks:
 			Haptics.pong.step_ticks(1)
 	return {"flight": flight, "states": states, "velocity0": velocity}
-
-
-## No paddle in play: only the strikes and the court move the ball.
-func _no_paddles() -> void:
-	var input: HapticPongInput = HapticPongInput.new()
-	for seat: int in 2:
-		var player: HapticPongPlayerInput = HapticPongPlayerInput.new()
-		player.active = false
-		player.kinematic = true
-		input.players.append(player)
-	Haptics.pong.set_input(input)
