@@ -25,7 +25,8 @@ SOAK_SECONDS ?= 600
 
 .PHONY: play edit test deps engine build build-release import test-native test-godot lint pong-demo \
 	export test-export export-server test-export-server dist test-dist test-windowed test-net bench-net bench soak sanitize analyze export-study \
-	test-analysis addon test-addon test-editor test-kernel test-rt clean distclean
+	test-analysis addon test-addon test-editor test-kernel test-rt clean distclean \
+	build-windows test-windows
 
 ## deps: install missing OS packages (apt-get; sudo when not root)
 deps:
@@ -80,12 +81,23 @@ pong-demo: import
 
 ## test: every suite; any failure fails the target
 test: import test-native test-godot lint test-analysis test-net test-export test-export-server \
-	test-dist test-windowed test-addon test-editor test-kernel test-rt
+	test-dist test-windowed test-addon test-editor test-kernel test-rt test-windows
 	@echo "make test: all suites passed"
 
 ## test-native: the C++ doctest suite through CTest
 test-native: build
 	@ctest --test-dir $(BUILD)/debug --output-on-failure -j $(JOBS)
+
+## build-windows: the extension for Windows x86_64 (MinGW-w64), hidapi and libusb from
+## Debian's sources linked in, as addons/haptics/bin/libhaptics.windows.*.dll, and the
+## doctests as an .exe; checks the DLLs import only Windows' own DLLs (tools/windows/build.sh)
+build-windows: engine
+	@nice -n 19 tools/windows/build.sh
+
+## test-windows: the doctest suite under Wine, every test but the Linux-only ones (counted
+## and listed), and the DLLs' imports (tools/windows/test.sh)
+test-windows: build build-windows
+	@nice -n 19 tools/windows/test.sh
 
 ## test-godot: the headless GDScript suite with the real extension loaded
 test-godot: import

@@ -45,7 +45,10 @@ endif()
 target_compile_definitions(haptics PRIVATE HAPTICS_VERSION="${HAPTICS_VERSION}")
 set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS "${HAPTICS_ADDON_DIR}/plugin.cfg")
 target_link_options(haptics PRIVATE -static-libstdc++ -static-libgcc -Wl,--no-undefined)
+# A DLL is a runtime artefact to CMake, its import library an archive (kept out of the addon).
 set_target_properties(haptics PROPERTIES
-  OUTPUT_NAME "haptics.linux.${HAPTICS_TARGET}.x86_64"
+  OUTPUT_NAME "haptics.${HAPTICS_PLATFORM}.${HAPTICS_TARGET}.x86_64"
   PREFIX "lib"
-  LIBRARY_OUTPUT_DIRECTORY "${HAPTICS_ADDON_DIR}/bin")
+  LIBRARY_OUTPUT_DIRECTORY "${HAPTICS_ADDON_DIR}/bin"
+  RUNTIME_OUTPUT_DIRECTORY "${HAPTICS_ADDON_DIR}/bin"
+  ARCHIVE_OUTPUT_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}")

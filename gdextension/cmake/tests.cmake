@@ -14,10 +14,24 @@ set(FAKE_HD_DEFINITIONS HAPTICS_FAKE_HD_PATH="$<TARGET_FILE:fake_hd>"
   HAPTICS_FAKE_HD_NO_ASYNC_PATH="$<TARGET_FILE:fake_hd_no_async>")
 
 if(HAPTICS_BUILD_TESTS)
-  find_package(doctest REQUIRED)
-  include(CTest)
-  include(doctest)
+  if(CMAKE_CROSSCOMPILING)
+    # doctest is one header; the host's package would add all of /usr/include to a foreign
+    # build, so only its folder is exposed (a link in the build tree).
+    find_path(HAPTICS_DOCTEST_INCLUDE doctest/doctest.h PATHS /usr/include NO_CMAKE_FIND_ROOT_PATH REQUIRED)
+    file(MAKE_DIRECTORY "${CMAKE_BINARY_DIR}/doctest-include")
+    file(CREATE_LINK "${HAPTICS_DOCTEST_INCLUDE}/doctest" "${CMAKE_BINARY_DIR}/doctest-include/doctest" SYMBOLIC)
+    add_library(doctest::doctest INTERFACE IMPORTED)
+    set_target_properties(doctest::doctest PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${CMAKE_BINARY_DIR}/doctest-include")
+  else()
+    find_package(doctest REQUIRED)
+    include(CTest)
+    include(doctest)
+  endif()
   file(GLOB_RECURSE HAPTICS_TEST_SOURCES CONFIGURE_DEPENDS tests/*.cpp)
+  # Linux-only tests are the files named *_linux.cpp (cmake/platform.cmake): left out of the
+  # Windows build, and listed from the Linux build (doctest's --source-file filter) to count
+  # them (tools/windows/test.sh).
+  haptics_platform_filter(HAPTICS_TEST_SOURCES)
   add_executable(haptics_tests ${HAPTICS_TEST_SOURCES})
   # Also reaches the binding's engine-free headers (src/godot/call_check.h).
   target_include_directories(haptics_tests PRIVATE tests)
@@ -27,31 +41,42 @@ if(HAPTICS_BUILD_TESTS)
   add_dependencies(haptics_tests fake_hd fake_hd_no_async)
   target_include_directories(haptics_tests PRIVATE tests_support)
   target_compile_definitions(haptics_tests PRIVATE ${FAKE_HD_DEFINITIONS})
-  # Every doctest runs with TMPDIR in the build tree (so a forgotten file never reaches /tmp)
-  # and the fixture around them fails if anything was left there (cmake/check_scratch.cmake).
-  set(HAPTICS_TEST_TMPDIR "${CMAKE_CURRENT_BINARY_DIR}/test-tmp")
-  set(CHECK_SCRATCH ${CMAKE_CURRENT_SOURCE_DIR}/cmake/check_scratch.cmake)
-  add_test(NAME scratch_setup COMMAND ${CMAKE_COMMAND} -DMODE=setup -DDIR=${HAPTICS_TEST_TMPDIR} -P ${CHECK_SCRATCH})
-  add_test(NAME scratch_left_nothing COMMAND ${CMAKE_COMMAND} -DMODE=check -DDIR=${HAPTICS_TEST_TMPDIR} -P ${CHECK_SCRATCH})
-  set_tests_properties(scratch_setup PROPERTIES FIXTURES_SETUP scratch)
-  set_tests_properties(scratch_left_nothing PROPERTIES FIXTURES_CLEANUP scratch)
-  add_test(NAME scratch_failing_test_cleans_up COMMAND ${CMAKE_COMMAND} -DMODE=failing
-    -DDIR=${HAPTICS_TEST_TMPDIR}-failing -DTEST_BINARY=$<TARGET_FILE:haptics_tests> -P ${CHECK_SCRATCH})
-  # A test whose name CTest cannot pass back to doctest (a ';' splits it) would run no case and
-  # pass: running no case fails.
-  doctest_discover_tests(haptics_tests PROPERTIES ENVIRONMENT "TMPDIR=${HAPTICS_TEST_TMPDIR}" FIXTURES_REQUIRED scratch
-    FAIL_REGULAR_EXPRESSION "test cases: *0 [|]")
+  # A cross-built suite cannot run here at build time (doctest_discover_tests runs it): the
+  # Windows one is run under Wine by tools/windows/test.sh instead of CTest.
+  if(NOT CMAKE_CROSSCOMPILING)
+    # Every doctest runs with TMPDIR in the build tree (so a forgotten file never reaches /tmp)
+    # and the fixture around them fails if anything was left there (cmake/check_scratch.cmake).
+    set(HAPTICS_TEST_TMPDIR "${CMAKE_CURRENT_BINARY_DIR}/test-tmp")
+    set(CHECK_SCRATCH ${CMAKE_CURRENT_SOURCE_DIR}/cmake/check_scratch.cmake)
+    add_test(NAME scratch_setup COMMAND ${CMAKE_COMMAND} -DMODE=setup -DDIR=${HAPTICS_TEST_TMPDIR} -P ${CHECK_SCRATCH})
+    add_test(NAME scratch_left_nothing COMMAND ${CMAKE_COMMAND} -DMODE=check -DDIR=${HAPTICS_TEST_TMPDIR} -P ${CHECK_SCRATCH})
+    set_tests_properties(scratch_setup PROPERTIES FIXTURES_SETUP scratch)
+    set_tests_properties(scratch_left_nothing PROPERTIES FIXTURES_CLEANUP scratch)
+    add_test(NAME scratch_failing_test_cleans_up COMMAND ${CMAKE_COMMAND} -DMODE=failing
+      -DDIR=${HAPTICS_TEST_TMPDIR}-failing -DTEST_BINARY=$<TARGET_FILE:haptics_tests> -P ${CHECK_SCRATCH})
+    # A test whose name CTest cannot pass back to doctest (a ';' splits it) would run no case and
+    # pass: running no case fails.
+    doctest_discover_tests(haptics_tests PROPERTIES ENVIRONMENT "TMPDIR=${HAPTICS_TEST_TMPDIR}" FIXTURES_REQUIRED scratch
+      FAIL_REGULAR_EXPRESSION "test cases: *0 [|]")
+  endif()
 
-  # The program the kernel tests boot a VM for (tools/kernel/run.sh): our device stack against
-  # the VM's real drivers, the device models speaking through uhid, uinput and gadgets.
-  file(GLOB HAPTICS_VM_TEST_SOURCES CONFIGURE_DEPENDS vm_tests/*.cpp)
-  add_executable(haptics_vm_tests ${HAPTICS_VM_TEST_SOURCES})
-  target_link_libraries(haptics_vm_tests PRIVATE haptics_engine haptics_scripted)
+  # Windows: a minimal GDExtension host that loads the DLL (tools/windows/test.sh).
+  if(WIN32 AND HAPTICS_BUILD_EXTENSION)
+    add_executable(haptics_load_host tests_support/load_host/load_host_windows.cpp)
+    target_include_directories(haptics_load_host PRIVATE "${GODOT_INTERFACE_DIR}")
+  endif()
+  if(NOT WIN32)
+    # The program the kernel tests boot a VM for (tools/kernel/run.sh): our device stack against
+    # the VM's real drivers, the device models speaking through uhid, uinput and gadgets.
+    file(GLOB HAPTICS_VM_TEST_SOURCES CONFIGURE_DEPENDS vm_tests/*.cpp)
+    add_executable(haptics_vm_tests ${HAPTICS_VM_TEST_SOURCES})
+    target_link_libraries(haptics_vm_tests PRIVATE haptics_engine haptics_scripted)
 
-  # What an unprivileged player's servo thread gets, with and without RealtimeKit
-  # (tools/rt/test-rtkit.sh).
-  add_executable(haptics_rt_probe rt_probe/rt_probe.cpp)
-  target_link_libraries(haptics_rt_probe PRIVATE haptics_engine)
+    # What an unprivileged player's servo thread gets, with and without RealtimeKit
+    # (tools/rt/test-rtkit.sh).
+    add_executable(haptics_rt_probe rt_probe/rt_probe.cpp)
+    target_link_libraries(haptics_rt_probe PRIVATE haptics_engine)
+  endif()
 endif()
 
 if(HAPTICS_BUILD_BENCH)

@@ -11,6 +11,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <random>
 #include <string>
 #include <system_error>
 
@@ -19,10 +20,24 @@ namespace haptics::testing {
 class ScratchDir {
 public:
 	// p_prefix names the folder, e.g. "haptics-durable" gives haptics-durable-XXXXXX.
+	// The suffix is random and the folder made only if new (mkdtemp's rule; Windows has no
+	// mkdtemp).
 	explicit ScratchDir(const char *p_prefix) {
-		std::string pattern = (std::filesystem::temp_directory_path() / (std::string(p_prefix) + "-XXXXXX")).string();
-		REQUIRE_MESSAGE(::mkdtemp(pattern.data()) != nullptr, "mkdtemp failed for ", pattern);
-		root_ = pattern;
+		constexpr char LETTERS[] = "abcdefghijklmnopqrstuvwxyz0123456789";
+		std::random_device entropy;
+		std::uniform_int_distribution<size_t> pick(0, sizeof(LETTERS) - 2);
+		std::error_code error;
+		for (int attempt = 0; attempt < 100 && root_.empty(); ++attempt) {
+			std::string name = std::string(p_prefix) + "-";
+			for (int i = 0; i < 6; ++i) {
+				name += LETTERS[pick(entropy)];
+			}
+			const std::filesystem::path candidate = std::filesystem::temp_directory_path() / name;
+			if (std::filesystem::create_directory(candidate, error)) {
+				root_ = candidate;
+			}
+		}
+		REQUIRE_MESSAGE(!root_.empty(), "cannot make a scratch folder for ", p_prefix, ": ", error.message());
 	}
 	~ScratchDir() {
 		std::error_code ignored;

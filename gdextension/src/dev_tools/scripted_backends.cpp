@@ -1,7 +1,9 @@
 #include "dev_tools/scripted_backends.h"
 
 #include "dev_tools/dualsense/scripted_dualsense_device.h"
+#if HAPTICS_EVDEV
 #include "dev_tools/evdev/scripted_evdev_device.h"
+#endif
 #include "dev_tools/falcon/scripted_falcon_device.h"
 #include "dev_tools/pid/scripted_pid_device.h"
 #include "dev_tools/scripted_device.h"
@@ -42,6 +44,7 @@ std::unique_ptr<HapticDevice> make_scripted_dualsense(ScriptedModelHooks &r_hook
 	return std::move(setup.device);
 }
 
+#if HAPTICS_EVDEV
 std::unique_ptr<HapticDevice> make_scripted_evdev(ScriptedModelHooks &r_hooks) {
 	std::shared_ptr<evdev::ScriptedEvdevKernel> kernel = std::make_shared<evdev::ScriptedEvdevKernel>();
 	std::unique_ptr<HapticDevice> device = evdev::make_scripted_device(kernel);
@@ -53,6 +56,7 @@ std::unique_ptr<HapticDevice> make_scripted_evdev(ScriptedModelHooks &r_hooks) {
 	r_hooks.set_plugged = [kernel](bool p_plugged) { kernel->set_plugged(p_plugged); };
 	return device;
 }
+#endif
 
 // An AJ-firmware stick: HID's y grows toward the user, ours up.
 std::unique_ptr<HapticDevice> make_scripted_hid_pid(ScriptedModelHooks &r_hooks) {
@@ -69,7 +73,9 @@ std::unique_ptr<HapticDevice> make_scripted_hid_pid(ScriptedModelHooks &r_hooks)
 constexpr ScriptedRow SCRIPTED[] = {
 	{ DRIVER_FALCON, "Novint Falcon (scripted)", make_scripted_falcon },
 	{ DRIVER_DUALSENSE, "Sony DualSense (scripted, USB)", make_scripted_dualsense },
+#if HAPTICS_EVDEV
 	{ DRIVER_EVDEV, "Force-feedback joystick (scripted, evdev)", make_scripted_evdev },
+#endif
 	{ DRIVER_HID_PID, "HID PID joystick (scripted, AJ firmware)", make_scripted_hid_pid },
 };
 constexpr size_t SCRIPTED_COUNT = sizeof(SCRIPTED) / sizeof(SCRIPTED[0]);

@@ -1,11 +1,10 @@
 #include "engine/device_factory.h"
 
 #include "devices/dualsense/dualsense_backend.h"
-#include "devices/evdev/evdev_backend.h"
-#include "devices/evdev/evdev_enumeration.h"
 #include "devices/falcon/falcon_backend.h"
 #include "devices/openhaptics/openhaptics_backend.h"
 #include "devices/pid/pid_backend.h"
+#include "engine/platform_backends.h"
 
 #include <cstdlib>
 #include <string_view>
@@ -13,12 +12,6 @@
 namespace haptics {
 
 namespace {
-
-struct BackendRow {
-	std::string_view driver;
-	DeviceAvailability (*probe)(const DeviceInfo &p_info);
-	Status (*open)(const DeviceInfo &p_info, const DeviceOpenOptions &p_options, std::unique_ptr<HapticDevice> &r_device);
-};
 
 DeviceAvailability probe_simulated(const DeviceInfo &p_info) {
 	DeviceAvailability availability;
@@ -29,10 +22,6 @@ DeviceAvailability probe_simulated(const DeviceInfo &p_info) {
 
 Status open_falcon(const DeviceInfo &p_info, const DeviceOpenOptions &p_options, std::unique_ptr<HapticDevice> &r_device) {
 	return falcon::open_device(p_info, p_options.falcon_firmware_path, r_device);
-}
-
-Status open_evdev(const DeviceInfo &p_info, const DeviceOpenOptions &, std::unique_ptr<HapticDevice> &r_device) {
-	return evdev::open_device(p_info, r_device);
 }
 
 Status open_hid_pid(const DeviceInfo &p_info, const DeviceOpenOptions &, std::unique_ptr<HapticDevice> &r_device) {
@@ -54,11 +43,26 @@ constexpr BackendRow BACKENDS[] = {
 	{ DRIVER_FALCON, falcon::probe, open_falcon },
 	{ DRIVER_DUALSENSE, dualsense::probe, open_dualsense },
 	// After the DualSense: any other hidapi device with PID reports. When the kernel's PID
-	// driver is bound it says so and the evdev row below drives the same stick.
+	// driver is bound it says so, and a platform row (platform_backends.h) drives the stick.
 	{ DRIVER_HID_PID, pid::probe, open_hid_pid },
-	{ DRIVER_EVDEV, evdev::probe, open_evdev },
 	{ DRIVER_OPENHAPTICS, openhaptics::probe, open_openhaptics },
 };
+
+// The first row, common then this platform's, for which p_matches is true; null if none.
+template <typename Matches>
+const BackendRow *find_backend(Matches p_matches) {
+	for (const BackendRow &backend : BACKENDS) {
+		if (p_matches(backend)) {
+			return &backend;
+		}
+	}
+	for (const BackendRow &backend : platform_backends()) {
+		if (p_matches(backend)) {
+			return &backend;
+		}
+	}
+	return nullptr;
+}
 
 // Added at initialisation, before any listing, and only read afterwards: no lock.
 std::vector<DeviceSource> &sources() {
@@ -99,26 +103,25 @@ void probe_devices(std::vector<DeviceInfo> &r_devices) {
 			source->probe(info);
 			continue;
 		}
-		for (const BackendRow &backend : BACKENDS) {
-			const DeviceAvailability availability = backend.probe(info);
-			if (availability.handled) {
-				// A driver found force feedback the catalog could not see (AJ sticks
-				// report a joystick top-level collection; evdev nodes have no catalog row).
-				info.known_haptic = true;
-				info.driver = backend.driver;
-				info.openable = availability.openable;
-				info.unavailable_reason = availability.openable ? std::string() : availability.reason;
-				break;
-			}
+		DeviceAvailability availability;
+		const BackendRow *backend = find_backend([&](const BackendRow &p_row) {
+			availability = p_row.probe(info);
+			return availability.handled;
+		});
+		if (backend != nullptr) {
+			// A driver found force feedback the catalog could not see (AJ sticks report a
+			// joystick top-level collection; evdev nodes have no catalog row).
+			info.known_haptic = true;
+			info.driver = backend->driver;
+			info.openable = availability.openable;
+			info.unavailable_reason = availability.openable ? std::string() : availability.reason;
 		}
 	}
 }
 
 DeviceList list_all_devices() {
 	DeviceList list = list_devices();
-	// The kernel's force-feedback drivers (hid-pidff, wheel drivers) own most FFB devices
-	// and expose them here, not on hidraw.
-	evdev::enumerate_evdev_devices(list.devices, list.warnings);
+	append_platform_devices(list);
 	// HD finds its device by configuration name, not on a bus: one entry when the runtime
 	// loads, or when the player pointed at one that does not (to say why).
 	const DeviceInfo openhaptics_entry = openhaptics::make_default_device_info();
@@ -137,11 +140,10 @@ Status open_listed_device(const DeviceInfo &p_info, const DeviceOpenOptions &p_o
 	if (const DeviceSource *source = source_of(p_info)) {
 		return source->open(p_info, r_device);
 	}
-	for (const BackendRow &backend : BACKENDS) {
-		if (backend.open == nullptr || !backend.probe(p_info).handled) {
-			continue;
-		}
-		return backend.open(p_info, p_options, r_device);
+	const BackendRow *backend = find_backend(
+			[&](const BackendRow &p_row) { return p_row.open != nullptr && p_row.probe(p_info).handled; });
+	if (backend != nullptr) {
+		return backend->open(p_info, p_options, r_device);
 	}
 	return Status::error(StatusCode::UNSUPPORTED, "no force-feedback driver for '%s' (%s)", p_info.id.c_str(),
 			p_info.model.empty() ? p_info.product.c_str() : p_info.model.c_str());

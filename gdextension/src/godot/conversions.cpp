@@ -258,6 +258,10 @@ static const char *scheduler_script_name(SchedulerKind p_kind) {
 			return "realtime_fifo";
 		case SchedulerKind::REALTIME_RR:
 			return "realtime_rr";
+		case SchedulerKind::MMCSS_PRO_AUDIO:
+			return "mmcss_pro_audio";
+		case SchedulerKind::MMCSS_GAMES:
+			return "mmcss_games";
 		case SchedulerKind::NORMAL:
 			break;
 	}
@@ -270,7 +274,7 @@ gd::Dictionary stats_to_dictionary(const ServoStats &p_stats) {
 	gd::Dictionary d;
 	d.set("running", p_stats.running);
 	d.set("scheduler", scheduler_script_name(p_stats.scheduler));
-	d.set("realtime", p_stats.scheduler == SchedulerKind::REALTIME_FIFO || p_stats.scheduler == SchedulerKind::REALTIME_RR);
+	d.set("realtime", is_realtime_kind(p_stats.scheduler));
 	d.set("realtime_priority", static_cast<int64_t>(p_stats.realtime_priority));
 	// What RealtimeKit was asked and gave: "not asked", "realtime", "high priority",
 	// "refused", "unavailable"; the nice level it granted; why, in words.

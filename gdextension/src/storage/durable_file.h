@@ -2,7 +2,10 @@
 // completed record is on disk before the participant moves on. Godot's FileAccess flushes
 // to the kernel but never fsyncs, so a power cut could still lose "saved" records.
 //
-// POSIX only (open/write/fsync/rename); paths are native file-system paths, UTF-8.
+// One implementation per platform: durable_file_posix.cpp (open/write/fsync/rename, then the
+// folder fsynced) and durable_file_windows.cpp (FlushFileBuffers and MoveFileExW with
+// MOVEFILE_REPLACE_EXISTING | MOVEFILE_WRITE_THROUGH; NTFS journals its folders, which cannot
+// be flushed). Paths are native file-system paths, UTF-8; on Windows both slashes separate.
 #pragma once
 
 #include <string>

@@ -8,7 +8,7 @@
 
 #include "fake_hd/fake_hd_control.h"
 
-#include <dlfcn.h>
+#include "devices/openhaptics/hd_library.h"
 
 #include <chrono>
 #include <cstdio>
@@ -61,7 +61,7 @@ struct FakeHd {
 
 template <typename F>
 void fake_hd_resolve(void *p_handle, const char *p_name, F &r_function) {
-	void *symbol = dlsym(p_handle, p_name);
+	void *symbol = openhaptics::library_symbol(p_handle, p_name);
 	if (symbol == nullptr) {
 		std::fprintf(stderr, "fake HD: %s missing\n", p_name);
 		std::abort();
@@ -76,9 +76,11 @@ inline const char *fake_hd_path() {
 // Aborts when the fake cannot be loaded: every OpenHaptics test needs it.
 inline FakeHd &fake_hd() {
 	static FakeHd fake = [] {
-		void *handle = dlopen(HAPTICS_FAKE_HD_PATH, RTLD_NOW | RTLD_LOCAL);
+		char error[256];
+		bool missing = false;
+		void *handle = openhaptics::open_library(HAPTICS_FAKE_HD_PATH, missing, error, sizeof(error));
 		if (handle == nullptr) {
-			std::fprintf(stderr, "cannot load the fake HD library: %s\n", dlerror());
+			std::fprintf(stderr, "cannot load the fake HD library: %s\n", error);
 			std::abort();
 		}
 		FakeHd f{};

@@ -1,6 +1,8 @@
 #pragma once
 
-// Clock and scheduling primitives of the servo thread. CLOCK_MONOTONIC everywhere: it never
+// Clock and scheduling primitives of the servo thread, one implementation per platform
+// (realtime_linux.cpp, realtime_windows.cpp; the Windows counterparts of each technique are
+// described there and reported through the same RealtimeGrants fields). CLOCK_MONOTONIC everywhere: it never
 // jumps with NTP or the user changing the time, and clock_nanosleep with TIMER_ABSTIME on it
 // sleeps to an absolute deadline, so a late wake-up does not push every later tick back
 // (the drift a relative sleep_for accumulates).
@@ -23,9 +25,18 @@ enum class SchedulerKind : int32_t {
 	NORMAL = 1, // SCHED_OTHER: SCHED_FIFO was refused (no privilege) or not asked for.
 	REALTIME_FIFO = 2, // SCHED_FIFO granted.
 	REALTIME_RR = 3, // SCHED_RR from RealtimeKit (realtime_kit.h): a normal user's real time.
+	// Windows (realtime_windows.cpp): the thread joined the multimedia class scheduler's task,
+	// which raises it into the real-time priority range a normal user may have.
+	MMCSS_PRO_AUDIO = 4,
+	MMCSS_GAMES = 5, // "Pro Audio" was refused, "Games" granted.
 };
 
 const char *scheduler_kind_name(SchedulerKind p_kind);
+// Whether p_kind is one of the real-time classes (SCHED_FIFO, SCHED_RR, an MMCSS task).
+bool is_realtime_kind(SchedulerKind p_kind);
+
+// Names the calling thread (15 characters at most: what Linux keeps) for the OS's tools.
+void set_current_thread_name(const char *p_name);
 
 // Nanoseconds of CLOCK_MONOTONIC.
 int64_t monotonic_now_ns();

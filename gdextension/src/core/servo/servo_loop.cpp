@@ -1,7 +1,5 @@
 #include "core/servo/servo_loop.h"
 
-#include <pthread.h>
-
 #include <algorithm>
 #include <cmath>
 #include <system_error>
@@ -50,8 +48,7 @@ int64_t effective_spin_ns(const ServoOptions &p_options, const RealtimeGrants &p
 	}
 	int64_t spin_ns = p_options.spin_ns;
 	if (spin_ns == ServoOptions::SPIN_AUTO) {
-		const bool realtime =
-				p_grants.kind == SchedulerKind::REALTIME_FIFO || p_grants.kind == SchedulerKind::REALTIME_RR;
+		const bool realtime = is_realtime_kind(p_grants.kind);
 		spin_ns = !realtime					? 0
 				: p_grants.cpu_latency_held ? ServoOptions::DEFAULT_SPIN_NS
 											: ServoOptions::UNHELD_SPIN_NS;
@@ -105,7 +102,7 @@ void ServoLoop::clear_fault() {
 
 void ServoLoop::run() {
 	// The name top, ps -L and /proc/<pid>/task/*/comm show (15 characters at most).
-	::pthread_setname_np(::pthread_self(), SERVO_THREAD_NAME);
+	set_current_thread_name(SERVO_THREAD_NAME);
 	grants_ = apply_realtime_request(options_.realtime);
 	spin_ns_ = effective_spin_ns(options_, grants_);
 	grants_published_.store(true, std::memory_order_release);

@@ -2,11 +2,11 @@
 
 #include "devices/dualsense/dualsense_hidapi_transport.h"
 #include "devices/hid/hidapi_open.h"
+#include "devices/hid/hidraw_sysfs.h"
 
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <unistd.h>
 
 namespace haptics::dualsense {
 
@@ -50,11 +50,7 @@ DeviceAvailability availability_for(const DeviceInfo &p_info, int p_access_errno
 }
 
 DeviceAvailability probe(const DeviceInfo &p_info) {
-	int access_errno = 0;
-	if (!p_info.path.empty() && ::access(p_info.path.c_str(), R_OK | W_OK) != 0) {
-		access_errno = errno;
-	}
-	return availability_for(p_info, access_errno);
+	return availability_for(p_info, p_info.path.empty() ? 0 : hid::hid_node_access_errno(p_info.path));
 }
 
 Status open_device(const DeviceInfo &p_info, std::unique_ptr<HapticDevice> &r_device, const DualSenseConfig &p_config) {
@@ -65,7 +61,7 @@ Status open_device(const DeviceInfo &p_info, std::unique_ptr<HapticDevice> &r_de
 				p_info.product_id, p_info.backend.c_str());
 	}
 	if (!availability.openable) {
-		const bool gone = !p_info.path.empty() && ::access(p_info.path.c_str(), F_OK) != 0;
+		const bool gone = !p_info.path.empty() && !hid::hid_node_exists(p_info.path);
 		return Status::error(gone ? StatusCode::NO_DEVICE : StatusCode::DEVICE_ERROR, "DualSense: %s",
 				availability.reason.c_str());
 	}

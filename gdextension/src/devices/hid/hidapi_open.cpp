@@ -8,7 +8,6 @@
 #include <cstdio>
 #include <cstring>
 #include <cwchar>
-#include <unistd.h>
 
 namespace haptics::hid {
 
@@ -34,7 +33,7 @@ Status open_hidraw_device(const std::string &p_path, const char *p_label, hid_de
 		return Status::error(StatusCode::INVALID_ARGUMENT, "%s: empty hidraw path", p_label);
 	}
 	char reason[224];
-	if (access(p_path.c_str(), F_OK) != 0) {
+	if (!hid_node_exists(p_path)) {
 		return Status::error(StatusCode::NO_DEVICE, "%s: no device at '%s' (%s)", p_label, p_path.c_str(),
 				std::strerror(errno));
 	}
@@ -66,7 +65,7 @@ Status open_hidraw_device(const std::string &p_path, const char *p_label, hid_de
 bool hid_device_lost(int p_errno, const std::string &p_path, const char *p_hid_text) {
 	const bool gone_errno = p_errno == ENODEV || p_errno == EIO || p_errno == ENXIO || p_errno == ESHUTDOWN ||
 			p_errno == EPIPE || p_errno == ENOENT;
-	return gone_errno || access(p_path.c_str(), F_OK) != 0 ||
+	return gone_errno || !hid_node_exists(p_path) ||
 			(p_hid_text != nullptr && std::strstr(p_hid_text, "isconnected") != nullptr);
 }
 

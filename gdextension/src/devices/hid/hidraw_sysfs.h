@@ -6,6 +6,11 @@
 //
 // hidapi 0.13's device path on the hidraw backend is /dev/hidrawN; the HID device behind it
 // is /sys/class/hidraw/hidrawN/device. p_sysfs_root exists for tests (a fake tree).
+//
+// hidraw_sysfs_linux.cpp reads sysfs; hidraw_sysfs_windows.cpp answers the same questions for
+// hidapi's Windows backend, whose paths are device interface names (\\?\hid#vid_...): no
+// index, no kernel force-feedback driver, and no report descriptor (Windows keeps only the
+// parsed form; hidapi 0.14 rebuilds the bytes from it, 0.13 cannot).
 
 #include "core/base/status.h"
 
@@ -36,5 +41,12 @@ bool is_hidraw_node(const std::string &p_path, std::string *r_reason = nullptr, 
 // <hid device>/input/input*/capabilities/ff. Then the kernel drives the effects, and raw PID
 // reports through hidraw would fight its bookkeeping: use the evdev path instead.
 bool kernel_ff_bound(const std::string &p_hidraw_path, const std::string &p_sysfs_root = "/sys");
+
+// Whether the device node at p_path is still there (a removed device's node goes away).
+bool hid_node_exists(const std::string &p_path);
+
+// 0 when this process may open p_path for reading and writing, else the errno that says why
+// not (EACCES: the udev rules are missing). Windows has no such check before opening: 0.
+int hid_node_access_errno(const std::string &p_path);
 
 } // namespace haptics::hid

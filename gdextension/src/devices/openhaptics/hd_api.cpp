@@ -1,6 +1,6 @@
 #include "devices/openhaptics/hd_api.h"
 
-#include <dlfcn.h>
+#include "devices/openhaptics/hd_library.h"
 
 #include <cstdio>
 #include <cstring>
@@ -40,10 +40,9 @@ constexpr ErrorName ERROR_NAMES[] = {
 	{ HD_INVALID_LICENSE, "HD_INVALID_LICENSE" },
 };
 
-// POSIX guarantees a dlsym result converts to a function pointer.
 template <typename F>
 bool resolve(void *p_handle, const char *p_name, F &r_function) {
-	void *symbol = dlsym(p_handle, p_name);
+	void *symbol = library_symbol(p_handle, p_name);
 	if (symbol == nullptr) {
 		return false;
 	}
@@ -84,19 +83,10 @@ Status HdLibrary::load(const char *p_path) {
 	if (p_path == nullptr || p_path[0] == '\0') {
 		return Status::error(StatusCode::INVALID_ARGUMENT, "OpenHaptics runtime: empty library path");
 	}
-	// RTLD_NOW: a runtime with unresolvable dependencies fails here, not in the servo.
-	// RTLD_LOCAL: HD's symbols stay out of the global namespace (no clash with another copy).
-	void *handle = dlopen(p_path, RTLD_NOW | RTLD_LOCAL);
+	char error[256];
+	bool missing = false;
+	void *handle = open_library(p_path, missing, error, sizeof(error));
 	if (handle == nullptr) {
-		const char *error = dlerror();
-		if (error == nullptr) {
-			error = "dlopen failed";
-		}
-		// glibc says "<name>: cannot open shared object file" when the file itself is
-		// missing; anything else (a missing dependency, a bad ELF) means it is there but broken.
-		const size_t length = std::strlen(p_path);
-		const bool missing = std::strncmp(error, p_path, length) == 0 &&
-				std::strncmp(error + length, ": cannot open shared object file", 32) == 0;
 		return Status::error(missing ? StatusCode::NO_DEVICE : StatusCode::DEVICE_ERROR,
 				"cannot load the OpenHaptics runtime '%s': %s", p_path, error);
 	}
@@ -129,7 +119,7 @@ Status HdLibrary::load(const char *p_path) {
 	};
 	for (const Required &symbol : required) {
 		if (!symbol.found) {
-			dlclose(handle);
+			close_library(handle);
 			return Status::error(StatusCode::DEVICE_ERROR,
 					"the OpenHaptics runtime '%s' lacks the function %s (an unsupported OpenHaptics version?)", p_path,
 					symbol.name);
@@ -146,7 +136,7 @@ Status HdLibrary::load(const char *p_path) {
 
 void HdLibrary::unload() {
 	if (handle_ != nullptr) {
-		dlclose(handle_);
+		close_library(handle_);
 		handle_ = nullptr;
 	}
 	api_ = HdApi{};

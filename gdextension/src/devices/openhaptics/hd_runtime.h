@@ -1,9 +1,11 @@
 #pragma once
 
-// Where the user's OpenHaptics runtime is. Search order (FACTS §4.1): the path in the
-// environment variable HAPTICS_OPENHAPTICS_LIBRARY, then the sonames OpenHaptics 3.4 and
-// 3.0 installers create: "libHD.so", "libHD.so.3.4", "libHD.so.3.0" (found through the
-// dynamic linker's usual path: ld.so.cache, LD_LIBRARY_PATH).
+// Where the user's OpenHaptics runtime is, the same rule on every platform (FACTS §4.1): the
+// path in the environment variable HAPTICS_OPENHAPTICS_LIBRARY, then the names its
+// installers create, found by the system's loader (hd_library.h):
+//   Linux    "libHD.so", "libHD.so.3.4", "libHD.so.3.0" (ld.so.cache, LD_LIBRARY_PATH)
+//   Windows  "hd.dll" (the installer puts OpenHaptics' bin folder on PATH; LoadLibrary's
+//            search order: the game's folder, the system folders, PATH)
 
 #include "core/base/status.h"
 #include "devices/openhaptics/hd_api.h"
@@ -13,11 +15,18 @@
 namespace haptics::openhaptics {
 
 inline constexpr char HD_LIBRARY_ENV[] = "HAPTICS_OPENHAPTICS_LIBRARY";
-inline constexpr const char *HD_LIBRARY_NAMES[] = { "libHD.so", "libHD.so.3.4", "libHD.so.3.0" };
+#ifdef _WIN32
+#define HAPTICS_HD_LIBRARY "hd.dll"
+inline constexpr const char *HD_LIBRARY_NAMES[] = { HAPTICS_HD_LIBRARY };
+#else
+#define HAPTICS_HD_LIBRARY "libHD.so"
+inline constexpr const char *HD_LIBRARY_NAMES[] = { HAPTICS_HD_LIBRARY, "libHD.so.3.4", "libHD.so.3.0" };
+#endif
 
 // The reason when nothing is installed, worded for the player.
-inline constexpr char HD_RUNTIME_NOT_FOUND[] = "OpenHaptics runtime not found (libHD.so): install 3D Systems' "
-											   "OpenHaptics and Touch driver, or set HAPTICS_OPENHAPTICS_LIBRARY";
+inline constexpr char HD_RUNTIME_NOT_FOUND[] = "OpenHaptics runtime not found (" HAPTICS_HD_LIBRARY
+											   "): install 3D Systems' OpenHaptics and Touch driver, or set "
+											   "HAPTICS_OPENHAPTICS_LIBRARY";
 
 // Loads p_explicit_path when it is non-empty (tests, a DeviceInfo's path), else searches.
 // When no candidate exists: NO_DEVICE with HD_RUNTIME_NOT_FOUND (plus why the environment

@@ -12,6 +12,7 @@
 #include <memory>
 #include <sys/stat.h>
 #include <sys/sysmacros.h>
+#include <unistd.h>
 
 namespace haptics::hid {
 
@@ -128,6 +129,14 @@ bool kernel_ff_bound(const std::string &p_hidraw_path, const std::string &p_sysf
 		}
 	}
 	return false;
+}
+
+bool hid_node_exists(const std::string &p_path) {
+	return ::access(p_path.c_str(), F_OK) == 0;
+}
+
+int hid_node_access_errno(const std::string &p_path) {
+	return ::access(p_path.c_str(), R_OK | W_OK) == 0 ? 0 : errno;
 }
 
 } // namespace haptics::hid

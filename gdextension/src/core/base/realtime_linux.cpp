@@ -18,20 +18,6 @@
 
 namespace haptics {
 
-const char *scheduler_kind_name(SchedulerKind p_kind) {
-	switch (p_kind) {
-		case SchedulerKind::MANUAL:
-			return "manual";
-		case SchedulerKind::NORMAL:
-			return "SCHED_OTHER";
-		case SchedulerKind::REALTIME_FIFO:
-			return "SCHED_FIFO";
-		case SchedulerKind::REALTIME_RR:
-			return "SCHED_RR";
-	}
-	return "unknown";
-}
-
 namespace {
 
 constexpr int64_t NS_PER_S = 1'000'000'000;
@@ -134,6 +120,10 @@ int64_t thread_cpu_time_ns() {
 		return 0;
 	}
 	return static_cast<int64_t>(ts.tv_sec) * NS_PER_S + ts.tv_nsec;
+}
+
+void set_current_thread_name(const char *p_name) {
+	::pthread_setname_np(::pthread_self(), p_name);
 }
 
 RealtimeResult try_make_current_thread_realtime(int32_t p_priority) {

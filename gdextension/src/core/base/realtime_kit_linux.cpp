@@ -12,22 +12,6 @@
 
 namespace haptics {
 
-const char *rtkit_outcome_name(RtkitOutcome p_outcome) {
-	switch (p_outcome) {
-		case RtkitOutcome::NOT_ASKED:
-			return "not asked";
-		case RtkitOutcome::REALTIME:
-			return "realtime";
-		case RtkitOutcome::HIGH_PRIORITY:
-			return "high priority";
-		case RtkitOutcome::REFUSED:
-			return "refused";
-		case RtkitOutcome::UNAVAILABLE:
-			return "unavailable";
-	}
-	return "unknown";
-}
-
 namespace {
 
 constexpr const char *LIBDBUS = "libdbus-1.so.3";

@@ -1,0 +1,28 @@
+# The Windows build (cross-compiled with MinGW-w64, cmake/mingw-w64.cmake): hidapi and libusb
+# from Debian 12's source packages, built static by tools/windows/build-deps.sh into one
+# install prefix, and the C++ and C runtimes linked in, so that the DLL needs nothing beside
+# Windows' own DLLs (tools/windows/check-imports.sh checks its import table).
+set(HAPTICS_WINDOWS_DEPS "" CACHE PATH "Prefix holding the static hidapi and libusb for Windows")
+foreach(library IN ITEMS hidapi usb-1.0)
+  if(NOT EXISTS "${HAPTICS_WINDOWS_DEPS}/lib/lib${library}.a")
+    message(FATAL_ERROR "No ${HAPTICS_WINDOWS_DEPS}/lib/lib${library}.a: configure with "
+      "-DHAPTICS_WINDOWS_DEPS=<prefix> built by tools/windows/build-deps.sh (make build-windows)")
+  endif()
+endforeach()
+add_library(haptics_windows_hidapi STATIC IMPORTED)
+set_target_properties(haptics_windows_hidapi PROPERTIES
+  IMPORTED_LOCATION "${HAPTICS_WINDOWS_DEPS}/lib/libhidapi.a"
+  INTERFACE_INCLUDE_DIRECTORIES "${HAPTICS_WINDOWS_DEPS}/include/hidapi")
+add_library(haptics_windows_libusb STATIC IMPORTED)
+set_target_properties(haptics_windows_libusb PROPERTIES
+  IMPORTED_LOCATION "${HAPTICS_WINDOWS_DEPS}/lib/libusb-1.0.a"
+  INTERFACE_INCLUDE_DIRECTORIES "${HAPTICS_WINDOWS_DEPS}/include/libusb-1.0")
+set(HAPTICS_HIDAPI haptics_windows_hidapi)
+set(HAPTICS_LIBUSB haptics_windows_libusb)
+# The servo thread's timer and scheduling (realtime_windows.cpp): avrt for the multimedia
+# class scheduler; winmm is not needed (the waitable timer is high-resolution by itself).
+set(HAPTICS_CORE_SYSTEM_LIBS avrt)
+# libstdc++, libgcc and winpthread (std::thread) inside every binary: no MinGW DLL to ship.
+add_link_options(-static -static-libgcc -static-libstdc++)
+# windows.h without its min/max macros (they break std::min) and its rarely used parts.
+add_compile_definitions(NOMINMAX WIN32_LEAN_AND_MEAN)

@@ -1,0 +1,184 @@
+// A minimal GDExtension host for Windows (run under Wine by tools/windows/test.sh): loads the
+// extension DLL with LoadLibrary, calls its entry point with a get_proc_address that serves
+// recording stand-ins for what the library uses at initialisation, runs every initialisation
+// level and deinitialisation as the engine does, and prints what the library registered:
+//   class <name> <parent> methods=<n> constants=<n>
+//   unregistered <n>
+// Exit 0 only when the entry point returned true and both classes registered with methods;
+// 2 when the DLL or its entry point cannot be found. It shows the DLL loads on Windows'
+// loader, binds its imports and runs its registration code; the engine's real functions are
+// not here, so nothing is called on an instance.
+#include <gdextension_interface.h>
+
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <windows.h>
+
+namespace {
+
+constexpr const char *ENTRY_SYMBOL = "haptics_library_init";
+constexpr const char *EXPECTED_CLASSES[] = { "HapticsServer", "DurableFile" };
+
+struct RegisteredClass {
+	std::string parent;
+	int methods = 0;
+	int constants = 0;
+};
+
+// A StringName is an opaque pointer-sized value to the library: ours is an index into names.
+std::vector<std::string> names;
+std::map<std::string, RegisteredClass> classes;
+int unregistered = 0;
+int unknown_calls = 0;
+
+std::string name_of(GDExtensionConstStringNamePtr p_name) {
+	size_t index = 0;
+	std::memcpy(&index, p_name, sizeof(index));
+	return index < names.size() ? names[index] : std::string("?");
+}
+
+void string_name_new(GDExtensionUninitializedStringNamePtr r_dest, const char *p_contents, GDExtensionInt p_size) {
+	const size_t index = names.size();
+	names.emplace_back(p_contents, p_size < 0 ? std::strlen(p_contents) : static_cast<size_t>(p_size));
+	std::memcpy(r_dest, &index, sizeof(index));
+}
+
+void godot_version(GDExtensionGodotVersion2 *r_version) {
+	*r_version = GDExtensionGodotVersion2{};
+	r_version->major = 4;
+	r_version->minor = 6;
+	r_version->string = "load_host";
+}
+
+void register_class(GDExtensionClassLibraryPtr, GDExtensionConstStringNamePtr p_name,
+		GDExtensionConstStringNamePtr p_parent, const GDExtensionClassCreationInfo5 *) {
+	classes[name_of(p_name)].parent = name_of(p_parent);
+}
+
+void register_method(GDExtensionClassLibraryPtr, GDExtensionConstStringNamePtr p_class,
+		const GDExtensionClassMethodInfo *) {
+	++classes[name_of(p_class)].methods;
+}
+
+void register_constant(GDExtensionClassLibraryPtr, GDExtensionConstStringNamePtr p_class,
+		GDExtensionConstStringNamePtr, GDExtensionConstStringNamePtr, GDExtensionInt, GDExtensionBool) {
+	++classes[name_of(p_class)].constants;
+}
+
+void unregister_class(GDExtensionClassLibraryPtr, GDExtensionConstStringNamePtr) {
+	++unregistered;
+}
+
+void no_op_destructor(GDExtensionTypePtr) {}
+void no_op_constructor(GDExtensionUninitializedTypePtr, const GDExtensionConstTypePtr *) {}
+void no_op_conversion(void *, void *) {}
+GDExtensionPtrDestructor get_destructor(GDExtensionVariantType) {
+	return no_op_destructor;
+}
+GDExtensionPtrConstructor get_constructor(GDExtensionVariantType, int32_t) {
+	return no_op_constructor;
+}
+GDExtensionVariantFromTypeConstructorFunc get_from_type(GDExtensionVariantType) {
+	return no_op_conversion;
+}
+GDExtensionTypeFromVariantConstructorFunc get_to_type(GDExtensionVariantType) {
+	return no_op_conversion;
+}
+// Anything else the library resolves: it must exist (a null would fail its load), and is
+// counted if called during registration (where the engine's real one would have been).
+void unknown_function() {
+	++unknown_calls;
+}
+
+template <typename F>
+GDExtensionInterfaceFunctionPtr as_function(F p_function) {
+	return reinterpret_cast<GDExtensionInterfaceFunctionPtr>(p_function);
+}
+
+GDExtensionInterfaceFunctionPtr get_proc_address(const char *p_name) {
+	const std::string name(p_name);
+	if (name == "get_godot_version2") {
+		return as_function(godot_version);
+	}
+	if (name == "string_name_new_with_utf8_chars_and_len") {
+		return as_function(string_name_new);
+	}
+	if (name == "classdb_register_extension_class5") {
+		return as_function(register_class);
+	}
+	if (name == "classdb_register_extension_class_method") {
+		return as_function(register_method);
+	}
+	if (name == "classdb_register_extension_class_integer_constant") {
+		return as_function(register_constant);
+	}
+	if (name == "classdb_unregister_extension_class") {
+		return as_function(unregister_class);
+	}
+	if (name == "variant_get_ptr_destructor") {
+		return as_function(get_destructor);
+	}
+	if (name == "variant_get_ptr_constructor") {
+		return as_function(get_constructor);
+	}
+	if (name == "get_variant_from_type_constructor") {
+		return as_function(get_from_type);
+	}
+	if (name == "get_variant_to_type_constructor") {
+		return as_function(get_to_type);
+	}
+	return as_function(unknown_function);
+}
+
+} // namespace
+
+int main(int p_argc, char **p_argv) {
+	if (p_argc != 2) {
+		std::fprintf(stderr, "usage: load_host LIBRARY.dll\n");
+		return 2;
+	}
+	HMODULE library = LoadLibraryA(p_argv[1]);
+	if (library == nullptr) {
+		std::fprintf(stderr, "load_host: LoadLibrary(%s) failed: Windows error %lu\n", p_argv[1], GetLastError());
+		return 2;
+	}
+	using Entry = GDExtensionBool (*)(GDExtensionInterfaceGetProcAddress, GDExtensionClassLibraryPtr,
+			GDExtensionInitialization *);
+	const auto entry = reinterpret_cast<Entry>(reinterpret_cast<void (*)()>(GetProcAddress(library, ENTRY_SYMBOL)));
+	if (entry == nullptr) {
+		std::fprintf(stderr, "load_host: %s does not export %s\n", p_argv[1], ENTRY_SYMBOL);
+		return 2;
+	}
+	static int library_token = 0;
+	GDExtensionInitialization initialization{};
+	if (!entry(get_proc_address, &library_token, &initialization)) {
+		std::fprintf(stderr, "load_host: %s returned false\n", ENTRY_SYMBOL);
+		return 1;
+	}
+	std::printf("entry point: minimum level %d\n", static_cast<int>(initialization.minimum_initialization_level));
+	for (int level = initialization.minimum_initialization_level; level < GDEXTENSION_MAX_INITIALIZATION_LEVEL;
+			++level) {
+		initialization.initialize(initialization.userdata, static_cast<GDExtensionInitializationLevel>(level));
+	}
+	for (const auto &[name, registered] : classes) {
+		std::printf("class %s %s methods=%d constants=%d\n", name.c_str(), registered.parent.c_str(),
+				registered.methods, registered.constants);
+	}
+	for (int level = GDEXTENSION_MAX_INITIALIZATION_LEVEL - 1; level >= initialization.minimum_initialization_level;
+			--level) {
+		initialization.deinitialize(initialization.userdata, static_cast<GDExtensionInitializationLevel>(level));
+	}
+	std::printf("unregistered %d\nunknown calls %d\n", unregistered, unknown_calls);
+	bool ok = unregistered == static_cast<int>(classes.size()) && unknown_calls == 0;
+	for (const char *expected : EXPECTED_CLASSES) {
+		const auto found = classes.find(expected);
+		ok = ok && found != classes.end() && found->second.methods > 0 && found->second.parent == "RefCounted";
+	}
+	FreeLibrary(library);
+	std::printf("%s\n", ok ? "load_host: ok" : "load_host: FAILED");
+	return ok ? 0 : 1;
+}

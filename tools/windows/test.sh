@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# make test-windows: the doctest suite cross-built for Windows (make build-windows) run under
+# Wine, then the import check of the Windows libraries. Linux-only tests are the files named
+# *_linux.cpp (cmake/platform.cmake leaves them out of the Windows build); they are counted and
+# listed from the Linux build's suite (make build), and the counts must add up: every Linux
+# test ran under Wine or is Linux-only, plus the Windows-only ones (*_windows.cpp).
+# Wine's prefix is .build/wine (ignored), made on first use.
+set -euo pipefail
+project=$(cd "$(dirname "$0")/../.." && pwd)
+cd "$project"
+exe=.build/windows-debug/haptics_tests.exe
+linux_tests=.build/debug/haptics_tests
+# Bounds: the first boot of a prefix, and the whole suite (about a minute natively).
+BOOT_SECONDS=${WINE_BOOT_SECONDS:-300}
+SUITE_SECONDS=${WINE_SUITE_SECONDS:-900}
+die() { echo "test-windows: $*" >&2; exit 1; }
+[[ -x $exe || -f $exe ]] || die "no $exe (make build-windows)"
+[[ -x $linux_tests ]] || die "no $linux_tests (make build)"
+command -v wine64 >/dev/null || command -v wine >/dev/null || die "no wine (package wine64; make deps installs it)"
+wine=$(command -v wine64 || command -v wine)
+
+export WINEPREFIX=$project/.build/wine WINEDEBUG=-all WINEARCH=win64
+# No Mono or Gecko installer dialogs: the suite needs neither.
+export WINEDLLOVERRIDES="mscoree,mshtml="
+if [[ ! -f $WINEPREFIX/system.reg ]]; then
+  echo "test-windows: making the Wine prefix $WINEPREFIX"
+  timeout "$BOOT_SECONDS" "$wine" wineboot --init >/dev/null 2>&1 || die "wineboot failed or took over ${BOOT_SECONDS} s"
+fi
+
+# "[doctest] unskipped test cases passing the current filters: N" ends a listing.
+count_listed() { sed -nE 's/^\[doctest\] unskipped test cases passing the current filters: ([0-9]+).*/\1/p'; }
+names_listed() { sed -n '/^=*$/,/^=*$/p' | grep -v '^=*$' || true; }
+
+linux_only_list=$("$linux_tests" --list-test-cases --source-file='*_linux.cpp' --no-colors)
+linux_only=$(count_listed <<<"$linux_only_list")
+linux_total=$("$linux_tests" --list-test-cases --no-colors | count_listed)
+windows_only=$(timeout 120 "$wine" "$exe" --list-test-cases --source-file='*_windows.cpp' --no-colors 2>/dev/null |
+  tr -d '\r' | count_listed)
+
+log=.build/windows-debug/wine-tests.log
+start=$(date +%s)
+status=0
+timeout "$SUITE_SECONDS" "$wine" "$exe" --no-colors --duration=false >"$log" 2>&1 || status=$?
+tr -d '\r' <"$log" >"$log.txt" && mv "$log.txt" "$log"
+summary=$(grep -E '^\[doctest\] test cases:' "$log" | tail -n 1 || true)
+if ((status != 0)) || [[ -z $summary ]]; then
+  grep -E 'ERROR|FAILED|TEST CASE|\.cpp' "$log" | tail -n 60 >&2 || true
+  ((status == 124)) && die "the suite took over ${SUITE_SECONDS} s under Wine (log: $log)"
+  die "the suite failed under Wine (exit $status; log: $log)"
+fi
+ran=$(sed -nE 's/^\[doctest\] test cases: *([0-9]+) \|.*/\1/p' <<<"$summary")
+passed=$(sed -nE 's/.*\| *([0-9]+) passed.*/\1/p' <<<"$summary")
+echo "test-windows: $summary ($(($(date +%s) - start)) s under Wine)"
+echo "test-windows: $ran test cases ran under Wine ($windows_only of them Windows-only), $passed passed;" \
+  "$linux_only of the Linux suite's $linux_total are Linux-only and were left out:"
+names_listed <<<"$linux_only_list" | sed 's/^/  /'
+expected=$((linux_total - linux_only + windows_only))
+((ran == expected)) || die "$ran ran under Wine, expected $expected ($linux_total - $linux_only Linux-only + $windows_only Windows-only): a test is missing from one build"
+((ran == passed)) || die "$((ran - passed)) test cases did not pass under Wine"
+for flavour in debug release; do
+  tools/windows/check-imports.sh "addons/haptics/bin/libhaptics.windows.template_$flavour.x86_64.dll"
+done
