@@ -33,6 +33,10 @@ run cmake -S "$dir/src/hidapi" -B "$dir/build/hidapi" -G Ninja -Wno-dev \
 run cmake --build "$dir/build/hidapi" -j 2
 run cmake --install "$dir/build/hidapi"
 
+# hidapi.h marks every function __declspec(dllexport) on Windows (for hidapi's own DLL), which
+# would export them from our DLL too: the archive's export directives are dropped.
+run "$triple-objcopy" --remove-section .drectve "$prefix/lib/libhidapi.a"
+
 # libusb: its release tarball's configure; static, no examples or tests.
 mkdir -p "$dir/build/libusb"
 (cd "$dir/build/libusb" && run "$dir/src/libusb-1.0/configure" --host="$triple" \

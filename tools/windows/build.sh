@@ -20,7 +20,7 @@ configure() {
 # The debug library carries the development tools, as on Linux; the doctests come with it.
 configure .build/windows-debug -DCMAKE_BUILD_TYPE=RelWithDebInfo -DHAPTICS_TARGET=template_debug \
   -DHAPTICS_DEV_TOOLS=ON -DHAPTICS_BUILD_BENCH=OFF
-cmake --build .build/windows-debug -j 2 --target haptics haptics_tests
+cmake --build .build/windows-debug -j 2 --target haptics haptics_tests haptics_load_host
 configure .build/windows-release -DCMAKE_BUILD_TYPE=Release -DHAPTICS_TARGET=template_release \
   -DHAPTICS_DEV_TOOLS=OFF -DHAPTICS_BUILD_TESTS=OFF -DHAPTICS_BUILD_BENCH=OFF
 cmake --build .build/windows-release -j 2 --target haptics

@@ -4,6 +4,7 @@
 # *_linux.cpp (cmake/platform.cmake leaves them out of the Windows build); they are counted and
 # listed from the Linux build's suite (make build), and the counts must add up: every Linux
 # test ran under Wine or is Linux-only, plus the Windows-only ones (*_windows.cpp).
+# Then each Windows library is loaded by a minimal host under Wine, and its imports checked.
 # Wine's prefix is .build/wine (ignored), made on first use.
 set -euo pipefail
 project=$(cd "$(dirname "$0")/../.." && pwd)
@@ -29,7 +30,7 @@ fi
 
 # "[doctest] unskipped test cases passing the current filters: N" ends a listing.
 count_listed() { sed -nE 's/^\[doctest\] unskipped test cases passing the current filters: ([0-9]+).*/\1/p'; }
-names_listed() { sed -n '/^=*$/,/^=*$/p' | grep -v '^=*$' || true; }
+names_listed() { sed -nE '/^={20,}$/,/^={20,}$/p' | grep -vE '^={20,}$' || true; }
 
 linux_only_list=$("$linux_tests" --list-test-cases --source-file='*_linux.cpp' --no-colors)
 linux_only=$(count_listed <<<"$linux_only_list")
@@ -57,6 +58,12 @@ names_listed <<<"$linux_only_list" | sed 's/^/  /'
 expected=$((linux_total - linux_only + windows_only))
 ((ran == expected)) || die "$ran ran under Wine, expected $expected ($linux_total - $linux_only Linux-only + $windows_only Windows-only): a test is missing from one build"
 ((ran == passed)) || die "$((ran - passed)) test cases did not pass under Wine"
+# Each library loads on Windows' loader (Wine's), and its GDExtension entry point initialises
+# and registers its classes against a minimal host (tests_support/load_host).
 for flavour in debug release; do
-  tools/windows/check-imports.sh "addons/haptics/bin/libhaptics.windows.template_$flavour.x86_64.dll"
+  dll=addons/haptics/bin/libhaptics.windows.template_$flavour.x86_64.dll
+  tools/windows/check-imports.sh "$dll"
+  out=$(timeout 120 "$wine" .build/windows-debug/haptics_load_host.exe "$dll" 2>&1 | tr -d '\r') ||
+    { echo "$out" >&2; die "the $flavour library did not load and register under Wine"; }
+  echo "test-windows: $(basename "$dll") under Wine: $(grep '^class ' <<<"$out" | sed 's/^class //' | paste -sd';' | sed 's/;/; /g')"
 done

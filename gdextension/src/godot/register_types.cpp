@@ -13,6 +13,14 @@
 #include "dev_tools/scripted_backends.h"
 #endif
 
+// The one symbol the library exports (everything else is hidden, and on Windows nothing is
+// exported unless marked).
+#ifdef _WIN32
+#define HAPTICS_EXPORT __declspec(dllexport)
+#else
+#define HAPTICS_EXPORT __attribute__((visibility("default")))
+#endif
+
 namespace {
 
 void initialize(void * /*p_userdata*/, GDExtensionInitializationLevel p_level) {
@@ -40,7 +48,7 @@ void deinitialize(void * /*p_userdata*/, GDExtensionInitializationLevel p_level)
 
 extern "C" {
 
-__attribute__((visibility("default"))) GDExtensionBool haptics_library_init(
+HAPTICS_EXPORT GDExtensionBool haptics_library_init(
 		GDExtensionInterfaceGetProcAddress p_get_proc_address, GDExtensionClassLibraryPtr p_library,
 		GDExtensionInitialization *r_initialization) {
 	if (!gd::load_interface(p_get_proc_address, p_library)) {

@@ -5,6 +5,7 @@
 #include "devices/openhaptics/openhaptics_backend.h"
 #include "devices/pid/pid_usages.h"
 #include "engine/device_factory.h"
+#include "scoped_variable.h"
 
 #include <doctest/doctest.h>
 
@@ -35,21 +36,7 @@ const DeviceInfo *find(const DeviceList &p_list, std::string_view p_id) {
 	return nullptr;
 }
 
-// Sets an environment variable for one scope, restoring the previous value.
-struct ScopedVariable {
-	std::string name;
-	std::string previous;
-	bool had = false;
-	ScopedVariable(const char *p_name, const char *p_value) :
-			name(p_name) {
-		if (const char *old = std::getenv(p_name)) {
-			previous = old;
-			had = true;
-		}
-		p_value ? setenv(p_name, p_value, 1) : unsetenv(p_name);
-	}
-	~ScopedVariable() { had ? setenv(name.c_str(), previous.c_str(), 1) : unsetenv(name.c_str()); }
-};
+using testing::ScopedVariable;
 
 } // namespace
 
