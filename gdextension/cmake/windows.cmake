@@ -26,6 +26,8 @@ set(HAPTICS_CORE_SYSTEM_LIBS avrt)
 add_link_options(-static -static-libgcc -static-libstdc++)
 # windows.h without its min/max macros (they break std::min) and its rarely used parts.
 add_compile_definitions(NOMINMAX WIN32_LEAN_AND_MEAN)
+# C99 printf (%zu, %lld) from MinGW rather than the old Microsoft runtime's.
+add_compile_definitions(__USE_MINGW_ANSI_STDIO=1)
 # Windows 10 and later: the high-resolution waitable timer and the thread stack limits
 # (realtime_windows.cpp) are from its API.
 add_compile_definitions(_WIN32_WINNT=0x0A00)

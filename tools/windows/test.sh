@@ -17,8 +17,9 @@ SUITE_SECONDS=${WINE_SUITE_SECONDS:-900}
 die() { echo "test-windows: $*" >&2; exit 1; }
 [[ -x $exe || -f $exe ]] || die "no $exe (make build-windows)"
 [[ -x $linux_tests ]] || die "no $linux_tests (make build)"
-command -v wine64 >/dev/null || command -v wine >/dev/null || die "no wine (package wine64; make deps installs it)"
-wine=$(command -v wine64 || command -v wine)
+# Debian's wine64 package puts its loader outside PATH (the wine package adds the wrapper).
+wine=$(command -v wine64 || command -v wine || echo /usr/lib/wine/wine64)
+[[ -x $wine ]] || die "no wine (package wine64; make deps installs it)"
 
 export WINEPREFIX=$project/.build/wine WINEDEBUG=-all WINEARCH=win64
 # No Mono or Gecko installer dialogs: the suite needs neither.

@@ -46,7 +46,7 @@ public:
 	// stats(). A zero command before the servo has written any.
 	ForceCommand latest_command();
 	// Records what went wrong; the servo stops at its next read. The reason is one sentence.
-	void fail(DeviceIo p_io, const char *p_format, ...) __attribute__((format(printf, 3, 4)));
+	void fail(DeviceIo p_io, const char *p_format, ...) __attribute__((format(HAPTICS_PRINTF, 3, 4)));
 	void record_cycle(double p_cycle_cost_s);
 
 	// --- Game side (open/close only, while no servo runs) -----------------------------------

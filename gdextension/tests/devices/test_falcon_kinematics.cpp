@@ -12,6 +12,7 @@
 #include <cstring>
 #include <initializer_list>
 #include <limits>
+#include <numbers>
 
 using namespace haptics;
 using namespace haptics::falcon;
@@ -31,7 +32,7 @@ TEST_CASE("falcon kinematics: FACTS 3.7 encoder -> angle vectors") {
 	CHECK(encoder_to_theta_deg(1000) == doctest::Approx(71.43466).epsilon(1e-7));
 	CHECK(encoder_to_theta_deg(-1447) == doctest::Approx(-17.72095).epsilon(1e-6));
 	CHECK(FALCON_DEG_PER_COUNT == doctest::Approx(0.0364347).epsilon(1e-6));
-	CHECK(encoder_to_theta_rad(0) == doctest::Approx(35.0 * M_PI / 180.0));
+	CHECK(encoder_to_theta_rad(0) == doctest::Approx(35.0 * std::numbers::pi / 180.0));
 	// And back, to the nearest count, clamped to int16.
 	CHECK(theta_rad_to_encoder(encoder_to_theta_rad(1000)) == 1000);
 	CHECK(theta_rad_to_encoder(encoder_to_theta_rad(-1447)) == -1447);

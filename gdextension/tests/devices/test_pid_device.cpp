@@ -15,6 +15,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <numbers>
 #include <string>
 #include <thread>
 #include <vector>
@@ -274,7 +275,7 @@ TEST_CASE("pid force mapping: device space to the firmwares' X = sin θ, Y = -co
 	CHECK(map_force({ 0.0, 400.0, 0.0 }, mapping, 0).level == 0x7FFF);
 	// Round trip for any direction.
 	for (int degrees = 0; degrees < 360; degrees += 15) {
-		const double radians = degrees * M_PI / 180.0;
+		const double radians = degrees * std::numbers::pi / 180.0;
 		const Vec3 force{ 3.0 * std::sin(radians), 3.0 * std::cos(radians), 0.0 };
 		const Vec3 back = force_from_pid(map_force(force, mapping, 0x2000), mapping);
 		CHECK(back.x == doctest::Approx(force.x).epsilon(1e-3));

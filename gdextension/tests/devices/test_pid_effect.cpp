@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <memory>
+#include <numbers>
 #include <random>
 #include <string>
 #include <vector>
@@ -80,8 +81,8 @@ TEST_CASE("pid effect: the FACTS §1.9 sequence on the wire of the AJ firmware, 
 	// 5000/10000 at 63·360/255 = 88.9°: X = sin, Y = -cos.
 	ScriptedForce force = rig.joystick->rendered_force();
 	CHECK(force.playing_effects == 1);
-	CHECK(force.x == doctest::Approx(0.5 * std::sin(63.0 * 360.0 / 255.0 * M_PI / 180.0)));
-	CHECK(force.y == doctest::Approx(-0.5 * std::cos(63.0 * 360.0 / 255.0 * M_PI / 180.0)));
+	CHECK(force.x == doctest::Approx(0.5 * std::sin(63.0 * 360.0 / 255.0 * std::numbers::pi / 180.0)));
+	CHECK(force.y == doctest::Approx(-0.5 * std::cos(63.0 * 360.0 / 255.0 * std::numbers::pi / 180.0)));
 	CHECK_FALSE(rig.joystick->effect(1).duration_infinite); // 0xFFFF is 65.5 s on AJ, not infinite.
 
 	rig.joystick->clear_records();
@@ -93,7 +94,7 @@ TEST_CASE("pid effect: the FACTS §1.9 sequence on the wire of the AJ firmware, 
 			std::vector<Bytes>{ { 0x01, 0x01, 0x01, 0xFF, 0xFF, 0x00, 0x00, 0x00, 0x00, 0xFF, 0x00, 0x04, 0xBF, 0x00, 0x00, 0x00, 0x00, 0x00 } });
 	// -5000 at 191·360/255 = 269.6°: pushes +X (the level's sign flips the direction).
 	force = rig.joystick->rendered_force();
-	CHECK(force.x == doctest::Approx(-0.5 * std::sin(191.0 * 360.0 / 255.0 * M_PI / 180.0)));
+	CHECK(force.x == doctest::Approx(-0.5 * std::sin(191.0 * 360.0 / 255.0 * std::numbers::pi / 180.0)));
 	CHECK(force.x > 0.49);
 	rig.joystick->clear_records();
 	REQUIRE(effect.stop(*rig.transport) == DeviceIo::OK);

@@ -9,6 +9,14 @@
 #include <cstddef>
 #include <cstdint>
 
+// MinGW's GCC checks "printf" formats against Microsoft's C runtime, which lacks %zu; the
+// Windows build formats with MinGW's C99 printf (__USE_MINGW_ANSI_STDIO, cmake/windows.cmake).
+#ifdef __MINGW32__
+#define HAPTICS_PRINTF gnu_printf
+#else
+#define HAPTICS_PRINTF printf
+#endif
+
 namespace haptics {
 
 enum class StatusCode : int32_t {
@@ -30,7 +38,7 @@ public:
 
 	static Status success() { return Status(); }
 	// printf-style; the message is truncated to MESSAGE_CAPACITY - 1 bytes.
-	static Status error(StatusCode p_code, const char *p_format, ...) __attribute__((format(printf, 2, 3)));
+	static Status error(StatusCode p_code, const char *p_format, ...) __attribute__((format(HAPTICS_PRINTF, 2, 3)));
 
 	bool ok() const { return code_ == StatusCode::OK; }
 	explicit operator bool() const { return ok(); }

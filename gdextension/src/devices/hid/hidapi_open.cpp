@@ -63,8 +63,10 @@ Status open_hidraw_device(const std::string &p_path, const char *p_label, hid_de
 }
 
 bool hid_device_lost(int p_errno, const std::string &p_path, const char *p_hid_text) {
-	const bool gone_errno = p_errno == ENODEV || p_errno == EIO || p_errno == ENXIO || p_errno == ESHUTDOWN ||
-			p_errno == EPIPE || p_errno == ENOENT;
+	bool gone_errno = p_errno == ENODEV || p_errno == EIO || p_errno == ENXIO || p_errno == EPIPE || p_errno == ENOENT;
+#ifdef ESHUTDOWN // Linux's USB stack; Windows' C runtime has no such code
+	gone_errno = gone_errno || p_errno == ESHUTDOWN;
+#endif
 	return gone_errno || !hid_node_exists(p_path) ||
 			(p_hid_text != nullptr && std::strstr(p_hid_text, "isconnected") != nullptr);
 }
