@@ -6,6 +6,7 @@
 
 #include <windows.h>
 
+#include <string>
 #include <thread>
 
 using namespace haptics;
@@ -18,7 +19,7 @@ TEST_CASE("realtime (Windows): the thread gets an MMCSS task or stays normal, at
 		thread_priority = GetThreadPriority(GetCurrentThread());
 	});
 	servo.join();
-	MESSAGE("scheduler: " << scheduler_kind_name(grants.kind) << ", priority " << grants.priority
+	MESSAGE("scheduler: " << std::string(scheduler_kind_name(grants.kind)) << ", priority " << grants.priority
 						  << ", high-resolution timer " << grants.timer_slack_minimised);
 	CHECK((grants.kind == SchedulerKind::MMCSS_PRO_AUDIO || grants.kind == SchedulerKind::MMCSS_GAMES ||
 			grants.kind == SchedulerKind::NORMAL));

@@ -17,7 +17,9 @@ void fill(const testing::ScratchDir &p_dir) {
 	fs::create_directories(p_dir / "study/P01/telemetry");
 	std::ofstream(p_dir / "study/P01/telemetry/x.csv") << "t\n1\n";
 	std::ofstream(p_dir / "top.txt") << "x";
+#ifndef _WIN32 // Windows makes links only with a privilege (or developer mode)
 	fs::create_symlink(p_dir / "study", p_dir / "link");
+#endif
 }
 
 } // namespace
@@ -28,7 +30,7 @@ TEST_CASE("scratch_dir: a fresh folder under the temporary directory, removed wi
 		const testing::ScratchDir dir("haptics-scratch");
 		root = dir.root();
 		CHECK(fs::is_directory(root));
-		CHECK(root.parent_path() == fs::temp_directory_path());
+		CHECK(fs::equivalent(root.parent_path(), fs::temp_directory_path()));
 		CHECK(root.filename().string().rfind("haptics-scratch-", 0) == 0);
 		CHECK(fs::is_empty(root));
 		fill(dir);

@@ -6,7 +6,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
-#include <ctime>
+#include <thread>
 
 namespace fake_hd {
 
@@ -15,18 +15,15 @@ namespace {
 constexpr size_t MAX_CALLS = 2'000'000; // About 300 MB would be a runaway test; stop there.
 constexpr size_t CALLBACK_COSTS = 1 << 16;
 
+// std::chrono's steady clock, not clock_nanosleep: the fake runs on Windows too, where
+// winpthreads' clock_nanosleep does not sleep to a CLOCK_MONOTONIC deadline.
 int64_t now_ns() {
-	timespec time{};
-	clock_gettime(CLOCK_MONOTONIC, &time);
-	return static_cast<int64_t>(time.tv_sec) * 1'000'000'000 + time.tv_nsec;
+	return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
+			.count();
 }
 
 void sleep_until(int64_t p_deadline_ns) {
-	timespec deadline{};
-	deadline.tv_sec = static_cast<time_t>(p_deadline_ns / 1'000'000'000);
-	deadline.tv_nsec = static_cast<long>(p_deadline_ns % 1'000'000'000);
-	while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &deadline, nullptr) != 0) {
-	}
+	std::this_thread::sleep_until(std::chrono::steady_clock::time_point(std::chrono::nanoseconds(p_deadline_ns)));
 }
 
 // A Touch-like default: the usable box is off-centre in y and z so that centring shows.

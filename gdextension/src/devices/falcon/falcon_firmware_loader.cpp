@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 
 namespace haptics::falcon {
 
@@ -313,8 +314,12 @@ Status read_firmware_file(const std::string &p_path, std::vector<uint8_t> &r_ima
 		return Status::error(StatusCode::INVALID_ARGUMENT,
 				"Falcon firmware file not set: set %s to Novint's firmware file (not shipped with this game)", FIRMWARE_ENV_VAR);
 	}
-	std::FILE *file = std::fopen(p_path.c_str(), "rb");
-	if (!file) {
+	// A folder opens on Linux and fails at the first read; Windows refuses to open it at all.
+	// Either way the player is told it is a folder.
+	std::error_code ignored;
+	const bool folder = std::filesystem::is_directory(p_path, ignored);
+	std::FILE *file = folder ? nullptr : std::fopen(p_path.c_str(), "rb");
+	if (!file && !folder) {
 		const int error = errno;
 		return Status::error(StatusCode::INVALID_ARGUMENT,
 				"Falcon firmware file '%.80s' not found or unreadable (%s): set %s to Novint's firmware file (not shipped with this game)",
@@ -322,8 +327,8 @@ Status read_firmware_file(const std::string &p_path, std::vector<uint8_t> &r_ima
 	}
 	std::vector<uint8_t> image;
 	uint8_t buffer[4096];
-	bool read_error = false;
-	while (image.size() <= FIRMWARE_MAX_SIZE) {
+	bool read_error = folder;
+	while (file && image.size() <= FIRMWARE_MAX_SIZE) {
 		const size_t got = std::fread(buffer, 1, sizeof(buffer), file);
 		image.insert(image.end(), buffer, buffer + got);
 		if (got < sizeof(buffer)) {
@@ -331,7 +336,9 @@ Status read_firmware_file(const std::string &p_path, std::vector<uint8_t> &r_ima
 			break;
 		}
 	}
-	std::fclose(file);
+	if (file) {
+		std::fclose(file);
+	}
 	if (read_error) {
 		return Status::error(StatusCode::INVALID_ARGUMENT, "Falcon firmware file '%.80s' could not be read (a folder?)",
 				p_path.c_str());
