@@ -155,9 +155,9 @@ test-dist: dist
 	@tools/test-dist.sh
 
 ## addon: the Godot addon (.build/addon/addons/haptics/, assembled from the sources: the
-## scripts, the probe scene, the materials, the debug and release libraries, the editor
+## scripts, the probe scene, the materials, the Linux and Windows libraries, the editor
 ## plugin) and its Asset Library zip (.build/addon/haptics-addon-<version>.zip)
-addon: import build-release
+addon: import build-release build-windows
 	@tools/build-addon.sh
 
 ## test-addon: a small platformer we did not build it into gets the addon the README's way

@@ -4,8 +4,9 @@
 # addons/haptics/), and unpacks that zip into .build/addon/addons/haptics/ for a look.
 #
 # The folder's own files go in unchanged: those git tracks, or would track (not ignored).
-# bin/ holds what the product build made: the release library (make build-release), stripped
-# of its debug information, under both names the .gdextension gives. The repository's own
+# bin/ holds what the product builds made: the release libraries (make build-release, and
+# make build-windows' release DLL), each stripped of its debug information, under both names
+# the .gdextension gives for its platform. The repository's own
 # bin/libhaptics.linux.template_debug.x86_64.so is the development build (make build: with
 # the scripted devices the tests use) and is never packed. The release and development
 # libraries are compiled from the same sources; the library's flavour only names the file.
@@ -18,8 +19,12 @@ OUT="${1:-.build/addon}"
 VERSION="$(sed -n 's/^version="\(.*\)"$/\1/p' "$ADDON_SRC/plugin.cfg")"
 RELEASE_LIB="$ADDON_SRC/bin/libhaptics.linux.template_release.x86_64.so"
 SHIPPED_NAMES=(libhaptics.linux.template_debug.x86_64.so libhaptics.linux.template_release.x86_64.so)
+# Windows: the same rule with make build-windows' release DLL.
+WINDOWS_RELEASE_LIB="$ADDON_SRC/bin/libhaptics.windows.template_release.x86_64.dll"
+WINDOWS_SHIPPED_NAMES=(libhaptics.windows.template_debug.x86_64.dll libhaptics.windows.template_release.x86_64.dll)
 
 [[ -f "$RELEASE_LIB" ]] || { echo "build-addon: $RELEASE_LIB is missing (make build-release)" >&2; exit 1; }
+[[ -f "$WINDOWS_RELEASE_LIB" ]] || { echo "build-addon: $WINDOWS_RELEASE_LIB is missing (make build-windows)" >&2; exit 1; }
 [[ -n "$VERSION" ]] || { echo "build-addon: no version=\"...\" line in $ADDON_SRC/plugin.cfg" >&2; exit 1; }
 
 STAGE="$(mktemp -d "${TMPDIR:-/tmp}/haptics-addon.XXXXXX")"
@@ -35,8 +40,12 @@ git ls-files --cached --others --exclude-standard -- "$ADDON_SRC" | grep -v "^$A
 for name in "${SHIPPED_NAMES[@]}"; do
 	cp "$RELEASE_LIB" "$STAGE/$ADDON_SRC/bin/$name"
 done
+for name in "${WINDOWS_SHIPPED_NAMES[@]}"; do
+	cp "$WINDOWS_RELEASE_LIB" "$STAGE/$ADDON_SRC/bin/$name"
+done
 # Debug information stays in the build tree.
 command -v strip >/dev/null && strip --strip-debug "$STAGE/$ADDON_SRC"/bin/*.so
+x86_64-w64-mingw32-strip --strip-debug "$STAGE/$ADDON_SRC"/bin/*.dll
 tools/check-product.sh "$STAGE/$ADDON_SRC" >/dev/null
 
 mkdir -p "$OUT"

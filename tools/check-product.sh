@@ -15,7 +15,7 @@ libraries=0
 packs=0
 while IFS= read -r -d '' file; do
   case $file in
-    *.so) pattern=scripted; libraries=$((libraries + 1)) ;;
+    *.so | *.dll) pattern=scripted; libraries=$((libraries + 1)) ;;
     *.pck) pattern=rogue; packs=$((packs + 1)) ;;
   esac
   hits=$(strings -a "$file" | grep -iE "$pattern" | sort -u | head -n 5 || true)
@@ -24,7 +24,7 @@ while IFS= read -r -d '' file; do
     sed 's/^/    /' <<<"$hits" >&2
     found=1
   fi
-done < <(find "$@" \( -name 'libhaptics*.so' -o -name '*.pck' \) -print0)
+done < <(find "$@" \( -name 'libhaptics*.so' -o -name 'libhaptics*.dll' -o -name '*.pck' \) -print0)
 ((found == 0)) || exit 1
 ((libraries + packs > 0)) || { echo "check-product: FAIL: no library or pack in $*" >&2; exit 1; }
 echo "check-product: $libraries haptics libraries and $packs packs in $*: no scripted device, no rogue peer"
