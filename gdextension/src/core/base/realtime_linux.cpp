@@ -1,7 +1,7 @@
 #include "core/base/realtime.h"
+#include "core/base/realtime_shared.h"
 
 #include <algorithm>
-#include <alloca.h>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -22,23 +22,12 @@ namespace {
 
 constexpr int64_t NS_PER_S = 1'000'000'000;
 constexpr int CAP_IPC_LOCK_BIT = 14; // linux/capability.h
-// Stack left untouched below the prefaulted part: the tick's own frames and signal handlers.
-constexpr size_t STACK_MARGIN_BYTES = 64 * 1024;
-constexpr size_t PAGE_STRIDE = 4096;
 
 timespec to_timespec(int64_t p_ns) {
 	timespec ts;
 	ts.tv_sec = static_cast<time_t>(p_ns / NS_PER_S);
 	ts.tv_nsec = static_cast<long>(p_ns % NS_PER_S);
 	return ts;
-}
-
-inline void cpu_relax() {
-#if defined(__x86_64__) || defined(__i386__)
-	__builtin_ia32_pause();
-#elif defined(__aarch64__)
-	asm volatile("yield");
-#endif
 }
 
 // Whether capability p_bit is in the process's effective set (/proc/self/status, CapEff).
@@ -73,16 +62,6 @@ ProcessHolds &process_holds() {
 	return holds;
 }
 
-// Touches p_bytes below this frame, a page at a time, through a volatile pointer (the
-// compiler may not drop the writes).
-__attribute__((noinline)) void touch_stack(size_t p_bytes) {
-	volatile unsigned char *area = static_cast<volatile unsigned char *>(alloca(p_bytes));
-	for (size_t offset = 0; offset < p_bytes; offset += PAGE_STRIDE) {
-		area[offset] = 0;
-	}
-	area[p_bytes - 1] = 0;
-}
-
 } // namespace
 
 int64_t monotonic_now_ns() {
@@ -94,17 +73,6 @@ int64_t monotonic_now_ns() {
 void sleep_until_ns(int64_t p_deadline_ns) {
 	const timespec deadline = to_timespec(p_deadline_ns);
 	while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &deadline, nullptr) == EINTR) {
-	}
-}
-
-void sleep_then_spin_until_ns(int64_t p_deadline_ns, int64_t p_spin_ns) {
-	if (p_spin_ns <= 0) {
-		sleep_until_ns(p_deadline_ns);
-		return;
-	}
-	sleep_until_ns(p_deadline_ns - p_spin_ns);
-	while (monotonic_now_ns() < p_deadline_ns) {
-		cpu_relax();
 	}
 }
 
@@ -185,19 +153,7 @@ int32_t prefault_current_stack(int32_t p_kb) {
 	if (!known) {
 		return 0;
 	}
-	unsigned char here = 0;
-	const uintptr_t current = reinterpret_cast<uintptr_t>(&here);
-	const uintptr_t low = reinterpret_cast<uintptr_t>(stack_low);
-	if (current <= low + STACK_MARGIN_BYTES) {
-		return 0;
-	}
-	const size_t available = current - low - STACK_MARGIN_BYTES;
-	const size_t bytes = std::min(static_cast<size_t>(p_kb) * 1024, available) / PAGE_STRIDE * PAGE_STRIDE;
-	if (bytes == 0) {
-		return 0;
-	}
-	touch_stack(bytes);
-	return static_cast<int32_t>(bytes / 1024);
+	return prefault_stack_above(reinterpret_cast<uintptr_t>(stack_low), p_kb);
 }
 
 bool minimise_current_timer_slack() {

@@ -1,7 +1,7 @@
 #include "core/base/realtime.h"
+#include "core/base/realtime_shared.h"
 
 #include <algorithm>
-#include <malloc.h>
 
 #include <windows.h>
 // After windows.h, which it needs.
@@ -31,12 +31,6 @@ namespace {
 
 constexpr int64_t NS_PER_S = 1'000'000'000;
 constexpr int64_t NS_PER_FILETIME_UNIT = 100;
-constexpr size_t STACK_MARGIN_BYTES = 64 * 1024;
-constexpr size_t PAGE_STRIDE = 4096;
-
-inline void cpu_relax() {
-	__builtin_ia32_pause();
-}
 
 int64_t counter_frequency() {
 	static const int64_t frequency = [] {
@@ -90,14 +84,6 @@ void sleep_relative_ns(int64_t p_ns) {
 	}
 }
 
-__attribute__((noinline)) void touch_stack(size_t p_bytes) {
-	volatile unsigned char *area = static_cast<volatile unsigned char *>(alloca(p_bytes));
-	for (size_t offset = 0; offset < p_bytes; offset += PAGE_STRIDE) {
-		area[offset] = 0;
-	}
-	area[p_bytes - 1] = 0;
-}
-
 } // namespace
 
 int64_t monotonic_now_ns() {
@@ -113,17 +99,6 @@ int64_t monotonic_now_ns() {
 void sleep_until_ns(int64_t p_deadline_ns) {
 	for (int64_t now = monotonic_now_ns(); now < p_deadline_ns; now = monotonic_now_ns()) {
 		sleep_relative_ns(p_deadline_ns - now);
-	}
-}
-
-void sleep_then_spin_until_ns(int64_t p_deadline_ns, int64_t p_spin_ns) {
-	if (p_spin_ns <= 0) {
-		sleep_until_ns(p_deadline_ns);
-		return;
-	}
-	sleep_until_ns(p_deadline_ns - p_spin_ns);
-	while (monotonic_now_ns() < p_deadline_ns) {
-		cpu_relax();
 	}
 }
 
@@ -202,18 +177,7 @@ int32_t prefault_current_stack(int32_t p_kb) {
 	ULONG_PTR low = 0;
 	ULONG_PTR high = 0;
 	GetCurrentThreadStackLimits(&low, &high);
-	unsigned char here = 0;
-	const uintptr_t current = reinterpret_cast<uintptr_t>(&here);
-	if (low == 0 || current <= low + STACK_MARGIN_BYTES) {
-		return 0;
-	}
-	const size_t available = current - low - STACK_MARGIN_BYTES;
-	const size_t bytes = std::min(static_cast<size_t>(p_kb) * 1024, available) / PAGE_STRIDE * PAGE_STRIDE;
-	if (bytes == 0) {
-		return 0;
-	}
-	touch_stack(bytes);
-	return static_cast<int32_t>(bytes / 1024);
+	return low == 0 ? 0 : prefault_stack_above(static_cast<uintptr_t>(low), p_kb);
 }
 
 bool minimise_current_timer_slack() {
