@@ -99,37 +99,29 @@ GDExtensionInterfaceFunctionPtr as_function(F p_function) {
 	return reinterpret_cast<GDExtensionInterfaceFunctionPtr>(p_function);
 }
 
+struct Served {
+	const char *name;
+	GDExtensionInterfaceFunctionPtr function;
+};
+
+const Served SERVED[] = {
+	{ "get_godot_version2", as_function(godot_version) },
+	{ "string_name_new_with_utf8_chars_and_len", as_function(string_name_new) },
+	{ "classdb_register_extension_class5", as_function(register_class) },
+	{ "classdb_register_extension_class_method", as_function(register_method) },
+	{ "classdb_register_extension_class_integer_constant", as_function(register_constant) },
+	{ "classdb_unregister_extension_class", as_function(unregister_class) },
+	{ "variant_get_ptr_destructor", as_function(get_destructor) },
+	{ "variant_get_ptr_constructor", as_function(get_constructor) },
+	{ "get_variant_from_type_constructor", as_function(get_from_type) },
+	{ "get_variant_to_type_constructor", as_function(get_to_type) },
+};
+
 GDExtensionInterfaceFunctionPtr get_proc_address(const char *p_name) {
-	const std::string name(p_name);
-	if (name == "get_godot_version2") {
-		return as_function(godot_version);
-	}
-	if (name == "string_name_new_with_utf8_chars_and_len") {
-		return as_function(string_name_new);
-	}
-	if (name == "classdb_register_extension_class5") {
-		return as_function(register_class);
-	}
-	if (name == "classdb_register_extension_class_method") {
-		return as_function(register_method);
-	}
-	if (name == "classdb_register_extension_class_integer_constant") {
-		return as_function(register_constant);
-	}
-	if (name == "classdb_unregister_extension_class") {
-		return as_function(unregister_class);
-	}
-	if (name == "variant_get_ptr_destructor") {
-		return as_function(get_destructor);
-	}
-	if (name == "variant_get_ptr_constructor") {
-		return as_function(get_constructor);
-	}
-	if (name == "get_variant_from_type_constructor") {
-		return as_function(get_from_type);
-	}
-	if (name == "get_variant_to_type_constructor") {
-		return as_function(get_to_type);
+	for (const Served &served : SERVED) {
+		if (std::strcmp(served.name, p_name) == 0) {
+			return served.function;
+		}
 	}
 	return as_function(unknown_function);
 }
