@@ -19,6 +19,9 @@ const CONTACT: int = 7
 const TOUCH_PX: float = 1.0
 ## A force into a wall stronger than this (newtons) is a pull.
 const PULL_N: float = 0.02
+## How long after the avatar left a wall a force toward it still counts as a pull toward
+## it, seconds.
+const RECENT_WALL_S: float = 0.2
 
 var geometry: Geometry = null
 
@@ -133,34 +136,49 @@ func normal_force_law(
 	return {"rows": count, "worst": worst}
 
 
-## The pulls into a wall: runs of rows whose force points into a wall the avatar touches
-## (F.n < -[constant PULL_N]), each run's duration in seconds (rows × the row spacing), and
-## [code]releases[/code]: how often the input turned from pressing a touched wall to
+## The pulls into a wall after the hand turned away from it, as runs of rows, each run's
+## duration in seconds (rows × the row spacing), ascending:
+## [code]rendered[/code], the paper's model pulling: the frame still has a contact (the
+## in_contact flag) while the input points away from a wall the avatar touches (or left
+## less than [constant RECENT_WALL_S] ago), so
+## F_n = -k (i.n) n points into it by more than [constant PULL_N] (k (i.n) > PULL_N);
+## [code]felt[/code], the recorded force pointing into a touched wall by more than PULL_N
+## (the rendered pull after the servo's smoothing, which lags and stretches it);
+## [code]releases[/code], how often the input turned from pressing a touched wall to
 ## pointing away from it.
-func pulls(rows: Array[PackedFloat64Array]) -> Dictionary:
-	var durations: Array[float] = []
+func pulls(rows: Array[PackedFloat64Array], k: float) -> Dictionary:
+	var rendered: Array[float] = []
+	var felt: Array[float] = []
 	var releases: int = 0
-	var run: int = 0
+	var runs: PackedInt32Array = PackedInt32Array([0, 0])
 	var spacing: float = row_spacing(rows)
+	# The walls last touched stay the ones to pull toward for a while after the avatar
+	# left them (the frame and the smoothed force lag behind it).
+	var recent: Array[Vector2] = []
+	var recent_t: float = -INF
 	for i: int in rows.size():
-		var normals: Array[Vector2] = _normals(rows[i])
-		var pulling: bool = false
-		for normal: Vector2 in normals:
-			pulling = pulling or _vec(rows[i], FORCE).dot(normal) < -PULL_N
+		var model_pull: bool = false
+		var force_pull: bool = false
+		var touching: Array[Vector2] = _normals(rows[i])
+		if not touching.is_empty():
+			recent = touching
+			recent_t = rows[i][T]
+		elif rows[i][T] - recent_t > RECENT_WALL_S:
+			recent = []
+		for normal: Vector2 in recent:
+			var away: float = _vec(rows[i], INPUT).dot(normal)
+			model_pull = model_pull or (rows[i][CONTACT] > 0.5 and k * away > PULL_N)
+			force_pull = force_pull or _vec(rows[i], FORCE).dot(normal) < -PULL_N
 			if i > 0 and rows[i - 1][CONTACT] > 0.5:
-				var before: float = _vec(rows[i - 1], INPUT).dot(normal)
-				var now: float = _vec(rows[i], INPUT).dot(normal)
-				if before <= 0.0 and now > 0.0:
+				if _vec(rows[i - 1], INPUT).dot(normal) <= 0.0 and away > 0.0:
 					releases += 1
-		if pulling:
-			run += 1
-		elif run > 0:
-			durations.append(run * spacing)
-			run = 0
-	if run > 0:
-		durations.append(run * spacing)
-	durations.sort()
-	return {"durations": durations, "releases": releases}
+		_count_run(runs, 0, model_pull, rendered, spacing)
+		_count_run(runs, 1, force_pull, felt, spacing)
+	_count_run(runs, 0, false, rendered, spacing)
+	_count_run(runs, 1, false, felt, spacing)
+	rendered.sort()
+	felt.sort()
+	return {"rendered": rendered, "felt": felt, "releases": releases}
 
 
 ## Position control: on the rows where the proxy is held ([code]in_contact[/code]) by a
@@ -207,6 +225,18 @@ static func row_spacing(rows: Array[PackedFloat64Array]) -> float:
 		return 0.0
 	steps.sort()
 	return steps[steps.size() >> 1]
+
+
+# Extends run [param which] of [param runs] while [param on]; when it ends, appends its
+# duration to [param out].
+static func _count_run(
+	runs: PackedInt32Array, which: int, on: bool, out: Array[float], spacing: float
+) -> void:
+	if on:
+		runs[which] += 1
+	elif runs[which] > 0:
+		out.append(runs[which] * spacing)
+		runs[which] = 0
 
 
 func _normals(row: PackedFloat64Array) -> Array[Vector2]:

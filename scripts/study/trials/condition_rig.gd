@@ -193,7 +193,7 @@ static func probes_on(body: Node) -> Array[HapticProbe]:
 		return out
 	for child: Node in body.get_children():
 		if child is HapticProbe:
-			out.append(child)
+			out.append(child as HapticProbe)
 	return out
 
 

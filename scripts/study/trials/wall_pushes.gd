@@ -14,7 +14,7 @@ extends RefCounted
 ## (the proxy must stay on the near side), holds there, and comes back.
 
 ## What the script is doing with the current push.
-enum Phase { APPROACH, PRESS, RELEASE, RETURN, DONE }
+enum Phase { APPROACH, PRESS, RELEASE, RETURN }
 
 ## Deflection of the hand while pushing (input vector length, acceleration control).
 const STRENGTH: float = 0.8
