@@ -24,6 +24,9 @@ const PULL_N: float = 0.02
 const RECENT_WALL_S: float = 0.2
 
 var geometry: Geometry = null
+## The servo's input dead zone (force_model.dead_zone): the input vector the force model
+## uses is the file's input with it applied (core/servo/input_vector.h).
+var dead_zone: float = 0.0
 
 
 func _init(p_geometry: Geometry) -> void:
@@ -90,7 +93,8 @@ func contact_agreement(rows: Array[PackedFloat64Array]) -> Dictionary:
 
 
 ## Acceleration control: [code]excess[/code], the most a row's force exceeds
-## [param overshoot] × k × the largest input of the last [param window] rows;
+## [param overshoot] × k × the largest input ([method model_input]) of the last
+## [param window] rows;
 ## [code]largest[/code] force and [code]largest_input[/code].
 func force_bound(
 	rows: Array[PackedFloat64Array], k: float, overshoot: float, window: int
@@ -101,7 +105,7 @@ func force_bound(
 	for i: int in rows.size():
 		var most: float = 0.0
 		for j: int in range(maxi(0, i - window), i + 1):
-			most = maxf(most, _vec(rows[j], INPUT).length())
+			most = maxf(most, model_input(rows[j]).length())
 		var force: float = _vec(rows[i], FORCE).length()
 		excess = maxf(excess, force - overshoot * k * most)
 		largest = maxf(largest, force)
@@ -127,7 +131,7 @@ func normal_force_law(
 			steady = steady and rows[j][CONTACT] > 0.5
 			steady = steady and _vec(rows[j], INPUT).distance_to(_vec(rows[i], INPUT)) < steady_input
 		var normal: Vector2 = normals[0]
-		var press: float = _vec(rows[i], INPUT).dot(normal)
+		var press: float = model_input(rows[i]).dot(normal)
 		if not steady or press > -0.05:
 			continue
 		var expected: Vector2 = -k * press * normal
@@ -166,7 +170,7 @@ func pulls(rows: Array[PackedFloat64Array], k: float) -> Dictionary:
 		elif rows[i][T] - recent_t > RECENT_WALL_S:
 			recent = []
 		for normal: Vector2 in recent:
-			var away: float = _vec(rows[i], INPUT).dot(normal)
+			var away: float = model_input(rows[i]).dot(normal)
 			model_pull = model_pull or (rows[i][CONTACT] > 0.5 and k * away > PULL_N)
 			force_pull = force_pull or _vec(rows[i], FORCE).dot(normal) < -PULL_N
 			if i > 0 and rows[i - 1][CONTACT] > 0.5:
@@ -214,6 +218,16 @@ func proxy_law(rows: Array[PackedFloat64Array], map: MazeMap, window: int) -> Di
 		"free_force": free_force,
 		"reach": reach,
 	}
+
+
+## The input vector the force model used for [param row]: the file's input (device
+## position over the workspace radius) with the [member dead_zone] applied.
+func model_input(row: PackedFloat64Array) -> Vector2:
+	var device: Vector2 = _vec(row, INPUT).limit_length(1.0)
+	var length: float = device.length()
+	if length <= dead_zone:
+		return Vector2.ZERO
+	return device / length * (length - dead_zone) / (1.0 - dead_zone)
 
 
 ## The median time between rows, seconds.
