@@ -120,7 +120,8 @@ func test_the_wall_touching_participant_records_what_each_condition_renders() ->
 			"none":
 				assert_eq(Checks.metrics(rows, gap)["max_force_n"], 0.0, "none: never a force")
 			"movement":
-				_check_movement(rows, checks, settings.get("stiffness", 0.0))
+				var k: float = settings.get("stiffness", 0.0)
+				_check_movement(rows, checks, k)
 			"constraint":
 				_check_constraint(rows, checks)
 
@@ -201,9 +202,11 @@ func _check_movement(rows: Array[PackedFloat64Array], checks: Checks, k: float) 
 	var releases: int = pulls["releases"]
 	print("    movement: %d releases of a wall the avatar touched" % releases)
 	assert_gt(releases, MIN_COLLISIONS - 1, "the hand turned away from walls it touched")
-	var rendered: float = _print_durations("rendered by the model", pulls["rendered"])
+	var by_model: Array = pulls["rendered"]
+	var in_force: Array = pulls["felt"]
+	var rendered: float = _print_durations("rendered by the model", by_model)
 	assert_lt(rendered, MAX_PULL_S, "the model pulls for at most two physics frames")
-	var felt: float = _print_durations("in the recorded (smoothed) force", pulls["felt"])
+	var felt: float = _print_durations("in the recorded (smoothed) force", in_force)
 	assert_lt(felt, MAX_FELT_PULL_S, "the recorded pull ends when the smoothing has settled")
 
 
