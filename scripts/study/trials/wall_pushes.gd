@@ -31,7 +31,7 @@ const HOME_PX: float = 6.0
 ## ... and this slow (px/s, acceleration control).
 const HOME_SPEED: float = 40.0
 ## Position control: how far past the wall's face the hand goes, level pixels.
-const BEYOND_PX: float = 40.0
+const BEYOND_PX: float = 60.0
 ## Position control: the hand's reach when no wall lies along the push, level pixels.
 const REACH_PX: float = 150.0
 
