@@ -37,10 +37,17 @@ const MAX_FELT_PULL_S: float = MAX_PULL_S + 0.04
 const AGREEMENT: float = 0.95
 ## Pushes of the scripted hand that must show up as wall collisions, at least.
 const MIN_COLLISIONS: int = 5
+## The phases in which the maze is shown under the current condition.
+const CONDITION_SET_UP: Array[StudySession.Phase] = [
+	StudySession.Phase.INTRO,
+	StudySession.Phase.CENTRING,
+	StudySession.Phase.TRIAL,
+	StudySession.Phase.ENDED,
+]
 
 var _root: String = ""
-# Per condition (or "practice"): the probe counts seen on the avatar, and the largest
-# impact force the server rendered during its trial.
+# Per condition (or "practice"): the probe counts seen on the avatar at the physics ticks
+# its maze was shown, and the largest impact force the server rendered during its trial.
 var _probe_counts: Dictionary[String, Array] = {}
 var _largest_impact: Dictionary[String, float] = {}
 
@@ -132,8 +139,9 @@ func _sample(study: StudyRunner) -> void:
 		return
 	var phase: StudySession.Phase = study.phase
 	var key: String = "practice" if phase == StudySession.Phase.PRACTICE else ""
-	if phase == StudySession.Phase.TRIAL:
+	if phase in CONDITION_SET_UP:
 		key = study.current_condition()
+	if phase == StudySession.Phase.TRIAL:
 		var impact: Vector2 = Haptics.get_forces()["impact"]
 		_largest_impact[key] = maxf(_largest_impact.get(key, 0.0), impact.length())
 	if key.is_empty():
