@@ -10,7 +10,7 @@ extends CharacterBody2D
 ## [br][br]
 ## The sub holds up what lands on it (it feels the weight, and sags very slowly under it),
 ## pushes crates it drives into, and is slowed by water ([method enter_water]). Blocked by a
-## wall it keeps no velocity into it, so input turned away leaves the wall on the next tick.
+## wall it keeps no velocity into it, so input turned away moves it off at once.
 ## The hull pitches toward its motion and faces where it goes; its propeller spins with the
 ## thrust and bubbles stream from it under water. The collision shape stays a circle, so contact
 ## normals never depend on the pose.

@@ -1,6 +1,6 @@
 extends TestSuite
 ## The sub against walls (acceleration control, a floating body): blocked by a wall it keeps
-## no velocity into it, so input turned away leaves the wall on the next physics tick (it
+## no velocity into it, so input turned away leaves the wall within two physics ticks (it
 ## used to keep its full speed into the wall and take about seven ticks to come off); along
 ## a floor it slides at the top speed; a crate it drives into is still shoved.
 
@@ -32,15 +32,22 @@ func test_pressed_into_a_wall_the_sub_keeps_no_velocity_into_it() -> void:
 	assert_lt(_player.velocity.x, _player.acceleration / 50.0 + 0.5, "no speed into the wall")
 
 
-func test_turning_away_leaves_the_wall_on_the_next_tick() -> void:
+func test_turning_away_leaves_the_wall_within_two_ticks() -> void:
 	_player.input_vector = Vector2.RIGHT
 	await wait_physics_frames(150)
 	var at_wall: float = _player.position.x
 	_player.input_vector = Vector2.LEFT
 	await wait_physics_frames(1)
-	assert_eq(_player.get_slide_collision_count(), 0, "off the wall after one tick")
-	assert_lt(_player.position.x, at_wall - 0.5, "moving away")
+	# The first tick moves it away; the physics may still report the wall it starts from
+	# within its safe margin on that tick, never on the next.
+	assert_lt(_player.position.x, at_wall - 0.5, "moving away at the first tick")
 	assert_lt(_player.velocity.x, 0.0)
+	var first: int = _player.get_slide_collision_count()
+	await wait_physics_frames(1)
+	print("    contacts after the first tick: %d, after the second: %d" % [
+		first, _player.get_slide_collision_count()
+	])
+	assert_eq(_player.get_slide_collision_count(), 0, "off the wall after two ticks")
 
 
 func test_sliding_along_the_floor_reaches_the_top_speed() -> void:
