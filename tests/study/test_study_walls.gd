@@ -143,7 +143,8 @@ func _sample(study: StudyRunner) -> void:
 		key = study.current_condition()
 	if phase == StudySession.Phase.TRIAL:
 		var impact: Vector2 = Haptics.get_forces()["impact"]
-		_largest_impact[key] = maxf(_largest_impact.get(key, 0.0), impact.length())
+		var largest: float = _largest_impact.get(key, 0.0)
+		_largest_impact[key] = maxf(largest, impact.length())
 	if key.is_empty():
 		return
 	var count: int = ConditionRig.probes_on(stage.level.player).size()
@@ -199,7 +200,8 @@ func _check_movement(rows: Array[PackedFloat64Array], checks: Checks, k: float) 
 	var largest_input: float = bound["largest_input"]
 	print("    movement: largest force %.3f N (k |i| = %.3f N)" % [largest, k * largest_input])
 	var excess: float = bound["excess"]
-	assert_lt(excess, 0.0, "the force never exceeds %.2f k |i| (k = %.1f)" % [OVERSHOOT, k])
+	# At rest both are 0: the excess is never above 0 (the file's rounding aside).
+	assert_lt(excess, 1e-4, "the force never exceeds %.2f k |i| (k = %.1f)" % [OVERSHOOT, k])
 	var law: Dictionary = checks.normal_force_law(rows, k, SETTLE_ROWS, STEADY_INPUT)
 	var settled: int = law["rows"]
 	var worst: float = law["worst"]
