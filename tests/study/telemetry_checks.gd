@@ -129,7 +129,9 @@ func normal_force_law(
 		var steady: bool = true
 		for j: int in range(i - window, i + 1):
 			steady = steady and rows[j][CONTACT] > 0.5
-			steady = steady and _vec(rows[j], INPUT).distance_to(_vec(rows[i], INPUT)) < steady_input
+			steady = (
+				steady and _vec(rows[j], INPUT).distance_to(_vec(rows[i], INPUT)) < steady_input
+			)
 		var normal: Vector2 = normals[0]
 		var press: float = model_input(rows[i]).dot(normal)
 		if not steady or press > -0.05:

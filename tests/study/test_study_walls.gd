@@ -239,11 +239,13 @@ func _check_constraint(rows: Array[PackedFloat64Array], checks: Checks) -> void:
 	var law: Dictionary = checks.proxy_law(rows, map, 20)
 	print(
 		(
-			"    constraint: %d held rows, proxy off the wall's surface by at most %.3f px, "
-			+ "force off the normal by at most %.4f; free rows' force at most %.4f N; "
-			+ "the hand reached %.1f px from the proxy"
+			(
+				"    constraint: %d held rows, proxy off the wall's surface by at most %.3f px, "
+				+ "force off the normal by at most %.4f; free rows' force at most %.4f N; "
+				+ "the hand reached %.1f px from the proxy"
+			)
+			% [law["held"], law["off_surface"], law["off_normal"], law["free_force"], law["reach"]]
 		)
-		% [law["held"], law["off_surface"], law["off_normal"], law["free_force"], law["reach"]]
 	)
 	assert_gt(law["held"], 100, "the proxy was held by walls")
 	assert_lt(law["off_surface"], 0.1, "a held proxy rests on the wall's surface")

@@ -44,9 +44,12 @@ func test_turning_away_leaves_the_wall_within_two_ticks() -> void:
 	assert_lt(_player.velocity.x, 0.0)
 	var first: int = _player.get_slide_collision_count()
 	await wait_physics_frames(1)
-	print("    contacts after the first tick: %d, after the second: %d" % [
-		first, _player.get_slide_collision_count()
-	])
+	print(
+		(
+			"    contacts after the first tick: %d, after the second: %d"
+			% [first, _player.get_slide_collision_count()]
+		)
+	)
 	assert_eq(_player.get_slide_collision_count(), 0, "off the wall after two ticks")
 
 
