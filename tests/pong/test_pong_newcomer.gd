@@ -1,0 +1,115 @@
+extends TestSuite
+## A first-time player can rally against the default computer: the scripted clumsy player
+## (pong_clumsy_player.gd: late, shaky, slow, no plan) plays a real match (the computer's
+## weapons on) for [constant PLAY_S] simulated seconds, and must touch the ball often enough
+## and keep rallies going. The figures are printed for the notes.
+##
+## The targets: a newcomer enjoys a game in which the ball keeps coming back. So the clumsy
+## player must touch at least [constant MIN_TOUCHED_SHARE] of the balls that come into its
+## half (it then returns most of them), and within the first two minutes play at least one
+## rally of [constant MIN_LONGEST_RALLY] paddle contacts (both sides counted: it returns the
+## ball three times in a row), the point at which Pong feels like a rally and not a serve
+## and a miss.
+
+## The match's paddle contacts and balls, from its events.
+class Tally:
+	extends RefCounted
+	## The clumsy player's (player 0's) paddle contacts.
+	var own: int = 0
+	## How often the ball came into its half: serves to it, and balls played across.
+	var balls_in: int = 0
+	## The longest rally, paddle contacts of both sides between a serve or a floor bounce and
+	## the next one.
+	var longest: int = 0
+	var rallies: Array[int] = []
+	var _rally: int = 0
+	# A serve to player 0 was counted: the territory event it may raise is the same ball.
+	var _served_in: bool = false
+
+	func count(event: Dictionary) -> void:
+		var who: int = event.get("player", -1)
+		var territory: int = event.get("territory", -1)
+		match str(event.get("type", "")):
+			"paddle":
+				_rally += 1
+				own += 1 if who == 0 else 0
+			"territory":
+				balls_in += 1 if territory == 0 and not _served_in else 0
+				_served_in = false
+			"floor":
+				end_rally()
+
+	func serve(receiver: int) -> void:
+		end_rally()
+		if receiver == 0:
+			balls_in += 1
+			_served_in = true
+
+	func end_rally() -> void:
+		if _rally > 0:
+			rallies.append(_rally)
+		longest = maxi(longest, _rally)
+		_rally = 0
+
+	func mean_rally() -> float:
+		var sum: int = 0
+		for length: int in rallies:
+			sum += length
+		return float(sum) / maxi(rallies.size(), 1)
+
+
+const PongTestScreen := preload("res://tests/pong/pong_test_screen.gd")
+const PongClumsyPlayer := preload("res://tests/pong/pong_clumsy_player.gd")
+const PLAY_S: float = 120.0
+const MIN_TOUCHED_SHARE: float = 0.5
+const MIN_LONGEST_RALLY: int = 6
+
+var _pong: PongScreen = null
+
+
+func after_each() -> void:
+	if _pong != null and is_instance_valid(_pong):
+		_pong.queue_free()
+	_pong = null
+	await wait_process_frames(2)
+
+
+func test_a_clumsy_first_time_player_rallies_against_the_default_computer() -> void:
+	set_timeout(240.0)
+	if not assert_true(Haptics.pong.is_available(), "the extension has the Pong renderer"):
+		return
+	_pong = PongTestScreen.stepped(PongMatch.Mode.VS_COMPUTER, 2, PongRules.DEFAULT_START_HEALTH)
+	var match_node: PongMatch = _pong.get_node(^"Match") as PongMatch
+	match_node.auto_serve = true
+	add_child(_pong)
+	match_node.controllers[0] = PongClumsyPlayer.new(0, match_node.court, match_node.reach, 7)
+	var tally: Tally = Tally.new()
+	match_node.event_seen.connect(tally.count)
+	match_node.served.connect(tally.serve)
+	match_node.run_until(match_node.rules.is_over, PLAY_S)
+	tally.end_rally()
+	var minutes: float = match_node.now / 60.0
+	var touched: float = float(tally.own) / maxi(tally.balls_in, 1)
+	var lost: int = match_node.rules.start_health - match_node.rules.get_health(0)
+	print(
+		(
+			"    clumsy player vs the default computer, %.0f s: touched %d of %d balls into its"
+			+ " half (%.0f %%), %.1f contacts/min, longest rally %d paddle contacts, mean rally"
+			+ " %.1f, health lost %d (%.1f/min), computer's %d"
+		)
+		% [
+			match_node.now,
+			tally.own,
+			tally.balls_in,
+			touched * 100.0,
+			tally.own / maxf(minutes, 1e-6),
+			tally.longest,
+			tally.mean_rally(),
+			lost,
+			lost / maxf(minutes, 1e-6),
+			match_node.rules.start_health - match_node.rules.get_health(1),
+		]
+	)
+	assert_gt(tally.balls_in, 10, "(the test's own check: the ball came to it)")
+	assert_true(touched >= MIN_TOUCHED_SHARE, "it touches at least half the balls it gets")
+	assert_true(tally.longest >= MIN_LONGEST_RALLY, "a rally of %d contacts" % MIN_LONGEST_RALLY)
