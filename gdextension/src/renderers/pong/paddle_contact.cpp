@@ -81,7 +81,7 @@ PaddleContact PaddleContactTracker::update(
 		spin_in_ = p_ball.spin;
 		grip_given_ = Vec3{};
 	}
-	contact.grip_force_n = grip_force(lever, push, p_law, p_dt_s);
+	contact.grip_force_n = grip_force(contact.toward_ball, push, p_law, p_dt_s);
 	contact.ball_force_n = contact.toward_ball * push + contact.grip_force_n;
 
 	contact.spin_rate = p_ball.spin * -p_law.spin_friction_per_s;
@@ -93,12 +93,14 @@ PaddleContact PaddleContactTracker::update(
 	return contact;
 }
 
-Vec3 PaddleContactTracker::grip_force(const Vec3 &p_lever, double p_push_n, const PaddleLaw &p_law, double p_dt_s) {
+Vec3 PaddleContactTracker::grip_force(
+		const Vec3 &p_toward_ball, double p_push_n, const PaddleLaw &p_law, double p_dt_s) {
 	if (p_dt_s <= 0.0 || p_law.ball_mass_kg <= 0.0) {
 		return Vec3{};
 	}
-	// The lever is r minus the penetration long; the surface moves at the full radius.
-	const Vec3 lever = normalized_or_zero(p_lever) * p_law.ball_radius_m;
+	// The ball's surface where it meets the face, a full radius from its centre (even when a
+	// fast ball has crossed the plane within a tick).
+	const Vec3 lever = p_toward_ball * -p_law.ball_radius_m;
 	const Vec3 owed = cross(spin_in_, lever) * -GRIP_ROLLING_SHARE - grip_given_;
 	const double owed_speed = length(owed);
 	const double allowed_speed = p_law.grip_friction * p_push_n * p_dt_s / p_law.ball_mass_kg;

@@ -38,7 +38,7 @@
 //
 // Spin's grip (the paper: later contacts "with walls or paddles" change the ball's velocity
 // by its spin). The spin the ball brings into a contact, w_0 (the tick it starts), slips its
-// surface over the paddle at u = w_0 x r unit(a - p); the paddle's face grips it as the
+// surface over the paddle at u = w_0 x (-r n_s); the paddle's face grips it as the
 // court's surfaces do (ball.h), with surface_friction:
 //   dv_t  -> -(2/7) u                    over the contact (a sphere that stops slipping)
 //   |F_t| <= mu |F_b|                     (Coulomb: no more than friction allows)
@@ -114,8 +114,9 @@ public:
 	int side() const { return side_; } // +1, -1; 0 before the first update.
 
 private:
-	// F_t for this tick (world); moves the grip given so far on.
-	Vec3 grip_force(const Vec3 &p_lever, double p_push_n, const PaddleLaw &p_law, double p_dt_s);
+	// F_t for this tick (world), p_toward_ball the face's normal toward the ball; moves the
+	// grip given so far on.
+	Vec3 grip_force(const Vec3 &p_toward_ball, double p_push_n, const PaddleLaw &p_law, double p_dt_s);
 
 	int side_ = 0;
 	bool touching_ = false;
