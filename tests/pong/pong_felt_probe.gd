@@ -4,17 +4,16 @@ extends RefCounted
 ## [code]total[/code] (device space, newtons) with the servo's whole state. What the
 ## game-action tests read their forces from, tick by tick.
 
-const TICKS_PER_CHUNK: int = 10
-
 ## One state per servo tick since the probe was made, oldest first.
 var states: Array[HapticPongState] = []
 
 var _match: PongMatch = null
+var _ticks_per_chunk: int = 0
 
 
 func _init(match_node: PongMatch) -> void:
 	_match = match_node
-	assert(is_equal_approx(TICKS_PER_CHUNK * HapticsPong.TICK_S, PongMatch.STEP_CHUNK_S))
+	_ticks_per_chunk = roundi(PongMatch.STEP_CHUNK_S / HapticsPong.TICK_S)
 
 
 ## Runs the match for up to [param max_s] simulated seconds; after each update
@@ -22,7 +21,7 @@ func _init(match_node: PongMatch) -> void:
 ## Returns whether it did.
 func run(max_s: float, after_chunk: Callable = Callable()) -> bool:
 	for chunk: int in ceili(max_s / PongMatch.STEP_CHUNK_S - 1e-6):
-		for tick: int in TICKS_PER_CHUNK:
+		for tick: int in _ticks_per_chunk:
 			if not Haptics.pong.step_ticks(1):
 				return false
 			states.append(Haptics.pong.get_state())

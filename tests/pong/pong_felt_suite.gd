@@ -91,24 +91,24 @@ func _step_on_mine(kind: String) -> int:
 		return -1
 	_move_hand(_hand_on_mine)
 	_probe.run(0.3)
-	var mine: PongMines.Mine = null
-	if kind == PongMines.KINDS[0]:
-		var placed: Array[PongMines.Mine] = []
-		_match.mine_placed.connect(placed.append)
-		_press(1, &"p1_place_mine")
-		_probe.run(0.02)
-		if not assert_eq(placed.size(), 1, "the mine key threw a mine"):
-			return -1
-		mine = placed[0]
-	else:
-		var spot: Vector3 = Vector3(0.8, 0.0, 1.2)
-		mine = _match.mines.put(1, PongMines.KINDS.find(kind), spot)
 	var went_off: Array[int] = []
 	_match.mine_exploded.connect(
 		func(_mine: PongMines.Mine, victim: int) -> void:
 			if victim == 0:
 				went_off.append(_probe.mark())
 	)
+	var mine: PongMines.Mine = null
+	if kind == PongMines.KINDS[0]:
+		var placed: Array[PongMines.Mine] = []
+		_match.mine_placed.connect(placed.append)
+		_press(1, &"p1_place_mine")
+		_probe.run(0.01)
+		if not assert_eq(placed.size(), 1, "the mine key threw a mine"):
+			return -1
+		mine = placed[0]
+	else:
+		var spot: Vector3 = Vector3(0.8, 0.0, 1.2)
+		mine = _match.mines.put(1, PongMines.KINDS.find(kind), spot)
 	var walk: Callable = func() -> bool:
 		_walk_toward(mine.position)
 		return not went_off.is_empty()
@@ -139,12 +139,19 @@ func _walk_toward(spot: Vector3) -> void:
 
 # The match serves to the device player, whose hand follows the ball with the mouse to
 # meet it; with [param brush] the hand also swings left and right across the ball
-# ([constant BRUSH_HZ], [constant BRUSH_AMPLITUDE] of the radius). Returns {from, to (the
+# ([constant BRUSH_HZ], [constant BRUSH_AMPLITUDE] of the radius); a [param spin] makes the
+# served ball spin so (as a ball returned with spin comes). Returns {from, to (the
 # contact's first tick and the one after its last), facing (the paddle's normal toward the
 # ball, device space), facing_world}, or empty (and a failure).
-func _meet_serve(brush: bool) -> Dictionary:
+func _meet_serve(brush: bool, spin: Vector3 = Vector3.ZERO) -> Dictionary:
 	_probe.run(0.1)
+	_match.referee.receiver = 0
 	_match.serve()
+	if spin != Vector3.ZERO:
+		# The served ball, spinning as a ball comes back after a spin shot.
+		Haptics.pong.step_ticks(1)
+		var served: HapticPongState = Haptics.pong.get_state()
+		Haptics.pong.set_ball(served.ball_position, served.ball_velocity, spin)
 	var follow: Callable = func() -> bool:
 		var ball: Vector3 = _match.snapshot.ball_position
 		var offset: Vector3 = ball - _match.avatar_of(0)
@@ -183,13 +190,14 @@ func _contact_ticks(player: int) -> Vector2i:
 	return Vector2i(_probe.index_at(start), _probe.index_at(end))
 
 
-# The ball's change across [param ticks] of a contact, in the paddle's plane, against the
+# The ball's change across [param ticks] of a contact with [param player]'s paddle, in the
+# paddle's plane, against the
 # spin's grip the ball brought: -(2/7) (w0 x r n) unless friction holds it lower.
-func _assert_bent_by_spin(ticks: Vector2i) -> void:
+func _assert_bent_by_spin(ticks: Vector2i, player: int) -> void:
 	var before: HapticPongState = _probe.states[ticks.x]
 	var after: HapticPongState = _probe.states[ticks.y]
-	var normal: Vector3 = before.paddle_normals[1]
-	var side: float = signf((before.ball_position - before.paddle_centers[1]).dot(normal))
+	var normal: Vector3 = before.paddle_normals[player]
+	var side: float = signf((before.ball_position - before.paddle_centers[player]).dot(normal))
 	var facing: Vector3 = normal * side
 	var contact_s: float = after.time_s - before.time_s
 	var change: Vector3 = (
@@ -202,7 +210,8 @@ func _assert_bent_by_spin(ticks: Vector2i) -> void:
 	var grip: Vector3 = -slip * 2.0 / 7.0
 	var friction: float = _match.court.number("surface_friction") * change.dot(facing)
 	var expected: float = minf(grip.length(), friction)
-	print("    bent off the computer's paddle: %.3f m/s, the grip %.3f m/s" % [
+	print("    bent off player %d's paddle: %.3f m/s, the grip %.3f m/s" % [
+		player,
 		bent.length(), expected
 	])
 	assert_gt(expected, 0.05, "(the test's own check: the ball brought spin)")

@@ -1,8 +1,10 @@
 extends TestSuite
-## A first-time player can rally against the default computer: the scripted clumsy player
-## (pong_clumsy_player.gd: late, shaky, slow, no plan) plays a real match (the computer's
-## weapons on) for [constant PLAY_S] simulated seconds, and must touch the ball often enough
-## and keep rallies going. The figures are printed for the notes.
+## A first-time player's match: the scripted clumsy player (pong_clumsy_player.gd: late,
+## shaky, slow, no plan) rallies against the default computer in a real match (the
+## computer's weapons on) for [constant PLAY_S] simulated seconds, touching the ball often
+## enough and keeping rallies going (the figures are printed for the notes); the computer
+## keeps its gun and mines away for the first seconds; a thrown mine never lands on a
+## standing player.
 ##
 ## The targets: a newcomer enjoys a game in which the ball keeps coming back. So the clumsy
 ## player must touch at least [constant MIN_TOUCHED_SHARE] of the balls that come into its
@@ -60,6 +62,7 @@ class Tally:
 
 const PongTestScreen := preload("res://tests/pong/pong_test_screen.gd")
 const PongClumsyPlayer := preload("res://tests/pong/pong_clumsy_player.gd")
+const PongTestCourt := preload("res://tests/pong/pong_test_court.gd")
 const PLAY_S: float = 120.0
 const MIN_TOUCHED_SHARE: float = 0.5
 const MIN_LONGEST_RALLY: int = 6
@@ -113,3 +116,48 @@ func test_a_clumsy_first_time_player_rallies_against_the_default_computer() -> v
 	assert_gt(tally.balls_in, 10, "(the test's own check: the ball came to it)")
 	assert_true(touched >= MIN_TOUCHED_SHARE, "it touches at least half the balls it gets")
 	assert_true(tally.longest >= MIN_LONGEST_RALLY, "a rally of %d contacts" % MIN_LONGEST_RALLY)
+
+
+func test_the_computer_keeps_its_weapons_away_at_first() -> void:
+	if not assert_true(Haptics.pong.is_available(), "the extension has the Pong renderer"):
+		return
+	_pong = PongTestScreen.stepped(PongMatch.Mode.VS_COMPUTER, 2, PongRules.DEFAULT_START_HEALTH)
+	var match_node: PongMatch = _pong.get_node(^"Match") as PongMatch
+	match_node.auto_serve = true
+	add_child(_pong)
+	var computer: PongAi = match_node.controllers[1] as PongAi
+	var armed_at: Array[float] = []
+	var watch: Callable = func() -> bool:
+		if armed_at.is_empty() and (computer.intent.gun or match_node.mines.left(1) < 4):
+			armed_at.append(match_node.now)
+		return false
+	match_node.run_until(watch, PongMatch.WEAPONS_GRACE_S + 20.0)
+	if not assert_false(armed_at.is_empty(), "(the test's own check: it arms in the end)"):
+		return
+	print("    the computer first drew its gun or threw a mine at %.1f s" % armed_at[0])
+	assert_true(armed_at[0] >= PongMatch.WEAPONS_GRACE_S, "not in the first seconds")
+
+
+func test_a_thrown_mine_never_lands_on_a_standing_player() -> void:
+	var court: PongCourt = PongTestCourt.make()
+	var mines: PongMines = PongMines.new()
+	# Both at home on the centre line: the mirror of the thrower's spot is the victim's.
+	var thrower: Vector3 = court.clamp_avatar(1, court.toward_back_wall(1, 0.6))
+	var victim: Vector3 = court.clamp_avatar(0, court.toward_back_wall(0, 0.6))
+	var standing: Array[Vector3] = [victim]
+	var landed: Array[PongMines.Mine] = []
+	for throw: int in PongMines.KINDS.size():
+		var mine: PongMines.Mine = mines.place(1, thrower, court, standing)
+		if mine != null:
+			landed.append(mine)
+	assert_gt(landed.size(), 1, "more than one mine lands from the same spot")
+	for mine: PongMines.Mine in landed:
+		var gap: float = Vector2(mine.position.x - victim.x, mine.position.z - victim.z).length()
+		var clear: bool = gap >= PongMines.CLEAR_OF_PLAYERS_M - 1e-3
+		assert_true(clear, "the %s mine lands beside the player, not under" % mine.kind)
+		assert_eq(PongCourt.territory_of(mine.position), 0, "in the victim's half")
+	# Away from everyone the throw's rule is unchanged: the mirror of the thrower's spot.
+	var aside: Vector3 = Vector3(1.0, 0.0, -1.5)
+	var far: PongMines.Mine = PongMines.new().place(1, aside, court, standing)
+	if assert_not_null(far, "a mine away from everyone lands"):
+		assert_almost_eq(far.position, Vector3(1.0, 0.0, 1.5), 1e-6, "at the mirror spot")
