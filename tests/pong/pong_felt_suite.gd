@@ -201,19 +201,19 @@ func _assert_bent_by_spin(ticks: Vector2i, player: int) -> void:
 	var facing: Vector3 = normal * side
 	var contact_s: float = after.time_s - before.time_s
 	var change: Vector3 = (
-		after.ball_velocity
-		- before.ball_velocity
-		- Vector3.DOWN * _match.court.gravity * contact_s
+		after.ball_velocity - before.ball_velocity - Vector3.DOWN * _match.court.gravity * contact_s
 	)
 	var bent: Vector3 = change - facing * change.dot(facing)
 	var slip: Vector3 = before.ball_spin.cross(-facing * _match.court.ball_radius)
 	var grip: Vector3 = -slip * 2.0 / 7.0
 	var friction: float = _match.court.number("surface_friction") * change.dot(facing)
 	var expected: float = minf(grip.length(), friction)
-	print("    bent off player %d's paddle: %.3f m/s, the grip %.3f m/s" % [
-		player,
-		bent.length(), expected
-	])
+	print(
+		(
+			"    bent off player %d's paddle: %.3f m/s, the grip %.3f m/s"
+			% [player, bent.length(), expected]
+		)
+	)
 	assert_gt(expected, 0.05, "(the test's own check: the ball brought spin)")
 	assert_almost_eq(bent.length(), expected, expected * 0.3 + 0.03, "bent by the spin it brought")
 	assert_gt(bent.normalized().dot(grip.normalized()), 0.9, "the way the spin grips")

@@ -93,9 +93,12 @@ func test_a_spin_hit_spins_the_ball_drags_the_hand_and_the_spin_bends_the_next_h
 	var expected: Vector3 = _device(0, spun.ball_spin.cross(lever) * gain)
 	var felt: Vector3 = _probe.force(to - 1)
 	var across: Vector3 = felt - facing * felt.dot(facing)
-	print("    spin drag: %.3f N felt across the paddle, %.3f N expected" % [
-		across.length(), expected.length()
-	])
+	print(
+		(
+			"    spin drag: %.3f N felt across the paddle, %.3f N expected"
+			% [across.length(), expected.length()]
+		)
+	)
 	assert_almost_eq(across.length(), expected.length(), expected.length() * 0.4 + 0.02, "size")
 	assert_gt(across.normalized().dot(expected.normalized()), 0.8, "along the ball's surface")
 	# The next contact with a spin the ball brings (served back with this spin, the spin

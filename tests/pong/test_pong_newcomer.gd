@@ -1,7 +1,8 @@
 extends TestSuite
 ## A first-time player's match: the scripted clumsy player (pong_clumsy_player.gd: late,
-## shaky, slow, no plan) rallies against the default computer in a real match (the
-## computer's weapons on) for [constant PLAY_S] simulated seconds, touching the ball often
+## shaky, slow, no plan) rallies against the default computer in a real match as the setup
+## starts it (the Easy computer, beginner mode, the computer's weapons on) for
+## [constant PLAY_S] simulated seconds, touching the ball often
 ## enough and keeping rallies going (the figures are printed for the notes); the computer
 ## keeps its gun and mines away for the first seconds; a thrown mine never lands on a
 ## standing player.
@@ -12,6 +13,7 @@ extends TestSuite
 ## rally of [constant MIN_LONGEST_RALLY] paddle contacts (both sides counted: it returns the
 ## ball three times in a row), the point at which Pong feels like a rally and not a serve
 ## and a miss.
+
 
 ## The match's paddle contacts and balls, from its events.
 class Tally:
@@ -84,6 +86,7 @@ func test_a_clumsy_first_time_player_rallies_against_the_default_computer() -> v
 	_pong = PongTestScreen.stepped(PongMatch.Mode.VS_COMPUTER, 2, PongRules.DEFAULT_START_HEALTH)
 	var match_node: PongMatch = _pong.get_node(^"Match") as PongMatch
 	match_node.auto_serve = true
+	_pong.beginner = PongSetup.BEGINNER_FIRST
 	add_child(_pong)
 	match_node.controllers[0] = PongClumsyPlayer.new(0, match_node.court, match_node.reach, 7)
 	var tally: Tally = Tally.new()
@@ -96,22 +99,24 @@ func test_a_clumsy_first_time_player_rallies_against_the_default_computer() -> v
 	var lost: int = match_node.rules.start_health - match_node.rules.get_health(0)
 	print(
 		(
-			"    clumsy player vs the default computer, %.0f s: touched %d of %d balls into its"
-			+ " half (%.0f %%), %.1f contacts/min, longest rally %d paddle contacts, mean rally"
-			+ " %.1f, health lost %d (%.1f/min), computer's %d"
+			(
+				"    clumsy player vs the default computer, %.0f s: %d paddle contacts, %d balls"
+				+ " came into its half (%.0f %% touched), %.1f contacts/min, longest rally %d"
+				+ " paddle contacts, mean rally %.1f, health lost %d (%.1f/min), computer's %d"
+			)
+			% [
+				match_node.now,
+				tally.own,
+				tally.balls_in,
+				touched * 100.0,
+				tally.own / maxf(minutes, 1e-6),
+				tally.longest,
+				tally.mean_rally(),
+				lost,
+				lost / maxf(minutes, 1e-6),
+				match_node.rules.start_health - match_node.rules.get_health(1),
+			]
 		)
-		% [
-			match_node.now,
-			tally.own,
-			tally.balls_in,
-			touched * 100.0,
-			tally.own / maxf(minutes, 1e-6),
-			tally.longest,
-			tally.mean_rally(),
-			lost,
-			lost / maxf(minutes, 1e-6),
-			match_node.rules.start_health - match_node.rules.get_health(1),
-		]
 	)
 	assert_gt(tally.balls_in, 10, "(the test's own check: the ball came to it)")
 	assert_true(touched >= MIN_TOUCHED_SHARE, "it touches at least half the balls it gets")
