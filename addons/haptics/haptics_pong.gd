@@ -209,6 +209,22 @@ func step_ticks(ticks: int) -> bool:
 func _effect_refusal(
 	player: int, kind: String, magnitude_n: float, duration_s: float, direction: Vector3, owner: int
 ) -> String:
+	var whose: String = _players_refusal(player, kind, owner)
+	if not whose.is_empty():
+		return whose
+	var directed: bool = kind == "recoil" or kind == "hit"
+	if directed and (direction.is_zero_approx() or not direction.is_finite()):
+		return "a %s needs a direction (got %s)" % [kind, direction]
+	var strength_ok: bool = magnitude_n == DEFAULT_STRENGTH or magnitude_n >= 0.0
+	if not is_finite(magnitude_n) or not strength_ok:
+		return "magnitude_n must be a finite number >= 0 or DEFAULT_STRENGTH (got %s)" % magnitude_n
+	if not is_finite(duration_s) or duration_s <= 0.0:
+		return "duration_s must be a finite number > 0 (got %s)" % duration_s
+	return ""
+
+
+# Why the kind, player or owner of an effect would be refused ("" when they would not).
+func _players_refusal(player: int, kind: String, owner: int) -> String:
 	var count_value: float = get_config().get("players", 2.0)
 	var count: int = roundi(count_value)
 	if not EFFECT_KINDS.has(kind):
@@ -219,16 +235,6 @@ func _effect_refusal(
 		return "owner must be 0..%d on this court (got %d)" % [count - 1, owner]
 	if kind == "remote" and owner == player:
 		return "a remote effect's owner must be another player than %d" % player
-	var directed: bool = kind == "recoil" or kind == "hit"
-	if directed and (direction.is_zero_approx() or not direction.is_finite()):
-		return "a %s needs a direction (got %s)" % [kind, direction]
-	var strength_ok: bool = magnitude_n == DEFAULT_STRENGTH or magnitude_n >= 0.0
-	if not is_finite(magnitude_n) or not strength_ok:
-		return (
-			"magnitude_n must be a finite number >= 0 or DEFAULT_STRENGTH (got %s)" % magnitude_n
-		)
-	if not is_finite(duration_s) or duration_s <= 0.0:
-		return "duration_s must be a finite number > 0 (got %s)" % duration_s
 	return ""
 
 
