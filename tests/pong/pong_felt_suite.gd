@@ -8,6 +8,7 @@ extends TestSuite
 ## absent force fails the assertions.
 
 const PongTestScreen := preload("res://tests/pong/pong_test_screen.gd")
+const PongTestEvents := preload("res://tests/pong/pong_test_events.gd")
 const PongFeltProbe := preload("res://tests/pong/pong_felt_probe.gd")
 ## Below this the hand feels nothing, newtons.
 const QUIET_N: float = 0.02
@@ -252,11 +253,7 @@ func _device_velocity(index: int) -> Vector3:
 
 
 func _saw(type: String, player: int) -> bool:
-	for event: Dictionary in _events:
-		var who: int = event.get("player", -1)
-		if str(event.get("type", "")) == type and who == player:
-			return true
-	return false
+	return PongTestEvents.saw(_events, type, player)
 
 
 func _servo_effect(kind: String) -> Dictionary:
