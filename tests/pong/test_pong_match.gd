@@ -7,6 +7,7 @@ extends TestSuite
 ## timeout.
 
 const PongTestScreen := preload("res://tests/pong/pong_test_screen.gd")
+const PongTestEvents := preload("res://tests/pong/pong_test_events.gd")
 ## Tolerance of an effect's end: one match update either side, and one more for the order
 ## of update and servo ticks.
 const EFFECT_TOLERANCE_S: float = 2.0 * PongMatch.STEP_CHUNK_S + 0.005
@@ -170,11 +171,7 @@ func _stand_aside(match_node: PongMatch) -> void:
 
 
 func _saw(type: String, player: int) -> bool:
-	for event: Dictionary in _events:
-		var who: int = event.get("player", -1)
-		if str(event.get("type", "")) == type and who == player:
-			return true
-	return false
+	return PongTestEvents.saw(_events, type, player)
 
 
 func _ball_in(territory: int) -> bool:
