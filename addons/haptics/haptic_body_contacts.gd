@@ -32,7 +32,8 @@ func _init(p_body: PhysicsBody2D) -> void:
 	shapes = HapticBodyShapes.new(p_body)
 
 
-## The body's contacts this tick, then [param above] (from [method objects_above]).
+## The body's contacts this tick, then those of [param above] (from [method objects_above])
+## it does not touch already.
 func collisions(above: Array[Dictionary]) -> Array[Dictionary]:
 	var out: Array[Dictionary] = []
 	if _body is CharacterBody2D:
@@ -50,7 +51,14 @@ func collisions(above: Array[Dictionary]) -> Array[Dictionary]:
 					state.get_contact_collider_velocity_at_position(i)
 				)
 			)
-	out.append_array(above)
+	# A body resting on top is a contact too; the body's own contacts may already hold it
+	# (a rigid body's do), at another of its shapes or points: once is enough.
+	var touched: Dictionary[int, bool] = {}
+	for contact: Dictionary in out:
+		touched[contact["id"]] = true
+	for resting: Dictionary in above:
+		if not touched.has(resting["id"]):
+			out.append(resting)
 	return out
 
 
@@ -74,7 +82,8 @@ func objects_above() -> Array[Dictionary]:
 			var rid: RID = hit["rid"]
 			if not all_rids.has(rid):
 				all_rids.append(rid)
-			var rigid: RigidBody2D = hit["collider"] as RigidBody2D
+			var collider: Object = hit["collider"]
+			var rigid: RigidBody2D = collider as RigidBody2D
 			if rigid != null:
 				candidates[rid] = rigid
 	for rid: RID in candidates:
@@ -88,7 +97,8 @@ func objects_above() -> Array[Dictionary]:
 				continue
 			var velocity: Vector2 = info["linear_velocity"]
 			var shape: int = info["shape"]
-			out.append(entry(candidates[rid], rid, shape, info["point"], normal, velocity))
+			var point: Vector2 = info["point"]
+			out.append(entry(candidates[rid], rid, shape, point, normal, velocity))
 			break
 	return out
 
@@ -120,7 +130,8 @@ func entry(
 
 func _aim(solid: Dictionary, exclude: Array[RID]) -> void:
 	var local: Transform2D = solid["transform"]
-	_query.shape = solid["shape"]
+	var shape: Shape2D = solid["shape"]
+	_query.shape = shape
 	_query.transform = _body.global_transform * local
 	_query.motion = Vector2.UP * resting_probe_distance
 	_query.collision_mask = _body.collision_mask

@@ -260,7 +260,8 @@ func _shapes_warning() -> String:
 		return ""
 	var used: PackedStringArray = []
 	for entry: Dictionary in solid:
-		var owner_node: Node = entry["owner"] as Node
+		var owner_object: Object = entry["owner"]
+		var owner_node: Node = owner_object as Node
 		var owner_name: String = str(owner_node.name) if owner_node != null else "?"
 		if not used.has(owner_name):
 			used.append(owner_name)

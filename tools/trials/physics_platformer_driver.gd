@@ -129,9 +129,9 @@ func _enter(phase: String) -> void:
 
 func _act(step: Dictionary) -> void:
 	if step.has("press"):
-		Input.action_press(step["press"])
+		_key(step["press"], true)
 	if step.has("release"):
-		Input.action_release(step["release"])
+		_key(step["release"], false)
 	if step.has("hand"):
 		var hand: Vector2 = step["hand"]
 		Haptics.device.set_hand_target(hand)
@@ -139,6 +139,15 @@ func _act(step: Dictionary) -> void:
 		_teleport(step["teleport"])
 	if step.has("board"):
 		_boarding = true
+
+
+# As a key would: an event parsed before the next physics frame (the demo reads
+# is_action_just_pressed in _integrate_forces, which an action_press here would miss).
+func _key(action: String, pressed: bool) -> void:
+	var event: InputEventAction = InputEventAction.new()
+	event.action = action
+	event.pressed = pressed
+	Input.parse_input_event(event)
 
 
 func _teleport(where: Vector2) -> void:

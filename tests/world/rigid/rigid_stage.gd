@@ -115,16 +115,18 @@ func _add_seesaw() -> void:
 	var pillar: StaticBody2D = _add_static(
 		Rect2(SEESAW.x - 8.0, SEESAW.y - 1.0, 16.0, FLOOR_Y - SEESAW.y + 1.0)
 	)
+	pillar.name = "Pillar"
 	plank = RigidBody2D.new()
+	plank.name = "Plank"
 	plank.mass = PLANK_MASS
 	plank.position = SEESAW
 	plank.add_child(_box(PLANK_SIZE))
 	add_child(plank)
 	var pin: PinJoint2D = PinJoint2D.new()
 	pin.position = SEESAW
+	pin.node_a = ^"../Plank"
+	pin.node_b = ^"../Pillar"
 	add_child(pin)
-	pin.node_a = pin.get_path_to(plank)
-	pin.node_b = pin.get_path_to(pillar)
 
 
 # The demo's moving platform: a CharacterBody2D whose position an AnimationPlayer sets.
