@@ -1,4 +1,4 @@
-extends TestSuite
+extends "res://tests/world/device_suite.gd"
 ## The side-scroller's own actions, each from where the player starts it: the hand moves the
 ## simulated device, the game's avatar (scenes/player/player.tscn, its own HapticProbe)
 ## drives into the floor or a wall of the game's room, a game crate lands on it, it dives
@@ -10,9 +10,6 @@ extends TestSuite
 const TEST_ROOM := preload("res://scenes/levels/test_room.tscn")
 const CRATE := preload("res://scenes/props/crate.tscn")
 const WATER := preload("res://scenes/props/water.tscn")
-const DeviceRecorder := preload("res://tests/world/device_recorder.gd")
-## The game's physics rate in tests.
-const FRAME_S := 1.0 / 50.0
 ## The probe scene's material (materials/hard.tres) for the room's walls.
 const WALL_STIFFNESS := 3.0
 const WALL_IMPACT_GAIN := 0.8
@@ -22,40 +19,22 @@ const WALL_X := 1240.0
 ## Below this, newtons, an impact's ring has died away.
 const RING_FLOOR_N := 0.05
 
-var server: HapticsServer = null
 var room: TestRoom = null
 var player: Player = null
 var probe: HapticProbe = null
-var recorder: DeviceRecorder = null
-var impacts: Array[Dictionary] = []
 
 
 func before_each() -> void:
-	server = HapticsServer.new()
-	assert_true(server.open_device("simulated"))
-	assert_true(server.set_config("safety", {"startup_ramp_s": 0.0}))
+	open_server()
 	room = TEST_ROOM.instantiate() as TestRoom
 	player = room.get_node(^"Player") as Player
 	probe = player.get_node(^"HapticProbe") as HapticProbe
-	probe.server = server
-	probe.impact.connect(_on_impact)
-	recorder = DeviceRecorder.new(server)
-	impacts.clear()
+	watch(probe)
 	add_child_autofree(room)
 
 
 func after_each() -> void:
-	server.close_device()
-
-
-func _on_impact(_collider: Object, normal: Vector2, speed: float) -> void:
-	impacts.append({"normal": normal, "speed": speed})
-
-
-func _frames(count: int) -> void:
-	for i: int in count:
-		await get_tree().physics_frame
-		recorder.run(FRAME_S)
+	close_server()
 
 
 func _hand(normalized: Vector2) -> void:
@@ -67,7 +46,7 @@ func _hand(normalized: Vector2) -> void:
 func _drive_into(direction: Vector2, normal: Vector2) -> void:
 	var first: int = recorder.samples.size()
 	_hand(direction)
-	await _frames(120)
+	await run_frames(120)
 	assert_eq(impacts.size(), 1, "one impact (%s)" % [impacts])
 	if impacts.is_empty():
 		return
@@ -101,12 +80,12 @@ func test_hitting_a_wall_knocks_then_holds_the_hand_back() -> void:
 
 func test_a_crate_landing_on_the_avatar_knocks_down_then_weighs() -> void:
 	_hand(Vector2.ZERO)
-	await _frames(5)
+	await run_frames(5)
 	var first: int = recorder.samples.size()
 	var crate: Crate = CRATE.instantiate() as Crate
 	crate.position = player.position + Vector2(0.0, -200.0)
 	room.add_child(crate)
-	await _frames(150)
+	await run_frames(150)
 	assert_eq(impacts.size(), 1, "the crate's landing (%s)" % [impacts])
 	if not impacts.is_empty():
 		var normal: Vector2 = impacts[0]["normal"]
@@ -128,7 +107,7 @@ func test_diving_into_water_drags_and_pulls_down_while_inside() -> void:
 	var first: int = -1
 	var inside_frames: int = 0
 	for frame: int in 300:
-		await _frames(1)
+		await run_frames(1)
 		if player.in_water:
 			inside_frames += 1
 			first = recorder.samples.size() if first < 0 else first
@@ -143,6 +122,6 @@ func test_diving_into_water_drags_and_pulls_down_while_inside() -> void:
 	assert_almost_eq(drag, water.drag_coefficient * speed, 0.15, "drag against the motion, N")
 	assert_almost_eq(recorder.peak("inertia", Vector2.DOWN, first), water.inertia_force, 0.01)
 	assert_gt(recorder.peak("total", Vector2.LEFT, first), 0.5 * drag, "in the total, N")
-	assert_gt(recorder.duration("drag", 0.05, first), inside_frames * FRAME_S * 0.5, "while in")
-	await _frames(5)
+	assert_gt(recorder.duration("drag", 0.05, first), 0.5 * inside_frames / Engine.physics_ticks_per_second, "s")
+	await run_frames(5)
 	assert_almost_eq(recorder.last("drag"), Vector2.ZERO, 1e-4, "none once out")

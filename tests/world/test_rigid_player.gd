@@ -1,4 +1,4 @@
-extends TestSuite
+extends "res://tests/world/device_suite.gd"
 ## A rigid-body player built like Godot's 2d/physics_platformer demo's (its first collision
 ## shape a downward ray, a custom integrator) with its own HapticProbe, on a stage with the
 ## demo's traps (rigid_stage.gd): every landing and wall hit above the threshold is one
@@ -9,7 +9,6 @@ extends TestSuite
 
 const RigidStage := preload("res://tests/world/rigid/rigid_stage.gd")
 const RigidPlayer := preload("res://tests/world/rigid/rigid_player.gd")
-const DeviceRecorder := preload("res://tests/world/device_recorder.gd")
 ## The demo's physics rate.
 const TICKS_PER_SECOND := 120
 ## The probe scene's material (materials/hard.tres): impact gain, N·s/m.
@@ -19,46 +18,28 @@ const RING_FLOOR_N := 0.05
 ## Frames of at least this many without a floor make the next floor contact a landing.
 const AIRBORNE_FRAMES := 10
 
-var server: HapticsServer = null
 var stage: RigidStage = null
 var player: RigidPlayer = null
 var probe: HapticProbe = null
-var recorder: DeviceRecorder = null
-## Each impact the probe reported: speed (m/s) and normal.
-var impacts: Array[Dictionary] = []
 var _ticks_per_second: int = 0
 
 
 func before_each() -> void:
 	_ticks_per_second = Engine.physics_ticks_per_second
 	Engine.physics_ticks_per_second = TICKS_PER_SECOND
-	server = HapticsServer.new()
-	assert_true(server.open_device("simulated"))
-	assert_true(server.set_config("safety", {"startup_ramp_s": 0.0}))
-	stage = RigidStage.new(server)
+	open_server()
+	stage = RigidStage.new()
 	player = stage.player
 	probe = stage.probe
-	probe.impact.connect(_on_impact)
-	recorder = DeviceRecorder.new(server)
-	impacts.clear()
+	watch(probe)
 	add_child_autofree(stage)
-	await _frames(30)
+	await run_frames(30)
 	impacts.clear()
 
 
 func after_each() -> void:
 	Engine.physics_ticks_per_second = _ticks_per_second
-	server.close_device()
-
-
-func _on_impact(_collider: Object, normal: Vector2, speed: float) -> void:
-	impacts.append({"normal": normal, "speed": speed})
-
-
-func _frames(count: int) -> void:
-	for i: int in count:
-		await get_tree().physics_frame
-		recorder.run(1.0 / TICKS_PER_SECOND)
+	close_server()
 
 
 func _metres(px_per_s: float) -> float:
@@ -70,7 +51,7 @@ func _metres(px_per_s: float) -> float:
 func _until_landed(limit: int) -> int:
 	var airborne: int = 0
 	for frame: int in limit:
-		await _frames(1)
+		await run_frames(1)
 		if not player.found_floor:
 			airborne += 1
 		elif airborne >= AIRBORNE_FRAMES:
@@ -82,10 +63,10 @@ func test_every_landing_is_an_impact_at_the_speed_it_fell_with() -> void:
 	var first_sample: int = recorder.samples.size()
 	for jump: int in 3:
 		player.jump = true
-		await _frames(6)
+		await run_frames(6)
 		player.jump = false
 		assert_gt(await _until_landed(240), 0, "landing %d" % jump)
-		await _frames(30)
+		await run_frames(30)
 	assert_eq(player.jumps, 3, "three jumps")
 	assert_eq(impacts.size(), 3, "one impact per landing (%s)" % [impacts])
 	var fall: float = _metres(RigidPlayer.JUMP_VELOCITY)  # 4.1 m/s at the rule's scale
@@ -108,12 +89,12 @@ func test_a_wall_hit_at_full_run_is_one_impact() -> void:
 	player.move = 1.0
 	var hit: bool = false
 	for frame: int in 360:
-		await _frames(1)
+		await run_frames(1)
 		if player.position.x > RigidStage.WALL_X - 20.0 and player.linear_velocity.x < 1.0:
 			hit = true
 			break
 	assert_true(hit, "the player reached the wall")
-	await _frames(60)  # still pushing
+	await run_frames(60)  # still pushing
 	assert_eq(impacts.size(), 1, "one impact (%s)" % [impacts])
 	if impacts.is_empty():
 		return
@@ -134,7 +115,7 @@ func test_an_enemy_standing_on_the_head_is_felt_as_weight() -> void:
 	assert_true(warning.contains("Feet (SeparationRayShape2D)"), "warned: %s" % warning)
 	assert_true(warning.contains("found above Body"), "warned: %s" % warning)
 	var enemy: RigidBody2D = stage.spawn_enemy_above()
-	await _frames(120)
+	await run_frames(120)
 	assert_lt(enemy.position.y, player.position.y, "it stands on the player")
 	var resting: Array[HapticLoad] = probe.last_frame.resting
 	assert_eq(resting.size(), 1, "one load")
@@ -158,7 +139,7 @@ func test_the_seesaw_plank_is_one_surface_and_no_load() -> void:
 	var doubled: int = 0
 	var loaded: int = 0
 	for frame: int in 280:
-		await _frames(1)
+		await run_frames(1)
 		var contacts: Array[HapticContact] = probe.last_frame.contacts
 		loaded += 1 if not probe.last_frame.resting.is_empty() else 0
 		on_plank += 1 if not contacts.is_empty() else 0
@@ -173,14 +154,14 @@ func test_the_seesaw_plank_is_one_surface_and_no_load() -> void:
 
 func test_riding_a_lift_down_is_at_most_one_impact() -> void:
 	stage.place_player(stage.lift_top_feet())
-	await _frames(30)
+	await run_frames(30)
 	impacts.clear()
 	var first_sample: int = recorder.samples.size()
 	stage.start_lift()
 	var lost: int = 0
 	var was_on: bool = true
 	for frame: int in int(RigidStage.LIFT_RIDE_S * TICKS_PER_SECOND):
-		await _frames(1)
+		await run_frames(1)
 		if was_on and not player.found_floor:
 			lost += 1
 		was_on = player.found_floor

@@ -41,8 +41,7 @@ var lift: CharacterBody2D = null
 var _lift_animation: AnimationPlayer = null
 
 
-## [param server]: the test's manually stepped server, set on the probe before it starts.
-func _init(server: Object) -> void:
+func _init() -> void:
 	_add_static(Rect2(-200.0, FLOOR_Y, 2400.0, 200.0))
 	_add_static(Rect2(WALL_X, FLOOR_Y - 200.0, 40.0, 200.0))
 	_add_seesaw()
@@ -50,7 +49,6 @@ func _init(server: Object) -> void:
 	player = PLAYER_SCENE.instantiate() as RigidPlayer
 	player.position = Vector2(START_X, FLOOR_Y - FEET_BELOW)
 	probe = player.get_node(^"HapticProbe") as HapticProbe
-	probe.server = server
 	probe.pixels_per_metre = HapticProbe.pixels_per_metre_for_gravity(RigidPlayer.GRAVITY)
 	add_child(player)
 
