@@ -26,7 +26,7 @@ func _init(p_body: CollisionObject2D) -> void:
 		var local: Transform2D = p_body.shape_owner_get_transform(owner_id)
 		for i: int in p_body.shape_owner_get_shape_count(owner_id):
 			var shape: Shape2D = p_body.shape_owner_get_shape(owner_id, i)
-			var rect: Rect2 = local * shape.get_rect()
+			var rect: Rect2 = local * _extent(shape)
 			bounds = rect if first else bounds.merge(rect)
 			first = false
 			if shape is SeparationRayShape2D or shape is WorldBoundaryShape2D:
@@ -35,3 +35,12 @@ func _init(p_body: CollisionObject2D) -> void:
 				skipped.append("%s (%s)" % [owner_name, shape.get_class()])
 				continue
 			solid.append({"shape": shape, "transform": local, "owner": owner})
+
+
+# Where [param shape] reaches, in its own space: a ray's segment exactly (its own rect is
+# padded), any other shape's rect.
+static func _extent(shape: Shape2D) -> Rect2:
+	var ray: SeparationRayShape2D = shape as SeparationRayShape2D
+	if ray != null:
+		return Rect2(Vector2.ZERO, Vector2(0.0, ray.length))
+	return shape.get_rect()

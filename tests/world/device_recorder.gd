@@ -59,15 +59,15 @@ func peak_across(key: String, direction: Vector2, from: int = 0) -> float:
 ## [param key] reaches [param threshold] newtons; 0 when it never does.
 func duration(key: String, threshold: float, from: int = 0) -> float:
 	var first: float = -1.0
-	var last: float = -1.0
+	var final: float = -1.0
 	for i: int in range(from, samples.size()):
 		var force: Vector2 = samples[i][key]
 		if force.length() >= threshold:
 			var t: float = samples[i]["t"]
 			if first < 0.0:
 				first = t
-			last = t
-	return 0.0 if first < 0.0 else last - first + TICK_S
+			final = t
+	return 0.0 if first < 0.0 else final - first + TICK_S
 
 
 ## Force [param key] on the last tick.

@@ -46,7 +46,7 @@ func _hand(normalized: Vector2) -> void:
 func _drive_into(direction: Vector2, normal: Vector2) -> void:
 	var first: int = recorder.samples.size()
 	_hand(direction)
-	await run_frames(120)
+	await run_frames(200)
 	assert_eq(impacts.size(), 1, "one impact (%s)" % [impacts])
 	if impacts.is_empty():
 		return
