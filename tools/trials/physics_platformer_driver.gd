@@ -42,6 +42,7 @@ var _script: Array[Dictionary] = []
 var _lift: Node2D = null
 var _lift_boarded: int = -1
 var _boarding: bool = false
+var _spawned_at: int = -1
 
 
 func _ready() -> void:
@@ -83,8 +84,7 @@ func _plan() -> void:
 		t += 300
 	_at("enemy", t, {"hand": Vector2(0.3, 0.0)})
 	_at("enemy", t + 40, {"hand": Vector2.ZERO})
-	_at("enemy", t + 100, {"press": "spawn"})
-	_at("enemy", t + 101, {"release": "spawn"})
+	_at("enemy", t + 100, {"spawn": true})
 	t += 460
 	_at("seesaw", t, {"teleport": Vector2(1221.0, 385.0)})
 	t += 300
@@ -103,6 +103,12 @@ func _physics_process(_delta: float) -> void:
 		var step: Dictionary = _script.pop_front()
 		_enter(step["phase"])
 		_act(step)
+	if _spawned_at >= 0 and (_frame - _spawned_at) % 30 == 0 and _frame - _spawned_at <= 120:
+		for node: Node in _player.get_parent().get_children():
+			if node is RigidBody2D and node != _player:
+				var offset: Vector2 = (node as Node2D).position - _player.position
+				if offset.length() < 80.0:
+					print("TRIAL enemy at %s from the player, frame %d" % [offset, _frame])
 	if _boarding:
 		_ride_lift()
 	_frame += 1
@@ -137,6 +143,18 @@ func _act(step: Dictionary) -> void:
 		Haptics.device.set_hand_target(hand)
 	if step.has("teleport"):
 		_teleport(step["teleport"])
+	if step.has("spawn"):
+		# What the demo's "spawn" action calls (deferred from _integrate_forces, where its
+		# is_action_just_pressed misses a scripted press): an enemy 50 px above the player.
+		_player.call(&"_spawn_enemy_above")
+		_spawned_at = _frame
+		# The demo's enemies wake when a VisibleOnScreenEnabler2D sees them on screen, which
+		# never happens headless: the new one is woken by hand.
+		var enemy: Node = _player.get_parent().get_child(-1)
+		for child: Node in enemy.get_children():
+			if child is VisibleOnScreenEnabler2D:
+				child.free()
+		enemy.process_mode = Node.PROCESS_MODE_ALWAYS
 	if step.has("board"):
 		_boarding = true
 
@@ -200,8 +218,8 @@ func _observe() -> void:
 			floor_speed = maxf(floor_speed, speed)
 		elif absf(n.x) > 0.7:
 			side[signf(n.x)] = maxf(side.get(signf(n.x), 0.0), speed)
-		elif n.y > 0.6 and collider is RigidBody2D and (collider as Node).scene_file_path.ends_with("enemy.tscn"):
-			on_head = true
+		elif n.y > 0.6 and collider is RigidBody2D:
+			on_head = true  # the only rigid bodies about are enemies (and bullets, not fired)
 	if floor_n != Vector2.ZERO:
 		if _since_floor >= step_frames and floor_speed >= MIN_IMPACT_M_PER_S:
 			_event(stats, "landings", floor_speed)
