@@ -175,7 +175,8 @@ func test_riding_a_lift_down_is_at_most_one_impact() -> void:
 func test_the_scale_check_gives_the_players_height() -> void:
 	# The ray reaches from 6 px above the origin to 14 below; the body's top is 12 above.
 	var height_px: float = RigidStage.HEAD_ABOVE + RigidStage.FEET_BELOW
-	assert_almost_eq(probe.pixels_per_metre, RigidPlayer.GRAVITY / 9.80665, 1e-3, "the rule")
+	var rule: float = RigidPlayer.GRAVITY / HapticProbe.EARTH_GRAVITY
+	assert_almost_eq(probe.pixels_per_metre, rule, 1e-3, "the rule")
 	assert_almost_eq(probe.body_height_m(), height_px / probe.pixels_per_metre, 0.005)
 	var report: String = probe.scale_report()
 	var height: String = "%.2f m tall" % (height_px / probe.pixels_per_metre)

@@ -54,7 +54,8 @@ func _ready() -> void:
 	var gravity: float = ProjectSettings.get_setting("physics/2d/default_gravity")
 	var probe_script: GDScript = load(PROBE_SCRIPT)
 	_probe = probe_script.new()
-	_ppm = gravity / 9.80665
+	# The addon's rule: the gravity the player falls with over Earth's.
+	_ppm = gravity / float(probe_script.get_script_constant_map()["EARTH_GRAVITY"])
 	_probe.set(&"pixels_per_metre", _ppm)
 	_probe.set(&"default_material", load("res://addons/haptics/materials/hard.tres"))
 	_probe.connect(&"impact", _on_impact)
