@@ -7,6 +7,19 @@ extends TestSuite
 const FED: PackedStringArray = ["test_fed_left", "test_fed_right", "test_fed_up", "test_fed_down"]
 const MOVE_ACTIONS: PackedStringArray = ["move_left", "move_right", "move_up", "move_down"]
 
+
+## Notes the physics frame on which its _physics_process first sees [member action] pressed.
+class PressWatcher:
+	extends Node
+
+	var action: String = ""
+	var first_frame: int = -1
+
+	func _physics_process(_delta: float) -> void:
+		if first_frame < 0 and Input.is_action_pressed(action):
+			first_frame = Engine.get_physics_frames()
+
+
 var _hand_actions: PackedStringArray = []
 var _feed_actions: PackedStringArray = []
 var _follows: bool = true
@@ -90,6 +103,60 @@ func test_the_input_vector_is_fed_into_the_games_actions() -> void:
 	Haptics.control_mode = Haptics.CONTROL_KEYBOARD
 	await _physics_frames(2)
 	assert_eq(Input.get_action_strength(FED[1]), 0.0, "released in keyboard mode")
+
+
+# The device's input once the hand has settled at [param target] (it follows the target
+# through the simulated device's dynamics and the input mapping).
+func _settled_input(target: Vector2) -> float:
+	Haptics.device.set_hand_target(target)
+	var previous: float = INF
+	for i: int in 150:
+		await get_tree().physics_frame
+		var now: float = Haptics.get_input_vector().x
+		if absf(now - previous) < 1e-4:
+			break
+		previous = now
+	await _physics_frames(2)
+	return Haptics.get_input_vector().x
+
+
+func test_a_drift_is_no_press_and_a_deflection_keeps_its_strength() -> void:
+	# A game that reads is_action_pressed (Godot's physics platformer) must not walk at full
+	# speed because the hand drifted a little: the action is pressed past its deadzone, as a
+	# stick's is, with the deflection as its strength.
+	Haptics.hand_follows_input = false
+	Haptics.feed_actions = FED
+	var deadzone: float = InputMap.action_get_deadzone(FED[1])
+	var drift: float = await _settled_input(Vector2(0.1, 0.0))
+	assert_gt(drift, 0.03, "the hand drifted")
+	assert_lt(drift, deadzone, "inside the action's deadzone")
+	assert_false(Input.is_action_pressed(FED[1]), "a drift is no press")
+	assert_eq(Input.get_action_strength(FED[1]), 0.0)
+	var deflection: float = await _settled_input(Vector2(0.6, 0.0))
+	assert_gt(deflection, deadzone, "past the deadzone")
+	assert_true(Input.is_action_pressed(FED[1]), "pressed")
+	assert_almost_eq(Input.get_action_strength(FED[1]), deflection, 0.01, "at its strength")
+	drift = await _settled_input(Vector2(0.1, 0.0))
+	assert_false(Input.is_action_pressed(FED[1]), "released inside the deadzone")
+
+
+func test_fed_actions_arrive_before_the_games_physics_scripts() -> void:
+	# A watcher that runs before the door sees a press one frame after one that runs where
+	# game scripts do (priority 0): the door fed it in between, on the same frame.
+	var early: PressWatcher = PressWatcher.new()
+	early.action = FED[1]
+	early.process_physics_priority = -2000
+	var game: PressWatcher = PressWatcher.new()
+	game.action = FED[1]
+	add_child_autofree(early)
+	add_child_autofree(game)
+	Haptics.hand_follows_input = false
+	Haptics.feed_actions = FED
+	Haptics.device.set_hand_target(Vector2(1.0, 0.0))
+	assert_true(await _wait_for_input(0.95), "the hand is to the right")
+	await _physics_frames(2)
+	assert_gt(game.first_frame, 0, "the game's script saw the press")
+	assert_eq(early.first_frame, game.first_frame + 1, "the same frame it was fed")
 
 
 func test_feeding_the_actions_that_move_the_hand_does_not_hold_them_down() -> void:
