@@ -254,7 +254,7 @@ Vec3 off_resting_paddle(const Vec3 &p_spin, const PongConfig &p_config) {
 
 } // namespace
 
-TEST_CASE("pong contact: a spinning ball bends off a resting paddle as off a wall; a plain one leaves straight") {
+TEST_CASE("pong contact: a spinning ball bends off a resting paddle as off a wall and a plain one leaves straight") {
 	PongConfig config;
 	config.gravity_m_per_s2 = 0.0;
 	config.air_linear_decel_m_per_s2 = 0.0; // The ball arrives with the speed and spin given.
