@@ -235,3 +235,52 @@ TEST_CASE("pong correction: a game-driven paddle's contact is a prediction the c
 	CHECK(length(sim.ball().position - master) < 0.05);
 	CHECK(sim.ball().velocity.z < 0.0); // Not thrown back the way it came.
 }
+
+TEST_CASE("pong correction: a bounce during the glide is where the corrected ball bounces, in its territory") {
+	// The CI case of issue 24's 4-player match at 150 ms: a new master's ball, 2.9 m off the
+	// transfer's state, bounced on the floor while gliding over; its event said territory 2
+	// and the master claimed a hurt there, while the ball everyone followed bounced in 1.
+	PongConfig config;
+	config.players = 4;
+	PongSim corrected;
+	corrected.configure(config);
+	corrected.set_input(idle_input());
+	const Vec3 falling{ 0.0, -3.0, -1.0 };
+	const double low = config.ball_radius_m + 0.03; // The floor within about 10 ms.
+	corrected.apply(set_ball({ 1.6, low, -0.5 }, falling));
+	REQUIRE(territory_of(corrected.ball().position, 4) == 2);
+	const BallState target{ { 0.15, low, -1.75 }, falling, {} };
+	REQUIRE(territory_of(target.position, 4) == 1);
+	PongSim put = corrected;
+	corrected.apply(correct_ball(target));
+	put.apply(set_ball(target.position, target.velocity, target.spin));
+	take_events(corrected);
+	take_events(put);
+
+	std::vector<PongEvent> floors[2];
+	Vec3 glide_at_bounce;
+	for (int k = 0; k < 300 && (floors[0].empty() || floors[1].empty()); ++k) {
+		corrected.step(PONG_DT, nullptr);
+		put.step(PONG_DT, nullptr);
+		int i = 0;
+		for (PongSim *sim : { &corrected, &put }) {
+			for (const PongEvent &event : take_events(*sim)) {
+				if (event.type == PongEventType::FLOOR && floors[i].empty()) {
+					floors[i].push_back(event);
+					if (i == 0) {
+						glide_at_bounce = corrected.ball().position;
+					}
+				}
+			}
+			++i;
+		}
+	}
+	REQUIRE(floors[0].size() == 1);
+	REQUIRE(floors[1].size() == 1);
+	// The glide had not reached the target when the ball met the floor (the test's point).
+	CHECK(territory_of(glide_at_bounce, 4) == 2);
+	CHECK(floors[0][0].territory == 1);
+	CHECK(floors[0][0].territory == floors[1][0].territory);
+	CHECK(length(floors[0][0].position - floors[1][0].position) < 0.01);
+	CHECK(floors[0][0].position.y == doctest::Approx(floors[1][0].position.y).epsilon(1e-9));
+}

@@ -85,6 +85,20 @@ constexpr int territory_of(const Vec3 &p_world, int p_players = PONG_DEFAULT_PLA
 	return p_world.x > 0.0 ? 2 : 3;
 }
 
+// p_offset without its part across p_surface: what moves a point along that surface.
+constexpr Vec3 along_surface(CourtSurface p_surface, const Vec3 &p_offset) {
+	switch (p_surface) {
+		case CourtSurface::LEFT:
+		case CourtSurface::RIGHT:
+			return { 0.0, p_offset.y, p_offset.z };
+		case CourtSurface::BACK_NEAR:
+		case CourtSurface::BACK_FAR:
+			return { p_offset.x, p_offset.y, 0.0 };
+		default: // The ceiling and the floor.
+			return { p_offset.x, 0.0, p_offset.z };
+	}
+}
+
 // The player whose back wall p_surface is in a court of p_players, or -1 (a side wall with
 // 2 players, the ceiling, the floor).
 constexpr int back_wall_owner(CourtSurface p_surface, int p_players = PONG_DEFAULT_PLAYERS) {

@@ -324,8 +324,12 @@ void PongSim::step(double p_dt_s, const HandSample *p_hand) {
 			continue;
 		}
 		++bounces_;
-		emit(floor ? PongEventType::FLOOR : PongEventType::WALL, hit.position, hit.bounce.normal_speed, -1,
-				hit.surface);
+		// While a correction glides in, the bounce belongs to the corrected ball: the one
+		// following the master's trajectory, whose territory a floor hurt is charged to. At
+		// the glide's position a new master's ball claimed a hurt in a territory 2.9 m from
+		// the bounce everyone else saw, and the server refused it as a false claim.
+		const Vec3 at = hit.position + along_surface(hit.surface, correction_.position_left());
+		emit(floor ? PongEventType::FLOOR : PongEventType::WALL, at, hit.bounce.normal_speed, -1, hit.surface);
 	}
 	const Vec3 corrected = ball_.position + correction_.position_left();
 	const int territory = territory_of(corrected, players());
