@@ -49,6 +49,19 @@ def _validation_refusals(report: dict) -> dict:
 
 
 
+def _stream_story(peers: list[Peer], follower: dict, sent: int) -> str:
+    """What each peer did with the ball stream, for a follower that took too few states:
+    pytest's own repr of the peers is cut before the numbers that tell why."""
+    lines = [f"peer {follower['peer']} took {follower['states']} of the {sent} states sent"]
+    for p in peers:
+        r = p.report
+        lines.append(f"{p.name} {r['peer']}: sent {r['sent']} took {r['states']} late {r['late']} "
+                     f"refused {r['refused']} stream {r['extra'].get('ball_stream')} "
+                     f"master {r['master_intervals']} transfers "
+                     f"{[(t['epoch'], t['master'], round(t['wall_s'], 2)) for t in r['transfers']]}")
+    return "\n".join(lines) + "\n" + logs(peers)
+
+
 def _check_consistent(peers: list[Peer], network: Network, min_handoffs: int = 3) -> None:
     reports = [p.report for p in peers]
     errors = [f"{p.name}: {line}" for p in peers for line in engine_errors(p)]
@@ -85,7 +98,7 @@ def _check_consistent(peers: list[Peer], network: Network, min_handoffs: int = 3
     for follower in reports:
         others = [r for r in reports if r is not follower]
         sent = sum(r["sent"] for r in others)
-        assert follower["states"] >= sent * kept, (follower["states"], sent, follower["peer"])
+        assert follower["states"] >= sent * kept, _stream_story(peers, follower, sent)
         others_master_s = sum(b - a for r in others for a, b in r["master_intervals"])
         if hosted_pair and others_master_s > 2.0:
             rate = follower["states"] / others_master_s
