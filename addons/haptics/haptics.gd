@@ -183,11 +183,19 @@ func _process(delta: float) -> void:
 	device.poll_reconnect(delta)
 	if feed_actions.is_empty():
 		_follow_user_input()
+	else:
+		# Also here, after the frame's physics: a RigidBody2D's _integrate_forces runs at the
+		# start of the next physics tick, before any _physics_process (ours included), and
+		# Input.is_action_just_pressed counts a press made during a tick from the next one.
+		_feed()
 
 
 func _physics_process(_delta: float) -> void:
-	if feed_actions.is_empty():
-		return
+	if not feed_actions.is_empty():
+		_feed()
+
+
+func _feed() -> void:
 	_follow_user_input()
 	if control_mode != CONTROL_DEVICE or _server == null:
 		_user_input.release_fed()

@@ -20,6 +20,23 @@ class PressWatcher:
 			first_frame = Engine.get_physics_frames()
 
 
+## Notes the physics frame on which its _integrate_forces first sees [member action]
+## pressed: the physics server calls it before any node's _physics_process.
+class RigidWatcher:
+	extends RigidBody2D
+
+	var action: String = ""
+	var first_frame: int = -1
+
+	func _init() -> void:
+		gravity_scale = 0.0
+		can_sleep = false
+
+	func _integrate_forces(_state: PhysicsDirectBodyState2D) -> void:
+		if first_frame < 0 and Input.is_action_pressed(action):
+			first_frame = Engine.get_physics_frames()
+
+
 var _hand_actions: PackedStringArray = []
 var _feed_actions: PackedStringArray = []
 var _follows: bool = true
@@ -141,8 +158,9 @@ func test_a_drift_is_no_press_and_a_deflection_keeps_its_strength() -> void:
 
 
 func test_fed_actions_arrive_before_the_games_physics_scripts() -> void:
-	# A watcher that runs before the door sees a press one frame after one that runs where
-	# game scripts do (priority 0): the door fed it in between, on the same frame.
+	# The device turns the feed on within a physics tick, before the nodes' physics (at the
+	# tree's physics_frame): a watcher that runs before the door sees the press one frame
+	# after one that runs where game scripts do (priority 0): the door fed it in between.
 	var early: PressWatcher = PressWatcher.new()
 	early.action = FED[1]
 	early.process_physics_priority = -2000
@@ -152,11 +170,39 @@ func test_fed_actions_arrive_before_the_games_physics_scripts() -> void:
 	add_child_autofree(game)
 	Haptics.hand_follows_input = false
 	Haptics.feed_actions = FED
+	Haptics.control_mode = Haptics.CONTROL_KEYBOARD
 	Haptics.device.set_hand_target(Vector2(1.0, 0.0))
 	assert_true(await _wait_for_input(0.95), "the hand is to the right")
+	await get_tree().physics_frame
+	Haptics.control_mode = Haptics.CONTROL_DEVICE
 	await _physics_frames(2)
 	assert_gt(game.first_frame, 0, "the game's script saw the press")
 	assert_eq(early.first_frame, game.first_frame + 1, "the same frame it was fed")
+
+
+func test_a_rigid_body_reading_input_in_integrate_forces_is_not_a_frame_late() -> void:
+	# The device turns the feed on between two frames' physics (in the idle step), as a device
+	# moving on its own does most of the time: a body's _integrate_forces runs first in the
+	# next physics tick, before any _physics_process, and sees it on the same frame as the
+	# game's scripts do.
+	var rigid: RigidWatcher = RigidWatcher.new()
+	rigid.action = FED[1]
+	var game: PressWatcher = PressWatcher.new()
+	game.action = FED[1]
+	add_child_autofree(rigid)
+	add_child_autofree(game)
+	Haptics.hand_follows_input = false
+	Haptics.feed_actions = FED
+	Haptics.control_mode = Haptics.CONTROL_KEYBOARD
+	Haptics.device.set_hand_target(Vector2(1.0, 0.0))
+	assert_true(await _wait_for_input(0.95), "the hand is to the right")
+	await _physics_frames(2)
+	assert_eq(game.first_frame, -1, "nothing is fed while the keyboard drives the player")
+	await get_tree().process_frame
+	Haptics.control_mode = Haptics.CONTROL_DEVICE
+	await _physics_frames(3)
+	assert_gt(game.first_frame, 0, "the game's _physics_process saw the press")
+	assert_eq(rigid.first_frame, game.first_frame, "_integrate_forces saw it on the same frame")
 
 
 func test_feeding_the_actions_that_move_the_hand_does_not_hold_them_down() -> void:
