@@ -21,8 +21,6 @@ const SWING_AMPLITUDE_M: float = 0.04
 const SWING_HZ: float = 1.5
 ## Match seconds at which the owner places its three mines.
 const PLACE_AT_S: Array[float] = [0.5, 1.0, 1.5]
-## Where the two first mines land, across the court from the victim's avatar, metres.
-const ASIDE_M: float = 1.0
 
 
 ## The owner: places its mines at the given spots, then swings its paddle.
@@ -116,10 +114,12 @@ func make_controller(seat: int, match_node: PongMatch) -> PongController:
 	swinging.intent.normal = (PongCourt.forward(seat) + Vector3.UP * 0.4).normalized()
 	# Each mine lands at the mirror image of the owner's avatar (PongMines): stand at the
 	# mirror image of where it should land.
+	# The first two land as far aside as the court lets them (the mine rule clamps them):
+	# the remote one lands beside the victim, PongMines.CLEAR_OF_PLAYERS_M from its feet, and
+	# must stay PongMines.MIN_SPACING_M clear of them (1 m aside left it no free spot).
 	var floor_spot: Vector3 = Vector3(victim_home.x, 0.0, victim_home.z)
-	for target: Vector3 in [
-		floor_spot + Vector3.RIGHT * ASIDE_M, floor_spot + Vector3.LEFT * ASIDE_M, floor_spot
-	]:
+	var aside: Vector3 = Vector3.RIGHT * court.half_width
+	for target: Vector3 in [floor_spot + aside, floor_spot - aside, floor_spot]:
 		var spot: Vector3 = Vector3(target.x, victim_home.y, -target.z)
 		swinging.spots.append(court.clamp_avatar(seat, spot))
 	return swinging
