@@ -38,7 +38,11 @@ func notice(event: InputEvent) -> void:
 ## Presses [member feed_actions] as far as [param input_vector] points their way, as a stick
 ## would: an action is pressed (for [method Input.is_action_pressed]) only past its deadzone
 ## ([method InputMap.action_get_deadzone]), with the deflection itself as its strength.
-func feed(input_vector: Vector2) -> void:
+## Not [param driven] (the device does not drive the player): releases them instead.
+func feed(input_vector: Vector2, driven: bool = true) -> void:
+	if not driven:
+		release_fed()
+		return
 	var i: Vector2 = input_vector
 	var strengths: PackedFloat32Array = [
 		maxf(-i.x, 0.0), maxf(i.x, 0.0), maxf(-i.y, 0.0), maxf(i.y, 0.0)
