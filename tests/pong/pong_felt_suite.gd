@@ -1,4 +1,4 @@
-extends TestSuite
+extends "res://tests/pong/pong_screen_suite.gd"
 ## What the game-action tests of Pong's forces share (test_pong_felt*.gd). Each test
 ## performs a player's action through the game's own code (the input actions handed to the
 ## player's controller, the match's update, its weapons and mines, the servo's contact with
@@ -26,7 +26,6 @@ const BRUSH_HZ: float = 3.0
 const BRUSH_AMPLITUDE: float = 0.3
 const WALK_ACTIONS: Array[StringName] = [&"move_left", &"move_right", &"move_up", &"move_down"]
 
-var _pong: PongScreen = null
 var _match: PongMatch = null
 # Where the device player's hand waits while walking onto a mine (fractions of the radius).
 var _hand_on_mine: Vector2 = Vector2.ZERO
@@ -37,14 +36,11 @@ var _events: Array[Dictionary] = []
 func after_each() -> void:
 	for action: StringName in WALK_ACTIONS:
 		Input.action_release(action)
-	if _pong != null and is_instance_valid(_pong):
-		_pong.queue_free()
-	_pong = null
 	_match = null
 	_hand_on_mine = Vector2.ZERO
 	_probe = null
 	_events.clear()
-	await wait_process_frames(2)
+	await _free_pong()
 
 
 # --- The actions ----------------------------------------------------------------------

@@ -1,4 +1,4 @@
-extends TestSuite
+extends "res://tests/pong/pong_screen_suite.gd"
 ## A first-time player's match: the scripted clumsy player (pong_clumsy_player.gd: late,
 ## shaky, slow, no plan) rallies against the default computer in a real match as the setup
 ## starts it (the Easy computer, beginner mode, the computer's weapons on) for
@@ -68,15 +68,6 @@ const PongTestCourt := preload("res://tests/pong/pong_test_court.gd")
 const PLAY_S: float = 120.0
 const MIN_TOUCHED_SHARE: float = 0.5
 const MIN_LONGEST_RALLY: int = 6
-
-var _pong: PongScreen = null
-
-
-func after_each() -> void:
-	if _pong != null and is_instance_valid(_pong):
-		_pong.queue_free()
-	_pong = null
-	await wait_process_frames(2)
 
 
 func test_a_clumsy_first_time_player_rallies_against_the_default_computer() -> void:

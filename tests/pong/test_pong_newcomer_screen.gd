@@ -1,4 +1,4 @@
-extends TestSuite
+extends "res://tests/pong/pong_screen_suite.gd"
 ## What a newcomer sees and hears of Pong: the options come before the buttons that start a
 ## game, with the computer's difficulty (Easy by default) reaching the match; the status
 ## line names mines in words (never "none"); a ball resting against the near wall shows
@@ -8,15 +8,6 @@ extends TestSuite
 
 const PongTestScreen := preload("res://tests/pong/pong_test_screen.gd")
 const PONG_SCENE: PackedScene = preload("res://scenes/pong/ui/pong.tscn")
-
-var _pong: PongScreen = null
-
-
-func after_each() -> void:
-	if _pong != null and is_instance_valid(_pong):
-		_pong.queue_free()
-	_pong = null
-	await wait_process_frames(2)
 
 
 func test_the_options_come_before_the_start_buttons() -> void:
