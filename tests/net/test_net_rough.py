@@ -23,7 +23,13 @@ from net_harness import (logs, ROUGH, Peer, check_health, detection_s, engine_er
 USED_SHARE_MIN = 0.9
 TICK_MOVE_MAX_M = 0.05
 NOTICE_BOUND_S = 3.0
-# At 60 Hz or more over a 24 s match a follower is sent well over a thousand states: a few
+# How long the measured match runs, s. The share a follower uses is set by the play as
+# much as by the path: each change of course the follower's predictor does not foresee (a
+# strike, a bounce with spin) gives up the gaps before it, and the states still on their
+# way then arrive late. A 24 s match measured 89.9-97.8 % over a dozen runs (37 gaps given
+# up in the lowest); twice as long halves the variance around the same share.
+MATCH_S = 48
+# At 60 Hz or more over that match a follower is sent well over a thousand states: a few
 # hundred that reached it is a match that ran.
 REACHED_MIN = 300
 
@@ -31,7 +37,7 @@ REACHED_MIN = 300
 
 def test_a_match_on_the_rough_network_uses_the_states_that_arrive_and_never_jumps_the_ball():
     with workspace() as work:
-        peers, relay = run_match(work, 2, ROUGH, 24)
+        peers, relay = run_match(work, 2, ROUGH, MATCH_S)
         for peer in peers:
             assert peer.report.get("exit_code") == 0, logs(peers)
             assert not engine_errors(peer), engine_errors(peer)[:10]
