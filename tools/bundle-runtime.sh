@@ -78,6 +78,7 @@ fi
 # extension beside /proc/self/exe, which is the loader when the loader starts the game.
 cp -L "$loader" "$runtime/$name.loader"
 cp tools/dist/launcher.sh "$dir/$name"
+cp tools/dist/fonts.conf "$runtime/fonts.conf"
 chmod 755 "$dir/$name" "$runtime/$name.loader"
 
 # Licences: the Debian package each shipped file comes from, and its copyright file.
@@ -126,5 +127,6 @@ for entry in "runtime/$name.loader=$loader_real" \
 done
 # The game's own licence, next to those of what it ships.
 cp LICENSE "$dir/licenses/LICENSE"
+stand_ins="${!linked_driver[*]}"
 echo "bundle-runtime: $(ls "$runtime/lib" | wc -l) libraries, stand-ins for the system's" \
-  "${!linked_driver[*]:-(none)}, $(du -sh "$dir" | cut -f1) in $dir"
+  "${stand_ins:-(none)}, $(du -sh "$dir" | cut -f1) in $dir"

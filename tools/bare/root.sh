@@ -24,7 +24,7 @@ command -v debootstrap >/dev/null || { echo "root: debootstrap is missing (make 
 [[ $(id -u) -eq 0 ]] || { echo "root: debootstrap needs root" >&2; exit 1; }
 [[ -r $keyring ]] || { echo "root: missing $keyring (make deps)" >&2; exit 1; }
 cache=$PWD/.bare/cache/$suite
-mkdir -p "$cache"
+mkdir -p "$cache" "$dir"
 rm -rf "$root.partial"
 started=$SECONDS
 debootstrap --variant=minbase --keyring="$keyring" --cache-dir="$cache" \

@@ -59,7 +59,7 @@ run_as_player() {
   pid=""
 }
 # Engine and script errors in $log.
-errors() { grep -cE "^(ERROR|SCRIPT ERROR|USER ERROR)" "$log" || true; }
+errors() { grep -cE "^(ERROR|SCRIPT ERROR|USER ERROR)|[Ee]rror:" "$log" || true; }
 
 # Copies the builds into the root, owned by 'player'.
 install_builds() {
