@@ -17,7 +17,7 @@ oldest_glibc_minor=34
 windowed=yes
 for arg in "$@"; do
 	case $arg in
-	--headless) windowed=no ;;
+	--headless | --version | --help | -h) windowed=no ;;
 	--) break ;;
 	esac
 done
