@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(build-essential cmake ninja-build pkg-config libhidapi-dev libusb-1.0-0-dev
   doctest-dev clang-format python3 python3-venv debian-archive-keyring ca-certificates
   rt-tests xvfb openbox patchelf qemu-system-x86 busybox-static kmod libdbus-1-dev rtkit dbus
-  polkitd util-linux)
+  polkitd util-linux debootstrap)
 
 if ! command -v dpkg-query >/dev/null || ! command -v apt-get >/dev/null; then
   echo "install-deps: no apt here; install yourself: a C++20 compiler, CMake 3.22+, Ninja," \
