@@ -178,7 +178,9 @@ def run_match(workdir: Path, peers: int, network: Network, seconds: float,
             for peer in started[1:]:
                 peer.wait_for_log("Connected")
             on_running(started, relay)
-        codes = [peer.wait() for peer in started[1:]] + [host.wait()]
+        # Each peer quits after its match's seconds: patience counts from its start.
+        patience = seconds + EXIT_PATIENCE_S
+        codes = [peer.wait(patience) for peer in started[1:]] + [host.wait(patience)]
         for peer, code in zip(started[1:] + [host], codes):
             peer.report["exit_code"] = code
     finally:
