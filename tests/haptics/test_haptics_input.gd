@@ -67,6 +67,19 @@ func _physics_frames(count: int) -> void:
 		await get_tree().physics_frame
 
 
+## Adds [param watchers] (each watching [code]FED[1][/code]) and holds the hand to the
+## right with the feed set up but the keyboard driving the player: nothing is fed yet.
+func _hold_right_unfed(watchers: Array[Node]) -> void:
+	for watcher: Node in watchers:
+		watcher.set(&"action", FED[1])
+		add_child_autofree(watcher)
+	Haptics.hand_follows_input = false
+	Haptics.feed_actions = FED
+	Haptics.control_mode = Haptics.CONTROL_KEYBOARD
+	Haptics.device.set_hand_target(Vector2(1.0, 0.0))
+	assert_true(await _wait_for_input(0.95), "the hand is to the right")
+
+
 func _wait_for_input(at_least: float) -> bool:
 	for i: int in 100:
 		await get_tree().physics_frame
@@ -162,17 +175,9 @@ func test_fed_actions_arrive_before_the_games_physics_scripts() -> void:
 	# tree's physics_frame): a watcher that runs before the door sees the press one frame
 	# after one that runs where game scripts do (priority 0): the door fed it in between.
 	var early: PressWatcher = PressWatcher.new()
-	early.action = FED[1]
 	early.process_physics_priority = -2000
 	var game: PressWatcher = PressWatcher.new()
-	game.action = FED[1]
-	add_child_autofree(early)
-	add_child_autofree(game)
-	Haptics.hand_follows_input = false
-	Haptics.feed_actions = FED
-	Haptics.control_mode = Haptics.CONTROL_KEYBOARD
-	Haptics.device.set_hand_target(Vector2(1.0, 0.0))
-	assert_true(await _wait_for_input(0.95), "the hand is to the right")
+	await _hold_right_unfed([early, game])
 	await get_tree().physics_frame
 	Haptics.control_mode = Haptics.CONTROL_DEVICE
 	await _physics_frames(2)
@@ -186,16 +191,8 @@ func test_a_rigid_body_reading_input_in_integrate_forces_is_not_a_frame_late() -
 	# next physics tick, before any _physics_process, and sees it on the same frame as the
 	# game's scripts do.
 	var rigid: RigidWatcher = RigidWatcher.new()
-	rigid.action = FED[1]
 	var game: PressWatcher = PressWatcher.new()
-	game.action = FED[1]
-	add_child_autofree(rigid)
-	add_child_autofree(game)
-	Haptics.hand_follows_input = false
-	Haptics.feed_actions = FED
-	Haptics.control_mode = Haptics.CONTROL_KEYBOARD
-	Haptics.device.set_hand_target(Vector2(1.0, 0.0))
-	assert_true(await _wait_for_input(0.95), "the hand is to the right")
+	await _hold_right_unfed([rigid, game])
 	await _physics_frames(2)
 	assert_eq(game.first_frame, -1, "nothing is fed while the keyboard drives the player")
 	await get_tree().process_frame

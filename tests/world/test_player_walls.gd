@@ -1,25 +1,13 @@
-extends TestSuite
+extends "res://tests/foundation/room_suite.gd"
 ## The sub against walls (acceleration control, a floating body): blocked by a wall it keeps
 ## no velocity into it, so input turned away leaves the wall within two physics ticks (it
 ## used to keep its full speed into the wall and take about seven ticks to come off); along
 ## a floor it slides at the top speed; a crate it drives into is still shoved.
 
-const TEST_ROOM := preload("res://scenes/levels/test_room.tscn")
 const CRATE := preload("res://scenes/props/crate.tscn")
 ## The test room's right wall (its outline's centre line), and its floor.
 const WALL_X: float = 1240.0
 const FLOOR_Y: float = 680.0
-
-var _room: TestRoom = null
-var _player: Player = null
-
-
-func before_each() -> void:
-	_room = add_child_autofree(TEST_ROOM.instantiate()) as TestRoom
-	_player = _room.get_node(^"Player") as Player
-	_player.use_keyboard = false
-	# The test steers the body itself, not through the haptic device.
-	(_player.get_node(^"HapticProbe") as HapticProbe).drive_input = false
 
 
 func test_pressed_into_a_wall_the_sub_keeps_no_velocity_into_it() -> void:
