@@ -6,13 +6,6 @@
 
 namespace haptics {
 
-namespace {
-
-// A solid sphere's share of its slip that friction takes out before it rolls (ball.cpp).
-constexpr double GRIP_ROLLING_SHARE = 2.0 / 7.0;
-
-} // namespace
-
 double damping_ratio_for_restitution(double p_restitution) {
 	if (p_restitution <= 0.0) {
 		return 1.0;
@@ -101,7 +94,7 @@ Vec3 PaddleContactTracker::grip_force(
 	// The ball's surface where it meets the face, a full radius from its centre (even when a
 	// fast ball has crossed the plane within a tick).
 	const Vec3 lever = p_toward_ball * -p_law.ball_radius_m;
-	const Vec3 owed = cross(spin_in_, lever) * -GRIP_ROLLING_SHARE - grip_given_;
+	const Vec3 owed = cross(spin_in_, lever) * -ROLLING_SHARE - grip_given_;
 	const double owed_speed = length(owed);
 	const double allowed_speed = p_law.grip_friction * p_push_n * p_dt_s / p_law.ball_mass_kg;
 	const Vec3 step = owed_speed <= allowed_speed ? owed : owed * (allowed_speed / owed_speed);
