@@ -4,10 +4,21 @@
 #   apt_private_init STATE SUITE   a sources list for SUITE of the system's Debian mirror
 #                                  (deb.debian.org when it names none); fails without the
 #                                  archive keyring
+#   apt_mirror                     prints that mirror
 #   apt_opts CACHE                 sets the array opts: the options that make apt use STATE
 #                                  and CACHE
 apt_state=""
 keyring=/usr/share/keyrings/debian-archive-keyring.gpg
+
+# The same Debian mirror the system uses where it names one (active lines only).
+apt_mirror() {
+  local mirror
+  mirror=$(cat /etc/apt/sources.list /etc/apt/sources.list.d/*.list \
+    /etc/apt/sources.list.d/*.sources 2>/dev/null |
+    sed -nE 's,^(deb[[:space:]]+(\[[^]]*\][[:space:]]+)?|URIs:[[:space:]]+)(https?://[^[:space:]]+/debian)/?([[:space:]].*)?$,\3,p' |
+    head -n 1 || true)
+  echo "${mirror:-http://deb.debian.org/debian}"
+}
 
 apt_private_init() {
   apt_state=$1
@@ -16,12 +27,7 @@ apt_private_init() {
     echo "missing $keyring: install the 'debian-archive-keyring' package" >&2
     return 1
   }
-  # The same Debian mirror the system uses where it names one (active lines only).
-  mirror=$(cat /etc/apt/sources.list /etc/apt/sources.list.d/*.list \
-    /etc/apt/sources.list.d/*.sources 2>/dev/null |
-    sed -nE 's,^(deb[[:space:]]+(\[[^]]*\][[:space:]]+)?|URIs:[[:space:]]+)(https?://[^[:space:]]+/debian)/?([[:space:]].*)?$,\3,p' |
-    head -n 1 || true)
-  mirror=${mirror:-http://deb.debian.org/debian}
+  mirror=$(apt_mirror)
   mkdir -p "$apt_state/lists/partial" "$apt_state/etc"
   [[ -f $apt_state/status ]] || : >"$apt_state/status"
   echo "deb [signed-by=$keyring] $mirror $suite main" >"$apt_state/etc/sources.list"

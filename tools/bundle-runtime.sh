@@ -4,7 +4,10 @@
 # library they need (DIR/runtime/lib/), and DIR/NAME (tools/dist/launcher.sh) starts the game
 # through that loader with that library path only. The GPU driver (libGL, libEGL,
 # libGLX, libgbm, Vulkan and what Mesa or a vendor driver loads) is left to the system:
-# it must match the kernel driver and the hardware of the machine it runs on.
+# it must match the kernel driver and the hardware of the machine it runs on. Those of them
+# the engine links at load time (libgbm, linked by SDL) are also shipped in DIR/runtime/
+# lib-fallback/, which the launcher adds only on a system that lacks them (a server, a
+# container): without them the game could not start even headless.
 # Licences of what is shipped go to DIR/licenses/ (one folder per Debian package, and
 # MANIFEST.txt: library, package, version).
 #
@@ -45,7 +48,7 @@ mv "$dir/$name.x86_64" "$dir/$name.pck" "${extensions[@]}" "$runtime/"
 # Of the libraries Godot and SDL open at run time, libudev (joypad hot-plug) is already
 # in the closure through hidapi; X11, Wayland, ALSA, PulseAudio, fontconfig and libdecor
 # are linked directly by Debian's build.
-declare -A found=()
+declare -A found=() linked_driver=()
 for elf in "$runtime/$name.x86_64" "$runtime"/libhaptics.*.so; do
   listing=$("$loader" ${libpath:+--library-path "$libpath"} --list "$elf") ||
     die "cannot list the libraries of $elf"
@@ -56,15 +59,26 @@ for elf in "$runtime/$name.x86_64" "$runtime"/libhaptics.*.so; do
   while read -r soname arrow path _; do
     [[ $arrow == "=>" && $path == /* ]] || continue
     [[ $soname == ld-linux-* || $soname == /* ]] && continue
-    [[ $soname =~ $gpu_driver ]] && continue
-    found[$soname]=$path
+    if [[ $soname =~ $gpu_driver ]]; then linked_driver[$soname]=$path; else found[$soname]=$path; fi
   done <<<"$listing"
 done
 for soname in "${!found[@]}"; do cp -L "${found[$soname]}" "$runtime/lib/$soname"; done
+if ((${#linked_driver[@]} > 0)); then
+  mkdir "$runtime/lib-fallback"
+  for soname in "${!linked_driver[@]}"; do
+    cp -L "${linked_driver[$soname]}" "$runtime/lib-fallback/$soname"
+    # What the stand-in needs must be shipped already: it may not bring a library of its own.
+    for needed in $(readelf -d "$runtime/lib-fallback/$soname" | sed -nE 's/.*\(NEEDED\).*\[(.*)\]/\1/p'); do
+      [[ -e $runtime/lib/$needed || $needed == ld-linux-x86-64.so.2 ]] ||
+        die "the stand-in $soname needs $needed, which the bundle does not ship"
+    done
+  done
+fi
 # The loader is named after the game: Godot finds its pack ("<executable>.pck") and the
 # extension beside /proc/self/exe, which is the loader when the loader starts the game.
 cp -L "$loader" "$runtime/$name.loader"
 cp tools/dist/launcher.sh "$dir/$name"
+cp tools/dist/fonts.conf "$runtime/fonts.conf"
 chmod 755 "$dir/$name" "$runtime/$name.loader"
 
 # Licences: the Debian package each shipped file comes from, and its copyright file.
@@ -98,7 +112,8 @@ loader_real=$(realpath "$loader")
 [[ -n $root ]] && template_src=$root/usr/bin/godot-template-$flavour || template_src=""
 for entry in "runtime/$name.loader=$loader_real" \
   ${template_src:+"runtime/$name.x86_64=$template_src"} \
-  $(for s in "${!found[@]}"; do echo "runtime/lib/$s=$(realpath "${found[$s]}")"; done | sort); do
+  $(for s in "${!found[@]}"; do echo "runtime/lib/$s=$(realpath "${found[$s]}")"; done | sort) \
+  $(for s in "${!linked_driver[@]}"; do echo "runtime/lib-fallback/$s=$(realpath "${linked_driver[$s]}")"; done | sort); do
   shipped=${entry%%=*}
   real=${entry#*=}
   pkg=$(package_of "$real")
@@ -112,4 +127,6 @@ for entry in "runtime/$name.loader=$loader_real" \
 done
 # The game's own licence, next to those of what it ships.
 cp LICENSE "$dir/licenses/LICENSE"
-echo "bundle-runtime: $(ls "$runtime/lib" | wc -l) libraries, $(du -sh "$dir" | cut -f1) in $dir"
+stand_ins="${!linked_driver[*]}"
+echo "bundle-runtime: $(ls "$runtime/lib" | wc -l) libraries, stand-ins for the system's" \
+  "${stand_ins:-(none)}, $(du -sh "$dir" | cut -f1) in $dir"

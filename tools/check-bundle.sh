@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # Static checks of a self-contained Linux build (tools/bundle-runtime.sh), without running it:
 #  - every library any shipped ELF file needs is shipped, except the GPU driver's interface
-#    (tools/dist/gpu-driver-sonames.regex: libgbm, which Debian's SDL links), and no file carries a DT_RPATH (searched before the
+#    (tools/dist/gpu-driver-sonames.regex: libgbm, which Debian's SDL links; its stand-in in
+#    runtime/lib-fallback is used only without the system's), and no file carries a DT_RPATH (searched before the
 #    loader's --library-path; a DT_RUNPATH is searched after it and so cannot leave the bundle);
 #  - the C library symbol versions the shipped files require, against the shipped C library
 #    and against Debian 12 (glibc 2.36) and Ubuntu 22.04 (2.35), and the kernel it needs;
-#  - the libgbm functions the bundle calls exist in this system's libgbm.
+#  - the libgbm functions the bundle calls exist in this system's libgbm and in the stand-in.
 #
 #   tools/check-bundle.sh DIR      (exit 1 on the first failed check)
 set -euo pipefail
@@ -18,7 +19,9 @@ fail() { echo "check-bundle: FAIL: $*" >&2; exit 1; }
 
 # The GPU driver's interface, which the bundle leaves to the system.
 gpu_driver=$(<"$(dirname "$0")/dist/gpu-driver-sonames.regex")
+fallback=$runtime/lib-fallback
 elves=("$runtime/haptic-game.x86_64" "$runtime"/libhaptics.*.so "$lib"/*)
+[[ -d $fallback ]] && elves+=("$fallback"/*)
 needs_glibc=()
 for elf in "${elves[@]}"; do
   dynamic=$(readelf -d "$elf")
@@ -48,13 +51,14 @@ echo "check-bundle: ${#elves[@]} ELF files, every needed library shipped, no RPA
 
 # libgbm comes from the system's Mesa: the functions the bundle calls must be there.
 # (awk reads to the end: an early exit would kill ldconfig with SIGPIPE, failing the pipe.)
+wanted=$(for elf in "${elves[@]}"; do nm -D --undefined-only "$elf" 2>/dev/null; done |
+  awk '$2 ~ /^gbm_/ {print $2}' | sort -u)
+[[ -z $wanted || -f $fallback/libgbm.so.1 ]] ||
+  fail "the bundle calls libgbm but ships no stand-in for a system without it (runtime/lib-fallback)"
 system_gbm=$(/sbin/ldconfig -p | awk '$1 == "libgbm.so.1" && /x86-64/ && !seen++ {print $NF}')
-if [[ -n $system_gbm ]]; then
-  wanted=$(for elf in "${elves[@]}"; do nm -D --undefined-only "$elf" 2>/dev/null; done |
-    awk '$2 ~ /^gbm_/ {print $2}' | sort -u)
-  missing=$(comm -23 <(echo "$wanted") <(nm -D --defined-only "$system_gbm" | awk '{print $3}' | sort -u))
-  [[ -z $missing ]] || fail "this system's libgbm ($system_gbm) lacks: $missing"
-  echo "check-bundle: the $(wc -w <<<"$wanted") libgbm functions the bundle calls are all in $system_gbm"
-else
-  echo "check-bundle: no libgbm.so.1 on this system; its functions were not checked"
-fi
+for gbm in ${system_gbm:+"$system_gbm"} ${wanted:+"$fallback/libgbm.so.1"}; do
+  missing=$(comm -23 <(echo "$wanted") <(nm -D --defined-only "$gbm" | awk '{print $3}' | sort -u))
+  [[ -z $missing ]] || fail "$gbm lacks: $missing"
+  echo "check-bundle: the $(wc -w <<<"$wanted") libgbm functions the bundle calls are all in $gbm"
+done
+[[ -n $system_gbm ]] || echo "check-bundle: no libgbm.so.1 on this system; the stand-in's were checked"

@@ -28,8 +28,9 @@ while IFS=$'\t' read -r shipped package _; do
   [[ $shipped == \#* ]] && continue
   [[ -f $game/$shipped && -s $game/licenses/$package/copyright ]] || fail "no licence for $shipped"
 done <"$game/licenses/MANIFEST.txt"
-for lib in "$game"/runtime/lib/*; do
-  grep -q "^runtime/lib/$(basename "$lib")	" "$game/licenses/MANIFEST.txt" ||
+for lib in "$game"/runtime/lib/* "$game"/runtime/lib-fallback/*; do
+  [[ -e $lib ]] || continue
+  grep -q "^${lib#"$game/"}	" "$game/licenses/MANIFEST.txt" ||
     fail "$(basename "$lib") is not in licenses/MANIFEST.txt"
 done
 readme=$game/README.md

@@ -26,6 +26,11 @@ var paddle_centers: PackedVector3Array = PackedVector3Array(
 var paddle_normals: PackedVector3Array = PackedVector3Array(
 	[Vector3.FORWARD, Vector3.BACK, Vector3.LEFT, Vector3.RIGHT]
 )
+## The paddles' centre velocities, world m/s (the device paddle's: its avatar's plus the
+## stylus's times the workspace scale).
+var paddle_velocities: PackedVector3Array = PackedVector3Array(
+	[Vector3.ZERO, Vector3.ZERO, Vector3.ZERO, Vector3.ZERO]
+)
 var in_contact: Array[bool] = [false, false, false, false]
 ## Hand force components (device space, N): contact, spin, effects, total.
 var hand_force: Dictionary[String, Vector3] = {}
@@ -60,6 +65,7 @@ static func from_dictionary(state: Dictionary) -> HapticPongState:
 		var entry: Dictionary = paddles[i]
 		out.paddle_centers[i] = entry.get("paddle_center", Vector3.ZERO)
 		out.paddle_normals[i] = entry.get("normal", Vector3.FORWARD)
+		out.paddle_velocities[i] = entry.get("paddle_velocity", Vector3.ZERO)
 		out.in_contact[i] = entry.get("in_contact", false)
 	var forces: Dictionary = state.get("hand_force", {})
 	for component: String in forces:

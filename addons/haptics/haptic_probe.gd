@@ -5,30 +5,43 @@ extends Node
 ## [RigidBody2D] and the body's contacts are felt.
 ##
 ## At every physics tick it gathers the body's contacts, one per touched shape or tile
-## (normals and each one's [HapticMaterial]), dynamic bodies resting on it (mass and
-## normal), the water volume it is in, its velocity, and the speed of new contacts; converts
-## pixels to metres; and submits the frame and impact events to the haptics server. With
-## [member drive_input] it also feeds the device's input vector to the body's
-## [code]input_vector[/code] property before the body moves (acceleration control).
+## (normals and each one's [HapticMaterial]), dynamic bodies resting on top of the body's own
+## shapes (mass and normal), the water volume it is in, its velocity, and the speed of new
+## touches; converts pixels to metres; and submits the frame and impact events to the
+## haptics server. With [member drive_input] it also feeds the device's input vector to the
+## body's [code]input_vector[/code] property before the body moves (acceleration control).
+## [br][br]
+## Impact speeds are taken from the velocity before the collision: a character's at the start
+## of the tick, a rigid body's as it entered the physics step that found the contact (Godot
+## has already resolved the collision when its velocity is read next), relative to the
+## collider's own velocity at the contact (a moving platform).
 ##
 ## Water volumes are [Area2D]s with [code]drag_coefficient[/code] and
 ## [code]inertia_force[/code] properties, such as the addon's [HapticWater].
 
 ## Emitted after each frame is submitted, with the frame as sent.
 signal frame_submitted(frame: HapticFrame)
-## Emitted when a new contact begins, with the approach speed in metres per second.
+## Emitted when a new touch begins, with the approach speed in metres per second.
 signal impact(collider: Object, normal: Vector2, speed: float)
 
 ## Earth's gravity, m/s², for [method pixels_per_metre_for_gravity].
 const EARTH_GRAVITY := 9.80665
+## Contact normals of one collider closer than this (cosine) are one face: two floor tiles
+## side by side, two contact points of one plank, are one floor.
+const SAME_FACE_COS := 0.999
 # The door's script, by its path next to this one rather than by the autoload's name: the
 # editor parses this script as soon as the addon's folder appears, before enabling the plugin
 # has registered the autoload (naming it then failed to parse, and the node could not be
 # created until the editor was restarted).
 const HapticsDoor := preload("haptics.gd")
+const HapticBodyContacts := preload("haptic_body_contacts.gd")
+const HapticBodyShapes := preload("haptic_body_shapes.gd")
 
-## World scale: how many pixels make one metre.
-@export_range(1.0, 10000.0, 1.0, "suffix:px/m") var pixels_per_metre: float = 100.0
+## World scale: how many pixels make one metre. The rule: the gravity your body falls with
+## (px/s²) divided by 9.81 ([method pixels_per_metre_for_gravity]), so that a fall lasting a
+## second hits as fast as one on Earth. At start the probe prints the height this gives the
+## body ([member report_scale]).
+@export_range(1.0, 10000.0, 0.1, "suffix:px/m") var pixels_per_metre: float = 100.0
 ## Material for bodies that declare none; [code]null[/code] uses the server's default.
 @export var default_material: HapticMaterial = null
 ## Feed the device's input vector to the body's [code]input_vector[/code] property when
@@ -42,6 +55,11 @@ const HapticsDoor := preload("haptics.gd")
 @export_range(0.0, 10.0, 0.01, "suffix:kg") var own_weight_kg: float = 0.0
 ## Impacts slower than this are not played, in metres per second.
 @export_range(0.0, 10.0, 0.01, "suffix:m/s") var min_impact_speed: float = 0.2
+## A shape lost for less than this and touched again is the same touch, not a new impact: a
+## rigid body riding a moving platform loses and regains it every few frames.
+@export_range(0.0, 1.0, 0.01, "suffix:s") var touch_release_s: float = 0.1
+## Print at start the height [member pixels_per_metre] gives the body (debug builds).
+@export var report_scale: bool = true
 
 ## A [code]HapticsServer[/code] of your own (a test steps one manually) to talk to instead
 ## of the [code]Haptics[/code] autoload's; set it before the probe enters the tree.
@@ -50,20 +68,21 @@ var server: Object = null
 var last_frame: HapticFrame = HapticFrame.new()
 ## Frames submitted so far.
 var frames_submitted: int = 0
+## The warning given at start about the body's shapes (a ray skipped, no solid shape);
+## empty when there was none.
+var shape_warning: String = ""
 
 var _door: HapticsDoor = null
 var _body: PhysicsBody2D = null
+var _contacts: HapticBodyContacts = null
 var _sequence: int = 0
 var _velocity_before: Vector2 = Vector2.ZERO
-var _touching: Dictionary[String, bool] = {}
+# The shapes touched (keys as HapticBodyContacts names them), each with the physics frame it
+# was last touched on; kept for touch_release_s after the last touch.
+var _touching: Dictionary[String, int] = {}
 var _query: PhysicsPointQueryParameters2D = PhysicsPointQueryParameters2D.new()
-var _shape_query: PhysicsShapeQueryParameters2D = PhysicsShapeQueryParameters2D.new()
-var _shape: CollisionShape2D = null
 var _max_contacts: int = 0
 var _max_resting: int = 0
-var _floor_entry: Dictionary = {}
-# The walls and ceilings (every slide contact but the floor) of the last frame.
-var _sides: Array[Dictionary] = []
 
 
 func _ready() -> void:
@@ -90,16 +109,12 @@ func _ready() -> void:
 		var rigid: RigidBody2D = _body
 		rigid.contact_monitor = true
 		rigid.max_contacts_reported = maxi(rigid.max_contacts_reported, 8)
-	for child: Node in _body.get_children():
-		if child is CollisionShape2D and _shape == null:
-			_shape = child
-	if _shape == null:
-		push_warning(
-			(
-				"HapticProbe: no CollisionShape2D on %s; objects resting on it are not felt."
-				% _body.name
-			)
-		)
+	_contacts = HapticBodyContacts.new(_body)
+	shape_warning = _shapes_warning()
+	if not shape_warning.is_empty():
+		push_warning(shape_warning)
+	if report_scale and OS.is_debug_build():
+		print(scale_report())
 	_query.collide_with_areas = true
 	_query.collide_with_bodies = false
 	get_tree().physics_frame.connect(_before_bodies_move)
@@ -110,10 +125,11 @@ func _exit_tree() -> void:
 		get_tree().physics_frame.disconnect(_before_bodies_move)
 
 
-# Runs before any node's _physics_process: the body reads this tick's input vector, and the
-# velocity it arrives with is what new contacts are hit at.
+# Runs before any node's _physics_process: the body reads this tick's input vector, and a
+# character's velocity as it arrives is what new contacts are hit at.
 func _before_bodies_move() -> void:
-	_velocity_before = _body_velocity()
+	if _body is CharacterBody2D:
+		_velocity_before = (_body as CharacterBody2D).velocity
 	if not drive_input or server == null or not (&"input_vector" in _body):
 		return
 	# An unplugged device hands the player back to the keyboard until it returns.
@@ -131,7 +147,7 @@ func _physics_process(_delta: float) -> void:
 
 
 ## Gathers this tick's frame and sends it to the server (what the probe does every physics
-## tick), pushing impacts for contacts that began.
+## tick), pushing impacts for touches that began.
 func submit() -> void:
 	var frame: HapticFrame = build_frame()
 	if server != null:
@@ -141,36 +157,39 @@ func submit() -> void:
 	frame_submitted.emit(frame)
 
 
-## Gathers this tick's haptic frame, and pushes impacts for contacts that began this tick.
+## Gathers this tick's haptic frame, and pushes impacts for touches that began this tick.
 func build_frame() -> HapticFrame:
-	var above: Array[Dictionary] = _objects_above()
+	_contacts.resting_probe_distance = resting_probe_distance
+	var above: Array[Dictionary] = _contacts.objects_above()
 	var frame: HapticFrame = HapticFrame.new()
 	var contacts: Array[HapticContact] = frame.contacts
-	var now_touching: Dictionary[String, bool] = {}
-	# Faces already sent, by collider and normal: two floor tiles side by side are one
-	# floor (each its own contact would count the floor's friction twice).
-	var faces: Dictionary[String, bool] = {}
+	var now: int = Engine.get_physics_frames()
+	var seen: Dictionary[String, bool] = {}
+	# Faces already sent (collider id and normal): each its own contact would count one
+	# floor's friction twice.
+	var faces: Array[Dictionary] = []
 	var floor_normal: Vector2 = Vector2.ZERO
-	for collision: Dictionary in _collisions(above):
+	for collision: Dictionary in _contacts.collisions(above):
 		var key: String = collision["key"]
 		var normal: Vector2 = collision["normal"]
-		var face: String = "%d:%.2f,%.2f" % [collision["id"], normal.x, normal.y]
-		if now_touching.has(key) or contacts.size() >= _max_contacts:
+		if seen.has(key) or contacts.size() >= _max_contacts:
 			continue
-		now_touching[key] = true
+		seen[key] = true
 		var material: HapticMaterial = _material_of(collision)
-		if not faces.has(face):
-			faces[face] = true
+		if _new_face(faces, collision):
 			contacts.append(HapticContact.new(normal, material))
 		if normal.dot(Vector2.UP) > floor_normal.dot(Vector2.UP):
 			floor_normal = normal
 		if not _touching.has(key):
-			var collider: Object = collision["collider"]
-			_report_impact(collider, normal, material)
-	_touching = now_touching
+			_report_impact(collision, material)
+		_touching[key] = now
+	_release_touches(now)
 	_sequence += 1
 	var resting: Array[HapticLoad] = frame.resting
-	resting.assign(_resting_objects(above))
+	for entry: Dictionary in above:
+		var rigid: RigidBody2D = entry["collider"]
+		if resting.size() < _max_resting:
+			resting.append(HapticLoad.new(entry["normal"], rigid.mass))
 	if own_weight_kg > 0.0 and floor_normal.dot(Vector2.UP) > 0.5 and resting.size() < _max_resting:
 		# The avatar's own weight, felt like an object resting on the hand: pressed along
 		# the floor's normal into the floor.
@@ -183,6 +202,10 @@ func build_frame() -> HapticFrame:
 	frame.velocity_m_per_s = _body_velocity() / pixels_per_metre
 	frame.sequence = _sequence
 	frame.time_s = Time.get_ticks_msec() / 1000.0
+	if _body is RigidBody2D:
+		# What the physics step after this tick's scripts starts from: a contact it finds
+		# is reported next tick, hit at this velocity.
+		_velocity_before = PhysicsServer2D.body_get_direct_state(_body.get_rid()).linear_velocity
 	return frame
 
 
@@ -193,141 +216,85 @@ static func pixels_per_metre_for_gravity(gravity_px_per_s2: float) -> float:
 	return gravity_px_per_s2 / EARTH_GRAVITY
 
 
-# Each entry: collider, normal (from the surface toward the body), the world point of
-# contact, and a key naming the touched shape (a tile on a TileMapLayer): contacts are one
-# per shape, not per collider, as a tile map's floor and walls are one collider.
-func _collisions(above: Array[Dictionary]) -> Array[Dictionary]:
-	var out: Array[Dictionary] = []
-	if _body is CharacterBody2D:
-		var character: CharacterBody2D = _body
-		var sides: Array[Dictionary] = []
-		var reported: Dictionary[String, bool] = {}
-		for i: int in character.get_slide_collision_count():
-			var entry: Dictionary = _slide_entry(character.get_slide_collision(i))
-			var floor_normal: Vector2 = character.get_floor_normal()
-			var normal: Vector2 = entry["normal"]
-			if character.is_on_floor() and normal.is_equal_approx(floor_normal):
-				_floor_entry = entry
-			else:
-				sides.append(entry)
-			reported[entry["key"]] = true
-			out.append(entry)
-		# Pressed into a wall, move_and_slide often reports only the wall although the body
-		# still stands: the floor it last reported stays a contact while it does.
-		if not character.is_on_floor():
-			_floor_entry = {}
-		elif not _floor_entry.is_empty() and is_instance_valid(_floor_entry["collider"]):
-			out.append(_floor_entry)
-		# A body whose speed into a wall builds up from 0 again after each hit (move_toward)
-		# moves too little on some frames to reach it: move_and_slide reports no wall although
-		# the body stays against it. A wall or ceiling of the last frame stays a contact while
-		# the body still touches the same shape.
-		for entry: Dictionary in _sides:
-			if reported.has(entry["key"]):
-				continue
-			var kept: Dictionary = _still_touching(character, entry)
-			if not kept.is_empty():
-				reported[kept["key"]] = true
-				sides.append(kept)
-				out.append(kept)
-		_sides = sides
-	elif _body is RigidBody2D:
-		var state: PhysicsDirectBodyState2D = PhysicsServer2D.body_get_direct_state(_body.get_rid())
-		for i: int in state.get_contact_count():
-			out.append(
-				_entry(
-					state.get_contact_collider_object(i),
-					state.get_contact_collider(i),
-					state.get_contact_collider_shape(i),
-					state.get_contact_collider_position(i),
-					state.get_contact_local_normal(i)
-				)
-			)
-	for entry: Dictionary in above:
-		var rigid: RigidBody2D = entry["collider"]
-		var normal: Vector2 = entry["normal"]
-		out.append(_entry(rigid, rigid.get_rid(), -1, rigid.global_position, normal))
-	return out
+## The body's height at [member pixels_per_metre], in metres: the span of its collision
+## shapes (rays included), 0 before the probe is ready or without shapes.
+func body_height_m() -> float:
+	if _contacts == null:
+		return 0.0
+	return _contacts.shapes.bounds.size.y / pixels_per_metre
 
 
-func _slide_entry(collision: KinematicCollision2D) -> Dictionary:
-	return _entry(
-		collision.get_collider(),
-		collision.get_collider_rid(),
-		collision.get_collider_shape_index(),
-		collision.get_position(),
-		collision.get_normal()
+## The scale check printed at start: the body's height at [member pixels_per_metre], and
+## the scale the rule gives for the project's gravity. Too tall or too short a body for what
+## it stands for does not mean the scale is wrong (many games draw a world out of scale);
+## a scale far from the rule's makes impacts harder or softer than the falls look.
+func scale_report() -> String:
+	var gravity: float = ProjectSettings.get_setting("physics/2d/default_gravity", 980.0)
+	var height_px: float = 0.0 if _contacts == null else _contacts.shapes.bounds.size.y
+	return (
+		(
+			"HapticProbe: at %.1f px/m %s is %.2f m tall (%.0f px); the rule, gravity / 9.81, "
+			+ "gives %.1f px/m for the project's gravity of %.0f px/s²."
+		)
+		% [
+			pixels_per_metre,
+			str(_body.name) if _body != null else "the body",
+			height_px / pixels_per_metre,
+			height_px,
+			pixels_per_metre_for_gravity(gravity),
+			gravity,
+		]
 	)
 
 
-# The contact [param entry] again when the body, moved by its safe margin toward it, touches
-# the same shape (or tile); empty once it has moved away.
-func _still_touching(character: CharacterBody2D, entry: Dictionary) -> Dictionary:
-	if not is_instance_valid(entry["collider"]):
-		return {}
-	var normal: Vector2 = entry["normal"]
-	var collision: KinematicCollision2D = KinematicCollision2D.new()
-	var margin: float = character.safe_margin
-	if not character.test_move(character.global_transform, -normal * margin, collision, margin):
-		return {}
-	var touched: Dictionary = _slide_entry(collision)
-	return touched if touched["key"] == entry["key"] else {}
+func _shapes_warning() -> String:
+	var shapes: HapticBodyShapes = _contacts.shapes
+	var solid: Array[Dictionary] = shapes.solid
+	var skipped: PackedStringArray = shapes.skipped
+	if solid.is_empty():
+		return (
+			"HapticProbe: no solid collision shape on %s (%s); objects resting on it are not felt."
+			% [_body.name, "only " + ", ".join(skipped) if not skipped.is_empty() else "none"]
+		)
+	if skipped.is_empty():
+		return ""
+	var used: PackedStringArray = []
+	for entry: Dictionary in solid:
+		var owner_object: Object = entry["owner"]
+		var owner_node: Node = owner_object as Node
+		var owner_name: String = str(owner_node.name) if owner_node != null else "?"
+		if not used.has(owner_name):
+			used.append(owner_name)
+	return (
+		(
+			"HapticProbe: %s's %s is not the body's outline (it reaches into what the body "
+			+ "stands on); objects resting on it are found above %s instead."
+		)
+		% [_body.name, ", ".join(skipped), ", ".join(used)]
+	)
 
 
-func _entry(collider: Object, rid: RID, shape: int, point: Vector2, normal: Vector2) -> Dictionary:
-	var id: int = collider.get_instance_id() if collider != null else 0
-	var entry: Dictionary = {"collider": collider, "normal": normal, "id": id}
-	var tiles: TileMapLayer = collider as TileMapLayer
-	if tiles != null:
-		# Half a pixel behind the surface lies the touched tile, whichever physics quadrant
-		# (body) holds its shape.
-		var cell: Vector2i = tiles.local_to_map(tiles.to_local(point - normal * 0.5))
-		entry["cell"] = cell
-		entry["key"] = "%d:%d,%d" % [id, cell.x, cell.y]
-	else:
-		entry["key"] = "%d:%d:%d" % [id, rid.get_id(), shape]
-	return entry
+# Whether [param collision] is a face not yet in [param faces] (then added): one collider's
+# contacts with the same normal are one face, compared as numbers (a printed -0.00 and 0.00
+# are the same normal).
+func _new_face(faces: Array[Dictionary], collision: Dictionary) -> bool:
+	var id: int = collision["id"]
+	var normal: Vector2 = collision["normal"]
+	for face: Dictionary in faces:
+		var face_normal: Vector2 = face["normal"]
+		if face["id"] == id and face_normal.dot(normal) > SAME_FACE_COS:
+			return false
+	faces.append({"id": id, "normal": normal})
+	return true
 
 
-# Rigid bodies touching the top of the body: the body's shape swept a little upward finds
-# them, then each one is asked alone (all others excluded) for its surface normal, which
-# points from it toward the body. Each entry: collider, normal.
-func _objects_above() -> Array[Dictionary]:
-	var out: Array[Dictionary] = []
-	if _shape == null:
-		return out
-	_shape_query.shape = _shape.shape
-	_shape_query.transform = _shape.global_transform
-	_shape_query.motion = Vector2.UP * resting_probe_distance
-	_shape_query.collision_mask = _body.collision_mask
-	_shape_query.exclude = [_body.get_rid()]
-	var space: PhysicsDirectSpaceState2D = _body.get_world_2d().direct_space_state
-	var hits: Array[Dictionary] = space.intersect_shape(_shape_query, 8)
-	var all_rids: Array[RID] = [_body.get_rid()]
-	for hit: Dictionary in hits:
-		all_rids.append(hit["rid"])
-	for hit: Dictionary in hits:
-		var collider: Object = hit["collider"]
-		var rigid: RigidBody2D = collider as RigidBody2D
-		if rigid == null:
-			continue
-		var others: Array[RID] = all_rids.duplicate()
-		others.erase(hit["rid"])
-		_shape_query.exclude = others
-		var info: Dictionary = space.get_rest_info(_shape_query)
-		var normal: Vector2 = info.get("normal", Vector2.ZERO)
-		if not normal.is_zero_approx():
-			out.append({"collider": rigid, "normal": normal})
-	return out
-
-
-func _resting_objects(above: Array[Dictionary]) -> Array[HapticLoad]:
-	var out: Array[HapticLoad] = []
-	for entry: Dictionary in above:
-		var rigid: RigidBody2D = entry["collider"]
-		if out.size() < _max_resting:
-			out.append(HapticLoad.new(entry["normal"], rigid.mass))
-	return out
+# Forgets the shapes not touched for longer than touch_release_s: touching them again is a
+# new impact.
+func _release_touches(now: int) -> void:
+	var hold_frames: int = ceili(touch_release_s * Engine.physics_ticks_per_second)
+	for key: String in _touching.keys():
+		if now - _touching[key] > hold_frames:
+			_touching.erase(key)
 
 
 # The water volume the body is in, or null.
@@ -342,13 +309,13 @@ func _water_area() -> Object:
 	return null
 
 
-func _report_impact(collider: Object, normal: Vector2, material: HapticMaterial) -> void:
-	var other_velocity: Vector2 = Vector2.ZERO
-	if collider is RigidBody2D:
-		other_velocity = (collider as RigidBody2D).linear_velocity
+func _report_impact(collision: Dictionary, material: HapticMaterial) -> void:
+	var normal: Vector2 = collision["normal"]
+	var other_velocity: Vector2 = collision["velocity"]
 	var speed: float = (other_velocity - _velocity_before).dot(normal) / pixels_per_metre
 	if speed < min_impact_speed:
 		return
+	var collider: Object = collision["collider"]
 	impact.emit(collider, normal, speed)
 	if server != null:
 		server.call(&"push_impact", HapticImpact.new(normal, speed, material).to_dictionary())

@@ -181,18 +181,19 @@ func _input(event: InputEvent) -> void:
 
 func _process(delta: float) -> void:
 	device.poll_reconnect(delta)
-	if feed_actions.is_empty():
-		_follow_user_input()
+	# Fed after the frame's physics too: a RigidBody2D's _integrate_forces runs first in the
+	# next tick, and Input.is_action_just_pressed counts a press made within a tick later.
+	_follow_user_input_and_feed()
 
 
 func _physics_process(_delta: float) -> void:
-	if feed_actions.is_empty():
-		return
+	_follow_user_input_and_feed()
+
+
+func _follow_user_input_and_feed() -> void:
 	_follow_user_input()
-	if control_mode != CONTROL_DEVICE or _server == null:
-		_user_input.release_fed()
-	else:
-		_user_input.feed(get_input_vector())
+	if not feed_actions.is_empty():
+		_user_input.feed(get_input_vector(), control_mode == CONTROL_DEVICE and _server != null)
 
 
 ## Lists the project settings this door reads in the Project Settings dialog, with their

@@ -5,7 +5,8 @@ extends RefCounted
 ## [member feed_actions]) and decides when each part runs (control mode, whether the hand
 ## follows the user).
 
-## Fed strengths below this release the action (a centred device presses nothing).
+## Fed strengths up to this release the action even where the action's deadzone is smaller
+## (a centred device presses nothing).
 const FEED_THRESHOLD := 0.05
 
 ## The actions (left, right, up, down) that move the simulated hand; empty: none. An
@@ -34,8 +35,14 @@ func notice(event: InputEvent) -> void:
 		_mouse_seen = true
 
 
-## Presses [member feed_actions] as far as [param input_vector] points their way.
-func feed(input_vector: Vector2) -> void:
+## Presses [member feed_actions] as far as [param input_vector] points their way, as a stick
+## would: an action is pressed (for [method Input.is_action_pressed]) only past its deadzone
+## ([method InputMap.action_get_deadzone]), with the deflection itself as its strength.
+## Not [param driven] (the device does not drive the player): releases them instead.
+func feed(input_vector: Vector2, driven: bool = true) -> void:
+	if not driven:
+		release_fed()
+		return
 	var i: Vector2 = input_vector
 	var strengths: PackedFloat32Array = [
 		maxf(-i.x, 0.0), maxf(i.x, 0.0), maxf(-i.y, 0.0), maxf(i.y, 0.0)
@@ -44,7 +51,10 @@ func feed(input_vector: Vector2) -> void:
 		var action: String = feed_actions[k]
 		if not InputMap.has_action(action):
 			continue
-		if strengths[k] >= FEED_THRESHOLD:
+		# Input.action_press marks the action pressed at any strength: a 0.05 drift of the
+		# hand would be a full key press to a game reading is_action_pressed.
+		var deadzone: float = maxf(FEED_THRESHOLD, InputMap.action_get_deadzone(action))
+		if strengths[k] > deadzone:
 			Input.action_press(action, strengths[k])
 			_fed[action] = true
 		elif _fed.has(action):

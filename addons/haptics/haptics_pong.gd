@@ -16,6 +16,12 @@ const EFFECT_KINDS: Array[String] = ["recoil", "hit", "slow", "heavy", "remote",
 const RUMBLE_FREQUENCY_HZ: float = 180.0
 ## Servo period of [method step_ticks], seconds (the 1 kHz tick).
 const TICK_S: float = 0.001
+## [method apply_effect]'s strength meaning "the servo's own for the kind" (slow: no cap on
+## its viscous force; the others: their [code]pong.*_force_n[/code]).
+const DEFAULT_STRENGTH: float = -1.0
+## [method apply_effect]'s default owner: the player across the court
+## ([method opponent_across]).
+const OWNER_ACROSS: int = -1
 
 var _server: Object = null
 var _servo: HapticsServo = null
@@ -99,30 +105,47 @@ func correct_ball(position: Vector3, velocity: Vector3, spin: Vector3 = Vector3.
 
 
 ## Starts an effect on [param player]'s hand (it acts only on the device player's):
-## [param kind] one of [constant EFFECT_KINDS]; [param direction] (world unit) for recoil
-## and hit; [param owner] the mine's owner for remote.
+## [param kind] one of [constant EFFECT_KINDS]; [param magnitude_n] its strength (a cap
+## for slow and remote) or [constant DEFAULT_STRENGTH]; [param direction] (world, any length
+## but zero) for recoil and hit; [param owner] the player whose stylus a remote mine pulls
+## toward, by default ([constant OWNER_ACROSS]) the player across the court. A command the
+## servo would refuse (an unknown kind or player, an owner that is no other player, a
+## recoil or hit without a direction, a negative or non-finite strength or a duration not
+## above zero) is refused here with an error naming it, and nothing is sent.
 func apply_effect(
 	player: int,
 	kind: String,
 	magnitude_n: float,
 	duration_s: float,
 	direction: Vector3 = Vector3.ZERO,
-	owner: int = -1
+	owner: int = OWNER_ACROSS
 ) -> bool:
-	if not EFFECT_KINDS.has(kind):
-		push_error("Haptics.pong.apply_effect: unknown kind '%s'." % kind)
+	if not is_available():
 		return false
-	return _command(
-		{
-			"type": "effect",
-			"player": player,
-			"kind": kind,
-			"direction": direction,
-			"magnitude_n": magnitude_n,
-			"duration_s": duration_s,
-			"owner": owner,
-		}
+	var resolved: int = opponent_across(player) if owner == OWNER_ACROSS else owner
+	var refusal: String = _effect_refusal(
+		player, kind, magnitude_n, duration_s, direction, resolved
 	)
+	if not refusal.is_empty():
+		push_error("Haptics.pong.apply_effect: %s; nothing was sent." % refusal)
+		return false
+	var command: Dictionary = {
+		"type": "effect",
+		"player": player,
+		"kind": kind,
+		"direction": direction,
+		"duration_s": duration_s,
+		"owner": resolved,
+	}
+	if magnitude_n != DEFAULT_STRENGTH:
+		command["magnitude_n"] = magnitude_n
+	return _command(command)
+
+
+## The player across the court from [param player] (0 and 1, 2 and 3): the servo's own
+## default owner of an effect.
+static func opponent_across(player: int) -> int:
+	return player ^ 1
 
 
 ## Ends every effect at once.
@@ -179,6 +202,40 @@ func step_ticks(ticks: int) -> bool:
 		if not _server.call(&"step", TICK_S):
 			return false
 	return true
+
+
+# Why the servo would refuse this effect ("" when it would not): the checks it makes that
+# do not depend on its limits (those stay its own).
+func _effect_refusal(
+	player: int, kind: String, magnitude_n: float, duration_s: float, direction: Vector3, owner: int
+) -> String:
+	var whose: String = _players_refusal(player, kind, owner)
+	if not whose.is_empty():
+		return whose
+	var directed: bool = kind == "recoil" or kind == "hit"
+	if directed and (direction.is_zero_approx() or not direction.is_finite()):
+		return "a %s needs a direction (got %s)" % [kind, direction]
+	var strength_ok: bool = magnitude_n == DEFAULT_STRENGTH or magnitude_n >= 0.0
+	if not is_finite(magnitude_n) or not strength_ok:
+		return "magnitude_n must be a finite number >= 0 or DEFAULT_STRENGTH (got %s)" % magnitude_n
+	if not is_finite(duration_s) or duration_s <= 0.0:
+		return "duration_s must be a finite number > 0 (got %s)" % duration_s
+	return ""
+
+
+# Why the kind, player or owner of an effect would be refused ("" when they would not).
+func _players_refusal(player: int, kind: String, owner: int) -> String:
+	var count_value: float = get_config().get("players", 2.0)
+	var count: int = roundi(count_value)
+	if not EFFECT_KINDS.has(kind):
+		return "unknown kind '%s' (one of %s)" % [kind, ", ".join(PackedStringArray(EFFECT_KINDS))]
+	if player < 0 or player >= count:
+		return "player must be 0..%d on this court (got %d)" % [count - 1, player]
+	if owner < 0 or owner >= count:
+		return "owner must be 0..%d on this court (got %d)" % [count - 1, owner]
+	if kind == "remote" and owner == player:
+		return "a remote effect's owner must be another player than %d" % player
+	return ""
 
 
 func _command(command: Dictionary) -> bool:

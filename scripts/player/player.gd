@@ -9,9 +9,10 @@ extends CharacterBody2D
 ## device, an autopilot, a test).
 ## [br][br]
 ## The sub holds up what lands on it (it feels the weight, and sags very slowly under it),
-## pushes crates it drives into, and is slowed by water ([method enter_water]). The hull
-## pitches toward its motion and faces where it goes; its propeller spins with the thrust
-## and bubbles stream from it under water. The collision shape stays a circle, so contact
+## pushes crates it drives into, and is slowed by water ([method enter_water]). Blocked by a
+## wall it keeps no velocity into it, so input turned away moves it off at once.
+## The hull pitches toward its motion and faces where it goes; its propeller spins with the
+## thrust and bubbles stream from it under water. The collision shape stays a circle, so contact
 ## normals never depend on the pose.
 
 ## Emitted on the physics tick when a slide collision begins against a new body.
@@ -21,6 +22,9 @@ signal bumped(collider: Object, normal: Vector2, speed: float)
 const MAX_PITCH: float = 0.8
 ## Radius of the collision circle, in pixels.
 const RADIUS: float = 18.0
+## Passes over the slide contacts that drop the velocity into walls: two settle a corner
+## of two walls.
+const CONTACT_PASSES: int = 2
 
 ## Acceleration at full input deflection, in pixels per second squared.
 @export var acceleration: float = 2400.0
@@ -116,6 +120,7 @@ func _physics_process(delta: float) -> void:
 	velocity_before_slide = velocity
 	var speed_before: float = velocity.length()
 	move_and_slide()
+	_stop_into_contacts()
 	_report_new_contacts(speed_before)
 	_act_on_bodies(delta)
 
@@ -155,6 +160,29 @@ func _process(delta: float) -> void:
 	if _hum != null:
 		_hum.pitch_scale = 0.8 + 0.5 * speed_fraction
 		_hum.volume_db = linear_to_db(0.05 + 0.25 * thrust)
+
+
+# A floating CharacterBody2D's move_and_slide keeps the velocity it was given: pressed into
+# a wall the sub kept its full speed into it while not moving, and needed several ticks of
+# input the other way before it left (the haptic model kept rendering a wall the hand had
+# already turned away from, for 7 ticks). The velocity into a blocking surface is dropped
+# instead, down to how fast that surface itself retreats (a moving platform). Dynamic
+# bodies are left out: the sub shoves and carries them ([method _act_on_bodies]) with the
+# velocity it drives into them. Two passes settle a corner whose second surface re-adds a
+# component into the first.
+func _stop_into_contacts() -> void:
+	var count: int = get_slide_collision_count()
+	for _pass: int in CONTACT_PASSES:
+		for i: int in count:
+			var collision: KinematicCollision2D = get_slide_collision(i)
+			var body: RigidBody2D = collision.get_collider() as RigidBody2D
+			if body != null and not body.freeze:
+				continue
+			var normal: Vector2 = collision.get_normal()
+			var retreat: float = minf(0.0, collision.get_collider_velocity().dot(normal))
+			var into: float = velocity.dot(normal)
+			if into < retreat:
+				velocity += normal * (retreat - into)
 
 
 func _report_new_contacts(speed: float) -> void:

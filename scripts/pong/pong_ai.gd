@@ -14,7 +14,8 @@ extends PongController
 ##
 ## It plays reasonably, not perfectly: the knobs below (reaction delay, contact-point and
 ## aim errors, avatar speed) make it miss now and then. Randomness comes from its own
-## seeded generator, so a match replays the same.
+## seeded generator, so a match replays the same. [PongAiLevel] sets the knobs for a
+## difficulty level; the defaults below are its NORMAL.
 
 
 ## A planned contact with the ball.
@@ -61,6 +62,17 @@ var fire_interval_s: float = 2.5
 var gun_error_rad: float = 0.08
 ## In beginner mode (no gravity, shots at the target).
 var beginner: bool = false
+## Play the ball to where the opponent's paddle waits (its workspace centre) instead of
+## deep into its half or at its target: a ball that comes to the paddle is one a newcomer
+## can return.
+var plays_to_paddle: bool = false
+## Speed of its shots, m/s: the ball's in beginner mode (at the target, or with
+## [member plays_to_paddle] at the paddle), its speed along the floor for a lob that
+## [member plays_to_paddle]. The servo's cap holds it too.
+var shot_speed_m_per_s: float = 3.5
+## Match time before which it keeps its weapons away (no gun, no mine), seconds: the first
+## seconds of a match are for finding the paddle.
+var weapons_from_s: float = 0.0
 ## The players it plays the ball to (one is picked per shot); the match keeps it to those
 ## still in. Default: the player across.
 var targets: Array[int] = []
@@ -82,6 +94,8 @@ var _mine_credit: float = 0.0
 var _aim_noise: Vector3 = Vector3.ZERO
 var _hit_noise: Vector3 = Vector3.ZERO
 var _target: int = -1
+var _opponent_avatar: Vector3 = Vector3.ZERO
+var _opponent_seen: bool = false
 
 
 ## [param reach]: how far the paddle may be from the avatar (the device workspace's
@@ -129,6 +143,8 @@ func decide(
 	now: float, dt: float, ball: Vector3, velocity: Vector3, opponent_avatar: Vector3
 ) -> PongIntent:
 	_remember(now, ball, velocity)
+	_opponent_avatar = opponent_avatar
+	_opponent_seen = true
 	_replan_in -= dt
 	if _replan_in <= 0.0 and now >= _resting_until:
 		_replan_in = _REPLAN_PERIOD_S
@@ -161,6 +177,8 @@ func plan_contact(position: Vector3, velocity: Vector3, age: float, avatar: Vect
 ## The wanted velocity of the ball leaving its paddle at [param from] (before errors).
 func wanted_velocity(from: Vector3) -> Vector3:
 	var opponent: int = _target if targets.has(_target) else _pick_target()
+	if plays_to_paddle:
+		return _to_paddle(from, opponent)
 	if beginner:
 		# Along the wall: x for the walls of players 0 and 1, z for those of 2 and 3.
 		var along: Vector3 = Vector3.RIGHT if opponent < 2 else Vector3.BACK
@@ -170,7 +188,7 @@ func wanted_velocity(from: Vector3) -> Vector3:
 		)
 		var goal: Vector3 = wall + along * lateral
 		goal.y = from.y
-		return (goal - from).normalized() * minf(3.5, _court.max_ball_speed)
+		return (goal - from).normalized() * minf(shot_speed_m_per_s, _court.max_ball_speed)
 	var land: Vector3 = _court.toward_back_wall(opponent, 0.6)
 	land.y = _court.ball_radius
 	land += Vector3(_aim_noise.x, 0.0, _aim_noise.z)
@@ -178,6 +196,27 @@ func wanted_velocity(from: Vector3) -> Vector3:
 	var distance: float = Vector2(land.x - from.x, land.z - from.z).length()
 	var flight: float = clampf(distance / 4.0, 0.7, 1.3)
 	return PongReferee.launch_velocity(from, land, _court.gravity, flight).limit_length(
+		_court.max_ball_speed
+	)
+
+
+# A shot into [param opponent]'s workspace centre (the avatar the match reports for the
+# player across, the home spot of another), off by the aim error sideways: in beginner
+# mode straight, else a lob that comes down into it.
+func _to_paddle(from: Vector3, opponent: int) -> Vector3:
+	var across: bool = opponent == PongCourt.opponent_of(player) and _opponent_seen
+	var paddle: Vector3 = (
+		_opponent_avatar
+		if across
+		else _court.clamp_avatar(opponent, _court.toward_back_wall(opponent, 0.6))
+	)
+	paddle += PongCourt.side_rotation(opponent) * Vector3(_aim_noise.x, 0.0, 0.0)
+	if beginner:
+		paddle.y = from.y
+		return (paddle - from).normalized() * minf(shot_speed_m_per_s, _court.max_ball_speed)
+	var distance: float = Vector2(paddle.x - from.x, paddle.z - from.z).length()
+	var flight: float = clampf(distance / shot_speed_m_per_s, 0.7, 1.6)
+	return PongReferee.launch_velocity(from, paddle, _court.gravity, flight).limit_length(
 		_court.max_ball_speed
 	)
 
@@ -297,7 +336,8 @@ func _walk(dt: float) -> void:
 func _weapons(now: float, dt: float, ball: Vector3, velocity: Vector3, opponent: Vector3) -> void:
 	var away: bool = velocity.dot(PongCourt.forward(player)) > 0.5
 	var far: bool = _court.territory_at(ball) != player
-	intent.gun = use_weapons and _plan == null and away and far
+	var armed: bool = use_weapons and now >= weapons_from_s
+	intent.gun = armed and _plan == null and away and far
 	if intent.gun:
 		var muzzle: Vector3 = intent.avatar + intent.paddle_offset
 		var body: Vector3 = Vector3(opponent.x, opponent.y * 0.6, opponent.z)
@@ -312,7 +352,7 @@ func _weapons(now: float, dt: float, ball: Vector3, velocity: Vector3, opponent:
 			_next_fire = now + fire_interval_s * _rng.randf_range(0.8, 1.6)
 	# Mines come now and then, but never long overdue: with a coin toss per frame a player
 	# whose ball was away for two seconds in a whole match could place none.
-	if use_weapons and far:
+	if armed and far:
 		_mine_credit += mine_rate_per_s * dt * _rng.randf_range(0.5, 1.5)
 		if _mine_credit >= 1.0:
 			_mine_credit -= 1.0

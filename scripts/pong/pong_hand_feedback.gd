@@ -42,10 +42,11 @@ func recoil(player: int, axis: Vector3) -> void:
 	)
 
 
+# The slow paddle's viscous force is uncapped (a cap of 0 would silence it).
 func _magnitude(kind: String) -> float:
 	match kind:
 		"heavy":
 			return court.number("heavy_force_n")
 		"remote":
 			return court.number("remote_max_force_n")
-	return 0.0
+	return HapticsPong.DEFAULT_STRENGTH

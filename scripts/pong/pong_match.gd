@@ -34,6 +34,8 @@ signal player_out(player: int)
 enum Mode { VS_COMPUTER, TWO_PLAYERS, DEMO }
 
 const STEP_CHUNK_S: float = 0.01
+## Seconds the computer keeps its weapons away against people: time to find the paddle.
+const WEAPONS_GRACE_S: float = 20.0
 const STEP_BUDGET_MS: float = 14.0
 
 @export var mode: Mode = Mode.VS_COMPUTER
@@ -57,6 +59,8 @@ const STEP_BUDGET_MS: float = 14.0
 @export var rules_from_events: bool = true
 ## Bullets and mines.
 @export var weapons: bool = true
+## How hard the computer plays against people (in DEMO, networked too: NORMAL, armed).
+@export var difficulty: PongAiLevel.Level = PongAiLevel.Level.EASY
 
 var court: PongCourt = null
 var rules: PongRules = null
@@ -255,6 +259,9 @@ func _make_controller(player: int, radius: float) -> PongController:
 	if mode == Mode.DEMO or (mode == Mode.VS_COMPUTER and player != 0) or player >= 2:
 		var ai: PongAi = PongAi.new(player, court, reach, ai_seed + player)
 		ai.beginner = beginner
+		if mode != Mode.DEMO:
+			ai.weapons_from_s = WEAPONS_GRACE_S
+			PongAiLevel.apply(ai, difficulty)
 		controller = ai
 	else:
 		var scheme: PongHumanPlayer.Scheme = (
@@ -314,12 +321,12 @@ func _decide(dt: float) -> void:
 			continue
 		var controller: PongController = controllers[player]
 		controller.speed_factor = effects.speed_factor(player)
-		var other: Vector3 = avatar_of(_opponent_in(player))
+		var other: Vector3 = avatar_of(rules.opponent_in(player))
 		var intent: PongIntent = controller.update(now, dt, snapshot, other)
 		if intent.fire and intent.gun and weapons and not rules.is_over():
 			_fire(player)
 		if intent.place_mine and weapons and not rules.is_over():
-			var mine: PongMines.Mine = mines.place(player, intent.avatar, court)
+			var mine: PongMines.Mine = mines.place(player, intent.avatar, court, _standing(player))
 			if mine != null:
 				mine_placed.emit(mine)
 
@@ -373,15 +380,13 @@ func _on_player_out(player: int) -> void:
 	player_out.emit(player)
 
 
-# The player across when still in, else the first one still in.
-func _opponent_in(player: int) -> int:
-	var across: int = PongCourt.opponent_of(player)
-	if across < court.players and not rules.is_out(across):
-		return across
-	for other: int in rules.alive():
-		if other != player:
-			return other
-	return across
+# Where the players other than [param player] who are still in stand.
+func _standing(player: int) -> Array[Vector3]:
+	var spots: Array[Vector3] = []
+	for other: int in court.players:
+		if other != player and not rules.is_out(other):
+			spots.append(avatar_of(other))
+	return spots
 
 
 # The computer plays the ball to the players still in.

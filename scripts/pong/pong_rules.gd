@@ -67,6 +67,17 @@ func alive() -> Array[int]:
 	return left
 
 
+## The player across from [param player] when still in, else the first one still in.
+func opponent_in(player: int) -> int:
+	var across: int = PongCourt.opponent_of(player)
+	if across < players and not is_out(across):
+		return across
+	for other: int in alive():
+		if other != player:
+			return other
+	return across
+
+
 func get_health(player: int) -> int:
 	return _health[player]
 

@@ -1,18 +1,5 @@
-extends TestSuite
+extends "res://tests/foundation/room_suite.gd"
 ## The test room as a real scene: instanced, stepped at 50 Hz, the body steered into walls.
-
-const TEST_ROOM := preload("res://scenes/levels/test_room.tscn")
-
-var _room: TestRoom = null
-var _player: Player = null
-
-
-func before_each() -> void:
-	_room = add_child_autofree(TEST_ROOM.instantiate()) as TestRoom
-	_player = _room.get_node(^"Player") as Player
-	_player.use_keyboard = false
-	# The test steers the body itself, not through the haptic device.
-	(_player.get_node(^"HapticProbe") as HapticProbe).drive_input = false
 
 
 func test_physics_runs_at_fifty_hertz() -> void:

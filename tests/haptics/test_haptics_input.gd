@@ -7,6 +7,36 @@ extends TestSuite
 const FED: PackedStringArray = ["test_fed_left", "test_fed_right", "test_fed_up", "test_fed_down"]
 const MOVE_ACTIONS: PackedStringArray = ["move_left", "move_right", "move_up", "move_down"]
 
+
+## Notes the physics frame on which its _physics_process first sees [member action] pressed.
+class PressWatcher:
+	extends Node
+
+	var action: String = ""
+	var first_frame: int = -1
+
+	func _physics_process(_delta: float) -> void:
+		if first_frame < 0 and Input.is_action_pressed(action):
+			first_frame = Engine.get_physics_frames()
+
+
+## Notes the physics frame on which its _integrate_forces first sees [member action]
+## pressed: the physics server calls it before any node's _physics_process.
+class RigidWatcher:
+	extends RigidBody2D
+
+	var action: String = ""
+	var first_frame: int = -1
+
+	func _init() -> void:
+		gravity_scale = 0.0
+		can_sleep = false
+
+	func _integrate_forces(_state: PhysicsDirectBodyState2D) -> void:
+		if first_frame < 0 and Input.is_action_pressed(action):
+			first_frame = Engine.get_physics_frames()
+
+
 var _hand_actions: PackedStringArray = []
 var _feed_actions: PackedStringArray = []
 var _follows: bool = true
@@ -35,6 +65,19 @@ func after_each() -> void:
 func _physics_frames(count: int) -> void:
 	for i: int in count:
 		await get_tree().physics_frame
+
+
+## Adds [param watchers] (each watching [code]FED[1][/code]) and holds the hand to the
+## right with the feed set up but the keyboard driving the player: nothing is fed yet.
+func _hold_right_unfed(watchers: Array[Node]) -> void:
+	for watcher: Node in watchers:
+		watcher.set(&"action", FED[1])
+		add_child_autofree(watcher)
+	Haptics.hand_follows_input = false
+	Haptics.feed_actions = FED
+	Haptics.control_mode = Haptics.CONTROL_KEYBOARD
+	Haptics.device.set_hand_target(Vector2(1.0, 0.0))
+	assert_true(await _wait_for_input(0.95), "the hand is to the right")
 
 
 func _wait_for_input(at_least: float) -> bool:
@@ -90,6 +133,73 @@ func test_the_input_vector_is_fed_into_the_games_actions() -> void:
 	Haptics.control_mode = Haptics.CONTROL_KEYBOARD
 	await _physics_frames(2)
 	assert_eq(Input.get_action_strength(FED[1]), 0.0, "released in keyboard mode")
+
+
+# The device's input once the hand has settled at [param target] (it follows the target
+# through the simulated device's dynamics and the input mapping).
+func _settled_input(target: Vector2) -> float:
+	Haptics.device.set_hand_target(target)
+	var previous: float = INF
+	for i: int in 150:
+		await get_tree().physics_frame
+		var now: float = Haptics.get_input_vector().x
+		if absf(now - previous) < 1e-4:
+			break
+		previous = now
+	await _physics_frames(2)
+	return Haptics.get_input_vector().x
+
+
+func test_a_drift_is_no_press_and_a_deflection_keeps_its_strength() -> void:
+	# A game that reads is_action_pressed (Godot's physics platformer) must not walk at full
+	# speed because the hand drifted a little: the action is pressed past its deadzone, as a
+	# stick's is, with the deflection as its strength.
+	Haptics.hand_follows_input = false
+	Haptics.feed_actions = FED
+	var deadzone: float = InputMap.action_get_deadzone(FED[1])
+	var drift: float = await _settled_input(Vector2(0.1, 0.0))
+	assert_gt(drift, 0.03, "the hand drifted")
+	assert_lt(drift, deadzone, "inside the action's deadzone")
+	assert_false(Input.is_action_pressed(FED[1]), "a drift is no press")
+	assert_eq(Input.get_action_strength(FED[1]), 0.0)
+	var deflection: float = await _settled_input(Vector2(0.6, 0.0))
+	assert_gt(deflection, deadzone, "past the deadzone")
+	assert_true(Input.is_action_pressed(FED[1]), "pressed")
+	assert_almost_eq(Input.get_action_strength(FED[1]), deflection, 0.01, "at its strength")
+	drift = await _settled_input(Vector2(0.1, 0.0))
+	assert_false(Input.is_action_pressed(FED[1]), "released inside the deadzone")
+
+
+func test_fed_actions_arrive_before_the_games_physics_scripts() -> void:
+	# The device turns the feed on within a physics tick, before the nodes' physics (at the
+	# tree's physics_frame): a watcher that runs before the door sees the press one frame
+	# after one that runs where game scripts do (priority 0): the door fed it in between.
+	var early: PressWatcher = PressWatcher.new()
+	early.process_physics_priority = -2000
+	var game: PressWatcher = PressWatcher.new()
+	await _hold_right_unfed([early, game])
+	await get_tree().physics_frame
+	Haptics.control_mode = Haptics.CONTROL_DEVICE
+	await _physics_frames(2)
+	assert_gt(game.first_frame, 0, "the game's script saw the press")
+	assert_eq(early.first_frame, game.first_frame + 1, "the same frame it was fed")
+
+
+func test_a_rigid_body_reading_input_in_integrate_forces_is_not_a_frame_late() -> void:
+	# The device turns the feed on between two frames' physics (in the idle step), as a device
+	# moving on its own does most of the time: a body's _integrate_forces runs first in the
+	# next physics tick, before any _physics_process, and sees it on the same frame as the
+	# game's scripts do.
+	var rigid: RigidWatcher = RigidWatcher.new()
+	var game: PressWatcher = PressWatcher.new()
+	await _hold_right_unfed([rigid, game])
+	await _physics_frames(2)
+	assert_eq(game.first_frame, -1, "nothing is fed while the keyboard drives the player")
+	await get_tree().process_frame
+	Haptics.control_mode = Haptics.CONTROL_DEVICE
+	await _physics_frames(3)
+	assert_gt(game.first_frame, 0, "the game's _physics_process saw the press")
+	assert_eq(rigid.first_frame, game.first_frame, "_integrate_forces saw it on the same frame")
 
 
 func test_feeding_the_actions_that_move_the_hand_does_not_hold_them_down() -> void:

@@ -128,6 +128,11 @@ def workspace():
         shutil.rmtree(path, ignore_errors=True)
 
 
+def logs(peers: list["Peer"], tail: int = 2000) -> str:
+    """Each peer's exit and the end of its log, for an assertion's message."""
+    return "\n".join(f"--- {p.name} ({p.report.get('exit')}):\n{p.log()[-tail:]}" for p in peers)
+
+
 def run_match(workdir: Path, peers: int, network: Network, seconds: float,
               host_args: tuple[str, ...] = (), client_args: tuple[tuple[str, ...], ...] = (),
               client_scenes: tuple[str, ...] = (), dedicated: bool = False, on_running=None,
@@ -173,7 +178,9 @@ def run_match(workdir: Path, peers: int, network: Network, seconds: float,
             for peer in started[1:]:
                 peer.wait_for_log("Connected")
             on_running(started, relay)
-        codes = [peer.wait() for peer in started[1:]] + [host.wait()]
+        # Each peer quits after its match's seconds: patience counts from its start.
+        patience = seconds + EXIT_PATIENCE_S
+        codes = [peer.wait(patience) for peer in started[1:]] + [host.wait(patience)]
         for peer, code in zip(started[1:] + [host], codes):
             peer.report["exit_code"] = code
     finally:

@@ -1,4 +1,4 @@
-extends TestSuite
+extends "res://tests/pong/pong_screen_suite.gd"
 ## The fixture of the play suites: one peer of a real stepped match (the host, seat 0; the
 ## client, peer 42, drives seat 1, whose paddle comes over the network) without sockets.
 ## Received messages are handed to the handlers with their sender's id; what this peer
@@ -26,7 +26,6 @@ class RecordingPlay:
 		return out
 
 
-var _pong: PongScreen = null
 var _play: RecordingPlay = null
 
 
@@ -34,10 +33,7 @@ func after_each() -> void:
 	if _play != null and is_instance_valid(_play):
 		_play.queue_free()
 	_play = null
-	if _pong != null and is_instance_valid(_pong):
-		_pong.queue_free()
-	_pong = null
-	await wait_process_frames(2)
+	await _free_pong()
 
 
 ## The host's play, begun; null (and a failure) without the Pong renderer.

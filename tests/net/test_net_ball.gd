@@ -1,4 +1,4 @@
-extends TestSuite
+extends "res://tests/pong/pong_screen_suite.gd"
 ## A follower's ball in the real servo: a correction that would put it under the floor or
 ## past a wall (a blend pointing down as the ball lands, an extrapolation beyond the back
 ## wall of a four-player court) is kept inside the court, where the servo takes it, instead
@@ -7,15 +7,6 @@ extends TestSuite
 
 const PongTestScreen := preload("res://tests/pong/pong_test_screen.gd")
 const ScriptedBallPath := preload("res://tests/net/scripted_ball_path.gd")
-
-var _pong: PongScreen = null
-
-
-func after_each() -> void:
-	if _pong != null and is_instance_valid(_pong):
-		_pong.queue_free()
-	_pong = null
-	await wait_process_frames(2)
 
 
 func test_a_correction_outside_the_court_lands_inside_it() -> void:
@@ -36,9 +27,7 @@ func test_a_correction_outside_the_court_lands_inside_it() -> void:
 		assert_lt(absf(at.x), court.half_width, "%d players: inside the side wall" % players)
 		assert_lt(absf(at.z), court.half_length, "%d players: inside the back wall" % players)
 		assert_gt(absf(at.z), court.half_length - 0.2, "%d players: where it was sent" % players)
-		_pong.queue_free()
-		_pong = null
-		await wait_process_frames(2)
+		await _free_pong()
 
 
 func test_a_transfer_glides_the_ball_over_unless_our_paddle_touched_it_since() -> void:

@@ -1,4 +1,4 @@
-extends TestSuite
+extends "res://tests/pong/pong_screen_suite.gd"
 ## A follower's ball in the real servo (stepped), fed issue 24's path without sockets: the
 ## master's flight (struck every 0.6-1.0 s) is recorded first from the same servo; the
 ## follower then takes the master's 125 Hz stream through the scripted path (200 +- 60 ms,
@@ -15,15 +15,6 @@ const SECONDS: float = 20.0
 const TICKS_PER_SEND: int = roundi(1.0 / (PongNetPlay.MAX_STREAM_HZ * HapticsPong.TICK_S))
 const FRAMES_PER_S: float = 60.0
 const ISSUE_MAX_TICK_MOVE_M: float = 0.05
-
-var _pong: PongScreen = null
-
-
-func after_each() -> void:
-	if _pong != null and is_instance_valid(_pong):
-		_pong.queue_free()
-	_pong = null
-	await wait_process_frames(2)
 
 
 func test_a_follower_on_the_issue_path_uses_its_states_and_its_ball_never_jumps() -> void:

@@ -24,7 +24,7 @@ import pytest
 from guard_harness import (CONNECT_BYTES, HIT_MARK, ROGUE_SCENE, LogWatch, check_taken_over,
                            flood_connects, half_open_clients, kill_on_line, start_peer)
 from net_harness import (ROUGH, START_PATIENCE_S, Network, Peer, Relay, check_health, detection_s,
-                         engine_errors, free_udp_port, killer, run_match, workspace)
+                         engine_errors, free_udp_port, killer, logs, run_match, workspace)
 
 # The promise (README, "Networked Pong"): a dead peer is noticed within this, on any path.
 NOTICE_BOUND_S = 3.0
@@ -40,9 +40,6 @@ NETWORKS = {
     "rough": ROUGH,
 }
 
-
-def _logs(peers: list[Peer]) -> str:
-    return "\n".join(f"--- {p.name} ({p.report.get('exit')}):\n{p.log()[-2000:]}" for p in peers)
 
 
 def _port_of(peer: Peer) -> int:
@@ -63,13 +60,13 @@ def test_a_master_killed_after_its_hit_is_noticed_within_3_s_and_the_match_goes_
                              client_args=(("--rogue=mark",),), client_scenes=(ROGUE_SCENE,),
                              on_running=kill_on_line(1, HIT_MARK, killed_at))
         host = peers[0]
-        assert killed_at, "the client never hit the ball as master:\n" + _logs(peers)
+        assert killed_at, "the client never hit the ball as master:\n" + logs(peers)
         report = host.report
-        assert report["exit_code"] == 0 and report["exit"] == "time", _logs(peers)
+        assert report["exit_code"] == 0 and report["exit"] == "time", logs(peers)
         _no_engine_errors(host)
         notice = detection_s(report, killed_at[0])
         print(f"{label}: master killed after its hit, noticed after {notice:.2f} s")
-        assert notice is not None and 0.0 < notice < NOTICE_BOUND_S, _logs(peers)
+        assert notice is not None and 0.0 < notice < NOTICE_BOUND_S, logs(peers)
         assert "silent for" in host.log(), "the heartbeat noticed it, not ENet"
         check_taken_over(report)
 
@@ -83,7 +80,7 @@ def test_a_killed_dedicated_server_is_noticed_by_its_clients_within_3_s() -> Non
         notices = []
         for client in clients:
             report = client.report
-            assert report["exit_code"] == 0 and report["exit"] == "server lost", _logs(peers)
+            assert report["exit_code"] == 0 and report["exit"] == "server lost", logs(peers)
             _no_engine_errors(client)
             lost = report["extra"]["server_lost"]
             assert "no word from the server" in lost["why"], lost
@@ -99,12 +96,12 @@ def test_a_master_forging_floor_hurts_costs_the_host_nothing_and_is_disconnected
                              client_args=(("--rogue=forge",),), client_scenes=(ROGUE_SCENE,))
         host, rogue = peers
         report = host.report
-        assert report["exit_code"] == 0, _logs(peers)
+        assert report["exit_code"] == 0, logs(peers)
         _no_engine_errors(host)
         forged = [line for line in rogue.log().splitlines() if "forged floor hurts sent" in line]
-        assert forged, "the rogue never was the master:\n" + _logs(peers)
+        assert forged, "the rogue never was the master:\n" + logs(peers)
         left = report["extra"].get("peers_left", [])
-        assert len(left) == 1 and left[0]["seats"] == [1], (left, _logs(peers))
+        assert len(left) == 1 and left[0]["seats"] == [1], (left, logs(peers))
         cheat = left[0]["peer"]
         log = host.log()
         assert log.count(f"peer {cheat} sent a bad") == 1, "warned once"
@@ -125,16 +122,16 @@ def test_bad_messages_are_logged_once_and_the_sender_disconnected_at_the_budget(
     with workspace() as work:
         peers, _ = run_match(work, 2, NETWORKS["lan"], 8, client_scenes=(ROGUE_SCENE,))
         host, rogue = peers
-        assert "sending bad messages" in rogue.log(), _logs(peers)
+        assert "sending bad messages" in rogue.log(), logs(peers)
         report = host.report
-        assert report["exit_code"] == 0, _logs(peers)
+        assert report["exit_code"] == 0, logs(peers)
         # Wrong types, wrong counts, out of range, without authority: none is an engine error
         # (a wrong count was one per call), none is a log line of its own.
         _no_engine_errors(host)
         log = host.log()
         assert "RPC - " not in log
         left = report["extra"].get("peers_left", [])
-        assert len(left) == 1 and left[0]["seats"] == [1], (left, _logs(peers))
+        assert len(left) == 1 and left[0]["seats"] == [1], (left, logs(peers))
         rogue_id = left[0]["peer"]
         assert log.count("sent a bad") == 1 and f"peer {rogue_id} sent a bad" in log, log
         assert log.count(f"disconnecting peer {rogue_id}: {BUDGET} bad messages") == 1
@@ -229,10 +226,10 @@ def test_a_connect_flood_and_silent_connections_do_not_keep_a_player_out() -> No
             print(f"after {flood} crafted CONNECTs ({sent} bytes) and 12 silent connections: "
                   f"joined in {join_s:.2f} s (its log is read every 20 ms)")
             assert join_s < JOIN_BOUND_S
-            assert client.wait() == 0 and host.wait() == 0, _logs(started)
+            assert client.wait() == 0 and host.wait() == 0, logs(started)
             # Each quits at its own match clock: the client may see the host go first.
-            assert host.report["exit"] == "time", _logs(started)
-            assert client.report["exit"] in ("time", "server lost"), _logs(started)
+            assert host.report["exit"] == "time", logs(started)
+            assert client.report["exit"] in ("time", "server lost"), logs(started)
             assert client.report["seat"] == 1, client.report
             _no_engine_errors(host)
             # The silent connections from this address beyond the first few were let go.

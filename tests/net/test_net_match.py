@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import pytest
 
-from net_harness import (Network, Peer, check_health, detection_s, divergences, engine_errors,
+from net_harness import (Network, Peer, check_health, detection_s, divergences, engine_errors, logs,
                          killer, master_overlaps, quantile, run_match, transfers, workspace)
 
 NETWORKS = {
@@ -48,17 +48,26 @@ def _validation_refusals(report: dict) -> dict:
     return {k: v for k, v in report["refused"].items() if not k.startswith("authority:")}
 
 
-def _logs(peers: list[Peer]) -> str:
-    """Each peer's exit and the end of its log, whole (pytest shortens a tuple's repr)."""
-    return "\n".join(f"--- {p.name} ({p.report.get('exit')}):\n{p.log()[-1500:]}" for p in peers)
+
+def _stream_story(peers: list[Peer], follower: dict, sent: int) -> str:
+    """What each peer did with the ball stream, for a follower that took too few states:
+    pytest's own repr of the peers is cut before the numbers that tell why."""
+    lines = [f"peer {follower['peer']} took {follower['states']} of the {sent} states sent"]
+    for p in peers:
+        r = p.report
+        lines.append(f"{p.name} {r['peer']}: sent {r['sent']} took {r['states']} late {r['late']} "
+                     f"refused {r['refused']} stream {r['extra'].get('ball_stream')} "
+                     f"master {r['master_intervals']} transfers "
+                     f"{[(t['epoch'], t['master'], round(t['wall_s'], 2)) for t in r['transfers']]}")
+    return "\n".join(lines) + "\n" + logs(peers)
 
 
 def _check_consistent(peers: list[Peer], network: Network, min_handoffs: int = 3) -> None:
     reports = [p.report for p in peers]
     errors = [f"{p.name}: {line}" for p in peers for line in engine_errors(p)]
-    assert not errors, "engine errors:\n" + "\n".join(errors[:10]) + "\n" + _logs(peers)
+    assert not errors, "engine errors:\n" + "\n".join(errors[:10]) + "\n" + logs(peers)
     for peer in peers:
-        assert peer.report.get("exit_code") == 0, _logs(peers)
+        assert peer.report.get("exit_code") == 0, logs(peers)
         dropped = [line for line in peer.log().splitlines() if "dropped" in line][:5]
         assert _validation_refusals(peer.report) == {}, (peer.name, peer.report["refused"], dropped)
     # Every peer applied the same transfers in the same order (one may have missed the
@@ -66,7 +75,7 @@ def _check_consistent(peers: list[Peer], network: Network, min_handoffs: int = 3
     lists = [transfers(r) for r in reports]
     longest = max(lists, key=len)
     handoffs = [t for t in longest if t[1] == 1]
-    assert len(handoffs) >= min_handoffs, f"too few hand-offs to judge: {longest}\n" + _logs(peers)
+    assert len(handoffs) >= min_handoffs, f"too few hand-offs to judge: {longest}\n" + logs(peers)
     for seen in lists:
         assert seen == longest[: len(seen)], (seen, longest)
         assert len(longest) - len(seen) <= 2
@@ -89,7 +98,7 @@ def _check_consistent(peers: list[Peer], network: Network, min_handoffs: int = 3
     for follower in reports:
         others = [r for r in reports if r is not follower]
         sent = sum(r["sent"] for r in others)
-        assert follower["states"] >= sent * kept, (follower["states"], sent, follower["peer"])
+        assert follower["states"] >= sent * kept, _stream_story(peers, follower, sent)
         others_master_s = sum(b - a for r in others for a, b in r["master_intervals"])
         if hosted_pair and others_master_s > 2.0:
             rate = follower["states"] / others_master_s
@@ -126,12 +135,12 @@ def test_a_slow_lossy_handshake_still_connects() -> None:
         peers, relay = run_match(work, 2, Network(150, 20, 0.25), 3, seed=1)
         host, client = peers
         assert relay["up"]["dropped"] > 0 and relay["down"]["dropped"] > 0, relay
-        assert "client1 joined" in host.log(), _logs(peers)
-        assert host.report["exit"] == "time" and host.report["exit_code"] == 0, _logs(peers)
-        assert client.report["exit"] in ("time", "server lost"), _logs(peers)
+        assert "client1 joined" in host.log(), logs(peers)
+        assert host.report["exit"] == "time" and host.report["exit_code"] == 0, logs(peers)
+        assert client.report["exit"] in ("time", "server lost"), logs(peers)
         # Whether the match then reached the client within the host's 3 s is up to ENet's
         # resends at 25 % loss: not what this test is about.
-        assert client.report["exit_code"] == 0, _logs(peers)
+        assert client.report["exit_code"] == 0, logs(peers)
 
 
 def _contact(peers: list[Peer]) -> dict:

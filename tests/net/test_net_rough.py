@@ -16,27 +16,30 @@ Every bound is the issue's; the measured figures are printed.
 from __future__ import annotations
 
 from guard_harness import HIT_MARK, ROGUE_SCENE, check_taken_over, cut_on_line
-from net_harness import (ROUGH, Peer, check_health, detection_s, engine_errors,
+from net_harness import (logs, ROUGH, Peer, check_health, detection_s, engine_errors,
                          run_match, transfers, workspace)
 
 # The bounds.
 USED_SHARE_MIN = 0.9
 TICK_MOVE_MAX_M = 0.05
 NOTICE_BOUND_S = 3.0
-# At 60 Hz or more over a 24 s match a follower is sent well over a thousand states: a few
+# How long the measured match runs, s. The share a follower uses is set by the play as
+# much as by the path: each change of course the follower's predictor does not foresee (a
+# strike, a bounce with spin) gives up the gaps before it, and the states still on their
+# way then arrive late. A 24 s match measured 89.9-97.8 % over a dozen runs (37 gaps given
+# up in the lowest); twice as long halves the variance around the same share.
+MATCH_S = 48
+# At 60 Hz or more over that match a follower is sent well over a thousand states: a few
 # hundred that reached it is a match that ran.
 REACHED_MIN = 300
 
 
-def _logs(peers: list[Peer]) -> str:
-    return "\n".join(f"--- {p.name} ({p.report.get('exit')}):\n{p.log()[-2000:]}" for p in peers)
-
 
 def test_a_match_on_the_rough_network_uses_the_states_that_arrive_and_never_jumps_the_ball():
     with workspace() as work:
-        peers, relay = run_match(work, 2, ROUGH, 24)
+        peers, relay = run_match(work, 2, ROUGH, MATCH_S)
         for peer in peers:
-            assert peer.report.get("exit_code") == 0, _logs(peers)
+            assert peer.report.get("exit_code") == 0, logs(peers)
             assert not engine_errors(peer), engine_errors(peer)[:10]
         reports = [p.report for p in peers]
         # The relay gave the conditions, both ways.
@@ -74,18 +77,18 @@ def test_a_path_cut_after_the_masters_hit_is_noticed_within_3_s_on_both_sides():
                                  client_args=(("--rogue=mark",),), client_scenes=(ROGUE_SCENE,),
                                  on_running=cut_on_line(1, HIT_MARK, cut_at))
         host, client = peers
-        assert cut_at, "the client never hit the ball as master:\n" + _logs(peers)
+        assert cut_at, "the client never hit the ball as master:\n" + logs(peers)
         assert relay["up"]["blackholed"] > 0 and relay["down"]["blackholed"] > 0, relay
-        assert host.report["exit_code"] == 0 and host.report["exit"] == "time", _logs(peers)
+        assert host.report["exit_code"] == 0 and host.report["exit"] == "time", logs(peers)
         assert not engine_errors(host), engine_errors(host)[:10]
         host_notice = detection_s(host.report, cut_at[0])
         assert "silent for" in host.log(), "the heartbeat noticed it, not ENet"
         check_taken_over(host.report)
         lost = client.report.get("extra", {}).get("server_lost", {})
-        assert client.report["exit"] == "server lost", _logs(peers)
+        assert client.report["exit"] == "server lost", logs(peers)
         assert "no word from the server" in lost["why"], lost
         client_notice = lost["wall_s"] - cut_at[0]
         print(f"rough network, path cut after the client's hit: the host noticed after "
               f"{host_notice:.2f} s, the client after {client_notice:.2f} s")
-        assert host_notice is not None and 0.0 < host_notice < NOTICE_BOUND_S, _logs(peers)
-        assert 0.0 < client_notice < NOTICE_BOUND_S, _logs(peers)
+        assert host_notice is not None and 0.0 < host_notice < NOTICE_BOUND_S, logs(peers)
+        assert 0.0 < client_notice < NOTICE_BOUND_S, logs(peers)

@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import pytest
 
-from net_harness import Network, Peer, agree, check_health, run_match, workspace
+from net_harness import logs, Network, Peer, agree, check_health, run_match, workspace
 
 WEAPONS_NETWORK = Network(50, 10, 0.05)
 REMOTE_NETWORK = Network(100, 0, 0.0)
@@ -35,9 +35,6 @@ PASSIVE_BOUND = 3.0
 PUMPED_FLOOR = 5.0
 
 
-def _logs(peers: list[Peer]) -> str:
-    return "\n".join(f"--- {p.name} ({p.report.get('exit')}):\n{p.log()[-1500:]}" for p in peers)
-
 
 def test_two_peers_with_weapons_agree_on_mines_hurts_and_health() -> None:
     with workspace() as work:
@@ -46,7 +43,7 @@ def test_two_peers_with_weapons_agree_on_mines_hurts_and_health() -> None:
                                  host_args=rate, client_args=(rate,))
         reports = [p.report for p in peers]
         for peer in peers:
-            assert peer.report.get("exit_code") == 0, _logs(peers)
+            assert peer.report.get("exit_code") == 0, logs(peers)
             refused = {k: v for k, v in peer.report["refused"].items()
                        if not k.startswith("authority:")}
             dropped = [line for line in peer.log().splitlines() if "dropped" in line][:5]
@@ -72,9 +69,9 @@ def _remote_run(work, passivity: bool) -> dict:
     peers, _ = run_match(work, 2, REMOTE_NETWORK, REMOTE_SECONDS, host_args=script,
                          client_args=(victim,), force_relay=True)
     client = [p for p in peers if p.report.get("seat") == 1]
-    assert client and "remote_mine" in client[0].report, _logs(peers)
+    assert client and "remote_mine" in client[0].report, logs(peers)
     measured = client[0].report["remote_mine"]
-    assert measured["started"] and measured["complete"], (measured, _logs(peers))
+    assert measured["started"] and measured["complete"], (measured, logs(peers))
     refused = {k: v for p in peers for k, v in p.report["refused"].items()
                if not k.startswith("authority:")}
     assert refused == {}, refused

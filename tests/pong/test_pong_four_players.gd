@@ -1,4 +1,4 @@
-extends TestSuite
+extends "res://tests/pong/pong_screen_suite.gd"
 ## Four players on the square court, as plain classes: territories split by the diagonals,
 ## each seat's frame facing the centre, avatars kept inside their triangle, goals on each
 ## back wall, players going out and the last one left winning, serves skipping those out,
@@ -9,18 +9,10 @@ const PongTestCourt := preload("res://tests/pong/pong_test_court.gd")
 const PongTestScreen := preload("res://tests/pong/pong_test_screen.gd")
 
 var _court: PongCourt = null
-var _pong: PongScreen = null
 
 
 func before_each() -> void:
 	_court = PongTestCourt.make({"players": 4})
-
-
-func after_each() -> void:
-	if _pong != null and is_instance_valid(_pong):
-		_pong.queue_free()
-	_pong = null
-	await wait_process_frames(2)
 
 
 func test_the_square_court_and_its_territories() -> void:
@@ -141,8 +133,6 @@ func test_a_four_computer_match_ends_with_one_winner() -> void:
 	assert_false(outs.has(winner))
 	assert_gt(match_node.rules.get_health(winner), 0)
 	assert_eq(territories.size(), 4, "the ball visited every triangle")
-	_pong.queue_free()
-	_pong = null
-	await wait_process_frames(2)
+	await _free_pong()
 	var pong_config: Dictionary = Haptics.pong.get_config()
 	assert_eq(pong_config["players"], 2, "the servo is back to two players")

@@ -1,4 +1,4 @@
-extends TestSuite
+extends "res://tests/pong/pong_screen_suite.gd"
 ## Haptic Battle Pong through the real scene and the real servo (the extension's Pong
 ## renderer), stepped by the match so that time is simulated time: the computer returns
 ## served balls, a bounce in one's own half costs exactly one point, a mine's effect starts
@@ -7,21 +7,18 @@ extends TestSuite
 ## timeout.
 
 const PongTestScreen := preload("res://tests/pong/pong_test_screen.gd")
+const PongTestEvents := preload("res://tests/pong/pong_test_events.gd")
 ## Tolerance of an effect's end: one match update either side, and one more for the order
 ## of update and servo ticks.
 const EFFECT_TOLERANCE_S: float = 2.0 * PongMatch.STEP_CHUNK_S + 0.005
 
-var _pong: PongScreen = null
 var _events: Array[Dictionary] = []
 
 
 func after_each() -> void:
 	get_tree().paused = false
-	if _pong != null and is_instance_valid(_pong):
-		_pong.queue_free()
-	_pong = null
 	_events.clear()
-	await wait_process_frames(2)
+	await _free_pong()
 
 
 func test_the_computer_returns_served_balls() -> void:
@@ -170,11 +167,7 @@ func _stand_aside(match_node: PongMatch) -> void:
 
 
 func _saw(type: String, player: int) -> bool:
-	for event: Dictionary in _events:
-		var who: int = event.get("player", -1)
-		if str(event.get("type", "")) == type and who == player:
-			return true
-	return false
+	return PongTestEvents.saw(_events, type, player)
 
 
 func _ball_in(territory: int) -> bool:

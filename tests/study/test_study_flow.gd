@@ -42,19 +42,46 @@ func test_a_scripted_participant_completes_the_study() -> void:
 	var written: Array = meta["condition_order"]
 	assert_eq(PackedStringArray(written), order, "the order drawn from it")
 	assert_eq(meta["counterbalancing"], "random")
-	assert_eq(meta["demographics"]["hand_used"], "left")
+	var profile: Dictionary = ScriptedParticipant.profile_of("P01")
+	assert_eq(meta["demographics"], profile["demographics"], "the scripted demographics")
 	assert_true(StudyFormat.is_timestamp(str(meta["started"])))
 	assert_true(StudyFormat.is_timestamp(str(meta["finished"])), "finished is set at the end")
 	_check_ratings(folder, order)
 	_check_trials(folder, order, recorded)
 	var final: Dictionary = Support.json_of(folder.path_join("final.json"))
 	assert_eq(final["participant_id"], "P01")
-	assert_eq(final["favourite"], [order[2]], "the favourite is the third method presented")
+	var favourite: Array = []
+	for position: int in profile["favourite"]:
+		favourite.append(order[position])
+	assert_eq(final["favourite"], favourite, "the scripted favourite, by presentation position")
 	assert_has(str(final["differences_text"]), "Scripted run")
 	var state: ParticipantState = ParticipantState.scan(_root, "P01")
 	assert_eq(state.problems, PackedStringArray(), "the study's own checker accepts it")
 	assert_eq(state.next_step(1)["step"], ParticipantState.Step.DONE)
 	_check_with_the_analysis_tool()
+
+
+func test_scripted_participants_vary_their_demographics_and_favourites() -> void:
+	var values: Dictionary[String, Dictionary] = {}
+	var counts: Dictionary[int, int] = {}
+	var favourites: Dictionary[String, bool] = {}
+	for i: int in 30:
+		var profile: Dictionary = ScriptedParticipant.profile_of("P%02d" % i)
+		var demographics: Dictionary = profile["demographics"]
+		for key: String in StudyFormat.demographic_keys():
+			var value: String = demographics[key]
+			assert_has(StudyFormat.demographic_values(key), value, key)
+			var seen: Dictionary = values.get_or_add(key, {})
+			seen[value] = true
+		var favourite: PackedInt32Array = profile["favourite"]
+		counts[favourite.size()] = counts.get(favourite.size(), 0) + 1
+		favourites[str(favourite)] = true
+	for key: String in StudyFormat.demographic_keys():
+		var seen: Dictionary = values[key]
+		assert_gt(seen.size(), 1, "%s varies across participants" % key)
+	for size: int in [0, 1, 2]:
+		assert_gt(counts.get(size, 0), 0, "some participants name %d favourites" % size)
+	assert_gt(favourites.size(), 3, "and not always the same ones")
 
 
 func test_a_duplicate_id_is_refused() -> void:

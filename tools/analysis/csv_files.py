@@ -12,6 +12,7 @@ from typing import TYPE_CHECKING
 
 from schema import CONDITIONS, RATINGS_FILE, TELEMETRY_MIN_RATE_HZ, TRIALS_FILE, telemetry_name
 from tables import Issue, read_table
+from trial_metrics import mismatches
 
 if TYPE_CHECKING:
     from studydata import Participant
@@ -84,8 +85,13 @@ def check_trials(p: Participant) -> set[str]:
             if not tel_path.is_file():
                 p.errors.append(Issue(rel, lineno, f"telemetry file {tel!r} does not exist"))
                 continue
-            if not check_telemetry(p, tel_path, tel_rel):
+            tel_rows = check_telemetry(p, tel_path, tel_rel)
+            if tel_rows is None:
                 continue
+            gap = (p.meta or {}).get("contact_gap_s")
+            if isinstance(gap, (int, float)) and not isinstance(gap, bool):
+                for problem in mismatches(row, tel_rows, float(gap)):
+                    p.warnings.append(Issue(rel, lineno, problem))
         if row["contact_time_s"] > row["time_to_goal_s"] + 1e-6:
             p.warnings.append(Issue(rel, lineno, "contact_time_s exceeds time_to_goal_s"))
         if row["max_force_n"] + 1e-9 < row["mean_force_n"]:
@@ -94,11 +100,12 @@ def check_trials(p: Participant) -> set[str]:
     return referenced
 
 
-def check_telemetry(p: Participant, path: Path, rel: str) -> bool:
+def check_telemetry(p: Participant, path: Path, rel: str) -> list[dict] | None:
+    """Validates a telemetry file; returns its records, or None when it has errors."""
     before = len(p.errors)
     rows = read_table(path, rel, "telemetry", p.errors)
     if rows is None:
-        return False
+        return None
     prev_t = None
     for lineno, row in rows:
         t = row["time_s"]
@@ -114,4 +121,4 @@ def check_telemetry(p: Participant, path: Path, rel: str) -> bool:
                 p.warnings.append(
                     Issue(rel, None, f"effective sample rate {rate:.0f} Hz is below {TELEMETRY_MIN_RATE_HZ:.0f} Hz")
                 )
-    return len(p.errors) == before
+    return [row for _, row in rows] if len(p.errors) == before else None

@@ -65,17 +65,32 @@ def fig7_total(res: dict, path: Path) -> None:
     ax.set_ylim(0, 11.5)
     ax.set_yticks(range(0, 11))
     ax.set_ylabel("Total mean rating (± SE)")
-    t = res["tests"]
-    lines = ["Total mean rating and standard error"]
-    rm = t["rm_anova_total"]
-    if math.isfinite(rm["F"]):
-        lines.append("RM ANOVA " + stats.fmt_f(rm, "df_conditions", "df_error"))
-    ax.set_title("\n".join(lines), fontsize=10)
+    ax.set_title("\n".join(["Total mean rating and standard error", *fig7_tests(res)]), fontsize=10)
     ax.grid(axis="y", alpha=0.3)
     ax.set_axisbelow(True)
     fig.tight_layout()
     fig.savefig(path, dpi=DPI)
     plt.close(fig)
+
+
+def fig7_tests(res: dict) -> list[str]:
+    """Figure 7's test lines: the paper's test (a one-way ANOVA over every criterion rating,
+    how it reported F(2, 163)) beside the repeated-measures ANOVA the design calls for; a
+    test that cannot be computed (too few participants) says so instead of its F."""
+    t = res["tests"]
+    ow, rm = t["oneway_anova_pooled_ratings"], t["rm_anova_total"]
+
+    def shown(test: dict, df1: str, df2: str) -> str:
+        return stats.fmt_f(test, df1, df2) if _finite(test["F"]) else "n/a"
+
+    return [
+        "Paper's test (one-way ANOVA, every rating): " + shown(ow, "df_between", "df_within"),
+        "Repeated measures (participant totals): " + shown(rm, "df_conditions", "df_error"),
+    ]
+
+
+def _finite(x) -> bool:
+    return x is not None and math.isfinite(x)
 
 
 def trial_metrics(res: dict, trials, path: Path) -> None:

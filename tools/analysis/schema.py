@@ -39,6 +39,9 @@ TELEMETRY_DIR = PurePosixPath(_FILES["telemetry"]).parent.as_posix()
 RESERVED_DIR_NAMES = tuple(_FILES["reserved_folders"])
 # Below this effective sample rate a telemetry file earns a warning.
 TELEMETRY_MIN_RATE_HZ = float(SCHEMA["telemetry_min_rate_hz"])
+# The longest time between two telemetry rows that contact_time_s counts (FORMAT.md, "Trial
+# metrics").
+METRIC_MAX_ROW_STEP_S = float(SCHEMA["metric_max_row_step_s"])
 
 
 def columns(table: str) -> tuple[dict, ...]:

@@ -1,6 +1,7 @@
 // The ball-paddle contact law (renderers/pong/paddle_contact.h): the hand's two regimes, the paper's
 // jump against the continuous default, swinging harder, the ball force's direction, the
-// side memory against tunnelling, and spin induction against its closed form.
+// side memory against tunnelling, spin induction against its closed form, and the spin's grip
+// that bends a spinning ball off a paddle as off a wall.
 
 #include "pong/pong_test_support.h"
 
@@ -29,7 +30,7 @@ PaddleContact touch(PaddleContactTracker &r_tracker, const PaddleLaw &p_law, dou
 	pose.normal = UP;
 	pose.touchable = true;
 	const BallState ball{ { 0.0, p_height, 0.0 }, p_ball_velocity, p_spin };
-	return r_tracker.update(pose, ball, p_law);
+	return r_tracker.update(pose, ball, p_law, PONG_DT);
 }
 
 // The spread (max - min) of the hand force while the penetration hovers d +- p_amplitude.
@@ -225,4 +226,65 @@ TEST_CASE("pong contact: the spinning ball drags the hand along its surface, in 
 	// Spinning about +z, the ball's underside moves along +x: so does the paddle's drag.
 	CHECK(contact.hand_spin_n.x > 0.0);
 	CHECK(expected.x == doctest::Approx(50.0 * (config.ball_radius_m - penetration) * config.spin_force_gain));
+}
+
+namespace {
+
+// A ball flying along -z at 3 m/s with p_spin onto paddle 0 at rest facing +z (no gravity);
+// returns its velocity as it leaves (the RELEASE event).
+Vec3 off_resting_paddle(const Vec3 &p_spin, const PongConfig &p_config) {
+	PongSim sim;
+	sim.configure(p_config);
+	const Vec3 center{ 0.0, 1.0, 1.0 };
+	PongInput input = idle_input();
+	input.players[0] = game_paddle(center, { 0.0, 0.0, 1.0 });
+	sim.set_input(input);
+	sim.apply(set_ball(center + Vec3{ 0.0, 0.0, 0.3 }, { 0.0, 0.0, -3.0 }, p_spin));
+	for (int k = 0; k < 1000; ++k) {
+		sim.step(PONG_DT, nullptr);
+		for (const PongEvent &event : take_events(sim)) {
+			if (event.type == PongEventType::RELEASE) {
+				return sim.ball().velocity;
+			}
+		}
+	}
+	FAIL("the paddle never released the ball");
+	return {};
+}
+
+} // namespace
+
+TEST_CASE("pong contact: a spinning ball bends off a resting paddle as off a wall and a plain one leaves straight") {
+	PongConfig config;
+	config.gravity_m_per_s2 = 0.0;
+	config.air_linear_decel_m_per_s2 = 0.0; // The ball arrives with the speed and spin given.
+	config.air_angular_decel_rad_per_s2 = 0.0;
+	const double r = config.ball_radius_m;
+	const Vec3 normal{ 0.0, 0.0, 1.0 };
+	// Side spin about y: the surface facing the paddle moves along -x.
+	const Vec3 side_spin{ 0.0, 30.0, 0.0 };
+	const Vec3 bent = off_resting_paddle(side_spin, config);
+	BallState wall{ {}, { 0.0, 0.0, -3.0 }, side_spin };
+	bounce_off_plane(wall, normal, config.restitution_wall, config.surface_friction, r, 0.0);
+	MESSAGE("30 rad/s side spin: sideways " << bent.x << " m/s off the paddle, " << wall.velocity.x
+											<< " m/s off a wall");
+	// -(2/7) (w x (-r n)): 0.6 m/s along +x, the slip stopped (friction allows 1.9 m/s).
+	CHECK(bent.x == doctest::Approx(2.0 / 7.0 * side_spin.y * r).epsilon(1e-6));
+	CHECK(bent.x == doctest::Approx(wall.velocity.x).epsilon(1e-6)); // The wall's law, same way.
+	CHECK(std::abs(bent.y) < 1e-12);
+	CHECK(bent.z > 0.0); // And it still bounces back.
+
+	// Strong spin: Coulomb holds the sideways change to mu times the normal impulse.
+	const Vec3 strong = off_resting_paddle({ 0.0, 100.0, 0.0 }, config);
+	CHECK(2.0 / 7.0 * 100.0 * r > config.surface_friction * (strong.z + 3.0)); // Friction-limited.
+	CHECK(strong.x == doctest::Approx(config.surface_friction * (strong.z + 3.0)).epsilon(0.01));
+
+	// Without spin, the paper's push along the normal alone.
+	const Vec3 plain = off_resting_paddle({}, config);
+	CHECK(std::abs(plain.x) < 1e-12);
+	CHECK(std::abs(plain.y) < 1e-12);
+
+	// Spin about the paddle's normal has no slip at the contact point: nothing bends.
+	const Vec3 about_normal = off_resting_paddle({ 0.0, 0.0, 50.0 }, config);
+	CHECK(std::abs(about_normal.x) < 1e-12);
 }

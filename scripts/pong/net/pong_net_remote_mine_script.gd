@@ -2,8 +2,9 @@ class_name PongNetRemoteMineScript
 extends Node
 ## The remote-operation mine across the network, scripted for the energy test
 ## ([code]--pong-net-script=remote[/code]). Seat 0, the owner, places its mines (slow and
-## heavy out of the way, then the remote one under the victim's avatar) and swings its
-## paddle left and right all along. Seat 1, the victim, is the device player: the simulated
+## heavy out of the way, then the remote one at the victim's avatar) and swings its
+## paddle left and right all along. Seat 1, the victim, is the device player, who steps onto
+## the remote mine once it lands beside it ([SteppingVictim]): the simulated
 ## device's hand holds the stylus at the centre, so the stylus moves only as the forces
 ## push it against that hand. No serve (the ball stays at rest in the middle): the only
 ## force on the hand while the mine runs is the coupling's.
@@ -20,8 +21,6 @@ const SWING_AMPLITUDE_M: float = 0.04
 const SWING_HZ: float = 1.5
 ## Match seconds at which the owner places its three mines.
 const PLACE_AT_S: Array[float] = [0.5, 1.0, 1.5]
-## Where the two first mines land, across the court from the victim's avatar, metres.
-const ASIDE_M: float = 1.0
 
 
 ## The owner: places its mines at the given spots, then swings its paddle.
@@ -53,6 +52,23 @@ class SwingingOwner:
 		return intent
 
 
+## The victim: stands at home until the owner's remote mine is down (a mine never lands
+## on a standing player, [PongMines]: it lands beside the avatar), then steps onto it, as a
+## player walks into a trap.
+class SteppingVictim:
+	extends PongController
+
+	var mines: PongMines = null
+
+	func update(
+		_now: float, _dt: float, _snapshot: HapticPongState, _opponent_avatar: Vector3
+	) -> PongIntent:
+		for mine: PongMines.Mine in mines.placed:
+			if mine.owner == OWNER and mine.kind == "remote":
+				intent.avatar = Vector3(mine.position.x, intent.avatar.y, mine.position.z)
+		return intent
+
+
 ## Whether the victim's servo keeps the passivity rule on (off: the failing reference).
 var passivity: bool = true
 
@@ -80,7 +96,8 @@ func make_controller(seat: int, match_node: PongMatch) -> PongController:
 	var court: PongCourt = match_node.court
 	var victim_home: Vector3 = PongAi.new(VICTIM, court, match_node.reach).home()
 	if seat == VICTIM:
-		var still: PongController = PongController.new()
+		var still: SteppingVictim = SteppingVictim.new()
+		still.mines = match_node.mines
 		still.player = seat
 		still.kinematic = false
 		still.intent.avatar = victim_home
@@ -97,10 +114,12 @@ func make_controller(seat: int, match_node: PongMatch) -> PongController:
 	swinging.intent.normal = (PongCourt.forward(seat) + Vector3.UP * 0.4).normalized()
 	# Each mine lands at the mirror image of the owner's avatar (PongMines): stand at the
 	# mirror image of where it should land.
+	# The first two land as far aside as the court lets them (the mine rule clamps them):
+	# the remote one lands beside the victim, PongMines.CLEAR_OF_PLAYERS_M from its feet, and
+	# must stay PongMines.MIN_SPACING_M clear of them (1 m aside left it no free spot).
 	var floor_spot: Vector3 = Vector3(victim_home.x, 0.0, victim_home.z)
-	for target: Vector3 in [
-		floor_spot + Vector3.RIGHT * ASIDE_M, floor_spot + Vector3.LEFT * ASIDE_M, floor_spot
-	]:
+	var aside: Vector3 = Vector3.RIGHT * court.half_width
+	for target: Vector3 in [floor_spot + aside, floor_spot - aside, floor_spot]:
 		var spot: Vector3 = Vector3(target.x, victim_home.y, -target.z)
 		swinging.spots.append(court.clamp_avatar(seat, spot))
 	return swinging

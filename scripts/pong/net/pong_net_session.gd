@@ -384,7 +384,11 @@ func _on_server_disconnected() -> void:
 		close()
 		return
 	if lost_reason.is_empty():
-		lost_reason = "the server left"
+		# ENet's own timeout, tuned to the path (PongNetEnet.tune), may fire in the same frame
+		# as the heartbeat's: after two beats of silence the server was lost, it did not leave.
+		var silence: float = _heartbeat.silence_s(PongNetAuthority.SERVER_ID, _now_s())
+		var lost: bool = silence >= 2.0 / PongNetProtocol.HEARTBEAT_HZ
+		lost_reason = "no word from the server for %.1f s" % silence if lost else "the server left"
 	server_lost.emit()
 	close()
 

@@ -122,6 +122,11 @@ func get_plot() -> ForcePlot:
 	return _plot
 
 
+## Where the controls bar lies on the screen (the camera keeps the near court above it).
+func get_controls_rect() -> Rect2:
+	return _controls.get_global_rect()
+
+
 # The mouse moves the paddle: no control of the HUD may take its motion.
 static func _ignore_mouse(node: Node) -> void:
 	if node is Control:

@@ -61,7 +61,8 @@ func show_health(health: int) -> void:
 
 
 func show_mines(left: int, next_kind: String) -> void:
-	_mines.text = "mines %d%s" % [left, "  ·  next: %s" % next_kind if left > 0 else ""]
+	var next: String = "  ·  next: %s" % PongMines.kind_name(next_kind) if left > 0 else ""
+	_mines.text = "mines %d%s" % [left, next]
 
 
 func show_modes(spin: bool, gun: bool) -> void:

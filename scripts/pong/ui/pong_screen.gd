@@ -32,6 +32,8 @@ const OLD_EXTENSION_TEXT: String = (
 @export var skip_setup: bool = false
 @export var mode: PongMatch.Mode = PongMatch.Mode.VS_COMPUTER
 @export var beginner: bool = false
+## How hard the computer plays against people.
+@export var difficulty: PongAiLevel.Level = PongAiLevel.Level.EASY
 @export var start_health: int = PongRules.DEFAULT_START_HEALTH
 ## 2, or 4 on a square court.
 @export_enum("2:2", "4:4") var players: int = 2
@@ -42,6 +44,8 @@ const OLD_EXTENSION_TEXT: String = (
 
 var _running: bool = false
 
+## The match's sounds.
+@onready var sounds: PongSounds = $Sounds
 @onready var world: PongView = $World
 @onready var match_node: PongMatch = $Match
 @onready var hud: PongHud = $Hud
@@ -82,6 +86,7 @@ func start_match(p_mode: PongMatch.Mode, p_beginner: bool) -> bool:
 	beginner = p_beginner
 	match_node.mode = mode
 	match_node.beginner = beginner
+	match_node.difficulty = difficulty
 	match_node.start_health = start_health
 	match_node.players = players
 	match_node.stepped = stepped
@@ -102,6 +107,7 @@ func start_match(p_mode: PongMatch.Mode, p_beginner: bool) -> bool:
 	)
 	hud.visible = true
 	pause_menu.enabled = true
+	sounds.listen(match_node)
 	match_node.served.connect(_on_served)
 	match_node.mine_placed.connect(world.add_mine)
 	match_node.mine_exploded.connect(_on_mine_exploded)
@@ -116,6 +122,7 @@ func start_match(p_mode: PongMatch.Mode, p_beginner: bool) -> bool:
 
 func _on_setup_start(p_mode: PongMatch.Mode, p_beginner: bool) -> void:
 	players = setup.get_players()
+	difficulty = setup.get_difficulty()
 	start_match(p_mode, p_beginner)
 
 
@@ -166,7 +173,7 @@ func _on_served(receiver: int) -> void:
 
 func _on_mine_exploded(mine: PongMines.Mine, victim: int) -> void:
 	world.explode_mine(mine)
-	hud.flash("%s stepped on a %s mine!" % [player_name(victim), mine.kind])
+	hud.flash("%s stepped on a %s mine!" % [player_name(victim), PongMines.kind_name(mine.kind)])
 
 
 func _on_bullet_hit(hit: Dictionary) -> void:

@@ -1,9 +1,10 @@
 class_name PongSetup
 extends CanvasLayer
-## The first thing the Pong screen shows: who plays (against the computer, two players on
-## one machine, computer against computer), beginner mode and the court (two players, or
-## four on a square court, the computer taking the sides nobody plays), or, without the extension's
-## Pong renderer, why there is no game. It only emits signals.
+## The first thing the Pong screen shows: the options first (how hard the computer plays,
+## beginner mode, the court: two players, or four on a square court, the computer taking
+## the sides nobody plays), then who plays (against the computer, two players on one
+## machine, computer against computer), or, without the extension's Pong renderer, why
+## there is no game. It only emits signals.
 
 ## Start a match in [param mode] (a [enum PongMatch.Mode]).
 signal start_requested(mode: PongMatch.Mode, beginner: bool)
@@ -11,12 +12,19 @@ signal back_requested
 ## Open the network game's lobby.
 signal network_requested
 
+## Beginner mode starts ticked: the paper's starting point for novices, and the mode in
+## which a first-time player rallies against the Easy computer (tests/pong/
+## test_pong_newcomer.gd; with gravity the same scripted player touches the ball but cannot
+## keep it in play).
+const BEGINNER_FIRST: bool = true
+
 @onready var vs_computer_button: Button = %VsComputerButton
 @onready var two_players_button: Button = %TwoPlayersButton
 @onready var demo_button: Button = %DemoButton
 @onready var network_button: Button = %NetworkButton
 @onready var beginner_check: CheckBox = %BeginnerCheck
 @onready var four_players_check: CheckBox = %FourPlayersCheck
+@onready var difficulty_option: OptionButton = %DifficultyOption
 @onready var back_button: Button = %BackButton
 @onready var _buttons: Control = %Buttons
 @onready var _subtitle: Label = %Subtitle
@@ -28,6 +36,10 @@ func _ready() -> void:
 	demo_button.pressed.connect(_start.bind(PongMatch.Mode.DEMO))
 	network_button.pressed.connect(network_requested.emit)
 	back_button.pressed.connect(back_requested.emit)
+	for level: int in PongAiLevel.NAMES.size():
+		difficulty_option.add_item(PongAiLevel.NAMES[level], level)
+	difficulty_option.select(PongAiLevel.Level.EASY)
+	beginner_check.button_pressed = BEGINNER_FIRST
 	UiFocus.grab_later(vs_computer_button)
 
 
@@ -47,6 +59,12 @@ func show_offline(reason: String) -> void:
 ## How many players the court is set for: 2, or 4 when [member four_players_check] is on.
 func get_players() -> int:
 	return 4 if four_players_check.button_pressed else 2
+
+
+## How hard the computer plays, as chosen.
+func get_difficulty() -> PongAiLevel.Level:
+	var level: int = difficulty_option.get_selected_id()
+	return level as PongAiLevel.Level
 
 
 ## The text under the heading.

@@ -16,13 +16,19 @@ const PLAYER_COLORS: Array[Color] = [
 const SHADOW_GROWTH_PER_M: float = 0.6
 const SHADOW_FADE_HEIGHT_M: float = 2.5
 const SHADOW_MIN_ALPHA: float = 0.35
-const BULLET_COLOR: Color = Color(1.0, 0.95, 0.4)
+## Bullets are hot red streaks along their flight, the length of [constant BULLET_LENGTH_M]:
+## never mistaken for the round ball.
+const BULLET_COLOR: Color = Color(1.0, 0.18, 0.3)
+const BULLET_LENGTH_M: float = 0.3
+## Where the ball resting against the near wall shows: this share of the half height
+## below the screen's centre, above the controls bar at the bottom.
+const NEAR_EDGE_SCREEN: float = 0.62
 
 var _court: PongCourt = null
 var _paddles: Array[PongPaddleView] = []
 var _avatars: Array[PongAvatarView] = []
 var _mine_views: Array[PongMineView] = []
-var _bullet_mesh: SphereMesh = SphereMesh.new()
+var _bullet_mesh: CapsuleMesh = CapsuleMesh.new()
 
 @onready var camera: Camera3D = $Camera
 @onready var _sun: DirectionalLight3D = $Sun
@@ -36,8 +42,10 @@ var _bullet_mesh: SphereMesh = SphereMesh.new()
 
 func _ready() -> void:
 	physics_interpolation_mode = Node.PHYSICS_INTERPOLATION_MODE_OFF
-	_bullet_mesh.radius = PongBullets.RADIUS_M
-	_bullet_mesh.height = PongBullets.RADIUS_M * 2.0
+	# Thinner than the bullet's hit radius: a streak, its length along the flight (the
+	# capsule's axis, y, is turned onto the velocity).
+	_bullet_mesh.radius = PongBullets.RADIUS_M * 0.5
+	_bullet_mesh.height = BULLET_LENGTH_M
 	var bullet_material: StandardMaterial3D = StandardMaterial3D.new()
 	bullet_material.albedo_color = BULLET_COLOR
 	bullet_material.emission_enabled = true
@@ -72,13 +80,22 @@ func build(court: PongCourt, reach: float, beginner: bool, viewer: int = 0) -> v
 
 
 ## Puts the camera behind and above [param player]'s back wall, looking across the court
-## (each local player's own side; with four players the far walls all stay in view).
+## (each local player's own side; with four players the far walls all stay in view),
+## tilted so that a ball resting against the near wall shows at [constant NEAR_EDGE_SCREEN]
+## (the camera's field of view is vertical).
 func view_from(player: int) -> void:
 	var behind: Vector3 = -PongCourt.forward(player)
-	var back: float = _court.half_length + (1.7 if _court.players == 2 else 2.6)
-	var height: float = _court.wall_height * (1.0 if _court.players == 2 else 1.6)
-	camera.position = behind * back + Vector3.UP * height
-	camera.look_at(-behind * _court.half_length * 0.3 + Vector3.UP * _court.beginner_height * 0.6)
+	var back: float = _court.half_length + (2.5 if _court.players == 2 else 3.2)
+	var height: float = _court.wall_height * (1.1 if _court.players == 2 else 1.6)
+	var eye: Vector3 = behind * back + Vector3.UP * height
+	var resting: Vector3 = (
+		behind * (_court.half_length - _court.ball_radius) + Vector3.UP * _court.ball_radius
+	)
+	var below: float = atan2(eye.y - resting.y, (eye - resting).dot(behind))
+	var tilt: float = below - atan(NEAR_EDGE_SCREEN * tan(deg_to_rad(camera.fov * 0.5)))
+	camera.position = eye
+	camera.look_at(eye - behind)
+	camera.rotate_object_local(Vector3.RIGHT, -tilt)
 
 
 ## Draws the match as it is now.
@@ -149,4 +166,8 @@ func _show_bullets(bullets: PongBullets) -> void:
 		var instance: MeshInstance3D = _bullets.get_child(i) as MeshInstance3D
 		instance.visible = i < bullets.flying.size()
 		if instance.visible:
-			instance.position = bullets.flying[i].position
+			var bullet: PongBullets.Bullet = bullets.flying[i]
+			var along: Vector3 = bullet.velocity.normalized()
+			if along != Vector3.ZERO:
+				instance.basis = Basis(Quaternion(Vector3.UP, along))
+			instance.position = bullet.position - along * BULLET_LENGTH_M * 0.5

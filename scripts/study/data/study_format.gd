@@ -38,6 +38,9 @@ static var telemetry_dir: String = str(_section("files").get("telemetry", "")).g
 static var reserved_folders: PackedStringArray = _strings(_section("files").get("reserved_folders"))
 ## The lowest effective sample rate a telemetry file should have, Hz.
 static var telemetry_min_rate_hz: float = _schema.get("telemetry_min_rate_hz", 0.0)
+## The longest time between two telemetry rows that contact_time_s counts (a longer gap,
+## samples lost, counts this much).
+static var metric_max_row_step_s: float = _schema.get("metric_max_row_step_s", 0.0)
 static var ratings_columns: PackedStringArray = _names(columns("ratings"))
 static var trials_columns: PackedStringArray = _names(columns("trials"))
 static var telemetry_columns: PackedStringArray = _names(columns("telemetry"))

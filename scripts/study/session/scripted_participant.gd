@@ -5,27 +5,30 @@ extends Node
 ## [StudyRunner] adds it (see its [code]--scripted-participant[/code] option), hands it the
 ## session ([method setup]) and tells it each screen it shows ([method show_screen]); the
 ## runner's [member StudyRunner.autopilot] steers the simulated hand in the levels.
-## Ratings are drawn from a generator seeded with the id, so a run is reproducible.
+## Ratings, and unless told otherwise the demographics and the favourite
+## ([method profile_of]), are drawn from generators seeded with the id, so a run is
+## reproducible and a study of several scripted participants varies as real ones do.
 
 ## Emitted when the session ended (the thank-you is showing).
 signal finished
+
+## How many methods a drawn favourite names, each entry equally likely: none (abstains),
+## one (three times as often) or two.
+const FAVOURITE_COUNTS: Array[int] = [0, 1, 1, 1, 2]
 
 ## Id to start (or resume).
 var participant_id: String = "SCRIPTED"
 ## Resume [member participant_id] instead of starting it.
 var resume: bool = false
-## Demographics entered on the start screen.
-var demographics: Dictionary = {
-	"age_band": "20-29",
-	"gender": "undisclosed",
-	"handedness": "right",
-	"hand_used": "left",
-	"gaming_experience": "some",
-}
+## Demographics entered on the start screen; empty: [method profile_of]'s.
+var demographics: Dictionary = {}
 ## Seconds spent on each demonstration level / condition before moving on.
 var practice_seconds: float = 0.4
-## Favourite conditions by presentation position (0-based; "Method 1" is 0).
-var favourite: PackedInt32Array = PackedInt32Array([2])
+## Favourite conditions by presentation position (0-based; "Method 1" is 0), used when
+## [member draw_favourite] is off.
+var favourite: PackedInt32Array = PackedInt32Array()
+## Take the favourite from [method profile_of] instead of [member favourite].
+var draw_favourite: bool = true
 ## Free text entered at the end.
 var differences_text: String = "Scripted run: the methods felt different."
 
@@ -41,9 +44,37 @@ func setup(session: StudySession, screen: Control) -> void:
 	_session = session
 	_screen = screen
 	_rng.seed = hash(participant_id)
+	var profile: Dictionary = profile_of(participant_id)
+	if demographics.is_empty():
+		demographics = profile["demographics"]
+	if draw_favourite:
+		favourite = profile["favourite"]
 	_session.phase_changed.connect(_on_phase_changed)
 	if _session.phase == StudySession.Phase.START and _screen is StartScreen:
 		_on_phase_changed.call_deferred(StudySession.Phase.START)
+
+
+## What scripted participant [param id] answers when not told: [code]demographics[/code]
+## (each key of the schema's demographics, a value drawn from its values) and
+## [code]favourite[/code] (presentation positions, ascending; as many as
+## [constant FAVOURITE_COUNTS] draws), from a generator seeded with the id.
+static func profile_of(id: String) -> Dictionary:
+	var rng: RandomNumberGenerator = RandomNumberGenerator.new()
+	rng.seed = hash("profile:" + id)
+	var drawn: Dictionary = {}
+	for key: String in StudyFormat.demographic_keys():
+		var values: PackedStringArray = StudyFormat.demographic_values(key)
+		drawn[key] = values[rng.randi_range(0, values.size() - 1)]
+	var count: int = FAVOURITE_COUNTS[rng.randi_range(0, FAVOURITE_COUNTS.size() - 1)]
+	var positions: Array[int] = []
+	for i: int in StudyFormat.conditions.size():
+		positions.append(i)
+	var chosen: PackedInt32Array = PackedInt32Array()
+	for _pick: int in count:
+		var position: int = positions.pop_at(rng.randi_range(0, positions.size() - 1))
+		chosen.append(position)
+	chosen.sort()
+	return {"demographics": drawn, "favourite": chosen}
 
 
 ## The runner shows [param screen] now.

@@ -59,6 +59,8 @@ func start(id: String, demographics: Dictionary, options: Dictionary) -> void:
 		"participant_number": number,
 		"constraint_update": str(config.condition("constraint")["update"]),
 		"trials_per_condition": config.trials_per_condition(),
+		# What a reader needs to recompute wall_collisions from the telemetry (FORMAT.md).
+		"contact_gap_s": config.number("contact_gap_s"),
 	}
 	if not candidate.create(meta):
 		refused.emit("Could not create the participant's data: %s" % candidate.last_error)

@@ -10,6 +10,7 @@ extends RefCounted
 ## --scripted-participant=ID  a ScriptedParticipant plays the whole session (tests, demos)
 ## --resume                   the scripted participant resumes ID instead of starting it
 ## --hold=SECONDS             the scripted participant waits this long in each trial
+## --touch-walls              the scripted participant pushes into (and through) the walls
 ## --quit-when-done           quit when the session ends (exit code 0)
 ## [/codeblock]
 
@@ -33,6 +34,8 @@ static func command_line() -> Dictionary:
 			out["scripted_resume"] = true
 		elif arg.begins_with("--hold="):
 			out["scripted_hold_s"] = value.to_float()
+		elif arg == "--touch-walls":
+			out["scripted_touches_walls"] = true
 		elif arg == "--quit-when-done":
 			out["quit_when_done"] = true
 	return out

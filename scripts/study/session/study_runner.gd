@@ -48,6 +48,13 @@ const FINAL_SCENE: PackedScene = preload("res://scenes/study/screens/final_scree
 		return _context.pilot_hold_s
 	set(value):
 		_context.pilot_hold_s = value
+## The scripted participant pushes into the walls around the start of each trial (and
+## through them in position control) before heading for the goal.
+@export var scripted_touches_walls: bool:
+	get:
+		return _context.pilot_touches_walls
+	set(value):
+		_context.pilot_touches_walls = value
 ## Quit the program when the session ends.
 @export var quit_when_done: bool = false
 ## Seconds the "Goal!" message shows before the next screen.

@@ -4,9 +4,10 @@ extends Node
 ## and the forces, through the [code]Haptics[/code] autoload's server.
 ## [br][br]
 ## [b]none[/b] and [b]movement[/b]: acceleration control; the render mode is
-## [code]movement[/code] with the condition's [code]contact_model[/code]; a [StudyProbe] on
-## the player submits the frames with the forces the condition enables (none:
-## [code]Haptics.force_scale[/code] 0, so nothing is felt).
+## [code]movement[/code] with the condition's [code]contact_model[/code]; a [StudyProbe],
+## the player's only probe (the one its scene brings is removed), submits the frames with
+## the forces the condition enables (none: [code]Haptics.force_scale[/code] 0, so nothing is
+## felt).
 ## [b]constraint[/b]: position control; the level's wall outlines and the [MazeMap] go to
 ## the native finite-proxy renderer, the render mode is [code]constraint[/code], and the
 ## player becomes a follower drawn where the proxy is (its own physics is off; the probe
@@ -30,7 +31,8 @@ var settings: Dictionary = {}
 var level: StudyLevel = null
 ## The level's avatar.
 var player: Player = null
-## The probe added to the avatar.
+## The avatar's only probe while the condition is set up: [method setup] removes the ones
+## the avatar came with (the player scene's own) before adding it.
 var probe: StudyProbe = null
 ## Maze ↔ workspace map (position control; also valid for the others).
 var map: MazeMap = null
@@ -108,6 +110,7 @@ func setup(p_level: StudyLevel, p_condition: String, p_settings: Dictionary) -> 
 	map = MazeMap.new(
 		level.get_bounds(), str(settings.get("workspace", "disc")), half_extent, radius
 	)
+	_remove_probes(player)
 	probe = StudyProbe.new()
 	probe.name = "StudyProbe"
 	probe.configure(settings)
@@ -173,13 +176,25 @@ func release() -> void:
 	is_live = false
 	Haptics.set_render_mode(&"movement")
 	if is_instance_valid(probe):
-		probe.queue_free()
+		_remove_probe(probe)
 	probe = null
 	if is_instance_valid(player):
 		player.set_physics_process(true)
 		player.physics_interpolation_mode = Node.PHYSICS_INTERPOLATION_MODE_INHERIT
 	if not piloted:
 		Haptics.hand_follows_input = true
+
+
+## The [HapticProbe]s on [param body] (the avatar): while a condition is set up, exactly
+## one, the rig's [member probe].
+static func probes_on(body: Node) -> Array[HapticProbe]:
+	var out: Array[HapticProbe] = []
+	if body == null:
+		return out
+	for child: Node in body.get_children():
+		if child is HapticProbe:
+			out.append(child as HapticProbe)
+	return out
 
 
 ## Puts the avatar back on the level's start, at rest (acceleration control).
@@ -282,6 +297,22 @@ func _update_hand_following() -> void:
 		piloted or (StudyFormat.is_position_control(condition) and Haptics.device.is_simulated())
 	)
 	Haptics.hand_follows_input = not own_hand
+
+
+# Every probe already on the avatar goes, at once: the player scene brings its own (the
+# side-scroller's, material "hard" with impacts), and a probe only queued for deletion
+# still submits frames this tick. Two probes would take turns at the server's frame and
+# push their own impacts: the condition would render what neither configuration says.
+func _remove_probes(body: Node) -> void:
+	for other: HapticProbe in probes_on(body):
+		_remove_probe(other)
+
+
+func _remove_probe(other: HapticProbe) -> void:
+	var parent: Node = other.get_parent()
+	if parent != null:
+		parent.remove_child(other)
+	other.queue_free()
 
 
 func _send_constraint() -> bool:

@@ -23,6 +23,9 @@ var autopilot: bool = false
 var pilot: StudyPilot = null
 ## The scripted participant keeps still this long at the start of each trial, seconds.
 var pilot_hold_s: float = 0.0
+## The scripted participant pushes into the walls before heading for the goal
+## ([member StudyPilot.touch_walls]).
+var pilot_touches_walls: bool = false
 
 var _centre_held: float = 0.0
 

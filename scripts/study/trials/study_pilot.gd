@@ -8,7 +8,8 @@ extends RefCounted
 ## and physics. Position control: a target point travels along the path at [member speed]
 ## (waiting while the proxy lags behind it, as at a wall), and the hand is put where the
 ## maze map places that point; the proxy follows the device. Before a trial starts the hand
-## goes to [method ConditionRig.start_hand].
+## goes to [method ConditionRig.start_hand]. With [member touch_walls] it first pushes into
+## the walls around the start ([WallPushes]).
 
 ## Path in maze units, start to goal.
 var path: PackedVector2Array = PackedVector2Array()
@@ -16,6 +17,11 @@ var path: PackedVector2Array = PackedVector2Array()
 var speed: float = 260.0
 ## Seconds to keep still at the start of each trial (lets tests act mid-trial).
 var hold_s: float = 0.0
+## Push into the walls around the start (and, in position control, through them) before
+## heading for the goal: the participant who touches the walls.
+var touch_walls: bool = false
+## The wall pushes of [member touch_walls] (their progress, for tests).
+var pushes: WallPushes = null
 
 var _autopilot: Autopilot = null
 var _carrot: Vector2 = Vector2.ZERO
@@ -27,6 +33,7 @@ func _init(p_path: PackedVector2Array = PackedVector2Array(), p_speed: float = 2
 	path = p_path
 	speed = p_speed
 	_autopilot = Autopilot.new(p_path)
+	pushes = WallPushes.new(p_speed)
 	_carrot = p_path[0] if not p_path.is_empty() else Vector2.ZERO
 
 
@@ -35,6 +42,8 @@ func steer(rig: ConditionRig, delta: float) -> Vector2:
 	if _held < hold_s:
 		_held += delta
 		return rig.start_hand()
+	if touch_walls and not pushes.is_finished():
+		return pushes.steer(rig, delta)
 	if StudyFormat.is_position_control(rig.condition):
 		return rig.map.hand_of(_advance(rig.avatar_position(), delta))
 	var player: Player = rig.player

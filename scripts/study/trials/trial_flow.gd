@@ -128,6 +128,7 @@ func _begin_trial() -> void:
 		return
 	_context.pilot = StudyPilot.new(level.get_autopilot_path(), config.number("autopilot_speed"))
 	_context.pilot.hold_s = _context.pilot_hold_s
+	_context.pilot.touch_walls = _context.pilot_touches_walls
 	_ticks = 0
 	_context.stage.hide_card()
 	_context.stage.show_hand(Vector2.ZERO, false)

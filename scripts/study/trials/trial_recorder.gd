@@ -3,17 +3,18 @@ extends RefCounted
 ## Measures one maze trial and writes its servo telemetry (FORMAT.md).
 ##
 ## Fed once per physics tick ([method tick]) with the avatar's position, it drains the
-## server's 1 kHz telemetry and, from every sample, accumulates the rendered force (mean and
-## maximum of the x-y magnitude of the force written to the device), the time in contact
-## with a wall and the wall collisions (contact onsets; a contact that resumes within
-## [member contact_gap_s] continues the same collision). Contact is the frame's contact
-## flag in acceleration control and the proxy-held flag in position control. The path
-## length is summed over physics ticks. Every [member decimation]-th sample goes to the
+## server's 1 kHz telemetry and keeps every [member decimation]-th sample as a row of the
 ## telemetry file, in game axes (y down): input is the device position over the workspace
 ## radius, avatar the avatar's position in level pixels (between physics ticks interpolated;
 ## in position control the proxy, recovered exactly from the constraint force:
-## proxy = device + F/k_c), force the rendered total. Lines are appended in chunks every
-## [member flush_s] seconds and at the end, each chunk one durable write.
+## proxy = device + F/k_c), force the rendered total, in_contact the frame's contact flag
+## (acceleration control) or the proxy-held flag (position control). Every measure is
+## computed from the rows as written (the numbers the file holds, after rounding), so a
+## reader recomputes them from the file (FORMAT.md, "Trial metrics"): the rendered force's
+## mean and maximum x-y magnitude, the time in contact, the wall collisions (contact onsets;
+## a contact that resumes within [member contact_gap_s] continues the same collision) and
+## the path length. Lines are appended in chunks every [member flush_s] seconds and at the
+## end, each chunk one durable write.
 
 ## The trial's measures, filled by [method finish].
 var result: TrialResult = null
@@ -38,16 +39,9 @@ var _col: Dictionary[String, int] = {}
 var _lines: PackedStringArray = PackedStringArray()
 var _since_flush: float = 0.0
 var _t0: float = -1.0
-var _last_t: float = -1.0
 var _sample_count: int = 0
 var _prev_avatar: Vector2 = Vector2.ZERO
-var _force_sum: float = 0.0
-var _force_samples: int = 0
-var _max_force: float = 0.0
-var _contact_time: float = 0.0
-var _collisions: int = 0
-var _last_contact_t: float = -INF
-var _path: float = 0.0
+var _metrics: TelemetryMetrics = TelemetryMetrics.new()
 
 
 ## A recorder for trial [param trial_index] of [param condition] on [param level_id];
@@ -96,7 +90,6 @@ func begin(avatar: Vector2) -> bool:
 ## One physics tick: [param avatar] is the avatar's position now (maze units), [param delta]
 ## the tick. Returns false when a write failed (see [member error]).
 func tick(avatar: Vector2, delta: float) -> bool:
-	_path += avatar.distance_to(_prev_avatar)
 	_process_samples(_drain(), avatar)
 	_prev_avatar = avatar
 	_since_flush += delta
@@ -123,15 +116,14 @@ func flush() -> bool:
 ## write failed.
 func finish(avatar: Vector2, time_s: float, completed: bool) -> bool:
 	_process_samples(_drain(), avatar)
-	_path += avatar.distance_to(_prev_avatar)
 	_prev_avatar = avatar
 	result.time_s = time_s
 	result.completed = completed
-	result.wall_collisions = _collisions
-	result.contact_time_s = minf(_contact_time, time_s)
-	result.path_length_px = _path
-	result.mean_force_n = _force_sum / _force_samples if _force_samples > 0 else 0.0
-	result.max_force_n = _max_force
+	result.wall_collisions = _metrics.collisions
+	result.contact_time_s = minf(_metrics.contact_time_s, time_s)
+	result.path_length_px = _metrics.path_length_px
+	result.mean_force_n = _metrics.mean_force()
+	result.max_force_n = _metrics.max_force_n
 	return flush()
 
 
@@ -155,46 +147,30 @@ func _process_samples(samples: PackedFloat32Array, avatar: Vector2) -> void:
 		var t: float = samples[base + _col["t"]]
 		if _t0 < 0.0:
 			_t0 = t
-		var dt: float = clampf(t - _last_t, 0.0, 0.01) if _last_t >= 0.0 else 0.0
-		_last_t = t
-		var device: Vector2 = Vector2(
-			samples[base + _col["position_x"]], -samples[base + _col["position_y"]]
-		)
-		var force: Vector2 = Vector2(
-			samples[base + _col["total_x"]], -samples[base + _col["total_y"]]
-		)
-		var flags: int = roundi(samples[base + _col["flags"]])
-		var in_contact: bool = (flags & _contact_flag) != 0
-		var magnitude: float = force.length()
-		_force_sum += magnitude
-		_force_samples += 1
-		_max_force = maxf(_max_force, magnitude)
-		if in_contact:
-			_contact_time += dt
-			if t - _last_contact_t > contact_gap_s:
-				_collisions += 1
-			_last_contact_t = t
 		if _sample_count % decimation == 0:
+			var device: Vector2 = Vector2(
+				samples[base + _col["position_x"]], -samples[base + _col["position_y"]]
+			)
+			var force: Vector2 = Vector2(
+				samples[base + _col["total_x"]], -samples[base + _col["total_y"]]
+			)
+			var flags: int = roundi(samples[base + _col["flags"]])
 			var where: Vector2 = _avatar_at(samples, base, device, i, count, avatar)
 			var input: Vector2 = (device / radius).clamp(-Vector2.ONE, Vector2.ONE)
-			(
-				_lines
-				. append(
-					(
-						"%s,%s,%s,%s,%s,%s,%s,%d\n"
-						% [
-							StudyFormat.number(t - _t0, 4),
-							StudyFormat.number(input.x, 4),
-							StudyFormat.number(input.y, 4),
-							StudyFormat.number(where.x, 2),
-							StudyFormat.number(where.y, 2),
-							StudyFormat.number(force.x, 4),
-							StudyFormat.number(force.y, 4),
-							1 if in_contact else 0,
-						]
-					)
-				)
+			var fields: PackedStringArray = PackedStringArray(
+				[
+					StudyFormat.number(t - _t0, 4),
+					StudyFormat.number(input.x, 4),
+					StudyFormat.number(input.y, 4),
+					StudyFormat.number(where.x, 2),
+					StudyFormat.number(where.y, 2),
+					StudyFormat.number(force.x, 4),
+					StudyFormat.number(force.y, 4),
+					"1" if (flags & _contact_flag) != 0 else "0",
+				]
 			)
+			_lines.append(StudyFormat.csv_line(fields))
+			_metrics.add_row(fields, contact_gap_s)
 		_sample_count += 1
 
 

@@ -12,6 +12,7 @@ import numpy as np
 import pytest
 
 import analyze
+import figures
 import studywriter as w
 from conftest import run_tool, write_hand_study
 
@@ -84,6 +85,21 @@ def test_report_and_summary(analysed):
     assert tm["wall_collisions"]["mean"] == pytest.approx((4 * 3 + 9) / 5)
     assert tm["wall_collisions"]["n"] == 5
     assert "F(2, 6) = 19.00, p = .003" in stdout
+
+
+def test_figure_7_shows_the_papers_test_beside_the_repeated_measures_one(analysed):
+    out, _ = analysed
+    res = json.loads((out / "summary.json").read_text())
+    assert figures.fig7_tests(res) == [
+        "Paper's test (one-way ANOVA, every rating): F(2, 69) = 15.61, p < .001",
+        "Repeated measures (participant totals): F(2, 6) = 19.00, p = .003",
+    ]
+
+
+def test_figure_7_says_when_a_test_cannot_be_computed():
+    nothing = {"F": None, "p": None, "df_between": 2, "df_within": 0, "df_conditions": 2, "df_error": 0}
+    res = {"tests": {"oneway_anova_pooled_ratings": nothing, "rm_anova_total": nothing}}
+    assert [line.split(": ")[1] for line in figures.fig7_tests(res)] == ["n/a", "n/a"]
 
 
 def test_script_second_run_ignores_its_own_output_folder(analysed):

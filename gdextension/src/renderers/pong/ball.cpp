@@ -4,8 +4,6 @@ namespace haptics {
 
 namespace {
 
-// Solid sphere: the rolling condition's share of the slip velocity, 1 / (1 + m r^2 / I).
-constexpr double ROLLING_SHARE = 2.0 / 7.0;
 // And the angular response to a tangential impulse, r m / I = 5 / (2 r) per unit dv.
 constexpr double ANGULAR_PER_TANGENTIAL = 5.0 / 2.0;
 

@@ -27,6 +27,10 @@
 
 namespace haptics {
 
+// Solid sphere: the rolling condition's share of the slip velocity, 1 / (1 + m r^2 / I):
+// what friction takes out of a slip before the ball rolls (walls, floor, paddles).
+inline constexpr double ROLLING_SHARE = 2.0 / 7.0;
+
 struct BallState {
 	Vec3 position; // World, m.
 	Vec3 velocity; // World, m/s.

@@ -27,6 +27,8 @@ PaddleLaw make_paddle_law(const PongConfig &p_config) {
 	law.spin_gain = p_config.spin_gain;
 	law.spin_friction_per_s = p_config.spin_friction_per_s;
 	law.spin_force_gain = p_config.spin_force_gain;
+	law.ball_mass_kg = p_config.ball_mass_kg;
+	law.grip_friction = p_config.surface_friction;
 	return law;
 }
 
@@ -37,9 +39,12 @@ double hand_contact_force(double p_delta_m, const PaddleLaw &p_law) {
 void PaddleContactTracker::reset() {
 	side_ = 0;
 	touching_ = false;
+	spin_in_ = Vec3{};
+	grip_given_ = Vec3{};
 }
 
-PaddleContact PaddleContactTracker::update(const PaddlePose &p_pose, const BallState &p_ball, const PaddleLaw &p_law) {
+PaddleContact PaddleContactTracker::update(
+		const PaddlePose &p_pose, const BallState &p_ball, const PaddleLaw &p_law, double p_dt_s) {
 	PaddleContact contact;
 	const Vec3 offset = p_ball.position - p_pose.center;
 	const double s = dot(offset, p_pose.normal);
@@ -62,10 +67,16 @@ PaddleContact PaddleContactTracker::update(const PaddlePose &p_pose, const BallS
 	// d(delta)/dt = -(v_ball - v_paddle).n_s: positive while the two close in.
 	const double closing_speed = -dot(p_ball.velocity - p_pose.velocity, contact.toward_ball);
 	contact.approach_speed_m_per_s = std::max(0.0, closing_speed);
-	const double push = p_law.ball_stiffness_n_per_m * delta + p_law.ball_damping_n_s_per_m * closing_speed;
-	contact.ball_force_n = contact.toward_ball * std::max(0.0, push);
-
+	const double push = std::max(
+			0.0, p_law.ball_stiffness_n_per_m * delta + p_law.ball_damping_n_s_per_m * closing_speed);
 	const Vec3 lever = contact.anchor - p_ball.position; // Centre -> contact point.
+	if (contact.started) {
+		spin_in_ = p_ball.spin;
+		grip_given_ = Vec3{};
+	}
+	contact.grip_force_n = grip_force(contact.toward_ball, push, p_law, p_dt_s);
+	contact.ball_force_n = contact.toward_ball * push + contact.grip_force_n;
+
 	contact.spin_rate = p_ball.spin * -p_law.spin_friction_per_s;
 	if (p_pose.spin) {
 		contact.spin_rate += cross(lever, p_pose.velocity) * p_law.spin_gain;
@@ -73,6 +84,22 @@ PaddleContact PaddleContactTracker::update(const PaddlePose &p_pose, const BallS
 	contact.hand_contact_n = contact.toward_ball * -hand_contact_force(delta, p_law);
 	contact.hand_spin_n = cross(p_ball.spin, lever) * p_law.spin_force_gain;
 	return contact;
+}
+
+Vec3 PaddleContactTracker::grip_force(
+		const Vec3 &p_toward_ball, double p_push_n, const PaddleLaw &p_law, double p_dt_s) {
+	if (p_dt_s <= 0.0 || p_law.ball_mass_kg <= 0.0) {
+		return Vec3{};
+	}
+	// The ball's surface where it meets the face, a full radius from its centre (even when a
+	// fast ball has crossed the plane within a tick).
+	const Vec3 lever = p_toward_ball * -p_law.ball_radius_m;
+	const Vec3 owed = cross(spin_in_, lever) * -ROLLING_SHARE - grip_given_;
+	const double owed_speed = length(owed);
+	const double allowed_speed = p_law.grip_friction * p_push_n * p_dt_s / p_law.ball_mass_kg;
+	const Vec3 step = owed_speed <= allowed_speed ? owed : owed * (allowed_speed / owed_speed);
+	grip_given_ += step;
+	return step * (p_law.ball_mass_kg / p_dt_s);
 }
 
 } // namespace haptics

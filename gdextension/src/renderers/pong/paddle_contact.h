@@ -35,6 +35,19 @@
 // and pushes the hand against the ball's surface motion. (a - p), the lever from the
 // centre to the contact point, gives the friction torque's direction and the drag of the
 // ball's surface on the paddle. The paper's R_p is the identity: w is already in world axes.
+//
+// Spin's grip (the paper: later contacts "with walls or paddles" change the ball's velocity
+// by its spin). The spin the ball brings into a contact, w_0 (the tick it starts), slips its
+// surface over the paddle at u = w_0 x (-r n_s); the paddle's face grips it as the
+// court's surfaces do (ball.h), with surface_friction:
+//   dv_t  -> -(2/7) u                    over the contact (a sphere that stops slipping)
+//   |F_t| <= mu |F_b|                     (Coulomb: no more than friction allows)
+// applied as a force on the ball: each tick the part still owed, at most what friction
+// allows. Only the spin brought in grips: the spin a brush makes during the contact (the
+// k_r term) leaves with the ball and grips on its next contact, so a brush does not push
+// the ball against itself. The paddle's own sliding motion still does not drag the ball
+// (the paper's push is perpendicular to the paddle), and the spin's loss stays the k_rf
+// term.
 
 #include "core/base/vec3.h"
 #include "renderers/pong/ball.h"
@@ -62,6 +75,8 @@ struct PaddleLaw {
 	double spin_gain = 0.0;
 	double spin_friction_per_s = 0.0;
 	double spin_force_gain = 0.0;
+	double ball_mass_kg = 0.0;
+	double grip_friction = 0.0; // mu of the spin's grip.
 };
 
 PaddleLaw make_paddle_law(const PongConfig &p_config);
@@ -81,24 +96,32 @@ struct PaddleContact {
 	double approach_speed_m_per_s = 0.0; // max(0, d(delta)/dt): how fast they close in.
 	Vec3 toward_ball; // n_s.
 	Vec3 anchor; // a.
-	Vec3 ball_force_n; // F_b, world.
+	Vec3 ball_force_n; // F_b + F_t, world.
+	Vec3 grip_force_n; // F_t alone, world.
 	Vec3 spin_rate; // dw/dt, world, rad/s^2.
 	Vec3 hand_contact_n; // F_h, world.
 	Vec3 hand_spin_n; // F_hr, world.
 };
 
-// One paddle's memory between ticks: the side of its plane the ball is on, and whether
-// they touch.
+// One paddle's memory between ticks: the side of its plane the ball is on, whether they
+// touch, and through a contact the spin the ball brought and the grip given so far.
 class PaddleContactTracker {
 public:
 	void reset();
-	PaddleContact update(const PaddlePose &p_pose, const BallState &p_ball, const PaddleLaw &p_law);
+	// p_dt_s: the servo period the ball is integrated with (the grip's per-tick share).
+	PaddleContact update(const PaddlePose &p_pose, const BallState &p_ball, const PaddleLaw &p_law, double p_dt_s);
 	bool touching() const { return touching_; }
 	int side() const { return side_; } // +1, -1; 0 before the first update.
 
 private:
+	// F_t for this tick (world), p_toward_ball the face's normal toward the ball; moves the
+	// grip given so far on.
+	Vec3 grip_force(const Vec3 &p_toward_ball, double p_push_n, const PaddleLaw &p_law, double p_dt_s);
+
 	int side_ = 0;
 	bool touching_ = false;
+	Vec3 spin_in_; // w_0.
+	Vec3 grip_given_; // The grip's dv_t so far this contact, m/s.
 };
 
 } // namespace haptics

@@ -63,9 +63,10 @@ struct PongConfig {
 	// --- Court surfaces -----------------------------------------------------------------
 	double restitution_court = 0.85; // A table-tennis ball on a table.
 	double restitution_wall = 0.9; // Walls a little livelier than the floor: rallies last.
-	// Coulomb friction at court bounces: what turns spin into a change of direction, the
-	// paper's "spin deflects the ball on later contacts". 0.35 lets a 20 rad/s spin bend
-	// the bounce visibly without making every bounce a skid.
+	// Coulomb friction at court bounces and of a paddle's face on the spin a ball brings
+	// (paddle_contact.h): what turns spin into a change of direction, the paper's "spin
+	// deflects the ball on later contacts with walls or paddles". 0.35 lets a 20 rad/s spin
+	// bend the bounce visibly without making every bounce a skid.
 	double surface_friction = 0.35;
 	// Slower floor touches are the ball rolling or settling, not bounces: no FLOOR event (a
 	// rolling ball must not cost a life on every tick).

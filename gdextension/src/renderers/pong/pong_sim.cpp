@@ -285,7 +285,7 @@ void PongSim::step(double p_dt_s, const HandSample *p_hand) {
 	hand_.contact = Vec3{};
 	hand_.spin = Vec3{};
 	for (int p = 0; p < players(); ++p) {
-		const PaddleContact &contact = contacts_[p] = trackers_[p].update(poses_[p], ball_, law_);
+		const PaddleContact &contact = contacts_[p] = trackers_[p].update(poses_[p], ball_, law_, p_dt_s);
 		if (contact.started) {
 			++paddle_contacts_;
 			emit(PongEventType::PADDLE, ball_.position, contact.approach_speed_m_per_s, p);

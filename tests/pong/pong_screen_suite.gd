@@ -1,0 +1,17 @@
+extends TestSuite
+## The base of the suites that open a Pong screen: [member _pong] (a test's screen, or null)
+## is freed after each test, and two frames let its servo session close before the next.
+
+var _pong: PongScreen = null
+
+
+func after_each() -> void:
+	await _free_pong()
+
+
+## Frees [member _pong] and waits for it to go.
+func _free_pong() -> void:
+	if _pong != null and is_instance_valid(_pong):
+		_pong.queue_free()
+	_pong = null
+	await wait_process_frames(2)

@@ -1,0 +1,91 @@
+#!/usr/bin/env bash
+# The rigid-body trial: Godot's demo 2d/physics_platformer (its Godot 4 version; a checkout
+# you give, nothing is downloaded) with this repository's haptics addon installed the
+# README's way, run headless under a scripted input (physics_platformer_driver.gd): prints a
+# table of landings and wall hits (from the physics server) against the impacts the probe
+# sent, the peak impact force, the enemy on the head felt as weight, doubled surfaces, the
+# seesaw plank taken for a load, and the lift ride's lost floors.
+#
+# Usage: tools/trials/physics_platformer.sh DEMO_DIR [--addon-rev REV]
+#   DEMO_DIR      a copy of godot-demo-projects/2d/physics_platformer
+#   --addon-rev   install the addon's scripts as they were at REV (e.g. 519d04f) instead of
+#                 the worktree's; the native library is always the worktree's bin/ (make import)
+# The copy goes to .build/trial/physics_platformer-<rev|worktree>/ (rebuilt each run); the
+# run's log is trial.log there.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+ROOT="$PWD"
+
+usage() { sed -n '9,15p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
+[[ $# -ge 1 ]] || usage
+DEMO="$1"
+shift
+REV=""
+while [[ $# -gt 0 ]]; do
+	case "$1" in
+	--addon-rev) REV="${2:?--addon-rev needs a revision}"; shift 2 ;;
+	*) usage ;;
+	esac
+done
+[[ -f "$DEMO/project.godot" && -f "$DEMO/player/player.gd" && -f "$DEMO/stage.tscn" ]] ||
+	{ echo "trial: $DEMO is not the physics_platformer demo (project.godot, player/player.gd, stage.tscn)" >&2; exit 2; }
+ls addons/haptics/bin/libhaptics.linux.template_debug.x86_64.so >/dev/null 2>&1 ||
+	{ echo "trial: no native library in addons/haptics/bin (make import)" >&2; exit 1; }
+
+LABEL="${REV:-worktree}"
+OUT="$ROOT/.build/trial"
+DEST="$OUT/physics_platformer-$LABEL"
+rm -rf "$DEST"
+mkdir -p "$DEST"
+cp -r "$DEMO/." "$DEST/"
+if [[ -n "$REV" ]]; then
+	git archive "$REV" addons/haptics | tar -x -C "$DEST"
+	cp -r addons/haptics/bin "$DEST/addons/haptics/"
+else
+	mkdir -p "$DEST/addons"
+	cp -r addons/haptics "$DEST/addons/"
+fi
+mkdir -p "$DEST/trial"
+cp tools/trials/physics_platformer_driver.gd "$DEST/trial/driver.gd"
+cat >"$DEST/trial/driver.tscn" <<'TSCN'
+[gd_scene load_steps=2 format=3]
+
+[ext_resource type="Script" path="res://trial/driver.gd" id="1_driver"]
+
+[node name="Trial" type="Node"]
+script = ExtResource("1_driver")
+TSCN
+# The addon README's install without the editor: the autoload, the plugin, the extension
+# listed before the first import; the device's hand is fed into the demo's walk actions.
+cat >>"$DEST/project.godot" <<'CFG'
+
+[autoload]
+
+Haptics="*res://addons/haptics/haptics.gd"
+
+[editor_plugins]
+
+enabled=PackedStringArray("res://addons/haptics/plugin.cfg")
+
+[haptics]
+
+input/feed_actions=PackedStringArray("move_left", "move_right", "", "")
+input/hand_actions=PackedStringArray()
+CFG
+mkdir -p "$DEST/.godot"
+echo "res://addons/haptics/haptics.gdextension" >"$DEST/.godot/extension_list.cfg"
+
+export XDG_CONFIG_HOME="$OUT/.xdg/config" XDG_DATA_HOME="$OUT/.xdg/data" XDG_CACHE_HOME="$OUT/.xdg/cache"
+GODOT="$ROOT/tools/godot"
+if ! timeout 300 "$GODOT" --headless --path "$DEST" --import >"$DEST/import.log" 2>&1; then
+	tail -n 30 "$DEST/import.log" >&2
+	echo "trial: the import failed (log: $DEST/import.log)" >&2
+	exit 1
+fi
+set +e
+timeout 300 "$GODOT" --headless --path "$DEST" res://trial/driver.tscn >"$DEST/trial.log" 2>&1
+rc=$?
+set -e
+grep -E '^(TRIAL|HapticProbe)' "$DEST/trial.log" || true
+grep -E '^(ERROR|SCRIPT ERROR)' "$DEST/trial.log" | sort | uniq -c | head -n 20 >&2 || true
+[[ $rc -eq 0 ]] || { echo "trial: the run exited $rc (log: $DEST/trial.log)" >&2; exit 1; }
