@@ -9,7 +9,7 @@ packages=(build-essential cmake ninja-build pkg-config libhidapi-dev libusb-1.0-
   polkitd util-linux debootstrap
   # The Windows build (tools/windows/): MinGW-w64 (the posix thread model: std::thread) and
   # Wine to run its doctests.
-  g++-mingw-w64-x86-64-posix wine64 dpkg-dev)
+  g++-mingw-w64-x86-64-posix wine64)
 
 if ! command -v dpkg-query >/dev/null || ! command -v apt-get >/dev/null; then
   echo "install-deps: no apt here; install yourself: a C++20 compiler, CMake 3.22+, Ninja," \

@@ -9,8 +9,8 @@
 //
 // hidraw_sysfs_linux.cpp reads sysfs; hidraw_sysfs_windows.cpp answers the same questions for
 // hidapi's Windows backend, whose paths are device interface names (\\?\hid#vid_...): no
-// index, no kernel force-feedback driver, and no report descriptor (Windows keeps only the
-// parsed form; hidapi 0.14 rebuilds the bytes from it, 0.13 cannot).
+// index and no kernel force-feedback driver; the report descriptor is read by opening the
+// device (Windows keeps only the parsed form, from which hidapi 0.14 rebuilds the bytes).
 
 #include "core/base/status.h"
 

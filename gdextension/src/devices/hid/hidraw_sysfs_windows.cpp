@@ -1,5 +1,11 @@
 #include "devices/hid/hidraw_sysfs.h"
 
+#include "devices/hid/hidapi_open.h"
+
+#include <hidapi.h>
+
+#include <utility>
+
 // hidapi's Windows backend: its paths are device interface names, not /dev/hidrawN, and
 // Windows has no sysfs. Each answer is what Windows offers (hidraw_sysfs.h).
 
@@ -13,13 +19,29 @@ std::string hidraw_hid_device_sysfs_dir(const std::string &, const std::string &
 	return {};
 }
 
+// Windows lets a normal user open a HID device for the descriptor (no udev rules to miss), so
+// the probe opens it briefly. The rebuilt descriptor carries the same reports, fields and
+// usages as the device's own, which is all the PID layout parser reads.
 Status read_hidraw_report_descriptor(const std::string &p_hidraw_path, std::vector<uint8_t> &r_bytes,
 		const std::string &) {
 	r_bytes.clear();
-	return Status::error(StatusCode::UNSUPPORTED,
-			"cannot read the HID report descriptor of '%s' on Windows (hidapi 0.13 has no call for it; "
-			"0.14 rebuilds it from Windows' parsed form)",
-			p_hidraw_path.c_str());
+	hid_device *device = nullptr;
+	const Status opened = open_hidraw_device(p_hidraw_path, "HID descriptor", device);
+	if (!opened) {
+		return opened;
+	}
+	std::vector<uint8_t> bytes(HID_API_MAX_REPORT_DESCRIPTOR_SIZE, 0);
+	const int length = hid_get_report_descriptor(device, bytes.data(), bytes.size());
+	char reason[128];
+	narrow_hid_text(length > 0 ? nullptr : hid_error(device), "no reason given", reason, sizeof(reason));
+	hid_close(device);
+	if (length <= 0) {
+		return Status::error(StatusCode::DEVICE_ERROR, "cannot read the HID report descriptor of '%s': %s",
+				p_hidraw_path.c_str(), reason);
+	}
+	bytes.resize(static_cast<size_t>(length));
+	r_bytes = std::move(bytes);
+	return Status::success();
 }
 
 // The Linux check guards against a hidapi bug of its hidraw backend; the Windows backend
