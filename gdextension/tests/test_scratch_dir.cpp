@@ -30,7 +30,8 @@ TEST_CASE("scratch_dir: a fresh folder under the temporary directory, removed wi
 		const testing::ScratchDir dir("haptics-scratch");
 		root = dir.root();
 		CHECK(fs::is_directory(root));
-		CHECK(fs::equivalent(root.parent_path(), fs::temp_directory_path()));
+		// Not fs::equivalent: under Wine, MinGW's libstdc++ calls a folder and itself different.
+		CHECK(fs::canonical(fs::temp_directory_path() / root.filename()) == fs::canonical(root));
 		CHECK(root.filename().string().rfind("haptics-scratch-", 0) == 0);
 		CHECK(fs::is_empty(root));
 		fill(dir);

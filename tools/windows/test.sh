@@ -66,5 +66,16 @@ for flavour in debug release; do
   tools/windows/check-imports.sh "$dll"
   out=$(timeout 120 "$wine" .build/windows-debug/haptics_load_host.exe "$dll" 2>&1 | tr -d '\r') ||
     { echo "$out" >&2; die "the $flavour library did not load and register under Wine"; }
-  echo "test-windows: $(basename "$dll") under Wine: $(grep '^class ' <<<"$out" | sed 's/^class //' | paste -sd';' | sed 's/;/; /g')"
+  # Each class registers as many methods and constants as its class reference documents
+  # (doc_classes/, which tests/foundation/test_doc_classes.gd holds to the Linux library as the
+  # engine lists it).
+  while read -r _ class _ methods constants; do
+    doc=gdextension/doc_classes/$class.xml
+    [[ -f $doc ]] || die "the $flavour library registered $class, which has no $doc"
+    # grep -c prints 0 for a class without constants, and fails: || true.
+    want="methods=$(grep -c '<method name=' "$doc" || true) constants=$(grep -c '<constant name=' "$doc" || true)"
+    [[ "$methods $constants" == "$want" ]] ||
+      die "the $flavour library registered $class with $methods $constants under Wine, its reference documents $want"
+  done < <(grep '^class ' <<<"$out")
+  echo "test-windows: $(basename "$dll") under Wine: $(grep -E '^(class|docs) ' <<<"$out" | paste -sd';' | sed 's/;/; /g')"
 done

@@ -3,6 +3,7 @@
 // recording stand-ins for what the library uses at initialisation, runs every initialisation
 // level and deinitialisation as the engine does, and prints what the library registered:
 //   class <name> <parent> methods=<n> constants=<n>
+//   docs <n> (malformed <n>)
 //   unregistered <n>
 // Exit 0 only when the entry point returned true and both classes registered with methods;
 // 2 when the DLL or its entry point cannot be found. It shows the DLL loads on Windows'
@@ -10,10 +11,12 @@
 // not here, so nothing is called on an instance.
 #include <gdextension_interface.h>
 
+#include <array>
 #include <cstdio>
 #include <cstring>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <windows.h>
@@ -73,6 +76,21 @@ void unregister_class(GDExtensionClassLibraryPtr, GDExtensionConstStringNamePtr)
 	++unregistered;
 }
 
+// The class reference the editor shows: each document must name a class.
+int docs_loaded = 0;
+int docs_malformed = 0;
+void load_docs(const char *p_data, GDExtensionInt p_size) {
+	const std::string xml(p_data, static_cast<size_t>(p_size));
+	++(xml.find("<class name=\"") != std::string::npos ? docs_loaded : docs_malformed);
+}
+
+// Default arguments are Variants: copied and destroyed as opaque values here.
+constexpr size_t VARIANT_BYTES = 24;
+void variant_copy(GDExtensionUninitializedVariantPtr r_dest, GDExtensionConstVariantPtr p_source) {
+	std::memcpy(r_dest, p_source, VARIANT_BYTES);
+}
+void variant_destroy(GDExtensionVariantPtr) {}
+
 void no_op_destructor(GDExtensionTypePtr) {}
 void no_op_constructor(GDExtensionUninitializedTypePtr, const GDExtensionConstTypePtr *) {}
 void no_op_conversion(void *, void *) {}
@@ -89,10 +107,22 @@ GDExtensionTypeFromVariantConstructorFunc get_to_type(GDExtensionVariantType) {
 	return no_op_conversion;
 }
 // Anything else the library resolves: it must exist (a null would fail its load), and is
-// counted if called during registration (where the engine's real one would have been).
+// counted by name if called during registration (where the engine's real one would have been).
+constexpr int UNKNOWN_SLOTS = 256;
+std::vector<std::string> unknown_names;
+std::map<std::string, int> unknown_called;
+
+template <int I>
 void unknown_function() {
 	++unknown_calls;
+	++unknown_called[static_cast<size_t>(I) < unknown_names.size() ? unknown_names[I] : std::string("?")];
 }
+
+template <int... I>
+constexpr auto make_unknown_table(std::integer_sequence<int, I...>) {
+	return std::array<void (*)(), sizeof...(I)>{ &unknown_function<I>... };
+}
+constexpr auto UNKNOWN_TABLE = make_unknown_table(std::make_integer_sequence<int, UNKNOWN_SLOTS>{});
 
 template <typename F>
 GDExtensionInterfaceFunctionPtr as_function(F p_function) {
@@ -111,6 +141,9 @@ const Served SERVED[] = {
 	{ "classdb_register_extension_class_method", as_function(register_method) },
 	{ "classdb_register_extension_class_integer_constant", as_function(register_constant) },
 	{ "classdb_unregister_extension_class", as_function(unregister_class) },
+	{ "editor_help_load_xml_from_utf8_chars_and_len", as_function(load_docs) },
+	{ "variant_new_copy", as_function(variant_copy) },
+	{ "variant_destroy", as_function(variant_destroy) },
 	{ "variant_get_ptr_destructor", as_function(get_destructor) },
 	{ "variant_get_ptr_constructor", as_function(get_constructor) },
 	{ "get_variant_from_type_constructor", as_function(get_from_type) },
@@ -123,7 +156,11 @@ GDExtensionInterfaceFunctionPtr get_proc_address(const char *p_name) {
 			return served.function;
 		}
 	}
-	return as_function(unknown_function);
+	const size_t slot = unknown_names.size() < UNKNOWN_SLOTS ? unknown_names.size() : UNKNOWN_SLOTS - 1;
+	if (unknown_names.size() < UNKNOWN_SLOTS) {
+		unknown_names.emplace_back(p_name);
+	}
+	return as_function(UNKNOWN_TABLE[slot]);
 }
 
 } // namespace
@@ -164,8 +201,12 @@ int main(int p_argc, char **p_argv) {
 			--level) {
 		initialization.deinitialize(initialization.userdata, static_cast<GDExtensionInitializationLevel>(level));
 	}
-	std::printf("unregistered %d\nunknown calls %d\n", unregistered, unknown_calls);
-	bool ok = unregistered == static_cast<int>(classes.size()) && unknown_calls == 0;
+	std::printf("docs %d (malformed %d)\nunregistered %d\nunknown calls %d\n", docs_loaded, docs_malformed,
+			unregistered, unknown_calls);
+	for (const auto &[name, count] : unknown_called) {
+		std::printf("  %s x%d\n", name.c_str(), count);
+	}
+	bool ok = unregistered == static_cast<int>(classes.size()) && unknown_calls == 0 && docs_malformed == 0;
 	for (const char *expected : EXPECTED_CLASSES) {
 		const auto found = classes.find(expected);
 		ok = ok && found != classes.end() && found->second.methods > 0 && found->second.parent == "RefCounted";

@@ -28,7 +28,8 @@ Status read_hidraw_report_descriptor(const std::string &p_hidraw_path, std::vect
 	hid_device *device = nullptr;
 	const Status opened = open_hidraw_device(p_hidraw_path, "HID descriptor", device);
 	if (!opened) {
-		return opened;
+		return Status::error(opened.code(), "cannot read the HID report descriptor of '%s': %s", p_hidraw_path.c_str(),
+				opened.message());
 	}
 	std::vector<uint8_t> bytes(HID_API_MAX_REPORT_DESCRIPTOR_SIZE, 0);
 	const int length = hid_get_report_descriptor(device, bytes.data(), bytes.size());
