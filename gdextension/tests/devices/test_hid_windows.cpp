@@ -20,7 +20,7 @@ constexpr const char *ABSENT_PATH =
 } // namespace
 
 TEST_CASE("hid (Windows): the descriptor of an absent device is an error naming it, bytes left empty") {
-	std::vector<uint8_t> bytes{1, 2, 3};
+	std::vector<uint8_t> bytes{ 1, 2, 3 };
 	const Status status = hid::read_hidraw_report_descriptor(ABSENT_PATH, bytes);
 	CHECK_FALSE(status.ok());
 	CHECK(bytes.empty());
