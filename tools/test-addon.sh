@@ -7,7 +7,8 @@
 # imported once, then run headless: the game itself asserts a steady push away from the wall
 # on every physics frame, an impact on hitting it, the wall no longer a contact once walked
 # away from, and the project's servo spin (tests/addon/game/main.gd); the editor lists that
-# setting with its range. Any error output fails the test. Then the plugin's static parts:
+# setting with its range. Any error output fails the test. Before that, the zip holds the
+# Linux and Windows libraries; after it, the plugin's static parts:
 # its haptics/input/* settings and the extension list. The temporary folder is removed, also
 # on failure.
 # Usage: tools/test-addon.sh   (after tools/build-addon.sh)
@@ -24,6 +25,15 @@ cp -r tests/addon/game/. "$GAME/"
 rm -f "$GAME/.gdignore"
 mv "$GAME/project.godot.in" "$GAME/project.godot"
 python3 -c 'import sys, zipfile; zipfile.ZipFile(sys.argv[1]).extractall(sys.argv[2])' "$ZIP" "$GAME"
+
+# Both platforms are in the zip: every Linux and Windows library the .gdextension lists, the
+# Windows ones importing only Windows' own DLLs.
+mapfile -t listed < <(sed -nE 's/^(linux|windows)\.[a-z_.0-9]+ = "([^"]+)"$/\2/p' "$GAME/addons/haptics/haptics.gdextension")
+((${#listed[@]} == 4)) || { echo "test-addon: the .gdextension lists ${#listed[@]} Linux/Windows libraries, not 4" >&2; exit 1; }
+for library in "${listed[@]}"; do
+  [[ -s "$GAME/addons/haptics/$library" ]] || { echo "test-addon: the zip lacks addons/haptics/$library" >&2; exit 1; }
+  [[ $library != *.dll ]] || tools/windows/check-imports.sh "$GAME/addons/haptics/$library" >/dev/null
+done
 
 # README, "Install", step 1: list the extension before the editor first sees the project.
 mkdir -p "$GAME/.godot"
