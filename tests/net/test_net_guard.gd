@@ -40,8 +40,9 @@ func test_the_heartbeat_beats_at_five_hertz_without_catching_up_after_a_stall() 
 
 func test_a_silent_peer_is_overdue_once_and_a_heard_one_never() -> void:
 	var beat: PongNetHeartbeat = PongNetHeartbeat.new()
-	beat.watch(7, 100.0)
-	beat.watch(8, 100.0)
+	beat.watch(7, 99.0)
+	beat.watch(8, 99.0)
+	beat.heard(7, 100.0)
 	var limit: Callable = func(_peer: int) -> float: return 1.0
 	for step: int in 5:
 		beat.heard(8, 100.0 + step * 0.2)
@@ -54,6 +55,23 @@ func test_a_silent_peer_is_overdue_once_and_a_heard_one_never() -> void:
 	assert_eq(beat.overdue(105.0, limit).size(), 1, "peer 8 now, peer 7 not again")
 	beat.heard(7, 106.0)
 	assert_eq(beat.peers(), [], "a beat from a peer not watched is ignored")
+
+
+func test_a_peer_has_the_handshakes_bound_for_its_first_beat_then_its_paths() -> void:
+	var beat: PongNetHeartbeat = PongNetHeartbeat.new()
+	var limit: Callable = func(_peer: int) -> float: return 1.0
+	var first: float = PongNetProtocol.FIRST_BEAT_TIMEOUT_S
+	assert_gt(first, PongNetProtocol.HEARTBEAT_TIMEOUT_MAX_S, "longer than any path's limit")
+	beat.watch(7, 0.0)
+	beat.watch(8, 0.0)
+	assert_eq(beat.overdue(first - 0.01, limit), [], "still in its side of the handshake")
+	beat.heard(8, first - 0.01)
+	var dead: Array[Array] = beat.overdue(first + 0.01, limit)
+	assert_eq(dead.size(), 1, "the one never heard, once its bound is over")
+	assert_eq(dead[0][0], 7)
+	assert_almost_eq(dead[0][2], first, 1e-9, "reported with that bound")
+	assert_eq(beat.overdue(first + 0.98, limit), [], "peer 8, heard, has its path's 1 s")
+	assert_eq(beat.overdue(first + 1.0, limit).size(), 1, "then is overdue")
 
 
 func test_a_peer_that_says_it_stalls_may_be_silent_until_its_next_beat() -> void:

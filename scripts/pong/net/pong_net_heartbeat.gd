@@ -8,23 +8,29 @@ var _last_heard: Dictionary[int, float] = {}
 var _next_beat_s: float = -INF
 # Peers that said they are about to stall, until their next beat.
 var _stalling: Dictionary[int, bool] = {}
+# Peers watched and not yet heard ([constant PongNetProtocol.FIRST_BEAT_TIMEOUT_S]).
+var _unheard: Dictionary[int, bool] = {}
 
 
-## Starts watching [param peer] (just connected): it counts as heard at [param now_s].
+## Starts watching [param peer] (just connected): it counts as heard at [param now_s], and
+## has until [constant PongNetProtocol.FIRST_BEAT_TIMEOUT_S] for its first beat.
 func watch(peer: int, now_s: float) -> void:
 	_last_heard[peer] = now_s
+	_unheard[peer] = true
 
 
 ## Stops watching [param peer] (gone).
 func forget(peer: int) -> void:
 	_last_heard.erase(peer)
 	_stalling.erase(peer)
+	_unheard.erase(peer)
 
 
 ## Forgets everyone (the session closed).
 func clear() -> void:
 	_last_heard.clear()
 	_stalling.clear()
+	_unheard.clear()
 	_next_beat_s = -INF
 
 
@@ -34,6 +40,7 @@ func heard(peer: int, now_s: float) -> void:
 	if _last_heard.has(peer):
 		_last_heard[peer] = maxf(_last_heard[peer], now_s)
 		_stalling.erase(peer)
+		_unheard.erase(peer)
 
 
 ## [param peer] said it is about to stall (it loads a match); it counts as heard at
@@ -42,6 +49,7 @@ func stalls(peer: int, now_s: float) -> void:
 	if _last_heard.has(peer):
 		_last_heard[peer] = maxf(_last_heard[peer], now_s)
 		_stalling[peer] = true
+		_unheard.erase(peer)
 
 
 ## Whether [param peer] said it stalls and has not beaten since.
@@ -72,14 +80,16 @@ func peers() -> Array[int]:
 
 
 ## The peers silent at [param now_s] for longer than their limit
-## ([param limit_of]: Callable(peer) -> seconds), each [peer, silence, limit]; they are no
-## longer watched.
+## ([param limit_of]: Callable(peer) -> seconds, once a peer has been heard), each
+## [peer, silence, limit]; they are no longer watched.
 func overdue(now_s: float, limit_of: Callable) -> Array[Array]:
 	var dead: Array[Array] = []
 	for peer: int in _last_heard.keys():
 		var silence: float = now_s - _last_heard[peer]
-		var limit: float = limit_of.call(peer)
+		var limit: float = (
+			PongNetProtocol.FIRST_BEAT_TIMEOUT_S if _unheard.has(peer) else limit_of.call(peer)
+		)
 		if silence > limit:
-			_last_heard.erase(peer)
+			forget(peer)
 			dead.append([peer, silence, limit])
 	return dead

@@ -96,6 +96,12 @@ const THROTTLE_DECELERATION: int = 0
 ## 150 ms and 25 % loss here, and two in a CI run at 5 %. It only bounds how long a silent
 ## peer holds a slot.
 const AUTH_TIMEOUT_S: float = 15.0
+## Seconds a peer we count as connected has for its first beat. Each side of the handshake
+## ends when the other's last message arrives, a reliable packet ENet resends with doubling
+## waits, so the two sides may count each other connected far apart: at 150 ms and 25 %
+## loss a host dropped a client 1.25 s after it joined, the client still awaiting the host's
+## message, unable to beat. Until a first beat the handshake's bound holds.
+const FIRST_BEAT_TIMEOUT_S: float = AUTH_TIMEOUT_S
 
 ## The heartbeat: every connected pair sends each other a one-byte raw packet this often, and
 ## drops the other when nothing has come from it for [method heartbeat_timeout_s]. It does
