@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstring>
 #include <cwchar>
+#include <utility>
 
 namespace haptics::hid {
 
@@ -60,6 +61,27 @@ Status open_hidraw_device(const std::string &p_path, const char *p_label, hid_de
 		return Status::error(StatusCode::NO_DEVICE, "%s: no device at '%s' (%s)", p_label, p_path.c_str(), text);
 	}
 	return Status::error(StatusCode::DEVICE_ERROR, "%s: cannot open '%s' (%s)", p_label, p_path.c_str(), text);
+}
+
+Status read_open_report_descriptor(hid_device_ *p_device, const std::string &p_path, std::vector<uint8_t> &r_bytes) {
+	r_bytes.clear();
+#if HID_API_VERSION >= HID_API_MAKE_VERSION(0, 14, 0)
+	std::vector<uint8_t> bytes(HID_API_MAX_REPORT_DESCRIPTOR_SIZE, 0);
+	const int length = hid_get_report_descriptor(p_device, bytes.data(), bytes.size());
+	if (length <= 0) {
+		char reason[128];
+		narrow_hid_text(hid_error(p_device), "no reason given", reason, sizeof(reason));
+		return Status::error(StatusCode::DEVICE_ERROR, "cannot read the HID report descriptor of '%s': %s",
+				p_path.c_str(), reason);
+	}
+	bytes.resize(static_cast<size_t>(length));
+	r_bytes = std::move(bytes);
+	return Status::success();
+#else
+	(void)p_device;
+	return Status::error(StatusCode::UNSUPPORTED, "hidapi %s cannot read the report descriptor of '%s'",
+			HID_API_VERSION_STR, p_path.c_str());
+#endif
 }
 
 bool hid_device_lost(int p_errno, const std::string &p_path, const char *p_hid_text) {

@@ -7,7 +7,9 @@
 #include "core/base/status.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
+#include <vector>
 
 struct hid_device_;
 
@@ -28,6 +30,12 @@ void narrow_hid_text(const wchar_t *p_text, const char *p_fallback, char *r_out,
 // p_path, DEVICE_ERROR otherwise (no permission, with the udev hint; not a hidraw node;
 // hidapi's own error).
 Status open_hidraw_device(const std::string &p_path, const char *p_label, hid_device_ *&r_device);
+
+// An open device's report descriptor through hid_get_report_descriptor (hidapi 0.14+, which
+// on Windows rebuilds it from the parsed form Windows keeps). UNSUPPORTED with an older
+// hidapi (Debian 12's 0.13.1, where sysfs has the bytes); DEVICE_ERROR naming p_path and
+// hidapi's reason when the call fails. r_bytes is empty unless it succeeds.
+Status read_open_report_descriptor(hid_device_ *p_device, const std::string &p_path, std::vector<uint8_t> &r_bytes);
 
 // After a failed hidapi call: whether the device is gone (errno ENODEV, EIO, ENXIO, ESHUTDOWN,
 // EPIPE or ENOENT, the node vanished from /dev, or hidapi's text says "disconnected", as its

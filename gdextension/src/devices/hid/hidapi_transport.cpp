@@ -38,17 +38,9 @@ void HidapiTransport::close() {
 }
 
 Status HidapiTransport::report_descriptor(std::vector<uint8_t> &r_bytes) {
-#if HID_API_VERSION >= HID_API_MAKE_VERSION(0, 14, 0)
-	if (device_) {
-		r_bytes.assign(HID_API_MAX_REPORT_DESCRIPTOR_SIZE, 0);
-		const int length = hid_get_report_descriptor(device_, r_bytes.data(), r_bytes.size());
-		if (length > 0) {
-			r_bytes.resize(static_cast<size_t>(length));
-			return Status::success();
-		}
-		r_bytes.clear();
+	if (device_ && read_open_report_descriptor(device_, path_, r_bytes)) {
+		return Status::success();
 	}
-#endif
 	// hidapi < 0.14 has no call for it; sysfs has the same bytes and needs no privileges.
 	return read_hidraw_report_descriptor(path_, r_bytes);
 }

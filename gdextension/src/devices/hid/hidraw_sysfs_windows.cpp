@@ -4,8 +4,6 @@
 
 #include <hidapi.h>
 
-#include <utility>
-
 // hidapi's Windows backend: its paths are device interface names, not /dev/hidrawN, and
 // Windows has no sysfs. Each answer is what Windows offers (hidraw_sysfs.h).
 
@@ -31,18 +29,9 @@ Status read_hidraw_report_descriptor(const std::string &p_hidraw_path, std::vect
 		return Status::error(opened.code(), "cannot read the HID report descriptor of '%s': %s", p_hidraw_path.c_str(),
 				opened.message());
 	}
-	std::vector<uint8_t> bytes(HID_API_MAX_REPORT_DESCRIPTOR_SIZE, 0);
-	const int length = hid_get_report_descriptor(device, bytes.data(), bytes.size());
-	char reason[128];
-	narrow_hid_text(length > 0 ? nullptr : hid_error(device), "no reason given", reason, sizeof(reason));
+	const Status read = read_open_report_descriptor(device, p_hidraw_path, r_bytes);
 	hid_close(device);
-	if (length <= 0) {
-		return Status::error(StatusCode::DEVICE_ERROR, "cannot read the HID report descriptor of '%s': %s",
-				p_hidraw_path.c_str(), reason);
-	}
-	bytes.resize(static_cast<size_t>(length));
-	r_bytes = std::move(bytes);
-	return Status::success();
+	return read;
 }
 
 // The Linux check guards against a hidapi bug of its hidraw backend; the Windows backend
