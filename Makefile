@@ -111,13 +111,13 @@ test-windowed: import
 
 ## lint: the C++ layers' include directions and the 400-line limit (tools/check-includes.py),
 ## the GDScript folders' layers and the Haptics door (tools/check-gd-layers.py), gdlint
-## (400 lines a file) and gdformat --check over addons/, scripts/ and tests/ (gdtoolkit,
+## (400 lines a file) and gdformat --check over addons/, game/ and tests/ (gdtoolkit,
 ## pinned, in .venv), and clang-format (Debian's, .clang-format: Godot's style) over the C++
 lint: deps
 	@python3 tools/check-includes.py
 	@python3 tools/check-gd-layers.py
-	@tools/gdtoolkit.sh gdlint addons scripts tests
-	@tools/gdtoolkit.sh gdformat --check addons scripts tests
+	@tools/gdtoolkit.sh gdlint addons game tests
+	@tools/gdtoolkit.sh gdformat --check addons game tests
 	@find gdextension/src gdextension/tests gdextension/bench gdextension/vm_tests gdextension/rt_probe -name '*.h' -o -name '*.cpp' | \
 		sort | xargs clang-format --dry-run -Werror
 	@echo "clang-format: the C++ is formatted"

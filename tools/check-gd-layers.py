@@ -4,8 +4,8 @@
 Run: python3 tools/check-gd-layers.py [--graph]   (--graph also prints every module edge)
 Exit 0 when every dependency runs downward, 1 with one line per offending edge otherwise.
 
-A module is a folder of addons/, scripts/ or scenes/; a script's folder and the scene
-folder of the same name are one module (scripts/pong/net and scenes/pong/net are
+A module is a folder of addons/, game/ or game/; a script's folder and the scene
+folder of the same name are one module (game/pong/net and game/pong/net are
 "pong/net"), and an addon is one module with its subfolders. A file depends on another
 when it names the other's class_name or autoload, or names its path (preload, load, a
 res:// or uid:// string, a scene's ext_resource). Tests (tests/) sit above everything and
@@ -53,11 +53,11 @@ FLOORS = [
     ["main"],
 ]
 
-ROOTS = ["addons", "scripts", "scenes"]
+ROOTS = ["addons", "game"]
 # Prefixes that name a module by the rest of the path.
-MODULE_PREFIXES = ["scripts/", "scenes/"]
+MODULE_PREFIXES = ["game/", "game/"]
 # Game code that may not reach past the Haptics door to the native server.
-DOOR_GUARDED = ["scripts/", "scenes/"]
+DOOR_GUARDED = ["game/", "game/"]
 DOOR_BYPASS = [
     (re.compile(r"\bHapticsServer\b"), "names HapticsServer"),
     (re.compile(r"\bHaptics\s*\.\s*get_server\s*\("), "calls Haptics.get_server()"),
@@ -75,7 +75,7 @@ RELATIVE_PATH = re.compile(r"^[\w.][\w./-]*\.(?:gd|tscn|scn|tres|res|gdshader)$"
 
 
 def module_of(path):
-    """The module a project file belongs to, or None outside addons/, scripts/, scenes/."""
+    """The module a project file belongs to, or None outside addons/, game/, game/."""
     if path.startswith("addons/"):
         return "/".join(path.split("/")[:2])
     for prefix in MODULE_PREFIXES:

@@ -3,9 +3,9 @@
 # ignored virtualenv .venv/gdtoolkit. The virtualenv is (re)built only when it is missing
 # or the requirements file (or $PYTHON) changed; otherwise it only execs the tool.
 #
-#   tools/gdtoolkit.sh gdlint scripts tests          lint (config: ./gdlintrc)
-#   tools/gdtoolkit.sh gdformat --check scripts tests
-#   tools/gdtoolkit.sh gdformat scripts tests        reformat in place
+#   tools/gdtoolkit.sh gdlint game tests          lint (config: ./gdlintrc)
+#   tools/gdtoolkit.sh gdformat --check game tests
+#   tools/gdtoolkit.sh gdformat game tests        reformat in place
 #
 # gdlint and gdformat look for gdlintrc / gdformatrc from the working directory upwards:
 # run from the project root (or below). Set PYTHON to choose the interpreter (default

@@ -1,11 +1,11 @@
 #!/usr/bin/env python3
-"""Writes scenes/levels/level_1.tscn, the "Sea Cave" level, from the layout below.
+"""Writes game/levels/level_1.tscn, the "Sea Cave" level, from the layout below.
 
 Run from the project root: python3 tools/gen_level_1.py
 
 Coordinates are world pixels, y down. The world is 8960 x 1440 (7 x 2 screens). Terrain is
 one Terrain body per look (rock = hard, sponge/sand = soft, crystal = slippery) whose
-CollisionPolygon2D children are also drawn by scripts/props/terrain.gd. Notable surfaces
+CollisionPolygon2D children are also drawn by game/props/terrain.gd. Notable surfaces
 (angle of the surface from horizontal; "overhang" = faces down):
   beach slope 30 deg           (480,640)-(1520,1240)          soft
   curtain overhang 45 deg      (1760,520)-(2100,860)           hard, normal down-left (135 deg wall)
@@ -22,7 +22,7 @@ import math
 import os
 
 ROOT = os.path.join(os.path.dirname(__file__), "..")
-OUT = os.path.join(ROOT, "scenes", "levels", "level_1.tscn")
+OUT = os.path.join(ROOT, "game", "levels", "level_1.tscn")
 
 WORLD_W, WORLD_H = 8960, 1440
 
@@ -234,15 +234,15 @@ def angle_report():
 
 def build():
     s = Scene()
-    script = s.ext_resource("Script", "res://scripts/levels/level_1.gd")
-    terrain_script = s.ext_resource("Script", "res://scripts/props/terrain.gd")
-    player = s.ext_resource("PackedScene", "res://scenes/player/player.tscn")
-    crate_light = s.ext_resource("PackedScene", "res://scenes/props/crate.tscn")
-    crate_heavy = s.ext_resource("PackedScene", "res://scenes/props/crate_heavy.tscn")
-    water = s.ext_resource("PackedScene", "res://scenes/props/water.tscn")
-    pearl = s.ext_resource("PackedScene", "res://scenes/props/pearl.tscn")
-    goal = s.ext_resource("PackedScene", "res://scenes/props/goal.tscn")
-    effects = s.ext_resource("PackedScene", "res://scenes/props/effects.tscn")
+    script = s.ext_resource("Script", "res://game/levels/level_1.gd")
+    terrain_script = s.ext_resource("Script", "res://game/props/terrain.gd")
+    player = s.ext_resource("PackedScene", "res://game/player/player.tscn")
+    crate_light = s.ext_resource("PackedScene", "res://game/props/crate.tscn")
+    crate_heavy = s.ext_resource("PackedScene", "res://game/props/crate_heavy.tscn")
+    water = s.ext_resource("PackedScene", "res://game/props/water.tscn")
+    pearl = s.ext_resource("PackedScene", "res://game/props/pearl.tscn")
+    goal = s.ext_resource("PackedScene", "res://game/props/goal.tscn")
+    effects = s.ext_resource("PackedScene", "res://game/props/effects.tscn")
     mat = {k: s.ext_resource("Resource", f"res://addons/haptics/materials/{k}.tres")
            for k in ("hard", "soft", "slippery")}
     tex = {k: s.ext_resource("Texture2D", f"res://assets/art/{k}.svg")
@@ -337,7 +337,7 @@ def build():
     # Decoration: plants on the floors (sway), roots under the ceilings.
     decor_tex = {k: s.ext_resource("Texture2D", f"res://assets/art/{k}.svg")
                  for k in ("kelp", "coral", "seagrass", "starfish", "roots")}
-    sway_shader = s.ext_resource("Shader", "res://scripts/props/sway.gdshader")
+    sway_shader = s.ext_resource("Shader", "res://game/props/sway.gdshader")
     sway = s.sub_resource("ShaderMaterial", "ShaderMaterial_sway", {
         "shader": sway_shader, "shader_parameter/amplitude": 12.0,
     })

@@ -43,7 +43,7 @@ cat >>"$GAME/project.godot" <<'CFG'
 
 [autoload]
 
-Haptics="*res://addons/haptics/haptics.gd"
+Haptics="*res://addons/haptics/door/haptics.gd"
 
 [editor_plugins]
 
@@ -111,8 +111,8 @@ const FEED := "haptics/input/feed_actions"
 
 
 func _init() -> void:
-	var plugin: Script = load("res://addons/haptics/plugin.gd")
-	var haptics: Script = load("res://addons/haptics/haptics.gd")
+	var plugin: Script = load("res://addons/haptics/editor/plugin.gd")
+	var haptics: Script = load("res://addons/haptics/door/haptics.gd")
 	var own: PackedStringArray = ProjectSettings.get_setting(FEED)
 	ProjectSettings.set_setting(HAND, null)
 	var failures: PackedStringArray = []
@@ -146,7 +146,7 @@ extends SceneTree
 
 
 func _init() -> void:
-	var plugin: Script = load("res://addons/haptics/plugin.gd")
+	var plugin: Script = load("res://addons/haptics/editor/plugin.gd")
 	for i: int in 2:
 		if not plugin.call(&"list_extension", "res://addons/haptics/haptics.gdextension"):
 			printerr("list_extension failed")

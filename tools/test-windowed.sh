@@ -2,7 +2,7 @@
 # Runs the game in a window (Xvfb, the Compatibility renderer on Mesa's software rasteriser)
 # under its autopilot for a few seconds, lets it quit, and fails on a non-zero exit or on any
 # report of something leaked at exit. Headless runs play no sound, so only a windowed run
-# shows leaks on the way out (CleanExit, scripts/common/clean_exit.gd).
+# shows leaks on the way out (CleanExit, game/common/clean_exit.gd).
 #
 #   tools/test-windowed.sh [SECONDS]      (default 4; the log is .build/test-windowed.log)
 set -euo pipefail

@@ -6,12 +6,12 @@
 #include "core/servo/input_vector.h"
 #include "core/servo/telemetry.h"
 #include "core/servo/transients.h"
-#include "engine/haptics_engine.h"
 #include "renderers/constraint/constraint_port.h"
 #include "renderers/movement/force_model.h"
 #include "renderers/movement/smoothing_filter.h"
 #include "renderers/pong/pong_port.h"
 #include "renderers/pong/pong_sim.h"
+#include "system/haptics_system.h"
 
 #include <algorithm>
 #include <chrono>
@@ -128,21 +128,21 @@ std::vector<MicroResult> run_micro_benchmarks() {
 		g_sink = g_sink + bank.advance(0.001).y;
 	}));
 
-	HapticsEngine engine;
-	engine.open_simulated_device();
-	engine.set_hand_target({ 0.03, -0.02, 0.0 });
-	engine.submit_frame(frame);
+	HapticsSystem system;
+	system.open_simulated_device();
+	system.set_hand_target({ 0.03, -0.02, 0.0 });
+	system.submit_frame(frame);
 	results.push_back(measure("full tick, manual step (device, model, filter, safety, publish)", [&](int p_n) {
 		if (p_n % 20 == 0) {
-			engine.submit_frame(frame); // 50 Hz at 1 kHz: keeps the watchdog quiet.
+			system.submit_frame(frame); // 50 Hz at 1 kHz: keeps the watchdog quiet.
 		}
-		engine.step(0.001);
+		system.step(0.001);
 		if (p_n % 100 == 0) {
 			float telemetry[100 * 32];
-			engine.drain_telemetry(telemetry, 100);
+			system.drain_telemetry(telemetry, 100);
 		}
 	}));
-	g_sink = g_sink + engine.forces().total.x;
+	g_sink = g_sink + system.forces().total.x;
 
 	// Haptic Battle Pong: the simulation step alone (contact law, spin, a slow effect,
 	// court, events), then the whole tick in pong mode, both with the ball resting in
@@ -169,7 +169,7 @@ std::vector<MicroResult> run_micro_benchmarks() {
 	sim_result.name = with_contact_share("pong sim step alone, ball on the paddle", pong_contacts, pong_ticks);
 	results.push_back(sim_result);
 
-	HapticsEngine pong_engine;
+	HapticsSystem pong_engine;
 	pong_engine.open_simulated_device();
 	pong_engine.set_hand_target({ 0.0, 0.0, 0.0 });
 	RenderConfig pong_config = pong_engine.config();
@@ -205,7 +205,7 @@ std::vector<MicroResult> run_micro_benchmarks() {
 	g_sink = g_sink + pong_engine.forces().total.x;
 
 	// The same tick in constraint mode: finite proxy against 10 000 walls, at 1 kHz.
-	HapticsEngine maze_engine;
+	HapticsSystem maze_engine;
 	SimulatedDeviceConfig hand;
 	hand.rigid_hand = true;
 	maze_engine.open_simulated_device(hand);

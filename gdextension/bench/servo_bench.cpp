@@ -16,7 +16,7 @@
 #include "bench_report.h"
 #include "servo_workload.h"
 
-#include "engine/haptics_engine.h"
+#include "system/haptics_system.h"
 
 #include <atomic>
 #include <cmath>

@@ -2,7 +2,7 @@
 
 #include "core/base/realtime.h"
 #include "core/servo/telemetry.h"
-#include "engine/haptics_engine.h"
+#include "system/haptics_system.h"
 
 #include <cmath>
 #include <cstdio>
@@ -15,7 +15,7 @@ namespace haptics::bench {
 namespace {
 
 // The game's side for one run: 50 Hz on absolute deadlines, like a physics tick.
-void produce(HapticsEngine &r_engine, double p_duration_s, LoopResult &r_result) {
+void produce(HapticsSystem &r_system, double p_duration_s, LoopResult &r_result) {
 	constexpr int64_t FRAME_NS = 20'000'000;
 	std::vector<float> telemetry(512 * TELEMETRY_STRIDE);
 	const int64_t begin = monotonic_now_ns();
@@ -31,17 +31,17 @@ void produce(HapticsEngine &r_engine, double p_duration_s, LoopResult &r_result)
 		frame.add_resting({ 0.0, -1.0, 0.0 }, 0.6);
 		frame.water = WaterState{ (frame_index / 50) % 2 == 1, 0.4, 0.3 };
 		frame.player_velocity = { std::sin(phase), -0.2, 0.0 };
-		r_engine.submit_frame(frame);
+		r_system.submit_frame(frame);
 		++r_result.frames_submitted;
-		r_engine.set_hand_target({ 0.06 * std::sin(phase * 0.7), -0.03 + 0.02 * std::cos(phase), 0.0 });
+		r_system.set_hand_target({ 0.06 * std::sin(phase * 0.7), -0.03 + 0.02 * std::cos(phase), 0.0 });
 		if (frame_index % 5 == 0) {
 			ImpactEvent event;
 			event.direction = { 0.0, 1.0, 0.0 };
 			event.speed = 2.0 + std::sin(phase);
-			r_engine.push_impact(event);
+			r_system.push_impact(event);
 			++r_result.impacts_pushed;
 		}
-		r_result.telemetry_drained += r_engine.drain_telemetry(telemetry.data(), 512);
+		r_result.telemetry_drained += r_system.drain_telemetry(telemetry.data(), 512);
 		deadline += FRAME_NS;
 		sleep_until_ns(deadline);
 	}
@@ -53,21 +53,21 @@ LoopResult run_servo_workload(const char *p_name, const ServoOptions &p_options,
 	LoopResult result;
 	result.name = p_name;
 	result.duration_s = p_duration_s;
-	HapticsEngine engine;
-	if (!engine.open_simulated_device()) {
+	HapticsSystem system;
+	if (!system.open_simulated_device()) {
 		std::fprintf(stderr, "cannot open the simulated device\n");
 		std::exit(2);
 	}
-	const Status started = engine.start(p_options);
+	const Status started = system.start(p_options);
 	if (!started) {
 		std::fprintf(stderr, "cannot start the servo: %s\n", started.message());
 		std::exit(2);
 	}
 	// The producer is the only thread calling the engine while the servo runs.
-	std::thread producer([&] { produce(engine, p_duration_s, result); });
+	std::thread producer([&] { produce(system, p_duration_s, result); });
 	producer.join();
-	engine.stop();
-	result.stats = engine.stats();
+	system.stop();
+	result.stats = system.stats();
 	return result;
 }
 

@@ -4,7 +4,7 @@
 file(GLOB doc_files "${DOC_DIR}/*.xml")
 list(SORT doc_files)
 set(content "// Generated from gdextension/doc_classes by cmake/embed_docs.cmake: do not edit.\n")
-string(APPEND content "#include \"godot/doc_data.h\"\n\nnamespace haptics::binding {\n\n")
+string(APPEND content "#include \"binding/doc_data.h\"\n\nnamespace haptics::binding {\n\n")
 string(APPEND content "const char *const DOC_CLASSES[] = {\n")
 foreach(doc_file IN LISTS doc_files)
   file(READ "${doc_file}" xml)

@@ -1,4 +1,4 @@
-# The Godot extension: the binding (src/godot) over the engine, built into the addon's bin/.
+# The Godot extension: the binding (src/binding) over the HapticsSystem, built into the addon's bin/.
 
 # The binding compiles against the header of the very engine that will load it; it is
 # dumped into the build tree at configure time and never committed.
@@ -27,11 +27,11 @@ add_custom_command(
   DEPENDS ${HAPTICS_DOC_CLASSES} cmake/embed_docs.cmake
   COMMENT "Embedding the class reference (doc_classes)")
 
-file(GLOB HAPTICS_BINDING_SOURCES CONFIGURE_DEPENDS src/godot/*.cpp)
+file(GLOB HAPTICS_BINDING_SOURCES CONFIGURE_DEPENDS src/binding/*.cpp)
 add_library(haptics SHARED ${HAPTICS_BINDING_SOURCES} "${HAPTICS_DOC_SOURCE}")
-haptics_expose(haptics PRIVATE godot)
+haptics_expose(haptics PRIVATE binding)
 target_include_directories(haptics PRIVATE "${GODOT_INTERFACE_DIR}")
-target_link_libraries(haptics PRIVATE haptics_engine haptics_storage)
+target_link_libraries(haptics PRIVATE haptics_system haptics_storage)
 # Development builds add the software device models at initialisation (register_types.cpp).
 if(HAPTICS_DEV_TOOLS)
   target_link_libraries(haptics PRIVATE haptics_scripted)

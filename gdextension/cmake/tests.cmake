@@ -33,10 +33,10 @@ if(HAPTICS_BUILD_TESTS)
   # them (tools/windows/test.sh).
   haptics_platform_filter(HAPTICS_TEST_SOURCES)
   add_executable(haptics_tests ${HAPTICS_TEST_SOURCES})
-  # Also reaches the binding's engine-free headers (src/godot/call_check.h).
+  # Also reaches the binding's engine-free headers (src/binding/call_check.h).
   target_include_directories(haptics_tests PRIVATE tests)
-  haptics_expose(haptics_tests PRIVATE godot)
-  target_link_libraries(haptics_tests PRIVATE haptics_engine haptics_storage haptics_scripted doctest::doctest)
+  haptics_expose(haptics_tests PRIVATE binding)
+  target_link_libraries(haptics_tests PRIVATE haptics_system haptics_storage haptics_scripted doctest::doctest)
   # Loaded at run time by path, not linked.
   add_dependencies(haptics_tests fake_hd fake_hd_no_async)
   target_include_directories(haptics_tests PRIVATE tests_support)
@@ -70,12 +70,12 @@ if(HAPTICS_BUILD_TESTS)
     # the VM's real drivers, the device models speaking through uhid, uinput and gadgets.
     file(GLOB HAPTICS_VM_TEST_SOURCES CONFIGURE_DEPENDS vm_tests/*.cpp)
     add_executable(haptics_vm_tests ${HAPTICS_VM_TEST_SOURCES})
-    target_link_libraries(haptics_vm_tests PRIVATE haptics_engine haptics_scripted)
+    target_link_libraries(haptics_vm_tests PRIVATE haptics_system haptics_scripted)
 
     # What an unprivileged player's servo thread gets, with and without RealtimeKit
     # (tools/rt/test-rtkit.sh).
     add_executable(haptics_rt_probe rt_probe/rt_probe.cpp)
-    target_link_libraries(haptics_rt_probe PRIVATE haptics_engine)
+    target_link_libraries(haptics_rt_probe PRIVATE haptics_system)
   endif()
 endif()
 
@@ -83,19 +83,19 @@ if(HAPTICS_BUILD_BENCH)
   file(GLOB HAPTICS_BENCH_SOURCES CONFIGURE_DEPENDS bench/*.cpp)
   if(HAPTICS_BENCH_SOURCES)
     add_executable(haptics_bench ${HAPTICS_BENCH_SOURCES})
-    target_link_libraries(haptics_bench PRIVATE haptics_engine)
+    target_link_libraries(haptics_bench PRIVATE haptics_system)
   endif()
   # The servo next to cyclictest under idle, CPU and rendering load (bench/rt), on the same
   # workload as haptics_bench (servo_workload.cpp).
   file(GLOB HAPTICS_RT_BENCH_SOURCES CONFIGURE_DEPENDS bench/rt/*.cpp)
   add_executable(haptics_rt_bench ${HAPTICS_RT_BENCH_SOURCES} bench/servo_workload.cpp)
-  target_link_libraries(haptics_rt_bench PRIVATE haptics_engine)
+  target_link_libraries(haptics_rt_bench PRIVATE haptics_system)
   # One bench_<backend>.cpp per device backend, registered with HAPTICS_DEVICE_BENCH, on the
   # software models the doctests use.
   file(GLOB HAPTICS_DEVICE_BENCH_SOURCES CONFIGURE_DEPENDS bench/devices/*.cpp)
   add_executable(haptics_device_bench ${HAPTICS_DEVICE_BENCH_SOURCES})
   target_include_directories(haptics_device_bench PRIVATE tests)
-  target_link_libraries(haptics_device_bench PRIVATE haptics_engine haptics_scripted)
+  target_link_libraries(haptics_device_bench PRIVATE haptics_system haptics_scripted)
   add_dependencies(haptics_device_bench fake_hd)
   target_include_directories(haptics_device_bench PRIVATE tests_support)
   target_compile_definitions(haptics_device_bench PRIVATE ${FAKE_HD_DEFINITIONS})

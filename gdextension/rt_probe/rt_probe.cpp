@@ -6,7 +6,7 @@
 // thread was found, 1 otherwise.
 
 #include "core/servo/servo_loop.h"
-#include "engine/haptics_engine.h"
+#include "system/haptics_system.h"
 
 #include <sched.h>
 #include <unistd.h>
@@ -84,9 +84,9 @@ KernelView servo_thread_in_proc() {
 } // namespace
 
 int main() {
-	haptics::HapticsEngine engine;
-	const haptics::Status opened = engine.open_simulated_device();
-	const haptics::Status started = opened ? engine.start(1000.0) : opened;
+	haptics::HapticsSystem system;
+	const haptics::Status opened = system.open_simulated_device();
+	const haptics::Status started = opened ? system.start(1000.0) : opened;
 	if (!started) {
 		std::printf("RTPROBE error=\"%s\"\n", started.message());
 		return 1;
@@ -94,7 +94,7 @@ int main() {
 	// The servo thread asks for its scheduling before its first tick; the stats carry it once
 	// it has.
 	std::this_thread::sleep_for(std::chrono::milliseconds(300));
-	const haptics::ServoStats stats = engine.stats();
+	const haptics::ServoStats stats = system.stats();
 	const KernelView kernel = servo_thread_in_proc();
 	std::printf("RTPROBE uid=%u euid=%u\n", ::getuid(), ::geteuid());
 	std::printf("RTPROBE stats scheduler=%s priority=%d realtime_kit=\"%s\" rtkit_max=%d rttime_usec=%lld nice=%d "
@@ -107,6 +107,6 @@ int main() {
 	std::printf("RTPROBE kernel found=%d policy=%s rt_priority=%ld nice=%ld\n", kernel.found ? 1 : 0,
 			policy_name(kernel.policy), kernel.rt_priority, kernel.nice);
 	std::fflush(stdout);
-	engine.stop();
+	system.stop();
 	return kernel.found ? 0 : 1;
 }

@@ -2,7 +2,7 @@
 // calls a method with too many or too few arguments.
 #include <doctest/doctest.h>
 
-#include "godot/call_check.h"
+#include "binding/call_check.h"
 
 using gd::CallCheck;
 using gd::check_argument_count;

@@ -1,7 +1,7 @@
 // The configuration field table: every field once, its default inside its own range, each
 // key reachable by its old name, and validation that names the key the game spells.
 
-#include "engine/config_table.h"
+#include "system/config_table.h"
 
 #include <doctest/doctest.h>
 

@@ -5,9 +5,9 @@
 // replaces. It covers the ticks that pick up new walls from the exchange. Skipped under the
 // sanitizers, which bring their own allocator.
 
-#include "engine/haptics_engine.h"
-#include "engine_config.h"
 #include "renderers/constraint/constraint_port.h"
+#include "system/haptics_system.h"
+#include "system_config.h"
 #include "test_proxy_geometry.h"
 
 #include <doctest/doctest.h>
@@ -43,32 +43,32 @@ TEST_CASE("constraint tick allocates nothing: 1 kHz and 50 Hz proxy, walls swapp
 	mapping.maze_min = { 0.0, 0.0 };
 	mapping.maze_max = { 300.0, 300.0 };
 	mapping.workspace_half_extent_m = 0.09;
-	HapticsEngine engine;
+	HapticsSystem system;
 	SimulatedDeviceConfig device;
 	device.rigid_hand = true;
-	REQUIRE(engine.open_simulated_device(device));
-	ConstraintPort maze(engine.renderers().constraint.channels);
+	REQUIRE(system.open_simulated_device(device));
+	ConstraintPort maze(system.renderers().constraint.channels);
 	REQUIRE(maze.set_geometry(walls.data(), walls.size(), mapping));
-	REQUIRE(reconfigure(engine, [](RenderConfig &c) { c.servo.render_mode = RenderMode::CONSTRAINT; }));
+	REQUIRE(reconfigure(system, [](RenderConfig &c) { c.servo.render_mode = RenderMode::CONSTRAINT; }));
 	ConstraintConfig config;
 	config.proxy_radius = 3.0;
 	unsigned long allocations = 0;
 	for (int k = 0; k < 4000; ++k) {
 		if (k == 2000) {
 			config.update = ProxyUpdate::FRAME_RATE;
-			REQUIRE(reconfigure(engine, [&](RenderConfig &c) { c.constraint = config; }));
+			REQUIRE(reconfigure(system, [&](RenderConfig &c) { c.constraint = config; }));
 		}
 		if (k % 500 == 250) { // New walls (built here, outside the watched step).
 			REQUIRE(maze.set_geometry(walls.data(), walls.size() - static_cast<size_t>(k / 500), mapping));
 		}
 		const double t = k * 0.001;
-		REQUIRE(engine.set_hand_target({ 0.06 * std::sin(4.0 * t), 0.06 * std::sin(5.3 * t), 0.0 }));
+		REQUIRE(system.set_hand_target({ 0.06 * std::sin(4.0 * t), 0.06 * std::sin(5.3 * t), 0.0 }));
 		if (k % 20 == 0) {
-			REQUIRE(engine.submit_frame(Frame{}));
+			REQUIRE(system.submit_frame(Frame{}));
 		}
 		g_mallocs.store(0);
 		g_watching.store(true);
-		const Status status = engine.step(0.001);
+		const Status status = system.step(0.001);
 		g_watching.store(false);
 		allocations += g_mallocs.load();
 		REQUIRE(status);

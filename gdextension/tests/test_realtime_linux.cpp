@@ -5,7 +5,7 @@
 // on any machine, root or not. No timed assertion.
 
 #include "core/base/realtime.h"
-#include "engine/haptics_engine.h"
+#include "system/haptics_system.h"
 
 #include <doctest/doctest.h>
 
@@ -29,9 +29,9 @@ using namespace haptics;
 namespace {
 
 // Waits (bounded: a loaded machine) until the servo has ticked p_ticks times.
-void wait_for_ticks(const HapticsEngine &p_engine, uint64_t p_ticks) {
+void wait_for_ticks(const HapticsSystem &p_system, uint64_t p_ticks) {
 	const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(20);
-	while (p_engine.stats().ticks < p_ticks && std::chrono::steady_clock::now() < give_up) {
+	while (p_system.stats().ticks < p_ticks && std::chrono::steady_clock::now() < give_up) {
 		std::this_thread::sleep_for(std::chrono::milliseconds(1));
 	}
 }
@@ -111,11 +111,11 @@ RefusedReport run_unprivileged() {
 			report.pin_out_of_range = try_pin_current_thread(100000);
 			report.pin_auto = try_pin_current_thread(PIN_AUTO);
 		});
-		HapticsEngine engine;
-		if (engine.open_simulated_device() && engine.start(1000.0)) {
-			wait_for_ticks(engine, 50);
-			engine.stop();
-			report.servo = engine.stats();
+		HapticsSystem system;
+		if (system.open_simulated_device() && system.start(1000.0)) {
+			wait_for_ticks(system, 50);
+			system.stop();
+			report.servo = system.stats();
 			report.servo_ticks = report.servo.ticks;
 		}
 		const ssize_t written = ::write(fds[1], &report, sizeof(report));
@@ -264,19 +264,19 @@ TEST_CASE("realtime: the spin never returns before the deadline") {
 }
 
 TEST_CASE("servo thread: spin and techniques show in the stats, a spin over half a period is refused") {
-	HapticsEngine engine;
-	REQUIRE(engine.open_simulated_device());
+	HapticsSystem system;
+	REQUIRE(system.open_simulated_device());
 	ServoOptions options;
 	options.spin_ns = 600'000;
-	CHECK(engine.start(options).code() == StatusCode::INVALID_ARGUMENT);
+	CHECK(system.start(options).code() == StatusCode::INVALID_ARGUMENT);
 	options.spin_ns = -2; // -1 is SPIN_AUTO.
-	CHECK(engine.start(options).code() == StatusCode::INVALID_ARGUMENT);
+	CHECK(system.start(options).code() == StatusCode::INVALID_ARGUMENT);
 	options.spin_ns = 50'000;
 	options.realtime.cpu = PIN_AUTO;
-	REQUIRE(engine.start(options));
-	wait_for_ticks(engine, 1500);
-	const ServoStats running = engine.stats();
-	engine.stop();
+	REQUIRE(system.start(options));
+	wait_for_ticks(system, 1500);
+	const ServoStats running = system.stats();
+	system.stop();
 	CHECK(running.ticks >= 1500);
 	CHECK(running.spin_s == doctest::Approx(50e-6));
 	CHECK(running.pinned_cpu >= 0);
@@ -286,24 +286,24 @@ TEST_CASE("servo thread: spin and techniques show in the stats, a spin over half
 	CHECK(running.thread_cpu_fraction <= 1.0);
 	CHECK(running.latency_max_s >= running.latency_p99_s);
 	CHECK(running.latency_p99_s >= running.latency_p50_s);
-	const ServoStats stopped = engine.stats();
+	const ServoStats stopped = system.stats();
 	CHECK(stopped.pinned_cpu == running.pinned_cpu); // Still says what the run had.
 }
 
 TEST_CASE("servo thread: a spin of exactly half a period is accepted, a nanosecond more is refused") {
 	CHECK(max_spin_ns(1000.0) == 500'000);
 	CHECK(max_spin_ns(3000.0) == 166'666); // Half the period the loop rounds to (333 333 ns).
-	HapticsEngine engine;
-	REQUIRE(engine.open_simulated_device());
+	HapticsSystem system;
+	REQUIRE(system.open_simulated_device());
 	ServoOptions options;
 	options.rate_hz = 4000.0;
 	options.spin_ns = max_spin_ns(options.rate_hz) + 1;
-	CHECK(engine.start(options).code() == StatusCode::INVALID_ARGUMENT);
-	CHECK_FALSE(engine.is_running());
+	CHECK(system.start(options).code() == StatusCode::INVALID_ARGUMENT);
+	CHECK_FALSE(system.is_running());
 	options.spin_ns = max_spin_ns(options.rate_hz);
-	REQUIRE(engine.start(options));
-	engine.stop();
-	CHECK(engine.stats().spin_s == doctest::Approx(125e-6));
+	REQUIRE(system.start(options));
+	system.stop();
+	CHECK(system.stats().spin_s == doctest::Approx(125e-6));
 }
 
 TEST_CASE("servo thread: the automatic spin follows what the thread was granted") {
@@ -328,15 +328,15 @@ TEST_CASE("servo thread: the automatic spin follows what the thread was granted"
 	CHECK(effective_spin_ns(options, root) == 0);
 
 	// A thread that is not real-time (nothing asked) reports no spin.
-	HapticsEngine engine;
-	REQUIRE(engine.open_simulated_device());
+	HapticsSystem system;
+	REQUIRE(system.open_simulated_device());
 	ServoOptions unprivileged;
 	unprivileged.realtime.priority = 0;
 	unprivileged.realtime.hold_cpu_latency = false;
-	REQUIRE(engine.start(unprivileged));
-	wait_for_ticks(engine, 10);
-	const ServoStats stats = engine.stats();
-	engine.stop();
+	REQUIRE(system.start(unprivileged));
+	wait_for_ticks(system, 10);
+	const ServoStats stats = system.stats();
+	system.stop();
 	CHECK(stats.scheduler == SchedulerKind::NORMAL);
 	CHECK(stats.spin_s == 0.0);
 }

@@ -4,9 +4,9 @@
 
 #include "core/servo/servo_config_fields.h"
 #include "core/servo/telemetry.h"
-#include "engine/config_table.h"
-#include "engine/render_config.h"
-#include "engine/renderer_registry.h"
+#include "system/config_table.h"
+#include "system/render_config.h"
+#include "system/renderer_registry.h"
 
 #include <doctest/doctest.h>
 

@@ -2,8 +2,8 @@
 // on the stage itself and end to end through the engine's manual step.
 
 #include "core/servo/safety.h"
-#include "engine/haptics_engine.h"
-#include "engine_config.h"
+#include "system/haptics_system.h"
+#include "system_config.h"
 
 #include <doctest/doctest.h>
 
@@ -25,19 +25,19 @@ SafetyConfig plain_safety() {
 
 // An engine with a rigid-hand simulated device pressing into a wall on its right with a
 // steady 2 N (k = 4, i = 0.5), smoothing off so every number is exact.
-void set_up_wall(HapticsEngine &r_engine, const SafetyConfig &p_safety) {
+void set_up_wall(HapticsSystem &r_system, const SafetyConfig &p_safety) {
 	SimulatedDeviceConfig device;
 	device.rigid_hand = true;
-	REQUIRE(r_engine.open_simulated_device(device));
-	REQUIRE(r_engine.set_hand_target({ 0.05, 0.0, 0.0 }));
+	REQUIRE(r_system.open_simulated_device(device));
+	REQUIRE(r_system.set_hand_target({ 0.05, 0.0, 0.0 }));
 	ForceModelConfig model;
 	model.default_contact = ContactMaterial{ 4.0, 0.0 };
-	REQUIRE(reconfigure(r_engine, [&](RenderConfig &c) {
+	REQUIRE(reconfigure(r_system, [&](RenderConfig &c) {
 		c.movement.force_model = model;
 		c.servo.input.dead_zone = 0.0;
 	}));
-	REQUIRE(reconfigure(r_engine, [](RenderConfig &c) { c.movement.smoothing = SmoothingConfig{ false, 13.0 }; }));
-	REQUIRE(reconfigure(r_engine, [&](RenderConfig &c) { c.servo.safety = p_safety; }));
+	REQUIRE(reconfigure(r_system, [](RenderConfig &c) { c.movement.smoothing = SmoothingConfig{ false, 13.0 }; }));
+	REQUIRE(reconfigure(r_system, [&](RenderConfig &c) { c.servo.safety = p_safety; }));
 }
 
 Frame wall_frame() {
@@ -132,37 +132,37 @@ TEST_CASE("safety stage: a non-finite input is zeroed and does not poison the ne
 }
 
 TEST_CASE("engine: force clamped to the simulated device's 3.3 N, direction kept") {
-	HapticsEngine engine;
-	set_up_wall(engine, plain_safety());
-	ForceModelConfig model = engine.config().movement.force_model;
+	HapticsSystem system;
+	set_up_wall(system, plain_safety());
+	ForceModelConfig model = system.config().movement.force_model;
 	model.default_contact = ContactMaterial{ 20.0, 20.0 }; // 10 N normal, 4 N friction.
-	REQUIRE(reconfigure(engine, [&](RenderConfig &c) { c.movement.force_model = model; }));
-	REQUIRE(engine.set_hand_target({ 0.05, 0.02, 0.0 })); // i = (0.5, 0.2, 0)
-	REQUIRE(engine.submit_frame(wall_frame()));
-	REQUIRE(engine.step(DT));
-	const ForceComponents f = engine.forces();
+	REQUIRE(reconfigure(system, [&](RenderConfig &c) { c.movement.force_model = model; }));
+	REQUIRE(system.set_hand_target({ 0.05, 0.02, 0.0 })); // i = (0.5, 0.2, 0)
+	REQUIRE(system.submit_frame(wall_frame()));
+	REQUIRE(system.step(DT));
+	const ForceComponents f = system.forces();
 	CHECK(f.continuous.x == doctest::Approx(-10.0));
 	CHECK(f.continuous.y == doctest::Approx(-4.0));
 	CHECK(length(f.total) == doctest::Approx(3.3));
 	CHECK(f.total.x / f.total.y == doctest::Approx(2.5));
-	CHECK(engine.stats().clamped_ticks == 1);
+	CHECK(system.stats().clamped_ticks == 1);
 }
 
 TEST_CASE("engine: no kick when rendering starts or the device is re-opened") {
-	HapticsEngine engine;
+	HapticsSystem system;
 	SafetyConfig safety = plain_safety();
 	safety.startup_ramp_s = 0.3;
 	safety.slew_rate_n_per_s = 200.0;
-	set_up_wall(engine, safety);
+	set_up_wall(system, safety);
 	for (int pass = 0; pass < 2; ++pass) {
 		CAPTURE(pass);
 		double previous = 0.0;
 		for (int k = 1; k <= 400; ++k) {
 			if (k % 20 == 1) {
-				REQUIRE(engine.submit_frame(wall_frame()));
+				REQUIRE(system.submit_frame(wall_frame()));
 			}
-			REQUIRE(engine.step(DT));
-			const double magnitude = length(engine.forces().total);
+			REQUIRE(system.step(DT));
+			const double magnitude = length(system.forces().total);
 			CHECK(magnitude - previous <= 0.2 + 1e-12); // Never more than slew * dt per tick.
 			CHECK(magnitude >= previous - 1e-12); // Monotonic: no overshoot on a steady push.
 			if (k == 1) {
@@ -174,45 +174,45 @@ TEST_CASE("engine: no kick when rendering starts or the device is re-opened") {
 		// Re-open (a reconnect): the same again, from zero.
 		SimulatedDeviceConfig device;
 		device.rigid_hand = true;
-		REQUIRE(engine.open_simulated_device(device));
-		REQUIRE(engine.set_hand_target({ 0.05, 0.0, 0.0 }));
+		REQUIRE(system.open_simulated_device(device));
+		REQUIRE(system.set_hand_target({ 0.05, 0.0, 0.0 }));
 	}
 }
 
 TEST_CASE("engine: watchdog fades the continuous force within 50 ms of a 100 ms frame gap and recovers") {
-	HapticsEngine engine;
-	set_up_wall(engine, plain_safety()); // timeout 0.1 s, fade 0.04 s
+	HapticsSystem system;
+	set_up_wall(system, plain_safety()); // timeout 0.1 s, fade 0.04 s
 	for (int k = 0; k < 200; ++k) { // 200 ms of healthy 50 Hz frames.
 		if (k % 20 == 0) {
-			REQUIRE(engine.submit_frame(wall_frame()));
+			REQUIRE(system.submit_frame(wall_frame()));
 		}
-		REQUIRE(engine.step(DT));
+		REQUIRE(system.step(DT));
 	}
-	CHECK(engine.forces().total.x == doctest::Approx(-2.0));
+	CHECK(system.forces().total.x == doctest::Approx(-2.0));
 	// Last frame was picked up at tick 180: from there on, silence.
 	for (int since = 20; since <= 160; ++since) { // ms since the last frame
-		REQUIRE(engine.step(DT));
-		const double force = -engine.forces().total.x;
+		REQUIRE(system.step(DT));
+		const double force = -system.forces().total.x;
 		CAPTURE(since);
 		if (since <= 99) {
 			CHECK(force == doctest::Approx(2.0));
-			CHECK_FALSE(engine.stats().watchdog_tripped);
+			CHECK_FALSE(system.stats().watchdog_tripped);
 		} else if (since == 120) {
 			CHECK(force > 0.0); // A fade, not a cut...
 			CHECK(force < 2.0);
 		} else if (since >= 150) {
 			CHECK(force == 0.0); // ... complete within 50 ms of the timeout.
-			CHECK(engine.stats().watchdog_tripped);
-			CHECK(engine.forces().continuous.x == doctest::Approx(-2.0)); // The model still runs.
+			CHECK(system.stats().watchdog_tripped);
+			CHECK(system.forces().continuous.x == doctest::Approx(-2.0)); // The model still runs.
 		}
 	}
 	// Frames return: back to full force, faded in.
 	for (int k = 1; k <= 60; ++k) {
 		if (k % 20 == 1) {
-			REQUIRE(engine.submit_frame(wall_frame()));
+			REQUIRE(system.submit_frame(wall_frame()));
 		}
-		REQUIRE(engine.step(DT));
-		const double force = -engine.forces().total.x;
+		REQUIRE(system.step(DT));
+		const double force = -system.forces().total.x;
 		if (k == 1) {
 			CHECK(force < 0.1);
 		}
@@ -220,21 +220,21 @@ TEST_CASE("engine: watchdog fades the continuous force within 50 ms of a 100 ms 
 			CHECK(force == doctest::Approx(2.0));
 		}
 	}
-	CHECK_FALSE(engine.stats().watchdog_tripped);
+	CHECK_FALSE(system.stats().watchdog_tripped);
 }
 
 TEST_CASE("engine: the watchdog leaves impacts alone") {
-	HapticsEngine engine;
-	set_up_wall(engine, plain_safety());
+	HapticsSystem system;
+	set_up_wall(system, plain_safety());
 	for (int k = 0; k < 300; ++k) { // No frame at all: watchdog tripped.
-		REQUIRE(engine.step(DT));
+		REQUIRE(system.step(DT));
 	}
-	CHECK(engine.stats().watchdog_tripped);
+	CHECK(system.stats().watchdog_tripped);
 	ImpactEvent event;
 	event.direction = { 0.0, 1.0, 0.0 };
 	event.speed = 2.0; // Default material: 0.5 N s/m, 150 Hz, 30 ms.
-	REQUIRE(engine.push_impact(event));
-	REQUIRE(engine.step(DT));
+	REQUIRE(system.push_impact(event));
+	REQUIRE(system.step(DT));
 	const double expected = 1.0 * std::exp(-0.001 / 0.03) * std::sin(2.0 * 3.141592653589793 * 150.0 * 0.001);
-	CHECK(engine.forces().total.y == doctest::Approx(expected));
+	CHECK(system.forces().total.y == doctest::Approx(expected));
 }

@@ -4,8 +4,8 @@
 // time-out that only fails a hung test.
 
 #include "core/servo/telemetry.h"
-#include "engine/haptics_engine.h"
-#include "engine_config.h"
+#include "system/haptics_system.h"
+#include "system_config.h"
 
 #include <doctest/doctest.h>
 
@@ -85,41 +85,41 @@ bool wait_for(Predicate p_done, double p_timeout_s = 20.0) {
 }
 
 // Pressing hard into a wall: far beyond the 3.3 N limit, so output is at full force.
-void render_full_force(HapticsEngine &r_engine) {
+void render_full_force(HapticsSystem &r_system) {
 	ForceModelConfig model;
 	model.default_contact = ContactMaterial{ 20.0, 0.0 };
-	REQUIRE(reconfigure(r_engine, [&](RenderConfig &c) { c.movement.force_model = model; }));
+	REQUIRE(reconfigure(r_system, [&](RenderConfig &c) { c.movement.force_model = model; }));
 	SafetyConfig safety;
 	safety.startup_ramp_s = 0.01;
 	safety.watchdog_timeout_s = 10.0; // Frames are not resubmitted here.
-	REQUIRE(reconfigure(r_engine, [&](RenderConfig &c) { c.servo.safety = safety; }));
-	REQUIRE(r_engine.set_hand_target({ 0.08, 0.0, 0.0 }));
+	REQUIRE(reconfigure(r_system, [&](RenderConfig &c) { c.servo.safety = safety; }));
+	REQUIRE(r_system.set_hand_target({ 0.08, 0.0, 0.0 }));
 	Frame wall;
 	wall.add_contact({ -1.0, 0.0, 0.0 });
-	REQUIRE(r_engine.submit_frame(wall));
+	REQUIRE(r_system.submit_frame(wall));
 }
 
-RecordingDevice *open_recording(HapticsEngine &r_engine, const std::shared_ptr<DeviceLog> &p_log) {
+RecordingDevice *open_recording(HapticsSystem &r_system, const std::shared_ptr<DeviceLog> &p_log) {
 	SimulatedDeviceConfig config;
 	config.rigid_hand = true;
 	auto device = std::make_unique<RecordingDevice>(p_log, config);
 	RecordingDevice *raw = device.get();
-	REQUIRE(r_engine.open_device(std::move(device)));
+	REQUIRE(r_system.open_device(std::move(device)));
 	return raw;
 }
 
 } // namespace
 
 TEST_CASE("servo thread: starts, ticks, reports its scheduler, stops") {
-	HapticsEngine engine;
-	REQUIRE(engine.open_simulated_device());
-	REQUIRE(engine.start(1000.0));
-	CHECK(engine.is_running());
-	CHECK(engine.start(1000.0).code() == StatusCode::INVALID_STATE);
-	CHECK(engine.step(0.001).code() == StatusCode::INVALID_STATE);
-	CHECK(engine.calibrate().code() == StatusCode::INVALID_STATE);
-	REQUIRE(wait_for([&] { return engine.stats().ticks >= 50; }));
-	const ServoStats stats = engine.stats();
+	HapticsSystem system;
+	REQUIRE(system.open_simulated_device());
+	REQUIRE(system.start(1000.0));
+	CHECK(system.is_running());
+	CHECK(system.start(1000.0).code() == StatusCode::INVALID_STATE);
+	CHECK(system.step(0.001).code() == StatusCode::INVALID_STATE);
+	CHECK(system.calibrate().code() == StatusCode::INVALID_STATE);
+	REQUIRE(wait_for([&] { return system.stats().ticks >= 50; }));
+	const ServoStats stats = system.stats();
 	CHECK(stats.running);
 	// On Windows an MMCSS task (realtime_windows.cpp), else normal.
 	CHECK((stats.scheduler == SchedulerKind::REALTIME_FIFO || stats.scheduler == SchedulerKind::NORMAL ||
@@ -129,20 +129,20 @@ TEST_CASE("servo thread: starts, ticks, reports its scheduler, stops") {
 	CHECK(stats.achieved_rate_hz > 0.0);
 	CHECK(stats.period_p50_s > 0.0);
 	CHECK(stats.tick_cost_p50_s > 0.0);
-	engine.stop();
-	CHECK_FALSE(engine.is_running());
-	CHECK(engine.servo_status());
-	engine.stop(); // Idempotent.
+	system.stop();
+	CHECK_FALSE(system.is_running());
+	CHECK(system.servo_status());
+	system.stop(); // Idempotent.
 }
 
 TEST_CASE("servo thread: stop while rendering full force writes zero from the servo before the join") {
 	auto log = std::make_shared<DeviceLog>();
-	HapticsEngine engine;
-	open_recording(engine, log);
-	render_full_force(engine);
-	REQUIRE(engine.start(1000.0));
+	HapticsSystem system;
+	open_recording(system, log);
+	render_full_force(system);
+	REQUIRE(system.start(1000.0));
 	REQUIRE(wait_for([&] { return log->last_magnitude.load() > 3.2; }));
-	engine.stop();
+	system.stop();
 	CHECK(log->last_magnitude.load() == 0.0);
 	CHECK(log->last_writer.load() != std::this_thread::get_id()); // The servo wrote it.
 	CHECK(log->peak_magnitude.load() == doctest::Approx(3.3));
@@ -152,10 +152,10 @@ TEST_CASE("servo thread: stop while rendering full force writes zero from the se
 TEST_CASE("servo thread: destroying the engine mid-render zeroes the force, then closes") {
 	auto log = std::make_shared<DeviceLog>();
 	{
-		HapticsEngine engine;
-		open_recording(engine, log);
-		render_full_force(engine);
-		REQUIRE(engine.start(4000.0));
+		HapticsSystem system;
+		open_recording(system, log);
+		render_full_force(system);
+		REQUIRE(system.start(4000.0));
 		REQUIRE(wait_for([&] { return log->last_magnitude.load() > 3.2; }));
 	} // Scene change / quit.
 	CHECK(log->closed.load());
@@ -165,14 +165,14 @@ TEST_CASE("servo thread: destroying the engine mid-render zeroes the force, then
 
 TEST_CASE("servo thread: 1000 start/stop cycles while rendering, zero force after each") {
 	auto log = std::make_shared<DeviceLog>();
-	HapticsEngine engine;
-	open_recording(engine, log);
-	render_full_force(engine);
+	HapticsSystem system;
+	open_recording(system, log);
+	render_full_force(system);
 	const double rates[] = { 250.0, 1000.0, 4000.0 };
 	int start_failures = 0, hung = 0, nonzero_after_stop = 0, still_running = 0;
 	for (int cycle = 0; cycle < 1000; ++cycle) {
 		const uint64_t writes_before = log->writes.load();
-		if (!engine.start(rates[cycle % 3])) {
+		if (!system.start(rates[cycle % 3])) {
 			++start_failures;
 			continue;
 		}
@@ -181,14 +181,14 @@ TEST_CASE("servo thread: 1000 start/stop cycles while rendering, zero force afte
 			ImpactEvent event;
 			event.direction = { 0.0, 1.0, 0.0 };
 			event.speed = 1.0;
-			engine.push_impact(event);
+			system.push_impact(event);
 		}
-		if (!wait_for([&] { return engine.stats().ticks >= 1; })) {
+		if (!wait_for([&] { return system.stats().ticks >= 1; })) {
 			++hung;
 		}
-		engine.stop();
+		system.stop();
 		nonzero_after_stop += log->last_magnitude.load() != 0.0 ? 1 : 0;
-		still_running += engine.is_running() ? 1 : 0;
+		still_running += system.is_running() ? 1 : 0;
 		if (log->writes.load() < writes_before + 2) {
 			++hung;
 		}
@@ -197,45 +197,45 @@ TEST_CASE("servo thread: 1000 start/stop cycles while rendering, zero force afte
 	CHECK(hung == 0);
 	CHECK(nonzero_after_stop == 0);
 	CHECK(still_running == 0);
-	CHECK(engine.servo_status());
+	CHECK(system.servo_status());
 }
 
 TEST_CASE("servo thread: unplugging stops rendering with a clear error, state survives") {
 	auto log = std::make_shared<DeviceLog>();
-	HapticsEngine engine;
-	RecordingDevice *device = open_recording(engine, log);
-	render_full_force(engine);
-	const RenderConfig config_before = engine.config();
-	REQUIRE(engine.start(1000.0));
-	REQUIRE(wait_for([&] { return engine.stats().ticks >= 20; }));
+	HapticsSystem system;
+	RecordingDevice *device = open_recording(system, log);
+	render_full_force(system);
+	const RenderConfig config_before = system.config();
+	REQUIRE(system.start(1000.0));
+	REQUIRE(wait_for([&] { return system.stats().ticks >= 20; }));
 	device->inner().set_plugged(false);
-	REQUIRE(wait_for([&] { return !engine.is_running(); }));
-	const Status status = engine.servo_status();
+	REQUIRE(wait_for([&] { return !system.is_running(); }));
+	const Status status = system.servo_status();
 	CHECK(status.code() == StatusCode::DEVICE_DISCONNECTED);
 	CHECK(std::strstr(status.message(), "recording device") != nullptr);
 	CHECK(std::strstr(status.message(), "disconnected") != nullptr);
-	CHECK(engine.has_device());
-	CHECK(std::memcmp(&engine.config(), &config_before, sizeof(RenderConfig)) == 0);
-	CHECK(engine.stats().ticks >= 20); // Stats of the run are still readable.
-	engine.stop(); // Joins the ended thread; no hang, no crash.
-	CHECK_FALSE(engine.is_running());
+	CHECK(system.has_device());
+	CHECK(std::memcmp(&system.config(), &config_before, sizeof(RenderConfig)) == 0);
+	CHECK(system.stats().ticks >= 20); // Stats of the run are still readable.
+	system.stop(); // Joins the ended thread; no hang, no crash.
+	CHECK_FALSE(system.is_running());
 
 	// Plugged back in, rendering can start again and the retained frame is felt.
 	device->inner().set_plugged(true);
-	CHECK(engine.servo_status().code() == StatusCode::DEVICE_DISCONNECTED); // Until a new device.
-	REQUIRE(engine.open_device(std::make_unique<RecordingDevice>(log, SimulatedDeviceConfig{})));
-	CHECK(engine.servo_status());
-	REQUIRE(engine.set_hand_target({ 0.08, 0.0, 0.0 }));
-	REQUIRE(engine.start(1000.0));
+	CHECK(system.servo_status().code() == StatusCode::DEVICE_DISCONNECTED); // Until a new device.
+	REQUIRE(system.open_device(std::make_unique<RecordingDevice>(log, SimulatedDeviceConfig{})));
+	CHECK(system.servo_status());
+	REQUIRE(system.set_hand_target({ 0.08, 0.0, 0.0 }));
+	REQUIRE(system.start(1000.0));
 	REQUIRE(wait_for([&] { return log->last_magnitude.load() > 1.0; }));
-	engine.stop();
+	system.stop();
 	CHECK(log->last_magnitude.load() == 0.0);
 }
 
 TEST_CASE("servo thread: the game thread uses every channel while the servo runs") {
-	HapticsEngine engine;
-	REQUIRE(engine.open_simulated_device());
-	REQUIRE(engine.start(2000.0));
+	HapticsSystem system;
+	REQUIRE(system.open_simulated_device());
+	REQUIRE(system.start(2000.0));
 	std::vector<float> telemetry(256 * TELEMETRY_STRIDE);
 	size_t drained = 0, non_finite = 0, time_went_back = 0;
 	float last_time = -1.0f;
@@ -245,19 +245,19 @@ TEST_CASE("servo thread: the game thread uses every channel while the servo runs
 		frame.add_resting({ 0.0, -1.0, 0.0 }, 0.5);
 		frame.water = WaterState{ frame_index % 2 == 0, 0.3, 0.2 };
 		frame.player_velocity = { 1.0, 0.0, 0.0 };
-		REQUIRE(engine.submit_frame(frame));
-		REQUIRE(engine.set_hand_target({ 0.0005 * (frame_index % 100), -0.02, 0.0 }));
+		REQUIRE(system.submit_frame(frame));
+		REQUIRE(system.set_hand_target({ 0.0005 * (frame_index % 100), -0.02, 0.0 }));
 		ImpactEvent event;
 		event.direction = { 0.0, 1.0, 0.0 };
 		event.speed = 2.0;
-		REQUIRE(engine.push_impact(event));
+		REQUIRE(system.push_impact(event));
 		SmoothingConfig smoothing;
 		smoothing.cutoff_hz = 10.0 + frame_index % 5;
-		REQUIRE(reconfigure(engine, [&](RenderConfig &c) { c.movement.smoothing = smoothing; }));
-		non_finite += is_finite(engine.forces().total) ? 0 : 1;
-		non_finite += is_finite(engine.input_vector()) ? 0 : 1;
-		(void)engine.stats();
-		const size_t count = engine.drain_telemetry(telemetry.data(), 256);
+		REQUIRE(reconfigure(system, [&](RenderConfig &c) { c.movement.smoothing = smoothing; }));
+		non_finite += is_finite(system.forces().total) ? 0 : 1;
+		non_finite += is_finite(system.input_vector()) ? 0 : 1;
+		(void)system.stats();
+		const size_t count = system.drain_telemetry(telemetry.data(), 256);
 		for (size_t s = 0; s < count; ++s) {
 			const float *sample = telemetry.data() + s * TELEMETRY_STRIDE;
 			for (size_t c = 0; c < TELEMETRY_STRIDE; ++c) {
@@ -269,12 +269,12 @@ TEST_CASE("servo thread: the game thread uses every channel while the servo runs
 		drained += count;
 		std::this_thread::sleep_for(std::chrono::milliseconds(2));
 	}
-	REQUIRE(wait_for([&] { return engine.stats().frames_received >= 1; }));
-	engine.stop();
+	REQUIRE(wait_for([&] { return system.stats().frames_received >= 1; }));
+	system.stop();
 	CHECK(non_finite == 0);
 	CHECK(time_went_back == 0);
 	CHECK(drained > 0);
-	const ServoStats stats = engine.stats();
+	const ServoStats stats = system.stats();
 	CHECK(stats.non_finite_ticks == 0);
-	CHECK(length(engine.forces().total) <= 3.3 + 1e-9);
+	CHECK(length(system.forces().total) <= 3.3 + 1e-9);
 }

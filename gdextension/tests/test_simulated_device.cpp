@@ -2,8 +2,8 @@
 // it, end stops, determinism, stability over the servo rates, and unplugging.
 
 #include "devices/simulated_device.h"
-#include "engine/haptics_engine.h"
-#include "engine_config.h"
+#include "system/haptics_system.h"
+#include "system_config.h"
 
 #include <doctest/doctest.h>
 
@@ -138,44 +138,44 @@ TEST_CASE("simulated device: configuration is validated by name") {
 	config = SimulatedDeviceConfig{};
 	config.hand_damping_n_s_per_m = INFINITY;
 	CHECK(validate_simulated_device_config(config).code() == StatusCode::INVALID_ARGUMENT);
-	HapticsEngine engine;
-	CHECK_FALSE(engine.open_simulated_device(config));
-	CHECK_FALSE(engine.has_device());
+	HapticsSystem system;
+	CHECK_FALSE(system.open_simulated_device(config));
+	CHECK_FALSE(system.has_device());
 }
 
 TEST_CASE("engine + simulated device: pushing into a wall moves the stylus back off the hand's target") {
-	HapticsEngine engine;
-	REQUIRE(engine.open_simulated_device());
+	HapticsSystem system;
+	REQUIRE(system.open_simulated_device());
 	ForceModelConfig model;
 	model.default_contact = ContactMaterial{ 2.0, 1.0 };
-	REQUIRE(reconfigure(engine, [&](RenderConfig &c) { // Default smoothing and safety.
+	REQUIRE(reconfigure(system, [&](RenderConfig &c) { // Default smoothing and safety.
 		c.movement.force_model = model;
 		c.servo.input.dead_zone = 0.0;
 	}));
-	REQUIRE(engine.set_hand_target({ 0.05, 0.0, 0.0 }));
+	REQUIRE(system.set_hand_target({ 0.05, 0.0, 0.0 }));
 	Frame wall;
 	wall.add_contact({ -1.0, 0.0, 0.0 }); // A wall on the right; normal points back at the player.
 	for (int k = 0; k < 3000; ++k) {
 		if (k % 20 == 0) {
-			REQUIRE(engine.submit_frame(wall));
+			REQUIRE(system.submit_frame(wall));
 		}
-		REQUIRE(engine.step(0.001));
+		REQUIRE(system.step(0.001));
 	}
 	// The stylus settles where the hand's spring balances the rendered force
 	// F = -k x / R: 300 (0.05 - x) = 2 x / 0.1  ->  x = 15 / 320 = 0.046875 m, F = -0.9375 N.
-	const Vec3 position = engine.device_position();
+	const Vec3 position = system.device_position();
 	CHECK(position.x == doctest::Approx(0.046875).epsilon(1e-4));
 	CHECK(position.x < 0.05);
-	CHECK(engine.forces().total.x == doctest::Approx(-0.9375).epsilon(1e-3));
-	CHECK(engine.input_vector().x == doctest::Approx(0.46875).epsilon(1e-4));
+	CHECK(system.forces().total.x == doctest::Approx(-0.9375).epsilon(1e-3));
+	CHECK(system.input_vector().x == doctest::Approx(0.46875).epsilon(1e-4));
 
 	// Without the wall the stylus goes all the way to the hand.
 	for (int k = 0; k < 3000; ++k) {
 		if (k % 20 == 0) {
-			REQUIRE(engine.submit_frame(Frame{}));
+			REQUIRE(system.submit_frame(Frame{}));
 		}
-		REQUIRE(engine.step(0.001));
+		REQUIRE(system.step(0.001));
 	}
-	CHECK(engine.device_position().x == doctest::Approx(0.05).epsilon(1e-4));
-	CHECK(length(engine.forces().total) < 1e-4);
+	CHECK(system.device_position().x == doctest::Approx(0.05).epsilon(1e-4));
+	CHECK(length(system.forces().total) < 1e-4);
 }

@@ -3,9 +3,9 @@
 // threaded servo runs exactly the same ServoPipeline::tick. Skipped under the sanitizers,
 // which bring their own allocator.
 
-#include "engine/haptics_engine.h"
-#include "engine_config.h"
 #include "renderers/pong/pong_port.h"
+#include "system/haptics_system.h"
+#include "system_config.h"
 
 #include <doctest/doctest.h>
 
@@ -43,9 +43,9 @@ using namespace haptics;
 
 TEST_CASE("a tick allocates nothing, whatever it renders") {
 #ifdef HAPTICS_COUNT_ALLOCATIONS
-	HapticsEngine engine;
-	REQUIRE(engine.open_simulated_device());
-	REQUIRE(engine.set_hand_target({ 0.04, -0.03, 0.0 }));
+	HapticsSystem system;
+	REQUIRE(system.open_simulated_device());
+	REQUIRE(system.set_hand_target({ 0.04, -0.03, 0.0 }));
 	unsigned long allocations = 0;
 	for (int k = 0; k < 2000; ++k) {
 		if (k % 20 == 0) {
@@ -54,17 +54,17 @@ TEST_CASE("a tick allocates nothing, whatever it renders") {
 			frame.add_contact({ -1.0, 0.2, 0.0 });
 			frame.add_resting({ 0.0, -1.0, 0.0 }, 0.5);
 			frame.water = WaterState{ k > 1000, 0.4, 0.2 };
-			REQUIRE(engine.submit_frame(frame));
+			REQUIRE(system.submit_frame(frame));
 		}
 		if (k % 50 == 0) {
 			ImpactEvent event;
 			event.direction = { 0.0, 1.0, 0.0 };
 			event.speed = 3.0;
-			REQUIRE(engine.push_impact(event));
+			REQUIRE(system.push_impact(event));
 		}
 		t_allocations = 0;
 		t_watching = true;
-		const Status status = engine.step(0.001);
+		const Status status = system.step(0.001);
 		t_watching = false;
 		allocations += t_allocations;
 		REQUIRE(status);
@@ -84,11 +84,11 @@ TEST_CASE("a tick allocates nothing, whatever it renders") {
 
 TEST_CASE("a pong tick allocates nothing: contacts, bounces, effects, commands and events") {
 #ifdef HAPTICS_COUNT_ALLOCATIONS
-	HapticsEngine engine;
-	REQUIRE(engine.open_simulated_device());
-	REQUIRE(engine.set_hand_target({ 0.0, 0.02, 0.0 }));
-	REQUIRE(reconfigure(engine, [](RenderConfig &r_config) { r_config.servo.render_mode = RenderMode::PONG; }));
-	PongPort pong(engine.renderers().pong.channels);
+	HapticsSystem system;
+	REQUIRE(system.open_simulated_device());
+	REQUIRE(system.set_hand_target({ 0.0, 0.02, 0.0 }));
+	REQUIRE(reconfigure(system, [](RenderConfig &r_config) { r_config.servo.render_mode = RenderMode::PONG; }));
+	PongPort pong(system.renderers().pong.channels);
 	PongInput input;
 	input.local_player = 0;
 	input.players[0].avatar = { 0.0, 1.0, 2.0 };
@@ -121,7 +121,7 @@ TEST_CASE("a pong tick allocates nothing: contacts, bounces, effects, commands a
 		}
 		t_allocations = 0;
 		t_watching = true;
-		const Status status = engine.step(0.001);
+		const Status status = system.step(0.001);
 		t_watching = false;
 		allocations += t_allocations;
 		REQUIRE(status);

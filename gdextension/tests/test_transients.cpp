@@ -2,8 +2,8 @@
 // and overlaid raw on the smoothed continuous force.
 
 #include "core/servo/transients.h"
-#include "engine/haptics_engine.h"
-#include "engine_config.h"
+#include "system/haptics_system.h"
+#include "system_config.h"
 
 #include <doctest/doctest.h>
 
@@ -163,30 +163,30 @@ TEST_CASE("transient: a full bank counts drops, keeps the strongest, never fails
 }
 
 TEST_CASE("engine: impacts are overlaid raw on the smoothed continuous force") {
-	HapticsEngine engine;
+	HapticsSystem system;
 	SimulatedDeviceConfig device;
 	device.rigid_hand = true;
-	REQUIRE(engine.open_simulated_device(device));
-	REQUIRE(engine.set_hand_target({ 0.0, -0.05, 0.0 })); // Pressing down: i = (0, -0.5, 0).
+	REQUIRE(system.open_simulated_device(device));
+	REQUIRE(system.set_hand_target({ 0.0, -0.05, 0.0 })); // Pressing down: i = (0, -0.5, 0).
 	ForceModelConfig model;
 	model.default_contact = ContactMaterial{ 2.0, 1.0 };
-	REQUIRE(reconfigure(engine, [&](RenderConfig &c) {
+	REQUIRE(reconfigure(system, [&](RenderConfig &c) {
 		c.movement.force_model = model;
 		c.servo.input.dead_zone = 0.0;
 	}));
 	SafetyConfig safety;
 	safety.startup_ramp_s = 0.0;
 	safety.slew_rate_n_per_s = 0.0;
-	REQUIRE(reconfigure(engine, [&](RenderConfig &c) { c.servo.safety = safety; }));
+	REQUIRE(reconfigure(system, [&](RenderConfig &c) { c.servo.safety = safety; }));
 
 	Frame frame;
 	frame.add_contact({ 0.0, 1.0, 0.0 }); // Landing on a floor: continuous force steps to 1 N up.
-	REQUIRE(engine.submit_frame(frame));
-	REQUIRE(engine.push_impact(impact({ 0.0, 1.0, 0.0 }, 3.0, 0.5, 250.0, 0.02)));
+	REQUIRE(system.submit_frame(frame));
+	REQUIRE(system.push_impact(impact({ 0.0, 1.0, 0.0 }, 3.0, 0.5, 250.0, 0.02)));
 	const double dt = 0.001;
 	for (int k = 1; k <= 20; ++k) {
-		REQUIRE(engine.step(dt));
-		const ForceComponents f = engine.forces();
+		REQUIRE(system.step(dt));
+		const ForceComponents f = system.forces();
 		CHECK(f.continuous.y == doctest::Approx(1.0)); // Raw continuous: a step.
 		CHECK(f.smoothed.y < 0.6); // Smoothed: still rising after 20 ms.
 		const double raw = expected(1.5, 250.0, 0.02, k * dt);

@@ -9,10 +9,10 @@
 #include "dev_tools/uhid/dualsense_uhid.h"
 #include "devices/dualsense/dualsense_backend.h"
 #include "devices/dualsense/dualsense_mapping.h"
-#include "engine/device_factory.h"
-#include "engine/haptics_engine.h"
 #include "rig.h"
 #include "scenarios.h"
+#include "system/device_factory.h"
+#include "system/haptics_system.h"
 
 #include <algorithm>
 #include <cmath>
@@ -63,7 +63,7 @@ std::vector<uint8_t> strongest_rumble(const uhid::DualSenseUhidPad &p_pad) {
 
 // Opens the listed pad on hidraw and runs the servo on it; false (with the checks saying
 // why) when it cannot.
-bool open_on_hidraw(Report &r_report, HapticsEngine &p_engine, const char *p_when) {
+bool open_on_hidraw(Report &r_report, HapticsSystem &p_system, const char *p_when) {
 	DeviceInfo info;
 	const bool listed = find_listed(dualsense::SONY_VENDOR_ID, dualsense::DUALSENSE_PRODUCT_ID, BACKEND_HIDAPI, info, 8.0);
 	if (!r_report.check(listed, std::string(p_when) + ": list_all_devices() finds the pad on hidapi")) {
@@ -77,20 +77,20 @@ bool open_on_hidraw(Report &r_report, HapticsEngine &p_engine, const char *p_whe
 	if (!r_report.check(opened.ok(), std::string(p_when) + ": the factory opens it, hid-playstation bound " + opened.message())) {
 		return false;
 	}
-	const Status engine_opened = p_engine.open_device(std::move(device));
-	const Status started = p_engine.start(1000.0);
+	const Status engine_opened = p_system.open_device(std::move(device));
+	const Status started = p_system.start(1000.0);
 	return r_report.check(engine_opened.ok() && started.ok(),
 			std::string(p_when) + ": the servo runs it " + engine_opened.message() + started.message());
 }
 
 // The hand pressed into the floor: the triggers' resistance on the wire is the mapping's for
 // the servo's continuous force.
-bool press_into_floor(Report &r_report, uhid::DualSenseUhidPad &p_pad, HapticsEngine &p_engine, const char *p_when) {
+bool press_into_floor(Report &r_report, uhid::DualSenseUhidPad &p_pad, HapticsSystem &p_system, const char *p_when) {
 	p_pad.pad().set_stick_deflection(0.0, 0.0);
-	stand_on_floor(p_engine, 0.4);
+	stand_on_floor(p_system, 0.4);
 	p_pad.pad().set_stick_deflection(0.0, -0.6); // Pushed down: the hand presses into the floor.
-	stand_on_floor(p_engine, 1.0);
-	const ForceComponents forces = p_engine.forces();
+	stand_on_floor(p_system, 1.0);
+	const ForceComponents forces = p_system.forces();
 	const double continuous_n = length(forces.total - forces.impact);
 	dualsense::TriggerMapper mapper;
 	const int strength = mapper.update(continuous_n);
@@ -111,14 +111,14 @@ bool press_into_floor(Report &r_report, uhid::DualSenseUhidPad &p_pad, HapticsEn
 // An impact of amplitude p_amplitude_n: the weak motor's bytes peak at what the mapping gives
 // for the transients' sampled crest (between 70 % and 100 % of the amplitude), the strong one
 // stays off below the knee, and both end at zero.
-void knock(Report &r_report, uhid::DualSenseUhidPad &p_pad, HapticsEngine &p_engine) {
+void knock(Report &r_report, uhid::DualSenseUhidPad &p_pad, HapticsSystem &p_system) {
 	constexpr double AMPLITUDE_N = 1.2; // ImpactMaterial gain 0.5 N per m/s at 2.4 m/s.
 	p_pad.clear_outputs();
 	ImpactEvent impact;
 	impact.direction = Vec3{ 0.0, 1.0, 0.0 };
 	impact.speed = AMPLITUDE_N / ImpactMaterial{}.gain;
-	(void)p_engine.push_impact(impact);
-	stand_on_floor(p_engine, 0.4);
+	(void)p_system.push_impact(impact);
+	stand_on_floor(p_system, 0.4);
 	const std::vector<uint8_t> strongest = strongest_rumble(p_pad);
 	r_report.wire("impact: strongest rumble report", strongest);
 	const double full_scale = dualsense::MappingConfig{}.impact_full_scale_n;
@@ -142,33 +142,33 @@ int run_dualsense() {
 	if (!report.check(device.plug().ok(), "the pad is a uhid device")) {
 		return report.failed();
 	}
-	HapticsEngine engine;
-	if (open_on_hidraw(report, engine, "plugged")) {
+	HapticsSystem system;
+	if (open_on_hidraw(report, system, "plugged")) {
 		const std::vector<uint8_t> asked = device.features_asked();
 		const std::vector<uint8_t> kernel_asked(asked.begin(), asked.begin() + std::min<size_t>(asked.size(), 3));
 		report.check(kernel_asked == std::vector<uint8_t>{ 0x09, 0x20, 0x05 },
 				"hid-playstation read feature reports 09 20 05 (pairing, firmware, calibration); all asked: " + hex_ids(asked));
-		press_into_floor(report, device, engine, "plugged");
-		knock(report, device, engine);
+		press_into_floor(report, device, system, "plugged");
+		knock(report, device, system);
 	}
 
 	device.unplug(); // In the middle of the session: the hand still pressed into the floor.
-	const bool noticed = eventually([&] { return engine.device_status().io == DeviceIo::DISCONNECTED; }, 3.0);
-	report.check(noticed && engine.device_status().reason[0] != '\0',
-			std::string("unplugged: the device says DISCONNECTED: ") + engine.device_status().reason);
-	const bool stopped = servo_stops(engine, 3.0);
-	const Status servo = engine.servo_status();
+	const bool noticed = eventually([&] { return system.device_status().io == DeviceIo::DISCONNECTED; }, 3.0);
+	report.check(noticed && system.device_status().reason[0] != '\0',
+			std::string("unplugged: the device says DISCONNECTED: ") + system.device_status().reason);
+	const bool stopped = servo_stops(system, 3.0);
+	const Status servo = system.servo_status();
 	report.check(stopped && servo.code() == StatusCode::DEVICE_DISCONNECTED &&
 					std::string(servo.message()).find("zero force") != std::string::npos,
 			std::string("unplugged: the servo stopped at zero force: ") + servo.message());
-	engine.close_device();
+	system.close_device();
 
 	report.check(device.plug().ok(), "replugged");
-	if (open_on_hidraw(report, engine, "replugged")) {
-		press_into_floor(report, device, engine, "replugged");
+	if (open_on_hidraw(report, system, "replugged")) {
+		press_into_floor(report, device, system, "replugged");
 	}
-	engine.stop();
-	engine.close_device();
+	system.stop();
+	system.close_device();
 	report.check(eventually([&] { return dualsense::trigger_feedback_strength(pad->held().right_trigger) == 0; }, 2.0),
 			"closed: our backend left the triggers off");
 

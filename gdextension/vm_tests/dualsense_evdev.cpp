@@ -6,10 +6,10 @@
 #include "dev_tools/uhid/dualsense_uhid.h"
 #include "devices/dualsense/dualsense_backend.h"
 #include "devices/evdev/evdev_backend.h"
-#include "engine/haptics_engine.h"
 #include "recording_syscalls.h"
 #include "rig.h"
 #include "scenarios.h"
+#include "system/haptics_system.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -67,21 +67,21 @@ void run_dualsense_evdev(Report &r_report, uhid::DualSenseUhidPad &p_pad) {
 	r_report.check(device->output() == evdev::EvdevOutput::RUMBLE && device->capabilities().output == ForceOutput::VIBRATION,
 			"evdev: opened as a vibration device (one FF_RUMBLE effect)");
 
-	HapticsEngine engine;
-	const Status engine_opened = engine.open_device(std::move(device));
-	const Status started = engine.start(1000.0);
+	HapticsSystem system;
+	const Status engine_opened = system.open_device(std::move(device));
+	const Status started = system.start(1000.0);
 	if (!r_report.check(engine_opened.ok() && started.ok(),
 				std::string("evdev: the servo runs it ") + engine_opened.message() + started.message())) {
 		return;
 	}
 	p_pad.pad().set_stick_deflection(0.0, 0.0);
-	stand_on_floor(engine, 0.3);
+	stand_on_floor(system, 0.3);
 	p_pad.clear_outputs();
 	ImpactEvent impact;
 	impact.direction = Vec3{ 0.0, 1.0, 0.0 };
 	impact.speed = 6.0; // 3 N: the servo's impact cap, full rumble.
-	(void)engine.push_impact(impact);
-	stand_on_floor(engine, 0.5);
+	(void)system.push_impact(impact);
+	stand_on_floor(system, 0.5);
 
 	const std::vector<KernelRumble> rumbles = kernel_rumbles(p_pad);
 	const std::vector<evdev::FfEffectFields> uploads = sys->uploads();
@@ -108,8 +108,8 @@ void run_dualsense_evdev(Report &r_report, uhid::DualSenseUhidPad &p_pad) {
 	r_report.check(matched == rumbles.size() && strongest->right > 64, text);
 	const bool quiet = eventually([&] { return p_pad.pad().held().motor_right == 0 && p_pad.pad().held().motor_left == 0; }, 2.0);
 	r_report.check(quiet, "evdev: the motors are back at zero once the hit has faded");
-	engine.stop();
-	engine.close_device();
+	system.stop();
+	system.close_device();
 }
 
 } // namespace haptics::vm

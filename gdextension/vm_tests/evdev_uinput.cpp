@@ -9,10 +9,10 @@
 
 #include "dev_tools/uinput/uinput_ff_device.h"
 #include "devices/evdev/evdev_backend.h"
-#include "engine/device_factory.h"
-#include "engine/haptics_engine.h"
 #include "rig.h"
 #include "scenarios.h"
+#include "system/device_factory.h"
+#include "system/haptics_system.h"
 
 #include <cmath>
 #include <cstdio>
@@ -80,24 +80,24 @@ std::unique_ptr<HapticDevice> open_listed(Report &r_report, uinput::UinputFfDevi
 
 // Runs the servo on the listed stick with the hand pressed into a floor; true when the
 // constant force the device holds is the servo's.
-bool press_into_floor(Report &r_report, uinput::UinputFfDevice &p_stick, HapticsEngine &p_engine, const char *p_when,
+bool press_into_floor(Report &r_report, uinput::UinputFfDevice &p_stick, HapticsSystem &p_system, const char *p_when,
 		bool p_reopen = false) {
 	std::unique_ptr<HapticDevice> device = open_listed(r_report, p_stick, p_when, p_reopen);
 	if (!device) {
 		return false;
 	}
 	const double max_force_n = device->limits().max_force_n;
-	const Status engine_opened = p_engine.open_device(std::move(device));
-	const Status started = p_engine.start(1000.0);
+	const Status engine_opened = p_system.open_device(std::move(device));
+	const Status started = p_system.start(1000.0);
 	if (!r_report.check(engine_opened.ok() && started.ok(),
 				std::string(p_when) + ": the servo runs it " + engine_opened.message() + started.message())) {
 		return false;
 	}
 	(void)p_stick.set_stick_axes(0.0, 0.0);
-	stand_on_floor(p_engine, 0.4);
+	stand_on_floor(p_system, 0.4);
 	(void)p_stick.set_stick_axes(0.0, 0.8); // Pulled toward the user: the hand presses down.
-	stand_on_floor(p_engine, 1.0);
-	const Vec3 servo = p_engine.forces().total;
+	stand_on_floor(p_system, 1.0);
+	const Vec3 servo = p_system.forces().total;
 	const Vec3 played = played_n(p_stick, max_force_n);
 	uinput::UinputRecord upload;
 	const bool uploaded = p_stick.last_upload(evdev::EVDEV_FF_CONSTANT, upload);
@@ -123,28 +123,28 @@ int run_evdev_uinput() {
 	}
 	check_kernel_facts(report, stick);
 
-	HapticsEngine engine;
-	press_into_floor(report, stick, engine, "created");
-	engine.stop();
-	engine.close_device();
+	HapticsSystem system;
+	press_into_floor(report, stick, system, "created");
+	system.stop();
+	system.close_device();
 	uinput::UinputRecord erased;
 	const bool erased_ours = last_record(stick, uinput::UinputRecord::Kind::ERASE, erased) && stick.effects_in_use() == 0;
 	report.check(erased_ours, "closed: our backend erased its effect (id " + std::to_string(erased.id) + ")");
-	press_into_floor(report, stick, engine, "reopened", true);
+	press_into_floor(report, stick, system, "reopened", true);
 
 	stick.destroy(); // In the middle of the session.
-	const bool noticed = eventually([&] { return engine.device_status().io == DeviceIo::DISCONNECTED; }, 3.0);
-	report.check(noticed && engine.device_status().reason[0] != '\0',
-			std::string("destroyed: the device says DISCONNECTED: ") + engine.device_status().reason);
-	const bool stopped = servo_stops(engine, 3.0);
-	report.check(stopped, std::string("destroyed: the servo stopped: ") + engine.servo_status().message());
-	engine.close_device();
+	const bool noticed = eventually([&] { return system.device_status().io == DeviceIo::DISCONNECTED; }, 3.0);
+	report.check(noticed && system.device_status().reason[0] != '\0',
+			std::string("destroyed: the device says DISCONNECTED: ") + system.device_status().reason);
+	const bool stopped = servo_stops(system, 3.0);
+	report.check(stopped, std::string("destroyed: the servo stopped: ") + system.servo_status().message());
+	system.close_device();
 
 	const Status made = stick.create(PHYS);
 	report.check(made.ok(), "made again at " + stick.event_path() + " " + made.message());
-	press_into_floor(report, stick, engine, "made again");
-	engine.stop();
-	engine.close_device();
+	press_into_floor(report, stick, system, "made again");
+	system.stop();
+	system.close_device();
 	stick.destroy();
 	return report.failed();
 }

@@ -26,7 +26,7 @@ constexpr uint16_t FTDI_VENDOR = 0x0403;
 constexpr uint16_t FALCON_PRODUCT = 0xCB48;
 constexpr const char *FIRMWARE_PATH = "/tmp/falcon-test-firmware.bin";
 
-void press_into_floor(Report &r_report, falcon::ScriptedFalcon &p_falcon, HapticsEngine &r_engine, const std::string &p_when) {
+void press_into_floor(Report &r_report, falcon::ScriptedFalcon &p_falcon, HapticsSystem &r_system, const std::string &p_when) {
 	DeviceInfo info;
 	if (!r_report.check(find_listed(FTDI_VENDOR, FALCON_PRODUCT, BACKEND_LIBUSB, info), p_when + ": list_all_devices() finds the Falcon")) {
 		return;
@@ -37,7 +37,7 @@ void press_into_floor(Report &r_report, falcon::ScriptedFalcon &p_falcon, Haptic
 	p_falcon.set_device_position(Vec3{ 0.0, 0.0, 0.0 });
 	const auto opening = std::chrono::steady_clock::now();
 	double max_force_n = 0.0;
-	if (!open_and_run(r_report, info, r_engine, max_force_n, p_when)) {
+	if (!open_and_run(r_report, info, r_system, max_force_n, p_when)) {
 		return;
 	}
 	const double open_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - opening).count();
@@ -46,11 +46,11 @@ void press_into_floor(Report &r_report, falcon::ScriptedFalcon &p_falcon, Haptic
 			p_falcon.uploaded_image().size());
 	r_report.info(text);
 	r_report.check(p_falcon.uploaded_image() == falcon::make_test_firmware_image(), p_when + ": the firmware on the device is the file's");
-	stand_on_floor(r_engine, 0.5);
+	stand_on_floor(r_system, 0.5);
 	p_falcon.set_device_position(Vec3{ 0.0, -0.02, 0.0 }); // 2 cm down into the floor.
 	const uint64_t commands_before = p_falcon.counters().commands;
 	const auto start = std::chrono::steady_clock::now();
-	stand_on_floor(r_engine, 1.0);
+	stand_on_floor(r_system, 1.0);
 	const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 	std::snprintf(text, sizeof(text), "%s: %.0f exchanges/s of 16 bytes each way over the bus", p_when.c_str(),
 			static_cast<double>(p_falcon.counters().commands - commands_before) / seconds);
@@ -59,7 +59,7 @@ void press_into_floor(Report &r_report, falcon::ScriptedFalcon &p_falcon, Haptic
 	if (!writes.empty()) {
 		r_report.wire(p_when + ": last command", writes.back().bytes);
 	}
-	const Vec3 servo = r_engine.forces().total;
+	const Vec3 servo = r_system.forces().total;
 	r_report.check(servo.y > 0.3, p_when + ": the floor pushes the hand up");
 	// The motor words are 16-bit and the kinematics exact: 2 % of full scale.
 	same_force(r_report, servo, p_falcon.last_force_device(), 0.02 * max_force_n, p_when);
@@ -89,21 +89,21 @@ int run_falcon_usb() {
 	if (!report.check(plugged.ok(), std::string("the Falcon is a USB gadget ") + plugged.message())) {
 		return report.failed();
 	}
-	HapticsEngine engine;
-	press_into_floor(report, *model, engine, "plugged");
+	HapticsSystem system;
+	press_into_floor(report, *model, system, "plugged");
 
 	(void)falcon.unplug();
-	expect_unplugged(report, engine, "unplugged");
-	engine.close_device();
+	expect_unplugged(report, system, "unplugged");
+	system.close_device();
 
 	model->clear_record();
 	const Status replugged = falcon.plug();
 	if (report.check(replugged.ok(), std::string("replugged ") + replugged.message())) {
 		report.check(!model->firmware_running(), "replugged: the Falcon powered up without firmware");
-		press_into_floor(report, *model, engine, "replugged");
+		press_into_floor(report, *model, system, "replugged");
 	}
-	engine.stop();
-	engine.close_device();
+	system.stop();
+	system.close_device();
 	falcon.destroy();
 	return report.failed();
 }

@@ -19,7 +19,7 @@ constexpr uint16_t AJ_VENDOR = 0x2341;
 constexpr uint16_t AJ_PRODUCT = 0x8036;
 constexpr uint8_t SET_CONSTANT_FORCE = 0x05; // AJ's report ID.
 
-void press_into_floor(Report &r_report, pid::ScriptedPidJoystick &p_joystick, HapticsEngine &r_engine, const std::string &p_when) {
+void press_into_floor(Report &r_report, pid::ScriptedPidJoystick &p_joystick, HapticsSystem &r_system, const std::string &p_when) {
 	DeviceInfo info;
 	if (!r_report.check(find_listed(AJ_VENDOR, AJ_PRODUCT, BACKEND_HIDAPI, info), p_when + ": list_all_devices() finds the stick")) {
 		return;
@@ -28,14 +28,14 @@ void press_into_floor(Report &r_report, pid::ScriptedPidJoystick &p_joystick, Ha
 			(info.openable ? "openable" : "not openable: " + info.unavailable_reason));
 	r_report.check(info.driver == DRIVER_HID_PID && info.openable, p_when + ": the HID PID backend drives it");
 	double max_force_n = 0.0;
-	if (!open_and_run(r_report, info, r_engine, max_force_n, p_when)) {
+	if (!open_and_run(r_report, info, r_system, max_force_n, p_when)) {
 		return;
 	}
 	p_joystick.set_stick(0.0, 0.0);
-	stand_on_floor(r_engine, 0.5);
+	stand_on_floor(r_system, 0.5);
 	p_joystick.set_stick(0.0, 0.8); // Pulled toward the user: the hand presses down.
-	stand_on_floor(r_engine, 1.0);
-	const Vec3 servo = r_engine.forces().total;
+	stand_on_floor(r_system, 1.0);
+	const Vec3 servo = r_system.forces().total;
 	r_report.wire(p_when + ": last Set Constant Force", pid_last_output(p_joystick, SET_CONSTANT_FORCE));
 	r_report.check(servo.y > 0.3, p_when + ": the floor pushes the hand up");
 	// AJ's direction has 256 steps (1.4 degrees): 3 % of full scale sideways.
@@ -56,17 +56,17 @@ int run_pid_hidraw() {
 	if (!report.check(plugged.ok(), std::string("the stick is a uhid device ") + plugged.message())) {
 		return report.failed();
 	}
-	HapticsEngine engine;
-	press_into_floor(report, *joystick, engine, "plugged");
+	HapticsSystem system;
+	press_into_floor(report, *joystick, system, "plugged");
 
 	stick.unplug();
-	expect_unplugged(report, engine, "unplugged");
-	engine.close_device();
+	expect_unplugged(report, system, "unplugged");
+	system.close_device();
 
 	report.check(stick.plug(identity).ok(), "replugged");
-	press_into_floor(report, *joystick, engine, "replugged");
-	engine.stop();
-	engine.close_device();
+	press_into_floor(report, *joystick, system, "replugged");
+	system.stop();
+	system.close_device();
 	stick.unplug();
 	return report.failed();
 }

@@ -62,16 +62,16 @@ bool choose(Report &r_report, bool p_kernel_owns, DeviceInfo &r_choice, const st
 	return r_report.check(r_choice.backend == expected, p_when + ": the probe chose " + r_choice.backend + " (" + (p_kernel_owns ? "hid-pidff drives it" : "hid-pidff refused it") + ")");
 }
 
-bool press_into_floor(Report &r_report, pid::ScriptedPidJoystick &p_joystick, HapticsEngine &r_engine,
+bool press_into_floor(Report &r_report, pid::ScriptedPidJoystick &p_joystick, HapticsSystem &r_system,
 		const DeviceInfo &p_info, double &r_max_force_n, const std::string &p_when) {
-	if (!open_and_run(r_report, p_info, r_engine, r_max_force_n, p_when)) {
+	if (!open_and_run(r_report, p_info, r_system, r_max_force_n, p_when)) {
 		return false;
 	}
 	p_joystick.set_stick(0.0, 0.0);
-	stand_on_floor(r_engine, 0.5);
+	stand_on_floor(r_system, 0.5);
 	p_joystick.set_stick(0.0, 0.8);
-	stand_on_floor(r_engine, 1.0);
-	const Vec3 servo = r_engine.forces().total;
+	stand_on_floor(r_system, 1.0);
+	const Vec3 servo = r_system.forces().total;
 	r_report.wire(p_when + ": last Set Effect", pid_last_output(p_joystick, SET_EFFECT));
 	r_report.wire(p_when + ": last Set Constant Force", pid_last_output(p_joystick, SET_CONSTANT_FORCE));
 	r_report.check(servo.y > 0.3, p_when + ": the floor pushes the hand up");
@@ -80,13 +80,13 @@ bool press_into_floor(Report &r_report, pid::ScriptedPidJoystick &p_joystick, Ha
 
 // The stick swept in a circle for p_seconds, the servo's force changing every tick, then
 // held: the force on the wire must be the servo's last.
-void burst(Report &r_report, pid::ScriptedPidJoystick &p_joystick, HapticsEngine &r_engine, double p_max_force_n,
+void burst(Report &r_report, pid::ScriptedPidJoystick &p_joystick, HapticsSystem &r_system, double p_max_force_n,
 		const std::string &p_when) {
 	const int queue_full_before = kernel_log_count("output queue full");
 	const size_t constants_before = pid_output_count(p_joystick, SET_CONSTANT_FORCE);
 	const size_t effects_before = pid_output_count(p_joystick, SET_EFFECT);
 	const auto start = std::chrono::steady_clock::now();
-	std::thread frames([&] { stand_on_floor(r_engine, 2.0); });
+	std::thread frames([&] { stand_on_floor(r_system, 2.0); });
 	for (double t = 0.0; t < 1.0;) {
 		const double angle = 2.0 * std::numbers::pi * 4.0 * t;
 		p_joystick.set_stick(0.4 * std::sin(angle), 0.5 + 0.3 * std::cos(angle));
@@ -104,7 +104,7 @@ void burst(Report &r_report, pid::ScriptedPidJoystick &p_joystick, HapticsEngine
 	r_report.wire(p_when + ": last Set Effect", pid_last_output(p_joystick, SET_EFFECT));
 	r_report.wire(p_when + ": last Set Constant Force", pid_last_output(p_joystick, SET_CONSTANT_FORCE));
 	r_report.check(dropped == 0, p_when + ": no update was dropped");
-	same_force(r_report, r_engine.forces().total, pid_wire_n(p_joystick, p_max_force_n), 0.03 * p_max_force_n,
+	same_force(r_report, r_system.forces().total, pid_wire_n(p_joystick, p_max_force_n), 0.03 * p_max_force_n,
 			p_when + ": the wire holds the last command");
 }
 
@@ -122,29 +122,29 @@ void run_stick(Report &r_report, pid::ScriptedFirmware p_firmware, bool p_kernel
 	if (!r_report.check(plugged.ok(), p_label + ": the stick is a USB gadget " + plugged.message())) {
 		return;
 	}
-	HapticsEngine engine;
+	HapticsSystem system;
 	DeviceInfo info;
 	double max_force_n = 0.0;
 	if (choose(r_report, p_kernel_owns, info, p_label) &&
-			press_into_floor(r_report, *joystick, engine, info, max_force_n, p_label) && p_kernel_owns) {
-		burst(r_report, *joystick, engine, max_force_n, p_label + ", burst");
+			press_into_floor(r_report, *joystick, system, info, max_force_n, p_label) && p_kernel_owns) {
+		burst(r_report, *joystick, system, max_force_n, p_label + ", burst");
 	}
 	(void)stick.unplug();
-	expect_unplugged(r_report, engine, p_label + ", unplugged");
-	engine.close_device();
+	expect_unplugged(r_report, system, p_label + ", unplugged");
+	system.close_device();
 	joystick->set_plugged(false); // The firmware restarts when power returns.
 	joystick->set_plugged(true);
 	const Status replugged = stick.plug();
 	if (r_report.check(replugged.ok(), p_label + ": replugged " + replugged.message()) &&
 			choose(r_report, p_kernel_owns, info, p_label + ", replugged")) {
-		press_into_floor(r_report, *joystick, engine, info, max_force_n, p_label + ", replugged");
+		press_into_floor(r_report, *joystick, system, info, max_force_n, p_label + ", replugged");
 	}
 	const gadget::HidGadgetCounts counts = stick.counts();
 	r_report.info(p_label + ": the gadget moved " + std::to_string(counts.inputs) + " input and " +
 			std::to_string(counts.outputs) + " output reports, " + std::to_string(counts.get_reports) + " GET_REPORT, " +
 			std::to_string(counts.set_reports) + " SET_REPORT");
-	engine.stop();
-	engine.close_device();
+	system.stop();
+	system.close_device();
 	r_report.info(p_label + ": closed");
 	stick.destroy();
 	r_report.info(p_label + ": gadget removed");

@@ -1,6 +1,6 @@
 #include "rig.h"
 
-#include "engine/device_factory.h"
+#include "system/device_factory.h"
 
 #include <sys/klog.h>
 #include <sys/utsname.h>
@@ -34,18 +34,18 @@ bool find_listed(uint16_t p_vendor, uint16_t p_product, std::string_view p_backe
 			p_seconds);
 }
 
-void stand_on_floor(HapticsEngine &p_engine, double p_seconds) {
+void stand_on_floor(HapticsSystem &p_system, double p_seconds) {
 	Frame frame;
 	frame.add_contact(Vec3{ 0.0, 1.0, 0.0 });
 	const int count = static_cast<int>(p_seconds * 50.0);
 	for (int i = 0; i < count; ++i) {
 		frame.sequence = static_cast<uint64_t>(i);
-		(void)p_engine.submit_frame(frame);
+		(void)p_system.submit_frame(frame);
 		std::this_thread::sleep_for(std::chrono::milliseconds(20));
 	}
 }
 
-bool open_and_run(Report &r_report, const DeviceInfo &p_info, HapticsEngine &r_engine, double &r_max_force_n,
+bool open_and_run(Report &r_report, const DeviceInfo &p_info, HapticsSystem &r_system, double &r_max_force_n,
 		const std::string &p_when) {
 	std::unique_ptr<HapticDevice> device;
 	const Status opened = open_listed_device(p_info, {}, device);
@@ -53,8 +53,8 @@ bool open_and_run(Report &r_report, const DeviceInfo &p_info, HapticsEngine &r_e
 		return false;
 	}
 	r_max_force_n = device->limits().max_force_n;
-	const Status engine_opened = r_engine.open_device(std::move(device));
-	const Status started = engine_opened ? r_engine.start(1000.0) : engine_opened;
+	const Status engine_opened = r_system.open_device(std::move(device));
+	const Status started = engine_opened ? r_system.start(1000.0) : engine_opened;
 	return r_report.check(started.ok(), p_when + ": the servo runs it at 1 kHz " + started.message());
 }
 
@@ -66,15 +66,15 @@ bool same_force(Report &r_report, const Vec3 &p_servo, const Vec3 &p_wire, doubl
 	return r_report.check(same, text);
 }
 
-bool servo_stops(const HapticsEngine &p_engine, double p_seconds) {
-	return eventually([&] { return !p_engine.servo_status().ok(); }, p_seconds);
+bool servo_stops(const HapticsSystem &p_system, double p_seconds) {
+	return eventually([&] { return !p_system.servo_status().ok(); }, p_seconds);
 }
 
-void expect_unplugged(Report &r_report, HapticsEngine &r_engine, const std::string &p_when) {
-	const bool noticed = eventually([&] { return r_engine.device_status().io == DeviceIo::DISCONNECTED; }, 5.0);
-	r_report.check(noticed, p_when + ": the device says so: " + r_engine.device_status().reason);
-	const bool stopped = servo_stops(r_engine, 3.0);
-	r_report.check(stopped, p_when + ": the servo stopped: " + r_engine.servo_status().message());
+void expect_unplugged(Report &r_report, HapticsSystem &r_system, const std::string &p_when) {
+	const bool noticed = eventually([&] { return r_system.device_status().io == DeviceIo::DISCONNECTED; }, 5.0);
+	r_report.check(noticed, p_when + ": the device says so: " + r_system.device_status().reason);
+	const bool stopped = servo_stops(r_system, 3.0);
+	r_report.check(stopped, p_when + ": the servo stopped: " + r_system.servo_status().message());
 }
 
 Vec3 pid_wire_n(const pid::ScriptedPidJoystick &p_joystick, double p_max_force_n) {

@@ -6,8 +6,8 @@
 #include "core/base/vec3.h"
 #include "dev_tools/pid/scripted_pid_joystick.h"
 #include "devices/device_info.h"
-#include "engine/haptics_engine.h"
 #include "ktest.h"
+#include "system/haptics_system.h"
 
 #include <cstdint>
 #include <functional>
@@ -24,11 +24,11 @@ bool find_listed(uint16_t p_vendor, uint16_t p_product, std::string_view p_backe
 		double p_seconds = 5.0);
 
 // The game's frames at 50 Hz for p_seconds: the player stands on a floor.
-void stand_on_floor(HapticsEngine &p_engine, double p_seconds);
+void stand_on_floor(HapticsSystem &p_system, double p_seconds);
 
 // Opens p_info through the factory and starts the servo at 1 kHz; false (reported) when
 // either fails. r_max_force_n: the device's full scale.
-bool open_and_run(Report &r_report, const DeviceInfo &p_info, HapticsEngine &r_engine, double &r_max_force_n,
+bool open_and_run(Report &r_report, const DeviceInfo &p_info, HapticsSystem &r_system, double &r_max_force_n,
 		const std::string &p_when);
 
 // Whether the force on the wire (p_wire, N, device space) is the servo's, within p_tolerance_n;
@@ -37,10 +37,10 @@ bool same_force(Report &r_report, const Vec3 &p_servo, const Vec3 &p_wire, doubl
 
 // Whether the servo stops within p_seconds (it notices a device fault at its next tick, which
 // under emulation may come a while after the device's I/O thread raised it).
-bool servo_stops(const HapticsEngine &p_engine, double p_seconds);
+bool servo_stops(const HapticsSystem &p_system, double p_seconds);
 
 // Waits for the device to say it was unplugged and the servo to stop; reports both.
-void expect_unplugged(Report &r_report, HapticsEngine &r_engine, const std::string &p_when);
+void expect_unplugged(Report &r_report, HapticsSystem &r_system, const std::string &p_when);
 
 // The PID firmware model's force in device space (y up is HID -Y), newtons.
 Vec3 pid_wire_n(const pid::ScriptedPidJoystick &p_joystick, double p_max_force_n);

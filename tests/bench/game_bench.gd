@@ -7,7 +7,7 @@ extends Node
 ## tools/godot --headless --path . --fixed-fps 50 res://tests/bench/game_bench.tscn --
 ##     [--frames=N] [--json=PATH]
 
-const LEVEL := preload("res://scenes/levels/level_1.tscn")
+const LEVEL := preload("res://game/levels/level_1.tscn")
 
 var _frames: int = 1500
 var _json_path: String = ""

@@ -4,8 +4,8 @@ extends TestSuite
 ## Settings) and keeps values the project has; disabling removes what holds its default and
 ## keeps what the user changed. Nothing here saves project.godot.
 
-const PLUGIN := "res://addons/haptics/plugin.gd"
-const HAPTICS := "res://addons/haptics/haptics.gd"
+const PLUGIN := "res://addons/haptics/editor/plugin.gd"
+const HAPTICS := "res://addons/haptics/door/haptics.gd"
 
 var plugin: Script = null
 var haptics: Script = null

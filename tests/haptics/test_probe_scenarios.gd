@@ -3,7 +3,7 @@ extends TestSuite
 ## of device time for every 50 Hz physics frame. The simulated hand moves the stylus; the
 ## probe turns the stylus into the player's input and the contacts into forces.
 
-const TEST_ROOM := preload("res://scenes/levels/test_room.tscn")
+const TEST_ROOM := preload("res://game/levels/test_room.tscn")
 const K := 2.0
 const B := 1.0
 const TICKS_PER_FRAME := 20

@@ -4,7 +4,7 @@ extends TestSuite
 ## haptics/servo/spin_us the Haptics autoload reads. Refused spins name the field and its
 ## range and leave the servo as it was.
 
-const HapticsDoor := preload("res://addons/haptics/haptics.gd")
+const Haptics := preload("res://addons/haptics/door/haptics.gd")
 const SETTING := "haptics/servo/spin_us"
 const REFUSED_AT_1000_HZ := "spin_us must be in [0, 500] (half a period at 1000 Hz)"
 
@@ -98,7 +98,7 @@ func test_the_door_passes_the_spin_on_and_keeps_its_default_across_restarts() ->
 
 func test_the_autoload_starts_the_servo_with_the_projects_setting() -> void:
 	ProjectSettings.set_setting(SETTING, 0.0)
-	var haptics: HapticsDoor = add_child_autofree(HapticsDoor.new())
+	var haptics: Haptics = add_child_autofree(Haptics.new())
 	assert_true(haptics.servo.is_running())
 	assert_eq(haptics.servo.get_stats()["spin_us"], 0.0, "the project's spin")
 	haptics.servo.stop()
@@ -106,14 +106,14 @@ func test_the_autoload_starts_the_servo_with_the_projects_setting() -> void:
 	assert_eq(haptics.servo.get_stats()["spin_us"], 0.0, "keeps it")
 	haptics.servo.stop()
 	ProjectSettings.set_setting(SETTING, 100)
-	var with_int: HapticsDoor = add_child_autofree(HapticsDoor.new())
+	var with_int: Haptics = add_child_autofree(Haptics.new())
 	assert_almost_eq(with_int.servo.get_stats()["spin_us"], 100.0, 1e-9, "an integer is read")
 	with_int.servo.stop()
 
 
 func test_without_the_setting_the_autoload_uses_the_servos_default() -> void:
 	ProjectSettings.set_setting(SETTING, null)
-	var haptics: HapticsDoor = add_child_autofree(HapticsDoor.new())
+	var haptics: Haptics = add_child_autofree(Haptics.new())
 	assert_true(haptics.servo.is_running())
 	var stats: Dictionary = haptics.servo.get_stats()
 	assert_almost_eq(stats["spin_us"], _servo_default_us(stats), 1e-9)
@@ -124,14 +124,14 @@ func test_a_refused_setting_is_named_and_the_servo_runs_with_its_default() -> vo
 	ProjectSettings.set_setting(SETTING, 900.0)
 	expect_error(REFUSED_AT_1000_HZ)
 	expect_error("project setting haptics/servo/spin_us = 900.0 refused")
-	var haptics: HapticsDoor = add_child_autofree(HapticsDoor.new())
+	var haptics: Haptics = add_child_autofree(Haptics.new())
 	assert_true(haptics.servo.is_running(), "force feedback goes on")
 	var stats: Dictionary = haptics.servo.get_stats()
 	assert_almost_eq(stats["spin_us"], _servo_default_us(stats), 1e-9)
 	haptics.servo.stop()
 	ProjectSettings.set_setting(SETTING, "fast")
 	expect_error('project setting haptics/servo/spin_us = "fast" is not a number')
-	var with_text: HapticsDoor = add_child_autofree(HapticsDoor.new())
+	var with_text: Haptics = add_child_autofree(Haptics.new())
 	var text_stats: Dictionary = with_text.servo.get_stats()
 	assert_almost_eq(text_stats["spin_us"], _servo_default_us(text_stats), 1e-9)
 	with_text.servo.stop()
@@ -139,7 +139,7 @@ func test_a_refused_setting_is_named_and_the_servo_runs_with_its_default() -> vo
 
 func test_the_setting_is_listed_with_the_servos_default_and_range() -> void:
 	ProjectSettings.set_setting(SETTING, null)
-	HapticsDoor.add_project_settings()
+	Haptics.add_project_settings()
 	var default_us: float = HapticsServo.SPIN_US_DEFAULT
 	assert_eq(ProjectSettings.get_setting(SETTING), default_us, "-1: the servo's own")
 	assert_eq(ProjectSettings.property_get_revert(SETTING), default_us, "reverts to it")
@@ -153,7 +153,7 @@ func test_the_setting_is_listed_with_the_servos_default_and_range() -> void:
 	assert_eq(hint.get_slice(",", 0), "-1", "from the servo's own")
 	assert_eq(hint.get_slice(",", 1), "2000", "to half of 1/250 s")
 	ProjectSettings.set_setting(SETTING, 20.0)
-	HapticsDoor.add_project_settings()
+	Haptics.add_project_settings()
 	assert_eq(ProjectSettings.get_setting(SETTING), 20.0, "a project's own value is kept")
 
 

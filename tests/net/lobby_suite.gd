@@ -2,7 +2,7 @@ extends TestSuite
 ## The fixture of the lobby suites: a fresh lobby scene in the tree for each test, freed
 ## after it, and a port for hosting on this machine.
 
-const LOBBY_SCENE: PackedScene = preload("res://scenes/pong/net/ui/pong_lobby.tscn")
+const LOBBY_SCENE: PackedScene = preload("res://game/pong/net/ui/pong_lobby.tscn")
 
 var _lobby: PongLobby = null
 

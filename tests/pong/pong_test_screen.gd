@@ -4,7 +4,7 @@ extends RefCounted
 ## [param mode] with [param players] seats and [param health] each. Not yet in the tree: the
 ## caller adds it.
 
-const PONG_SCENE: PackedScene = preload("res://scenes/pong/ui/pong.tscn")
+const PONG_SCENE: PackedScene = preload("res://game/pong/ui/pong.tscn")
 
 
 static func stepped(

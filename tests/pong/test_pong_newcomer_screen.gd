@@ -7,7 +7,7 @@ extends "res://tests/pong/pong_screen_suite.gd"
 ## code.
 
 const PongTestScreen := preload("res://tests/pong/pong_test_screen.gd")
-const PONG_SCENE: PackedScene = preload("res://scenes/pong/ui/pong.tscn")
+const PONG_SCENE: PackedScene = preload("res://game/pong/ui/pong.tscn")
 
 
 func test_the_options_come_before_the_start_buttons() -> void:

@@ -4,8 +4,8 @@ extends TestSuite
 ## holds the ball where it was), the spin paddle's colour, and the way back (Esc on the
 ## setup, the pause menu's Quit to menu) leaving the servo as it was.
 
-const MAIN_SCENE: PackedScene = preload("res://scenes/main/main.tscn")
-const PONG_SCENE: PackedScene = preload("res://scenes/pong/ui/pong.tscn")
+const MAIN_SCENE: PackedScene = preload("res://game/main/main.tscn")
+const PONG_SCENE: PackedScene = preload("res://game/pong/ui/pong.tscn")
 
 var _main: Main = null
 var _mode_before: StringName = &""

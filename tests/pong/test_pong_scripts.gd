@@ -2,8 +2,8 @@ extends TestSuite
 ## Every Pong script compiles with the project's GDScript warnings raised to errors (the
 ## scene scripts too, which other suites may load before warnings are raised).
 
-const FOLDERS: Array[String] = ["res://scripts/pong"]
-const FILES: Array[String] = ["res://addons/haptics/haptics_pong.gd"]
+const FOLDERS: Array[String] = ["res://game/pong"]
+const FILES: Array[String] = ["res://addons/haptics/renderers/pong/haptics_pong.gd"]
 
 
 func test_every_pong_script_compiles_without_warnings() -> void:

@@ -10,7 +10,7 @@ extends Node
 ##
 ## tools/godot --headless --path . res://tests/soak/soak.tscn -- [--seconds=N] [--warmup=N]
 
-const GAME_SCENE: PackedScene = preload("res://scenes/main/game.tscn")
+const GAME_SCENE: PackedScene = preload("res://game/main/game.tscn")
 const RATE_TOLERANCE_PERCENT: float = 0.05
 const MEMORY_GROWTH_LIMIT_BYTES: int = 1_000_000
 const TELEMETRY_BATCH: int = 4096

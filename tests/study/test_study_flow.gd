@@ -6,7 +6,7 @@ extends TestSuite
 ## and nothing is changed; invalid settings stop the study with a message.
 
 const Support := preload("res://tests/study/study_test_support.gd")
-const STUDY_SCENE: PackedScene = preload("res://scenes/study/session/study.tscn")
+const STUDY_SCENE: PackedScene = preload("res://game/study/session/study.tscn")
 
 var _root: String = ""
 

@@ -7,7 +7,7 @@ extends TestSuite
 ## the next unused index, and finishes the study.
 
 const Support := preload("res://tests/study/study_test_support.gd")
-const STUDY_SCENE: PackedScene = preload("res://scenes/study/session/study.tscn")
+const STUDY_SCENE: PackedScene = preload("res://game/study/session/study.tscn")
 ## Seconds the child's scripted participant keeps still at the start of each trial, so the
 ## kill lands mid-trial.
 const HOLD_SECONDS: float = 4.0
@@ -37,7 +37,7 @@ func test_a_session_killed_mid_trial_keeps_its_records_and_resumes() -> void:
 		"--quiet",
 		"--path",
 		ProjectSettings.globalize_path("res://"),
-		"res://scenes/study/session/study.tscn",
+		"res://game/study/session/study.tscn",
 		"--",
 		"--study-root=" + ProjectSettings.globalize_path(_root),
 		"--study-config=" + Support.TINY_CONFIG,

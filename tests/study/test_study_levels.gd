@@ -5,9 +5,9 @@ extends TestSuite
 ## walls (so the scripted participant reaches the goal).
 
 const LEVELS: PackedStringArray = [
-	"res://scenes/study/levels/maze.tscn",
-	"res://scenes/study/levels/demo_open.tscn",
-	"res://scenes/study/levels/demo_corridors.tscn",
+	"res://game/study/levels/maze.tscn",
+	"res://game/study/levels/demo_open.tscn",
+	"res://game/study/levels/demo_corridors.tscn",
 	"res://tests/study/fixtures/tiny_maze.tscn",
 ]
 

@@ -5,10 +5,10 @@ extends TestSuite
 ## replaces the shipped one.
 
 const Support := preload("res://tests/study/study_test_support.gd")
-const START_SCENE: PackedScene = preload("res://scenes/study/screens/start_screen.tscn")
-const RATING_SCENE: PackedScene = preload("res://scenes/study/screens/rating_screen.tscn")
-const FINAL_SCENE: PackedScene = preload("res://scenes/study/screens/final_screen.tscn")
-const STUDY_SCENE: PackedScene = preload("res://scenes/study/session/study.tscn")
+const START_SCENE: PackedScene = preload("res://game/study/screens/start_screen.tscn")
+const RATING_SCENE: PackedScene = preload("res://game/study/screens/rating_screen.tscn")
+const FINAL_SCENE: PackedScene = preload("res://game/study/screens/final_screen.tscn")
+const STUDY_SCENE: PackedScene = preload("res://game/study/session/study.tscn")
 
 
 func test_the_start_screen_checks_its_fields() -> void:

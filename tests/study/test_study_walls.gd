@@ -13,7 +13,7 @@ extends TestSuite
 const Support := preload("res://tests/study/study_test_support.gd")
 const Geometry := preload("res://tests/study/wall_geometry.gd")
 const Checks := preload("res://tests/study/telemetry_checks.gd")
-const STUDY_SCENE: PackedScene = preload("res://scenes/study/session/study.tscn")
+const STUDY_SCENE: PackedScene = preload("res://game/study/session/study.tscn")
 const TINY_MAZE: PackedScene = preload("res://tests/study/fixtures/tiny_maze.tscn")
 const WALL_CONFIG: String = "res://tests/study/fixtures/wall_study.json"
 const PARTICIPANT: String = "W01"

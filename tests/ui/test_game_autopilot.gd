@@ -3,7 +3,7 @@ extends TestSuite
 ## documented status line, ends after its time budget, and hands the simulated device's
 ## hand back to the mouse when it leaves.
 
-const GAME_SCENE: PackedScene = preload("res://scenes/main/game.tscn")
+const GAME_SCENE: PackedScene = preload("res://game/main/game.tscn")
 const STATUS_PATTERN: String = (
 	"^t=\\s*\\d+\\.\\ds servo=(\\d+ Hz|off) input=\\([+-]\\d\\.\\d\\d, [+-]\\d\\.\\d\\d\\) "
 	+ "force=\\([+-]\\d+\\.\\d\\d, [+-]\\d+\\.\\d\\d\\) N \\|F\\|=\\d+\\.\\d\\d N contacts=\\d+$"

@@ -3,7 +3,7 @@ extends TestSuite
 ## directions by component, the legend, the cap on long arrows, the mouse left to the game,
 ## the arrows following the player, and the stylus widget.
 
-const HUD_SCENE: PackedScene = preload("res://scenes/ui/hud.tscn")
+const HUD_SCENE: PackedScene = preload("res://game/ui/hud.tscn")
 const MAX_FORCE: float = 3.3
 
 var _hud: Hud = null

@@ -3,8 +3,8 @@ extends TestSuite
 ## with pressed.emit()), keyboard focus, Settings and the maze study and back, Play, the pause
 ## menu's Quit to menu, and the goal screen's Play again / Menu.
 
-const MAIN_SCENE: PackedScene = preload("res://scenes/main/main.tscn")
-const MENU_SCENE: PackedScene = preload("res://scenes/ui/main_menu.tscn")
+const MAIN_SCENE: PackedScene = preload("res://game/main/main.tscn")
+const MENU_SCENE: PackedScene = preload("res://game/ui/main_menu.tscn")
 
 var _main: Main = null
 

@@ -3,9 +3,9 @@ extends TestSuite
 ## processing while the level does not), Resume, Settings over the game and back, and the
 ## goal screen with time and items.
 
-const GAME_SCENE: PackedScene = preload("res://scenes/main/game.tscn")
+const GAME_SCENE: PackedScene = preload("res://game/main/game.tscn")
 ## The smallest level: these tests are about the flow, not the world.
-const ROOM_SCENE: PackedScene = preload("res://scenes/levels/test_room.tscn")
+const ROOM_SCENE: PackedScene = preload("res://game/levels/test_room.tscn")
 
 var _game: Game = null
 

@@ -3,7 +3,7 @@ extends TestSuite
 ## player's): the device list with known haptic devices marked, the force scale slider,
 ## smoothing, control mode, Defaults, and Back saving only when something changed.
 
-const SCREEN_SCENE: PackedScene = preload("res://scenes/common/ui/settings_screen.tscn")
+const SCREEN_SCENE: PackedScene = preload("res://game/common/ui/settings_screen.tscn")
 
 var _settings: GameSettings = null
 var _screen: SettingsScreen = null

@@ -14,7 +14,7 @@ extends SceneTree
 
 func _initialize() -> void:
 	var args: PackedStringArray = OS.get_cmdline_user_args()
-	var level: Level = (load("res://scenes/levels/level_1.tscn") as PackedScene).instantiate()
+	var level: Level = (load("res://game/levels/level_1.tscn") as PackedScene).instantiate()
 	root.add_child(level)
 	var player: Player = level.get_node(^"Player")
 	player.use_keyboard = false
@@ -39,7 +39,7 @@ func _initialize() -> void:
 	if args.size() > 0 and args[0] == "drop":
 		player.global_position = Vector2(3100.0, 620.0)
 		player.reset_physics_interpolation()
-		var crate: Node2D = (load("res://scenes/props/crate.tscn") as PackedScene).instantiate()
+		var crate: Node2D = (load("res://game/props/crate.tscn") as PackedScene).instantiate()
 		crate.position = Vector2(3100.0, 470.0)
 		level.add_child(crate)
 		player.get_node(^"Camera2D").call(&"reset_smoothing")

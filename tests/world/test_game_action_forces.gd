@@ -1,15 +1,15 @@
 extends "res://tests/world/device_suite.gd"
 ## The side-scroller's own actions, each from where the player starts it: the hand moves the
-## simulated device, the game's avatar (scenes/player/player.tscn, its own HapticProbe)
+## simulated device, the game's avatar (game/player/player.tscn, its own HapticProbe)
 ## drives into the floor or a wall of the game's room, a game crate lands on it, it dives
 ## into the game's water. Each test asserts the force the device received on its 1 ms ticks
 ## (get_forces: total and its parts, newtons, direction, how long), so it fails when the
 ## force never arrives. (Riding a platform: the side-scroller has none; the rigid-body
 ## player's lift ride is in test_rigid_player.gd.)
 
-const TEST_ROOM := preload("res://scenes/levels/test_room.tscn")
-const CRATE := preload("res://scenes/props/crate.tscn")
-const WATER := preload("res://scenes/props/water.tscn")
+const TEST_ROOM := preload("res://game/levels/test_room.tscn")
+const CRATE := preload("res://game/props/crate.tscn")
+const WATER := preload("res://game/props/water.tscn")
 ## The probe scene's material (materials/hard.tres) for the room's walls.
 const WALL_STIFFNESS := 3.0
 const WALL_IMPACT_GAIN := 0.8

@@ -2,9 +2,9 @@ extends TestSuite
 ## Level 1 as a real scene: the Level contract, the autopilot run from start to goal,
 ## crates (settling, stacking on the player, floating and sinking), pearls and the goal.
 
-const LEVEL_1 := preload("res://scenes/levels/level_1.tscn")
-const CRATE := preload("res://scenes/props/crate.tscn")
-const HEAVY_CRATE := preload("res://scenes/props/crate_heavy.tscn")
+const LEVEL_1 := preload("res://game/levels/level_1.tscn")
+const CRATE := preload("res://game/props/crate.tscn")
+const HEAVY_CRATE := preload("res://game/props/crate_heavy.tscn")
 
 ## Game-time budget of the autopilot run, in physics frames (50 per second).
 const AUTOPILOT_FRAME_BUDGET: int = 50 * 60

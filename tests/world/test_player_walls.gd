@@ -4,7 +4,7 @@ extends "res://tests/foundation/room_suite.gd"
 ## used to keep its full speed into the wall and take about seven ticks to come off); along
 ## a floor it slides at the top speed; a crate it drives into is still shoved.
 
-const CRATE := preload("res://scenes/props/crate.tscn")
+const CRATE := preload("res://game/props/crate.tscn")
 ## The test room's right wall (its outline's centre line), and its floor.
 const WALL_X: float = 1240.0
 const FLOOR_Y: float = 680.0

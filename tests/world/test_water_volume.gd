@@ -4,8 +4,8 @@ extends "res://tests/haptics/test_haptic_water.gd"
 ## game adds: a floating crate carries its lift ([member Crate.buoyancy], which the player's
 ## felt weight uses), a frozen crate gets none, and a crate that leaves is dry.
 
-const CRATE := preload("res://scenes/props/crate.tscn")
-const WATER_SCENE := preload("res://scenes/props/water.tscn")
+const CRATE := preload("res://game/props/crate.tscn")
+const WATER_SCENE := preload("res://game/props/water.tscn")
 
 
 func _make_water() -> HapticWater:

@@ -61,7 +61,7 @@ cat >>"$DEST/project.godot" <<'CFG'
 
 [autoload]
 
-Haptics="*res://addons/haptics/haptics.gd"
+Haptics="*res://addons/haptics/door/haptics.gd"
 
 [editor_plugins]
 

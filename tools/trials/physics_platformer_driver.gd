@@ -15,7 +15,7 @@ extends Node
 const AIRBORNE_S := 0.15
 const MIN_IMPACT_M_PER_S := 0.2
 const PLANK_MASS := 5.10204
-const PROBE_SCRIPT := "res://addons/haptics/haptic_probe.gd"
+const PROBE_SCRIPT := "res://addons/haptics/probe/haptic_probe.gd"
 ## Frames an impact may come after the ground truth's event and still be its.
 const MATCH_FRAMES := 3
 ## The lift rides down for 3 s; boarded at its top, the ride is watched this long.

@@ -9,7 +9,7 @@
 #include "devices/falcon/falcon_backend.h"
 #include "devices/falcon/falcon_codec.h"
 #include "devices/falcon/falcon_kinematics.h"
-#include "engine/haptics_engine.h"
+#include "system/haptics_system.h"
 
 #include <chrono>
 #include <cmath>
@@ -121,29 +121,29 @@ DeviceBenchResult run_falcon_bench(double p_seconds) {
 	options.record = false;
 	auto model = std::make_shared<ScriptedFalcon>(options);
 	model->set_device_position({ 0.0, -0.01, 0.0 });
-	HapticsEngine engine;
+	HapticsSystem system;
 	std::vector<double> ticks;
-	if (engine.open_device(make_scripted_device(model)).ok()) {
+	if (system.open_device(make_scripted_device(model)).ok()) {
 		// Wait for homing, as a player would.
-		for (int i = 0; i < 200 && engine.step(0.001).ok(); ++i) {
+		for (int i = 0; i < 200 && system.step(0.001).ok(); ++i) {
 			std::this_thread::sleep_for(std::chrono::milliseconds(1));
 		}
 		Frame frame;
 		frame.contact_count = 1;
 		frame.contacts[0].normal = Vec3{ 0.0, 1.0, 0.0 };
-		engine.submit_frame(frame);
+		system.submit_frame(frame);
 		const int tick_count = static_cast<int>(p_seconds / 2.0 * 1000.0);
 		ticks.reserve(static_cast<size_t>(tick_count));
 		for (int i = 0; i < tick_count; ++i) {
 			model->set_device_position(path_position(i) - FALCON_KINEMATIC_CENTRE);
 			const Clock::time_point t0 = Clock::now();
-			if (!engine.step(0.001).ok()) {
+			if (!system.step(0.001).ok()) {
 				break;
 			}
 			ticks.push_back(microseconds(Clock::now() - t0));
 			std::this_thread::sleep_for(std::chrono::microseconds(900)); // Let the I/O thread run as on a real servo.
 		}
-		engine.close_device();
+		system.close_device();
 	}
 	result.tick_p50_us = percentile(ticks, 50.0);
 	result.tick_p99_us = percentile(ticks, 99.0);

@@ -1,7 +1,7 @@
 #include "latency.h"
 
-#include "engine/haptics_engine.h"
 #include "renderers/constraint/constraint_port.h"
+#include "system/haptics_system.h"
 
 #include <cmath>
 #include <cstdio>
@@ -27,10 +27,10 @@ LatencyResult measure(bool p_constraint, bool p_rigid) {
 	LatencyResult result;
 	result.mode = p_constraint ? "constraint" : "movement";
 	result.hand = p_rigid ? "rigid" : "compliant";
-	HapticsEngine engine;
+	HapticsSystem system;
 	SimulatedDeviceConfig device;
 	device.rigid_hand = p_rigid;
-	require(engine.open_simulated_device(device), "open");
+	require(system.open_simulated_device(device), "open");
 	Frame frame;
 	Vec3 step_to;
 	if (p_constraint) {
@@ -41,10 +41,10 @@ LatencyResult measure(bool p_constraint, bool p_rigid) {
 		mapping.maze_max = { 180.0, 180.0 };
 		mapping.workspace_half_extent_m = 0.08;
 		const Segment2 wall{ { 120.0, 0.0 }, { 120.0, 180.0 } };
-		require(ConstraintPort(engine.renderers().constraint.channels).set_geometry(&wall, 1, mapping), "geometry");
-		RenderConfig config = engine.config();
+		require(ConstraintPort(system.renderers().constraint.channels).set_geometry(&wall, 1, mapping), "geometry");
+		RenderConfig config = system.config();
 		config.servo.render_mode = RenderMode::CONSTRAINT;
-		require(engine.configure(config), "constraint mode");
+		require(system.configure(config), "constraint mode");
 		step_to = { 40.0 * 0.16 / (180.0 * std::sqrt(2.0)), 0.0, 0.0 };
 	} else {
 		// A wall on the player's right (normal pointing left, towards the player); the hand
@@ -52,21 +52,21 @@ LatencyResult measure(bool p_constraint, bool p_rigid) {
 		frame.add_contact({ -1.0, 0.0, 0.0 });
 		step_to = { 0.05, 0.0, 0.0 };
 	}
-	require(engine.set_hand_target({ 0.0, 0.0, 0.0 }), "hand");
+	require(system.set_hand_target({ 0.0, 0.0, 0.0 }), "hand");
 	uint64_t sequence = 0;
 	const auto tick = [&](int p_index) {
 		if (p_index % FRAME_TICKS == 0) {
 			frame.sequence = ++sequence;
-			require(engine.submit_frame(frame), "frame");
+			require(system.submit_frame(frame), "frame");
 		}
-		require(engine.step(DT), "step");
-		return engine.forces().total;
+		require(system.step(DT), "step");
+		return system.forces().total;
 	};
 	for (int k = 0; k < WARM_UP_TICKS; ++k) {
 		tick(k);
 	}
-	const Vec3 before = engine.forces().total;
-	require(engine.set_hand_target(step_to), "hand step");
+	const Vec3 before = system.forces().total;
+	require(system.set_hand_target(step_to), "hand step");
 	std::vector<Vec3> after;
 	after.reserve(AFTER_TICKS);
 	for (int k = 0; k < AFTER_TICKS; ++k) {

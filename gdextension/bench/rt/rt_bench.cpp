@@ -38,7 +38,7 @@
 
 #include "core/base/realtime.h"
 #include "core/servo/servo_stats.h"
-#include "engine/haptics_engine.h"
+#include "system/haptics_system.h"
 
 #include <algorithm>
 #include <atomic>

@@ -7,7 +7,7 @@
 #include "dev_tools/falcon/scripted_falcon_device.h"
 #include "dev_tools/pid/scripted_pid_device.h"
 #include "dev_tools/scripted_device.h"
-#include "engine/device_factory.h"
+#include "system/device_factory.h"
 
 #include <atomic>
 #include <cstdlib>

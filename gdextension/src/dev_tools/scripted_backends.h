@@ -7,7 +7,7 @@
 // HAPTICS_SCRIPTED_DEVICES=1. Their stick or stylus follows the simulated hand target, and
 // their cable (HapticDevice::software_cable) stays unplugged across reopen attempts.
 //
-// register_scripted_devices() adds them to the device factory (engine/device_factory.h);
+// register_scripted_devices() adds them to the device factory (system/device_factory.h);
 // the library calls it at initialisation when built with HAPTICS_DEV_TOOLS, the doctests
 // before they list devices. Idempotent.
 

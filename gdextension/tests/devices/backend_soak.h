@@ -1,6 +1,6 @@
 #pragma once
 
-// The test every backend passes through the SAME servo loop: HapticsEngine at 1 kHz on its
+// The test every backend passes through the SAME servo loop: HapticsSystem at 1 kHz on its
 // own thread for about two seconds against the backend's scripted transport, with a floor
 // contact pressing the hand up, frames at 50 Hz from this thread, and an unplug in the
 // middle:
@@ -12,7 +12,7 @@
 // zero force was the last command before the unplug stopped it and at the end, and so on.
 // Timing-tolerant: asserts invariants with generous bounds (a loaded 2-core CI machine).
 
-#include "engine/haptics_engine.h"
+#include "system/haptics_system.h"
 
 #include <chrono>
 #include <functional>
@@ -45,58 +45,58 @@ struct BackendSoakScript {
 	Vec3 contact_normal{ 0.0, 1.0, 0.0 };
 };
 
-inline void soak_frames(HapticsEngine &r_engine, const Vec3 &p_normal, double p_seconds) {
+inline void soak_frames(HapticsSystem &r_system, const Vec3 &p_normal, double p_seconds) {
 	Frame frame;
 	frame.contact_count = 1;
 	frame.contacts[0].normal = p_normal;
 	const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(p_seconds);
-	while (std::chrono::steady_clock::now() < end && r_engine.is_running()) {
+	while (std::chrono::steady_clock::now() < end && r_system.is_running()) {
 		++frame.sequence;
-		r_engine.submit_frame(frame);
+		r_system.submit_frame(frame);
 		std::this_thread::sleep_for(std::chrono::milliseconds(20));
 	}
 }
 
-inline BackendSoakResult run_backend_soak(HapticsEngine &r_engine, const BackendSoakScript &p_script) {
+inline BackendSoakResult run_backend_soak(HapticsSystem &r_system, const BackendSoakScript &p_script) {
 	BackendSoakResult result;
-	RenderConfig config = r_engine.config();
+	RenderConfig config = r_system.config();
 	config.servo.safety.startup_ramp_s = 0.05;
 	config.servo.safety.start_force_n = 0.0; // The script presses at once; do not wait.
-	r_engine.configure(config);
+	r_system.configure(config);
 
-	result.opened_first = r_engine.open_device(p_script.make_device()).ok() && r_engine.start(1000.0).ok();
+	result.opened_first = r_system.open_device(p_script.make_device()).ok() && r_system.start(1000.0).ok();
 	if (!result.opened_first) {
 		return result;
 	}
 	const auto t0 = std::chrono::steady_clock::now();
-	soak_frames(r_engine, p_script.contact_normal, p_script.seconds_each);
-	result.peak_total_force_n = length(r_engine.forces().total);
+	soak_frames(r_system, p_script.contact_normal, p_script.seconds_each);
+	result.peak_total_force_n = length(r_system.forces().total);
 	p_script.unplug();
 	const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
-	while (r_engine.is_running() && std::chrono::steady_clock::now() < deadline) {
+	while (r_system.is_running() && std::chrono::steady_clock::now() < deadline) {
 		std::this_thread::sleep_for(std::chrono::milliseconds(5));
 	}
 	result.seconds_first = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-	result.stopped_on_unplug = !r_engine.is_running();
-	result.ticks_first = r_engine.stats().ticks;
-	result.status_after_unplug = r_engine.servo_status().code();
-	result.device_status_after_unplug = r_engine.device_status();
-	r_engine.stop();
+	result.stopped_on_unplug = !r_system.is_running();
+	result.ticks_first = r_system.stats().ticks;
+	result.status_after_unplug = r_system.servo_status().code();
+	result.device_status_after_unplug = r_system.device_status();
+	r_system.stop();
 
 	p_script.replug();
-	result.opened_again = r_engine.open_device(p_script.make_device()).ok() && r_engine.start(1000.0).ok();
+	result.opened_again = r_system.open_device(p_script.make_device()).ok() && r_system.start(1000.0).ok();
 	if (!result.opened_again) {
 		return result;
 	}
 	const auto t1 = std::chrono::steady_clock::now();
-	soak_frames(r_engine, p_script.contact_normal, p_script.seconds_each);
-	const double peak = length(r_engine.forces().total);
+	soak_frames(r_system, p_script.contact_normal, p_script.seconds_each);
+	const double peak = length(r_system.forces().total);
 	result.peak_total_force_n = peak > result.peak_total_force_n ? peak : result.peak_total_force_n;
-	result.stats_second = r_engine.stats();
-	r_engine.stop();
+	result.stats_second = r_system.stats();
+	r_system.stop();
 	result.seconds_second = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
-	result.ticks_second = r_engine.stats().ticks;
-	r_engine.close_device();
+	result.ticks_second = r_system.stats().ticks;
+	r_system.close_device();
 	return result;
 }
 

@@ -152,12 +152,12 @@ TEST_CASE("device io thread: rejects a bad rate and runs the worker until stoppe
 
 TEST_CASE("device io thread: a 250 Hz device under the 1 kHz servo gets the latest force - the servo never waits") {
 	LoopbackDevice::Wire wire;
-	HapticsEngine engine;
+	HapticsSystem system;
 	test::BackendSoakScript script;
 	script.make_device = [&] { return std::make_unique<LoopbackDevice>(wire, 250.0); };
 	script.unplug = [&] { wire.plugged.store(false); };
 	script.replug = [&] { wire.plugged.store(true); };
-	const test::BackendSoakResult result = test::run_backend_soak(engine, script);
+	const test::BackendSoakResult result = test::run_backend_soak(system, script);
 
 	REQUIRE(result.opened_first);
 	REQUIRE(result.opened_again);

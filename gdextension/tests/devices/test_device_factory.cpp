@@ -4,8 +4,8 @@
 #include "dev_tools/scripted_backends.h"
 #include "devices/openhaptics/openhaptics_backend.h"
 #include "devices/pid/pid_usages.h"
-#include "engine/device_factory.h"
 #include "scoped_variable.h"
+#include "system/device_factory.h"
 
 #include <doctest/doctest.h>
 

@@ -26,12 +26,12 @@ void soak(Bus p_bus) {
 	// is non-zero and the triggers resist.
 	pad->set_stick_deflection(0.0, -0.8);
 
-	HapticsEngine engine;
+	HapticsSystem system;
 	test::BackendSoakScript script;
 	script.make_device = [&pad] { return make_scripted_device(pad); };
 	script.unplug = [&pad] { pad->unplug(); };
 	script.replug = [&pad] { pad->replug(); };
-	const test::BackendSoakResult result = test::run_backend_soak(engine, script);
+	const test::BackendSoakResult result = test::run_backend_soak(system, script);
 
 	REQUIRE(result.opened_first);
 	REQUIRE(result.opened_again);
@@ -81,44 +81,44 @@ TEST_CASE("dualsense soak: Bluetooth through the servo (CRCs, sequence), unplug,
 	soak(Bus::BLUETOOTH);
 }
 
-TEST_CASE("dualsense engine: a pushed impact reaches the pad's motors and dies away") {
+TEST_CASE("dualsense system: a pushed impact reaches the pad's motors and dies away") {
 	auto pad = std::make_shared<ScriptedDualSense>();
-	HapticsEngine engine;
-	RenderConfig config = engine.config();
+	HapticsSystem system;
+	RenderConfig config = system.config();
 	config.servo.safety.startup_ramp_s = 0.01;
 	config.servo.safety.start_force_n = 0.0;
-	REQUIRE(engine.configure(config));
-	REQUIRE(engine.open_device(make_scripted_device(pad)));
-	REQUIRE(engine.start(1000.0));
+	REQUIRE(system.configure(config));
+	REQUIRE(system.open_device(make_scripted_device(pad)));
+	REQUIRE(system.start(1000.0));
 	Frame frame;
 	frame.sequence = 1;
-	REQUIRE(engine.submit_frame(frame));
+	REQUIRE(system.submit_frame(frame));
 	std::this_thread::sleep_for(std::chrono::milliseconds(50)); // Past the start-up ramp.
 
 	const uint64_t before = pad->counters().reports_accepted;
 	ImpactEvent impact;
 	impact.direction = Vec3{ 0.0, 1.0, 0.0 };
 	impact.speed = 6.0; // 0.5 N/(m/s) * 6 = 3 N: the cap, full scale.
-	REQUIRE(engine.push_impact(impact));
+	REQUIRE(system.push_impact(impact));
 	const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(2);
 	while (pad->counters().max_motor == 0 && std::chrono::steady_clock::now() < deadline) {
 		++frame.sequence;
-		engine.submit_frame(frame);
+		system.submit_frame(frame);
 		std::this_thread::sleep_for(std::chrono::milliseconds(2));
 	}
 	CHECK(pad->counters().max_motor > 100);
 	while (pad->held().motor_right != 0 && std::chrono::steady_clock::now() < deadline) {
 		++frame.sequence;
-		engine.submit_frame(frame);
+		system.submit_frame(frame);
 		std::this_thread::sleep_for(std::chrono::milliseconds(5));
 	}
 	CHECK(pad->held().motor_right == 0);
 	CHECK(pad->held().motor_left == 0);
 	const uint64_t during = pad->counters().reports_accepted - before;
-	engine.stop();
-	engine.close_device();
+	system.stop();
+	system.close_device();
 	CHECK(pad->counters().reports_rejected == 0);
-	MESSAGE("dualsense engine impact: max motor ", pad->counters().max_motor, ", ", during,
+	MESSAGE("dualsense system impact: max motor ", pad->counters().max_motor, ", ", during,
 			" reports from the hit to silence");
 }
 

@@ -39,8 +39,8 @@ TEST_CASE("evdev soak: 1 kHz servo through the scripted kernel, unplug, replug, 
 			std::this_thread::sleep_for(std::chrono::milliseconds(5));
 		}
 	});
-	HapticsEngine engine;
-	const test::BackendSoakResult result = test::run_backend_soak(engine, script);
+	HapticsSystem system;
+	const test::BackendSoakResult result = test::run_backend_soak(system, script);
 	stop_hand.store(true);
 	hand.join();
 

@@ -29,8 +29,8 @@ TEST_CASE("falcon soak: servo loop through the scripted Falcon, unplug, replug")
 	script.make_device = [&]() -> std::unique_ptr<HapticDevice> { return make_scripted_device(model); };
 	script.unplug = [&] { model->unplug(); };
 	script.replug = [&] { model->replug(); };
-	HapticsEngine engine;
-	const test::BackendSoakResult result = test::run_backend_soak(engine, script);
+	HapticsSystem system;
+	const test::BackendSoakResult result = test::run_backend_soak(system, script);
 
 	REQUIRE(result.opened_first);
 	CHECK(result.stopped_on_unplug);

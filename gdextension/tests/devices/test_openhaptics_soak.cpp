@@ -28,13 +28,13 @@ TEST_CASE("openhaptics: backend soak through the servo: render, unplug (HD_COMM_
 	const double below_mm[3] = { 0.0, -10.0, 10.0 };
 	fake.set_doubles(HD_CURRENT_POSITION, below_mm, 3);
 
-	HapticsEngine engine;
+	HapticsSystem system;
 	haptics::test::BackendSoakScript script;
 	script.make_device = [] { return make_device_on_runtime(haptics::test::fake_hd_path()); };
 	script.unplug = [&fake] { fake.set_unplugged(1); };
 	script.replug = [&fake] { fake.set_unplugged(0); };
 	const unsigned long long ticks_before = fake.ticks();
-	const haptics::test::BackendSoakResult result = haptics::test::run_backend_soak(engine, script);
+	const haptics::test::BackendSoakResult result = haptics::test::run_backend_soak(system, script);
 	const unsigned long long hd_ticks = fake.ticks() - ticks_before;
 
 	REQUIRE(result.opened_first);

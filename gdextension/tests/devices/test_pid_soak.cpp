@@ -21,7 +21,7 @@ TEST_CASE("pid soak: servo at 1 kHz through the scripted AJ joystick, unplug, re
 	// HID Y +0.6 is the stick pulled toward the user: device y = -0.6 x 5 cm, into the floor.
 	joystick->set_stick(0.0, 0.6);
 	ScriptedForce force_before_unplug;
-	HapticsEngine engine;
+	HapticsSystem system;
 	test::BackendSoakScript script;
 	script.make_device = [&] { return make_scripted_device(joystick); };
 	script.unplug = [&] {
@@ -31,7 +31,7 @@ TEST_CASE("pid soak: servo at 1 kHz through the scripted AJ joystick, unplug, re
 	script.replug = [&] { joystick->set_plugged(true); };
 	script.contact_normal = Vec3{ 0.0, 1.0, 0.0 };
 
-	const test::BackendSoakResult result = test::run_backend_soak(engine, script);
+	const test::BackendSoakResult result = test::run_backend_soak(system, script);
 	REQUIRE(result.opened_first);
 	CHECK(result.stopped_on_unplug);
 	CHECK(result.status_after_unplug == StatusCode::DEVICE_DISCONNECTED);

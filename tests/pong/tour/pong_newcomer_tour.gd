@@ -9,7 +9,7 @@ extends "res://tests/ui/tour/tour.gd"
 ## computer with the ball resting against the near wall, a bullet in flight next to the
 ## ball, a plain mine going off (the status line), and beginner mode.
 
-const MAIN_SCENE: PackedScene = preload("res://scenes/main/main.tscn")
+const MAIN_SCENE: PackedScene = preload("res://game/main/main.tscn")
 
 var _main: Main = null
 

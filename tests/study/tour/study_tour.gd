@@ -8,8 +8,8 @@ extends Node
 ## With [code]--menu[/code] it shows the way in from the title screen instead.
 ## The data goes to a fresh folder under user://study_tour/, never to the real study.
 
-const STUDY_SCENE: PackedScene = preload("res://scenes/study/session/study.tscn")
-const MAIN_SCENE: PackedScene = preload("res://scenes/main/main.tscn")
+const STUDY_SCENE: PackedScene = preload("res://game/study/session/study.tscn")
+const MAIN_SCENE: PackedScene = preload("res://game/main/main.tscn")
 
 var _out: String = "user://study_shots"
 var _maze: String = ""

@@ -8,7 +8,7 @@ extends "res://tests/ui/tour/tour.gd"
 ## Shots: the lobby as it opens, then hosting a four-seat game (the host in seat 1,
 ## the open seats, the Start button).
 
-const LOBBY_SCENE: PackedScene = preload("res://scenes/pong/net/ui/pong_lobby.tscn")
+const LOBBY_SCENE: PackedScene = preload("res://game/pong/net/ui/pong_lobby.tscn")
 
 
 func _ready() -> void:

@@ -11,7 +11,7 @@ extends "res://tests/ui/tour/tour.gd"
 ## the targets, the pause menu and the winner screen, then four computers on the square
 ## court (also in beginner mode).
 
-const MAIN_SCENE: PackedScene = preload("res://scenes/main/main.tscn")
+const MAIN_SCENE: PackedScene = preload("res://game/main/main.tscn")
 
 var _main: Main = null
 

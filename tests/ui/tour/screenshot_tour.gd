@@ -6,7 +6,7 @@ extends "res://tests/ui/tour/tour.gd"
 ##     res://tests/ui/tour/screenshot_tour.tscn -- --out=/tmp/shots [--game-seconds=4]
 ## [/codeblock]
 
-const MAIN_SCENE: PackedScene = preload("res://scenes/main/main.tscn")
+const MAIN_SCENE: PackedScene = preload("res://game/main/main.tscn")
 
 var _game_seconds: PackedFloat32Array = PackedFloat32Array([3.0])
 

@@ -64,6 +64,6 @@ def test_the_contact_models_are_the_servers_names():
 
 def test_the_game_reads_the_same_schema():
     project = schema.SCHEMA_PATH.parents[2]
-    gd = (project / "scripts" / "study" / "data" / "study_format.gd").read_text("utf-8")
+    gd = (project / "game" / "study" / "data" / "study_format.gd").read_text("utf-8")
     path = re.search(r'const SCHEMA_PATH: String = "res://([^"]+)"', gd).group(1)
     assert project / path == schema.SCHEMA_PATH

@@ -5,7 +5,7 @@
 // in the settings struct of its owner (the servo's ServoConfig, or one renderer's Config).
 // Each owner lists its rows next to its struct (core/servo/servo_config_fields.cpp,
 // renderers/<name>/<name>_config_fields.cpp); the engine joins them into the one table
-// (engine/config_table.h) that validation, the binding's dictionary reader and writer, and
+// (system/config_table.h) that validation, the binding's dictionary reader and writer, and
 // get_config_fields() for GDScript walk, so a field is named and bounded in one place.
 //
 // Keys end in their unit (_s, _hz, _m, _n, _n_per_s, _n_per_m, _n_per_kg, _n_s_per_m) unless

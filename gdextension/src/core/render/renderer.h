@@ -3,7 +3,7 @@
 // The seam between the servo pipeline and what it renders. Each tick the pipeline reads the
 // device, picks up the game's inputs and asks the active renderer for a force; the impact
 // transients and the safety stage (core/servo/servo_pipeline.h) then apply to every renderer
-// alike. The core knows no renderer: the engine assembles them (engine/renderer_table.h), and
+// alike. The core knows no renderer: the engine assembles them (system/renderer_table.h), and
 // ServoConfig::render_mode is the active one's index in the list the pipeline is given.
 //
 // Besides this interface a renderer class offers, for the engine: `Config` (its settings

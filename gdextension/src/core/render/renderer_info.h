@@ -2,7 +2,7 @@
 
 // What the engine and the game know of a renderer without running it. Each renderer
 // describes itself once (its static info()); the engine's renderer table
-// (engine/renderer_table.h) names it and gives its render mode.
+// (system/renderer_table.h) names it and gives its render mode.
 
 #include "core/config/config_field.h"
 #include "core/render/force_components.h"

@@ -1,7 +1,7 @@
 #pragma once
 
 // The servo's end of a renderer's settings channel: the game writes the renderer's whole
-// Config into a seqlock (HapticsEngine::configure), and the renderer takes it from there in
+// Config into a seqlock (HapticsSystem::configure), and the renderer takes it from there in
 // Renderer::pick_up_settings, only when it is newer than what it last took. No allocation.
 
 #include "core/base/seqlock.h"

@@ -2,8 +2,8 @@
 
 // The servo's own settings, whatever renders: how the device's position becomes the input
 // vector, the impacts' default material, the safety stage, the plane hold, telemetry, and
-// which renderer runs. Each renderer's settings are its own (its Config, engine/render_config.h
-// joins them). Validated whole (engine/config_table.h) and handed to the servo thread through
+// which renderer runs. Each renderer's settings are its own (its Config, system/render_config.h
+// joins them). Validated whole (system/config_table.h) and handed to the servo thread through
 // a lock-free snapshot, so they may change while rendering; rejected settings leave the
 // previous ones in force. Each field's range, unit and the key the game spells it with are in
 // its row of the field table (servo_config_fields.cpp), not here.

@@ -12,7 +12,7 @@
 
 namespace haptics::evdev {
 
-// An EvdevDevice over p_kernel, NOT yet opened (HapticsEngine::open_device opens it). An
+// An EvdevDevice over p_kernel, NOT yet opened (HapticsSystem::open_device opens it). An
 // empty p_config.path means the kernel script's path. The test keeps p_kernel to script
 // the stick, unplug it and read what was sent.
 std::unique_ptr<HapticDevice> make_scripted_device(const std::shared_ptr<ScriptedEvdevKernel> &p_kernel,

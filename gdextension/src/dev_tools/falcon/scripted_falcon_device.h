@@ -19,7 +19,7 @@ namespace haptics::falcon {
 std::vector<uint8_t> make_test_firmware_image(size_t p_size = 7914, uint32_t p_seed = 1);
 // The scripted device's defaults: the synthetic image above, no file.
 FalconDeviceConfig scripted_device_config();
-// Not opened yet (HapticsEngine::open_device opens it). p_model must be held by a shared_ptr
+// Not opened yet (HapticsSystem::open_device opens it). p_model must be held by a shared_ptr
 // (ScriptedFalcon hands out transports that share it).
 std::unique_ptr<FalconDevice> make_scripted_device(const std::shared_ptr<ScriptedFalcon> &p_model,
 		const FalconDeviceConfig &p_config = scripted_device_config());

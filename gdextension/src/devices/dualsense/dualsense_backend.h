@@ -8,7 +8,7 @@
 //                      (Edge). Openable unless the hidraw node is missing or we may not read
 //                      and write it (then the reason names the path and the udev rule).
 //   open_device(info)  probe, then a DualSenseDevice over a HidapiTransport on info.path,
-//                      opened. The caller hands it to HapticsEngine::open_device, whose
+//                      opened. The caller hands it to HapticsSystem::open_device, whose
 //                      open() re-opens it cleanly (open() is idempotent: close, then open).
 //
 // Coexistence: with the kernel's hid-playstation bound (Linux >= 5.12) the kernel also

@@ -44,7 +44,7 @@
 //
 // One device per process: HD has one scheduler and one current device per process, so
 // opening an HdDevice closes any other open HdDevice first (its servo then reads FAILED,
-// "closed: another OpenHaptics device was opened"). HapticsEngine opens the new device
+// "closed: another OpenHaptics device was opened"). HapticsSystem opens the new device
 // before closing the old one, which this makes work. open() is idempotent.
 //
 // Tested against a fake libHD that follows FACTS §4, not the runtime itself. Only a real

@@ -35,7 +35,7 @@ DeviceAvailability probe(const DeviceInfo &p_info);
 
 // Makes and opens the device for p_info (the runtime from p_info.path when set). On error
 // r_device is untouched and the Status says why (runtime missing, hdInitDevice failed with
-// its HD error, ...). HdDevice::open() is idempotent, so HapticsEngine::open_device may
+// its HD error, ...). HdDevice::open() is idempotent, so HapticsSystem::open_device may
 // open it again.
 Status open_device(const DeviceInfo &p_info, std::unique_ptr<HapticDevice> &r_device);
 

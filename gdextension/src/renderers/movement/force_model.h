@@ -28,7 +28,7 @@
 // Two artefacts are felt on a real device: F_n does not care about the sign of i.n, so
 // pointing away from a wall that is still in contact pulls the hand into it until a frame
 // shows the body off the wall (at most two 50 Hz frames if the body keeps no velocity into
-// a wall once blocked, as the project's avatar does, scripts/player/player.gd; a body that
+// a wall once blocked, as the project's avatar does, game/player/player.gd; a body that
 // keeps its speed into the wall is held there, and pulls, for as long as it takes to
 // reverse); and a floor plus a wall give a 45 degree normal, so a horizontal push into the
 // wall while standing is answered with k |i| / 2 upward, which nobody pushed for.

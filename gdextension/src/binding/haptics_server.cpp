@@ -1,0 +1,294 @@
+#include "binding/haptics_server.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "binding/config_dictionary.h"
+#include "binding/conversions.h"
+#include "binding/log.h"
+#include "binding/version.h"
+#include "core/base/coordinates.h"
+#include "core/servo/telemetry.h"
+#include "system/config_table.h"
+#include "system/device_factory.h"
+#include "system/renderer_registry.h"
+
+namespace haptics::binding {
+
+namespace {
+
+constexpr int64_t NS_PER_US = 1000;
+
+} // namespace
+
+void HapticsServer::bind_methods(gd::ClassBinder<HapticsServer> &r_binder) {
+	using S = HapticsServer;
+	r_binder.bind_method("list_devices", &S::list_devices);
+	r_binder.bind_method("get_device", &S::get_device, { "id" });
+	r_binder.bind_method("get_device_warnings", &S::get_device_warnings);
+	r_binder.bind_method("get_simulated_device_id", &S::get_simulated_device_id);
+	r_binder.bind_method("open_device", &S::open_device, { "id" });
+	r_binder.bind_method("close_device", &S::close_device);
+	r_binder.bind_method("get_device_id", &S::get_device_id);
+	r_binder.bind_method("get_device_name", &S::get_device_name);
+	r_binder.bind_method("get_device_limits", &S::get_device_limits);
+	r_binder.bind_method("get_device_capabilities", &S::get_device_capabilities);
+	r_binder.bind_method("get_device_status", &S::get_device_status);
+	r_binder.bind_method("calibrate", &S::calibrate);
+	r_binder.bind_method("set_hand_target", &S::set_hand_target, { "target_m" });
+	r_binder.bind_method("get_hand_target", &S::get_hand_target);
+	r_binder.bind_method("set_simulated_plugged", &S::set_simulated_plugged, { "plugged" });
+	r_binder.bind_method("start", &S::start, { "rate_hz", "spin_us" },
+			{ gd::Variant(DEFAULT_RATE_HZ), gd::Variant(SPIN_US_SERVO_DEFAULT) });
+	r_binder.bind_method("stop", &S::stop);
+	r_binder.bind_method("is_running", &S::is_running);
+	r_binder.bind_method("step", &S::step, { "dt" });
+	r_binder.bind_method("get_servo_status", &S::get_servo_status);
+	r_binder.bind_method("submit_frame", &S::submit_frame, { "frame" });
+	r_binder.bind_method("push_impact", &S::push_impact, { "impact" });
+	r_binder.bind_method("get_input_vector", &S::get_input_vector);
+	r_binder.bind_method("get_device_position", &S::get_device_position);
+	r_binder.bind_method("get_forces", &S::get_forces);
+	r_binder.bind_method("get_stats", &S::get_stats);
+	r_binder.bind_method("drain_telemetry", &S::drain_telemetry, { "max_samples" },
+			{ gd::Variant(static_cast<int64_t>(TELEMETRY_QUEUE_CAPACITY)) });
+	r_binder.bind_method("get_telemetry_stride", &S::get_telemetry_stride);
+	r_binder.bind_method("get_telemetry_columns", &S::get_telemetry_columns);
+	r_binder.bind_method("set_render_mode", &S::set_render_mode, { "mode" });
+	r_binder.bind_method("get_render_mode", &S::get_render_mode);
+	r_binder.bind_method("set_constraint_geometry", &S::set_constraint_geometry, { "segments", "mapping" });
+	r_binder.bind_method("get_proxy_state", &S::get_proxy_state);
+	r_binder.bind_method("set_pong_input", &S::set_pong_input, { "input" });
+	r_binder.bind_method("pong_command", &S::pong_command, { "command" });
+	r_binder.bind_method("get_pong_state", &S::get_pong_state);
+	r_binder.bind_method("drain_pong_events", &S::drain_pong_events);
+	r_binder.bind_method("set_hand_target_3d", &S::set_hand_target_3d, { "target_m" });
+	r_binder.bind_method("set_config", &S::set_config, { "section", "values" });
+	r_binder.bind_method("get_config", &S::get_config);
+	r_binder.bind_method("get_config_fields", &S::get_config_fields);
+	r_binder.bind_method("get_version", &S::get_version);
+
+	r_binder.bind_constant("", "MAX_CONTACTS", static_cast<int64_t>(MAX_CONTACTS));
+	r_binder.bind_constant("", "MAX_RESTING_OBJECTS", static_cast<int64_t>(MAX_RESTING_OBJECTS));
+	r_binder.bind_constant("", "MIN_RATE_HZ", static_cast<int64_t>(MIN_RATE_HZ));
+	r_binder.bind_constant("", "MAX_RATE_HZ", static_cast<int64_t>(MAX_RATE_HZ));
+	r_binder.bind_constant("", "DEFAULT_RATE_HZ", static_cast<int64_t>(DEFAULT_RATE_HZ));
+	static_assert(ServoOptions::DEFAULT_SPIN_NS % NS_PER_US == 0, "DEFAULT_SPIN_US is an integer constant");
+	r_binder.bind_constant("", "DEFAULT_SPIN_US", ServoOptions::DEFAULT_SPIN_NS / NS_PER_US);
+	static_assert(ServoOptions::UNHELD_SPIN_NS % NS_PER_US == 0, "UNHELD_SPIN_US is an integer constant");
+	r_binder.bind_constant("", "UNHELD_SPIN_US", ServoOptions::UNHELD_SPIN_NS / NS_PER_US);
+	r_binder.bind_constant("", "TELEMETRY_QUEUE_CAPACITY", static_cast<int64_t>(TELEMETRY_QUEUE_CAPACITY));
+	for (size_t mode = 0; mode < registered_renderers().size(); ++mode) {
+		r_binder.bind_constant("RenderMode", registered_renderers()[mode].mode_constant, static_cast<int64_t>(mode));
+	}
+	r_binder.bind_constant("ProxyUpdate", "PROXY_UPDATE_SERVO_RATE", static_cast<int64_t>(ProxyUpdate::SERVO_RATE));
+	r_binder.bind_constant("ProxyUpdate", "PROXY_UPDATE_FRAME_RATE", static_cast<int64_t>(ProxyUpdate::FRAME_RATE));
+	r_binder.bind_constant("ContactModel", "CONTACT_MODEL_PER_CONTACT", static_cast<int64_t>(ContactModel::PER_CONTACT));
+	r_binder.bind_constant("ContactModel", "CONTACT_MODEL_PAPER_SUM", static_cast<int64_t>(ContactModel::PAPER_SUM));
+	r_binder.bind_constant("WorkspaceShape", "WORKSPACE_DISC", static_cast<int64_t>(WorkspaceShape::DISC));
+	r_binder.bind_constant("WorkspaceShape", "WORKSPACE_SQUARE", static_cast<int64_t>(WorkspaceShape::SQUARE));
+	for (const TelemetryFlagName &flag : servo_telemetry_flags()) {
+		r_binder.bind_constant("TelemetryFlag", flag.name, static_cast<int64_t>(flag.flag), true);
+	}
+	for (const RegisteredRenderer &renderer : registered_renderers()) {
+		for (const TelemetryFlagName &flag : renderer.info->telemetry_flags) {
+			r_binder.bind_constant("TelemetryFlag", flag.name, static_cast<int64_t>(flag.flag), true);
+		}
+	}
+}
+
+bool HapticsServer::report(const char *p_method, const Status &p_status) const {
+	if (!p_status.ok()) {
+		gd::print_error(std::string(p_method) + ": " + p_status.message(), p_method, __FILE__, __LINE__);
+	}
+	return p_status.ok();
+}
+
+bool HapticsServer::start(double p_rate_hz, double p_spin_us) {
+	ServoOptions options;
+	options.rate_hz = p_rate_hz;
+	if (p_spin_us != SPIN_US_SERVO_DEFAULT) {
+		// The spin's bound depends on the rate: a bad rate is reported as itself.
+		const Status rate = validate_rate(p_rate_hz);
+		if (!rate) {
+			return report("start", rate);
+		}
+		const double max_spin_us = static_cast<double>(max_spin_ns(p_rate_hz)) / NS_PER_US;
+		if (!(p_spin_us >= 0.0 && p_spin_us <= max_spin_us)) { // NaN fails both.
+			return report("start",
+					Status::error(std::isfinite(p_spin_us) ? StatusCode::OUT_OF_RANGE : StatusCode::INVALID_ARGUMENT,
+							"spin_us must be in [0, %g] (half a period at %g Hz), or %g for the servo's default (got %g)",
+							max_spin_us, p_rate_hz, SPIN_US_SERVO_DEFAULT, p_spin_us));
+		}
+		options.spin_ns = std::llround(p_spin_us * NS_PER_US);
+	}
+	return report("start", system_.start(options));
+}
+
+void HapticsServer::stop() {
+	system_.stop();
+}
+
+bool HapticsServer::is_running() const {
+	return system_.is_running();
+}
+
+bool HapticsServer::step(double p_dt) {
+	return report("step", system_.step(p_dt));
+}
+
+std::string HapticsServer::get_servo_status() const {
+	return system_.servo_status().message();
+}
+
+bool HapticsServer::submit_frame(const gd::Dictionary &p_frame) {
+	Frame frame;
+	std::string error;
+	if (!frame_from_dictionary(p_frame, frame, error)) {
+		HAPTICS_ERROR("submit_frame: " + error + "; the previous frame stays in force.");
+		return false;
+	}
+	return report("submit_frame", system_.submit_frame(frame));
+}
+
+bool HapticsServer::push_impact(const gd::Dictionary &p_impact) {
+	ImpactEvent event;
+	std::string error;
+	if (!impact_from_dictionary(p_impact, event, error)) {
+		HAPTICS_ERROR("push_impact: " + error);
+		return false;
+	}
+	return report("push_impact", system_.push_impact(event));
+}
+
+gd::Vector2 HapticsServer::get_input_vector() const {
+	return to_game(system_.input_vector());
+}
+
+gd::Vector2 HapticsServer::get_device_position() const {
+	return to_game(system_.device_position());
+}
+
+gd::Dictionary HapticsServer::get_forces() const {
+	const ServoOutput output = system_.output(); // The forces and whose they are, one tick.
+	const RegisteredRenderer &active = registered_renderers()[static_cast<size_t>(output.render_mode)];
+	return forces_to_dictionary(output.forces, active.info->force_names);
+}
+
+gd::Dictionary HapticsServer::get_stats() const {
+	return stats_to_dictionary(system_.stats());
+}
+
+gd::PackedFloat32Array HapticsServer::drain_telemetry(int64_t p_max_samples) {
+	gd::PackedFloat32Array out;
+	if (p_max_samples <= 0) {
+		return out;
+	}
+	const size_t max_samples =
+			std::min(static_cast<size_t>(p_max_samples), static_cast<size_t>(TELEMETRY_QUEUE_CAPACITY));
+	if (!out.resize(static_cast<int64_t>(max_samples * TELEMETRY_STRIDE))) {
+		return gd::PackedFloat32Array();
+	}
+	const size_t count = system_.drain_telemetry(out.ptrw(), max_samples);
+	out.resize(static_cast<int64_t>(count * TELEMETRY_STRIDE));
+	return out;
+}
+
+int64_t HapticsServer::get_telemetry_stride() const {
+	return static_cast<int64_t>(TELEMETRY_STRIDE);
+}
+
+gd::Array HapticsServer::get_telemetry_columns() const {
+	// The force parts' columns are named after the default renderer's components (the
+	// movement renderer's five); other renderers fill them in their own order.
+	const std::span<const char *const> parts = registered_renderers()[0].info->force_names;
+	std::vector<std::string> vectors = { "input", "position" };
+	for (size_t part = 0; part < MAX_FORCE_PARTS; ++part) {
+		vectors.push_back(part < parts.size() ? parts[part] : "part" + std::to_string(part));
+	}
+	vectors.insert(vectors.end(), { "smoothed", "impact", "total" });
+	gd::Array names;
+	names.append("t");
+	for (const std::string &vector : vectors) {
+		for (const char *axis : { "_x", "_y", "_z" }) {
+			names.append(vector + axis);
+		}
+	}
+	names.append("flags");
+	return names;
+}
+
+bool HapticsServer::set_config(const std::string &p_section, const gd::Dictionary &p_values) {
+	std::string known;
+	bool found = false;
+	for (const char *section : config_sections()) {
+		found = found || p_section == section;
+		known += (known.empty() ? "" : ", ") + std::string(section);
+	}
+	if (!found) {
+		HAPTICS_ERROR("set_config: unknown section '" + p_section + "' (known: " + known + ")");
+		return false;
+	}
+	RenderConfig config = system_.config();
+	std::string error;
+	if (!apply_config_section(p_section, p_values, config, error)) {
+		HAPTICS_ERROR("set_config: " + error + "; the previous settings stay in force.");
+		return false;
+	}
+	return report("set_config", system_.configure(config));
+}
+
+bool HapticsServer::set_render_mode(int64_t p_mode) {
+	const std::span<const RegisteredRenderer> renderers = registered_renderers();
+	if (p_mode < 0 || p_mode >= static_cast<int64_t>(renderers.size())) {
+		std::string modes; // "A, B or C"
+		for (size_t mode = 0; mode < renderers.size(); ++mode) {
+			modes += (mode == 0 ? "" : mode + 1 == renderers.size() ? " or "
+																	: ", ") +
+					std::string(renderers[mode].mode_constant);
+		}
+		HAPTICS_ERROR("set_render_mode: unknown mode " + std::to_string(p_mode) + " (" + modes +
+				"); the current mode stays.");
+		return false;
+	}
+	RenderConfig config = system_.config();
+	config.servo.render_mode = static_cast<int32_t>(p_mode);
+	return report("set_render_mode", system_.configure(config));
+}
+
+int64_t HapticsServer::get_render_mode() const {
+	return static_cast<int64_t>(system_.config().servo.render_mode);
+}
+
+bool HapticsServer::set_constraint_geometry(const gd::PackedVector2Array &p_segments,
+		const gd::Dictionary &p_mapping) {
+	std::vector<Segment2> segments;
+	MazeMapping mapping;
+	std::string error;
+	if (!segments_from_points(p_segments, segments, error) ||
+			!mapping_from_dictionary(p_mapping, mapping, error)) {
+		HAPTICS_ERROR("set_constraint_geometry: " + error + "; the previous walls stay.");
+		return false;
+	}
+	return report("set_constraint_geometry", constraint_.set_geometry(segments.data(), segments.size(), mapping));
+}
+
+gd::Dictionary HapticsServer::get_proxy_state() const {
+	return proxy_state_to_dictionary(constraint_.state());
+}
+
+gd::Dictionary HapticsServer::get_config() const {
+	return config_to_dictionary(system_.config());
+}
+
+gd::Array HapticsServer::get_config_fields() const {
+	return config_fields_to_array();
+}
+
+std::string HapticsServer::get_version() const {
+	return std::string("haptics ") + EXTENSION_VERSION + " (Godot " +
+			std::to_string(gd::api.version_major) + "." + std::to_string(gd::api.version_minor) +
+			"." + std::to_string(gd::api.version_patch) + ")";
+}
+
+} // namespace haptics::binding
