@@ -1,7 +1,8 @@
 extends TestSuite
 ## The OpenHaptics driver through HapticsServer with a runtime loaded at run time, as a
 ## Touch owner's install would be: HAPTICS_OPENHAPTICS_LIBRARY points at the test build's
-## fake libHD (FACTS §4's API over a scripted Touch-like device), so the listing, the real
+## fake libHD (docs/devices/openhaptics.md's API over a scripted Touch-like device), so the
+## listing, the real
 ## dlopen, HD's scheduler callback and the servo run end to end. Only a real Touch with
 ## 3D Systems' runtime confirms the device side (README, Devices).
 

@@ -13,7 +13,8 @@ scenarios=${3:-}
 # Guest seconds are several host seconds under emulation on a loaded machine.
 timeout_s=${KERNEL_TEST_TIMEOUT:-300}
 # KVM only when asked: on machines whose /dev/kvm is a paravirtual KVM (kvm_pvm) a stock
-# kernel hangs under it without a word (KERNEL.md), and the timeout would be all we learn.
+# kernel hangs under it without a word (docs/linux-kernel.md), and the timeout would be all
+# we learn.
 accel=${KERNEL_TEST_ACCEL:-tcg}
 case $accel in
   tcg) cpu=max ;;

@@ -4,7 +4,7 @@
 Latency, jitter that reorders, loss (independent and in bursts), duplicates, paths that die.
 
 Godot's ENet has no network emulation and netem is unavailable here, so the network tests put
-this relay between the clients and the server (shared/pong/FACTS.md §1.8). Clients connect to
+this relay between the clients and the server (docs/networking.md, "Latency and loss"). Clients connect to
 the relay's port; for each client address the relay opens its own upstream socket to the
 server, so one relay serves any number of clients and the server sees them as distinct peers.
 Clients are numbered from 0 in the order their first datagram arrived.

@@ -92,7 +92,7 @@ RULES
   rtkit_wait_for org.freedesktop.PolicyKit1
 }
 
-# rtkit-daemon sets its own RLIMIT_FSIZE to 0: its log goes through a pipe (RT.md).
+# rtkit-daemon sets its own RLIMIT_FSIZE to 0: its log goes through a pipe (docs/realtime.md).
 rtkit_start_daemon() {
   "$rtkit_daemon" --no-canary --stderr 2> >(cat >"$rtkit_work/rtkit.log") >/dev/null &
   rtkit_pids+=($!)

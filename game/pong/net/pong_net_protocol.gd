@@ -58,8 +58,8 @@ const COOLDOWN_SHARE: float = 0.75
 ## How far off the floor a received mine may lie, metres.
 const FLOOR_TOLERANCE_M: float = 0.01
 
-## ENet timeouts on every peer (FACTS §1.7: (8, 500, 1000) noticed a SIGKILLed peer in
-## 1.1 s on a LAN). ENet drops a peer when a reliable packet has been sent
+## ENet timeouts on every peer (docs/networking.md, "ENet's timeouts and how a dead peer is
+## noticed"). ENet drops a peer when a reliable packet has been sent
 ## log2(limit) + 1 times unacknowledged and the minimum has passed, or, checked only when a
 ## try times out, when it has waited the hard cap. It doubles the wait after each try, so
 ## the fifth try times out 1 + 2 + 4 + 8 + 16 = 31 retransmission timeouts (RTO, a round
@@ -78,8 +78,9 @@ const TIMEOUT_MIN_MS: int = 500
 const TIMEOUT_RTOS: float = 16.0
 const TIMEOUT_MAX_MS: int = 900
 const TIMEOUT_CEILING_MS: int = 8000
-## A client connecting to nobody gives up after a few seconds (FACTS §1.7: 3.5 s with a
-## 2 s cap; 3 s here so a lossy path does not fail the handshake).
+## A client connecting to nobody gives up after a few seconds (docs/networking.md, "ENet's
+## timeouts and how a dead peer is noticed"); a 3 s cap, so that a lossy path does not fail
+## the handshake.
 const CONNECT_TIMEOUT_MIN_MS: int = 500
 const CONNECT_TIMEOUT_MAX_MS: int = 3000
 ## ENet's packet throttle drops unreliable packets at the sender whenever a round trip

@@ -18,7 +18,7 @@
 
 namespace haptics::bench {
 
-// RealtimeKit's default MaxRealtimePriority (rtkit 0.13; RT.md): the most a user is granted,
+// RealtimeKit's default MaxRealtimePriority (rtkit 0.13; docs/realtime.md): the most a user is granted,
 // and the priority of the root rows that stand in for that grant. The user rows print the
 // priority they were granted, so a daemon configured otherwise shows.
 inline constexpr int32_t RTKIT_DEFAULT_MAX_PRIORITY = 20;

@@ -1,7 +1,7 @@
 #pragma once
 
 // Shared by the evdev tests: expected bytes built independently of the encoder under test
-// (field by field from FACTS §2's offsets), filters over the scripted kernel's record, and
+// (field by field from docs/devices/evdev.md's offsets), filters over the scripted kernel's record, and
 // a bounded wait for the device's I/O thread.
 
 #include "dev_tools/evdev/scripted_evdev_kernel.h"
@@ -16,7 +16,7 @@ namespace haptics::evdev_test {
 using namespace haptics::evdev;
 
 // struct ff_effect for FF_CONSTANT: type 0x52 @0, id @2, direction @4, replay.length @10,
-// level @16; everything else zero (FACTS §2).
+// level @16; everything else zero (docs/devices/evdev.md).
 inline std::vector<uint8_t> expected_constant_effect(int16_t p_id, uint16_t p_direction, int16_t p_level,
 		uint16_t p_length_ms = 0) {
 	std::vector<uint8_t> bytes(48, 0);

@@ -1,7 +1,7 @@
 #pragma once
 
 // SHA-256 (FIPS 180-4) for checking transcribed byte constants against their published
-// digest (the AJ descriptor, FACTS §1.3). Test-only, small, not fast.
+// digest (the AJ descriptor, docs/devices/hid-pid.md). Test-only, small, not fast.
 
 #include <array>
 #include <cstdint>

@@ -1,4 +1,5 @@
-// DualSense input and feature reports (FACTS §5.3 input; PS-K): USB and BT decoding, the BT
+// DualSense input and feature reports (docs/devices/dualsense.md, "Input reports"; PS-K): USB
+// and BT decoding, the BT
 // CRC (seed 0xA1; golden values from Python zlib), short/garbled reports, the bus guess,
 // firmware info, and a bounded fuzz loop (run it under ASan/UBSan).
 

@@ -1,4 +1,5 @@
-// DualSense output reports to the byte (FACTS §5.1, §5.3). Golden CRCs: the two of §5.3
+// DualSense output reports to the byte (docs/devices/dualsense.md). Golden CRCs: the two of its
+// "Bluetooth output report 0x31"
 // (0x231501B5, 0x247973C8) and more computed with Python's zlib as
 // zlib.crc32(bytes([0xA2]) + report[0:74]).
 
@@ -109,7 +110,7 @@ TEST_CASE("dualsense report: USB trigger feedback block at bytes 11..21 with fla
 
 	Expected expected = usb_expected();
 	expected.bytes[1] = 0x04;
-	const uint8_t feedback[] = { 0x21, 0xF8, 0x03, 0x00, 0x48, 0x92, 0x24, 0x00, 0x00, 0x00, 0x00 }; // FACTS §5.2.
+	const uint8_t feedback[] = { 0x21, 0xF8, 0x03, 0x00, 0x48, 0x92, 0x24, 0x00, 0x00, 0x00, 0x00 }; // docs/devices/dualsense.md.
 	std::memcpy(expected.bytes + 11, feedback, sizeof(feedback));
 	CHECK_BYTES(report.bytes, report.size, expected.bytes, expected.size);
 
@@ -139,7 +140,7 @@ TEST_CASE("dualsense report: fields not asked for stay zero, flags included (the
 	CHECK_BYTES(block, COMMON_SIZE, setup, COMMON_SIZE);
 }
 
-TEST_CASE("dualsense report: BT golden CRCs of FACTS §5.3 (zero block - rumble block)") {
+TEST_CASE("dualsense report: BT golden CRCs of docs/devices/dualsense.md (zero block - rumble block)") {
 	uint8_t block[COMMON_SIZE] = {};
 	OutputReport report;
 	bt_from_common(block, 0, report);

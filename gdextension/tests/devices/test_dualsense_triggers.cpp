@@ -1,4 +1,4 @@
-// Adaptive-trigger blocks (FACTS §5.2): the four example blocks byte for byte, the packing
+// Adaptive-trigger blocks (docs/devices/dualsense.md): the four example blocks byte for byte, the packing
 // round-trips for every zone/strength combination, and bad parameters are named.
 
 #include "dualsense_test_util.h"
@@ -12,7 +12,7 @@
 
 namespace haptics::dualsense {
 
-TEST_CASE("dualsense triggers: the example blocks of FACTS §5.2") {
+TEST_CASE("dualsense triggers: the example blocks of docs/devices/dualsense.md") {
 	TriggerEffect effect;
 	SUBCASE("off") {
 		effect = trigger_off();

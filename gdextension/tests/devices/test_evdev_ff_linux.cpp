@@ -1,6 +1,7 @@
-// The evdev force-feedback protocol as bytes (FACTS §2 [UAPI]): struct ff_effect for
-// FF_CONSTANT, the input_event written to play/stop/gain, the ioctl numbers, and the mapping
-// from device-space newtons to (direction, level) with the direction goldens of §1.6.
+// The evdev force-feedback protocol as bytes (docs/devices/evdev.md [UAPI]): struct ff_effect
+// for FF_CONSTANT, the input_event written to play/stop/gain, the ioctl numbers, and the
+// mapping from device-space newtons to (direction, level) with the direction goldens of
+// docs/devices/hid-pid.md, "Direction".
 
 #include "devices/evdev/evdev_abi.h"
 #include "devices/evdev/evdev_ff.h"
@@ -28,7 +29,7 @@ FfConstantForce map(double p_x, double p_y, const FfForceMapping &p_mapping = {}
 
 } // namespace
 
-TEST_CASE("evdev ioctl numbers: FACTS §2 values, equal to <linux/input.h>") {
+TEST_CASE("evdev ioctl numbers: docs/devices/evdev.md values, equal to <linux/input.h>") {
 	CHECK(EVDEV_EVIOCSFF == 0x40304580u);
 	CHECK(EVDEV_EVIOCRMFF == 0x40044581u);
 	CHECK(EVDEV_EVIOCGEFFECTS == 0x80044584u);
@@ -106,7 +107,7 @@ TEST_CASE("evdev input_event: play, stop and gain are 24 bytes with type/code/va
 	CHECK(decoded.value == -32767);
 }
 
-TEST_CASE("evdev direction goldens (FACTS §1.6): +x 0x4000, -x 0xC000, device down 0x8000, up 0x0000") {
+TEST_CASE("evdev direction goldens (docs/devices/hid-pid.md): +x 0x4000, -x 0xC000, device down 0x8000, up 0x0000") {
 	CHECK(map(5.0, 0.0) == FfConstantForce{ 0x4000, 0x7fff });
 	CHECK(map(-5.0, 0.0) == FfConstantForce{ 0xc000, 0x7fff });
 	// Device -y is toward the user = the axis frame's +Y, which the firmwares put at 0x8000.
@@ -167,7 +168,7 @@ TEST_CASE("evdev wheel: the x component as a signed level at the steering direct
 }
 
 TEST_CASE("evdev direction: every direction round-trips through the firmware rule X = sin, Y = -cos") {
-	// The inverse as FACTS §1.6's firmwares compute it; device y is the axis frame's -Y.
+	// The inverse as the firmwares of docs/devices/hid-pid.md compute it; device y is the axis frame's -Y.
 	for (int degrees = 0; degrees < 360; degrees += 7) {
 		const double angle = degrees * 3.14159265358979323846 / 180.0;
 		const Vec3 force(4.0 * std::cos(angle), 4.0 * std::sin(angle), 0.0);

@@ -1,5 +1,5 @@
-// What the real ff-core does (measured on Debian 12's 6.1 under QEMU: KERNEL.md, and the VM
-// test evdev-uinput, which puts the scripted kernel beside the real one) and the scripted
+// What the real ff-core does (seen on Debian 12's 6.1 under QEMU: docs/linux-kernel.md, and the
+// VM test evdev-uinput, which puts the scripted kernel beside the real one) and the scripted
 // kernel must do too, with what our backend makes of it:
 //  - a device whose driver offers FF_PERIODIC is also offered FF_RUMBLE, which ff-core hands
 //    the driver as a 50 ms sine;

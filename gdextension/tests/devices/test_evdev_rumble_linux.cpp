@@ -19,7 +19,7 @@ using namespace haptics;
 using namespace haptics::evdev;
 namespace {
 
-// struct ff_effect for FF_RUMBLE: type 0x50 @0, id @2, strong @16, weak @18 (FACTS §2).
+// struct ff_effect for FF_RUMBLE: type 0x50 @0, id @2, strong @16, weak @18 (docs/devices/evdev.md).
 std::vector<uint8_t> expected_rumble_effect(int16_t p_id, uint16_t p_strong, uint16_t p_weak) {
 	std::vector<uint8_t> bytes(48, 0);
 	bytes[0] = 0x50;

@@ -1,5 +1,5 @@
-// The Falcon's 16-byte packets (FACTS §3.6) byte for byte, and the stream assembler that
-// rebuilds reply frames from FTDI bulk-IN transfers (§3.4 status bytes, split frames, tails,
+// The Falcon's 16-byte packets (docs/devices/falcon.md) byte for byte, and the stream assembler
+// that rebuilds reply frames from FTDI bulk-IN transfers (status bytes, split frames, tails,
 // garbage), with a bounded fuzz loop that must stay clean under ASan/UBSan.
 
 #include "devices/falcon/falcon_codec.h"
@@ -20,7 +20,7 @@ std::vector<uint8_t> bytes_of(const FalconPacket &p_packet) {
 	return std::vector<uint8_t>(p_packet, p_packet + FALCON_PACKET_SIZE);
 }
 
-// FACTS §3.6 golden reply: encoders (-1447, 0, 0), homing 7, buttons 5.
+// docs/devices/falcon.md's golden reply: encoders (-1447, 0, 0), homing 7, buttons 5.
 const std::vector<uint8_t> GOLDEN_REPLY = { 0x3C, 0x4A, 0x46, 0x4B, 0x50, 0x41, 0x41, 0x41, 0x41, 0x41, 0x41, 0x41, 0x41,
 	0xB6, 0x41, 0x3E };
 
@@ -45,7 +45,7 @@ std::vector<uint8_t> transfer(const std::vector<uint8_t> &p_payload) {
 
 } // namespace
 
-TEST_CASE("falcon codec: FACTS 3.6 golden command, zero torques, green LED, no homing") {
+TEST_CASE("falcon codec: golden command, zero torques, green LED, no homing") {
 	FalconCommand command;
 	command.flags = FALCON_LED_GREEN;
 	FalconPacket packet;
@@ -54,7 +54,7 @@ TEST_CASE("falcon codec: FACTS 3.6 golden command, zero torques, green LED, no h
 			std::vector<uint8_t>{ 0x3C, 0x41, 0x41, 0x41, 0x41, 0x41, 0x41, 0x41, 0x41, 0x41, 0x41, 0x41, 0x41, 0x43, 0x41, 0x3E });
 }
 
-TEST_CASE("falcon codec: FACTS 3.6 golden command, torques (100, -100, 0), red LED + homing") {
+TEST_CASE("falcon codec: golden command, torques (100, -100, 0), red LED + homing") {
 	FalconCommand command;
 	command.torque[0] = 100;
 	command.torque[1] = -100;
@@ -102,7 +102,7 @@ TEST_CASE("falcon codec: int16 extremes survive the nibble packing") {
 	CHECK(decoded.torque[2] == -1);
 }
 
-TEST_CASE("falcon codec: FACTS 3.6 golden reply decodes to encoders (-1447, 0, 0), homing 7, buttons 5") {
+TEST_CASE("falcon codec: golden reply decodes to encoders (-1447, 0, 0), homing 7, buttons 5") {
 	FalconReply reply;
 	REQUIRE(decode_falcon_reply(GOLDEN_REPLY.data(), GOLDEN_REPLY.size(), reply));
 	CHECK(reply.encoder[0] == -1447);

@@ -1,4 +1,4 @@
-// The firmware-load sequence of FACTS §3.5 against the scripted FTDI bridge and loader: the
+// The firmware-load sequence of docs/devices/falcon.md against the scripted FTDI bridge and loader: the
 // exact control transfers and bulk payloads, both handshake reply shapes, 100 failed tries,
 // echo mismatch, timeout, silence, split echoes, reads claiming more than their buffer; the
 // firmware check; and the user's file.
@@ -42,7 +42,7 @@ struct Control {
 	uint16_t value;
 };
 
-// FACTS §3.5 in order; all bmRequestType 0x40, wIndex 0.
+// docs/devices/falcon.md, "Loading the firmware", in order; all bmRequestType 0x40, wIndex 0.
 const Control FIRMWARE_MODE_SEQUENCE[] = { { 0x00, 0x0001 }, { 0x00, 0x0002 }, { 0x09, 16 }, { 0x03, 0x4138 }, { 0x04, 0x0008 },
 	{ 0x02, 0x0000 }, { 0x01, 0x0200 }, { 0x01, 0x0100 }, { 0x01, 0x0101 } };
 const Control UPLOAD_START_SEQUENCE[] = { { 0x01, 0x0100 }, { 0x03, 0x0015 } };
@@ -78,7 +78,7 @@ struct TempFile {
 
 } // namespace
 
-TEST_CASE("falcon firmware: the full FACTS 3.5 sequence, Linux reply, byte for byte") {
+TEST_CASE("falcon firmware: the full load sequence, Linux reply, byte for byte") {
 	Rig rig;
 	const std::vector<uint8_t> image = make_test_firmware_image(7914);
 	FirmwareLoader loader(*rig.transport, image.data(), image.size());

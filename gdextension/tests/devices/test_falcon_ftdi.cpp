@@ -1,4 +1,4 @@
-// FTDI facts (FACTS §3.2-3.4): baud divisor encoding, status-byte stripping (never past the
+// FTDI facts (docs/devices/falcon.md): baud divisor encoding, status-byte stripping (never past the
 // buffer), and the USB seam's result names, DeviceIo mapping and refusal of counts larger
 // than the buffer; the libusb path parser.
 
@@ -15,7 +15,7 @@
 using namespace haptics;
 using namespace haptics::falcon;
 
-TEST_CASE("falcon ftdi: NIF's baud constants encode the rates FACTS 3.3 derives") {
+TEST_CASE("falcon ftdi: NIF's baud constants encode the rates docs/devices/falcon.md derives") {
 	CHECK(ftdi_decoded_baud(FTDI_BAUD_BOOTSTRAP) == doctest::Approx(9600.0).epsilon(1e-12));
 	CHECK(ftdi_decoded_baud(FTDI_BAUD_FIRMWARE_UPLOAD) == doctest::Approx(3e6 / 21.0)); // 142 857 Bd.
 	CHECK(ftdi_decoded_baud(FTDI_BAUD_NORMAL) == doctest::Approx(1.5e6));
@@ -23,7 +23,7 @@ TEST_CASE("falcon ftdi: NIF's baud constants encode the rates FACTS 3.3 derives"
 	CHECK(ftdi_decoded_baud(FtdiBaud{ 1, 0 }) == 2e6);
 }
 
-TEST_CASE("falcon ftdi: baud encoding, 9600 -> 0x4138/0, 140000 -> 0x0015/1 (libftdi's rule, FACTS 3.3)") {
+TEST_CASE("falcon ftdi: baud encoding, 9600 -> 0x4138/0, 140000 -> 0x0015/1 (libftdi's rule)") {
 	FtdiBaud baud;
 	double actual = 0.0;
 	REQUIRE(ftdi_encode_baud(9600, baud, actual));

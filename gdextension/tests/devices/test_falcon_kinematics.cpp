@@ -1,4 +1,4 @@
-// Stamper delta kinematics with FACTS §3.7 constants: encoder angles, IK/FK round trips over
+// Stamper delta kinematics with docs/devices/falcon.md's constants: encoder angles, IK/FK round trips over
 // the workspace, the Jacobian against finite differences, force -> motor words (J^T F, the
 // |torque| > 30 scaling, x10000, negation, int16), and unreachable input as errors.
 
@@ -27,7 +27,7 @@ Vec3 theta1_of(const Vec3 &p_position) {
 
 } // namespace
 
-TEST_CASE("falcon kinematics: FACTS 3.7 encoder -> angle vectors") {
+TEST_CASE("falcon kinematics: encoder -> angle vectors") {
 	CHECK(encoder_to_theta_deg(0) == doctest::Approx(35.0).epsilon(1e-12));
 	CHECK(encoder_to_theta_deg(1000) == doctest::Approx(71.43466).epsilon(1e-7));
 	CHECK(encoder_to_theta_deg(-1447) == doctest::Approx(-17.72095).epsilon(1e-6));

@@ -1,5 +1,5 @@
-// The HID report-descriptor parser on the real AJ PID descriptor (FACTS §1.3 report-ID map,
-// §1.4 field offsets, §1.3 quirks), on the composed AJ joystick descriptor and on our
+// The HID report-descriptor parser on the real AJ PID descriptor (docs/devices/hid-pid.md: the
+// report-ID map, field offsets and quirks), on the composed AJ joystick descriptor and on our
 // OFB-like virtual descriptor.
 
 #include "dev_tools/pid/virtual_pid_descriptor.h"
@@ -59,14 +59,14 @@ constexpr uint32_t ORDINAL(uint16_t p_id) {
 
 } // namespace
 
-TEST_CASE("hid parser: the transcribed AJ descriptor has the published size and SHA-256 [AJ FFBDescriptor.h, FACTS §1.3]") {
+TEST_CASE("hid parser: the transcribed AJ descriptor has the published size and SHA-256 [AJ FFBDescriptor.h]") {
 	const uint8_t abc[] = { 'a', 'b', 'c' };
 	REQUIRE(test::sha256_hex(abc) == "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad"); // FIPS 180-2 vector
 	CHECK(pid::aj_pid_descriptor().size() == 1227);
 	CHECK(test::sha256_hex(pid::aj_pid_descriptor()) == "d4b0768523b7a361d363bc91716e5c0001b9aea84ce8634b1cbd6e174e8f36e9");
 }
 
-TEST_CASE("hid parser: AJ report-ID map and wire lengths [FACTS §1.3 table]") {
+TEST_CASE("hid parser: AJ report-ID map and wire lengths [docs/devices/hid-pid.md]") {
 	const std::vector<uint8_t> bytes = pid::compose_aj_descriptor(16);
 	Status status;
 	const ReportDescriptor descriptor = parse_or_empty(bytes, true, &status);
@@ -107,7 +107,7 @@ TEST_CASE("hid parser: AJ report-ID map and wire lengths [FACTS §1.3 table]") {
 	}
 }
 
-TEST_CASE("hid parser: AJ field byte/bit offsets and ranges [FACTS §1.4]") {
+TEST_CASE("hid parser: AJ field byte/bit offsets and ranges [docs/devices/hid-pid.md]") {
 	const ReportDescriptor descriptor = parse_or_empty(pid::aj_pid_descriptor(), false);
 	REQUIRE(descriptor.reports.size() == 17);
 	constexpr ReportType O = ReportType::OUTPUT;
@@ -166,7 +166,7 @@ TEST_CASE("hid parser: AJ field byte/bit offsets and ranges [FACTS §1.4]") {
 	CHECK(descriptor.field_usages(*duration)[2] == pid_usage(0x51)); // bytes 7-8: Sample Period
 }
 
-TEST_CASE("hid parser: AJ descriptor quirks are visible [FACTS §1.3 quirks 1, 3-6]") {
+TEST_CASE("hid parser: AJ descriptor quirks are visible [docs/devices/hid-pid.md quirks 1, 3-6]") {
 	const ReportDescriptor descriptor = parse_or_empty(pid::aj_pid_descriptor(), false);
 	// 1: no Start Delay anywhere in Set Effect.
 	CHECK(find_field(descriptor, ReportType::OUTPUT, 0x01, pid_usage(0xA7)) == nullptr);
@@ -194,7 +194,7 @@ TEST_CASE("hid parser: AJ descriptor quirks are visible [FACTS §1.3 quirks 1, 3
 	CHECK(custom->count == 12);
 }
 
-TEST_CASE("hid parser: the AJ fragment alone closes one collection too many [FACTS §1.3 quirk 2]") {
+TEST_CASE("hid parser: the AJ fragment alone closes one collection too many [docs/devices/hid-pid.md quirk 2]") {
 	Status strict;
 	parse_or_empty(pid::aj_pid_descriptor(), true, &strict);
 	CHECK(strict.code() == StatusCode::INVALID_ARGUMENT);
@@ -226,7 +226,7 @@ TEST_CASE("hid parser: AJ composed descriptors, as Joystick.cpp builds it and wi
 	CHECK(descriptor.collections[static_cast<size_t>(collection)].usage == GD(0x04));
 	CHECK(descriptor.collections[static_cast<size_t>(collection)].type == static_cast<uint8_t>(CollectionType::APPLICATION));
 
-	// FACTS §1.3's reading (the joystick part closed on its own): the last byte is unmatched.
+	// The first reading (the joystick part closed on its own): the last byte is unmatched.
 	const std::vector<uint8_t> closed = pid::compose_aj_descriptor(16, true);
 	parse_or_empty(closed, true, &status);
 	CHECK(status.code() == StatusCode::INVALID_ARGUMENT);

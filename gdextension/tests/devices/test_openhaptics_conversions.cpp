@@ -1,4 +1,4 @@
-// HDAPI arrays -> device space (FACTS §4.6): mm -> m centred on the usable box, the
+// HDAPI arrays -> device space (docs/devices/openhaptics.md): mm -> m centred on the usable box, the
 // column-major transform -> quaternion, the plausible-position bound, and the last force
 // guard before the motors.
 

@@ -1,5 +1,5 @@
 // HdDevice against the fake libHD, through the real loader: the exact call sequences of
-// FACTS §4.7 (open, each scheduler tick, close), every per-tick get/set inside one frame,
+// docs/devices/openhaptics.md (open, each scheduler tick, close), every per-tick get/set inside one frame,
 // units (mm -> m centred, mm/s -> m/s, N unchanged), axes, orientation, buttons, and the
 // force guard at the boundary (continuous cap, peak cap, non-finite -> zero).
 
@@ -81,7 +81,7 @@ Vec3 force_set_for(FakeHd &r_fake, HdDevice &r_device, const ForceCommand &p_com
 
 } // namespace
 
-TEST_CASE("openhaptics: open follows FACTS §4.7: init, check, current, query, enable, schedule, rate, start") {
+TEST_CASE("openhaptics: open follows docs/devices/openhaptics.md: init, check, current, query, enable, schedule, rate, start") {
 	FakeHd &fake = fresh_fake_hd();
 	auto device = open_fake_device(fake);
 	const std::vector<FakeHdCall> calls = game_thread_calls(fake);

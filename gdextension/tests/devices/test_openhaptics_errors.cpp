@@ -185,7 +185,7 @@ TEST_CASE("openhaptics: an HD error struct inside the callback fails the device 
 	double pushing[3];
 	fake.last_force(pushing);
 	REQUIRE(pushing[1] == doctest::Approx(0.6));
-	fake.inject_error(0x0201, 123, 0); // FACTS §4.8's 3-int struct
+	fake.inject_error(0x0201, 123, 0); // docs/devices/openhaptics.md's 3-int struct
 	CHECK(run_until_failure(*device) == DeviceIo::FAILED);
 	CHECK(std::string(device->status().reason) ==
 			"HD error 0x0201 (HD_EXCEEDED_MAX_FORCE): fake: the force exceeded the device's maximum, internal error 123");

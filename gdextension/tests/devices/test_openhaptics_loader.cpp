@@ -1,6 +1,6 @@
 // The OpenHaptics runtime loader and the backend's entry points: a missing library, a
 // broken one, a missing function, the search order, probe/open_device, and hdGetError's
-// struct returned by value (FACTS §4.2), all through the system's real loader (dlopen,
+// struct returned by value (docs/devices/openhaptics.md), all through the system's real loader (dlopen,
 // LoadLibrary under Wine: hd_library.h).
 
 #include "devices/openhaptics/hd_api.h"

@@ -77,7 +77,7 @@ TEST_CASE("openhaptics: backend soak through the servo: render, unplug (HD_COMM_
 			static_cast<double>(force_sets) / seconds, "/s); peak up force ", max_up_n, " N");
 	CHECK(static_cast<double>(force_sets) >= 0.6 * seconds * 1000.0);
 	CHECK(forces_outside_frames == 0);
-	CHECK(max_up_n > 0.1); // The floor pushes the stylus up (+y, FACTS §4.6).
+	CHECK(max_up_n > 0.1); // The floor pushes the stylus up (+y, docs/devices/openhaptics.md).
 	CHECK(max_up_n <= 0.88 + 1e-9); // Continuous: capped at HD_NOMINAL_MAX_CONTINUOUS_FORCE.
 	CHECK(disables == 2); // The unplugged session and the second one.
 	CHECK(disables_after_zero == disables);

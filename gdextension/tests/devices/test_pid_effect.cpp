@@ -1,5 +1,5 @@
-// The constant-force effect's report sequences against the scripted firmware: the FACTS
-// §1.9 sequence as recorded on the wire (AJ and OFB-like), what the firmware then renders,
+// The constant-force effect's report sequences against the scripted firmware: the sequence of
+// docs/devices/hid-pid.md ("Expected bytes") as recorded on the wire (AJ and OFB-like), what the firmware then renders,
 // the Block Load answers (Full / Error / garbage / silence / unplug), and the property that
 // a level-only change is exactly one Set Constant Force report and a direction-only change
 // exactly one Set Effect report.
@@ -56,7 +56,7 @@ PidEffectOptions fast_retries() {
 
 } // namespace
 
-TEST_CASE("pid effect: the FACTS §1.9 sequence on the wire of the AJ firmware, and the force it renders") {
+TEST_CASE("pid effect: the expected sequence on the wire of the AJ firmware, and the force it renders") {
 	Rig rig(ScriptedFirmware::AJ);
 	rig.layout.infinite_duration = InfiniteDuration::ALL_ONES; // As K-new, for the golden bytes.
 	REQUIRE(initialize_device(*rig.transport, rig.layout).ok());

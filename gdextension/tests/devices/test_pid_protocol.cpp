@@ -1,5 +1,5 @@
-// PID layout detection and report encoding, byte for byte: the kernel's scaling (FACTS §1.6
-// worked values), the §1.9 golden reports on the AJ descriptor, and the OFB-like branches
+// PID layout detection and report encoding, byte for byte: the kernel's scaling (the worked
+// values of docs/devices/hid-pid.md), its golden reports on the AJ descriptor, and the OFB-like branches
 // (bitmask Device Control, 16-bit direction, +-32767 magnitude) on our virtual descriptor;
 // fields whose bits cannot hold their logical range are refused when the layout is built.
 
@@ -52,7 +52,7 @@ hid::Field range_field(int64_t p_min, int64_t p_max, uint32_t p_bits = 16) {
 
 } // namespace
 
-TEST_CASE("pid protocol: the kernel's scaling gives the FACTS §1.6 worked values") {
+TEST_CASE("pid protocol: the kernel's scaling gives the worked values of docs/devices/hid-pid.md") {
 	const hid::Field dir_255 = range_field(0, 255, 8);
 	const hid::Field dir_36000 = range_field(0, 36000);
 	CHECK(scale_direction(0x4000, dir_255) == 63);
@@ -78,7 +78,7 @@ TEST_CASE("pid protocol: the kernel's scaling gives the FACTS §1.6 worked value
 	CHECK(scale_signed(-0x4000, magnitude_only) == 5000);
 }
 
-TEST_CASE("pid layout: AJ reports, keys and quirks found by usage [FACTS §1.2, §1.4]") {
+TEST_CASE("pid layout: AJ reports, keys and quirks found by usage [docs/devices/hid-pid.md]") {
 	const PidLayout layout = aj_layout();
 	CHECK(layout.report(layout.set_effect.report).id == 0x01);
 	CHECK(layout.report(layout.set_constant.report).id == 0x05);
@@ -180,9 +180,9 @@ TEST_CASE("pid layout: a field whose bits cannot hold its logical range is refus
 	}
 }
 
-TEST_CASE("pid protocol: FACTS §1.9 golden reports on the AJ descriptor (Linux infinite = all ones)") {
+TEST_CASE("pid protocol: golden reports on the AJ descriptor (Linux infinite = all ones)") {
 	PidLayout layout = aj_layout();
-	layout.infinite_duration = InfiniteDuration::ALL_ONES; // What K-new writes, as §1.9 mimics.
+	layout.infinite_duration = InfiniteDuration::ALL_ONES; // What K-new writes, as docs/devices/hid-pid.md mimics.
 	PidReport report;
 	REQUIRE(encode_create_constant_effect(layout, report));
 	CHECK(bytes_of(report) == Bytes{ 0x05, 0x01, 0x00, 0x00 });
@@ -208,7 +208,7 @@ TEST_CASE("pid protocol: FACTS §1.9 golden reports on the AJ descriptor (Linux 
 	CHECK(bytes_of(report) == Bytes{ 0x0C, 0x01 });
 	REQUIRE(encode_device_control(layout, DeviceCommand::STOP_ALL_EFFECTS, report));
 	CHECK(bytes_of(report) == Bytes{ 0x0C, 0x03 });
-	// AJ's own infinite (the layout's choice for this descriptor): 0x7FFF [FACTS §1.9 caveat].
+	// AJ's own infinite (the layout's choice for this descriptor): 0x7FFF [docs/devices/hid-pid.md, "Infinite duration"].
 	layout.infinite_duration = InfiniteDuration::LOGICAL_MAX;
 	REQUIRE(encode_set_effect(layout, 1, 0x4000, report));
 	CHECK(bytes_of(report) == Bytes{ 0x01, 0x01, 0x01, 0xFF, 0x7F, 0x00, 0x00, 0x00, 0x00, 0xFF, 0x00, 0x04, 0x3F, 0x00, 0x00, 0x00, 0x00, 0x00 });

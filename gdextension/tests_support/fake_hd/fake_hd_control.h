@@ -1,7 +1,8 @@
 #pragma once
 
 // The control side of the fake OpenHaptics runtime (libfake_hd.so), for tests and the
-// bench. The fake exports the HDAPI functions the backend loads (FACTS §4.4) with their
+// bench. The fake exports the HDAPI functions the backend loads (docs/devices/openhaptics.md)
+// with their
 // exact C signatures, over a scripted device; these extern "C" fake_hd_* functions script it
 // and read what it recorded. Tests resolve them with dlsym on the same library the backend
 // loads (openhaptics_fake.h), so both talk to one instance.

@@ -1,4 +1,4 @@
-// The HDAPI functions the backend loads (FACTS §4.4), with the exact C signatures, served
+// The HDAPI functions the backend loads (docs/devices/openhaptics.md), with the exact C signatures, served
 // from the scripted state. Built twice: libfake_hd.so, and libfake_hd_no_async.so with
 // FAKE_HD_WITHOUT_SCHEDULE_ASYNCHRONOUS (hdScheduleAsynchronous missing) for the loader's
 // missing-symbol path.

@@ -1,7 +1,7 @@
 #pragma once
 
 // Inside the fake OpenHaptics runtime: its own restatement of the HD types and values it
-// serves (FACTS §4.2/§4.5), written apart from the backend's hd_api.h on purpose, so a
+// serves (docs/devices/openhaptics.md, "Types" and "Constants"), written apart from the backend's hd_api.h on purpose, so a
 // wrong width or value on either side shows up as a failing test instead of cancelling out.
 
 #include "fake_hd_control.h"

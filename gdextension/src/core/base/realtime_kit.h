@@ -3,10 +3,10 @@
 // A client of RealtimeKit (rtkit-daemon, D-Bus system service org.freedesktop.RealtimeKit1):
 // the way a normal user's process gets a real-time thread on a stock Linux desktop, where
 // SCHED_FIFO is refused (no rtprio limit, no CAP_SYS_NICE). PipeWire and PulseAudio ask it
-// the same way. It grants SCHED_RR up to MaxRealtimePriority to a thread whose process has
-// set RLIMIT_RTTIME (at most RTTimeUSecMax) and which has SCHED_RESET_ON_FORK; failing that,
-// a nice level down to MinNiceLevel. Its polkit actions allow active and inactive login
-// sessions by default, not a process without one (RT.md).
+// the same way. It grants SCHED_RR (with SCHED_RESET_ON_FORK) up to MaxRealtimePriority to a
+// thread whose process has set RLIMIT_RTTIME (at most RTTimeUSecMax); failing that, a nice
+// level down to MinNiceLevel. Its polkit actions allow active and inactive login sessions by
+// default, not a process without one (docs/realtime.md, "RealtimeKit").
 //
 // libdbus is loaded when first needed (dlopen "libdbus-1.so.3", every desktop has it), so
 // the library has no link-time dependency on it and an export runs where it is absent. The

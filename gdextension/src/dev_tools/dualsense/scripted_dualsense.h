@@ -3,7 +3,7 @@
 // A DualSense in software, behind the same DualSenseTransport as the real one: what the
 // backend is tested against (no hardware here), and what a demo or CI run can drive.
 //
-// It behaves like the pad as far as FACTS §5 describes it:
+// It behaves like the pad as far as docs/devices/dualsense.md describes it:
 //  - Output reports are checked the way the pad would: USB 0x02 of 48 or 63 bytes; BT 0x31 of
 //    78 bytes with the tag 0x10 and a valid seed-0xA2 CRC. A report that fails is REJECTED
 //    (counted, not applied) but the write itself succeeds, as a real write does: only the pad

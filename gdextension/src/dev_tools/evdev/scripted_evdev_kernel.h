@@ -60,7 +60,7 @@ struct ScriptedEvdevScript {
 	size_t buffer_events = 256; // Per-fd queue; beyond it the kernel reports SYN_DROPPED.
 };
 
-// An Arduino Leonardo running the ArduinoJoystickWithFFBLibrary PID firmware (FACTS §1.3)
+// An Arduino Leonardo running the ArduinoJoystickWithFFBLibrary PID firmware (docs/devices/hid-pid.md, "AJ's descriptor")
 // under hid-pidff: 2341:8036, X/Y in [-32767, 32767], FF_CONSTANT and the other PID effects,
 // FF_GAIN, 4 buttons from BTN_TRIGGER.
 ScriptedEvdevScript scripted_joystick_script();
@@ -99,7 +99,8 @@ struct ScriptedEvdevCounters {
 	uint64_t uploads = 0; // Successful EVIOCSFF.
 };
 
-// The force the device renders now, as the firmwares of FACTS §1.6 do: the sum over the
+// The force the device renders now, as the firmwares of docs/devices/hid-pid.md ("Direction")
+// do: the sum over the
 // playing FF_CONSTANT effects of level / 0x7FFF * gain / 0xFFFF along (sin t, -cos t), t the
 // direction, in the stick's axis frame (+x right, +y toward the user); fractions of full.
 // Rumble as ff-memless combines it: the playing FF_RUMBLE effects' magnitudes, each scaled by

@@ -2,10 +2,12 @@
 
 // A software PID joystick that answers like its firmware does, for tests, the benchmark and
 // the game's "scripted:hid-pid" device. It decodes the host's reports with the firmware's
-// own fixed byte layout (FACTS §1.4 for AJ; virtual_pid_descriptor.h for ours), NOT with
+// own fixed byte layout (docs/devices/hid-pid.md, "Field layouts", for AJ;
+// virtual_pid_descriptor.h for ours), NOT with
 // our descriptor parser, so a layout the parser got wrong shows up as a wrong force here.
 //
-// AJ semantics [AJ PIDReportHandler.cpp, Joystick.cpp getEffectForce; FACTS §1.4]: Create
+// AJ semantics [AJ PIDReportHandler.cpp, Joystick.cpp getEffectForce; docs/devices/hid-pid.md,
+// "AJ's firmware behaviour"]: Create
 // New Effect allocates the first free block (Block Load then answers Success with it, or
 // Full); Block Free 0xFF frees all; a Pool GET frees all; Device Reset frees all; with only
 // Direction Enable set, the effect pushes axis X by sin θ and axis Y by -cos θ (θ =

@@ -11,8 +11,9 @@ namespace haptics::pid {
 
 inline constexpr uint8_t NO_AXIS = 0xFF; // Profile::y_offset of a one-axis stick.
 
-// Fixed byte offsets as each firmware reads them (byte 0 = report ID), written from FACTS
-// §1.4 (AJ) and virtual_pid_descriptor.h (ours) by hand: deliberately not from the parser.
+// Fixed byte offsets as each firmware reads them (byte 0 = report ID), written from
+// docs/devices/hid-pid.md, "Field layouts" (AJ) and virtual_pid_descriptor.h (ours) by hand:
+// deliberately not from the parser.
 struct ScriptedPidJoystick::Profile {
 	uint8_t input_id, input_length, buttons_offset, button_bytes, x_offset, y_offset, state_id;
 	uint8_t set_effect_id, set_effect_length, se_block, se_type, se_duration, se_gain, se_enable, se_direction;

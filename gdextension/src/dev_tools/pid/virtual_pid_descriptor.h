@@ -1,8 +1,8 @@
 #pragma once
 
 // Our own PID joystick descriptor, written for this project (not copied from a firmware) to
-// exercise the branches AJ's descriptor does not: it is shaped like OpenFFBoard's (FACTS
-// §1.5): Start Delay present, Device Control as a 6-bit Variable bitmask (logical 0..1, so
+// exercise the branches AJ's descriptor does not: it is shaped like OpenFFBoard's
+// (docs/devices/hid-pid.md, "OpenFFBoard"): Start Delay present, Device Control as a 6-bit Variable bitmask (logical 0..1, so
 // the kernel's PERMISSIVE_CONTROL path), one 16-bit direction 0..36000 (centidegrees), a
 // constant magnitude of +-32767, a 16-bit duration 0..0xFFFF (all ones = infinite), and
 // OFB's feature IDs (Create New Effect 0x11, Block Load 0x12, Pool 0x13). It also uses

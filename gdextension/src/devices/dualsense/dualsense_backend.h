@@ -1,6 +1,7 @@
 #pragma once
 
-// Entry points of the DualSense backend (FACTS §5): which enumerated devices it drives, and
+// Entry points of the DualSense backend (docs/devices/dualsense.md): which enumerated devices
+// it drives, and
 // opening one over hidapi. The same device over a software model of the pad is a development
 // tool (dev_tools/dualsense/scripted_dualsense_device.h).
 //

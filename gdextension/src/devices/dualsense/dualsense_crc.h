@@ -1,6 +1,7 @@
 #pragma once
 
-// The CRC-32 the DualSense appends to every Bluetooth report (FACTS §5.3; PS-K
+// The CRC-32 the DualSense appends to every Bluetooth report (docs/devices/dualsense.md,
+// "Bluetooth output report 0x31"; PS-K
 // ps_check_crc32, SDL, DSC crc32.h): the standard reflected CRC-32 (polynomial 0xEDB88320,
 // initial value 0xFFFFFFFF, final inversion, i.e. zlib's crc32) computed over ONE seed byte
 // that names the report's direction, then the report bytes without the CRC itself. The seed
@@ -17,7 +18,8 @@ namespace haptics::dualsense {
 
 inline constexpr uint8_t CRC_SEED_INPUT = 0xA1; // Pad -> host input reports (PS-K).
 inline constexpr uint8_t CRC_SEED_OUTPUT = 0xA2; // Host -> pad output reports (PS-K, SDL).
-// Feature reports (PS-K; DSC defines 0x53 instead: FACTS §6 notes the conflict). Only used to
+// Feature reports (PS-K; DSC defines 0x53 instead: docs/devices/sources.md notes the
+// conflict). Only used to
 // check the firmware-info report on Bluetooth, where a mismatch is harmless (unknown version).
 inline constexpr uint8_t CRC_SEED_FEATURE = 0xA3;
 

@@ -1,6 +1,6 @@
 #pragma once
 
-// The real transport: hidapi on Linux hidraw (HAPI-lib; FACTS §1.8). One hid_device opened
+// The real transport: hidapi on Linux hidraw (HAPI-lib; docs/devices/hid.md). One hid_device opened
 // by path, set non-blocking; writes are output reports, reads poll the hidraw queue.
 //
 // Bus: hidapi 0.13 added hid_device_info::bus_type (and hid_get_device_info on an open

@@ -1,13 +1,15 @@
 #pragma once
 
-// What the pad sends (FACTS §5.3 "Input"; PS-K struct dualsense_input_report, dualsense_
+// What the pad sends (docs/devices/dualsense.md, "Input reports"; PS-K struct
+// dualsense_input_report, dualsense_
 // parse_report, dualsense_get_firmware_info):
 //
 //   USB  report 0x01, exactly 64 bytes: the common input block from byte 1.
 //   BT   report 0x31, exactly 78 bytes: the common input block from byte 2, CRC-32 (seed 0xA1)
 //        of bytes 0..73 in bytes 74..77 (LE). A report with a bad CRC is dropped, as PS-K does.
 //   BT   report 0x01, short: the "simple" report a pad sends until it has received an output
-//        report (FACTS §5.3 mode switch). Not decoded; our first output report switches it.
+//        report (docs/devices/dualsense.md, "Mode switch"). Not decoded; our first output
+//        report switches it.
 //
 // Common input block: x, y, rx, ry, z (L2), rz (R2), sequence, buttons[4], ..., status at 52
 // (low nibble battery 0..10, high nibble charging state). Sticks: 0..255, 0x80 centre, y grows

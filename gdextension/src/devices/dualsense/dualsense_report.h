@@ -1,6 +1,6 @@
 #pragma once
 
-// DualSense output reports (FACTS §5.1, §5.3; sources PS-K hid-playstation.c, SDL
+// DualSense output reports (docs/devices/dualsense.md; sources PS-K hid-playstation.c, SDL
 // SDL_hidapi_ps5.c, DSC dualsensectl). Both buses carry the same 47-byte COMMON block:
 //
 //   USB  report 0x02: [0x02][common 47][15 zero bytes]                        = 63 bytes
@@ -43,7 +43,8 @@ inline constexpr size_t BT_CRC_OFFSET = 74;
 
 inline constexpr size_t MAX_OUTPUT_SIZE = BT_OUTPUT_SIZE;
 
-// Offsets in the common block (FACTS §5.1 table; PS-K struct dualsense_output_report_common).
+// Offsets in the common block (docs/devices/dualsense.md, "USB output report 0x02"; PS-K
+// struct dualsense_output_report_common).
 namespace common {
 inline constexpr size_t VALID_FLAG0 = 0;
 inline constexpr size_t VALID_FLAG1 = 1;
@@ -60,7 +61,7 @@ inline constexpr size_t LIGHTBAR_GREEN = 45;
 inline constexpr size_t LIGHTBAR_BLUE = 46;
 } // namespace common
 
-// Valid-flag bits (FACTS §5.1, DSC names).
+// Valid-flag bits (docs/devices/dualsense.md, DSC names).
 inline constexpr uint8_t FLAG0_COMPATIBLE_VIBRATION = 0x01;
 inline constexpr uint8_t FLAG0_HAPTICS_SELECT = 0x02;
 inline constexpr uint8_t FLAG0_RIGHT_TRIGGER = 0x04;
@@ -75,7 +76,8 @@ inline constexpr uint8_t FLAG2_LIGHTBAR_SETUP = 0x02;
 inline constexpr uint8_t FLAG2_COMPATIBLE_VIBRATION2 = 0x04;
 inline constexpr uint8_t LIGHTBAR_SETUP_LIGHT_OUT = 0x02;
 
-// How the pad wants rumble (FACTS §5.1, SDL). Original firmware emulates rumble with its
+// How the pad wants rumble (docs/devices/dualsense.md, "Rumble recipes"; SDL). Original
+// firmware emulates rumble with its
 // voice-coil haptics at double strength, so SDL halves the values and sets flag0 bits 0-1
 // ("to match Xbox controllers"). From update version 0x0224, when the version is unknown
 // (0: SDL assumes an updated pad) and always on the Edge, the improved emulation is

@@ -6,7 +6,8 @@ namespace haptics::dualsense {
 
 namespace {
 
-// Zone mask in p0..p1 and 3-bit values in p2..p5, both little-endian (FACTS §5.2, DSC).
+// Zone mask in p0..p1 and 3-bit values in p2..p5, both little-endian (DSC;
+// docs/devices/dualsense.md, "Adaptive-trigger blocks").
 void pack_zones(uint8_t p_mode, const uint8_t (&p_values)[TRIGGER_ZONES], TriggerEffect &r_effect) {
 	uint32_t mask = 0;
 	uint32_t values = 0;

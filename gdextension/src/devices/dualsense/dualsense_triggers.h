@@ -1,10 +1,12 @@
 #pragma once
 
 // Adaptive-trigger effect blocks: 11 bytes (mode + parameters p0..p9) that go at common
-// offset 10 (right trigger, R2) or 21 (left trigger, L2) of the output report (FACTS §5.1),
+// offset 10 (right trigger, R2) or 21 (left trigger, L2) of the output report
+// (docs/devices/dualsense.md, "USB output report 0x02"),
 // with valid_flag0 bit 2 (right) or bit 3 (left) set so the pad applies them.
 //
-// Modes and packing from FACTS §5.2 (DSC's trigger_bitpacking_array, SDL testcontroller.c):
+// Modes and packing from docs/devices/dualsense.md, "Adaptive-trigger blocks" (DSC's
+// trigger_bitpacking_array, SDL testcontroller.c):
 // the trigger's travel is 10 zones, 0 (released) .. 9 (fully pulled).
 //  - off 0x05: all parameters zero; the trigger moves freely.
 //  - feedback 0x21: p0..p1 = 10-bit active-zone mask (LE); p2..p5 = 30-bit field (LE), 3 bits

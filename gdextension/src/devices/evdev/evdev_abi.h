@@ -1,7 +1,7 @@
 #pragma once
 
 // The slice of the Linux evdev ABI this backend speaks, as plain constants and byte
-// offsets (FACTS §2 [UAPI]). Our own names (EVDEV_*) rather than <linux/input.h>'s macros,
+// offsets (docs/devices/evdev.md [UAPI]). Our own names (EVDEV_*) rather than <linux/input.h>'s macros,
 // so that headers stay free of the system's macro namespace; evdev_abi_check.cpp
 // static_asserts every number and offset here against the system header, so a mismatch
 // fails the build instead of sending wrong bytes.
@@ -43,7 +43,7 @@ inline constexpr uint16_t EVDEV_BTN_SOUTH = 0x130;
 inline constexpr uint16_t EVDEV_BTN_TRIGGER_HAPPY = 0x2c0;
 inline constexpr uint16_t EVDEV_KEY_MAX = 0x2ff;
 
-// EV_FF codes [FACTS §2].
+// EV_FF codes [docs/devices/evdev.md].
 inline constexpr uint16_t EVDEV_FF_RUMBLE = 0x50;
 inline constexpr uint16_t EVDEV_FF_PERIODIC = 0x51;
 inline constexpr uint16_t EVDEV_FF_CONSTANT = 0x52;
@@ -61,7 +61,7 @@ inline constexpr size_t EVDEV_ABS_BITS_BYTES = 8;
 inline constexpr size_t EVDEV_KEY_BITS_BYTES = 96;
 inline constexpr size_t EVDEV_FF_BITS_BYTES = 16;
 
-// struct ff_effect [FACTS §2]: type u16 @0, id s16 @2, direction u16 @4,
+// struct ff_effect [docs/devices/evdev.md]: type u16 @0, id s16 @2, direction u16 @4,
 // trigger {button u16 @6, interval u16 @8}, replay {length u16 @10, delay u16 @12},
 // union @16; FF_CONSTANT: level s16 @16, envelope {attack_length @18, attack_level @20,
 // fade_length @22, fade_level @24}.
@@ -84,8 +84,8 @@ inline constexpr size_t FF_PERIODIC_WAVEFORM_OFFSET = 16;
 inline constexpr size_t FF_PERIODIC_PERIOD_OFFSET = 18;
 inline constexpr size_t FF_PERIODIC_MAGNITUDE_OFFSET = 20;
 
-// struct input_event [FACTS §2]: struct timeval (16 bytes) then type u16 @16, code u16 @18,
-// value s32 @20.
+// struct input_event [docs/devices/evdev.md]: struct timeval (16 bytes) then type u16 @16,
+// code u16 @18, value s32 @20.
 inline constexpr size_t INPUT_EVENT_SIZE = 24;
 inline constexpr size_t INPUT_EVENT_TYPE_OFFSET = 16;
 inline constexpr size_t INPUT_EVENT_CODE_OFFSET = 18;
@@ -142,9 +142,9 @@ constexpr uint32_t evdev_eviocgabs(uint32_t p_axis) {
 	return ioc(IOC_READ, EVDEV_IOC_TYPE, EVIOCGABS_NR + p_axis, INPUT_ABSINFO_SIZE);
 }
 
-static_assert(EVDEV_EVIOCSFF == 0x40304580u, "FACTS §2: EVIOCSFF on x86-64");
-static_assert(EVDEV_EVIOCRMFF == 0x40044581u, "FACTS §2: EVIOCRMFF");
-static_assert(EVDEV_EVIOCGEFFECTS == 0x80044584u, "FACTS §2: EVIOCGEFFECTS");
+static_assert(EVDEV_EVIOCSFF == 0x40304580u, "docs/devices/evdev.md: EVIOCSFF on x86-64");
+static_assert(EVDEV_EVIOCRMFF == 0x40044581u, "docs/devices/evdev.md: EVIOCRMFF");
+static_assert(EVDEV_EVIOCGEFFECTS == 0x80044584u, "docs/devices/evdev.md: EVIOCGEFFECTS");
 
 // Little-endian field access for the byte layouts above (evdev is host-endian; every LP64
 // Linux target we build for is little-endian, checked in evdev_abi_check.cpp).

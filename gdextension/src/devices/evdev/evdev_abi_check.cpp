@@ -13,7 +13,7 @@ namespace haptics::evdev {
 
 static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "evdev_abi.h writes little-endian fields");
 
-static_assert(sizeof(struct ff_effect) == FF_EFFECT_SIZE, "FACTS §2: struct ff_effect is 48 bytes on LP64");
+static_assert(sizeof(struct ff_effect) == FF_EFFECT_SIZE, "docs/devices/evdev.md: struct ff_effect is 48 bytes on LP64");
 static_assert(offsetof(struct ff_effect, type) == FF_EFFECT_TYPE_OFFSET);
 static_assert(offsetof(struct ff_effect, id) == FF_EFFECT_ID_OFFSET);
 static_assert(offsetof(struct ff_effect, direction) == FF_EFFECT_DIRECTION_OFFSET);
@@ -30,7 +30,7 @@ static_assert(offsetof(struct ff_effect, u.periodic.waveform) == FF_PERIODIC_WAV
 static_assert(offsetof(struct ff_effect, u.periodic.period) == FF_PERIODIC_PERIOD_OFFSET);
 static_assert(offsetof(struct ff_effect, u.periodic.magnitude) == FF_PERIODIC_MAGNITUDE_OFFSET);
 
-static_assert(sizeof(struct input_event) == INPUT_EVENT_SIZE, "FACTS §2: struct input_event is 24 bytes on x86-64");
+static_assert(sizeof(struct input_event) == INPUT_EVENT_SIZE, "docs/devices/evdev.md: struct input_event is 24 bytes on x86-64");
 static_assert(offsetof(struct input_event, type) == INPUT_EVENT_TYPE_OFFSET);
 static_assert(offsetof(struct input_event, code) == INPUT_EVENT_CODE_OFFSET);
 static_assert(offsetof(struct input_event, value) == INPUT_EVENT_VALUE_OFFSET);

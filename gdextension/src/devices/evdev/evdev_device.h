@@ -2,7 +2,7 @@
 
 // A force-feedback joystick or wheel driven through /dev/input/eventN: the path most Linux
 // FFB devices take, because the kernel's hid-pidff or vendor driver owns the HID device
-// and offers force feedback there (FACTS §2). One FF_CONSTANT effect carries the servo's
+// and offers force feedback there (docs/devices/evdev.md). One FF_CONSTANT effect carries the servo's
 // force (evdev_effect.h); the stick is the input (evdev_input.h).
 //
 // Device space: x right, y up (away from the user), metres; position_m = deflection x

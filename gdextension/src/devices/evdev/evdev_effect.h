@@ -1,6 +1,7 @@
 #pragma once
 
-// One FF_CONSTANT effect driven through evdev, in the order ff.rst prescribes (FACTS §2):
+// One FF_CONSTANT effect driven through evdev, in the order ff.rst prescribes
+// (docs/devices/evdev.md, "Using an effect"):
 //
 //   start:  write {EV_FF, FF_GAIN, 0xFFFF}        if the driver offers FF_GAIN
 //           write {EV_FF, FF_AUTOCENTER, 0}        if it offers FF_AUTOCENTER

@@ -1,7 +1,7 @@
 #pragma once
 
 // One force-feedback effect's life on an evdev node, whatever its type, in ff.rst's order
-// (FACTS §2): start = gain 0xFFFF where offered (and autocentre off, for forces), upload with
+// (docs/devices/evdev.md, "Using an effect"): start = gain 0xFFFF where offered (and autocentre off, for forces), upload with
 // id -1 (the kernel answers with the id), play; an update is one EVIOCSFF with that id; stop
 // = stop, erase. The effect types (evdev_effect.h's constant force, evdev_rumble.h's rumble)
 // encode their struct into bytes() and keep what the device plays.

@@ -1,10 +1,10 @@
 #pragma once
 
-// The force-feedback protocol of evdev, as bytes (FACTS §2 [UAPI, ff.rst]): the FF_CONSTANT
+// The force-feedback protocol of evdev, as bytes (docs/devices/evdev.md [UAPI, ff.rst]): the FF_CONSTANT
 // struct ff_effect that EVIOCSFF uploads, the 24-byte input_event written to play, stop or
 // set the gain, and the mapping from our device-space force to (direction, level).
 //
-// Direction (FACTS §1.6): a u16 angle, 0x4000 = 90 degrees. hid-pidff passes it on to the
+// Direction (docs/devices/hid-pid.md, "Direction"): a u16 angle, 0x4000 = 90 degrees. hid-pidff passes it on to the
 // device scaled, and the open PID firmwares (AJ, OFB) render per-axis factors
 // X = sin(theta), Y = -cos(theta) in the stick's AXIS frame (the frame ABS_X/ABS_Y report:
 // +X right, +Y toward the user). So on such a device

@@ -3,7 +3,8 @@
 // Vibration for the evdev nodes whose driver offers rumble but no constant force: most
 // gamepads (xpad, hid-playstation, hid-sony: ff-memless FF_RUMBLE), and through ff-core any
 // FF_PERIODIC device (the kernel advertises FF_RUMBLE there and hands an uploaded rumble to
-// the driver as a 50 ms sine; KERNEL.md). Such a device cannot push the hand, so it renders
+// the driver as a 50 ms sine; docs/devices/evdev.md, "What ff-core adds"). Such a device
+// cannot push the hand, so it renders
 // the servo's IMPACT TRANSIENTS the way the DualSense backend renders them on its motors
 // (dualsense_mapping.h, the same rule and defaults): each I/O cycle takes the peak |impact_n|
 // the servo rendered since the previous one (offer_impact, every tick: the transients swing

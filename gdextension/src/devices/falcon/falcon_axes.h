@@ -14,7 +14,7 @@
 //   device = kinematic - (0, 0, 0.125),   direction_kinematic = direction_device.
 //
 // Which physical way +x points on a real Falcon is the one thing only hardware can confirm
-// (FACTS §6 lists physical directions as a per-device check): if the grip pushed right
+// (docs/devices/sources.md lists physical directions as a per-device check): if the grip pushed right
 // reads -x, negate x AND the force's x here, nowhere else.
 
 #include "core/base/vec3.h"

@@ -9,7 +9,8 @@
 // The same device over a software model of the Falcon is a development tool
 // (dev_tools/falcon/scripted_falcon_device.h).
 //
-// The firmware file is the user's (Novint's license forbids shipping it, FACTS §3.5): a path
+// The firmware file is the user's (Novint's license forbids shipping it, docs/devices/falcon.md,
+// "Loading the firmware"): a path
 // passed in, else the HAPTICS_FALCON_FIRMWARE environment variable. probe() cannot know
 // whether a Falcon still runs firmware from an earlier session without talking to it, so it
 // asks for the file whenever none is set; open_device() only needs it when the Falcon has

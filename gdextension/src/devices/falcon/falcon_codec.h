@@ -1,14 +1,14 @@
 #pragma once
 
-// The Falcon's normal-mode packets with Novint's SDK firmware (FACTS §3.6 [V: NIF
-// FalconFirmwareNovintSDK.cpp]): the host sends one 16-byte command per I/O cycle and the
+// The Falcon's normal-mode packets with Novint's SDK firmware (docs/devices/falcon.md,
+// "Normal-mode packets" [NIF FalconFirmwareNovintSDK.cpp]): the host sends one 16-byte command per I/O cycle and the
 // device answers with one 16-byte reply. Both are framed '<' ... '>' and carry 4-bit nibbles
 // offset by 0x41 ('A'), least significant nibble first:
 //
 //   command: 3C | motor 1 (4 nibbles) | motor 2 | motor 3 | 41+flags | 41 | 3E
 //   reply:   3C | encoder 1 (4 nibbles) | encoder 2 | encoder 3 | 41+(homed<<4|buttons) | ? | 3E
 //
-// Flags per the firmware CODE, which disagrees with its header's comment (§3.6): homing
+// Flags per the firmware CODE, which disagrees with its header's comment (docs/devices/falcon.md): homing
 // 0x01, green LED 0x02, blue 0x04, red 0x08. Encoders are signed 16-bit.
 //
 // Replies arrive through the FTDI bridge as a byte stream, two status bytes at the head of
@@ -35,7 +35,7 @@ inline constexpr uint8_t FALCON_LED_RED = 0x08;
 
 inline constexpr uint8_t FALCON_HOMED_ALL = 0x07; // Bit i: motor i+1 homed.
 
-// Grip buttons (FalconGripFourButton.h, §3.6).
+// Grip buttons (FalconGripFourButton.h; docs/devices/falcon.md, "Normal-mode packets").
 inline constexpr uint8_t FALCON_BUTTON_1_PLUS = 0x1;
 inline constexpr uint8_t FALCON_BUTTON_2_FORWARD = 0x2;
 inline constexpr uint8_t FALCON_BUTTON_3_CENTER = 0x4;
@@ -52,7 +52,7 @@ struct FalconReply {
 	int16_t encoder[3] = {};
 	uint8_t homed = 0; // Bits 0-2.
 	uint8_t buttons = 0; // FALCON_BUTTON_*.
-	uint8_t byte14 = FALCON_NIBBLE_BASE; // Meaning unknown (§3.6); kept for diagnostics.
+	uint8_t byte14 = FALCON_NIBBLE_BASE; // Meaning unknown (docs/devices/falcon.md); kept for diagnostics.
 
 	bool all_homed() const { return (homed & FALCON_HOMED_ALL) == FALCON_HOMED_ALL; }
 };

@@ -37,7 +37,8 @@ Status FalconDevice::open() {
 	transport_ = std::move(transport);
 	firmware_uploaded_ = false;
 	firmware_report_ = FirmwareLoadReport{};
-	// NIF's open(): purge, normal mode; then the firmware check (FACTS §3.5).
+	// NIF's open(): purge, normal mode; then the firmware check (docs/devices/falcon.md,
+	// "Loading the firmware").
 	status = falcon_purge(*transport_);
 	if (status) {
 		status = falcon_set_normal_mode(*transport_);

@@ -1,7 +1,8 @@
 #pragma once
 
 // The Novint Falcon as a HapticDevice: a 3-DOF directional device behind an FTDI bridge,
-// driven from the host at 1 kHz (the firmware has no control loop of its own, FACTS §3.6).
+// driven from the host at 1 kHz (the firmware has no control loop of its own,
+// docs/devices/falcon.md).
 //
 // open() (game thread): opens the USB transport, purges, switches the bridge to normal mode
 // and checks for running firmware (a correctly framed reply); if there is none, uploads the

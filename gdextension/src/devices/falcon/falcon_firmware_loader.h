@@ -2,7 +2,8 @@
 
 // Loading Novint's firmware into a freshly powered Falcon, and telling whether it is
 // already running. The Falcon boots into a loader behind its FTDI bridge; the host must
-// upload the firmware image at every power-up. The sequence is FACTS §3.5 (libnifalcon's
+// upload the firmware image at every power-up. The sequence is docs/devices/falcon.md,
+// "Loading the firmware" (libnifalcon's
 // libusb backend, in its exact order):
 //
 //   FIRMWARE_MODE  purge RX, purge TX, latency 16 ms, baud 0x4138 (9600), 8N1, flow off,
@@ -18,7 +19,8 @@
 // stage (one chunk in UPLOAD), so the caller, a test or a progress bar, sees where it is.
 // Every failure names its stage and the USB error.
 //
-// The firmware image is the USER's file: Novint's license does not let us ship it (§3.5).
+// The firmware image is the USER's file: Novint's license does not let us ship it
+// (docs/devices/falcon.md, "Loading the firmware").
 
 #include "core/base/status.h"
 #include "devices/usb/usb_transport.h"
@@ -31,7 +33,7 @@
 namespace haptics::falcon {
 
 inline constexpr size_t FIRMWARE_CHUNK_SIZE = 62; // One 64-byte USB packet minus the 2 status bytes.
-// Novint's images are 7-9 KB (§3.5); anything this large is not one.
+// Novint's images are 7-9 KB (docs/devices/falcon.md); anything this large is not one.
 inline constexpr size_t FIRMWARE_MAX_SIZE = 64 * 1024;
 inline constexpr const char *FIRMWARE_ENV_VAR = "HAPTICS_FALCON_FIRMWARE";
 
@@ -48,7 +50,7 @@ enum class FirmwareStage : int32_t {
 const char *firmware_stage_name(FirmwareStage p_stage);
 
 struct FirmwareLoadOptions {
-	int32_t handshake_tries = 100; // §3.5.
+	int32_t handshake_tries = 100; // docs/devices/falcon.md, "Loading the firmware".
 	uint32_t handshake_read_timeout_ms = 100; // Per try: 100 tries stay within ~10 s.
 	uint32_t bulk_timeout_ms = 1000;
 	// IN transfers carrying only the FTDI status bytes (the chip sends one every 40 ms when

@@ -7,7 +7,7 @@ namespace haptics::falcon {
 namespace {
 
 constexpr double FTDI_BASE_CLOCK_HZ = 3000000.0; // 48 MHz / 16 (FT232BM/R).
-// Eighths of the divisor -> 3-bit code (§3.3); the code's bits 0-1 go to wValue 14-15, bit 2
+// Eighths of the divisor -> 3-bit code (docs/devices/falcon.md, "Baud divisor encoding"); the code's bits 0-1 go to wValue 14-15, bit 2
 // to wIndex bit 0.
 constexpr uint32_t FRACTION_CODE[8] = { 0, 3, 2, 4, 1, 5, 6, 7 };
 constexpr uint32_t MAX_DIVISOR_EIGHTHS = 0x1FFFF; // 14-bit integer part + 3-bit fraction.

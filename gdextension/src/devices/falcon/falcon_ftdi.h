@@ -1,12 +1,13 @@
 #pragma once
 
-// The Falcon's USB side is an FTDI FT232 serial bridge (FACTS §3.1): the firmware loader and
-// the I/O loop talk to it with FTDI vendor requests (§3.2) and read bulk-IN packets that each
-// begin with two FTDI status bytes (§3.4). This file holds those facts as named constants
-// and the two small computations on them: the FT232BM/R baud divisor encoding (§3.3) and
-// stripping the status bytes.
+// The Falcon's USB side is an FTDI FT232 serial bridge (docs/devices/falcon.md, "USB
+// identity"): the firmware loader and the I/O loop talk to it with FTDI vendor requests
+// ("FTDI vendor requests") and read bulk-IN packets that each begin with two FTDI status
+// bytes ("Status bytes on every IN packet"). This file holds those facts as named constants
+// and the two small computations on them: the FT232BM/R baud divisor encoding ("Baud divisor
+// encoding") and stripping the status bytes.
 //
-// Sources: FACTS §3.2-3.4 [V: FTDI ftdi.h / ftdi.c, FTDI-K, NIF FalconCommLibUSB.cpp].
+// Sources: docs/devices/falcon.md [FTDI ftdi.h / ftdi.c, FTDI-K, NIF FalconCommLibUSB.cpp].
 
 #include "devices/usb/usb_transport.h"
 
@@ -16,19 +17,19 @@
 
 namespace haptics::falcon {
 
-// --- Identity and endpoints (§3.1) -----------------------------------------------------------
+// --- Identity and endpoints (docs/devices/falcon.md, "USB identity") --------------------------
 inline constexpr uint16_t FALCON_VENDOR_ID = 0x0403; // FTDI's VID.
 inline constexpr uint16_t FALCON_PRODUCT_ID = 0xCB48;
 inline constexpr int32_t FALCON_INTERFACE = 0;
 inline constexpr uint8_t FALCON_ENDPOINT_OUT = 0x02;
 inline constexpr uint8_t FALCON_ENDPOINT_IN = 0x81;
 // Every IN read asks for exactly one full-speed packet: NIF warns that other sizes break
-// libusb or macOS (§3.1).
+// libusb or macOS (docs/devices/falcon.md, "USB identity").
 inline constexpr int32_t FTDI_PACKET_SIZE = 64;
 inline constexpr int32_t FTDI_STATUS_BYTES = 2;
 inline constexpr uint32_t FTDI_CONTROL_TIMEOUT_MS = 1000;
 
-// --- Vendor requests (§3.2): bmRequestType 0x40, no data stage, wIndex 0 ---------------------
+// --- Vendor requests (docs/devices/falcon.md): bmRequestType 0x40, no data stage, wIndex 0 -----
 inline constexpr uint8_t FTDI_REQUEST_RESET = 0x00; // wValue: 0 reset, 1 purge RX, 2 purge TX.
 inline constexpr uint8_t FTDI_REQUEST_MODEM_CTRL = 0x01;
 inline constexpr uint8_t FTDI_REQUEST_SET_FLOW_CTRL = 0x02;
@@ -50,7 +51,7 @@ inline constexpr uint16_t FTDI_DATA_8N1 = 0x0008; // 8 data bits, parity none <<
 inline constexpr uint16_t FTDI_LATENCY_FIRMWARE_MS = 16;
 inline constexpr uint16_t FTDI_LATENCY_NORMAL_MS = 1;
 
-// The three baud settings NIF sends (§3.3), as wValue/wIndex of SET_BAUD_RATE.
+// The three baud settings NIF sends (docs/devices/falcon.md, "Baud divisor encoding"), as wValue/wIndex of SET_BAUD_RATE.
 struct FtdiBaud {
 	uint16_t value = 0;
 	uint16_t index = 0;
@@ -70,7 +71,7 @@ struct FtdiRequest {
 // Sends p_request (bmRequestType 0x40) with the control timeout.
 usb::UsbTransfer ftdi_send(usb::UsbTransport &r_transport, const FtdiRequest &p_request);
 
-// FT232BM/R divisor encoding of p_baud (§3.3: 3 MHz base, 1/8 steps, fraction code in
+// FT232BM/R divisor encoding of p_baud (docs/devices/falcon.md: 3 MHz base, 1/8 steps, fraction code in
 // wValue bits 14-15 and wIndex bit 0; 3 M and 2 M Bd are special codes). r_actual_baud is
 // the rate the chip will really run at. Errors for p_baud outside [184, 3 000 000].
 Status ftdi_encode_baud(int32_t p_baud, FtdiBaud &r_baud, double &r_actual_baud);

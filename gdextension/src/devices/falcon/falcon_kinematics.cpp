@@ -8,7 +8,7 @@ namespace haptics::falcon {
 namespace {
 
 constexpr double PI = std::numbers::pi;
-// Leg angles around z (§3.7): 105, -15, -135 degrees.
+// Leg angles around z (docs/devices/falcon.md, "Kinematics"): 105, -15, -135 degrees.
 constexpr double LEG_PHI[3] = { PI / 2.0 + PI / 12.0, -PI / 6.0 + PI / 12.0, -5.0 * PI / 6.0 + PI / 12.0 };
 
 // Below these the configuration is singular (a leg stretched straight, or thigh and shin

@@ -1,7 +1,8 @@
 #pragma once
 
-// The Falcon's parallel (delta) kinematics, Stamper's model as libnifalcon states it (FACTS
-// §3.7 [V: NIF FalconGeometry.h, FalconKinematicStamper.cpp]), rewritten from the equations:
+// The Falcon's parallel (delta) kinematics, Stamper's model as libnifalcon states it
+// (docs/devices/falcon.md, "Kinematics" [NIF FalconGeometry.h, FalconKinematicStamper.cpp]),
+// rewritten from the equations:
 //
 //  - Each leg i sits at angle phi_i around the z axis. In the leg's frame (u, v, w) =
 //    (R(phi_i) p) + (-r, -s, 0) its three joint angles satisfy the closure
@@ -36,7 +37,7 @@
 
 namespace haptics::falcon {
 
-// Geometry (§3.7), metres.
+// Geometry (docs/devices/falcon.md, "Kinematics"), metres.
 inline constexpr double FALCON_A = 0.060;
 inline constexpr double FALCON_B = 0.1025;
 inline constexpr double FALCON_C = 0.01443;
@@ -46,7 +47,7 @@ inline constexpr double FALCON_F = -0.025;
 inline constexpr double FALCON_R = 0.0400;
 inline constexpr double FALCON_S = -0.02309;
 
-// Encoder -> thigh angle (§3.7): shaft 0.01425 m, 320 slots x 4 (quadrature), arm 0.110 m,
+// Encoder -> thigh angle (docs/devices/falcon.md): shaft 0.01425 m, 320 slots x 4 (quadrature), arm 0.110 m,
 // 35 degrees at count 0: theta = 35 deg + 0.0364347 deg * count.
 inline constexpr double FALCON_THETA_OFFSET_DEG = 35.0;
 inline constexpr double FALCON_DEG_PER_COUNT = (0.01425 / (320.0 * 4.0)) * 360.0 / 0.110;
@@ -55,7 +56,7 @@ inline constexpr double FALCON_DEG_PER_COUNT = (0.01425 / (320.0 * 4.0)) * 360.0
 // (+-0.030, +-0.030, 0.095..0.155)); a 0.05 m sphere around it is reachable in the model.
 inline constexpr Vec3 FALCON_KINEMATIC_CENTRE{ 0.0, 0.0, 0.125 };
 
-// NIF's limit on |J^T F| before the x10000 (units undocumented, §6 [U]) and the scale.
+// NIF's limit on |J^T F| before the x10000 (units undocumented: docs/devices/sources.md) and the scale.
 inline constexpr double FALCON_MAX_JOINT_TORQUE = 30.0;
 inline constexpr double FALCON_TORQUE_TO_WORD = 10000.0;
 

@@ -123,7 +123,7 @@ Status DescriptorParser::item_global(uint8_t p_tag, uint32_t p_data, uint32_t p_
 			return Status::success();
 		case GLOBAL_UNIT_EXPONENT:
 			// A 4-bit two's-complement nibble (0xD = -3); larger values are whole-item signed
-			// (real descriptors write `55 FD` for -3, FACTS §1.3), as Linux reads them.
+			// (real descriptors write `55 FD` for -3, docs/devices/hid.md), as Linux reads them.
 			global_.unit_exponent = p_data < 16 ? (p_data >= 8 ? static_cast<int32_t>(p_data) - 16 : static_cast<int32_t>(p_data))
 												: static_cast<int32_t>(sign_extend_item(p_data, p_size));
 			return Status::success();

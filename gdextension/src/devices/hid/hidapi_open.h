@@ -16,7 +16,7 @@ struct hid_device_;
 namespace haptics::hid {
 
 // printf format, one %s: the path. The systemd uaccess rule covers input joysticks, not
-// hidraw (FACTS §1.8), so this is the usual first failure.
+// hidraw (docs/devices/hid.md, "Permissions"), so this is the usual first failure.
 inline constexpr const char *PERMISSION_REASON_FORMAT =
 		"no permission for %s: install the udev rule (tools/udev, see README Devices)";
 

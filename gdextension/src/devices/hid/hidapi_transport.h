@@ -1,6 +1,6 @@
 #pragma once
 
-// HidTransport over hidapi (the hidraw backend on Linux; FACTS §1.8): hid_open_path,
+// HidTransport over hidapi (the hidraw backend on Linux; docs/devices/hid.md): hid_open_path,
 // hid_write (Output, interrupt OUT), hid_send_feature_report / hid_get_feature_report
 // (control transfers), hid_read_timeout(..., 0) (non-blocking Input). The report descriptor
 // comes from hid_get_report_descriptor on hidapi >= 0.14, else from sysfs (this machine

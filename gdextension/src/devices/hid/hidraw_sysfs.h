@@ -2,7 +2,7 @@
 
 // What Linux sysfs says about a hidraw node, readable without opening the device (so
 // without the permissions /dev/hidraw* usually lacks): its report descriptor and whether a
-// kernel force-feedback driver (usbhid's hid-pidff) owns it (FACTS §1.8).
+// kernel force-feedback driver (usbhid's hid-pidff) owns it (docs/devices/hid.md).
 //
 // hidapi 0.13's device path on the hidraw backend is /dev/hidrawN; the HID device behind it
 // is /sys/class/hidraw/hidrawN/device. p_sysfs_root exists for tests (a fake tree).

@@ -19,7 +19,8 @@
 // Untrusted input: every item is bounds-checked and hard limits stop absurd descriptors;
 // errors name the byte offset. A descriptor that ends inside an item or inside a collection
 // is truncated and refused in both modes, saying so. Strict mode also rejects an
-// END_COLLECTION that closes nothing; tolerant mode ignores it (FACTS §1.3 quirk 2),
+// END_COLLECTION that closes nothing; tolerant mode ignores it (docs/devices/hid-pid.md,
+// "AJ's descriptor", quirk 2),
 // recording it in quirks.
 
 #include "core/base/status.h"
@@ -31,7 +32,7 @@
 
 namespace haptics::hid {
 
-inline constexpr size_t MAX_DESCRIPTOR_BYTES = 4096; // HID_MAX_DESCRIPTOR_SIZE [HAPI-lib, FACTS §1.8]
+inline constexpr size_t MAX_DESCRIPTOR_BYTES = 4096; // HID_MAX_DESCRIPTOR_SIZE [HAPI-lib, docs/devices/hid.md]
 inline constexpr uint32_t MAX_COLLECTION_DEPTH = 32;
 inline constexpr uint32_t MAX_GLOBAL_STACK_DEPTH = 8; // PUSH nesting (Linux allows 4).
 inline constexpr uint32_t MAX_REPORT_SIZE_BITS = 256; // One value (Linux's limit).
@@ -97,7 +98,7 @@ struct Field {
 	ReportType type = ReportType::INPUT;
 	uint8_t report_id = 0;
 	// From the first byte of the wire report: the report-ID byte counts when the report has
-	// an ID, so offsets match hidapi buffers (byte 0 = ID) and FACTS §1.4 directly.
+	// an ID, so offsets match hidapi buffers (byte 0 = ID) and docs/devices/hid-pid.md directly.
 	uint32_t bit_offset = 0;
 	uint32_t bit_size = 0; // Report Size: bits per value.
 	uint32_t count = 0; // Report Count: values.
@@ -126,7 +127,7 @@ struct Report {
 	ReportType type = ReportType::INPUT;
 	uint8_t id = 0; // 0 when the descriptor uses no report IDs.
 	uint32_t bit_length = 0; // Including the ID byte when id != 0.
-	uint32_t byte_length = 0; // On the wire, ID byte included (FACTS §1.3 table).
+	uint32_t byte_length = 0; // On the wire, ID byte included (docs/devices/hid-pid.md).
 	uint32_t first_field = 0; // Into ReportDescriptor::fields; fields keep their order.
 	uint32_t field_count = 0;
 };

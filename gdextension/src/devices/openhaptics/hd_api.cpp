@@ -14,7 +14,7 @@ struct ErrorName {
 	const char *name;
 };
 
-// FACTS §4.5, in code order.
+// docs/devices/openhaptics.md, "Constants", in code order.
 constexpr ErrorName ERROR_NAMES[] = {
 	{ HD_SUCCESS, "HD_SUCCESS" },
 	{ HD_INVALID_ENUM, "HD_INVALID_ENUM" },

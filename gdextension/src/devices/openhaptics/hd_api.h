@@ -3,10 +3,10 @@
 // Our own declarations of the part of OpenHaptics' HDAPI we call, and a run-time loader for
 // it. OpenHaptics is proprietary: we never include SensAble's headers, never link libHD and
 // never ship it; the user's install is dlopen'ed and every function is looked up by its C
-// name. Types and values restate devices/FACTS.md §4.2 (types), §4.3 (calling convention),
-// §4.4 (functions) and §4.5 (constants); nothing here is copied from the headers.
+// name. Types and values restate docs/devices/openhaptics.md ("Types", "Calling convention",
+// "Functions we call", "Constants"); nothing here is copied from the headers.
 //
-// ABI points that matter (FACTS §4.2/4.3):
+// ABI points that matter (docs/devices/openhaptics.md, "Types" and "Calling convention"):
 //  - HHD is unsigned int but HDSchedulerHandle is unsigned long (8 bytes on LP64).
 //  - hdGetError returns a 12-byte struct BY VALUE (RAX:RDX on x86-64 SysV), so its pointer
 //    is declared with the struct return type, never as an int.
@@ -26,7 +26,7 @@
 
 namespace haptics::openhaptics {
 
-// --- Types (FACTS §4.2) ----------------------------------------------------------------------
+// --- Types (docs/devices/openhaptics.md) ------------------------------------------------------
 using HDuint = unsigned int;
 using HDboolean = unsigned char;
 using HDulong = unsigned long;
@@ -45,11 +45,11 @@ struct HDErrorInfo {
 	int internalErrorCode;
 	HHD hHD;
 };
-static_assert(sizeof(HDErrorInfo) == 12, "FACTS §4.2: HDErrorInfo is three 4-byte fields");
+static_assert(sizeof(HDErrorInfo) == 12, "docs/devices/openhaptics.md: HDErrorInfo is three 4-byte fields");
 
 using HDSchedulerCallback = HDCallbackCode(HAPTICS_HD_CALL *)(void *p_user_data);
 
-// --- Constants (FACTS §4.5) ------------------------------------------------------------------
+// --- Constants (docs/devices/openhaptics.md) --------------------------------------------------
 inline constexpr HDstring HD_DEFAULT_DEVICE = nullptr;
 inline constexpr HHD HD_INVALID_HANDLE = 0xFFFFFFFFu;
 inline constexpr HDCallbackCode HD_CALLBACK_DONE = 0;
@@ -109,7 +109,7 @@ inline constexpr HDerror HD_INVALID_PRIORITY = 0x0500;
 inline constexpr HDerror HD_SCHEDULER_FULL = 0x0501;
 inline constexpr HDerror HD_INVALID_LICENSE = 0x0600;
 
-// --- The functions we call (FACTS §4.4), as pointers filled by HdLibrary::load ---------------
+// --- The functions we call (docs/devices/openhaptics.md), as pointers filled by HdLibrary::load
 struct HdApi {
 	HHD(HAPTICS_HD_CALL *hdInitDevice)
 	(HDstring p_config_name) = nullptr;
@@ -138,12 +138,12 @@ struct HdApi {
 	void(HAPTICS_HD_CALL *hdUnschedule)(HDSchedulerHandle p_handle) = nullptr;
 };
 
-// The header's HD_DEVICE_ERROR(e) (FACTS §4.4).
+// The header's HD_DEVICE_ERROR(e) (docs/devices/openhaptics.md).
 inline bool hd_failed(const HDErrorInfo &p_error) {
 	return p_error.errorCode != HD_SUCCESS;
 }
 
-// "HD_EXCEEDED_MAX_FORCE" for 0x0201; "unknown HD error" for codes not in FACTS §4.5.
+// "HD_EXCEEDED_MAX_FORCE" for 0x0201; "unknown HD error" for codes not in docs/devices/openhaptics.md.
 const char *hd_error_name(HDerror p_code);
 
 // One sentence for a status line: "HD error 0x0201 (HD_EXCEEDED_MAX_FORCE): <the runtime's

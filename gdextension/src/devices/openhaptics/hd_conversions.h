@@ -4,11 +4,12 @@
 // so that each is tested on its own (and cheap enough for the scheduler callback: no
 // allocation, no branches on the hot path beyond finiteness and plausibility).
 //
-// Units (FACTS §4.6): positions mm, velocities mm/s, the workspace box mm
+// Units (docs/devices/openhaptics.md, "Units and layouts"): positions mm, velocities mm/s, the workspace box mm
 // (minX, minY, minZ, maxX, maxY, maxZ), forces N, stiffness N/mm. Ours: m, m/s, N, N/m.
 //
 // Axes: HD's device frame is x right, y up, z toward the user, the same as ours
-// (device.h), so the mapping is the identity. Evidence: FACTS §4.6 (ROS omni_state maps
+// (device.h), so the mapping is the identity. Evidence: docs/devices/openhaptics.md, "Units
+// and layouts" (ROS omni_state maps
 // device (x, y, z) to ROS (x, -z, y), i.e. device +y is up, and sends ROS forces back as
 // (Fx, Fz, -Fy), the inverse of the same map); public Touch drivers annotate
 // HD_CURRENT_POSITION with "+Y up, +X right"; HD's frame is right-handed (its transforms
@@ -60,7 +61,7 @@ Orientation orientation_from_hd_transform(const double p_transform[16]);
 // The force we may set this tick: finite, the continuous share (force_n - impact_n) capped
 // at p_continuous_limit_n (<= 0: no cap), the total capped at p_peak_limit_n. A command
 // that is not finite gives zero. The servo's safety stage has already done the same; this is
-// the last guard before the motors (FACTS §4.8).
+// the last guard before the motors (docs/devices/openhaptics.md).
 Vec3 bounded_force(const ForceCommand &p_command, double p_continuous_limit_n, double p_peak_limit_n);
 
 } // namespace haptics::openhaptics

@@ -92,7 +92,7 @@ Status HdDevice::open() {
 	}
 	const HdApi &hd = library_.api();
 
-	// FACTS §4.7: init -> check -> make current -> query -> enable force -> schedule -> rate
+	// docs/devices/openhaptics.md, "Call sequences": init -> check -> make current -> query -> enable force -> schedule -> rate
 	// -> start -> check -> calibrate.
 	handle_ = hd.hdInitDevice(HD_DEFAULT_DEVICE);
 	const HDErrorInfo init_error = hd.hdGetError();
@@ -266,7 +266,7 @@ void HdDevice::close_with_reason(const char *p_reason) {
 	// covers a callback that already stopped on an error.
 	stopping_.store(true, std::memory_order_release);
 	hd.hdScheduleSynchronous(&HdDevice::zero_force_callback, this, HD_MAX_SCHEDULER_PRIORITY);
-	// FACTS §4.7: stop -> unschedule -> disable.
+	// docs/devices/openhaptics.md, "Call sequences": stop -> unschedule -> disable.
 	hd.hdStopScheduler();
 	if (servo_running_.load(std::memory_order_acquire)) {
 		hd.hdUnschedule(servo_handle_);

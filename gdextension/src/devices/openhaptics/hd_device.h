@@ -9,7 +9,8 @@
 // DeviceExchange's seqlocks (device_exchange.h): the servo's read_state/write_force copy the
 // latest state/command and never wait on HD, HD's thread never waits on the servo. We chose
 // the scheduler over driving hdBeginFrame/hdEndFrame from a thread of ours because:
-//  - it is the documented way (every public HDAPI user, FACTS §4.7): HD's servo loop owns
+//  - it is the documented way (every public HDAPI user, docs/devices/openhaptics.md, "Call
+//    sequences"): HD's servo loop owns
 //    the timing against the device's own clock and runs its safety checks (force/velocity
 //    limits, HD_EXCEEDED_MAX_VELOCITY, ramping) at that rate, so frames from another thread
 //    would at best duplicate its timing and at worst race its frames;
@@ -21,7 +22,7 @@
 // The callback never allocates, locks or logs: it copies through the seqlocks, converts
 // units, and on an error formats one sentence into a stack buffer (once, as it stops).
 //
-// Each tick (FACTS §4.7): [while not calibrated: hdCheckCalibration, hdUpdateCalibration on
+// Each tick (docs/devices/openhaptics.md, "Call sequences"): [while not calibrated: hdCheckCalibration, hdUpdateCalibration on
 // NEEDS_UPDATE (the ROS driver's pattern)] -> hdBeginFrame(hdGetCurrentDevice()) -> get
 // HD_CURRENT_POSITION, _VELOCITY, _TRANSFORM, _BUTTONS -> set HD_CURRENT_FORCE -> hdEndFrame
 // -> hdGetError. An error sets zero force in one more frame, reports DISCONNECTED for
@@ -36,7 +37,7 @@
 // HD_NOMINAL_MAX_CONTINUOUS_FORCE (unless the options say otherwise) and the total to
 // HD_NOMINAL_MAX_FORCE; a non-finite command becomes zero (and is counted).
 //
-// Calibration: open() runs FACTS §4.7's loop once on HD's thread (check; NEEDS_UPDATE ->
+// Calibration: open() runs the calibration loop of docs/devices/openhaptics.md once on HD's thread (check; NEEDS_UPDATE ->
 // hdUpdateCalibration with the device's preferred style: auto, else inkwell, else encoder
 // reset). While it is not HD_CALIBRATION_OK, DeviceState::ready is false (the servo holds
 // zero force), status() says why ("put the stylus in the inkwell"), and each tick checks
@@ -47,7 +48,7 @@
 // "closed: another OpenHaptics device was opened"). HapticsSystem opens the new device
 // before closing the old one, which this makes work. open() is idempotent.
 //
-// Tested against a fake libHD that follows FACTS §4, not the runtime itself. Only a real
+// Tested against a fake libHD that follows docs/devices/openhaptics.md, not the runtime itself. Only a real
 // Touch/Omni with OpenHaptics can confirm: the axis signs (hd_conversions.h); that an
 // unplug surfaces as HD_COMM_ERROR from the frame (rather than a scheduler stall); that
 // hdCheckCalibration/hdUpdateCalibration are fine outside a frame in a callback (ROS does

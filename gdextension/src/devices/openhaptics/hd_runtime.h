@@ -1,6 +1,7 @@
 #pragma once
 
-// Where the user's OpenHaptics runtime is, the same rule on every platform (FACTS §4.1): the
+// Where the user's OpenHaptics runtime is, the same rule on every platform
+// (docs/devices/openhaptics.md, "Finding the library"): the
 // path in the environment variable HAPTICS_OPENHAPTICS_LIBRARY, then the names its
 // installers create, found by the system's loader (hd_library.h):
 //   Linux    "libHD.so", "libHD.so.3.4", "libHD.so.3.0" (ld.so.cache, LD_LIBRARY_PATH)

@@ -4,7 +4,8 @@ namespace haptics::pid {
 
 namespace {
 
-// AJ src/FFBDescriptor.h pidReportDescriptor, byte for byte (FACTS §1.3); the comments give
+// AJ src/FFBDescriptor.h pidReportDescriptor, byte for byte (docs/devices/hid-pid.md, "AJ's
+// descriptor"); the comments give
 // the offset of each line's first byte.
 // clang-format off
 constexpr uint8_t AJ_PID_DESCRIPTOR[AJ_PID_DESCRIPTOR_SIZE] = {

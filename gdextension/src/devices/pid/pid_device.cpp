@@ -54,7 +54,7 @@ Status PidDevice::open_session() {
 	if (!status) {
 		return status;
 	}
-	// Tolerant: AJ's PID fragment alone closes one collection too many (FACTS §1.3).
+	// Tolerant: AJ's PID fragment alone closes one collection too many (docs/devices/hid-pid.md).
 	hid::ReportDescriptor descriptor;
 	status = hid::ReportDescriptor::parse(bytes, hid::ParseOptions{ false }, descriptor);
 	if (status) {

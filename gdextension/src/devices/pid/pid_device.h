@@ -16,14 +16,14 @@
 // Rate: the device's I/O runs on its own thread (DeviceIoThread + DeviceExchange), never in
 // the servo tick. Default 250 Hz: on hidraw each Output report is one synchronous interrupt
 // OUT transfer, and a full-speed endpoint with bInterval 1 ms drains one report per 1 ms
-// frame (FACTS §1.7: two per 1 ms tick already queue). A cycle sends at most two reports
+// frame (docs/devices/hid-pid.md, "How fast reports drain": two per 1 ms tick already queue). A cycle sends at most two reports
 // (direction + level changed), usually one or none, since only changed quantised values go
 // out, so 4 ms leave the bus half idle for the input reports.
 //
 // Lifecycle: open = descriptor -> layout -> Reset, Reset, Stop All, Enable Actuators, Gain ->
 // create the effect (Block Load) -> Start. The effect is re-started every
 // restart_interval_s so a device that reads our "infinite" duration as finite never drops
-// the force (FACTS §1.9 caveat). io_stop writes level 0 and stops the effect; close frees
+// the force (docs/devices/hid-pid.md, "Infinite duration"). io_stop writes level 0 and stops the effect; close frees
 // it. A failed transfer stops rendering with DISCONNECTED (unplugged) or FAILED and the
 // transport's reason.
 

@@ -1,7 +1,8 @@
 #pragma once
 
 // The report sequences of one constant-force effect over a HidTransport, as the Linux
-// hid-pidff driver orders them (FACTS §1.7), so the bytes match FACTS §1.9:
+// hid-pidff driver orders them (docs/devices/hid-pid.md, "The kernel's report sequences"), so
+// the bytes match its "Expected bytes":
 //
 //   initialize_device: Device Control Reset, Reset (Linux: "sometimes hid_wait_io isn't
 //                      waiting long enough"), Stop All Effects, Enable Actuators; Device Gain.
@@ -13,7 +14,8 @@
 //   stop:    Effect Operation Stop (the loop-count byte keeps its previous value, as Linux).
 //   erase:   stop, then Block Free.
 //
-// The Pool report is never read: AJ's firmware frees every effect when it is (FACTS §1.4).
+// The Pool report is never read: AJ's firmware frees every effect when it is
+// (docs/devices/hid-pid.md, "AJ's firmware behaviour").
 // upload/initialize run at open (feature transfers are slow control transfers); update,
 // play and stop run on the device I/O thread and neither allocate nor build a Status.
 

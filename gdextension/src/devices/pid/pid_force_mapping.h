@@ -5,12 +5,12 @@
 // Linux input units the protocol encodes (direction u16 0..0xFFFF = 0..360°, level s16).
 //
 // The firmwares turn the direction θ into per-axis factors X = sin θ, Y = -cos θ (AJ and OFB,
-// FACTS §1.6), on the stick's own HID axes: X grows to the right, Y toward the user (the
+// docs/devices/hid-pid.md, "Direction"), on the stick's own HID axes: X grows to the right, Y toward the user (the
 // stick pulled back), so "up" in device space is -Y. With
 //   hid_x = F.x, hid_y = -F.y     (then the per-device invert flags)
 //   θ = atan2(hid_x, -hid_y)      i.e. measured clockwise from "up" (pushing the stick away)
 // a force up is θ = 0, right θ = 90° (Linux 0x4000), down 180°, left 270° (0xC000). The
-// physical sign of a firmware's axes needs one check per device family (FACTS §6): the
+// physical sign of a firmware's axes needs one check per device family (docs/devices/sources.md): the
 // invert flags are for that.
 //
 // Level: |F| / max_force_n at full scale (0x7FFF = the descriptor's magnitude maximum); the

@@ -15,7 +15,8 @@ using hid::Report;
 using hid::ReportDescriptor;
 using hid::ReportType;
 
-// The report usages the kernel classifies by (pidff_reports, FACTS §1.1), in its order.
+// The report usages the kernel classifies by (pidff_reports, docs/devices/hid-pid.md, "Usages"),
+// in its order.
 constexpr std::array<uint16_t, 13> REPORT_USAGES = {
 	SET_EFFECT_REPORT,
 	EFFECT_OPERATION_REPORT,
@@ -324,7 +325,7 @@ Status PidLayout::build(hid::ReportDescriptor &&p_descriptor, PidLayout &r_layou
 		return status;
 	}
 	// AJ's firmware ends an effect at its duration unless it is 0x7FFF, its logical maximum
-	// (FACTS §1.9 caveat); its descriptor is recognisable: no Start Delay, 16-bit duration
+	// (docs/devices/hid-pid.md, "Infinite duration"); its descriptor is recognisable: no Start Delay, 16-bit duration
 	// 0..0x7FFF. Elsewhere write what Linux writes, all ones. PidEffect also restarts the
 	// effect periodically, so a wrong guess cannot end the force.
 	const hid::Field &duration = r_layout.field(r_layout.set_effect.duration);

@@ -1,7 +1,8 @@
 #pragma once
 
 // Where the PID reports and fields a constant-force effect needs live in one device's
-// report descriptor, found by usage with the Linux hid-pidff rules (FACTS §1.2), so any
+// report descriptor, found by usage with the Linux hid-pidff rules (docs/devices/hid-pid.md,
+// "How the kernel finds reports and fields"), so any
 // conforming firmware works without a hard-coded byte layout:
 //  - a report is classified by its first field's Logical-collection usage, else by the
 //    parent Logical collection's; Output reports first, then Feature (which win);
@@ -35,7 +36,7 @@ enum PidQuirk : uint32_t {
 	QUIRK_AJ_FIRMWARE = 1u << 17, // Looks like AJ's descriptor (infinite = 0x7FFF).
 };
 
-// What "infinite duration" is written as (FACTS §1.9 caveat). Linux writes all ones,
+// What "infinite duration" is written as (docs/devices/hid-pid.md, "Infinite duration"). Linux writes all ones,
 // (1 << size) - 1; AJ's firmware only treats its logical maximum 0x7FFF as infinite.
 enum class InfiniteDuration : uint8_t {
 	ALL_ONES = 0,

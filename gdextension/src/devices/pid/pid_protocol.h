@@ -1,7 +1,8 @@
 #pragma once
 
 // PID report encoding and decoding, pure bytes (no I/O), byte-exact with what the Linux
-// hid-pidff driver writes for the same request (FACTS §1.6, §1.7, §1.9), so a device that
+// hid-pidff driver writes for the same request (docs/devices/hid-pid.md: "Value scaling", "The
+// kernel's report sequences", "Expected bytes"), so a device that
 // works under Linux sees the same reports from us.
 //
 // Inputs use the Linux input units: direction u16 0..0xFFFF for 0..360° (0x4000 = 90°),

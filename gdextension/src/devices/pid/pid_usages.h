@@ -1,7 +1,7 @@
 #pragma once
 
 // Usage IDs of the Physical Interface Device page (0x0F) that the layout finder and the
-// scripted firmware use (FACTS §1.1; kernel tables [K-old, K-new]).
+// scripted firmware use (docs/devices/hid-pid.md, "Usages"; kernel tables [K-old, K-new]).
 
 #include "devices/device_catalog.h"
 #include "devices/hid/report_descriptor.h"
