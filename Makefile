@@ -148,9 +148,8 @@ test-export-server: export-server
 ## test-bare: the exported game (headless, autopilot) and dedicated server in minimal Debian 12
 ## and 11 roots without any graphics package (debootstrap, built once into .bare/), run as an
 ## ordinary user: they start and exit 0 without an error line; on Debian 11 a windowed start
-## is stopped by the launcher naming the system's glibc (tools/bare/test-bare.sh).
-## Here: cold, the two roots take 87 + 94 s to download and build (127 + 136 MB, the packages
-## kept in .bare/cache) and the runs 14 s; warm, 14 s (plus the exports, about 1 min).
+## is stopped by the launcher naming the system's glibc (tools/bare/test-bare.sh). The first
+## run downloads and builds the roots (minutes; docs/supported-systems.md), later runs reuse them.
 test-bare: export export-server
 	@tools/bare/test-bare.sh
 

@@ -89,8 +89,8 @@ func wait_for_audio_mixes(count: int, limit_s: float) -> bool:
 
 func _quit_tree(exit_code: int) -> void:
 	# Debian's release template of Godot 4.6 fails two of the engine's own disconnects for every
-	# container child that leaves, and the whole tree leaves at exit: 150 lines of "Attempt to
-	# disconnect a nonexistent connection ... callable: ''" after an autopilot run, none of
+	# container child that leaves, and the whole tree leaves at exit: a screenful of "Attempt
+	# to disconnect a nonexistent connection ... callable: ''" after an autopilot run, none of
 	# them ours (tools/bare/repro-disconnect.sh shows it with one script and no addon). A
 	# release build says nothing more once its own exit work is done; debug builds (the tests,
 	# the editor, the dedicated server) still print everything.

@@ -28,8 +28,8 @@ NETWORKS = {
 # ends, the relay's timers and the wall-clock alignment on a loaded machine.
 LAN_DIVERGENCE_P99_M = 0.3
 # Four peers share this machine's two cores: a follower may wait a time slice (~30 ms) for
-# a core before it renders its ball, while the master's flies on (measured LAN p99 0.17 m
-# on a quiet machine, 0.32 m with a build running beside it).
+# a core before it renders its ball, while the master's flies on (what the LAN p99 measured
+# on a quiet and a busy machine: docs/pong-networking.md).
 FOUR_PLAYER_MARGIN_M = 2.0 * 9.0 * 0.03
 MAX_BALL_SPEED_M_PER_S = 9.0
 DIVERGENCE_P99_M = {
@@ -89,8 +89,9 @@ def _check_consistent(peers: list[Peer], network: Network, min_handoffs: int = 3
     # buffer meets: processes on two cores that send in bursts after each wait for a core,
     # and a server that relays once per frame. A hosted pair keeps 0.6 of what survives the
     # loss. Between two clients (four players, a dedicated server) a state crosses two legs,
-    # and four peers on two cores burst the most: a quiet CI run's host took 31 % of what
-    # three client masters sent at 150 ms with the ordered channel, hence 0.2 for them.
+    # and four peers on two cores burst the most: a quiet CI run's host took about a third of
+    # what three client masters sent at 150 ms with the ordered channel, hence 0.2 for them
+    # (docs/pong-networking.md, "Floors the tests hold").
     # With two players on a player's host (a core each) the master streams at 60 Hz or more.
     players = len([r for r in reports if r["seat"] >= 0])
     hosted_pair = players == 2 and len(reports) == 2

@@ -26,8 +26,8 @@ NOTICE_BOUND_S = 3.0
 # How long the measured match runs, s. The share a follower uses is set by the play as
 # much as by the path: each change of course the follower's predictor does not foresee (a
 # strike, a bounce with spin) gives up the gaps before it, and the states still on their
-# way then arrive late. A 24 s match measured 89.9-97.8 % over a dozen runs (37 gaps given
-# up in the lowest); twice as long halves the variance around the same share.
+# way then arrive late. A shorter match spread widely around the bound over a dozen runs
+# (docs/pong-networking.md); twice as long halves the variance around the same share.
 MATCH_S = 48
 # At 60 Hz or more over that match a follower is sent well over a thousand states: a few
 # hundred that reached it is a match that ran.

@@ -9,8 +9,8 @@
 #  - Debian 11: the headless game runs too; a windowed start stops at once with the launcher's
 #    message naming the system's glibc as the cause (its graphics driver cannot load beside
 #    the shipped C library), not the engine's message box about the video driver.
-# Needs root (debootstrap, chroot, namespaces). Measured here: cold (both roots downloaded
-# and built, 87 + 94 s) about 3 min 15 s; warm 14 s.
+# Needs root (debootstrap, chroot, namespaces). The first run builds both roots (minutes),
+# later runs reuse them (timings: docs/supported-systems.md).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 game_build=.export/linux
@@ -20,7 +20,7 @@ for build in $game_build/haptic-game $server_build/haptic-pong-server; do
 done
 [[ $(id -u) -eq 0 ]] || { echo "test-bare: needs root (debootstrap, chroot, namespaces)" >&2; exit 1; }
 gpu_driver=$(<tools/dist/gpu-driver-sonames.regex)
-# Each run's bound, wall seconds (a headless run here takes 3-6 s).
+# Each run's bound, wall seconds (far above a headless run's few seconds).
 run_seconds=120
 
 pid=""

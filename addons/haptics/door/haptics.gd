@@ -42,7 +42,7 @@ const SETTING_FEED_ACTIONS := "haptics/input/feed_actions"
 ## The project setting for the servo's busy-wait before each deadline, in microseconds
 ## (HapticsServer.start's [code]spin_us[/code]: 0 to half a period, or -1, the default: the
 ## servo's own, HapticsServer.DEFAULT_SPIN_US under real time and none without). More spin,
-## steadier ticks, more of a core; the README's "Servo timing" has the measurements.
+## steadier ticks, more of a core; docs/servo-timing.md has the measurements.
 const SETTING_SPIN_US := "haptics/servo/spin_us"
 ## The hand's actions when the project names none: Godot's own, which every project has
 ## (arrow keys and a gamepad's d-pad).

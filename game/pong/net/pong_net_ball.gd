@@ -78,7 +78,7 @@ static func clock_s() -> float:
 
 ## A paddle this peer drives touched the ball at [param now_s] ([method clock_s]). Not a
 ## remote paddle's touch here: its pose arrives a path late, and trusting it as a predicted
-## hit made the divergence worse (issue 24, 200 +- 60 ms: p99 2.2 m against 1.7 m).
+## hit made the divergence worse (issue 24's path: docs/pong-networking.md).
 func touched(now_s: float) -> void:
 	_touched_at = now_s
 

@@ -15,9 +15,8 @@ const DEFAULT_PORT: int = 7420
 ## 4.6 admits a client once each side has sent the other its "auth complete" on channel 0,
 ## and drops (with an engine error) anything else the client sends before its own "complete"
 ## has arrived: when that packet was lost and ENet was resending it, a hello on another
-## channel overtook it and was thrown away, and the client never joined (a CI run, and one
-## run in three of four peers at 150 ms and 5 % loss here). On channel 0 ENet delivers it
-## after the "complete".
+## channel overtook it and was thrown away, and the client never joined (seen in CI and on
+## lossy paths: docs/pong-networking.md). On channel 0 ENet delivers it after the "complete".
 const CHANNEL_HANDSHAKE: int = 0
 ## The ball stream: unreliable and unordered (ENet's unsequenced), so a state that arrives
 ## after a newer one still reaches the follower's jitter buffer ([PongNetBallBuffer]); on an
@@ -67,11 +66,10 @@ const FLOOR_TOLERANCE_M: float = 0.01
 ## with four (a limit of 8) a 5 %-loss path (each try fails about 10 % of the time, one leg
 ## or the other) lost one packet in ten thousand and a lossy match now and then ended live;
 ## with five it is one in 100 000. The limit (ENet's default 32) would allow six, so the cap
-## decides: 16 RTOs is past the fourth timeout (15) and before the fifth (31). A cap of
-## 1.5 s plus 20 ms per ms of round trip let a LAN (RTO about 36 ms) wait for the sixth
-## timeout: 2.6 s to notice a killed peer. Game-time values: the cap also bounds how long a
-## frame may stall (the longest frame of a four-peer match on two cores: 170 ms), hence the
-## floor.
+## decides: 16 RTOs is past the fourth timeout (15) and before the fifth (31). A cap growing
+## with the round trip in milliseconds instead let a LAN wait for the sixth timeout
+## (docs/pong-networking.md). Game-time values: the cap also bounds how long a frame may
+## stall (the longest frame of a four-peer match on two cores), hence the floor.
 const TIMEOUT_LIMIT: int = 32
 const TIMEOUT_MIN_MS: int = 500
 ## The cap in retransmission timeouts, its floor and ceiling, ms.
@@ -85,41 +83,40 @@ const CONNECT_TIMEOUT_MIN_MS: int = 500
 const CONNECT_TIMEOUT_MAX_MS: int = 3000
 ## ENet's packet throttle drops unreliable packets at the sender whenever a round trip
 ## comes in above the last one by twice its variance, which a jittery path does all the
-## time: the ball and pose streams (a few kB/s) lost a third or more of their states to it
-## with 10 ms of jitter. A deceleration of 0 keeps the throttle open; reliable traffic is
+## time: the ball and pose streams (a few kB/s) lost much of their states to it with a little
+## jitter (docs/pong-networking.md). A deceleration of 0 keeps the throttle open; reliable traffic is
 ## not throttled either way (ENet's defaults: 5000 ms, 2, 2).
 const THROTTLE_INTERVAL_MS: int = 5000
 const THROTTLE_ACCELERATION: int = 2
 const THROTTLE_DECELERATION: int = 0
 ## Seconds a connected peer has to pass the version check. The exchange starts from ENet's
 ## guess of a 500 ms round trip and doubles its wait after each lost try, so on a slow lossy
-## path it takes several seconds: Godot's default of 3 s refused 3 connections in 4 at
-## 150 ms and 25 % loss here, and two in a CI run at 5 %. It only bounds how long a silent
-## peer holds a slot.
+## path it takes several seconds: Godot's default of 3 s refused most connections on a slow,
+## lossy path (docs/pong-networking.md). It only bounds how long a silent peer holds a slot.
 const AUTH_TIMEOUT_S: float = 15.0
 ## Seconds a peer we count as connected has for its first beat. Each side of the handshake
 ## ends when the other's last message arrives, a reliable packet ENet resends with doubling
-## waits, so the two sides may count each other connected far apart: at 150 ms and 25 %
-## loss a host dropped a client 1.25 s after it joined, the client still awaiting the host's
-## message, unable to beat. Until a first beat the handshake's bound holds.
+## waits, so the two sides may count each other connected far apart: on a slow lossy path a
+## host dropped a client soon after it joined, the client still awaiting the host's message,
+## unable to beat. Until a first beat the handshake's bound holds.
 const FIRST_BEAT_TIMEOUT_S: float = AUTH_TIMEOUT_S
 
 ## The heartbeat: every connected pair sends each other a one-byte raw packet this often, and
 ## drops the other when nothing has come from it for [method heartbeat_timeout_s]. It does
 ## not wait for ENet, which notices a dead peer only when a reliable packet goes unanswered
 ## for its whole retransmission schedule (a client killed with nothing reliable in flight
-## went unnoticed for 14.7 s, a dead server for 8.5 to 9.8 s).
+## went unnoticed for many seconds: docs/pong-networking.md).
 const HEARTBEAT_HZ: float = 5.0
 ## Beats in a row a live peer may lose before it is dropped (5 % loss per leg: four in a
 ## row once in 160 000 windows).
 const HEARTBEAT_MISSES: int = 4
 ## Bounds of the silence that drops a peer, seconds. The floor covers the longest frame of a
-## four-peer match on two cores (170 ms) several times over; the ceiling is the promise.
+## four-peer match on two cores several times over; the ceiling is the promise.
 const HEARTBEAT_TIMEOUT_MIN_S: float = 1.0
 const HEARTBEAT_TIMEOUT_MAX_S: float = 3.0
 ## Raw packets (SceneMultiplayer.send_bytes) start with their kind: a heartbeat, the reason
 ## the server refuses a client (UTF-8 after the kind byte), or a peer's word that it is
-## about to stall (it loads a match's court: 1.3 to 1.7 s of silence with four peers on two
+## about to stall (it loads a match's court: over a second of silence with four peers on two
 ## busy cores), sent reliably on the heartbeat's channel, after which its silence may last
 ## the ceiling until its next beat.
 const PACKET_BEAT: int = 1
@@ -133,8 +130,8 @@ const MAX_REFUSAL_BYTES: int = 200
 ## to a script (ENetConnection.get_peers() lists a peer only once it has connected), so
 ## slots are what a flood of crafted CONNECTs uses up: six slots let 12 datagrams lock the
 ## players out for 30 s. With 1024 a flood must keep up 34 datagrams a second. An empty slot
-## costs a few hundred bytes and next to nothing per frame (an idle server polling at 1 kHz
-## here: 5 % of a core with 6 slots, 6 % with 512, 7 % with 4095).
+## costs a few hundred bytes and next to nothing per frame (docs/pong-networking.md, "The
+## lobby").
 const ENET_SLOTS: int = 1024
 ## Connections from one address that have connected at ENet's level but not passed the
 ## version check: more are not taken (the oldest is dropped), so one address cannot hold

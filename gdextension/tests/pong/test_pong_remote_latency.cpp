@@ -131,13 +131,13 @@ TEST_CASE("pong remote latency: two hands under each other's mine across 100 and
 			// The observer books the work each held force really did; the controller limits the
 			// next force by its work at the present velocity, and the hand's own acceleration
 			// within the tick makes the real work a little larger each time the controller acts,
-			// so E dips below zero (measured: -18.4 mJ at 100 ms, -10.1 mJ at 200 ms, about two
-			// allowances at most), and the loop still loses its energy (below).
+			// so E dips below zero (by up to about two allowances: docs/renderers.md), and the
+			// loop still loses its energy (below).
 			CHECK(r.min_observer_j >= -3.0 * remote_allowance(config));
 			// On its own the loop gains at most what the observers still allowed, within 5 %:
 			// this measure counts a hand's motion twice for a moment (its kinetic energy, and
 			// the stretch it gives the other hand's spring a delay later), which the observers,
-			// each watching its own hand, rightly do not. Measured: at most +0.9 %.
+			// each watching its own hand, rightly do not (the measured excess: docs/renderers.md).
 			CHECK(r.peak_after_stop_j <= 1.05 * r.energy_at_stop_j + std::max(r.budget_at_stop_j, 0.0));
 			// ...and it decays: below 10 % of the energy at the stop within the 8 s.
 			CHECK(r.energy_at_stop_j > 1e-4); // The push did put energy in.
@@ -201,7 +201,7 @@ TEST_CASE("pong remote latency: a victim follows an owner 200 ms late, and settl
 	MESSAGE("one way 200 ms: energy at the stop " << energy_at_stop * 1e3 << " mJ, peak after the last sample "
 												  << peak_after * 1e3 << " mJ, at the end " << energy_end * 1e3
 												  << " mJ, observer min " << min_observer * 1e3 << " mJ");
-	// Measured -0.64 mJ (the in-tick acceleration, as above).
+	// Slightly below zero from the in-tick acceleration, as above (docs/renderers.md).
 	CHECK(min_observer >= -0.1 * remote_allowance(config));
 	CHECK(energy_end < 0.2 * std::max(peak_after, 1e-6));
 	// The victim ends where the owner's mirrored stylus stopped (within the spring's pull of

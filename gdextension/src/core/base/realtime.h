@@ -8,7 +8,7 @@
 // (the drift a relative sleep_for accumulates).
 //
 // What a real-time thread can ask of Linux, each technique measured against cyclictest in the
-// same run (haptics_rt_bench; README, "Servo timing") and each falling back quietly where it
+// same run (haptics_rt_bench; docs/servo-timing.md) and each falling back quietly where it
 // is not permitted: a SCHED_FIFO priority, locked memory (mlockall), the CPU's wake-up latency
 // held at 0 (/dev/cpu_dma_latency, which keeps idle cores out of deep sleep states), pinning
 // to one CPU, a prefaulted stack, and, when SCHED_FIFO is refused, the smallest timer slack.
@@ -100,21 +100,20 @@ void release_cpu_latency_hold();
 
 // What the servo thread asks for. The defaults are the servo's (ServoOptions), each chosen by
 // measuring it on its own against cyclictest in the same run, idle, under CPU load and under
-// rendering load (haptics_rt_bench --techniques; README, "Servo timing"). On a 2-core VM:
-//   - SCHED_FIFO 80 rather than 50: p99 / p99.9 wake latency 73.5 / 150 us against 85.5 / 254
-//     under rendering load (the game's own servo and audio compete), the same elsewhere: on.
-//   - mlockall: p99.9 worse in every condition (2.6-2.8 ms against 0.25-0.39), and it locks the
-//     whole game: off.
-//   - cpu_dma_latency 0: within the noise while the host was quiet (idle p99 97 against 110
-//     us), but the one technique that held the servo near cyclictest once the host got busy
-//     (a headless game running beside it: p99 267 against 4114 us, cyclictest 137): an idle
-//     vCPU that halts waits for the host to run it again; one that polls does not. On, at the
-//     cost of idle cores polling while the servo runs (cyclictest holds it too).
-//   - pinning: p99 124 against 78 us under CPU load (a pinned thread cannot leave a busy core):
-//     off.
+// rendering load (haptics_rt_bench --techniques; the figures: docs/servo-timing.md, "The
+// techniques and their defaults"):
+//   - SCHED_FIFO 80 rather than 50: better under rendering load (the game's own servo and
+//     audio compete), the same elsewhere: on.
+//   - mlockall: p99.9 worse in every condition, and it locks the whole game: off.
+//   - cpu_dma_latency 0: within the noise while the host was quiet, but the one technique
+//     that held the servo near cyclictest once the host got busy (a headless game running
+//     beside it): an idle vCPU that halts waits for the host to run it again; one that polls
+//     does not. On, at the cost of idle cores polling while the servo runs (cyclictest holds
+//     it too).
+//   - pinning: worse under CPU load (a pinned thread cannot leave a busy core): off.
 //   - stack prefault: no difference beyond the noise: off (available).
-//   - timer slack 1 ns under SCHED_OTHER: p50 wake latency 52 against 98 us idle, 29 against
-//     87 under CPU load: on (it only applies where SCHED_FIFO is refused).
+//   - timer slack 1 ns under SCHED_OTHER: about half the median wake latency: on (it only
+//     applies where SCHED_FIFO is refused).
 // As an ordinary user (haptics_rt_bench --user nobody --user-techniques, the user's rows
 // beside root's in the same rounds): SCHED_FIFO, mlockall and cpu_dma_latency need root (or
 // CAP_SYS_NICE / an rtprio limit, CAP_IPC_LOCK / an unlimited memlock limit, write access to

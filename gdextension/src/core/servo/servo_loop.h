@@ -52,16 +52,14 @@ struct ServoOptions {
 	RealtimeRequest realtime; // What the thread asks of the system (defaults: realtime.h).
 	// Busy-wait before each deadline (DEADLINE scheduling only); 0 = sleep to the deadline.
 	// [0, half a period], or SPIN_AUTO, chosen by what the thread was granted, each by
-	// measurement (README, "Servo timing"):
-	//   - real time with /dev/cpu_dma_latency held (root): DEFAULT_SPIN_NS. p99 wake latency
-	//     95 / 52 / 50 us idle / under CPU / under rendering load against 86-119 / 96-107 /
-	//     80-83 without, for about 1 % of a core.
+	// measurement (docs/servo-timing.md):
+	//   - real time with /dev/cpu_dma_latency held (root): DEFAULT_SPIN_NS, a lower p99 wake
+	//     latency idle, under CPU and under rendering load for about 1 % of a core.
 	//   - real time without the hold (an ordinary user's SCHED_RR from RealtimeKit):
 	//     UNHELD_SPIN_NS. An idle core may sleep deeper and wake later; the longer spin
-	//     absorbs it: p99 0.5 us idle in two runs against 7.5-18.5 at 50 us, for 9-10 % of a
-	//     core instead of 4-5 %.
+	//     absorbs it, for about twice the CPU of the shorter one.
 	//   - SCHED_OTHER: none. A thread that is not real-time is preempted mid-spin by the
-	//     load it competes with: p99 178 and 351 us under CPU load against 28 without.
+	//     load it competes with, which made its p99 under CPU load several times worse.
 	int64_t spin_ns = SPIN_AUTO;
 
 	static constexpr int64_t SPIN_AUTO = -1;

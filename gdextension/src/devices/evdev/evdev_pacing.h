@@ -6,8 +6,8 @@
 // drops the report with "output queue full" in the kernel log and nothing to the caller.
 // hid-pidff then believes the device holds the new force: it does not send an unchanged
 // effect again, so a dropped update can leave the device holding a stale force for good
-// (measured on Linux 6.1 in the VM tests: 9 of 541 reports dropped in 1 s of 1 kHz servo
-// updates at our former 500 Hz). So updates are paced to what the endpoint drains: an update
+// (seen on Linux 6.1 in the VM tests at our former 500 Hz update rate: docs/linux-kernel.md,
+// "Driver facts"). So updates are paced to what the endpoint drains: an update
 // that changes the direction costs hid-pidff two reports (Set Effect, Set Constant Force), a
 // level alone one, and the next waits that many intervals, with a margin.
 

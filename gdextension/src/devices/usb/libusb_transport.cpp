@@ -312,8 +312,8 @@ UsbResult LibusbTransport::explain(UsbResult p_result) {
 		return p_result;
 	}
 	// A transfer the unplug cut short fails with LIBUSB_ERROR_IO (the URB's -EPROTO or
-	// -ESHUTDOWN), and the kernel notices the device has gone a few ms later (measured on
-	// Linux 6.1 with dummy_hcd): ask the device until it answers or is known gone.
+	// -ESHUTDOWN), and the kernel notices the device has gone a few ms later (seen on Linux
+	// 6.1 with dummy_hcd: docs/linux-kernel.md): ask the device until it answers or is known gone.
 	for (int attempt = 0; attempt < PRESENCE_ATTEMPTS; ++attempt) {
 		uint8_t status[2] = {};
 		const int done = libusb_control_transfer(handle_, LIBUSB_ENDPOINT_IN, LIBUSB_REQUEST_GET_STATUS, 0, 0, status,

@@ -34,12 +34,12 @@
 //     alpha = (F . v dt - max(E, 0)) / (|v|^2 dt), then F' is capped again. Booking F . v dt
 //     instead (the velocity of the tick before) was fooled on the simulated device: the held
 //     force and the stylus's resonance on the hand beat against the one-tick lag, and the
-//     stylus took 3.6 E_0 while the observer saw less than E_0 (test_pong_remote_latency.cpp).
+//     stylus took several times what the observer saw (test_pong_remote_latency.cpp).
 //     With the real work booked, the coupling delivers E_0 net plus what the stylus's motion
-//     within a tick adds to the controller's prediction: +0.4 % with the simulated device
-//     alone (the doctest), about E_0 more in the whole servo at 200 ms round trip against a
-//     swinging owner (tests/net/test_net_weapons.py: 19 mJ, 115 mJ without the rule). Closing
-//     that gap needs a prediction of the tick's displacement (a model of the device and the
+//     within a tick adds to the controller's prediction: a fraction of a per cent with the
+//     simulated device alone (the doctest), about E_0 more in the whole servo at 200 ms
+//     round trip against a swinging owner (tests/net/test_net_weapons.py); the figures are in
+//     docs/renderers.md. Closing that gap needs a prediction of the tick's displacement (a model of the device and the
 //     hand), which this rule does not have.
 // Why this and not wave variables: the owner feels no force (the paper's mine is one-way),
 // so there is no returning wave to carry, and the remote samples already carry what the
