@@ -84,8 +84,8 @@ const CONNECT_TIMEOUT_MAX_MS: int = 3000
 ## ENet's packet throttle drops unreliable packets at the sender whenever a round trip
 ## comes in above the last one by twice its variance, which a jittery path does all the
 ## time: the ball and pose streams (a few kB/s) lost much of their states to it with a little
-## jitter (docs/pong-networking.md). A deceleration of 0 keeps the throttle open; reliable traffic is
-## not throttled either way (ENet's defaults: 5000 ms, 2, 2).
+## jitter (docs/pong-networking.md). A deceleration of 0 keeps the throttle open; reliable
+## traffic is not throttled either way (ENet's defaults: 5000 ms, 2, 2).
 const THROTTLE_INTERVAL_MS: int = 5000
 const THROTTLE_ACCELERATION: int = 2
 const THROTTLE_DECELERATION: int = 0
