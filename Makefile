@@ -52,7 +52,7 @@ build-release: engine
 	@cmake --build $(BUILD)/release -j $(JOBS) --target haptics
 
 ## import: let the engine import the project (the extension is listed first: a fresh import
-## that registers a class otherwise crashes, Godot #111048; README, Troubleshooting)
+## that registers a class otherwise crashes, Godot #111048; docs/troubleshooting.md)
 import: build
 	@mkdir -p .godot
 	@echo "res://addons/haptics/haptics.gdextension" > .godot/extension_list.cfg

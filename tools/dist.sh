@@ -2,7 +2,7 @@
 # Packs the self-contained Linux build (.export/linux/, make export) into
 # .export/haptic-game-linux-x86_64.tar.gz, one folder haptic-game/ holding the build, the
 # player README (tools/dist/README.player.md, completed from the project's own sources: the
-# controls from the input map, the devices table and the udev commands from README.md, the
+# controls from the input map, the devices table and the udev commands from docs/devices.md, the
 # glibc version from the shipped one) and the udev rules. Prints the archive's size.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -21,12 +21,12 @@ cp tools/udev/70-haptics.rules "$top/"
 tools/godot --headless --path . -s tools/dist/controls.gd >"$stage/controls.log" 2>&1 ||
   { tail -n 20 "$stage/controls.log"; die "the controls could not be read from the input map"; }
 controls=$(sed -n '/^### /,$p' "$stage/controls.log")
-devices=$(sed -n '/^| Device | Driver |/,/^$/p' README.md)
-udev=$(awk '/^\*\*Permissions\.\*\*/ { on = 1 } on && /^```/ { print; if (++fences == 2) exit; next }
-  fences == 1 { print }' README.md | sed 's,tools/udev/,,')
+devices=$(sed -n '/^| Device | Driver |/,/^$/p' docs/devices.md)
+udev=$(awk '/^## Permissions/ { on = 1 } on && /^```/ { print; if (++fences == 2) exit; next }
+  fences == 1 { print }' docs/devices.md | sed 's,tools/udev/,,')
 glibc=$(readelf -V "$build/runtime/lib/libc.so.6" | grep -oE "GLIBC_[0-9.]+" | sort -uV | tail -n 1)
 [[ -n $controls && -n $devices && $udev == *70-haptics.rules* && -n $glibc ]] ||
-  die "README.md no longer has what the player README takes from it"
+  die "docs/devices.md no longer has what the player README takes from it"
 # Whole-line placeholders take a block; @GLIBC@ is replaced within lines.
 controls=$controls devices=$devices udev=$udev glibc=${glibc#GLIBC_} awk '
   $0 == "@CONTROLS@" { print ENVIRON["controls"]; next }

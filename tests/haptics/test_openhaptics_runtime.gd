@@ -4,7 +4,7 @@ extends TestSuite
 ## fake libHD (docs/devices/openhaptics.md's API over a scripted Touch-like device), so the
 ## listing, the real
 ## dlopen, HD's scheduler callback and the servo run end to end. Only a real Touch with
-## 3D Systems' runtime confirms the device side (README, Devices).
+## 3D Systems' runtime confirms the device side (docs/devices/openhaptics.md).
 
 const VARIABLE := "HAPTICS_OPENHAPTICS_LIBRARY"
 const DEVICE_ID := "openhaptics:default"

@@ -26,7 +26,7 @@ from guard_harness import (CONNECT_BYTES, HIT_MARK, ROGUE_SCENE, LogWatch, check
 from net_harness import (ROUGH, START_PATIENCE_S, Network, Peer, Relay, check_health, detection_s,
                          engine_errors, free_udp_port, killer, logs, run_match, workspace)
 
-# The promise (README, "Networked Pong"): a dead peer is noticed within this, on any path.
+# The promise (docs/pong-networking.md): a dead peer is noticed within this, on any path.
 NOTICE_BOUND_S = 3.0
 # A connection to a live server completes in a few round trips; ENet's connect gives up after
 # 3 s (PongNetProtocol.CONNECT_TIMEOUT_MAX_MS), so a player locked out fails instead.

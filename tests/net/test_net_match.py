@@ -1,7 +1,7 @@
 """Networked Haptic Battle Pong, real processes on 127.0.0.1: headless Godot peers under the
 computer player play through tools/net/udp_relay.py (latency, jitter that reorders, loss).
 
-Stated bounds (README, "Networked Pong"): the ball's divergence between a follower and the
+Stated bounds (docs/pong-networking.md): the ball's divergence between a follower and the
 master, p99, lined up on this machine's wall clock, stays under DIVERGENCE_P99_M for each
 network; two peers never believe they are master at once for longer than one round trip
 (by design they never do: the server sequences every transfer); a SIGKILLed peer is noticed
