@@ -25,8 +25,8 @@ extends Node
 ## Exit codes: 0 done, 2 connection failed or refused, 3 no Pong renderer.
 
 ## Headless peers sleep this long per frame during a match (docs/networking.md, "Frame
-## pacing of headless peers": the default 6900 us makes every message wait up to a frame, and a stepped peer steps its servo once a
-## frame).
+## pacing of headless peers": the default 6900 us makes every message wait up to a frame,
+## and a stepped peer steps its servo once a frame).
 const MATCH_SLEEP_USEC: int = 1000
 ## And this long between matches: a lobby message may wait 10 ms, and a server waiting for
 ## players runs 100 frames a second instead of 1000.
