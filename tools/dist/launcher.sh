@@ -58,7 +58,7 @@ libs="$runtime/lib"
 # The GPU driver's libraries that the engine links at load time (libgbm, through SDL) are
 # the system's; on a system without them (a server, a container) the shipped copies in
 # runtime/lib-fallback stand in. The bundled loader's listing resolves them exactly as the
-# start will, and fails when one is missing (about 30 ms).
+# start will, and fails when one is missing (cheap: docs/supported-systems.md).
 if [ -d "$runtime/lib-fallback" ] &&
 	! "$runtime/$name.loader" --library-path "$libs" --list "$runtime/$name.x86_64" >/dev/null 2>&1; then
 	libs="$libs:$runtime/lib-fallback"
