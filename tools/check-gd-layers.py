@@ -42,6 +42,7 @@ FLOORS = [
     ["study/trials"],
     ["study/session"],
     # Haptic Battle Pong: the match, its 3D view, its screens, then the network game.
+    ["pong/servo"],
     ["pong"],
     ["pong/view"],
     ["pong/ui"],

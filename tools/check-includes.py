@@ -20,12 +20,13 @@ from pathlib import Path
 CORE = ["src/core"]
 LAYERS = {
     "src/core/base": [],
-    "src/core/config": ["src/core/base"],
-    "src/core/device": ["src/core/base"],
-    "src/core/render": ["src/core/base", "src/core/config", "src/core/device"],
-    "src/core/servo": ["src/core/base", "src/core/config", "src/core/device", "src/core/render"],
+    "src/core/wire": ["src/core/base"],
+    "src/core/config": ["src/core/base", "src/core/wire"],
+    "src/core/device": ["src/core/base", "src/core/wire"],
+    "src/core/render": ["src/core/base", "src/core/wire", "src/core/config", "src/core/device"],
+    "src/core/servo": ["src/core/base", "src/core/wire", "src/core/config", "src/core/device", "src/core/render"],
     "src/renderers/*": CORE,
-    "src/devices": ["src/core/base", "src/core/device"],
+    "src/devices": ["src/core/base", "src/core/wire", "src/core/device"],
     "src/storage": ["src/core/base"],
     "src/system": CORE + ["src/renderers", "src/devices"],
     "src/dev_tools": CORE + ["src/devices", "src/system"],

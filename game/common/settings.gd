@@ -146,15 +146,15 @@ func save_settings() -> Error:
 func apply() -> void:
 	if not Haptics.is_available() or Haptics.device.get_id() == device_id:
 		return
-	var listed: Dictionary = _listed(device_id)
-	if listed.is_empty():
+	var listed: HapticDeviceInfo = _listed(device_id)
+	if listed == null:
 		_warn("Haptic device '%s' is gone: using the simulated device." % device_id)
 		_open_simulated()
-	elif listed.get("openable", true) != true:
+	elif not listed.openable:
 		_warn(
 			(
 				"Haptic device '%s' cannot be opened: %s. Using the simulated device."
-				% [device_id, listed.get("unavailable_reason", "")]
+				% [device_id, listed.unavailable_reason]
 			)
 		)
 		_open_simulated()
@@ -178,11 +178,11 @@ func _open_simulated() -> void:
 		Haptics.device.open(simulated)
 
 
-func _listed(id: String) -> Dictionary:
-	for device: Dictionary in Haptics.device.list_present():
-		if str(device.get("id", "")) == id:
+func _listed(id: String) -> HapticDeviceInfo:
+	for device: HapticDeviceInfo in Haptics.device.list_present():
+		if device.id == id:
 			return device
-	return {}
+	return null
 
 
 func _warn(message: String) -> void:

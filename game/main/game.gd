@@ -116,7 +116,7 @@ func status_line() -> String:
 	var rate: float = Haptics.servo.get_rate_hz()
 	var servo: String = "%d Hz" % roundi(rate) if rate > 0.0 else "off"
 	var input: Vector2 = player.input_vector
-	var force: Vector2 = Haptics.force_of(Haptics.get_forces(), "total")
+	var force: Vector2 = Haptics.get_forces().total
 	return (
 		"t=%4.1fs servo=%s input=(%+.2f, %+.2f) force=(%+.2f, %+.2f) N |F|=%.2f N contacts=%d"
 		% [

@@ -122,17 +122,14 @@ func get_plan() -> Contact:
 	return _plan
 
 
-func update(
-	now: float, dt: float, snapshot: HapticPongState, opponent_avatar: Vector3
-) -> PongIntent:
+func update(now: float, dt: float, snapshot: PongState, opponent_avatar: Vector3) -> PongIntent:
 	return decide(now, dt, snapshot.ball_position, snapshot.ball_velocity, opponent_avatar)
 
 
 ## The ball leaving its paddle ends the swing (the paddle keeps moving through the
 ## contact, which lasts tens of milliseconds).
-func notice(event: Dictionary, now: float) -> void:
-	var who: int = event.get("player", -1)
-	if str(event.get("type", "")) == "release" and who == player:
+func notice(event: PongEvent, now: float) -> void:
+	if event.type == PongServoFacts.PongEventType.RELEASE and event.player == player:
 		_resting_until = now + 0.25
 		_plan = null
 

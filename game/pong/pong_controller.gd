@@ -16,14 +16,12 @@ var speed_factor: float = 1.0
 
 ## This update's decision, [param dt] seconds at time [param now], from the newest servo
 ## state; [param opponent_avatar] is where the other player stands.
-func update(
-	_now: float, _dt: float, _snapshot: HapticPongState, _opponent_avatar: Vector3
-) -> PongIntent:
+func update(_now: float, _dt: float, _snapshot: PongState, _opponent_avatar: Vector3) -> PongIntent:
 	return intent
 
 
-## A servo event (drain_pong_events), at time [param now].
-func notice(_event: Dictionary, _now: float) -> void:
+## A servo event ([method PongServo.drain_events]), at time [param now].
+func notice(_event: PongEvent, _now: float) -> void:
 	pass
 
 

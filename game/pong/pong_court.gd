@@ -2,7 +2,7 @@ class_name PongCourt
 extends RefCounted
 ## The court of Haptic Battle Pong as the game sees it. Everything the servo simulates
 ## (court size, ball, gravity, restitution, beginner plane, targets, effect strengths) is
-## read once from the servo's configuration ([code]Haptics.pong.get_config()[/code], the
+## read once from the servo's configuration ([code]PongServo.shared().get_config()[/code], the
 ## [code]"pong"[/code] section) and never repeated here; the game-side geometry that only
 ## the game uses (avatar body, mines) is defined here, once.
 ##
@@ -156,9 +156,3 @@ func clamp_inside(point: Vector3, margin: float) -> Vector3:
 func in_target(point: Vector3, player: int = 0) -> bool:
 	var along: float = (side_rotation(player).inverse() * point).x
 	return absf(along) <= target_half_width and point.y >= 0.0 and point.y <= wall_height
-
-
-## The wall name a back-wall event of the servo uses for [param player]'s back wall.
-static func back_wall_name(player: int) -> String:
-	const NAMES: Array[String] = ["back_near", "back_far", "right", "left"]
-	return NAMES[player]

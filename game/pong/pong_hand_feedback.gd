@@ -18,7 +18,7 @@ func _init(p_court: PongCourt) -> void:
 
 ## A bullet hit [param player] flying along [param direction] (world).
 func hit(player: int, direction: Vector3) -> void:
-	Haptics.pong.apply_effect(
+	PongServo.shared().apply_effect(
 		player, "hit", court.number("hit_force_n"), court.number("hit_duration_s"), direction
 	)
 
@@ -26,14 +26,16 @@ func hit(player: int, direction: Vector3) -> void:
 ## [param player] stepped on a [param kind] mine of [param owner]'s: a rumble, then the
 ## mine's effect for [param duration_s] ("none": the rumble only).
 func mine(player: int, kind: String, duration_s: float, owner: int) -> void:
-	Haptics.pong.rumble(MINE_RUMBLE_N, MINE_RUMBLE_DECAY_S)
+	PongServo.shared().rumble(MINE_RUMBLE_N, MINE_RUMBLE_DECAY_S)
 	if kind != "none":
-		Haptics.pong.apply_effect(player, kind, _magnitude(kind), duration_s, Vector3.ZERO, owner)
+		PongServo.shared().apply_effect(
+			player, kind, _magnitude(kind), duration_s, Vector3.ZERO, owner
+		)
 
 
 ## [param player] fired along [param axis]: the gun kicks back.
 func recoil(player: int, axis: Vector3) -> void:
-	Haptics.pong.apply_effect(
+	PongServo.shared().apply_effect(
 		player,
 		"recoil",
 		court.number("recoil_force_n"),
@@ -49,4 +51,4 @@ func _magnitude(kind: String) -> float:
 			return court.number("heavy_force_n")
 		"remote":
 			return court.number("remote_max_force_n")
-	return HapticsPong.DEFAULT_STRENGTH
+	return PongServo.DEFAULT_STRENGTH

@@ -106,7 +106,7 @@ func handle_input(event: InputEvent, viewport_size: Vector2) -> void:
 		hand.z = clampf(hand.z, -1.0, 1.0)
 
 
-func update(_now: float, dt: float, _snapshot: HapticPongState, _opponent: Vector3) -> PongIntent:
+func update(_now: float, dt: float, _snapshot: PongState, _opponent: Vector3) -> PongIntent:
 	intent.fire = _take("fire")
 	intent.place_mine = _take("mine")
 	if _take("spin"):
@@ -163,7 +163,7 @@ func _device_offset(dt: float) -> Vector3:
 	if not kinematic:
 		# A physical device is moved by the hand itself.
 		if _workspace_radius > 0.0 and Haptics.device.is_simulated():
-			Haptics.pong.set_hand_target_3d(hand * _workspace_radius)
+			PongServo.shared().set_hand_target_3d(hand * _workspace_radius)
 		return Vector3.ZERO
 	return PongCourt.side_rotation(player) * hand * _reach
 

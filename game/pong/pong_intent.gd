@@ -29,8 +29,8 @@ var pose_age_s: float = 0.0
 
 ## The player's entry of the servo's input: [param kinematic] when the game moves the
 ## paddle (the offset and velocity are then sent).
-func to_input(kinematic: bool) -> HapticPongPlayerInput:
-	var entry: HapticPongPlayerInput = HapticPongPlayerInput.new()
+func to_input(kinematic: bool) -> PongPlayerInput:
+	var entry: PongPlayerInput = PongPlayerInput.new()
 	entry.avatar = avatar
 	entry.kinematic = kinematic
 	if kinematic:

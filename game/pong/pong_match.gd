@@ -14,8 +14,8 @@ extends Node
 ## [member stepped_speed] asks (0: as many as fit in [constant STEP_BUDGET_MS] of wall
 ## time), so a headless match runs faster than real time.
 
-## A servo event (drain_pong_events) was read.
-signal event_seen(event: Dictionary)
+## A servo event ([method PongServo.drain_events]) was read.
+signal event_seen(event: PongEvent)
 ## A serve was made toward [param receiver].
 signal served(receiver: int)
 signal health_changed(player: int, health: int, cause: StringName)
@@ -75,7 +75,7 @@ var controllers: Array[PongController] = []
 ## The player on the device (0), or -1 when no paddle is the device's.
 var local_player: int = -1
 ## The newest servo state.
-var snapshot: HapticPongState = HapticPongState.new()
+var snapshot: PongState = PongState.new()
 ## Match time, seconds (simulated time in stepped mode).
 var now: float = 0.0
 ## The paddle's reach from the avatar: the device workspace radius times the scale.
@@ -86,16 +86,16 @@ var _servo: PongServoLink = PongServoLink.new()
 var _feedback: PongHandFeedback = null
 var _device_orientation: bool = false
 var _wall_start_us: int = 0
-var _paused_ball: HapticPongState = null
+var _paused_ball: PongState = null
 
 
 ## Sets the match up and starts it; false (and nothing changes) without the Pong renderer.
 func start() -> bool:
-	if not Haptics.pong.is_available():
+	if not PongServo.shared().is_available():
 		return false
 	if not _servo.claim_court(players):
 		return false
-	court = PongCourt.from_config(Haptics.pong.get_config())
+	court = PongCourt.from_config(PongServo.shared().get_config())
 	_feedback = PongHandFeedback.new(court)
 	effects.ramp_s = court.number("mine_effect_ramp_s")
 	rules = PongRules.new(start_health, court.players)
@@ -113,7 +113,7 @@ func start() -> bool:
 		controllers.append(_make_controller(player, radius))
 	_retarget()
 	_servo.enter(stepped)
-	Haptics.pong.set_ball(Vector3(0.0, court.ball_radius, 0.0), Vector3.ZERO)
+	PongServo.shared().set_ball(Vector3(0.0, court.ball_radius, 0.0), Vector3.ZERO)
 	_send_input()
 	_wall_start_us = Time.get_ticks_usec()
 	_started = true
@@ -133,10 +133,10 @@ func _notification(what: int) -> void:
 		_paused_ball = snapshot
 		_send_input()
 	elif what == NOTIFICATION_UNPAUSED and _paused_ball != null:
-		Haptics.pong.set_ball(
+		PongServo.shared().set_ball(
 			_paused_ball.ball_position, _paused_ball.ball_velocity, _paused_ball.ball_spin
 		)
-		Haptics.pong.drain_events()
+		PongServo.shared().drain_events()
 		_paused_ball = null
 		_send_input()
 
@@ -175,8 +175,8 @@ func run_until(condition: Callable, max_s: float) -> bool:
 ## of stepped mode).
 func advance(dt: float) -> void:
 	now += dt
-	snapshot = Haptics.pong.get_state()
-	for event: Dictionary in Haptics.pong.drain_events():
+	snapshot = PongServo.shared().get_state()
+	for event: PongEvent in PongServo.shared().drain_events():
 		_on_event(event)
 	effects.advance(dt)
 	_move_bullets(dt)
@@ -193,7 +193,7 @@ func serve() -> void:
 	var ball: PongReferee.Serve = referee.make_serve(
 		court, controllers[receiver].intent.avatar, beginner
 	)
-	Haptics.pong.set_ball(ball.position, ball.velocity)
+	PongServo.shared().set_ball(ball.position, ball.velocity)
 	served.emit(receiver)
 
 
@@ -216,7 +216,7 @@ func speed_ratio() -> float:
 ## tick's total from the telemetry while the servo thread runs (a ball's contact lasts
 ## about 40 ms and falls between frames), else the newest state's.
 func take_peak_force() -> float:
-	var peak: float = snapshot.total_force().length()
+	var peak: float = snapshot.hand_force.total.length()
 	return peak if stepped else _servo.peak_force(peak)
 
 
@@ -225,24 +225,28 @@ func avatar_of(player: int) -> Vector3:
 	return controllers[player].intent.avatar
 
 
-## [param player]'s mine effect and the seconds it has left, {kind, remaining_s}, or
-## empty: the servo's countdown for the device player, the game's for a kinematic one.
-func effect_of(player: int) -> Dictionary:
+## [param player]'s mine effect and the seconds it has left, or null: the servo's countdown
+## for the device player, the game's for a kinematic one.
+func effect_of(player: int) -> PongEffectState:
 	if player == local_player:
-		for entry: Dictionary in snapshot.effects:
-			if PongMines.KINDS.has(str(entry.get("kind", ""))):
+		for entry: PongEffectState in snapshot.effects:
+			if PongMines.KINDS.has(PongServoFacts.PONG_EFFECT_KIND_NAMES[entry.kind]):
 				return entry
-		return {}
+		return null
 	var kind: String = effects.kind_of(player)
 	if kind.is_empty():
-		return {}
-	return {"kind": kind, "remaining_s": effects.remaining(player)}
+		return null
+	var effect: PongEffectState = PongEffectState.new()
+	var index: int = PongServoFacts.PONG_EFFECT_KIND_NAMES.find(kind)
+	effect.kind = index as PongServoFacts.PongEffectKind
+	effect.remaining_s = effects.remaining(player)
+	return effect
 
 
 # The ticks first: the update then reads the state they made and sends the input for the
 # next ones.
 func _step_chunk() -> void:
-	Haptics.pong.step_ticks(roundi(STEP_CHUNK_S / HapticsPong.TICK_S))
+	PongServo.shared().step_ticks(roundi(STEP_CHUNK_S / PongServo.TICK_S))
 	advance(STEP_CHUNK_S)
 
 
@@ -272,9 +276,9 @@ func _make_controller(player: int, radius: float) -> PongController:
 	return controller
 
 
-func _on_event(event: Dictionary) -> void:
+func _on_event(event: PongEvent) -> void:
 	var hurt: int = rules.apply_event(event, court, beginner) if rules_from_events else -1
-	if hurt >= 0 and beginner and str(event.get("type", "")) == "wall":
+	if hurt >= 0 and beginner and event.type == PongServoFacts.PongEventType.WALL:
 		referee.serve_after(PongReferee.GOAL_SERVE_DELAY_S)
 	for controller: PongController in controllers:
 		controller.notice(event, now)
@@ -346,12 +350,12 @@ func _fire(player: int) -> void:
 
 
 func _send_input() -> void:
-	var input: HapticPongInput = HapticPongInput.new()
+	var input: PongInput = PongInput.new()
 	input.beginner = beginner
 	input.local_player = local_player
 	for player: int in court.players:
 		var controller: PongController = controllers[player]
-		var entry: HapticPongPlayerInput = controller.intent.to_input(controller.kinematic)
+		var entry: PongPlayerInput = controller.intent.to_input(controller.kinematic)
 		if controller.kinematic:
 			var effect_owner: int = effects.owner_of(player)
 			var owner_offset: Vector3 = Vector3.ZERO
@@ -367,8 +371,8 @@ func _send_input() -> void:
 				player, controller.intent.paddle_offset, owner_offset
 			)
 		entry.active = _paused_ball == null and not rules.is_out(player)
-		input.players.append(entry)
-	Haptics.pong.set_input(input)
+		input.players[player] = entry
+	PongServo.shared().set_input(input)
 
 
 func _on_match_over(winner: int) -> void:

@@ -108,35 +108,22 @@ func hurt(player: int, cause: StringName) -> int:
 	return lost
 
 
-## Applies one event of the servo ([code]drain_pong_events()[/code]): a floor bounce costs
+## Applies one event of the servo ([method PongServo.drain_events]): a floor bounce costs
 ## the player whose territory it is in; a back-wall hit costs that wall's owner, within the
 ## target in [param beginner] mode, anywhere with more than two players (two-player
 ## matches outside beginner mode score floor bounces only, the paper's rule). Returns the
 ## player hurt, or -1.
-func apply_event(event: Dictionary, court: PongCourt, beginner: bool) -> int:
-	match str(event.get("type", "")):
-		"floor":
-			var territory: int = event.get("territory", -1)
-			return territory if hurt(territory, CAUSE_FLOOR) > 0 else -1
-		"wall":
+func apply_event(event: PongEvent, court: PongCourt, beginner: bool) -> int:
+	match event.type:
+		PongServoFacts.PongEventType.FLOOR:
+			return event.territory if hurt(event.territory, CAUSE_FLOOR) > 0 else -1
+		PongServoFacts.PongEventType.WALL:
 			if not beginner and players == 2:
 				return -1
-			var owner: int = _back_wall_owner(event)
+			var owner: int = event.back_wall_of if event.back_wall_of < players else -1
 			if owner < 0:
 				return -1
-			var position: Vector3 = event.get("position", Vector3.ZERO)
-			if beginner and not court.in_target(position, owner):
+			if beginner and not court.in_target(event.position, owner):
 				return -1
 			return owner if hurt(owner, CAUSE_GOAL) > 0 else -1
-	return -1
-
-
-# The servo names the goal's owner (back_wall_of); older events only the wall.
-func _back_wall_owner(event: Dictionary) -> int:
-	if event.has("back_wall_of"):
-		var owner: int = event["back_wall_of"]
-		return owner if owner < players else -1
-	for player: int in players:
-		if str(event.get("wall", "")) == PongCourt.back_wall_name(player):
-			return player
 	return -1

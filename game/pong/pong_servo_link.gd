@@ -14,10 +14,10 @@ var _telemetry_capacity: int = 0
 
 ## Sets the servo's court to [param players] seats; false (nothing changed) when refused.
 func claim_court(players: int) -> bool:
-	var configured_count: float = Haptics.pong.get_config().get("players", 2.0)
+	var configured_count: float = PongServo.shared().get_config().get("players", 2.0)
 	var configured: int = roundi(configured_count)
 	if configured != players:
-		if not Haptics.pong.configure({"players": players}):
+		if not PongServo.shared().configure({"players": players}):
 			return false
 		_previous_players = configured
 	return true
@@ -27,38 +27,37 @@ func claim_court(players: int) -> bool:
 func device_usable() -> bool:
 	if Haptics.device.get_id().is_empty() or Haptics.device.is_lost():
 		return false
-	var input_dof: int = Haptics.device.get_capabilities().get("input_dof", 0)
-	return input_dof >= 3
+	return Haptics.device.get_capabilities().input_dof >= 3
 
 
 ## Whether the open device reports its stylus's orientation.
 func device_has_orientation() -> bool:
-	return Haptics.device.get_capabilities().get("has_orientation", false) == true
+	return Haptics.device.get_capabilities().has_orientation
 
 
 ## The Pong renderer on with no effect or event left over, the hand the game's, the
 ## servo thread stopped when [param stepped], the telemetry emptied.
 func enter(stepped: bool) -> void:
 	Haptics.hand_follows_input = false
-	Haptics.pong.enter()
+	PongServo.shared().enter()
 	if stepped and Haptics.servo.is_running():
 		Haptics.servo.stop()
 		_stopped_servo = true
-	Haptics.pong.clear_effects()
-	Haptics.pong.drain_events()
+	PongServo.shared().clear_effects()
+	PongServo.shared().drain_events()
 	var columns: PackedStringArray = Haptics.servo.get_telemetry_columns()
 	_telemetry_stride = columns.size()
 	_telemetry_total = columns.find("total_x")
-	_telemetry_capacity = Haptics.get_constant(&"TELEMETRY_QUEUE_CAPACITY")
+	_telemetry_capacity = HapticServoConstants.TELEMETRY_QUEUE_CAPACITY
 	Haptics.servo.drain_telemetry(_telemetry_capacity)
 
 
 ## Gives back what [method claim_court] and [method enter] took.
 func leave() -> void:
-	Haptics.pong.set_hand_target_3d(Vector3.ZERO)
-	Haptics.pong.leave()
+	PongServo.shared().set_hand_target_3d(Vector3.ZERO)
+	PongServo.shared().leave()
 	if _previous_players > 0:
-		Haptics.pong.configure({"players": _previous_players})
+		PongServo.shared().configure({"players": _previous_players})
 	Haptics.hand_follows_input = true
 	if _stopped_servo:
 		Haptics.servo.start()

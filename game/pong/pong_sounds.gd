@@ -112,10 +112,10 @@ func listen(match_node: PongMatch) -> void:
 	)
 
 
-func _on_event(event: Dictionary) -> void:
-	var speed: float = event.get("speed", 0.0)
-	match str(event.get("type", "")):
-		"paddle":
-			play(PADDLE, speed / FULL_VOLUME_SPEED_M_PER_S)
-		"floor", "wall":
-			play(BOUNCE, speed / FULL_VOLUME_SPEED_M_PER_S)
+func _on_event(event: PongEvent) -> void:
+	var loudness: float = event.speed / FULL_VOLUME_SPEED_M_PER_S
+	match event.type:
+		PongServoFacts.PongEventType.PADDLE:
+			play(PADDLE, loudness)
+		PongServoFacts.PongEventType.FLOOR, PongServoFacts.PongEventType.WALL:
+			play(BOUNCE, loudness)

@@ -65,13 +65,22 @@ func _init() -> void:
 		_arrows[component] = Vector2.ZERO
 
 
-## Takes a forces [Dictionary] (component name → [Vector2] newtons, game axes, y down) as
-## [code]Haptics.get_forces()[/code] returns it; missing components count as zero.
-func set_forces(forces: Dictionary) -> void:
-	for component: String in COLORS:
-		var value: Variant = forces.get(component, Vector2.ZERO)
-		_forces[component] = value if value is Vector2 else Vector2.ZERO
+## Takes one tick's [HapticForces] (game axes, y down): the movement renderer's components,
+## the impact and the total.
+func set_forces(forces: HapticForces) -> void:
+	_forces = components_of(forces)
 	_recompute()
+
+
+## The components drawn, by name: the movement renderer's (in its force enum's order), then
+## the impact and the total.
+static func components_of(forces: HapticForces) -> Dictionary[String, Vector2]:
+	var out: Dictionary[String, Vector2] = {}
+	for part: int in HapticMovement.MOVEMENT_FORCE_NAMES.size():
+		out[HapticMovement.MOVEMENT_FORCE_NAMES[part]] = forces.parts[part]
+	out["impact"] = forces.impact
+	out["total"] = forces.total
+	return out
 
 
 ## The arrow drawn for [param component]: a vector in pixels from the origin (y down),

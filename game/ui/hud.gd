@@ -65,15 +65,15 @@ func _process(delta: float) -> void:
 	_follow_player()
 
 
-## Shows a forces [Dictionary] (component → [Vector2] newtons, game axes) as
-## [code]Haptics.get_forces()[/code] returns it: arrows, legend values and |total|.
-func show_forces(forces: Dictionary) -> void:
+## Shows one tick's [HapticForces] (the movement renderer's components, game axes):
+## arrows, legend values and |total|.
+func show_forces(forces: HapticForces) -> void:
 	_arrows.set_forces(forces)
 	_world_arrows.set_forces(forces)
+	var components: Dictionary[String, Vector2] = ForceArrows.components_of(forces)
 	for component: String in _legend_values:
-		var magnitude: float = Haptics.force_of(forces, component).length()
-		_legend_values[component].text = "%.2f N" % magnitude
-	_total_magnitude = Haptics.force_of(forces, "total").length()
+		_legend_values[component].text = "%.2f N" % components[component].length()
+	_total_magnitude = forces.total.length()
 	_magnitude.text = "%.2f N" % _total_magnitude
 
 
@@ -127,25 +127,23 @@ func get_legend_value(component: String) -> Label:
 ## techniques it was granted ([method HapticsServo.get_stats]): the real-time priority (from
 ## RealtimeKit for a normal user) or what the servo has without one, locked memory, the CPU
 ## latency held, the pinned CPU, the spin before each deadline.
-static func servo_running_text(rate_hz: float, stats: Dictionary) -> String:
-	var p99_ms: float = stats.get("period_p99_ms", 0.0)
+static func servo_running_text(rate_hz: float, stats: HapticServoStats) -> String:
+	var p99_ms: float = stats.period_p99_s * 1e3
 	var parts: PackedStringArray = ["servo %d Hz" % roundi(rate_hz), "p99 %.2f ms" % p99_ms]
-	if stats.get("realtime", false) == true:
-		var priority: int = stats.get("realtime_priority", 0)
-		var via_rtkit: bool = stats.get("scheduler", "") == "realtime_rr"
-		parts.append("RT %d%s" % [priority, " (RealtimeKit)" if via_rtkit else ""])
+	if stats.realtime:
+		var via_rtkit: bool = stats.scheduler == HapticRealtime.SchedulerKind.REALTIME_RR
+		parts.append("RT %d%s" % [stats.realtime_priority, " (RealtimeKit)" if via_rtkit else ""])
 	else:
 		var without: String = realtime_missing_text(stats)
 		if not without.is_empty():
 			parts.append(without)
-	if stats.get("memory_locked", false) == true:
+	if stats.memory_locked:
 		parts.append("mlock")
-	if stats.get("cpu_latency_held", false) == true:
+	if stats.cpu_latency_held:
 		parts.append("C-states held")
-	var cpu: int = stats.get("pinned_cpu", -1)
-	if cpu >= 0:
-		parts.append("CPU %d" % cpu)
-	var spin_us: float = stats.get("spin_us", 0.0)
+	if stats.pinned_cpu >= 0:
+		parts.append("CPU %d" % stats.pinned_cpu)
+	var spin_us: float = stats.spin_s * 1e6
 	if spin_us > 0.0:
 		parts.append("spin %d µs" % roundi(spin_us))
 	return "  ·  ".join(parts)
@@ -153,24 +151,24 @@ static func servo_running_text(rate_hz: float, stats: Dictionary) -> String:
 
 ## Without real time, what the servo has instead and the one step that gives more, from
 ## what RealtimeKit answered; "" when it was not asked.
-static func realtime_missing_text(stats: Dictionary) -> String:
-	var nice: int = stats.get("realtime_kit_nice", 0)
-	match str(stats.get("realtime_kit", "not asked")):
-		"high priority":
-			return "nice %d (no real time outside a desktop session)" % nice
-		"refused":
+static func realtime_missing_text(stats: HapticServoStats) -> String:
+	var grant: HapticRealtimeKitGrant = stats.realtime_kit
+	match grant.outcome:
+		HapticRealtime.RtkitOutcome.HIGH_PRIORITY:
+			return "nice %d (no real time outside a desktop session)" % grant.nice
+		HapticRealtime.RtkitOutcome.REFUSED:
 			return "no real time: RealtimeKit refused (no desktop session?)"
-		"unavailable":
+		HapticRealtime.RtkitOutcome.UNAVAILABLE:
 			return "no real time: install rtkit (sudo apt install rtkit)"
 	return ""
 
 
 ## The HUD's servo line when the servo is not running: why, and what happens now.
-static func servo_stopped_text(servo_status: String, device_status: Dictionary) -> String:
+static func servo_stopped_text(servo_status: String, device_status: HapticDeviceStatus) -> String:
 	if servo_status.is_empty():
 		return "servo off"
-	var reason: String = str(device_status.get("reason", ""))
-	if device_status.get("io", "ok") == "disconnected":
+	var reason: String = device_status.reason
+	if device_status.io == HapticDeviceKinds.DeviceIo.DISCONNECTED:
 		return (
 			"device unplugged%s: zero force, playing on the keyboard; plug it back in to resume"
 			% ("" if reason.is_empty() else " (%s)" % reason)

@@ -53,12 +53,12 @@ MicroResult measure(const char *p_name, Work p_work) {
 // water.
 Frame busy_frame() {
 	Frame frame;
-	frame.add_contact({ 0.0, 1.0, 0.0 });
-	frame.add_contact({ -1.0, 0.0, 0.0 }, ContactMaterial{ 3.0, 0.5 });
-	frame.add_contact({ -0.7, 0.7, 0.0 });
-	frame.add_resting({ 0.0, -1.0, 0.0 }, 0.8);
-	frame.water = WaterState{ true, 0.4, 0.3 };
-	frame.player_velocity = { 1.2, -0.3, 0.0 };
+	add_contact(frame, { 0.0, 1.0, 0.0 });
+	add_contact(frame, { -1.0, 0.0, 0.0 }, ContactMaterial{ 3.0, 0.5 });
+	add_contact(frame, { -0.7, 0.7, 0.0 });
+	add_resting(frame, { 0.0, -1.0, 0.0 }, 0.8);
+	set_water(frame, true, 0.4, 0.3);
+	frame.velocity_m_per_s = { 1.2, -0.3, 0.0 };
 	return frame;
 }
 
@@ -122,7 +122,7 @@ std::vector<MicroResult> run_micro_benchmarks() {
 		if (bank.active_count() < 3) {
 			ImpactEvent event;
 			event.direction = { 0.0, 1.0, 0.0 };
-			event.speed = 3.0 + 1e-3 * p_n;
+			event.speed_m_per_s = 3.0 + 1e-3 * p_n;
 			bank.add(event, ImpactMaterial{}, 3.0);
 		}
 		g_sink = g_sink + bank.advance(0.001).y;

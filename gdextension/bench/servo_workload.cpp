@@ -25,19 +25,19 @@ void produce(HapticsSystem &r_system, double p_duration_s, LoopResult &r_result)
 		const double phase = static_cast<double>(frame_index) * 0.05;
 		Frame frame;
 		frame.sequence = frame_index;
-		frame.timestamp_s = static_cast<double>(deadline - begin) * 1e-9;
-		frame.add_contact({ 0.0, 1.0, 0.0 });
-		frame.add_contact({ -std::cos(phase), 0.3, 0.0 }, ContactMaterial{ 2.5, 0.8 });
-		frame.add_resting({ 0.0, -1.0, 0.0 }, 0.6);
-		frame.water = WaterState{ (frame_index / 50) % 2 == 1, 0.4, 0.3 };
-		frame.player_velocity = { std::sin(phase), -0.2, 0.0 };
+		frame.time_s = static_cast<double>(deadline - begin) * 1e-9;
+		add_contact(frame, { 0.0, 1.0, 0.0 });
+		add_contact(frame, { -std::cos(phase), 0.3, 0.0 }, ContactMaterial{ 2.5, 0.8 });
+		add_resting(frame, { 0.0, -1.0, 0.0 }, 0.6);
+		set_water(frame, (frame_index / 50) % 2 == 1, 0.4, 0.3);
+		frame.velocity_m_per_s = { std::sin(phase), -0.2, 0.0 };
 		r_system.submit_frame(frame);
 		++r_result.frames_submitted;
 		r_system.set_hand_target({ 0.06 * std::sin(phase * 0.7), -0.03 + 0.02 * std::cos(phase), 0.0 });
 		if (frame_index % 5 == 0) {
 			ImpactEvent event;
 			event.direction = { 0.0, 1.0, 0.0 };
-			event.speed = 2.0 + std::sin(phase);
+			event.speed_m_per_s = 2.0 + std::sin(phase);
 			r_system.push_impact(event);
 			++r_result.impacts_pushed;
 		}

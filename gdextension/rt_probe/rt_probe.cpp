@@ -103,7 +103,7 @@ int main() {
 			haptics::rtkit_outcome_name(stats.realtime_kit.outcome), stats.realtime_kit.max_priority,
 			static_cast<long long>(stats.realtime_kit.rttime_usec), stats.realtime_kit.nice,
 			std::llround(stats.spin_s * 1e6), static_cast<long long>(haptics::ServoOptions::UNHELD_SPIN_NS / 1000),
-			stats.realtime_kit.reason);
+			stats.realtime_kit.reason.c_str());
 	std::printf("RTPROBE kernel found=%d policy=%s rt_priority=%ld nice=%ld\n", kernel.found ? 1 : 0,
 			policy_name(kernel.policy), kernel.rt_priority, kernel.nice);
 	std::fflush(stdout);

@@ -220,7 +220,7 @@ TEST_CASE("constraint system: switching modes hands over between the renderers")
 	const Segment2 wall{ { 120.0, 0.0 }, { 120.0, 180.0 } };
 	REQUIRE(maze_port(system).set_geometry(&wall, 1, maze_mapping()));
 	Frame floor;
-	floor.add_contact({ 0.0, 1.0, 0.0 });
+	add_contact(floor, { 0.0, 1.0, 0.0 });
 	const double metres_per_unit = 0.16 / (180.0 * std::sqrt(2.0));
 	const Vec3 on_the_wall{ (121.0 - 90.0) * metres_per_unit, -0.05, 0.0 }; // Within r of it.
 	REQUIRE(system.set_hand_target(on_the_wall));

@@ -47,13 +47,13 @@ MovementForces forces(const Frame &p_frame, const Vec3 &p_input, ContactModel p_
 Frame frame_of(std::initializer_list<Contact> p_contacts) {
 	Frame frame;
 	for (const Contact &contact : p_contacts) {
-		frame.contacts[frame.contact_count++] = contact;
+		frame.contacts.push_back(contact);
 	}
 	return frame;
 }
 
 Contact contact(const Vec3 &p_normal, double p_k = 2.0, double p_b = 1.0) {
-	return Contact{ p_normal, ContactMaterial{ p_k, p_b }, false };
+	return Contact{ p_normal, ContactMaterial{ p_k, p_b } };
 }
 
 Vec3 unit(double p_x, double p_y, double p_z = 0.0) {
@@ -296,7 +296,7 @@ TEST_CASE("contact models: the solver's answer is the projection (KKT), for rand
 		Frame frame;
 		const int count = 1 + trial % 7;
 		for (int c = 0; c < count; ++c) {
-			frame.add_contact({ uniform(), uniform(), planar ? 0.0 : uniform() });
+			add_contact(frame, { uniform(), uniform(), planar ? 0.0 : uniform() });
 		}
 		const Vec3 i{ uniform(), uniform(), uniform() * 0.5 };
 		UnilateralContacts contacts;
@@ -324,10 +324,10 @@ TEST_CASE("contact models: the solver's answer is the projection (KKT), for rand
 
 TEST_CASE("contact models: weight and water are the paper's in both") {
 	Frame frame;
-	frame.add_contact(FLOOR);
-	frame.add_resting({ 0.0, -1.0, 0.0 }, 1.5);
-	frame.water = WaterState{ true, 0.5, 0.25 };
-	frame.player_velocity = { 1.0, 0.0, 0.0 };
+	add_contact(frame, FLOOR);
+	add_resting(frame, { 0.0, -1.0, 0.0 }, 1.5);
+	set_water(frame, true, 0.5, 0.25);
+	frame.velocity_m_per_s = { 1.0, 0.0, 0.0 };
 	for (const ContactModel m : { PER, PAPER }) {
 		const MovementForces f = forces(frame, { 0.4, 0.3, 0.0 }, m);
 		check_vec(f.weight, { 0.0, -1.5, 0.0 });

@@ -70,7 +70,7 @@ TEST_CASE("input vector: dead zone is rescaled so the output is continuous") {
 
 TEST_CASE("eqs 1-4: projection, rejection, normal force and friction on a floor") {
 	Frame frame;
-	frame.add_contact({ 0.0, 1.0, 0.0 }); // Floor: normal points up at the player.
+	add_contact(frame, { 0.0, 1.0, 0.0 }); // Floor: normal points up at the player.
 	const Vec3 i{ 0.3, -0.5, 0.0 }; // Pushing down and right.
 	// p = (0, -0.5, 0), r = (0.3, 0, 0); F_n = -2 p, F_f = -1 r.
 	const MovementForces f = compute_forces(frame, i, config_with(2.0, 1.0));
@@ -84,7 +84,7 @@ TEST_CASE("eqs 1-4: projection, rejection, normal force and friction on a floor"
 
 TEST_CASE("eqs 1-4: a sloped surface, a non-unit normal and a depth component") {
 	Frame frame;
-	frame.add_contact({ 1.2, 1.6, 0.0 }, ContactMaterial{ 2.0, 0.5 }); // |n| = 2, unit (0.6, 0.8).
+	add_contact(frame, { 1.2, 1.6, 0.0 }, ContactMaterial{ 2.0, 0.5 }); // |n| = 2, unit (0.6, 0.8).
 	const Vec3 i{ 0.5, -0.5, 0.1 };
 	// i.n = 0.3 - 0.4 = -0.1 -> p = (-0.06, -0.08, 0), r = (0.56, -0.42, 0.1).
 	const MovementForces f = compute_forces(frame, i, config_with(9.0, 9.0));
@@ -107,8 +107,8 @@ TEST_CASE("no contact: no normal force and no friction") {
 
 TEST_CASE("several contacts: normalised sum of normals, materials weighted by share") {
 	Frame frame;
-	frame.add_contact({ 0.0, 1.0, 0.0 }, ContactMaterial{ 2.0, 1.0 }); // Floor.
-	frame.add_contact({ -1.0, 0.0, 0.0 }, ContactMaterial{ 4.0, 3.0 }); // Wall on the right.
+	add_contact(frame, { 0.0, 1.0, 0.0 }, ContactMaterial{ 2.0, 1.0 }); // Floor.
+	add_contact(frame, { -1.0, 0.0, 0.0 }, ContactMaterial{ 4.0, 3.0 }); // Wall on the right.
 	const ContactResolution resolved = resolve_contacts(frame, ContactMaterial{});
 	REQUIRE(resolved.active);
 	check_vec(resolved.normal, Vec3{ -1.0, 1.0, 0.0 } / std::sqrt(2.0));
@@ -122,9 +122,9 @@ TEST_CASE("several contacts: normalised sum of normals, materials weighted by sh
 
 TEST_CASE("several contacts: a contact facing away from the combined normal has no share") {
 	Frame frame;
-	frame.add_contact({ 0.0, 1.0, 0.0 }, ContactMaterial{ 50.0, 50.0 }); // Floor.
-	frame.add_contact({ 0.0, -1.0, 0.0 }, ContactMaterial{ 50.0, 50.0 }); // Ceiling.
-	frame.add_contact({ 1.0, 0.0, 0.0 }, ContactMaterial{ 2.0, 1.0 }); // Wall on the left.
+	add_contact(frame, { 0.0, 1.0, 0.0 }, ContactMaterial{ 50.0, 50.0 }); // Floor.
+	add_contact(frame, { 0.0, -1.0, 0.0 }, ContactMaterial{ 50.0, 50.0 }); // Ceiling.
+	add_contact(frame, { 1.0, 0.0, 0.0 }, ContactMaterial{ 2.0, 1.0 }); // Wall on the left.
 	const ContactResolution resolved = resolve_contacts(frame, ContactMaterial{});
 	check_vec(resolved.normal, { 1.0, 0.0, 0.0 });
 	CHECK(resolved.stiffness == doctest::Approx(2.0));
@@ -136,8 +136,8 @@ TEST_CASE("several contacts: a contact facing away from the combined normal has 
 
 TEST_CASE("several contacts: opposite normals cancel and render nothing") {
 	Frame frame;
-	frame.add_contact({ 1.0, 0.0, 0.0 });
-	frame.add_contact({ -1.0, 0.0, 0.0 });
+	add_contact(frame, { 1.0, 0.0, 0.0 });
+	add_contact(frame, { -1.0, 0.0, 0.0 });
 	CHECK_FALSE(resolve_contacts(frame, ContactMaterial{}).active);
 	const MovementForces f = compute_forces(frame, { 0.5, 0.5, 0.0 }, config_with(2.0, 1.0));
 	check_vec(f.continuous, {});
@@ -145,7 +145,7 @@ TEST_CASE("several contacts: opposite normals cancel and render nothing") {
 
 TEST_CASE("default material applies to contacts that ask for it") {
 	Frame frame;
-	frame.add_contact({ 0.0, 1.0, 0.0 }); // use_default_material
+	add_contact(frame, { 0.0, 1.0, 0.0 }); // No material: the default
 	const MovementForces f = compute_forces(frame, { 0.0, -0.5, 0.0 }, config_with(3.0, 1.0));
 	check_vec(f.normal, { 0.0, 1.5, 0.0 });
 }
@@ -156,49 +156,49 @@ TEST_CASE("eq 5: weight only when n.d > 0") {
 		Frame frame;
 		// The crate is above; its contact normal points down, at the player. Given in game
 		// space (y down) to exercise the one mapping.
-		frame.add_resting(game_to_device_direction(0.0, 1.0), 2.0);
+		add_resting(frame, game_to_device_direction(0.0, 1.0), 2.0);
 		check_vec(compute_forces(frame, {}, config).weight, { 0.0, -3.0, 0.0 });
 	}
 	SUBCASE("standing on a crate is not felt") {
 		Frame frame;
-		frame.add_resting(game_to_device_direction(0.0, -1.0), 2.0);
+		add_resting(frame, game_to_device_direction(0.0, -1.0), 2.0);
 		check_vec(compute_forces(frame, {}, config).weight, {});
 	}
 	SUBCASE("touching a crate's side is not felt") {
 		Frame frame;
-		frame.add_resting({ 1.0, 0.0, 0.0 }, 2.0);
-		frame.add_resting({ -1.0, 0.0, 0.0 }, 2.0);
+		add_resting(frame, { 1.0, 0.0, 0.0 }, 2.0);
+		add_resting(frame, { -1.0, 0.0, 0.0 }, 2.0);
 		check_vec(compute_forces(frame, {}, config).weight, {});
 	}
 	SUBCASE("a crate on a 30 degree slope of the player's head: cos 30 of its weight") {
 		Frame frame;
-		frame.add_resting({ 0.5, -std::sqrt(3.0) / 2.0, 0.0 }, 2.0);
+		add_resting(frame, { 0.5, -std::sqrt(3.0) / 2.0, 0.0 }, 2.0);
 		check_vec(compute_forces(frame, {}, config).weight, { 0.0, -3.0 * std::sqrt(3.0) / 2.0, 0.0 });
 	}
 	SUBCASE("two crates add up; a non-unit normal counts as its direction") {
 		Frame frame;
-		frame.add_resting({ 0.0, -4.0, 0.0 }, 1.0);
-		frame.add_resting({ 0.0, -1.0, 0.0 }, 0.5);
-		frame.add_resting({ 0.0, 1.0, 0.0 }, 100.0); // Stood on: ignored.
+		add_resting(frame, { 0.0, -4.0, 0.0 }, 1.0);
+		add_resting(frame, { 0.0, -1.0, 0.0 }, 0.5);
+		add_resting(frame, { 0.0, 1.0, 0.0 }, 100.0); // Stood on: ignored.
 		check_vec(compute_forces(frame, {}, config).weight, { 0.0, -2.25, 0.0 });
 	}
 }
 
 TEST_CASE("eqs 6-7: water drag and inertia only inside water") {
 	Frame frame;
-	frame.water.drag = 0.5;
-	frame.water.inertia = 0.8;
-	frame.player_velocity = { 2.0, -1.0, 0.0 };
+	frame.water_drag_n_s_per_m = 0.5;
+	frame.water_inertia_n = 0.8;
+	frame.velocity_m_per_s = { 2.0, -1.0, 0.0 };
 	const ForceModelConfig config = config_with(2.0, 1.0);
 	SUBCASE("outside") {
-		frame.water.inside = false;
+		frame.in_water = false;
 		const MovementForces f = compute_forces(frame, { 0.5, 0.0, 0.0 }, config);
 		check_vec(f.drag, {});
 		check_vec(f.inertia, {});
 		check_vec(f.continuous, {});
 	}
 	SUBCASE("inside") {
-		frame.water.inside = true;
+		frame.in_water = true;
 		const MovementForces f = compute_forces(frame, { 0.5, 0.0, 0.0 }, config);
 		check_vec(f.drag, { -1.0, 0.5, 0.0 }); // -c v
 		check_vec(f.inertia, { 0.0, -0.8, 0.0 }); // w d
@@ -208,10 +208,10 @@ TEST_CASE("eqs 6-7: water drag and inertia only inside water") {
 
 TEST_CASE("the continuous sum is the sum of every component") {
 	Frame frame;
-	frame.add_contact({ 0.0, 1.0, 0.0 });
-	frame.add_resting({ 0.0, -1.0, 0.0 }, 1.0);
-	frame.water = WaterState{ true, 0.5, 0.25 };
-	frame.player_velocity = { 1.0, 0.0, 0.0 };
+	add_contact(frame, { 0.0, 1.0, 0.0 });
+	add_resting(frame, { 0.0, -1.0, 0.0 }, 1.0);
+	set_water(frame, true, 0.5, 0.25);
+	frame.velocity_m_per_s = { 1.0, 0.0, 0.0 };
 	const MovementForces f = compute_forces(frame, { 0.4, -0.6, 0.0 }, config_with(2.0, 1.0, 1.0));
 	check_vec(f.normal, { 0.0, 1.2, 0.0 });
 	check_vec(f.friction, { -0.4, 0.0, 0.0 });
@@ -240,7 +240,7 @@ TEST_CASE("orientation invariance: a wall at any angle gives the same forces alo
 			const Vec3 position = (n * -0.6 + t * 0.3 + z * 0.2) * radius;
 			const Vec3 i = input_vector(position, radius, 0.0);
 			Frame frame;
-			frame.add_contact(n, ContactMaterial{ k, b });
+			add_contact(frame, n, ContactMaterial{ k, b });
 			const MovementForces f = compute_forces(frame, i, config_with(0.0, 0.0, 1.0, model));
 			check_vec(f.normal, n * (0.6 * k), 1e-12);
 			check_vec(f.friction, t * (-0.3 * b) + z * (-0.2 * b), 1e-12);

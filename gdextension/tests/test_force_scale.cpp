@@ -41,8 +41,8 @@ TEST_CASE("force scale: scales a default-material contact, its components and th
 		HapticsSystem system;
 		set_up(system, scale);
 		Frame frame;
-		frame.add_contact({ 0.0, 1.0, 0.0 }); // No material: the default one (k = 2, b = 1).
-		frame.add_resting({ 0.0, -1.0, 0.0 }, 0.5);
+		add_contact(frame, { 0.0, 1.0, 0.0 }); // No material: the default one (k = 2, b = 1).
+		add_resting(frame, { 0.0, -1.0, 0.0 }, 0.5);
 		REQUIRE(system.submit_frame(frame));
 		REQUIRE(system.step(DT));
 		const ForceComponents f = system.forces();
@@ -77,11 +77,11 @@ TEST_CASE("force scale: scales the constraint renderer and default-material impa
 
 	ImpactEvent event;
 	event.direction = { 0.0, 1.0, 0.0 };
-	event.speed = 2.0; // Default material: gain 0.5 N per m/s -> A = 1 N, scaled to 0.5 N.
+	event.speed_m_per_s = 2.0; // Default material: gain 0.5 N per m/s -> A = 1 N, scaled to 0.5 N.
 	REQUIRE(system.push_impact(event));
 	REQUIRE(system.step(DT));
 	const ImpactMaterial material;
-	const double expected = 0.5 * material.gain * 2.0 * std::exp(-DT / material.decay_s) *
+	const double expected = 0.5 * material.gain_n_s_per_m * 2.0 * std::exp(-DT / material.decay_s) *
 			std::sin(2.0 * std::numbers::pi * material.frequency_hz * DT);
 	CHECK(system.forces().impact.y == doctest::Approx(expected).epsilon(1e-9));
 }
@@ -90,7 +90,7 @@ TEST_CASE("force scale: 0 renders nothing, out of range or NaN is refused and th
 	HapticsSystem system;
 	set_up(system, 0.0);
 	Frame frame;
-	frame.add_contact({ 0.0, 1.0, 0.0 });
+	add_contact(frame, { 0.0, 1.0, 0.0 });
 	REQUIRE(system.submit_frame(frame));
 	REQUIRE(system.step(DT));
 	CHECK(system.forces().total == Vec3{});

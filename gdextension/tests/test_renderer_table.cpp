@@ -44,7 +44,7 @@ TEST_CASE("renderer table: each renderer names its own force components") {
 	const std::span<const RegisteredRenderer> rows = registered_renderers();
 	const std::vector<std::string> movement = { "normal", "friction", "weight", "drag", "inertia" };
 	CHECK(names_of(rows[RenderMode::MOVEMENT].info->force_names) == movement);
-	CHECK(names_of(rows[RenderMode::CONSTRAINT].info->force_names) == movement);
+	CHECK(names_of(rows[RenderMode::CONSTRAINT].info->force_names) == std::vector<std::string>{ "wall" });
 	CHECK(names_of(rows[RenderMode::PONG].info->force_names) == std::vector<std::string>{ "contact", "spin", "effects" });
 	for (const RegisteredRenderer &row : rows) {
 		CAPTURE(row.name);

@@ -15,7 +15,7 @@ constexpr double DT = 0.001;
 
 Frame floor_frame() {
 	Frame frame;
-	frame.add_contact({ 0.0, 1.0, 0.0 });
+	add_contact(frame, { 0.0, 1.0, 0.0 });
 	return frame;
 }
 
@@ -97,7 +97,7 @@ TEST_CASE("movement renderer: a material change keeps the filter's motion, reset
 	for (int k = 0; k < 20; ++k) {
 		before = render_once(renderer, frame, { 0.0, -0.5, 0.0 }).continuous;
 	}
-	config.force_model.default_contact.friction = 0.5;
+	config.force_model.default_contact.friction_n = 0.5;
 	change(renderer, channels, config);
 	const Vec3 after = render_once(renderer, frame, { 0.0, -0.5, 0.0 }).continuous;
 	CHECK(after.y > before.y); // Still rising from where it was.

@@ -42,7 +42,7 @@ void set_up_wall(HapticsSystem &r_system, const SafetyConfig &p_safety) {
 
 Frame wall_frame() {
 	Frame frame;
-	frame.add_contact({ -1.0, 0.0, 0.0 });
+	add_contact(frame, { -1.0, 0.0, 0.0 });
 	return frame;
 }
 
@@ -232,7 +232,7 @@ TEST_CASE("engine: the watchdog leaves impacts alone") {
 	CHECK(system.stats().watchdog_tripped);
 	ImpactEvent event;
 	event.direction = { 0.0, 1.0, 0.0 };
-	event.speed = 2.0; // Default material: 0.5 N s/m, 150 Hz, 30 ms.
+	event.speed_m_per_s = 2.0; // Default material: 0.5 N s/m, 150 Hz, 30 ms.
 	REQUIRE(system.push_impact(event));
 	REQUIRE(system.step(DT));
 	const double expected = 1.0 * std::exp(-0.001 / 0.03) * std::sin(2.0 * 3.141592653589793 * 150.0 * 0.001);

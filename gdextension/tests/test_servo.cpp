@@ -95,7 +95,7 @@ void render_full_force(HapticsSystem &r_system) {
 	REQUIRE(reconfigure(r_system, [&](RenderConfig &c) { c.servo.safety = safety; }));
 	REQUIRE(r_system.set_hand_target({ 0.08, 0.0, 0.0 }));
 	Frame wall;
-	wall.add_contact({ -1.0, 0.0, 0.0 });
+	add_contact(wall, { -1.0, 0.0, 0.0 });
 	REQUIRE(r_system.submit_frame(wall));
 }
 
@@ -180,7 +180,7 @@ TEST_CASE("servo thread: 1000 start/stop cycles while rendering, zero force afte
 		if (cycle % 2 == 0) {
 			ImpactEvent event;
 			event.direction = { 0.0, 1.0, 0.0 };
-			event.speed = 1.0;
+			event.speed_m_per_s = 1.0;
 			system.push_impact(event);
 		}
 		if (!wait_for([&] { return system.stats().ticks >= 1; })) {
@@ -241,15 +241,15 @@ TEST_CASE("servo thread: the game thread uses every channel while the servo runs
 	float last_time = -1.0f;
 	for (int frame_index = 0; frame_index < 150; ++frame_index) {
 		Frame frame;
-		frame.add_contact({ std::cos(frame_index * 0.1), std::sin(frame_index * 0.1), 0.0 });
-		frame.add_resting({ 0.0, -1.0, 0.0 }, 0.5);
-		frame.water = WaterState{ frame_index % 2 == 0, 0.3, 0.2 };
-		frame.player_velocity = { 1.0, 0.0, 0.0 };
+		add_contact(frame, { std::cos(frame_index * 0.1), std::sin(frame_index * 0.1), 0.0 });
+		add_resting(frame, { 0.0, -1.0, 0.0 }, 0.5);
+		set_water(frame, frame_index % 2 == 0, 0.3, 0.2);
+		frame.velocity_m_per_s = { 1.0, 0.0, 0.0 };
 		REQUIRE(system.submit_frame(frame));
 		REQUIRE(system.set_hand_target({ 0.0005 * (frame_index % 100), -0.02, 0.0 }));
 		ImpactEvent event;
 		event.direction = { 0.0, 1.0, 0.0 };
-		event.speed = 2.0;
+		event.speed_m_per_s = 2.0;
 		REQUIRE(system.push_impact(event));
 		SmoothingConfig smoothing;
 		smoothing.cutoff_hz = 10.0 + frame_index % 5;

@@ -154,7 +154,7 @@ TEST_CASE("engine + simulated device: pushing into a wall moves the stylus back 
 	}));
 	REQUIRE(system.set_hand_target({ 0.05, 0.0, 0.0 }));
 	Frame wall;
-	wall.add_contact({ -1.0, 0.0, 0.0 }); // A wall on the right; normal points back at the player.
+	add_contact(wall, { -1.0, 0.0, 0.0 }); // A wall on the right; normal points back at the player.
 	for (int k = 0; k < 3000; ++k) {
 		if (k % 20 == 0) {
 			REQUIRE(system.submit_frame(wall));

@@ -43,7 +43,7 @@ void set_up(HapticsSystem &r_system) {
 
 Frame floor_frame() {
 	Frame frame;
-	frame.add_contact({ 0.0, 1.0, 0.0 });
+	add_contact(frame, { 0.0, 1.0, 0.0 });
 	return frame;
 }
 
@@ -89,10 +89,10 @@ TEST_CASE("system: a NaN frame is rejected by name and the last good frame stays
 	const Vec3 good = system.forces().total;
 
 	Frame bad = floor_frame();
-	bad.add_contact({ NaN, 1.0, 0.0 });
+	add_contact(bad, { NaN, 1.0, 0.0 });
 	const Status status = system.submit_frame(bad);
 	CHECK(status.code() == StatusCode::INVALID_ARGUMENT);
-	CHECK(mentions(status, "frame.contacts[1].normal"));
+	CHECK(mentions(status, "HapticFrame.contacts[1].normal"));
 	CHECK(mentions(status, "not finite"));
 	for (int k = 0; k < 10; ++k) {
 		REQUIRE(system.step(DT));
@@ -111,37 +111,33 @@ TEST_CASE("system: every bad parameter is named") {
 		StatusCode code;
 		const char *name;
 	};
-	Frame too_many;
-	too_many.contact_count = MAX_CONTACTS + 1;
 	Frame zero_normal;
-	zero_normal.add_contact({});
+	add_contact(zero_normal, {});
 	Frame heavy;
-	heavy.add_resting({ 0.0, -1.0, 0.0 }, -1.0);
+	add_resting(heavy, { 0.0, -1.0, 0.0 }, -1.0);
 	Frame fast;
-	fast.player_velocity = { std::numeric_limits<double>::infinity(), 0.0, 0.0 };
+	fast.velocity_m_per_s = { std::numeric_limits<double>::infinity(), 0.0, 0.0 };
 	Frame soggy;
-	soggy.water = WaterState{ true, NaN, 0.0 };
+	set_water(soggy, true, NaN, 0.0);
 	Frame stiff = floor_frame();
-	stiff.contacts[0].use_default_material = false;
-	stiff.contacts[0].material.stiffness = 1e9;
+	stiff.contacts[0].material = ContactMaterial{ 1e9, 1.0 };
 	ImpactEvent no_direction;
-	no_direction.speed = 1.0;
+	no_direction.speed_m_per_s = 1.0;
 	ImpactEvent nan_speed;
 	nan_speed.direction = { 0.0, 1.0, 0.0 };
-	nan_speed.speed = NaN;
+	nan_speed.speed_m_per_s = NaN;
 	SafetyConfig slow_fade;
 	slow_fade.watchdog_fade_s = 0.2;
 	ForceModelConfig soft;
-	soft.default_contact.stiffness = -1.0;
+	soft.default_contact.stiffness_n = -1.0;
 	const Case cases[] = {
-		{ system.submit_frame(too_many), StatusCode::OUT_OF_RANGE, "frame.contact_count" },
-		{ system.submit_frame(zero_normal), StatusCode::INVALID_ARGUMENT, "frame.contacts[0].normal" },
-		{ system.submit_frame(heavy), StatusCode::OUT_OF_RANGE, "frame.resting[0].mass" },
-		{ system.submit_frame(fast), StatusCode::INVALID_ARGUMENT, "frame.player_velocity" },
-		{ system.submit_frame(soggy), StatusCode::INVALID_ARGUMENT, "frame.water.drag" },
-		{ system.submit_frame(stiff), StatusCode::OUT_OF_RANGE, "frame.contacts[0].material.stiffness" },
-		{ system.push_impact(no_direction), StatusCode::INVALID_ARGUMENT, "impact.direction" },
-		{ system.push_impact(nan_speed), StatusCode::INVALID_ARGUMENT, "impact.speed" },
+		{ system.submit_frame(zero_normal), StatusCode::INVALID_ARGUMENT, "HapticFrame.contacts[0].normal" },
+		{ system.submit_frame(heavy), StatusCode::OUT_OF_RANGE, "HapticFrame.resting[0].mass_kg" },
+		{ system.submit_frame(fast), StatusCode::INVALID_ARGUMENT, "HapticFrame.velocity_m_per_s" },
+		{ system.submit_frame(soggy), StatusCode::INVALID_ARGUMENT, "HapticFrame.water_drag_n_s_per_m" },
+		{ system.submit_frame(stiff), StatusCode::OUT_OF_RANGE, "HapticFrame.contacts[0].material.stiffness_n" },
+		{ system.push_impact(no_direction), StatusCode::INVALID_ARGUMENT, "HapticImpact.direction" },
+		{ system.push_impact(nan_speed), StatusCode::INVALID_ARGUMENT, "HapticImpact.speed_m_per_s" },
 		{ reconfigure(system, [&](RenderConfig &c) { c.movement.smoothing = SmoothingConfig{ true, NaN }; }), StatusCode::INVALID_ARGUMENT,
 				"smoothing.cutoff_hz" },
 		{ reconfigure(system, [&](RenderConfig &c) { c.servo.safety = slow_fade; }), StatusCode::OUT_OF_RANGE, "safety.watchdog_fade_s" },
@@ -165,7 +161,7 @@ TEST_CASE("system: every bad parameter is named") {
 	const RenderConfig &config = system.config();
 	CHECK_FALSE(config.movement.smoothing.enabled);
 	CHECK(config.servo.safety.watchdog_fade_s == SafetyConfig{}.watchdog_fade_s);
-	CHECK(config.movement.force_model.default_contact.stiffness == ContactMaterial{}.stiffness);
+	CHECK(config.movement.force_model.default_contact.stiffness_n == ContactMaterial{}.stiffness_n);
 	CHECK(config.servo.input.input_radius_m == 0.0);
 	CHECK_FALSE(system.is_running());
 }
@@ -190,9 +186,9 @@ TEST_CASE("system: telemetry has the documented layout") {
 	HapticsSystem system;
 	set_up(system);
 	Frame frame = floor_frame();
-	frame.add_resting({ 0.0, -1.0, 0.0 }, 0.5); // 0.5 N of crate (g = 1).
-	frame.water = WaterState{ true, 0.5, 0.25 };
-	frame.player_velocity = { 1.0, 0.0, 0.0 };
+	add_resting(frame, { 0.0, -1.0, 0.0 }, 0.5); // 0.5 N of crate (g = 1).
+	set_water(frame, true, 0.5, 0.25);
+	frame.velocity_m_per_s = { 1.0, 0.0, 0.0 };
 	REQUIRE(system.submit_frame(frame));
 	for (int k = 0; k < 3; ++k) {
 		REQUIRE(system.step(DT));
@@ -247,7 +243,7 @@ TEST_CASE("system: impact overflow is counted, never fatal") {
 	set_up(system);
 	ImpactEvent event;
 	event.direction = { 0.0, 1.0, 0.0 };
-	event.speed = 1.0;
+	event.speed_m_per_s = 1.0;
 	for (int n = 0; n < 100; ++n) {
 		REQUIRE(system.push_impact(event)); // OK even when full.
 	}
@@ -266,16 +262,16 @@ TEST_CASE("system: manual stepping is exactly deterministic") {
 		for (int k = 0; k < 600; ++k) {
 			if (k % 20 == 0) {
 				Frame frame;
-				frame.add_contact({ std::cos(k * 0.01), std::sin(k * 0.01), 0.0 });
-				frame.water = WaterState{ k > 300, 0.4, 0.2 };
-				frame.player_velocity = { 0.5, -0.2, 0.0 };
+				add_contact(frame, { std::cos(k * 0.01), std::sin(k * 0.01), 0.0 });
+				set_water(frame, k > 300, 0.4, 0.2);
+				frame.velocity_m_per_s = { 0.5, -0.2, 0.0 };
 				REQUIRE(system.submit_frame(frame));
 				REQUIRE(system.set_hand_target({ 0.0008 * (k % 100), -0.03, 0.01 }));
 			}
 			if (k % 150 == 7) {
 				ImpactEvent event;
 				event.direction = { -1.0, 0.5, 0.0 };
-				event.speed = 3.0;
+				event.speed_m_per_s = 3.0;
 				REQUIRE(system.push_impact(event));
 			}
 			REQUIRE(system.step(DT));

@@ -50,16 +50,16 @@ TEST_CASE("a tick allocates nothing, whatever it renders") {
 	for (int k = 0; k < 2000; ++k) {
 		if (k % 20 == 0) {
 			Frame frame;
-			frame.add_contact({ 0.0, 1.0, 0.0 });
-			frame.add_contact({ -1.0, 0.2, 0.0 });
-			frame.add_resting({ 0.0, -1.0, 0.0 }, 0.5);
-			frame.water = WaterState{ k > 1000, 0.4, 0.2 };
+			add_contact(frame, { 0.0, 1.0, 0.0 });
+			add_contact(frame, { -1.0, 0.2, 0.0 });
+			add_resting(frame, { 0.0, -1.0, 0.0 }, 0.5);
+			set_water(frame, k > 1000, 0.4, 0.2);
 			REQUIRE(system.submit_frame(frame));
 		}
 		if (k % 50 == 0) {
 			ImpactEvent event;
 			event.direction = { 0.0, 1.0, 0.0 };
-			event.speed = 3.0;
+			event.speed_m_per_s = 3.0;
 			REQUIRE(system.push_impact(event));
 		}
 		t_allocations = 0;

@@ -20,9 +20,8 @@ constexpr double PI = std::numbers::pi;
 ImpactEvent impact(const Vec3 &p_direction, double p_speed, double p_gain, double p_frequency_hz, double p_decay_s) {
 	ImpactEvent event;
 	event.direction = p_direction;
-	event.speed = p_speed;
+	event.speed_m_per_s = p_speed;
 	event.material = ImpactMaterial{ p_gain, p_frequency_hz, p_decay_s };
-	event.use_default_material = false;
 	return event;
 }
 
@@ -107,7 +106,7 @@ TEST_CASE("transient: the default material is used when the event asks for it") 
 	TransientBank bank;
 	ImpactEvent event;
 	event.direction = { 0.0, 0.0, -1.0 };
-	event.speed = 2.0;
+	event.speed_m_per_s = 2.0;
 	bank.add(event, ImpactMaterial{ 0.25, 250.0, 0.05 }, 10.0);
 	CHECK(bank.advance(0.001).z == doctest::Approx(-0.5 * std::exp(-0.001 / 0.05)));
 }
@@ -180,7 +179,7 @@ TEST_CASE("engine: impacts are overlaid raw on the smoothed continuous force") {
 	REQUIRE(reconfigure(system, [&](RenderConfig &c) { c.servo.safety = safety; }));
 
 	Frame frame;
-	frame.add_contact({ 0.0, 1.0, 0.0 }); // Landing on a floor: continuous force steps to 1 N up.
+	add_contact(frame, { 0.0, 1.0, 0.0 }); // Landing on a floor: continuous force steps to 1 N up.
 	REQUIRE(system.submit_frame(frame));
 	REQUIRE(system.push_impact(impact({ 0.0, 1.0, 0.0 }, 3.0, 0.5, 250.0, 0.02)));
 	const double dt = 0.001;

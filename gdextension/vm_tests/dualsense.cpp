@@ -116,7 +116,7 @@ void knock(Report &r_report, uhid::DualSenseUhidPad &p_pad, HapticsSystem &p_sys
 	p_pad.clear_outputs();
 	ImpactEvent impact;
 	impact.direction = Vec3{ 0.0, 1.0, 0.0 };
-	impact.speed = AMPLITUDE_N / ImpactMaterial{}.gain;
+	impact.speed_m_per_s = AMPLITUDE_N / ImpactMaterial{}.gain_n_s_per_m;
 	(void)p_system.push_impact(impact);
 	stand_on_floor(p_system, 0.4);
 	const std::vector<uint8_t> strongest = strongest_rumble(p_pad);
@@ -155,7 +155,7 @@ int run_dualsense() {
 	device.unplug(); // In the middle of the session: the hand still pressed into the floor.
 	const bool noticed = eventually([&] { return system.device_status().io == DeviceIo::DISCONNECTED; }, 3.0);
 	report.check(noticed && system.device_status().reason[0] != '\0',
-			std::string("unplugged: the device says DISCONNECTED: ") + system.device_status().reason);
+			std::string("unplugged: the device says DISCONNECTED: ") + system.device_status().reason.c_str());
 	const bool stopped = servo_stops(system, 3.0);
 	const Status servo = system.servo_status();
 	report.check(stopped && servo.code() == StatusCode::DEVICE_DISCONNECTED &&

@@ -79,7 +79,7 @@ void run_dualsense_evdev(Report &r_report, uhid::DualSenseUhidPad &p_pad) {
 	p_pad.clear_outputs();
 	ImpactEvent impact;
 	impact.direction = Vec3{ 0.0, 1.0, 0.0 };
-	impact.speed = 6.0; // 3 N: the servo's impact cap, full rumble.
+	impact.speed_m_per_s = 6.0; // 3 N: the servo's impact cap, full rumble.
 	(void)system.push_impact(impact);
 	stand_on_floor(system, 0.5);
 

@@ -135,7 +135,7 @@ int run_evdev_uinput() {
 	stick.destroy(); // In the middle of the session.
 	const bool noticed = eventually([&] { return system.device_status().io == DeviceIo::DISCONNECTED; }, 3.0);
 	report.check(noticed && system.device_status().reason[0] != '\0',
-			std::string("destroyed: the device says DISCONNECTED: ") + system.device_status().reason);
+			std::string("destroyed: the device says DISCONNECTED: ") + system.device_status().reason.c_str());
 	const bool stopped = servo_stops(system, 3.0);
 	report.check(stopped, std::string("destroyed: the servo stopped: ") + system.servo_status().message());
 	system.close_device();

@@ -36,7 +36,7 @@ bool find_listed(uint16_t p_vendor, uint16_t p_product, std::string_view p_backe
 
 void stand_on_floor(HapticsSystem &p_system, double p_seconds) {
 	Frame frame;
-	frame.add_contact(Vec3{ 0.0, 1.0, 0.0 });
+	add_contact(frame, Vec3{ 0.0, 1.0, 0.0 });
 	const int count = static_cast<int>(p_seconds * 50.0);
 	for (int i = 0; i < count; ++i) {
 		frame.sequence = static_cast<uint64_t>(i);
@@ -72,7 +72,7 @@ bool servo_stops(const HapticsSystem &p_system, double p_seconds) {
 
 void expect_unplugged(Report &r_report, HapticsSystem &r_system, const std::string &p_when) {
 	const bool noticed = eventually([&] { return r_system.device_status().io == DeviceIo::DISCONNECTED; }, 5.0);
-	r_report.check(noticed, p_when + ": the device says so: " + r_system.device_status().reason);
+	r_report.check(noticed, p_when + ": the device says so: " + r_system.device_status().reason.c_str());
 	const bool stopped = servo_stops(r_system, 3.0);
 	r_report.check(stopped, p_when + ": the servo stopped: " + r_system.servo_status().message());
 }

@@ -25,7 +25,7 @@ func _ready() -> void:
 			_health = maxi(1, arg.get_slice("=", 1).to_int())
 		elif arg.begins_with("--json="):
 			_json_path = arg.get_slice("=", 1)
-	if not Haptics.pong.is_available():
+	if not PongServo.shared().is_available():
 		print("pong_bench: the extension has no Pong renderer; nothing to measure")
 		get_tree().quit(1)
 		return

@@ -60,17 +60,16 @@ func test_the_probe_feels_it_as_water() -> void:
 	body.add_child(_box(Vector2(20.0, 36.0)))
 	body.position = Vector2(400.0, 450.0)
 	var probe: HapticProbe = HapticProbe.new()
-	var server: HapticsServer = HapticsServer.new()
-	probe.server = server
+	probe.haptics = autofree(TestHaptics.manual())
 	body.add_child(probe)
 	world.add_child(body)
 	for frame: int in 3:
 		await get_tree().physics_frame
-	var state: Dictionary = probe.last_frame.to_dictionary().get("water", {})
-	assert_true(state.get("inside", false), "inside")
-	assert_almost_eq(state.get("drag_n_s_per_m", 0.0), 0.7, 1e-6)
-	assert_almost_eq(state.get("inertia_n", 0.0), 0.3, 1e-6)
+	var felt: HapticFrame = probe.last_frame
+	assert_true(felt.in_water, "inside")
+	assert_almost_eq(felt.water_drag_n_s_per_m, 0.7, 1e-6)
+	assert_almost_eq(felt.water_inertia_n, 0.3, 1e-6)
 	body.position.y = 100.0
 	for frame: int in 2:
 		await get_tree().physics_frame
-	assert_false(probe.last_frame.to_dictionary()["water"]["inside"], "out of it above the surface")
+	assert_false(probe.last_frame.in_water, "out of it above the surface")

@@ -1,7 +1,7 @@
 extends TestSuite
 ## The Haptics autoload, the one door from GDScript to the native server: its settings are
 ## the servo's (force scale and smoothing live in the servo's configuration), refused values
-## leave them as they were, and the native constants and renderers come through by name.
+## leave them as they were, renderers come through by name and values as typed classes.
 
 var _force_scale: float = 1.0
 var _smoothing: bool = true
@@ -55,18 +55,25 @@ func test_reset_settings_gives_the_servos_defaults() -> void:
 	assert_eq(Haptics.control_mode, Haptics.CONTROL_DEVICE)
 
 
-func test_native_constants_and_renderers_by_name() -> void:
-	assert_eq(Haptics.get_constant(&"MAX_CONTACTS"), HapticsServer.MAX_CONTACTS)
-	assert_eq(Haptics.get_constant(&"TELEMETRY_FLAG_CONTACT"), HapticsServer.TELEMETRY_FLAG_CONTACT)
-	expect_error("no constant 'NO_SUCH_THING'")
-	assert_eq(Haptics.get_constant(&"NO_SUCH_THING"), 0)
+func test_renderers_by_name_and_values_as_typed_classes() -> void:
 	assert_true(Haptics.set_render_mode(&"constraint"))
 	assert_eq(Haptics.get_render_mode(), &"constraint")
-	assert_eq(Haptics.get_server().call(&"get_render_mode"), HapticsServer.RENDER_MODE_CONSTRAINT)
 	expect_error("unknown renderer 'joystick'")
 	assert_false(Haptics.set_render_mode(&"joystick"))
 	assert_eq(Haptics.get_render_mode(), &"constraint")
-	assert_eq(Haptics.device.get_simulated_id(), HapticsServer.new().get_simulated_device_id())
+	assert_true(Haptics.set_render_mode(&"movement"))
+	assert_eq(Haptics.get_render_mode(), &"movement")
+	assert_eq(Haptics.device.get_simulated_id(), "simulated")
+	assert_eq(Haptics.device.get_id(), Haptics.device.get_simulated_id())
+	var forces: HapticForces = Haptics.get_forces()
+	assert_eq(forces.parts.size(), HapticForceLimits.MAX_FORCE_PARTS, "every part, in order")
+	var capabilities: HapticDeviceCapabilities = Haptics.device.get_capabilities()
+	assert_gt(capabilities.limits.max_force_n, 0.0)
+	assert_eq(Haptics.device.get_max_force(), capabilities.limits.max_force_n)
+	assert_eq(Haptics.device.get_status().io, HapticDeviceKinds.DeviceIo.OK)
+	var stats: HapticServoStats = Haptics.servo.get_stats()
+	assert_true(stats.running, "the autoload's servo thread")
+	assert_eq(stats.nominal_rate_hz, HapticServoConstants.DEFAULT_RATE_HZ)
 
 
 func test_a_choice_setting_by_its_name() -> void:

@@ -16,18 +16,19 @@ func after_each() -> void:
 	Haptics.control_mode = _mode_before
 
 
-func _velocity_after(frames: int, server: HapticsServer) -> Vector2:
+# The player's velocity after [param frames] physics frames, its probe talking to
+# [param door] (the Haptics autoload when null) and the door's servo stepped with them.
+func _velocity_after(frames: int, door: TestHaptics.Door) -> Vector2:
 	var room: TestRoom = TEST_ROOM.instantiate() as TestRoom
 	var probe: HapticProbe = room.get_node(^"Player/HapticProbe") as HapticProbe
-	if server != null:
-		probe.server = server
+	if door != null:
+		probe.haptics = door
 	add_child_autofree(room)
 	var player: Player = room.player
 	for i: int in frames:
 		await get_tree().physics_frame
-		if server != null:
-			for tick: int in 20:
-				server.step(0.001)
+		if door != null:
+			TestHaptics.run(door, 20)
 	return player.velocity
 
 
@@ -38,15 +39,13 @@ func test_keys_and_device_give_the_same_acceleration() -> void:
 	Input.action_release(&"move_right")
 
 	Haptics.control_mode = Haptics.CONTROL_DEVICE
-	var server: HapticsServer = HapticsServer.new()
-	assert_true(server.open_device("simulated"))
-	# Beyond the workspace edge: the stylus rests on it, so the input vector is exactly 1.
-	assert_true(server.set_hand_target(Vector2(0.3, 0.0)))
-	for tick: int in 300:
-		server.step(0.001)
-	assert_almost_eq(server.get_input_vector(), Vector2.RIGHT, 1e-4)
-	var by_device: Vector2 = await _velocity_after(5, server)
-	server.close_device()
+	var door: TestHaptics.Door = autofree(TestHaptics.manual())
+	assert_eq(door.control_mode, Haptics.CONTROL_DEVICE, "the probe's door drives the player")
+	# Beyond the workspace edge (kept on it): the stylus rests there, the input vector is 1.
+	assert_true(TestHaptics.set_hand_m(door, Vector2(0.3, 0.0)))
+	assert_true(TestHaptics.run(door, 300))
+	assert_almost_eq(door.get_input_vector(), Vector2.RIGHT, 1e-4)
+	var by_device: Vector2 = await _velocity_after(5, door)
 
 	assert_gt(by_keys.x, 100.0, "the keys accelerated the player")
 	assert_almost_eq(by_device, by_keys, 0.01)

@@ -1,29 +1,34 @@
 extends TestSuite
-## The haptic probe on a real body in a real physics world, with a server stepped at 1 kHz
-## of device time for every 50 Hz physics frame. The simulated hand moves the stylus; the
-## probe turns the stylus into the player's input and the contacts into forces.
+## The haptic probe on a real body in a real physics world, with a door of the test's own
+## stepped at 1 kHz of device time for every 50 Hz physics frame. The simulated hand moves
+## the stylus; the probe turns the stylus into the player's input and the contacts into
+## forces.
 
 const TEST_ROOM := preload("res://game/levels/test_room.tscn")
 const K := 2.0
 const B := 1.0
 const TICKS_PER_FRAME := 20
+const NORMAL := HapticMovement.MovementForce.NORMAL
+const FRICTION := HapticMovement.MovementForce.FRICTION
+const WEIGHT := HapticMovement.MovementForce.WEIGHT
+const DRAG := HapticMovement.MovementForce.DRAG
+const INERTIA := HapticMovement.MovementForce.INERTIA
 
-var server: HapticsServer = null
+var door: TestHaptics.Door = null
 var room: TestRoom = null
 var player: Player = null
 var probe: HapticProbe = null
 
 
 func before_each() -> void:
-	server = HapticsServer.new()
-	assert_true(server.open_device("simulated"))
-	assert_true(server.set_config("safety", {"startup_ramp_s": 0.0}))
+	door = autofree(TestHaptics.manual())
+	assert_true(door.configure("safety", {"startup_ramp_s": 0.0}))
 	room = TEST_ROOM.instantiate() as TestRoom
 	player = room.get_node(^"Player") as Player
-	# The player scene's own probe, pointed at this test's manually stepped server before
-	# it enters the tree.
+	# The player scene's own probe, pointed at this test's manually stepped door before it
+	# enters the tree.
 	probe = player.get_node(^"HapticProbe") as HapticProbe
-	probe.server = server
+	probe.haptics = door
 	var material: HapticMaterial = HapticMaterial.new()
 	material.stiffness = K
 	material.friction = B
@@ -31,19 +36,18 @@ func before_each() -> void:
 	add_child_autofree(room)
 
 
-func after_each() -> void:
-	server.close_device()
-
-
 func _run_frames(count: int) -> void:
 	for i: int in count:
 		await get_tree().physics_frame
-		for tick: int in TICKS_PER_FRAME:
-			server.step(0.001)
+		TestHaptics.run(door, TICKS_PER_FRAME)
 
 
 func _hand(normalized: Vector2) -> void:
-	assert_true(server.set_hand_target(normalized * 0.1))
+	assert_true(TestHaptics.set_hand_m(door, normalized * 0.1))
+
+
+func _part(part: HapticMovement.MovementForce) -> Vector2:
+	return TestHaptics.movement_part(door, part)
 
 
 func _add_wall(through: Vector2, normal: Vector2) -> StaticBody2D:
@@ -64,20 +68,19 @@ func _projection(input: Vector2, normal: Vector2) -> Vector2:
 
 
 func _contact_normal() -> Vector2:
-	var contacts: Array = probe.last_frame.to_dictionary().get("contacts", [])
+	var contacts: Array[HapticContact] = probe.last_frame.contacts
 	assert_gt(contacts.size(), 0, "the probe reports a contact")
 	if contacts.is_empty():
 		return Vector2.ZERO
-	var first: Dictionary = contacts[0]
-	return first["normal"]
+	return contacts[0].normal
 
 
 func test_pushing_right_into_the_wall_is_pushed_back_left_with_k_p() -> void:
 	_hand(Vector2.RIGHT)
 	await _run_frames(200)
 	assert_almost_eq(player.position.x, 1240.0 - 18.0, 3.0, "the player is at the wall")
-	var i: Vector2 = server.get_input_vector()
-	var f_n: Vector2 = server.get_forces()["normal"]
+	var i: Vector2 = door.get_input_vector()
+	var f_n: Vector2 = _part(NORMAL)
 	assert_almost_eq(_contact_normal(), Vector2.LEFT, 0.01)
 	assert_lt(f_n.x, -0.1, "pushed back left")
 	assert_almost_eq(f_n, -K * _projection(i, Vector2.LEFT), 1e-3)
@@ -87,15 +90,15 @@ func test_the_force_scale_reaches_a_wall_without_any_material() -> void:
 	# No material on the wall and none on the probe: the servo's default material, and
 	# still the servo's force scale (it used to be multiplied into materials only).
 	probe.default_material = null
-	var default_k: float = server.get_config()["force_model"]["contact_stiffness_n"]
-	assert_true(server.set_config("safety", {"force_scale": 0.5}))
+	var default_k: float = door.get_config()["force_model"]["contact_stiffness_n"]
+	assert_true(door.configure("safety", {"force_scale": 0.5}))
 	_hand(Vector2.RIGHT)
 	await _run_frames(200)
-	var contacts: Array = probe.last_frame.to_dictionary()["contacts"]
-	var first: Dictionary = contacts[0]
-	assert_false(first.has("stiffness_n"), "the frame names no material")
-	var i: Vector2 = server.get_input_vector()
-	var f_n: Vector2 = server.get_forces()["normal"]
+	var contacts: Array[HapticContact] = probe.last_frame.contacts
+	if assert_gt(contacts.size(), 0, "at the wall"):
+		assert_null(contacts[0].material, "the frame names no material")
+	var i: Vector2 = door.get_input_vector()
+	var f_n: Vector2 = _part(NORMAL)
 	assert_lt(f_n.x, -0.1, "pushed back left")
 	assert_almost_eq(f_n, -0.5 * default_k * _projection(i, Vector2.LEFT), 1e-3)
 
@@ -108,8 +111,8 @@ func test_walls_at_thirty_forty_five_and_one_hundred_thirty_five_degrees() -> vo
 		var wall: StaticBody2D = _add_wall(player.position - normal * 60.0, normal)
 		_hand(-normal)
 		await _run_frames(60)
-		var i: Vector2 = server.get_input_vector()
-		var f_n: Vector2 = server.get_forces()["normal"]
+		var i: Vector2 = door.get_input_vector()
+		var f_n: Vector2 = _part(NORMAL)
 		assert_almost_eq(_contact_normal(), normal, 0.02, "contact normal at %d°" % degrees)
 		assert_gt(f_n.length(), 0.1, "force at %d°" % degrees)
 		assert_almost_eq(f_n.normalized(), normal, 0.02, "along the wall's normal at %d°" % degrees)
@@ -124,8 +127,8 @@ func test_sliding_along_the_floor_feels_friction_against_the_motion() -> void:
 	_hand(Vector2(0.7, 0.5))
 	await _run_frames(60)
 	assert_almost_eq(_contact_normal(), Vector2.UP, 0.01, "on the floor")
-	var i: Vector2 = server.get_input_vector()
-	var friction: Vector2 = server.get_forces()["friction"]
+	var i: Vector2 = door.get_input_vector()
+	var friction: Vector2 = _part(FRICTION)
 	var tangential: Vector2 = i - _projection(i, Vector2.UP)
 	assert_gt(player.velocity.x, 10.0, "sliding right")
 	assert_lt(friction.x, -0.05, "friction points left")
@@ -135,9 +138,8 @@ func test_sliding_along_the_floor_feels_friction_against_the_motion() -> void:
 func test_no_contact_means_no_continuous_force() -> void:
 	_hand(Vector2(0.3, -0.2))
 	await _run_frames(10)
-	var contacts: Array = probe.last_frame.to_dictionary()["contacts"]
-	assert_eq(contacts.size(), 0)
-	assert_almost_eq(server.get_forces()["continuous"], Vector2.ZERO, 1e-5)
+	assert_eq(probe.last_frame.contacts.size(), 0)
+	assert_almost_eq(door.get_forces().continuous, Vector2.ZERO, 1e-5)
 
 
 func _drop_crate(mass: float) -> RigidBody2D:
@@ -167,12 +169,12 @@ func _weight_under_crate(mass: float) -> Dictionary:
 	for frame: int in 150:
 		await get_tree().physics_frame
 		for tick: int in TICKS_PER_FRAME:
-			server.step(0.001)
-			var impact: Vector2 = server.get_forces()["impact"]
+			door.servo.step(0.001)
+			var impact: Vector2 = door.get_forces().impact
 			peak_impact = maxf(peak_impact, impact.length())
 			if frame >= 140:
 				impact_at_rest = maxf(impact_at_rest, impact.length())
-	var weight: Vector2 = server.get_forces()["weight"]
+	var weight: Vector2 = _part(WEIGHT)
 	crate.free()
 	floor_body.free()
 	await _run_frames(5)
@@ -197,7 +199,7 @@ func test_standing_on_a_crate_is_not_felt_as_weight() -> void:
 	player.position = Vector2(400.0, crate.position.y - 20.0 - 18.0 - 1.0)
 	_hand(Vector2(0.0, 0.5))
 	await _run_frames(40)
-	assert_almost_eq(server.get_forces()["weight"], Vector2.ZERO, 1e-4)
+	assert_almost_eq(_part(WEIGHT), Vector2.ZERO, 1e-4)
 
 
 func _add_water(rect: Rect2) -> WaterVolume:
@@ -222,10 +224,10 @@ func test_water_drags_against_motion_and_pulls_down_until_left() -> void:
 	var inside_inertia: Vector2 = Vector2.ZERO
 	for frame: int in 150:
 		await _run_frames(1)
-		var water: Dictionary = probe.last_frame.to_dictionary().get("water", {})
-		if water.get("inside", false) and inside_drag == Vector2.ZERO and player.velocity.x > 50.0:
-			inside_drag = server.get_forces()["drag"]
-			inside_inertia = server.get_forces()["inertia"]
+		var in_water: bool = probe.last_frame.in_water
+		if in_water and inside_drag == Vector2.ZERO and player.velocity.x > 50.0:
+			inside_drag = _part(DRAG)
+			inside_inertia = _part(INERTIA)
 			var v: Vector2 = player.velocity / probe.pixels_per_metre
 			assert_almost_eq(inside_drag, -0.6 * v, 0.01, "F = -c v")
 		if player.position.x > 900.0:
@@ -234,8 +236,8 @@ func test_water_drags_against_motion_and_pulls_down_until_left() -> void:
 	assert_almost_eq(inside_inertia, Vector2(0.0, 0.4), 1e-4, "inertia points down")
 	assert_gt(player.position.x, 900.0, "the player left the water")
 	await _run_frames(2)
-	assert_almost_eq(server.get_forces()["drag"], Vector2.ZERO, 1e-4)
-	assert_almost_eq(server.get_forces()["inertia"], Vector2.ZERO, 1e-4)
+	assert_almost_eq(_part(DRAG), Vector2.ZERO, 1e-4)
+	assert_almost_eq(_part(INERTIA), Vector2.ZERO, 1e-4)
 
 
 func test_the_probe_works_on_a_rigid_body_too() -> void:
@@ -247,12 +249,11 @@ func test_the_probe_works_on_a_rigid_body_too() -> void:
 	ball.add_child(shape)
 	ball.position = Vector2(200.0, 600.0)
 	var ball_probe: HapticProbe = HapticProbe.new()
-	ball_probe.server = server
+	ball_probe.haptics = door
 	ball.add_child(ball_probe)
 	room.add_child(ball)
 	await _run_frames(100)
-	var contacts: Array = ball_probe.last_frame.to_dictionary()["contacts"]
+	var contacts: Array[HapticContact] = ball_probe.last_frame.contacts
 	assert_gt(contacts.size(), 0, "resting on the floor")
 	if not contacts.is_empty():
-		var first: Dictionary = contacts[0]
-		assert_almost_eq(first["normal"], Vector2.UP, 0.05)
+		assert_almost_eq(contacts[0].normal, Vector2.UP, 0.05)

@@ -34,7 +34,7 @@ class Runner:
 		move_and_slide()
 
 
-var server: HapticsServer = null
+var door: TestHaptics.Door = null
 var world: Node2D = null
 var layer: TileMapLayer = null
 var body: Runner = null
@@ -44,9 +44,8 @@ var ticks_per_second: int = 0
 
 func before_each() -> void:
 	ticks_per_second = Engine.physics_ticks_per_second
-	server = HapticsServer.new()
-	assert_true(server.open_device("simulated"))
-	assert_true(server.set_config("safety", {"startup_ramp_s": 0.0}))
+	door = autofree(TestHaptics.manual())
+	assert_true(door.configure("safety", {"startup_ramp_s": 0.0}))
 	world = Node2D.new()
 	layer = _tile_layer()
 	world.add_child(layer)
@@ -62,7 +61,7 @@ func before_each() -> void:
 	body.add_child(shape)
 	body.position = Vector2(4.5 * TILE, FLOOR_ROW * TILE - HALF_HEIGHT)
 	probe = HapticProbe.new()
-	probe.server = server
+	probe.haptics = door
 	var material: HapticMaterial = HapticMaterial.new()
 	material.stiffness = K
 	material.friction = B
@@ -74,7 +73,6 @@ func before_each() -> void:
 
 func after_each() -> void:
 	Engine.physics_ticks_per_second = ticks_per_second
-	server.close_device()
 
 
 # Two tiles: (0, 0) plain, (1, 0) with a haptic material in the custom data layer.
@@ -118,8 +116,7 @@ func _wall_material() -> HapticMaterial:
 # One physics frame, the servo stepped at 1 kHz for as long.
 func _frame() -> void:
 	await get_tree().physics_frame
-	for tick: int in roundi(1000.0 / Engine.physics_ticks_per_second):
-		server.step(0.001)
+	TestHaptics.run(door, roundi(1000.0 / Engine.physics_ticks_per_second))
 
 
 # Godot's platformer demo: 120 ticks per second, strong gravity, and here a slow run-up
@@ -134,7 +131,7 @@ func _run_up_slowly() -> void:
 # Runs right until the wall is a contact (at most [param frames] frames); the frame it was
 # first one, or -1.
 func _run_to_wall(frames: int) -> int:
-	assert_true(server.set_hand_target(Vector2.RIGHT * 0.1))
+	_hand(Vector2.RIGHT)
 	for frame: int in frames:
 		await _frame()
 		if _has_normal(Vector2.LEFT):
@@ -142,16 +139,38 @@ func _run_to_wall(frames: int) -> int:
 	return -1
 
 
+func _hand(normalized: Vector2) -> void:
+	assert_true(TestHaptics.set_hand_m(door, normalized * 0.1))
+
+
+func _normal_force() -> Vector2:
+	return TestHaptics.movement_part(door, HapticMovement.MovementForce.NORMAL)
+
+
+func _weight() -> Vector2:
+	return TestHaptics.movement_part(door, HapticMovement.MovementForce.WEIGHT)
+
+
 func _has_normal(normal: Vector2) -> bool:
-	for contact: Dictionary in probe.last_frame.to_dictionary().get("contacts", []):
-		var contact_normal: Vector2 = contact["normal"]
-		if contact_normal.distance_to(normal) < 0.01:
+	for contact: HapticContact in probe.last_frame.contacts:
+		if contact.normal.distance_to(normal) < 0.01:
 			return true
 	return false
 
 
+# The material [param contact] names, or one whose gains are -1 when there is no contact or
+# it names none.
+func _material_of(contact: HapticContact) -> HapticContactMaterial:
+	if contact != null and contact.material != null:
+		return contact.material
+	var none: HapticContactMaterial = HapticContactMaterial.new()
+	none.stiffness_n = -1.0
+	none.friction_n = -1.0
+	return none
+
+
 func test_a_tile_wall_is_pushed_back_on_every_frame_while_standing_on_the_same_layer() -> void:
-	assert_true(server.set_hand_target(Vector2.RIGHT * 0.1))
+	_hand(Vector2.RIGHT)
 	var wall_x: float = WALL_COLUMN * TILE - HALF_WIDTH
 	var frames_at_wall: int = 0
 	var impacts: Array[Vector2] = []
@@ -163,8 +182,8 @@ func test_a_tile_wall_is_pushed_back_on_every_frame_while_standing_on_the_same_l
 		frames_at_wall += 1
 		if frames_at_wall < 3:
 			continue  # the smoothed force settles after the first touch
-		var i: Vector2 = server.get_input_vector()
-		var f_n: Vector2 = server.get_forces()["normal"]
+		var i: Vector2 = door.get_input_vector()
+		var f_n: Vector2 = _normal_force()
 		assert_true(_has_normal(Vector2.UP), "frame %d: the floor is a contact" % frame)
 		assert_true(_has_normal(Vector2.LEFT), "frame %d: the wall is a contact" % frame)
 		assert_almost_eq(f_n.x, -K * i.x, 0.02 * K, "frame %d: wall push-back k·i" % frame)
@@ -182,8 +201,8 @@ func test_a_wall_pushed_after_a_slow_run_up_is_felt_on_every_frame() -> void:
 		await _frame()
 		if frame < SETTLE_FRAMES:
 			continue
-		var i: Vector2 = server.get_input_vector()
-		var f_n: Vector2 = server.get_forces()["normal"]
+		var i: Vector2 = door.get_input_vector()
+		var f_n: Vector2 = _normal_force()
 		if not _has_normal(Vector2.LEFT):
 			lost.append(frame)
 		if absf(f_n.x + K * i.x) > 0.02 * K or f_n.x > -0.5:
@@ -197,7 +216,7 @@ func test_walking_away_from_a_wall_leaves_it_at_once() -> void:
 	assert_gt(await _run_to_wall(300), -1, "the runner reached the wall")
 	for frame: int in 60:
 		await _frame()
-	assert_true(server.set_hand_target(Vector2.LEFT * 0.1))
+	_hand(Vector2.LEFT)
 	var stuck: PackedStringArray = []
 	var away: int = 0
 	for frame: int in 60:
@@ -209,7 +228,7 @@ func test_walking_away_from_a_wall_leaves_it_at_once() -> void:
 				stuck.append("%.2f px" % gap)
 	assert_gt(away, 30, "the runner walked away")
 	assert_eq(stuck, PackedStringArray(), "gaps at which the wall was still a contact")
-	assert_almost_eq(server.get_forces()["normal"], Vector2.ZERO, 1e-6, "no push-back")
+	assert_almost_eq(_normal_force(), Vector2.ZERO, 1e-6, "no push-back")
 
 
 func test_a_ceiling_hit_is_a_contact_until_the_body_falls_away() -> void:
@@ -235,7 +254,7 @@ func test_a_ceiling_hit_is_a_contact_until_the_body_falls_away() -> void:
 func test_every_new_floor_tile_is_not_an_impact_but_a_new_wall_tile_is() -> void:
 	# Walking along the floor crosses tile borders: contacts of the same floor normal
 	# continue (no impact per tile), only the wall is hit.
-	assert_true(server.set_hand_target(Vector2.RIGHT * 0.1))
+	_hand(Vector2.RIGHT)
 	var impacts: Array[Vector2] = []
 	probe.impact.connect(func(_c: Object, n: Vector2, _s: float) -> void: impacts.append(n))
 	for frame: int in 20:
@@ -248,16 +267,20 @@ func test_every_new_floor_tile_is_not_an_impact_but_a_new_wall_tile_is() -> void
 
 func test_a_tile_takes_its_material_from_the_tile_set_custom_data() -> void:
 	var material: HapticMaterial = _wall_material()
-	assert_true(server.set_hand_target(Vector2.RIGHT * 0.1))
-	var found: Dictionary = {}
+	_hand(Vector2.RIGHT)
+	var found: Dictionary[Vector2, HapticContact] = {}
 	for frame: int in 150:
 		await _frame()
-		for contact: Dictionary in probe.last_frame.to_dictionary().get("contacts", []):
-			found[contact["normal"]] = contact
-	var wall: Dictionary = found.get(Vector2.LEFT, {})
-	var ground: Dictionary = found.get(Vector2.UP, {})
-	assert_almost_eq(wall.get("stiffness_n", 0.0), material.stiffness, 1e-6, "the wall tile's")
-	assert_almost_eq(ground.get("stiffness_n", 0.0), K, 1e-6, "the floor: the default")
+		for contact: HapticContact in probe.last_frame.contacts:
+			found[contact.normal] = contact
+	var wall: HapticContactMaterial = _material_of(
+		found[Vector2.LEFT] if found.has(Vector2.LEFT) else null
+	)
+	var ground: HapticContactMaterial = _material_of(
+		found[Vector2.UP] if found.has(Vector2.UP) else null
+	)
+	assert_almost_eq(wall.stiffness_n, material.stiffness, 1e-6, "the wall tile's")
+	assert_almost_eq(ground.stiffness_n, K, 1e-6, "the floor: the default")
 
 
 func test_a_flipped_alternative_tile_feels_like_its_base_tile_unless_given_its_own() -> void:
@@ -272,12 +295,12 @@ func test_a_flipped_alternative_tile_feels_like_its_base_tile_unless_given_its_o
 	for row: int in range(FLOOR_ROW - 4, FLOOR_ROW):
 		layer.set_cell(Vector2i(WALL_COLUMN, row), 0, Vector2i(1, 0), alternative)
 	assert_gt(await _run_to_wall(150), -1, "the runner reached the flipped wall")
-	var wall: Dictionary = {}
-	for contact: Dictionary in probe.last_frame.to_dictionary().get("contacts", []):
-		if contact["normal"] == Vector2.LEFT:
+	var wall: HapticContact = null
+	for contact: HapticContact in probe.last_frame.contacts:
+		if contact.normal == Vector2.LEFT:
 			wall = contact
-	assert_almost_eq(wall.get("stiffness_n", 0.0), material.stiffness, 1e-6, "the base tile's")
-	assert_almost_eq(wall.get("friction_n", 0.0), material.friction, 1e-6, "the base tile's")
+	assert_almost_eq(_material_of(wall).stiffness_n, material.stiffness, 1e-6, "the base tile's")
+	assert_almost_eq(_material_of(wall).friction_n, material.friction, 1e-6, "the base tile's")
 	var own: HapticMaterial = HapticMaterial.new()
 	own.stiffness = 7.0
 	flipped.set_custom_data(HapticMaterial.TILE_LAYER, own)
@@ -297,12 +320,12 @@ func test_a_physics_material_stands_in_when_no_haptic_material_is_given() -> voi
 	probe.default_material = null
 	await _frame()
 	await _frame()
-	var contacts: Array = probe.last_frame.to_dictionary().get("contacts", [])
+	var contacts: Array[HapticContact] = probe.last_frame.contacts
 	assert_eq(contacts.size(), 1, "standing on the floor")
 	if contacts.size() == 1:
-		var contact: Dictionary = contacts[0]
-		assert_almost_eq(contact.get("friction_n", -1.0), expected.friction, 1e-6)
-		assert_almost_eq(contact.get("stiffness_n", -1.0), expected.stiffness, 1e-6)
+		var material: HapticContactMaterial = _material_of(contacts[0])
+		assert_almost_eq(material.friction_n, expected.friction, 1e-6)
+		assert_almost_eq(material.stiffness_n, expected.stiffness, 1e-6)
 
 
 func test_the_physics_material_mapping() -> void:
@@ -324,17 +347,17 @@ func test_the_physics_material_mapping() -> void:
 
 
 func test_own_weight_presses_the_hand_down_only_while_standing_and_only_when_asked() -> void:
-	var g: float = server.get_config()["force_model"]["gravity_n_per_kg"]
+	var g: float = door.get_config()["force_model"]["gravity_n_per_kg"]
 	for frame: int in 20:
 		await _frame()
 	assert_true(body.is_on_floor())
-	assert_almost_eq(server.get_forces()["weight"], Vector2.ZERO, 1e-6, "off by default")
+	assert_almost_eq(_weight(), Vector2.ZERO, 1e-6, "off by default")
 	probe.own_weight_kg = 0.5
 	for frame: int in 5:
 		await _frame()
-	assert_almost_eq(server.get_forces()["weight"], Vector2(0.0, 0.5 * g), 1e-3, "m g, down")
+	assert_almost_eq(_weight(), Vector2(0.0, 0.5 * g), 1e-3, "m g, down")
 	body.position.y -= 200.0  # in the air
 	for frame: int in 3:
 		await _frame()
 	assert_false(body.is_on_floor())
-	assert_almost_eq(server.get_forces()["weight"], Vector2.ZERO, 1e-3, "not while falling")
+	assert_almost_eq(_weight(), Vector2.ZERO, 1e-3, "not while falling")

@@ -1,23 +1,24 @@
 extends TestSuite
-## Real device drivers through HapticsServer, each over its scripted transport (a software
-## model of the hardware, "scripted:<driver>"): listed only when HAPTICS_SCRIPTED_DEVICES=1,
-## a wall is felt through the driver's protocol, unplugging stops rendering with the
-## driver's own reason, the cable stays out across reopen attempts, and replugging reopens.
+## Real device drivers through a door of the test's own, each over its scripted transport (a
+## software model of the hardware, "scripted:<driver>"): listed only when
+## HAPTICS_SCRIPTED_DEVICES=1, a wall is felt through the driver's protocol, unplugging stops
+## rendering with the driver's own reason, the cable stays out across reopen attempts, and
+## replugging reopens.
 
 const VARIABLE := "HAPTICS_SCRIPTED_DEVICES"
 ## Every driver with a scripted model.
 const SCRIPTED_DRIVERS: Array[String] = ["falcon", "dualsense", "evdev", "hid-pid"]
 
-var server: HapticsServer = null
+var door: TestHaptics.Door = null
 
 
 func before_each() -> void:
 	OS.set_environment(VARIABLE, "1")
-	server = HapticsServer.new()
+	door = autofree(TestHaptics.Door.new())
 
 
 func after_each() -> void:
-	server.close_device()
+	door.device.close()
 	OS.unset_environment(VARIABLE)
 
 
@@ -25,9 +26,11 @@ func test_scripted_devices_are_listed_only_when_asked_for() -> void:
 	var ids: Array[String] = _listed_ids()
 	for driver: String in SCRIPTED_DRIVERS:
 		assert_has(ids, "scripted:" + driver)
-		var entry: Dictionary = server.get_device("scripted:" + driver)
-		assert_eq(entry["driver"], driver)
-		assert_true(entry["openable"], "%s can be opened" % driver)
+		var entry: HapticDeviceInfo = TestHaptics.find_device(door, "scripted:" + driver)
+		if not assert_not_null(entry, driver):
+			continue
+		assert_eq(entry.driver, driver)
+		assert_true(entry.openable, "%s can be opened" % driver)
 	OS.unset_environment(VARIABLE)
 	for id: String in _listed_ids():
 		assert_false(id.begins_with("scripted:"), "%s is hidden from players" % id)
@@ -35,60 +38,67 @@ func test_scripted_devices_are_listed_only_when_asked_for() -> void:
 
 func test_a_wall_is_felt_through_each_driver() -> void:
 	for driver: String in SCRIPTED_DRIVERS:
-		assert_true(server.open_device("scripted:" + driver), driver)
-		var capabilities: Dictionary = server.get_device_capabilities()
-		assert_true(capabilities["physical"], "%s is rendered as a physical device" % driver)
-		assert_true(server.start())
+		assert_true(door.device.open("scripted:" + driver), driver)
+		var capabilities: HapticDeviceCapabilities = door.device.get_capabilities()
+		assert_true(capabilities.physical, "%s is rendered as a physical device" % driver)
+		assert_true(door.servo.start())
 		# The floor under the avatar; the stylus pushed down into it (game axes: y down).
 		var pressed: bool = await _press_into_floor(0.4)
 		assert_true(pressed, "%s: the floor pushes back up through the driver" % driver)
-		var stats: Dictionary = server.get_stats()
-		assert_gt(stats["device_io_cycles"], 10, "%s: its own I/O thread ran" % driver)
-		server.stop()
-		assert_eq(server.get_device_status()["io"], "ok")
+		var stats: HapticServoStats = door.servo.get_stats()
+		assert_gt(stats.device_io_cycles, 10, "%s: its own I/O thread ran" % driver)
+		door.servo.stop()
+		assert_eq(door.device.get_status().io, HapticDeviceKinds.DeviceIo.OK)
 
 
 func test_unplug_stops_rendering_and_the_cable_stays_out_until_replugged() -> void:
 	for driver: String in SCRIPTED_DRIVERS:
 		var id: String = "scripted:" + driver
-		assert_true(server.open_device(id))
-		assert_true(server.start())
+		assert_true(door.device.open(id))
+		assert_true(door.servo.start())
 		await wait_seconds(0.1)
-		assert_true(server.set_simulated_plugged(false))
-		var stopped: bool = await wait_until(func() -> bool: return not server.is_running(), 3.0)
+		assert_true(door.device.set_simulated_plugged(false))
+		var stopped: bool = await wait_until(
+			func() -> bool: return not door.servo.is_running(), 3.0
+		)
 		assert_true(stopped, "%s: the servo stopped by itself" % driver)
-		var status: Dictionary = server.get_device_status()
-		assert_eq(status["io"], "disconnected", driver)
-		assert_ne(status["reason"], "", "%s says why" % driver)
-		assert_has(server.get_servo_status(), "disconnected")
-		assert_false(server.get_device(id)["openable"], "%s: unplugged, not openable" % driver)
+		var status: HapticDeviceStatus = door.device.get_status()
+		assert_eq(status.io, HapticDeviceKinds.DeviceIo.DISCONNECTED, driver)
+		assert_ne(status.reason, "", "%s says why" % driver)
+		assert_has(door.servo.get_status(), "disconnected")
+		assert_true(door.device.is_lost())
+		assert_false(_openable(id), "%s: unplugged, not openable" % driver)
 		expect_error("unplugged")
-		assert_false(server.open_device(id), "%s: reopening fails while unplugged" % driver)
-		assert_true(server.set_simulated_plugged(true))
-		assert_true(server.get_device(id)["openable"])
-		assert_true(server.open_device(id), "%s: replugged, it reopens" % driver)
-		assert_true(server.start())
+		assert_false(door.device.open(id), "%s: reopening fails while unplugged" % driver)
+		assert_true(door.device.set_simulated_plugged(true))
+		assert_true(_openable(id))
+		assert_true(door.device.open(id), "%s: replugged, it reopens" % driver)
+		assert_true(door.servo.start())
 		await wait_seconds(0.1)
-		assert_true(server.is_running())
-		server.stop()
+		assert_true(door.servo.is_running())
+		door.servo.stop()
 
 
 func _listed_ids() -> Array[String]:
 	var ids: Array[String] = []
-	for device: Dictionary in server.list_devices():
-		ids.append(str(device["id"]))
+	for device: HapticDeviceInfo in door.device.list_present():
+		ids.append(device.id)
 	return ids
+
+
+func _openable(id: String) -> bool:
+	var entry: HapticDeviceInfo = TestHaptics.find_device(door, id)
+	return entry != null and entry.openable
 
 
 # Pushes the stylus 2 cm into a floor for up to p_seconds; true once the rendered force
 # points up (game axes: negative y) by more than 0.1 N.
 func _press_into_floor(seconds: float) -> bool:
-	server.set_hand_target(Vector2(0.0, 0.02))
+	TestHaptics.set_hand_m(door, Vector2(0.0, 0.02))
 	var deadline: float = Time.get_ticks_msec() + seconds * 1000.0
 	while Time.get_ticks_msec() < deadline:
-		server.submit_frame({"contacts": [{"normal": Vector2.UP}]})
+		door.submit_frame(TestHaptics.wall(Vector2.UP))
 		await wait_physics_frames(1)
-		var total: Vector2 = server.get_forces()["total"]
-		if total.y < -0.1:
+		if door.get_forces().total.y < -0.1:
 			return true
 	return false

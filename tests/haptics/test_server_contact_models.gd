@@ -1,87 +1,83 @@
 extends TestSuite
-## The two contact models through the binding (force_model.contact_model), stepped manually:
-## the issue's two measurements on a real device, a horizontal push into a wall while
-## standing on a floor and an input pointing away from a wall that is still in contact, each
-## under the per-contact default and under the paper's normalised sum. Game axes: x right,
+## The two contact models (force_model.contact_model) on a door of the test's own, stepped
+## manually: the issue's two measurements on a real device, a horizontal push into a wall
+## while standing on a floor and an input pointing away from a wall that is still in contact,
+## each under the per-contact default and under the paper's normalised sum. Game axes: x right,
 ## y down; the floor's normal is UP, a wall on the right has LEFT. The simulated hand is a
-## relaxed grip, so a force moves it a little: expectations use the input the server reports.
+## relaxed grip, so a force moves it a little: expectations use the input the door reports.
 
 const K := 2.0
 const B := 1.0
 const TOL := 1e-4
 const TICKS_PER_FRAME := 20
+const NORMAL := HapticMovement.MovementForce.NORMAL
 
-var server: HapticsServer = null
+var door: TestHaptics.Door = null
 
 
 func before_each() -> void:
-	server = HapticsServer.new()
-	assert_true(server.open_device("simulated"))
-	assert_true(server.set_config("safety", {"startup_ramp_s": 0.0, "slew_rate_n_per_s": 0.0}))
-	assert_true(server.set_config("force_model", {"dead_zone": 0.0}))
+	door = autofree(TestHaptics.manual())
+	assert_true(door.configure("safety", {"startup_ramp_s": 0.0, "slew_rate_n_per_s": 0.0}))
+	assert_true(door.configure("force_model", {"dead_zone": 0.0}))
 
 
-func after_each() -> void:
-	server.close_device()
-
-
-func _contacts(normals: Array[Vector2]) -> Dictionary:
-	var contacts: Array[Dictionary] = []
+func _contacts(normals: Array[Vector2]) -> HapticFrame:
+	var contacts: Array[HapticContact] = []
 	for normal: Vector2 in normals:
-		contacts.append({"normal": normal, "stiffness_n": K, "friction_n": B})
-	return {"contacts": contacts}
+		contacts.append(TestHaptics.contact(normal, K, B))
+	return TestHaptics.frame_of(contacts)
 
 
 # Moves the simulated hand to [param hand_m] and renders [param frame] until it is there.
-func _settle(hand_m: Vector2, frame: Dictionary, ticks: int = 300) -> void:
-	assert_true(server.set_hand_target(hand_m))
-	for i: int in ticks:
-		assert_true(server.submit_frame(frame))
-		assert_true(server.step(0.001))
+func _settle(hand_m: Vector2, frame: HapticFrame, ticks: int = 300) -> void:
+	assert_true(TestHaptics.set_hand_m(door, hand_m))
+	assert_true(TestHaptics.run(door, ticks, frame))
 
 
 func _use(model: String, smoothing: bool) -> void:
-	assert_true(server.set_config("force_model", {"contact_model": model}))
-	assert_true(server.set_config("smoothing", {"enabled": smoothing}))
+	assert_true(door.configure("force_model", {"contact_model": model}))
+	assert_true(door.configure("smoothing", {"enabled": smoothing}))
 
 
-func test_the_default_is_per_contact_and_both_names_and_constants_are_accepted() -> void:
-	var config: Dictionary = server.get_config()
-	assert_eq(config["force_model"]["contact_model"], HapticsServer.CONTACT_MODEL_PER_CONTACT)
-	assert_true(server.set_config("force_model", {"contact_model": "paper_sum"}))
-	assert_eq(
-		server.get_config()["force_model"]["contact_model"], HapticsServer.CONTACT_MODEL_PAPER_SUM
-	)
-	assert_true(
-		server.set_config("force_model", {"contact_model": HapticsServer.CONTACT_MODEL_PER_CONTACT})
-	)
-	expect_error("force_model.contact_model must be one of per_contact, paper_sum")
-	assert_false(server.set_config("force_model", {"contact_model": "sum"}))
-	for field: Dictionary in server.get_config_fields():
+func _normal_force() -> Vector2:
+	return TestHaptics.movement_part(door, NORMAL)
+
+
+func test_the_default_is_per_contact_and_both_names_and_indices_are_accepted() -> void:
+	assert_eq(door.get_choice("force_model", "contact_model"), "per_contact")
+	assert_true(door.configure("force_model", {"contact_model": "paper_sum"}))
+	assert_eq(door.get_choice("force_model", "contact_model"), "paper_sum")
+	var choices: Array = []
+	for field: Dictionary in TestHaptics.config_fields():
 		if field["key"] == "contact_model":
-			assert_eq(field["choices"], ["per_contact", "paper_sum"])
+			choices = field["choices"]
 			assert_eq(field["kind"], "choice")
+	assert_eq(choices, ["per_contact", "paper_sum"])
+	assert_true(door.configure("force_model", {"contact_model": choices.find("per_contact")}))
+	assert_eq(door.get_choice("force_model", "contact_model"), "per_contact", "by its index")
+	expect_error("force_model.contact_model must be one of per_contact, paper_sum")
+	assert_false(door.configure("force_model", {"contact_model": "sum"}))
 
 
 func test_floor_and_wall_a_horizontal_push_gets_the_walls_push_back_only() -> void:
 	_use("per_contact", false)
 	_settle(Vector2(0.06, 0.0), _contacts([Vector2.UP, Vector2.LEFT]))
-	var i: Vector2 = server.get_input_vector()
-	var forces: Dictionary = server.get_forces()
+	var i: Vector2 = door.get_input_vector()
+	var forces: HapticForces = door.get_forces()
 	assert_gt(i.x, 0.3, "the hand pushes right")
 	assert_almost_eq(i.y, 0.0, 1e-3, "and not down")
 	var expected: Vector2 = Vector2(-K * i.x, 0.0)
-	assert_almost_eq(forces["normal"], expected, TOL, "exactly the wall's -k p")
-	assert_almost_eq(forces["total"].y, 0.0, 1e-3, "nothing upward")
+	assert_almost_eq(forces.parts[NORMAL], expected, TOL, "exactly the wall's -k p")
+	assert_almost_eq(forces.total.y, 0.0, 1e-3, "nothing upward")
 	_settle(Vector2(0.06, 0.0), _contacts([Vector2.LEFT]), 5)
-	assert_almost_eq(server.get_forces()["normal"], expected, TOL, "the same as the wall alone")
+	assert_almost_eq(_normal_force(), expected, TOL, "the same as the wall alone")
 
 
 func test_floor_and_wall_the_paper_sum_pushes_at_45_degrees() -> void:
 	_use("paper_sum", false)
 	_settle(Vector2(0.06, 0.0), _contacts([Vector2.UP, Vector2.LEFT]))
-	var i: Vector2 = server.get_input_vector()
-	var f_n: Vector2 = server.get_forces()["normal"]
+	var i: Vector2 = door.get_input_vector()
+	var f_n: Vector2 = _normal_force()
 	var n: Vector2 = (Vector2.UP + Vector2.LEFT).normalized()
 	assert_almost_eq(f_n, -K * n * i.dot(n), TOL, "-k p on the 45 degree normal")
 	assert_almost_eq(f_n.x, f_n.y, TOL, "up and left alike")
@@ -94,14 +90,14 @@ func test_pointing_away_from_a_wall_in_contact_pulls_only_under_the_paper_sum() 
 	var away: Vector2 = Vector2(-0.047, 0.0)
 	_use("paper_sum", false)
 	_settle(away, _contacts([Vector2.LEFT]))
-	var i: Vector2 = server.get_input_vector()
+	var i: Vector2 = door.get_input_vector()
 	assert_almost_eq(i.length(), 0.47, 0.05, "the pull draws the relaxed hand in a little")
-	var pull: Vector2 = server.get_forces()["normal"]
+	var pull: Vector2 = _normal_force()
 	assert_almost_eq(pull, Vector2(-K * i.x, 0.0), TOL, "paper_sum: k |i| into the wall")
 	assert_gt(pull.x, 0.8)
 	_use("per_contact", false)
 	_settle(away, _contacts([Vector2.LEFT]), 5)
-	assert_almost_eq(server.get_forces()["total"], Vector2.ZERO, TOL, "per_contact: nothing")
+	assert_almost_eq(door.get_forces().total, Vector2.ZERO, TOL, "per_contact: nothing")
 
 
 func test_one_physics_frame_of_contact_while_pointing_away_through_the_filter() -> void:
@@ -110,14 +106,14 @@ func test_one_physics_frame_of_contact_while_pointing_away_through_the_filter() 
 	var into_wall: Dictionary = {"paper_sum": 0.0, "per_contact": 0.0}
 	for model: String in into_wall:
 		_use(model, true)
-		_settle(Vector2(-0.047, 0.0), {})
+		_settle(Vector2(-0.047, 0.0), HapticFrame.new())
 		var most: float = 0.0
 		for tick: int in TICKS_PER_FRAME + 200:
-			var frame: Dictionary = _contacts([Vector2.LEFT]) if tick < TICKS_PER_FRAME else {}
-			assert_true(server.submit_frame(frame))
-			assert_true(server.step(0.001))
-			var total: Vector2 = server.get_forces()["total"]
-			most = maxf(most, total.x)
+			var frame: HapticFrame = (
+				_contacts([Vector2.LEFT]) if tick < TICKS_PER_FRAME else HapticFrame.new()
+			)
+			assert_true(TestHaptics.run(door, 1, frame))
+			most = maxf(most, door.get_forces().total.x)
 		into_wall[model] = most
 	assert_gt(into_wall["paper_sum"], 0.3, "the paper's model pulls the hand into the wall")
 	assert_almost_eq(into_wall["per_contact"], 0.0, 1e-6, "the per-contact model does not")

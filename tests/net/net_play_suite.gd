@@ -38,7 +38,7 @@ func after_each() -> void:
 
 ## The host's play, begun; null (and a failure) without the Pong renderer.
 func _open_play() -> RecordingPlay:
-	if not assert_true(Haptics.pong.is_available(), "the extension has the Pong renderer"):
+	if not assert_true(PongServo.shared().is_available(), "the extension has the Pong renderer"):
 		return null
 	_pong = PongTestScreen.stepped()
 	add_child(_pong)

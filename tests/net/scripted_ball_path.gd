@@ -51,10 +51,10 @@ func _one_delay() -> float:
 
 ## Takes every paddle out of play in the servo: only the court and the commands move the ball.
 static func no_paddles() -> void:
-	var input: HapticPongInput = HapticPongInput.new()
+	var input: PongInput = PongInput.new()
 	for seat: int in 2:
-		var player: HapticPongPlayerInput = HapticPongPlayerInput.new()
+		var player: PongPlayerInput = PongPlayerInput.new()
 		player.active = false
 		player.kinematic = true
 		input.players.append(player)
-	Haptics.pong.set_input(input)
+	PongServo.shared().set_input(input)

@@ -21,7 +21,7 @@ func test_a_correction_outside_the_court_lands_inside_it() -> void:
 		var outside: Vector3 = Vector3(court.half_width + 0.5, -0.2, -court.half_length - 0.44)
 		ball.put(outside, Vector3(0.0, 0.0, -1.0), Vector3.ZERO)
 		match_node.run_until(func() -> bool: return false, 0.002)
-		var at: Vector3 = Haptics.pong.get_state().ball_position
+		var at: Vector3 = PongServo.shared().get_state().ball_position
 		var r: float = court.ball_radius
 		assert_almost_eq(at.y, r, 0.05, "%d players: on the floor, not under it" % players)
 		assert_lt(absf(at.x), court.half_width, "%d players: inside the side wall" % players)
@@ -42,17 +42,17 @@ func test_a_transfer_glides_the_ball_over_unless_our_paddle_touched_it_since() -
 	var here: Vector3 = Vector3(0.0, 1.5, 1.0)
 	var there: Vector3 = Vector3(0.8, 1.5, -1.0)  # 2.15 m away, in the other territory.
 	ball.put(here, Vector3.ZERO, Vector3.ZERO)
-	Haptics.pong.step_ticks(1)
+	PongServo.shared().step_ticks(1)
 	ball.transfer(false, [there, Vector3(0, 1, 0), Vector3.ZERO], 0.05, 10.0)
-	Haptics.pong.step_ticks(1)
-	var state: HapticPongState = Haptics.pong.get_state()
+	PongServo.shared().step_ticks(1)
+	var state: PongState = PongServo.shared().get_state()
 	var moved: float = (state.ball_position - here).length()
 	assert_gt(moved, 0.001, "on its way")
 	assert_lt(moved, 0.05, "no jump: a glide")
 	assert_almost_eq(state.ball_velocity.y, 1.0, 0.01, "the velocity taken at once")
 	assert_eq(state.territory, 1, "the corrected ball's territory")
-	Haptics.pong.step_ticks(300)
-	state = Haptics.pong.get_state()
+	PongServo.shared().step_ticks(300)
+	state = PongServo.shared().get_state()
 	var predictor: PongPredictor = PongPredictor.new(court)
 	var target: Array[Vector3] = PongNetSmoother.extrapolate(
 		predictor, there, Vector3(0, 1, 0), court.gravity, 0.301
@@ -63,28 +63,28 @@ func test_a_transfer_glides_the_ball_over_unless_our_paddle_touched_it_since() -
 	ball.touched(20.0)
 	var before: Vector3 = state.ball_position
 	ball.transfer(false, [here, Vector3.ZERO, Vector3.ZERO], 0.1, 20.05)
-	Haptics.pong.step_ticks(1)
-	state = Haptics.pong.get_state()
+	PongServo.shared().step_ticks(1)
+	state = PongServo.shared().get_state()
 	assert_lt((state.ball_position - before).length(), 0.01, "kept: it only flew on")
 	assert_eq(ball.ignored, 1)
 	ball.transfer(false, [here, Vector3.ZERO, Vector3.ZERO], 0.01, 20.05)
-	Haptics.pong.step_ticks(1)
+	PongServo.shared().step_ticks(1)
 	assert_lt(
-		(Haptics.pong.get_state().ball_position - here).length(),
+		(PongServo.shared().get_state().ball_position - here).length(),
 		(state.ball_position - here).length() - 0.005,
 		"a state sent after the touch corrects it"
 	)
 	# A serve is put at once.
 	ball.transfer(true, [here, Vector3.ZERO, Vector3.ZERO], 0.0, 30.0)
-	Haptics.pong.step_ticks(1)
-	assert_lt((Haptics.pong.get_state().ball_position - here).length(), 0.001, "served")
+	PongServo.shared().step_ticks(1)
+	assert_lt((PongServo.shared().get_state().ball_position - here).length(), 0.001, "served")
 	# The door checks a correction like a serve.
 	expect_error("outside the court")
-	assert_false(Haptics.pong.correct_ball(Vector3(0, -1, 0), Vector3.ZERO))
+	assert_false(PongServo.shared().correct_ball(Vector3(0, -1, 0), Vector3.ZERO))
 
 
 func _open(players: int) -> PongMatch:
-	if not assert_true(Haptics.pong.is_available(), "the extension has the Pong renderer"):
+	if not assert_true(PongServo.shared().is_available(), "the extension has the Pong renderer"):
 		return null
 	_pong = PongTestScreen.stepped(PongMatch.Mode.DEMO, players)
 	add_child(_pong)

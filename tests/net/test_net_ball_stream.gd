@@ -12,14 +12,14 @@ const ScriptedBallPath := preload("res://tests/net/scripted_ball_path.gd")
 
 const SECONDS: float = 20.0
 ## The master sends on every 8th servo state: 125 Hz, PongNetPlay.MAX_STREAM_HZ.
-const TICKS_PER_SEND: int = roundi(1.0 / (PongNetPlay.MAX_STREAM_HZ * HapticsPong.TICK_S))
+const TICKS_PER_SEND: int = roundi(1.0 / (PongNetPlay.MAX_STREAM_HZ * PongServo.TICK_S))
 const FRAMES_PER_S: float = 60.0
 const ISSUE_MAX_TICK_MOVE_M: float = 0.05
 
 
 func test_a_follower_on_the_issue_path_uses_its_states_and_its_ball_never_jumps() -> void:
 	set_timeout(180.0)
-	if not assert_true(Haptics.pong.is_available(), "the extension has the Pong renderer"):
+	if not assert_true(PongServo.shared().is_available(), "the extension has the Pong renderer"):
 		return
 	_pong = PongTestScreen.stepped(PongMatch.Mode.DEMO, 2)
 	add_child(_pong)
@@ -51,11 +51,11 @@ func test_a_follower_on_the_issue_path_uses_its_states_and_its_ball_never_jumps(
 	var predictor: PongPredictor = PongPredictor.new(court)
 	var served: Vector3 = master["velocity0"]
 	ball.put(flight[0], served, Vector3.ZERO)  # The serve, on both alike.
-	Haptics.pong.step_ticks(1)
+	PongServo.shared().step_ticks(1)
 	var spread: PackedFloat32Array = PackedFloat32Array()
 	var largest_move: float = 0.0
 	var largest_excess: float = 0.0  # Beyond what its own flight moved it.
-	var previous: HapticPongState = Haptics.pong.get_state()
+	var previous: PongState = PongServo.shared().get_state()
 	var next: int = 0
 	var tick: int = 1
 	var frame: int = 0
@@ -72,16 +72,16 @@ func test_a_follower_on_the_issue_path_uses_its_states_and_its_ball_never_jumps(
 		ball.follow(now, predictor, court.gravity)
 		frame += 1
 		var frame_end: int = mini(
-			roundi(frame / FRAMES_PER_S / HapticsPong.TICK_S), flight.size() - 1
+			roundi(frame / FRAMES_PER_S / PongServo.TICK_S), flight.size() - 1
 		)
 		while tick < frame_end:
 			tick += 1
-			Haptics.pong.step_ticks(1)
-			var state: HapticPongState = Haptics.pong.get_state()
+			PongServo.shared().step_ticks(1)
+			var state: PongState = PongServo.shared().get_state()
 			var move: float = (state.ball_position - previous.ball_position).length()
 			var flown: float = (
 				maxf(state.ball_velocity.length(), previous.ball_velocity.length())
-				* HapticsPong.TICK_S
+				* PongServo.TICK_S
 			)
 			largest_move = maxf(largest_move, move)
 			largest_excess = maxf(largest_excess, move - flown)
@@ -120,7 +120,7 @@ func test_a_follower_on_the_issue_path_uses_its_states_and_its_ball_never_jumps(
 	assert_lt(largest_move, ISSUE_MAX_TICK_MOVE_M, "the ball never moves 5 cm in a tick")
 	# The servo's own figure, the one a networked match reports, saw at least what the ball
 	# moved beyond its flight here.
-	var servo_step: float = Haptics.pong.get_state().ball_correction_step_max
+	var servo_step: float = PongServo.shared().get_state().ball_correction_step_max
 	assert_gt(servo_step, largest_excess - 1e-4, "the servo's own figure")
 	assert_lt(servo_step, ISSUE_MAX_TICK_MOVE_M, "the servo's own figure")
 	# A correction a frame at most, whenever a state was played: on most frames.
@@ -140,19 +140,19 @@ func test_a_follower_on_the_issue_path_uses_its_states_and_its_ball_never_jumps(
 ## tick's position (index 0: the serve), the velocity served, and its stream states
 ## [seq, sent, position, velocity, spin] (sent: seconds since the serve).
 func _fly_master(court: PongCourt, rng: RandomNumberGenerator) -> Dictionary:
-	var ticks: int = roundi(SECONDS / HapticsPong.TICK_S)
+	var ticks: int = roundi(SECONDS / PongServo.TICK_S)
 	var serve: Vector3 = Vector3(0.0, 1.2, court.half_length * 0.5)
 	var velocity: Vector3 = Vector3(1.0, 2.0, -5.0)
-	Haptics.pong.set_ball(serve, velocity, Vector3.ZERO)
-	Haptics.pong.step_ticks(1)
+	PongServo.shared().set_ball(serve, velocity, Vector3.ZERO)
+	PongServo.shared().step_ticks(1)
 	var flight: PackedVector3Array = PackedVector3Array([serve])
 	var states: Array[Array] = []
-	var next_strike: int = roundi(rng.randf_range(0.6, 1.0) / HapticsPong.TICK_S)
+	var next_strike: int = roundi(rng.randf_range(0.6, 1.0) / PongServo.TICK_S)
 	for tick: int in range(1, ticks + 1):
-		var state: HapticPongState = Haptics.pong.get_state()
+		var state: PongState = PongServo.shared().get_state()
 		flight.append(state.ball_position)
 		if tick % TICKS_PER_SEND == 0:
-			var sent: float = tick * HapticsPong.TICK_S
+			var sent: float = tick * PongServo.TICK_S
 			states.append(
 				[states.size(), sent, state.ball_position, state.ball_velocity, state.ball_spin]
 			)
@@ -166,10 +166,10 @@ func _fly_master(court: PongCourt, rng: RandomNumberGenerator) -> Dictionary:
 			across.y = 0.0
 			var strike: Vector3 = across.normalized() * rng.randf_range(3.0, 7.0)
 			strike.y = rng.randf_range(1.0, 4.0)
-			Haptics.pong.set_ball(
+			PongServo.shared().set_ball(
 				state.ball_position, strike, Vector3(0, rng.randf_range(-20, 20), 0)
 			)
-			next_strike += roundi(rng.randf_range(0.6, 1.0) / HapticsPong.TICK_S)
+			next_strike += roundi(rng.randf_range(0.6, 1.0) / PongServo.TICK_S)
 		if tick < ticks:
-			Haptics.pong.step_ticks(1)
+			PongServo.shared().step_ticks(1)
 	return {"flight": flight, "states": states, "velocity0": velocity}

@@ -41,7 +41,7 @@ func _init(p_player: int, court: PongCourt, reach: float, seed_value: int) -> vo
 	intent.normal = PongCourt.side_rotation(player) * rest
 
 
-func update(now: float, dt: float, snapshot: HapticPongState, _opponent: Vector3) -> PongIntent:
+func update(now: float, dt: float, snapshot: PongState, _opponent: Vector3) -> PongIntent:
 	_seen_times.append(now)
 	_seen_positions.append(snapshot.ball_position)
 	while _seen_times.size() > 1 and _seen_times[1] <= now - REACTION_S:

@@ -5,7 +5,7 @@ extends RefCounted
 ## game-action tests read their forces from, tick by tick.
 
 ## One state per servo tick since the probe was made, oldest first.
-var states: Array[HapticPongState] = []
+var states: Array[PongState] = []
 
 var _match: PongMatch = null
 var _ticks_per_chunk: int = 0
@@ -13,7 +13,7 @@ var _ticks_per_chunk: int = 0
 
 func _init(match_node: PongMatch) -> void:
 	_match = match_node
-	_ticks_per_chunk = roundi(PongMatch.STEP_CHUNK_S / HapticsPong.TICK_S)
+	_ticks_per_chunk = roundi(PongMatch.STEP_CHUNK_S / PongServo.TICK_S)
 
 
 ## Runs the match for up to [param max_s] simulated seconds; after each update
@@ -22,9 +22,9 @@ func _init(match_node: PongMatch) -> void:
 func run(max_s: float, after_chunk: Callable = Callable()) -> bool:
 	for chunk: int in ceili(max_s / PongMatch.STEP_CHUNK_S - 1e-6):
 		for tick: int in _ticks_per_chunk:
-			if not Haptics.pong.step_ticks(1):
+			if not PongServo.shared().step_ticks(1):
 				return false
-			states.append(Haptics.pong.get_state())
+			states.append(PongServo.shared().get_state())
 		_match.advance(PongMatch.STEP_CHUNK_S)
 		if after_chunk.is_valid() and after_chunk.call():
 			return true
@@ -38,7 +38,7 @@ func mark() -> int:
 
 ## The force on tick [param index] (device space, N).
 func force(index: int) -> Vector3:
-	return states[index].total_force()
+	return states[index].hand_force.total
 
 
 ## The index of the largest |force| in [[param from], [param to]) (to -1: the end).
@@ -65,7 +65,7 @@ func span_s(from: int, threshold_n: float, to: int = -1) -> float:
 			if first < 0:
 				first = i
 			last = i
-	return 0.0 if first < 0 else (last - first + 1) * HapticsPong.TICK_S
+	return 0.0 if first < 0 else (last - first + 1) * PongServo.TICK_S
 
 
 ## The mean force over [[param from], [param to]).

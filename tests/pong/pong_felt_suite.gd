@@ -50,7 +50,7 @@ func after_each() -> void:
 # the people's controllers read input (the actions this test hands them). False (and a
 # failure) without the Pong renderer or the simulated device.
 func _open(mode: PongMatch.Mode) -> bool:
-	if not assert_true(Haptics.pong.is_available(), "the extension has the Pong renderer"):
+	if not assert_true(PongServo.shared().is_available(), "the extension has the Pong renderer"):
 		return false
 	_pong = PongTestScreen.stepped(mode, 2, 99)
 	_match = _pong.get_node(^"Match") as PongMatch
@@ -146,9 +146,9 @@ func _meet_serve(brush: bool, spin: Vector3 = Vector3.ZERO) -> Dictionary:
 	_match.serve()
 	if spin != Vector3.ZERO:
 		# The served ball, spinning as a ball comes back after a spin shot.
-		Haptics.pong.step_ticks(1)
-		var served: HapticPongState = Haptics.pong.get_state()
-		Haptics.pong.set_ball(served.ball_position, served.ball_velocity, spin)
+		PongServo.shared().step_ticks(1)
+		var served: PongState = PongServo.shared().get_state()
+		PongServo.shared().set_ball(served.ball_position, served.ball_velocity, spin)
 	var follow: Callable = func() -> bool:
 		var ball: Vector3 = _match.snapshot.ball_position
 		var offset: Vector3 = ball - _match.avatar_of(0)
@@ -161,7 +161,7 @@ func _meet_serve(brush: bool, spin: Vector3 = Vector3.ZERO) -> Dictionary:
 		return {}
 	_probe.run(0.05)
 	var ticks: Vector2i = _contact_ticks(0)
-	var state: HapticPongState = _probe.states[ticks.x]
+	var state: PongState = _probe.states[ticks.x]
 	var normal: Vector3 = state.paddle_normals[0]
 	var side: float = signf((state.ball_position - state.paddle_centers[0]).dot(normal))
 	return {
@@ -191,8 +191,8 @@ func _contact_ticks(player: int) -> Vector2i:
 # paddle's plane, against the
 # spin's grip the ball brought: -(2/7) (w0 x r n) unless friction holds it lower.
 func _assert_bent_by_spin(ticks: Vector2i, player: int) -> void:
-	var before: HapticPongState = _probe.states[ticks.x]
-	var after: HapticPongState = _probe.states[ticks.y]
+	var before: PongState = _probe.states[ticks.x]
+	var after: PongState = _probe.states[ticks.y]
 	var normal: Vector3 = before.paddle_normals[player]
 	var side: float = signf((before.ball_position - before.paddle_centers[player]).dot(normal))
 	var facing: Vector3 = normal * side
@@ -253,4 +253,4 @@ func _saw(type: String, player: int) -> bool:
 
 
 func _servo_effect(kind: String) -> Dictionary:
-	return Haptics.pong.get_state().effect(kind)
+	return PongServo.shared().get_state().effect(kind)

@@ -69,7 +69,7 @@ func test_a_paddle_hit_pushes_the_hand_along_the_paddles_normal() -> void:
 	assert_gt(force.normalized().dot(-facing), 0.97, "pushed back, along the paddle's normal")
 	var across: Vector3 = force - facing * force.dot(facing)
 	assert_lt(across.length(), 0.05, "nothing across the paddle without spin")
-	var contact_s: float = (to - from) * HapticsPong.TICK_S
+	var contact_s: float = (to - from) * PongServo.TICK_S
 	assert_almost_eq(
 		_probe.span_s(from - 5, 0.05, to + 20), contact_s, 0.012, "for as long as they touch"
 	)
@@ -84,7 +84,7 @@ func test_a_spin_hit_spins_the_ball_drags_the_hand_and_the_spin_bends_the_next_h
 		return
 	var to: int = contact["to"]
 	var facing: Vector3 = contact["facing"]
-	var spun: HapticPongState = _probe.states[to]
+	var spun: PongState = _probe.states[to]
 	assert_gt(spun.ball_spin.length(), 5.0, "the brush spun the ball (rad/s)")
 	# The spinning ball drags the hand along its surface, in the paddle's plane.
 	var gain: float = _match.court.number("spin_force_gain")
@@ -129,14 +129,14 @@ func test_the_door_refuses_an_effect_the_servo_would_refuse() -> void:
 		var says: String = case["says"]
 		expect_error(says)
 		var args: Array = case["args"]
-		var accepted: bool = Haptics.pong.callv(&"apply_effect", args)
+		var accepted: bool = PongServo.shared().callv(&"apply_effect", args)
 		assert_false(accepted, "refused: %s" % says)
 	_probe.run(0.05)
 	assert_true(_match.snapshot.effects.is_empty(), "nothing reached the servo")
 	assert_lt(_probe.peak(0), QUIET_N, "nothing reached the hand")
 	# The defaults are valid: the owner is the player across, the strength the servo's own.
-	var sent: bool = Haptics.pong.apply_effect(
-		0, "slow", HapticsPong.DEFAULT_STRENGTH, 0.5, Vector3.ZERO
+	var sent: bool = PongServo.shared().apply_effect(
+		0, "slow", PongServo.DEFAULT_STRENGTH, 0.5, Vector3.ZERO
 	)
 	assert_true(sent, "a slow effect with the defaults is sent")
 	_probe.run(0.05)

@@ -10,7 +10,7 @@ func test_a_slow_mine_resists_the_hands_motion() -> void:
 		return
 	# The hand swings left and right (the mouse), 1 Hz, half the workspace.
 	var swing: Callable = func() -> bool:
-		var t: float = (_probe.mark() - from) * HapticsPong.TICK_S
+		var t: float = (_probe.mark() - from) * PongServo.TICK_S
 		_move_hand(Vector2(0.5 * sin(TAU * t), 0.0))
 		return false
 	_probe.run(3.0, swing)
@@ -42,7 +42,7 @@ func test_a_heavy_mine_weighs_the_hand_down_for_its_duration() -> void:
 	var ramp: float = _match.court.number("mine_effect_ramp_s")
 	var weight: float = _match.court.number("heavy_force_n")
 	_probe.run(duration + 0.5)
-	var middle: int = from + roundi(duration * 0.5 / HapticsPong.TICK_S)
+	var middle: int = from + roundi(duration * 0.5 / PongServo.TICK_S)
 	var held: Vector3 = _probe.mean(middle - 50, middle + 50)
 	assert_almost_eq(held.y, -weight, weight * EFFECT_FORCE_TOLERANCE, "the weight, newtons down")
 	assert_lt(Vector2(held.x, held.z).length(), QUIET_N, "straight down")
@@ -51,7 +51,7 @@ func test_a_heavy_mine_weighs_the_hand_down_for_its_duration() -> void:
 	for i: int in range(middle, _probe.mark()):
 		if -_probe.force(i).y >= weight * 0.5:
 			last = i
-	var end_s: float = (last + 1 - from) * HapticsPong.TICK_S
+	var end_s: float = (last + 1 - from) * PongServo.TICK_S
 	assert_almost_eq(end_s, duration - ramp * 0.5, EFFECT_END_TOLERANCE_S, "it lasts its duration")
 	assert_lt(_probe.force(_probe.mark() - 1).length(), QUIET_N, "then nothing")
 
@@ -63,7 +63,7 @@ func test_a_remote_mine_pulls_the_hand_to_the_owners_mirrored_stylus() -> void:
 		return
 	_probe.run(2.0)
 	var at: int = _probe.mark() - 1
-	var state: HapticPongState = _probe.states[at]
+	var state: PongState = _probe.states[at]
 	var scale: float = _match.court.workspace_scale
 	var self_m: Vector3 = (state.paddle_centers[0] - _match.avatar_of(0)) / scale
 	var owner_m: Vector3 = (
@@ -92,7 +92,7 @@ func test_a_none_mine_only_rumbles() -> void:
 	var at: Vector3 = _probe.force(_probe.peak_index(from, from + 100))
 	assert_gt(absf(at.normalized().y), 0.9, "along the device's vertical")
 	# A decaying buzz: down to 1/e after its decay time, gone within 2.5 s.
-	var decay: int = roundi(PongHandFeedback.MINE_RUMBLE_DECAY_S / HapticsPong.TICK_S)
+	var decay: int = roundi(PongHandFeedback.MINE_RUMBLE_DECAY_S / PongServo.TICK_S)
 	var later: float = _probe.peak(from + decay - 20, from + decay + 20)
 	assert_almost_eq(later, rumble / exp(1.0), rumble * 0.1, "1/e after its decay time")
 	assert_lt(_probe.peak(from + 2400), 0.005, "gone within 2.5 s")

@@ -110,14 +110,14 @@ func test_serves_go_round_and_the_computer_aims_at_players_still_in() -> void:
 
 
 func test_a_four_computer_match_ends_with_one_winner() -> void:
-	if not Haptics.pong.is_available():
+	if not PongServo.shared().is_available():
 		skip("no Pong renderer")
 		return
 	_pong = PongTestScreen.stepped(PongMatch.Mode.DEMO, 4, 6, true)
 	add_child(_pong)
 	var match_node: PongMatch = _pong.match_node
 	assert_eq(match_node.court.players, 4)
-	assert_eq(Haptics.pong.get_state().players, 4, "the servo has four paddles")
+	assert_eq(PongServo.shared().get_state().players, 4, "the servo has four paddles")
 	var outs: Array[int] = []
 	match_node.player_out.connect(func(player: int) -> void: outs.append(player))
 	var territories: Dictionary = {}
@@ -134,5 +134,5 @@ func test_a_four_computer_match_ends_with_one_winner() -> void:
 	assert_gt(match_node.rules.get_health(winner), 0)
 	assert_eq(territories.size(), 4, "the ball visited every triangle")
 	await _free_pong()
-	var pong_config: Dictionary = Haptics.pong.get_config()
+	var pong_config: Dictionary = PongServo.shared().get_config()
 	assert_eq(pong_config["players"], 2, "the servo is back to two players")

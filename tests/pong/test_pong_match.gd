@@ -35,7 +35,7 @@ func test_the_computer_returns_served_balls() -> void:
 			0.5 - 0.25 * i, court.beginner_height, -court.half_length * (0.45 + 0.05 * i)
 		)
 		_events.clear()
-		Haptics.pong.set_ball(from, PongReferee.launch_velocity(from, target, court.gravity, 1.0))
+		PongServo.shared().set_ball(from, PongReferee.launch_velocity(from, target, court.gravity, 1.0))
 		var hit: bool = match_node.run_until(_saw.bind("paddle", 1), 3.0)
 		var back: bool = hit and match_node.run_until(_ball_in.bind(0), 3.0)
 		if hit and back:
@@ -51,7 +51,7 @@ func test_a_bounce_in_ones_own_half_costs_exactly_one_point() -> void:
 		return
 	_stand_aside(match_node)
 	var start: int = match_node.rules.start_health
-	Haptics.pong.set_ball(Vector3(-0.9, 1.5, 1.5), Vector3(0.0, 0.0, 0.3))
+	PongServo.shared().set_ball(Vector3(-0.9, 1.5, 1.5), Vector3(0.0, 0.0, 0.3))
 	match_node.run_until(func() -> bool: return false, 4.0)
 	var own: int = _count("floor", "territory", 0)
 	assert_gt(own, 2, "the ball bounced several times in territory 0")
@@ -142,7 +142,7 @@ func test_a_computer_match_runs_to_a_winner() -> void:
 func _open(
 	mode: PongMatch.Mode, beginner: bool = false, health: int = 99, self_stepping: bool = false
 ) -> PongMatch:
-	if not assert_true(Haptics.pong.is_available(), "the extension has the Pong renderer"):
+	if not assert_true(PongServo.shared().is_available(), "the extension has the Pong renderer"):
 		return null
 	_pong = PongTestScreen.stepped(mode, 2, health)
 	_pong.beginner = beginner
@@ -171,7 +171,7 @@ func _saw(type: String, player: int) -> bool:
 
 
 func _ball_in(territory: int) -> bool:
-	var state: HapticPongState = Haptics.pong.get_state()
+	var state: PongState = PongServo.shared().get_state()
 	return PongCourt.territory_of(state.ball_position) == territory
 
 
@@ -186,4 +186,4 @@ func _count(type: String, key: String, value: int) -> int:
 
 
 func _servo_effect(kind: String) -> Dictionary:
-	return Haptics.pong.get_state().effect(kind)
+	return PongServo.shared().get_state().effect(kind)

@@ -72,7 +72,7 @@ const MIN_LONGEST_RALLY: int = 6
 
 func test_a_clumsy_first_time_player_rallies_against_the_default_computer() -> void:
 	set_timeout(240.0)
-	if not assert_true(Haptics.pong.is_available(), "the extension has the Pong renderer"):
+	if not assert_true(PongServo.shared().is_available(), "the extension has the Pong renderer"):
 		return
 	_pong = PongTestScreen.stepped(PongMatch.Mode.VS_COMPUTER, 2, PongRules.DEFAULT_START_HEALTH)
 	var match_node: PongMatch = _pong.get_node(^"Match") as PongMatch
@@ -115,7 +115,7 @@ func test_a_clumsy_first_time_player_rallies_against_the_default_computer() -> v
 
 
 func test_the_computer_keeps_its_weapons_away_at_first() -> void:
-	if not assert_true(Haptics.pong.is_available(), "the extension has the Pong renderer"):
+	if not assert_true(PongServo.shared().is_available(), "the extension has the Pong renderer"):
 		return
 	_pong = PongTestScreen.stepped(PongMatch.Mode.VS_COMPUTER, 2, PongRules.DEFAULT_START_HEALTH)
 	var match_node: PongMatch = _pong.get_node(^"Match") as PongMatch

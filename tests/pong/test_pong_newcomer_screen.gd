@@ -29,7 +29,7 @@ func test_the_options_come_before_the_start_buttons() -> void:
 		)
 	assert_eq(setup.get_difficulty(), PongAiLevel.Level.EASY, "Easy by default")
 	assert_eq(setup.difficulty_option.item_count, PongAiLevel.NAMES.size(), "every level")
-	if not Haptics.pong.is_available():
+	if not PongServo.shared().is_available():
 		return
 	setup.difficulty_option.select(PongAiLevel.Level.HARD)
 	setup.vs_computer_button.pressed.emit()
@@ -40,7 +40,7 @@ func test_the_options_come_before_the_start_buttons() -> void:
 
 
 func test_the_status_line_names_every_mine_in_words() -> void:
-	if not assert_true(Haptics.pong.is_available(), "the extension has the Pong renderer"):
+	if not assert_true(PongServo.shared().is_available(), "the extension has the Pong renderer"):
 		return
 	_pong = PongTestScreen.stepped(PongMatch.Mode.VS_COMPUTER)
 	add_child(_pong)
@@ -54,7 +54,7 @@ func test_the_status_line_names_every_mine_in_words() -> void:
 
 
 func test_a_ball_resting_at_the_near_wall_shows_above_the_controls_bar() -> void:
-	if not assert_true(Haptics.pong.is_available(), "the extension has the Pong renderer"):
+	if not assert_true(PongServo.shared().is_available(), "the extension has the Pong renderer"):
 		return
 	_pong = PongTestScreen.stepped(PongMatch.Mode.VS_COMPUTER)
 	add_child(_pong)
@@ -78,7 +78,7 @@ func test_a_ball_resting_at_the_near_wall_shows_above_the_controls_bar() -> void
 
 
 func test_bullets_are_streaks_along_their_flight_unlike_the_ball() -> void:
-	if not assert_true(Haptics.pong.is_available(), "the extension has the Pong renderer"):
+	if not assert_true(PongServo.shared().is_available(), "the extension has the Pong renderer"):
 		return
 	_pong = PongTestScreen.stepped(PongMatch.Mode.VS_COMPUTER)
 	add_child(_pong)
@@ -103,7 +103,7 @@ func test_bullets_are_streaks_along_their_flight_unlike_the_ball() -> void:
 
 func test_the_match_sounds_contacts_bounces_bullets_and_mines() -> void:
 	set_timeout(120.0)
-	if not assert_true(Haptics.pong.is_available(), "the extension has the Pong renderer"):
+	if not assert_true(PongServo.shared().is_available(), "the extension has the Pong renderer"):
 		return
 	_pong = PongTestScreen.stepped(PongMatch.Mode.DEMO, 2, 99, true)
 	add_child(_pong)

@@ -61,7 +61,7 @@ func test_the_network_lobby_starts_with_the_setup_court() -> void:
 
 
 func test_a_real_time_match_serves_and_quitting_restores_the_servo() -> void:
-	if not assert_true(Haptics.pong.is_available(), "the extension has the Pong renderer"):
+	if not assert_true(PongServo.shared().is_available(), "the extension has the Pong renderer"):
 		return
 	(_main.get_screen() as MainMenu).pong_button.pressed.emit()
 	var pong: PongScreen = _main.get_screen() as PongScreen
@@ -81,18 +81,18 @@ func test_a_real_time_match_serves_and_quitting_restores_the_servo() -> void:
 	assert_has(pong.hud.get_panel(0).get_health_text(), str(match_node.rules.get_health(0)))
 	# A ball at rest high up: the servo thread runs on while paused, the game puts it back.
 	match_node.auto_serve = false
-	Haptics.pong.set_ball(Vector3(-1.0, 2.0, 1.5), Vector3.ZERO)
+	PongServo.shared().set_ball(Vector3(-1.0, 2.0, 1.5), Vector3.ZERO)
 	await wait_until(func() -> bool: return match_node.snapshot.ball_position.y > 1.9, 2.0)
-	var caught: HapticPongState = match_node.snapshot
+	var caught: PongState = match_node.snapshot
 	pong.pause_menu.open()
 	assert_true(get_tree().paused)
 	await wait_seconds(0.6)
-	var resumed_at: float = Haptics.pong.get_state().time_s
+	var resumed_at: float = PongServo.shared().get_state().time_s
 	pong.pause_menu.close()
 	await wait_process_frames(1)
 	# Put back after resumed_at, it has fallen at most since then (the frame's length,
 	# whatever the load); left alone it fell for the whole pause and bounces below 1.5 m.
-	var now: HapticPongState = Haptics.pong.get_state()
+	var now: PongState = PongServo.shared().get_state()
 	var fall: float = now.time_s - resumed_at
 	var lowest: float = (
 		caught.ball_position.y
@@ -110,7 +110,7 @@ func test_a_real_time_match_serves_and_quitting_restores_the_servo() -> void:
 
 
 func test_a_ball_on_the_device_paddle_shows_in_the_force_plot() -> void:
-	if not assert_true(Haptics.pong.is_available(), "the extension has the Pong renderer"):
+	if not assert_true(PongServo.shared().is_available(), "the extension has the Pong renderer"):
 		return
 	var pong: PongScreen = add_child_autofree(PONG_SCENE.instantiate()) as PongScreen
 	pong.start_match(PongMatch.Mode.VS_COMPUTER, false)
@@ -121,7 +121,7 @@ func test_a_ball_on_the_device_paddle_shows_in_the_force_plot() -> void:
 	var plot: ForcePlot = pong.hud.get_plot()
 	assert_lt(plot.buffer.max_value(), 0.05, "nothing felt before")
 	var paddle: Vector3 = match_node.snapshot.paddle_centers[0]
-	Haptics.pong.set_ball(paddle + Vector3(0.0, 0.6, -0.05), Vector3.ZERO)
+	PongServo.shared().set_ball(paddle + Vector3(0.0, 0.6, -0.05), Vector3.ZERO)
 	var felt: bool = await wait_until(func() -> bool: return plot.buffer.max_value() > 0.3, 3.0)
 	assert_true(felt, "the contact's force reaches the plot")
 

@@ -10,6 +10,7 @@ usage: tools/godot --headless --path . res://tests/runner/runner.tscn -- [option
   --timeout=SECONDS     timeout of each hook and each test (default 30)
   --junit=PATH          also write JUnit XML
   --warnings-as-errors  GDScript warnings enabled in the project fail a suite's load
+  --quick               leave out the suites that declare const SLOW := true
   --help                print this help"""
 const DEFAULT_ROOT: String = "res://tests"
 const DEFAULT_TIMEOUT_SECONDS: float = 30.0
@@ -27,6 +28,8 @@ var timeout_seconds: float = DEFAULT_TIMEOUT_SECONDS
 var junit_path: String = ""
 ## Whether enabled GDScript warnings become errors while suites load.
 var warnings_as_errors: bool = false
+## Whether suites declaring [code]const SLOW := true[/code] are left out.
+var quick: bool = false
 ## Whether --help was given.
 var help: bool = false
 ## Why the options are invalid; empty when they are fine.
@@ -54,6 +57,8 @@ static func parse(args: PackedStringArray) -> RunnerOptions:
 				options.junit_path = value
 			"--warnings-as-errors":
 				options.warnings_as_errors = true
+			"--quick":
+				options.quick = true
 			"--help", "-h":
 				options.help = true
 			_:

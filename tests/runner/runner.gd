@@ -16,6 +16,9 @@ extends Node
 ## --timeout=SECONDS     Default timeout of each hook and each test (default 30).
 ## --junit=PATH          Also write JUnit XML; a relative PATH is taken from the caller's
 ##                       working directory.
+## --quick              Leave out the suites that declare [code]const SLOW := true[/code]
+##                       (they run whole scenes for seconds, or start other processes):
+##                       make check's quick loop. They are counted on the summary line.
 ## --warnings-as-errors  Raise every GDScript warning enabled in the project settings to an
 ##                       error while test scripts load, so a warning in a test script (or
 ##                       in a script it loads for the first time) makes its suite fail.
@@ -55,6 +58,7 @@ var _results: Array[Result] = []
 var _passed: int = 0
 var _failed: int = 0
 var _skipped: int = 0
+var _left_out: int = 0
 var _finished: bool = false
 
 
@@ -123,7 +127,8 @@ func _finish(exit_code: int) -> void:
 
 
 func _print_summary() -> void:
-	print("%d passed, %d failed, %d skipped" % [_passed, _failed, _skipped])
+	var left_out: String = " (%d slow suites left out)" % _left_out if _left_out > 0 else ""
+	print("%d passed, %d failed, %d skipped%s" % [_passed, _failed, _skipped, left_out])
 
 
 func _print_usage() -> void:
@@ -169,6 +174,10 @@ func _run_file(path: String, options: Options) -> void:
 		ResourceLoader.load(path, "", ResourceLoader.CACHE_MODE_REUSE) as GDScript
 	)
 	var suite: SuiteBase = null
+	if options.quick and script != null and script.get_script_constant_map().get("SLOW", false):
+		_left_out += 1
+		_capture.drain()
+		return
 	if script == null or not script.can_instantiate():
 		loading.add_failure("could not load or parse the script")
 	elif not _extends_suite(script):

@@ -20,6 +20,9 @@ extends Node
 ## a script runtime error) fails that test, unless the test declared it first with
 ## [method expect_error]. Warnings never fail a test. Each phase (hook or test) must finish
 ## within [member timeout_seconds]; [method set_timeout] changes it for the running test.
+## [br][br]
+## A suite that runs whole scenes for seconds or starts other processes declares
+## [code]const SLOW := true[/code]: the runner's [code]--quick[/code] (make check) leaves it out.
 
 ## The record assertions write into ([code]tests/runner/result.gd[/code]).
 const TestResult := preload("res://tests/runner/result.gd")

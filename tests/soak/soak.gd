@@ -62,9 +62,9 @@ func _on_autopilot_finished(reason: String) -> void:
 func _soak() -> int:
 	var stride: int = Haptics.servo.get_telemetry_columns().size()
 	var start_us: int = Time.get_ticks_usec()
-	var first: Dictionary = Haptics.servo.get_stats()
+	var first: HapticServoStats = Haptics.servo.get_stats()
 	var minute_rates: PackedFloat64Array = []
-	var last_minute: Dictionary = first
+	var last_minute: HapticServoStats = first
 	var last_minute_us: int = start_us
 	var rss_after_warmup: int = -1
 	var rss_max: int = 0
@@ -74,8 +74,8 @@ func _soak() -> int:
 			% [
 				_seconds,
 				_warmup_seconds,
-				first.get("scheduler"),
-				first.get("nominal_rate_hz"),
+				HapticRealtime.SCHEDULER_KIND_NAMES[first.scheduler],
+				first.nominal_rate_hz,
 				stride
 			]
 		)
@@ -90,10 +90,9 @@ func _soak() -> int:
 				rss_after_warmup = rss
 			rss_max = maxi(rss_max, rss)
 		if now_us - last_minute_us >= 60_000_000 or elapsed_s >= _seconds:
-			var stats: Dictionary = Haptics.servo.get_stats()
+			var stats: HapticServoStats = Haptics.servo.get_stats()
 			var rate: float = (
-				float(int(stats["ticks"]) - int(last_minute["ticks"]))
-				/ ((now_us - last_minute_us) / 1e6)
+				float(stats.ticks - last_minute.ticks) / ((now_us - last_minute_us) / 1e6)
 			)
 			minute_rates.append(rate)
 			print(
@@ -102,10 +101,10 @@ func _soak() -> int:
 					% [
 						elapsed_s,
 						rate,
-						stats["late_ticks"],
-						stats["missed_deadlines"],
-						stats["latency_max_us"],
-						stats["telemetry_drops"],
+						stats.late_ticks,
+						stats.missed_deadlines,
+						stats.latency_max_s * 1e6,
+						stats.telemetry_drops,
 						rss / 1e6,
 					]
 				)
@@ -118,26 +117,27 @@ func _soak() -> int:
 
 
 func _report(
-	first: Dictionary,
-	last: Dictionary,
+	first: HapticServoStats,
+	last: HapticServoStats,
 	minute_rates: PackedFloat64Array,
 	rss_warm: int,
 	rss_max: int
 ) -> int:
-	var nominal: float = last["nominal_rate_hz"]
+	var nominal: float = last.nominal_rate_hz
 	var period_us: float = 1e6 / nominal
 	var worst_minute: float = 0.0
 	for rate: float in minute_rates:
 		worst_minute = maxf(worst_minute, absf(rate - nominal) / nominal * 100.0)
-	var whole_error: float = absf(float(last["rate_hz"]) - nominal) / nominal * 100.0
-	var drops: int = int(last["telemetry_drops"]) - int(first["telemetry_drops"])
+	var whole_error: float = absf(last.achieved_rate_hz - nominal) / nominal * 100.0
+	var drops: int = last.telemetry_drops - first.telemetry_drops
+	var latency_max_us: float = last.latency_max_s * 1e6
 	var stride: int = Haptics.servo.get_telemetry_columns().size()
 	var rss_end: int = _resident_bytes()
 	var growth: int = rss_end - rss_warm
 	var checks: Array[Array] = [
 		[
 			"rate, whole run",
-			"%.3f Hz, error %.4f %%" % [last["rate_hz"], whole_error],
+			"%.3f Hz, error %.4f %%" % [last.achieved_rate_hz, whole_error],
 			whole_error <= RATE_TOLERANCE_PERCENT,
 		],
 		[
@@ -162,26 +162,26 @@ func _report(
 			"latest wake-up after a deadline",
 			(
 				"%.0f us (p99 %.0f us; a period is %.0f us), %d tick(s) > half a period"
-				% [last["latency_max_us"], last["latency_p99_us"], period_us, last["late_ticks"]]
+				% [latency_max_us, last.latency_p99_s * 1e6, period_us, last.late_ticks]
 			),
-			float(last["latency_max_us"]) < period_us,
+			latency_max_us < period_us,
 		],
 		[
 			"deadlines skipped",
-			"%d" % last["missed_deadlines"],
-			int(last["missed_deadlines"]) == 0,
+			"%d" % last.missed_deadlines,
+			last.missed_deadlines == 0,
 		],
 	]
 	print(
 		(
 			"soak figures: %d ticks, %d level run(s), %d goal(s); servo %s prio %d, %s"
 			% [
-				last["ticks"],
+				last.ticks,
 				_levels_started,
 				_goals,
-				last["scheduler"],
-				last["realtime_priority"],
-				Hud.servo_running_text(float(last["rate_hz"]), last),
+				HapticRealtime.SCHEDULER_KIND_NAMES[last.scheduler],
+				last.realtime_priority,
+				Hud.servo_running_text(last.achieved_rate_hz, last),
 			]
 		)
 	)

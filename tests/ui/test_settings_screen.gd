@@ -30,7 +30,7 @@ func after_each() -> void:
 
 
 func test_every_device_is_listed_and_known_haptic_ones_are_marked() -> void:
-	var devices: Array[Dictionary] = Haptics.device.list_present()
+	var devices: Array[HapticDeviceInfo] = Haptics.device.list_present()
 	if devices.is_empty():
 		assert_eq(_screen.device_option.item_count, 1)
 		assert_true(_screen.device_option.disabled, "nothing to choose without the extension")
@@ -38,18 +38,28 @@ func test_every_device_is_listed_and_known_haptic_ones_are_marked() -> void:
 	assert_eq(_screen.device_option.item_count, devices.size())
 	for i: int in devices.size():
 		var text: String = _screen.device_option.get_item_text(i)
-		assert_has(text, str(devices[i]["model"]))
-		assert_eq(text.begins_with("◆"), devices[i]["known_haptic"] == true, text)
+		assert_has(text, devices[i].model)
+		assert_eq(text.begins_with("◆"), devices[i].known_haptic, text)
 	assert_eq(_screen.device_option.selected, 0, "the simulated device comes first")
 
 
 func test_device_labels_fall_back_to_the_product_then_the_id() -> void:
-	var label: String = SettingsScreen.device_label(
-		{"id": "hid:1", "product": "Gamepad", "known_haptic": false}
-	)
+	var gamepad: HapticDeviceInfo = HapticDeviceInfo.new()
+	gamepad.id = "hid:1"
+	gamepad.product = "Gamepad"
+	var label: String = SettingsScreen.device_label(gamepad)
 	assert_has(label, "Gamepad")
 	assert_false(label.contains("◆"))
-	assert_has(SettingsScreen.device_label({"id": "hid:2"}), "hid:2")
+	var bare: HapticDeviceInfo = HapticDeviceInfo.new()
+	bare.id = "hid:2"
+	assert_has(SettingsScreen.device_label(bare), "hid:2")
+	var falcon: HapticDeviceInfo = HapticDeviceInfo.new()
+	falcon.id = "usb:1-2"
+	falcon.model = "Novint Falcon"
+	falcon.known_haptic = true
+	assert_eq(SettingsScreen.device_label(falcon), "◆ Novint Falcon  (unavailable)", "not openable")
+	falcon.openable = true
+	assert_eq(SettingsScreen.device_label(falcon), "◆ Novint Falcon")
 
 
 func test_the_slider_sets_the_force_scale_and_applies_it() -> void:

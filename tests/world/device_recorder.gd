@@ -1,37 +1,40 @@
 extends RefCounted
-## Runs a test's own [code]HapticsServer[/code] in step with the game: after each physics
-## frame, 1 ms servo ticks until device time has caught up with game time, recording what
-## the device received on every tick (the forces of [code]get_forces[/code], newtons, game
-## axes: [code]total[/code], [code]impact[/code], [code]weight[/code], [code]drag[/code],
-## [code]inertia[/code], [code]normal[/code]).
+## Runs a test's own door ([code]TestHaptics.manual()[/code]) in step with the game: after
+## each physics frame, 1 ms servo ticks until device time has caught up with game time,
+## recording what the device received on every tick (its [HapticForces], newtons, game axes:
+## [code]total[/code], [code]impact[/code], and the movement renderer's [code]weight[/code],
+## [code]drag[/code], [code]inertia[/code], [code]normal[/code]).
 
 ## One servo tick, seconds.
 const TICK_S := 0.001
-## The forces recorded per tick.
+## The forces recorded per tick: [code]total[/code], [code]impact[/code], then movement
+## components by their names in [code]HapticMovement.MOVEMENT_FORCE_NAMES[/code].
 const KEYS: PackedStringArray = ["total", "impact", "weight", "drag", "inertia", "normal"]
 
 ## Each tick's record: [code]t[/code] (device seconds) and one Vector2 per [constant KEYS].
 var samples: Array[Dictionary] = []
 
-var _server: Object = null
+var _door: TestHaptics.Door = null
 var _device_time: float = 0.0
 var _game_time: float = 0.0
 
 
-func _init(p_server: Object) -> void:
-	_server = p_server
+func _init(door: TestHaptics.Door) -> void:
+	_door = door
 
 
 ## Runs the servo through [param dt] seconds of game time (one physics frame).
 func run(dt: float) -> void:
 	_game_time += dt
 	while _device_time + TICK_S * 0.5 < _game_time:
-		_server.call(&"step", TICK_S)
+		_door.servo.step(TICK_S)
 		_device_time += TICK_S
-		var forces: Dictionary = _server.call(&"get_forces")
-		var sample: Dictionary = {"t": _device_time}
+		var forces: HapticForces = _door.get_forces()
+		var sample: Dictionary = {"t": _device_time, "total": forces.total, "impact": forces.impact}
 		for key: String in KEYS:
-			sample[key] = forces[key]
+			var part: int = HapticMovement.MOVEMENT_FORCE_NAMES.find(key)
+			if part >= 0:
+				sample[key] = forces.parts[part]
 		samples.append(sample)
 
 

@@ -1,35 +1,34 @@
 extends TestSuite
-## What the game-action suites share: a [code]HapticsServer[/code] of the test's own (the
-## simulated device, no start-up ramp) that a probe talks to, run 1 ms tick by tick in step
+## What the game-action suites share: a door of the test's own ([code]TestHaptics.manual()[/code]:
+## the simulated device, no start-up ramp) that a probe talks to, run 1 ms tick by tick in step
 ## with the physics while [member recorder] keeps what the device received, and the impacts
 ## the probe reported.
 
 const DeviceRecorder := preload("res://tests/world/device_recorder.gd")
 
-var server: HapticsServer = null
+var door: TestHaptics.Door = null
 var recorder: DeviceRecorder = null
 ## Each impact the watched probe reported: [code]normal[/code], [code]speed[/code] (m/s).
 var impacts: Array[Dictionary] = []
 
 
-## Opens the server (call in before_each, before [method watch]).
-func open_server() -> void:
-	server = HapticsServer.new()
-	assert_true(server.open_device("simulated"))
-	assert_true(server.set_config("safety", {"startup_ramp_s": 0.0}))
-	recorder = DeviceRecorder.new(server)
+## Opens the door (call in before_each, before [method watch]); it is freed after the test.
+func open_door() -> void:
+	door = autofree(TestHaptics.manual())
+	assert_true(door.configure("safety", {"startup_ramp_s": 0.0}))
+	recorder = DeviceRecorder.new(door)
 	impacts.clear()
 
 
-## Points [param probe] at the server (before it enters the tree) and logs its impacts.
+## Points [param probe] at the door (before it enters the tree) and logs its impacts.
 func watch(probe: HapticProbe) -> void:
-	probe.server = server
+	probe.haptics = door
 	probe.impact.connect(_on_impact)
 
 
-## Closes the server (call in after_each).
-func close_server() -> void:
-	server.close_device()
+## Puts the simulated hand at [param normalized] times 10 cm (game axes).
+func hand(normalized: Vector2) -> void:
+	assert_true(TestHaptics.set_hand_m(door, normalized * 0.1))
 
 
 ## Waits [param count] physics frames, the servo running through each.

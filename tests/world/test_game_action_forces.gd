@@ -25,7 +25,7 @@ var probe: HapticProbe = null
 
 
 func before_each() -> void:
-	open_server()
+	open_door()
 	room = TEST_ROOM.instantiate() as TestRoom
 	player = room.get_node(^"Player") as Player
 	probe = player.get_node(^"HapticProbe") as HapticProbe
@@ -33,19 +33,11 @@ func before_each() -> void:
 	add_child_autofree(room)
 
 
-func after_each() -> void:
-	close_server()
-
-
-func _hand(normalized: Vector2) -> void:
-	assert_true(server.set_hand_target(normalized * 0.1))
-
-
 # The hand drives the avatar at full speed along [param direction] into the room's outline:
 # one impact from the surface, felt along [param normal], then the surface's steady push.
 func _drive_into(direction: Vector2, normal: Vector2) -> void:
 	var first: int = recorder.samples.size()
-	_hand(direction)
+	hand(direction)
 	await run_frames(200)
 	assert_eq(impacts.size(), 1, "one impact (%s)" % [impacts])
 	if impacts.is_empty():
@@ -63,7 +55,7 @@ func _drive_into(direction: Vector2, normal: Vector2) -> void:
 	assert_lt(ringing, 0.2, "and dies away, s")
 	# Held against it, the hand is pushed back out of the surface.
 	var push: float = recorder.last("total").dot(normal)
-	var into: float = -server.get_input_vector().dot(normal)
+	var into: float = -door.get_input_vector().dot(normal)
 	assert_gt(into, 0.5, "the hand still pushes in")
 	assert_almost_eq(push, WALL_STIFFNESS * into, 0.1 * WALL_STIFFNESS, "steady push, N")
 
@@ -79,7 +71,7 @@ func test_hitting_a_wall_knocks_then_holds_the_hand_back() -> void:
 
 
 func test_a_crate_landing_on_the_avatar_knocks_down_then_weighs() -> void:
-	_hand(Vector2.ZERO)
+	hand(Vector2.ZERO)
 	await run_frames(5)
 	var first: int = recorder.samples.size()
 	var crate: Crate = CRATE.instantiate() as Crate
@@ -92,7 +84,7 @@ func test_a_crate_landing_on_the_avatar_knocks_down_then_weighs() -> void:
 		assert_almost_eq(normal, Vector2.DOWN, 0.1, "from above")
 	assert_gt(recorder.peak("impact", Vector2.DOWN, first), 0.5, "the knock, N")
 	assert_gt(recorder.peak("total", Vector2.DOWN, first), 0.5, "in the total, N")
-	var per_kg: float = server.get_config()["force_model"]["gravity_n_per_kg"]
+	var per_kg: float = door.get_config()["force_model"]["gravity_n_per_kg"]
 	var weight: Vector2 = recorder.last("weight")
 	assert_almost_eq(weight, Vector2.DOWN * crate.mass * per_kg, 0.1 * crate.mass * per_kg, "N")
 	assert_almost_eq(recorder.last("total"), weight, 0.05, "all that is felt, N")
@@ -103,7 +95,7 @@ func test_diving_into_water_drags_and_pulls_down_while_inside() -> void:
 	water.position = Vector2(500.0, 200.0)  # 512 × 256 from here
 	room.add_child(water)
 	player.position = Vector2(400.0, 330.0)
-	_hand(Vector2.RIGHT)
+	hand(Vector2.RIGHT)
 	var first: int = -1
 	var inside_frames: int = 0
 	for frame: int in 300:

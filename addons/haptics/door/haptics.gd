@@ -7,30 +7,28 @@ extends Node
 ## On start it opens the simulated device and starts the 1 kHz servo thread. The game works
 ## without the extension: when the native library is missing, [method is_available] is
 ## false, a warning is printed once, and every query returns a neutral answer (zero
-## vectors, empty dictionaries, [code]false[/code]). Scripts never name
-## [code]HapticsServer[/code] (they must parse without the library): its constants come
-## through [method get_constant], its renderers by name ([code]&"constraint"[/code]).
+## vectors, empty values, [code]false[/code]). Values cross as typed classes generated from
+## their schemas ([code]addons/haptics/values[/code], [code]docs/values.md[/code]); the
+## native class itself is named by one script only, the native backend this door loads when
+## the library is there, so every other script parses without it.
 ##
-## Besides its own methods the door has three rooms: [member device] (the devices, the open
-## one, the simulated hand), [member servo] (the rendering thread, its statistics and
-## telemetry) and [member pong] (Haptic Battle Pong's renderer: the ball, the paddles, the
-## effects). Vectors are in game axes (x right, y down) except in [member pong], which is
-## 3D (y up); forces are in newtons.
+## Besides its own methods the door has two rooms, [member device] (the devices, the open
+## one, the simulated hand) and [member servo] (the rendering thread, its statistics and
+## telemetry), and a door into each renderer by name ([method renderer]): what only one
+## renderer offers (the constraint renderer's walls, Pong's ball) is that renderer's own, in
+## its own folder. Vectors are in game axes (x right, y down); forces are in newtons.
 
 ## Emitted when the device, the servo state or a setting changes.
 signal status_changed
 
 ## Class name the extension registers.
 const SERVER_CLASS := &"HapticsServer"
+## The backend that talks to it, loaded only when the class exists.
+const NATIVE_BACKEND_PATH := "res://addons/haptics/door/haptics_native_backend.gd"
 ## The device's input vector drives the player (acceleration control).
 const CONTROL_DEVICE := &"device"
 ## The keyboard or gamepad drives the player.
 const CONTROL_KEYBOARD := &"keyboard"
-## Force names [method get_forces] reports while the movement or constraint renderer is
-## active (each renderer names its own: Pong's are contact, spin and effects).
-const FORCE_NAMES: Array[String] = [
-	"normal", "friction", "weight", "drag", "inertia", "continuous", "smoothed", "impact", "total"
-]
 ## The project setting naming the four input actions (left, right, up, down) whose strengths
 ## move the simulated hand; an empty list: none (the mouse still does); an empty name: no
 ## action in that direction.
@@ -58,7 +56,8 @@ const SETTINGS: Dictionary[String, PackedStringArray] = {
 # starting from the defaults.
 const _OFFLINE_DEFAULTS: Dictionary = {"safety.force_scale": 1.0, "smoothing.enabled": true}
 # The keys, buttons, sticks and mouse that move the simulated hand, and the actions fed.
-const HapticsInput := preload("haptics_input.gd")
+const HapticsInput := preload("res://addons/haptics/door/haptics_input.gd")
+const HapticsBackend := preload("res://addons/haptics/door/haptics_backend.gd")
 
 ## The player's strength preference, a gain on everything rendered. Kept by the servo;
 ## finite values are clamped to its range ([method get_force_scale_range]), NaN is refused.
@@ -110,12 +109,9 @@ var feed_actions: PackedStringArray:
 var device: HapticsDevice = null
 ## The rendering thread, its statistics and telemetry.
 var servo: HapticsServo = null
-## Haptic Battle Pong: the ball and paddles simulated in the servo.
-var pong: HapticsPong = null
 
-# Typed as Object so that this script parses without the extension.
-var _server: Object = null
-var _constants: Dictionary[StringName, int] = {}
+var _backend: HapticsBackend = null
+var _renderers: Dictionary[StringName, HapticsRenderer] = {}
 var _config_fields: Dictionary[String, Dictionary] = {}
 var _offline: Dictionary = _OFFLINE_DEFAULTS.duplicate()
 var _user_input: HapticsInput = HapticsInput.new()
@@ -123,28 +119,22 @@ var _user_input: HapticsInput = HapticsInput.new()
 
 func _init() -> void:
 	if ClassDB.class_exists(SERVER_CLASS):
-		_server = ClassDB.instantiate(SERVER_CLASS)
-		for constant_name: String in ClassDB.class_get_integer_constant_list(SERVER_CLASS, true):
-			_constants[constant_name] = ClassDB.class_get_integer_constant(
-				SERVER_CLASS, constant_name
-			)
-		for field: Dictionary in _server.call(&"get_config_fields"):
+		_backend = (load(NATIVE_BACKEND_PATH) as GDScript).new()
+		for field: Dictionary in _backend.get_config_fields():
 			_config_fields["%s.%s" % [field["section"], field["key"]]] = field
 	else:
+		_backend = HapticsBackend.new()
 		push_warning(
 			(
 				"Haptics extension not loaded: playing without force feedback. "
 				+ "Build it with 'make build' (see README)."
 			)
 		)
-	servo = HapticsServo.new(_server, get_constant(&"DEFAULT_RATE_HZ"))
+	servo = HapticsServo.new(_backend)
 	servo.default_spin_us = _spin_us_setting()
-	device = HapticsDevice.new(_server, servo)
-	# Read without get_constant(): an extension without the Pong renderer is not an error.
-	pong = HapticsPong.new(_server, servo, _constants.get(&"RENDER_MODE_PONG", -1))
+	device = HapticsDevice.new(_backend, servo)
 	servo.changed.connect(status_changed.emit)
 	device.changed.connect(status_changed.emit)
-	pong.changed.connect(status_changed.emit)
 
 
 func _ready() -> void:
@@ -153,11 +143,11 @@ func _ready() -> void:
 	process_physics_priority = -1000
 	hand_actions = ProjectSettings.get_setting(SETTING_HAND_ACTIONS, DEFAULT_HAND_ACTIONS)
 	feed_actions = ProjectSettings.get_setting(SETTING_FEED_ACTIONS, DEFAULT_FEED_ACTIONS)
-	if _server != null:
+	if _backend.is_native():
 		# Nobody reads telemetry until someone drains it (HapticsServo.drain_telemetry turns
 		# it on): a game that never does is not counted telemetry drops.
 		configure("telemetry", {"enabled": false})
-	if _server != null and device.open(device.get_simulated_id()) and not servo.start():
+	if _backend.is_native() and device.open(device.get_simulated_id()) and not servo.start():
 		if servo.default_spin_us != HapticsServo.SPIN_US_DEFAULT:
 			var refused: float = servo.default_spin_us
 			servo.default_spin_us = HapticsServo.SPIN_US_DEFAULT
@@ -193,7 +183,9 @@ func _physics_process(_delta: float) -> void:
 func _follow_user_input_and_feed() -> void:
 	_follow_user_input()
 	if not feed_actions.is_empty():
-		_user_input.feed(get_input_vector(), control_mode == CONTROL_DEVICE and _server != null)
+		_user_input.feed(
+			get_input_vector(), control_mode == CONTROL_DEVICE and _backend.is_native()
+		)
 
 
 ## Lists the project settings this door reads in the Project Settings dialog, with their
@@ -205,9 +197,7 @@ static func add_project_settings() -> void:
 	# -1 is the servo's own choice, which depends on whether the thread gets real time.
 	var spin_us: float = HapticsServo.SPIN_US_DEFAULT
 	# The slowest servo allows the longest spin; start() refuses more than the rate in use allows.
-	var longest_spin_us: float = (
-		0.5e6 / ClassDB.class_get_integer_constant(SERVER_CLASS, &"MIN_RATE_HZ")
-	)
+	var longest_spin_us: float = 0.5e6 / HapticServoConstants.MIN_RATE_HZ
 	if not ProjectSettings.has_setting(SETTING_SPIN_US):
 		ProjectSettings.set_setting(SETTING_SPIN_US, spin_us)
 	ProjectSettings.set_initial_value(SETTING_SPIN_US, spin_us)
@@ -222,110 +212,93 @@ static func add_project_settings() -> void:
 
 ## True when the native extension is loaded and its server exists.
 func is_available() -> bool:
-	return _server != null
-
-
-## The native server itself, for a [HapticProbe]; game code uses this door.
-func get_server() -> Object:
-	return _server
-
-
-## A [code]HapticsServer[/code] integer constant by name ([code]&"MAX_CONTACTS"[/code],
-## [code]&"TELEMETRY_FLAG_CONTACT"[/code]…); 0 without the extension.
-func get_constant(constant_name: StringName) -> int:
-	if _server != null and not _constants.has(constant_name):
-		push_error("Haptics: HapticsServer has no constant '%s'." % constant_name)
-	return _constants.get(constant_name, 0)
+	return _backend.is_native()
 
 
 ## The extension's version line, or why there is none.
 func get_version() -> String:
-	return str(_server.call(&"get_version")) if _server != null else "haptics extension not loaded"
+	return _backend.version()
 
 
 ## The device's input vector (length ≤ 1); zero without a device.
 func get_input_vector() -> Vector2:
-	return _server.call(&"get_input_vector") if _server != null else Vector2.ZERO
+	return _backend.input_vector()
 
 
-## Rendered force components in newtons, one [Vector2] per name in [constant FORCE_NAMES].
-func get_forces() -> Dictionary:
-	if _server != null:
-		return _server.call(&"get_forces")
-	var zeros: Dictionary = {}
-	for force_name: String in FORCE_NAMES:
-		zeros[force_name] = Vector2.ZERO
-	return zeros
+## The last servo tick's force, piece by piece, in newtons (game axes): the active renderer's
+## components in [member HapticForces.parts] (its force enum names them, e.g.
+## [code]HapticMovement.MovementForce.NORMAL[/code]), then what the servo made of them.
+func get_forces() -> HapticForces:
+	return _backend.forces()
 
 
-## One component of a [method get_forces] result (zero when absent).
-func force_of(forces: Dictionary, component: String) -> Vector2:
-	var value: Variant = forces.get(component, Vector2.ZERO)
-	return value if value is Vector2 else Vector2.ZERO
+## Hands the servo this physics tick's frame (a [HapticProbe] does, every tick); one the
+## servo refuses is reported, naming the field, and the previous frame stays in force.
+func submit_frame(frame: HapticFrame) -> bool:
+	return _backend.submit_frame(frame)
 
 
-## The renderer: [code]&"movement"[/code] (acceleration control, the default) or
-## [code]&"constraint"[/code] (position control against walls set with
-## [method set_constraint_geometry]). Unknown names are refused with an error.
+## Rings an impact on the hand (a [HapticProbe] does when a touch begins).
+func push_impact(impact: HapticImpact) -> bool:
+	return _backend.push_impact(impact)
+
+
+## Makes [param mode] the servo's renderer: [code]&"movement"[/code] (acceleration control,
+## the default), [code]&"constraint"[/code] (position control against a maze's walls,
+## [HapticsConstraint]) or another the library has ([method renderer]). Unknown names are
+## refused with an error.
 func set_render_mode(mode: StringName) -> bool:
-	var constant_name: StringName = "RENDER_MODE_" + mode.to_upper()
-	if _server == null:
+	if not _backend.is_native():
 		return false
-	if not _constants.has(constant_name):
+	var index: int = _backend.renderer_names().find(mode)
+	if index < 0:
 		push_error("Haptics.set_render_mode: unknown renderer '%s'." % mode)
 		return false
 	if get_render_mode() == mode:
 		return true
-	var accepted: bool = _server.call(&"set_render_mode", _constants[constant_name])
+	var accepted: bool = _backend.set_render_mode(index)
 	status_changed.emit()
 	return accepted
 
 
 ## The current renderer's name ("" without the extension).
 func get_render_mode() -> StringName:
-	if _server == null:
-		return &""
-	var mode: int = _server.call(&"get_render_mode")
-	for constant_name: StringName in _constants:
-		if constant_name.begins_with("RENDER_MODE_") and _constants[constant_name] == mode:
-			return StringName(constant_name.trim_prefix("RENDER_MODE_").to_lower())
-	return &""
+	var names: PackedStringArray = _backend.renderer_names()
+	var mode: int = _backend.render_mode()
+	return StringName(names[mode]) if mode >= 0 and mode < names.size() else &""
 
 
-## Walls for the constraint renderer as point pairs in maze units (pixels), and how the
-## maze maps onto the workspace.
-func set_constraint_geometry(segments: PackedVector2Array, mapping: HapticMazeMapping) -> bool:
-	return (
-		_server != null
-		and _server.call(&"set_constraint_geometry", segments, mapping.to_dictionary())
-	)
-
-
-## The constraint proxy: position (maze units), goal, constraints, placed, updates; empty
-## without the extension.
-func get_proxy_state() -> Dictionary:
-	return _server.call(&"get_proxy_state") if _server != null else {}
+## One of the servo's renderers by name ([code]&"movement"[/code], [code]&"constraint"[/code],
+## [code]&"pong"[/code]...): make it the active one, send it the values of its own schema,
+## read the values it gives. Without the library, or for a name it lacks,
+## [method HapticsRenderer.is_available] is false.
+func renderer(renderer_name: StringName) -> HapticsRenderer:
+	if not _renderers.has(renderer_name):
+		var made: HapticsRenderer = HapticsRenderer.new(_backend, renderer_name)
+		made.changed.connect(status_changed.emit)
+		_renderers[renderer_name] = made
+	return _renderers[renderer_name]
 
 
 ## Changes settings of one section (HapticsServer.get_config_fields lists them); only the
 ## keys given change. Refused settings are reported and change nothing.
 func configure(section: String, values: Dictionary) -> bool:
-	if _server == null:
+	if not _backend.is_native():
 		return false
-	var accepted: bool = _server.call(&"set_config", section, values)
+	var accepted: bool = _backend.set_config(section, values)
 	status_changed.emit()
 	return accepted
 
 
 ## Every section of the servo's configuration with every key; empty without the extension.
 func get_config() -> Dictionary:
-	return _server.call(&"get_config") if _server != null else {}
+	return _backend.get_config()
 
 
 ## The name of the value a choice setting has now, e.g. [code]"per_contact"[/code] for
 ## [code]get_choice("force_model", "contact_model")[/code]; empty without the extension.
 func get_choice(section: String, key: String) -> String:
-	if _server == null:
+	if not _backend.is_native():
 		return ""
 	var field: Dictionary = _config_fields.get("%s.%s" % [section, key], {})
 	var choices: Array = field.get("choices", [])
@@ -358,14 +331,14 @@ func reset_settings() -> void:
 
 
 func _setting(section: String, key: String) -> Variant:
-	if _server == null:
+	if not _backend.is_native():
 		return _offline["%s.%s" % [section, key]]
-	var config: Dictionary = _server.call(&"get_config")
+	var config: Dictionary = _backend.get_config()
 	return config[section][key]
 
 
 func _set_setting(section: String, key: String, value: Variant) -> void:
-	if _server != null:
+	if _backend.is_native():
 		configure(section, {key: value})
 	else:
 		_offline["%s.%s" % [section, key]] = value
@@ -374,7 +347,9 @@ func _set_setting(section: String, key: String, value: Variant) -> void:
 
 func _default(field_name: String) -> Variant:
 	return (
-		_config_fields[field_name]["default"] if _server != null else _OFFLINE_DEFAULTS[field_name]
+		_config_fields[field_name]["default"]
+		if _backend.is_native()
+		else _OFFLINE_DEFAULTS[field_name]
 	)
 
 
@@ -396,3 +371,4 @@ func _spin_us_setting() -> float:
 func _follow_user_input() -> void:
 	if hand_follows_input and control_mode == CONTROL_DEVICE and device.is_simulated():
 		device.set_hand_target(_user_input.hand_target(get_viewport()))
+

@@ -1,16 +1,18 @@
 class_name HapticsServo
 extends RefCounted
 ## The servo side of the [code]Haptics[/code] door ([code]Haptics.servo[/code]): the 1 kHz
-## rendering thread's life, its statistics and its telemetry. Without the native extension
-## it never runs and every answer is neutral.
+## rendering thread's life, manual ticks, its statistics and its telemetry. Without the
+## native extension it never runs and every answer is neutral.
 
 ## The servo started or stopped.
 signal changed
 
-## [method start] given this spin uses [member default_spin_us]; HapticsServer.start given
-## it uses the servo's own (HapticsServer.DEFAULT_SPIN_US when the thread has real time,
-## none without).
+## [method start] given this spin uses [member default_spin_us]; the server given it uses
+## the servo's own ([constant HapticServoConstants.DEFAULT_SPIN_NS] when the thread has real
+## time and holds the latency, [constant HapticServoConstants.UNHELD_SPIN_NS] with real time
+## alone, none without).
 const SPIN_US_DEFAULT := -1.0
+const HapticsBackend := preload("res://addons/haptics/door/haptics_backend.gd")
 
 ## The busy-wait before each deadline, in microseconds, that [method start] uses when given
 ## none. The [code]Haptics[/code] autoload sets it from the project setting
@@ -18,25 +20,21 @@ const SPIN_US_DEFAULT := -1.0
 ## keep it.
 var default_spin_us: float = SPIN_US_DEFAULT
 
-var _server: Object = null
-var _default_rate_hz: float = 0.0
+var _backend: HapticsBackend = null
 
 
-func _init(server: Object, default_rate_hz: float) -> void:
-	_server = server
-	_default_rate_hz = default_rate_hz
+func _init(backend: HapticsBackend) -> void:
+	_backend = backend
 
 
-## Starts the servo thread at [param rate_hz] (HapticsServer.MIN_RATE_HZ to MAX_RATE_HZ;
+## Starts the servo thread at [param rate_hz]
+## ([constant HapticServoConstants.MIN_RATE_HZ] to [constant HapticServoConstants.MAX_RATE_HZ];
 ## 0: the default rate), busy-waiting [param spin_us] microseconds before each deadline (0 to
 ## half a period; [constant SPIN_US_DEFAULT]: [member default_spin_us]). A refused value is
 ## reported naming it, and the servo does not start.
 func start(rate_hz: float = 0.0, spin_us: float = SPIN_US_DEFAULT) -> bool:
-	if _server == null:
-		return false
-	var started: bool = _server.call(
-		&"start",
-		rate_hz if rate_hz > 0.0 else _default_rate_hz,
+	var started: bool = _backend.start(
+		rate_hz if rate_hz > 0.0 else HapticServoConstants.DEFAULT_RATE_HZ,
 		default_spin_us if spin_us == SPIN_US_DEFAULT else spin_us
 	)
 	changed.emit()
@@ -45,29 +43,33 @@ func start(rate_hz: float = 0.0, spin_us: float = SPIN_US_DEFAULT) -> bool:
 
 ## Stops the servo thread; the device is left at zero force.
 func stop() -> void:
-	if _server != null:
-		_server.call(&"stop")
-		changed.emit()
+	_backend.stop()
+	changed.emit()
 
 
 func is_running() -> bool:
-	return _server != null and _server.call(&"is_running")
+	return _backend.is_running()
+
+
+## One servo tick of [param dt] seconds on this thread (the thread must be stopped): a test
+## or a headless match steps the servo itself, deterministically.
+func step(dt: float) -> bool:
+	return _backend.step(dt)
 
 
 ## "" while rendering is healthy, else why it stopped (e.g. the device was unplugged).
 func get_status() -> String:
-	return str(_server.call(&"get_servo_status")) if _server != null else ""
+	return _backend.servo_status()
 
 
-## Loop statistics (rate_hz, period_p99_ms, late_ticks, realtime…); empty without the
-## extension.
-func get_stats() -> Dictionary:
-	return _server.call(&"get_stats") if _server != null else {}
+## The loop's statistics (rate, period and latency percentiles, real-time grants...).
+func get_stats() -> HapticServoStats:
+	return _backend.stats()
 
 
 ## The achieved rate in Hz, 0 when the servo is not running.
 func get_rate_hz() -> float:
-	return float(get_stats().get("rate_hz", 0.0)) if is_running() else 0.0
+	return get_stats().achieved_rate_hz if is_running() else 0.0
 
 
 ## Up to [param max_samples] telemetry samples of [method get_telemetry_columns] floats
@@ -75,14 +77,12 @@ func get_rate_hz() -> float:
 ## until a call turns it on (the [code]Haptics[/code] autoload turns it off at
 ## start: a game that never drains it is not counted drops).
 func drain_telemetry(max_samples: int) -> PackedFloat32Array:
-	if _server == null:
-		return PackedFloat32Array()
-	var config: Dictionary = _server.call(&"get_config")
-	if not config["telemetry"]["enabled"]:
-		_server.call(&"set_config", "telemetry", {"enabled": true})
-	return _server.call(&"drain_telemetry", max_samples)
+	var config: Dictionary = _backend.get_config()
+	if not config.is_empty() and not config["telemetry"]["enabled"]:
+		_backend.set_config("telemetry", {"enabled": true})
+	return _backend.drain_telemetry(max_samples)
 
 
 ## The names of a telemetry sample's floats, in order.
 func get_telemetry_columns() -> PackedStringArray:
-	return PackedStringArray(_server.call(&"get_telemetry_columns") if _server != null else [])
+	return _backend.telemetry_columns()

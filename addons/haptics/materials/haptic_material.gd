@@ -16,7 +16,7 @@ extends Resource
 const TILE_LAYER := &"haptic_material"
 
 ## The largest stiffness, friction and impact gain a material takes.
-const MAX_GAIN := 100.0
+const MAX_GAIN := HapticFrameLimits.MAX_GAIN
 
 ## Normal-force gain k, in newtons per unit input: pushing the device to the edge of its
 ## workspace straight into the surface is resisted with this force.
@@ -37,6 +37,23 @@ var damping: float:
 	set(value):
 		push_warning("HapticMaterial.damping is deprecated: use friction (accepted until 0.4.0).")
 		friction = value
+
+
+## This material's contact law, as a frame's contact carries it.
+func contact_material() -> HapticContactMaterial:
+	var out: HapticContactMaterial = HapticContactMaterial.new()
+	out.stiffness_n = stiffness
+	out.friction_n = friction
+	return out
+
+
+## This material's impact ring, as an impact carries it.
+func impact_material() -> HapticImpactMaterial:
+	var out: HapticImpactMaterial = HapticImpactMaterial.new()
+	out.gain_n_s_per_m = impact_gain
+	out.frequency_hz = impact_frequency
+	out.decay_s = impact_decay
+	return out
 
 
 ## The material a body declares (property first, then metadata), or [code]null[/code].

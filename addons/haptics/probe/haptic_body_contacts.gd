@@ -7,7 +7,7 @@ extends RefCounted
 ## [TileMapLayer]: one collider holds every tile), [code]velocity[/code] (the collider's own
 ## at the contact, pixels per second) and, on tiles, [code]cell[/code].
 
-const HapticBodyShapes := preload("haptic_body_shapes.gd")
+const HapticBodyShapes := preload("res://addons/haptics/probe/haptic_body_shapes.gd")
 ## An object above the body rests on it when its surface normal points at least this much
 ## down (60° from vertical): the floor under the feet, found by a downward ray or a shape
 ## reaching below the body, is no load.

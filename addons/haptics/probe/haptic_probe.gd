@@ -33,9 +33,9 @@ const SAME_FACE_COS := 0.999
 # editor parses this script as soon as the addon's folder appears, before enabling the plugin
 # has registered the autoload (naming it then failed to parse, and the node could not be
 # created until the editor was restarted).
-const Haptics := preload("../door/haptics.gd")
-const HapticBodyContacts := preload("haptic_body_contacts.gd")
-const HapticBodyShapes := preload("haptic_body_shapes.gd")
+const Haptics := preload("res://addons/haptics/door/haptics.gd")
+const HapticBodyContacts := preload("res://addons/haptics/probe/haptic_body_contacts.gd")
+const HapticBodyShapes := preload("res://addons/haptics/probe/haptic_body_shapes.gd")
 
 ## World scale: how many pixels make one metre. The rule: the gravity your body falls with
 ## (px/s²) divided by 9.81 ([method pixels_per_metre_for_gravity]), so that a fall lasting a
@@ -61,9 +61,10 @@ const HapticBodyShapes := preload("haptic_body_shapes.gd")
 ## Print at start the height [member pixels_per_metre] gives the body (debug builds).
 @export var report_scale: bool = true
 
-## A [code]HapticsServer[/code] of your own (a test steps one manually) to talk to instead
-## of the [code]Haptics[/code] autoload's; set it before the probe enters the tree.
-var server: Object = null
+## The door this probe hands its frames and impacts to: the [code]Haptics[/code] autoload
+## unless set before the probe enters the tree (a test gives it a door of its own, whose
+## servo it steps itself).
+var haptics: Haptics = null
 ## The last frame submitted (for HUDs and tests).
 var last_frame: HapticFrame = HapticFrame.new()
 ## Frames submitted so far.
@@ -72,7 +73,6 @@ var frames_submitted: int = 0
 ## empty when there was none.
 var shape_warning: String = ""
 
-var _door: Haptics = null
 var _body: PhysicsBody2D = null
 var _contacts: HapticBodyContacts = null
 var _sequence: int = 0
@@ -81,8 +81,6 @@ var _velocity_before: Vector2 = Vector2.ZERO
 # was last touched on; kept for touch_release_s after the last touch.
 var _touching: Dictionary[String, int] = {}
 var _query: PhysicsPointQueryParameters2D = PhysicsPointQueryParameters2D.new()
-var _max_contacts: int = 0
-var _max_resting: int = 0
 
 
 func _ready() -> void:
@@ -91,8 +89,9 @@ func _ready() -> void:
 		push_error("HapticProbe must be a child of a CharacterBody2D or RigidBody2D.")
 		set_physics_process(false)
 		return
-	_door = get_node_or_null(^"/root/Haptics") as Haptics
-	if _door == null:
+	if haptics == null:
+		haptics = get_node_or_null(^"/root/Haptics") as Haptics
+	if haptics == null:
 		push_error(
 			(
 				"HapticProbe: no Haptics autoload; enable the Haptics plugin (Project Settings ▸ "
@@ -101,10 +100,6 @@ func _ready() -> void:
 		)
 		set_physics_process(false)
 		return
-	if server == null:
-		server = _door.get_server()
-	_max_contacts = _door.get_constant(&"MAX_CONTACTS")
-	_max_resting = _door.get_constant(&"MAX_RESTING_OBJECTS")
 	if _body is RigidBody2D:
 		var rigid: RigidBody2D = _body
 		rigid.contact_monitor = true
@@ -130,28 +125,27 @@ func _exit_tree() -> void:
 func _before_bodies_move() -> void:
 	if _body is CharacterBody2D:
 		_velocity_before = (_body as CharacterBody2D).velocity
-	if not drive_input or server == null or not (&"input_vector" in _body):
+	if not drive_input or not (&"input_vector" in _body):
 		return
 	# An unplugged device hands the player back to the keyboard until it returns.
 	var device_driven: bool = (
-		_door.control_mode == Haptics.CONTROL_DEVICE and not _door.device.is_lost()
+		haptics.control_mode == Haptics.CONTROL_DEVICE and not haptics.device.is_lost()
 	)
 	if &"use_keyboard" in _body:
 		_body.set(&"use_keyboard", not device_driven)
 	if device_driven:
-		_body.set(&"input_vector", server.call(&"get_input_vector"))
+		_body.set(&"input_vector", haptics.get_input_vector())
 
 
 func _physics_process(_delta: float) -> void:
 	submit()
 
 
-## Gathers this tick's frame and sends it to the server (what the probe does every physics
+## Gathers this tick's frame and hands it to the door (what the probe does every physics
 ## tick), pushing impacts for touches that began.
 func submit() -> void:
 	var frame: HapticFrame = build_frame()
-	if server != null:
-		server.call(&"submit_frame", frame.to_dictionary())
+	haptics.submit_frame(frame)
 	last_frame = frame
 	frames_submitted += 1
 	frame_submitted.emit(frame)
@@ -172,12 +166,15 @@ func build_frame() -> HapticFrame:
 	for collision: Dictionary in _contacts.collisions(above):
 		var key: String = collision["key"]
 		var normal: Vector2 = collision["normal"]
-		if seen.has(key) or contacts.size() >= _max_contacts:
+		if seen.has(key) or contacts.size() >= HapticFrameLimits.MAX_CONTACTS:
 			continue
 		seen[key] = true
 		var material: HapticMaterial = _material_of(collision)
 		if _new_face(faces, collision):
-			contacts.append(HapticContact.new(normal, material))
+			var contact: HapticContact = HapticContact.new()
+			contact.normal = normal
+			contact.material = material.contact_material() if material != null else null
+			contacts.append(contact)
 		if normal.dot(Vector2.UP) > floor_normal.dot(Vector2.UP):
 			floor_normal = normal
 		if not _touching.has(key):
@@ -186,14 +183,15 @@ func build_frame() -> HapticFrame:
 	_release_touches(now)
 	_sequence += 1
 	var resting: Array[HapticLoad] = frame.resting
+	var room: int = HapticFrameLimits.MAX_RESTING_OBJECTS
 	for entry: Dictionary in above:
 		var rigid: RigidBody2D = entry["collider"]
-		if resting.size() < _max_resting:
-			resting.append(HapticLoad.new(entry["normal"], rigid.mass))
-	if own_weight_kg > 0.0 and floor_normal.dot(Vector2.UP) > 0.5 and resting.size() < _max_resting:
+		if resting.size() < room:
+			resting.append(_load(entry["normal"], rigid.mass))
+	if own_weight_kg > 0.0 and floor_normal.dot(Vector2.UP) > 0.5 and resting.size() < room:
 		# The avatar's own weight, felt like an object resting on the hand: pressed along
 		# the floor's normal into the floor.
-		resting.append(HapticLoad.new(-floor_normal, own_weight_kg))
+		resting.append(_load(-floor_normal, own_weight_kg))
 	var water: Object = _water_area()
 	if water != null:
 		frame.in_water = true
@@ -317,8 +315,18 @@ func _report_impact(collision: Dictionary, material: HapticMaterial) -> void:
 		return
 	var collider: Object = collision["collider"]
 	impact.emit(collider, normal, speed)
-	if server != null:
-		server.call(&"push_impact", HapticImpact.new(normal, speed, material).to_dictionary())
+	var event: HapticImpact = HapticImpact.new()
+	event.direction = normal
+	event.speed_m_per_s = speed
+	event.material = material.impact_material() if material != null else null
+	haptics.push_impact(event)
+
+
+static func _load(normal: Vector2, mass_kg: float) -> HapticLoad:
+	var load: HapticLoad = HapticLoad.new()
+	load.normal = normal
+	load.mass_kg = mass_kg
+	return load
 
 
 # The collider's own HapticMaterial, else the touched tile's (HapticMaterial.of_tile), else

@@ -17,7 +17,7 @@ var settings: GameSettings = null
 var dim_background: bool = false
 
 var _device_ids: PackedStringArray = PackedStringArray()
-var _devices: Array[Dictionary] = []
+var _devices: Array[HapticDeviceInfo] = []
 var _dirty: bool = false
 var _refreshing: bool = false
 
@@ -93,14 +93,14 @@ func refresh() -> void:
 
 ## Label of a device entry: the model (or product), a mark on known haptic devices, and
 ## "(unavailable)" on haptic devices that cannot be opened now (the info line says why).
-static func device_label(device: Dictionary) -> String:
-	var model: String = str(device.get("model", ""))
+static func device_label(device: HapticDeviceInfo) -> String:
+	var model: String = device.model
 	if model.is_empty():
-		model = str(device.get("product", ""))
+		model = device.product
 	if model.is_empty():
-		model = str(device.get("id", "?"))
-	var haptic: bool = device.get("known_haptic", false) == true
-	var unavailable: bool = haptic and device.get("openable", true) != true
+		model = device.id
+	var haptic: bool = device.known_haptic
+	var unavailable: bool = haptic and not device.openable
 	return ("◆ %s" if haptic else "   %s") % model + ("  (unavailable)" if unavailable else "")
 
 
@@ -108,9 +108,9 @@ func _populate_devices() -> void:
 	device_option.clear()
 	_device_ids.clear()
 	_devices = Haptics.device.list_present()
-	for device: Dictionary in _devices:
+	for device: HapticDeviceInfo in _devices:
 		device_option.add_item(device_label(device))
-		_device_ids.append(str(device.get("id", "")))
+		_device_ids.append(device.id)
 	if _devices.is_empty():
 		device_option.add_item(NO_EXTENSION_TEXT)
 		device_option.disabled = true
@@ -121,16 +121,15 @@ func _show_device_info() -> void:
 	if index < 0 or index >= _devices.size():
 		_device_info.text = "Force feedback needs the native extension (make build)."
 		return
-	var device: Dictionary = _devices[index]
+	var device: HapticDeviceInfo = _devices[index]
 	var parts: PackedStringArray = PackedStringArray()
-	var product: String = str(device.get("product", ""))
-	if not product.is_empty() and product != str(device.get("model", "")):
-		parts.append(product)
-	parts.append("%s backend" % str(device.get("backend", "?")))
-	var driver: String = str(device.get("driver", ""))
+	if not device.product.is_empty() and device.product != device.model:
+		parts.append(device.product)
+	parts.append("%s backend" % device.backend)
+	var driver: String = device.driver
 	parts.append("%s driver" % driver if not driver.is_empty() else "no force-feedback driver")
-	if not driver.is_empty() and device.get("openable", false) != true:
-		parts.append("cannot be opened: %s" % str(device.get("unavailable_reason", "")))
+	if not driver.is_empty() and not device.openable:
+		parts.append("cannot be opened: %s" % device.unavailable_reason)
 	_device_info.text = "  ·  ".join(parts)
 
 

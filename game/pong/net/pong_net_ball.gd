@@ -3,7 +3,7 @@ extends RefCounted
 ## A follower's ball in the local servo, as the network moves it. The master's states go
 ## into [member buffer] (by sequence, jitter-buffered); each one it plays is carried to now
 ## ([method PongNetSmoother.extrapolate]) and handed to the servo as a correction
-## ([method HapticsPong.correct_ball]), which the servo blends in at 1 kHz without a jump
+## ([method PongServo.correct_ball]), which the servo blends in at 1 kHz without a jump
 ## while the ball flies on. A serve is put at once ([method put]). Our own paddle's touch
 ## is what the hand felt: a state the master sent before it cannot know of it and does not
 ## correct the ball (it would undo the touch under the hand).
@@ -35,8 +35,8 @@ var _touched_at: float = -INF
 ## Our ball now, [position, velocity, spin]: the last [method put] while the servo has not
 ## taken it yet, else the servo's state.
 func local() -> Array[Vector3]:
-	var state: HapticPongState = Haptics.pong.get_state()
-	if not _commanded.is_empty() and state.time_s < _commanded_time + 1.5 * HapticsPong.TICK_S:
+	var state: PongState = PongServo.shared().get_state()
+	if not _commanded.is_empty() and state.time_s < _commanded_time + 1.5 * PongServo.TICK_S:
 		return _commanded
 	_commanded = []
 	return [state.ball_position, state.ball_velocity, state.ball_spin]
@@ -45,9 +45,9 @@ func local() -> Array[Vector3]:
 ## Puts the ball there at once (a serve).
 func put(position: Vector3, velocity: Vector3, spin: Vector3) -> void:
 	var inside: Vector3 = _inside(position)
-	_commanded_time = Haptics.pong.get_state().time_s
+	_commanded_time = PongServo.shared().get_state().time_s
 	_commanded = [inside, velocity, spin]
-	Haptics.pong.set_ball(inside, velocity, spin)
+	PongServo.shared().set_ball(inside, velocity, spin)
 
 
 ## The master's ball, carried to now, is here: the servo blends ours onto it. The size of
@@ -56,7 +56,7 @@ func correct(position: Vector3, velocity: Vector3, spin: Vector3) -> void:
 	var inside: Vector3 = _inside(position)
 	smoother.record(local()[0], inside)
 	_commanded = []
-	Haptics.pong.correct_ball(inside, velocity, spin)
+	PongServo.shared().correct_ball(inside, velocity, spin)
 
 
 ## A transfer carried the ball's state, [param age_s] old, to now: [param ball]. A serve
@@ -108,7 +108,7 @@ func follow(now_s: float, predictor: PongPredictor, g: float) -> bool:
 		ignored += 1
 		return true
 	# A threaded servo takes the command a tick later.
-	var lead: float = 0.0 if stepped else HapticsPong.TICK_S
+	var lead: float = 0.0 if stepped else PongServo.TICK_S
 	var target: Array[Vector3] = PongNetSmoother.extrapolate(
 		predictor, state.position, state.velocity, g, age + lead
 	)

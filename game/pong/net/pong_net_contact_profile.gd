@@ -39,7 +39,7 @@ func make_still_paddle(seat: int, match_node: PongMatch) -> PongController:
 	still.intent.avatar = ai.home()
 	still.intent.normal = (PongCourt.forward(seat) + Vector3.UP * 0.4).normalized()
 	match_node.local_player = seat
-	Haptics.pong.set_hand_target_3d(Vector3.ZERO)
+	PongServo.shared().set_hand_target_3d(Vector3.ZERO)
 	return still
 
 
@@ -55,7 +55,7 @@ static func aim_for(court: PongCourt, home: Vector3) -> Vector3:
 		var v: Vector3 = PongReferee.launch_velocity(
 			p, aim, court.gravity, PongReferee.SERVE_FLIGHT_S
 		)
-		var dt: float = HapticsPong.TICK_S
+		var dt: float = PongServo.TICK_S
 		for tick: int in 4000:
 			v.y -= court.gravity * dt
 			v = v.normalized() * maxf(v.length() - decel * dt, 0.0)
@@ -91,7 +91,7 @@ func play_local(health: int) -> void:
 	match_node.run_until(func() -> bool: return false, PongReferee.FIRST_SERVE_DELAY_S)
 	var aim: Vector3 = aim_for(match_node.court, match_node.avatar_of(SEAT))
 	var serve: PongReferee.Serve = match_node.referee.make_serve(match_node.court, aim, false)
-	Haptics.pong.set_ball(serve.position, serve.velocity)
+	PongServo.shared().set_ball(serve.position, serve.velocity)
 	var end: float = match_node.now + LOCAL_SECONDS
 	while match_node.now < end:
 		match_node.run_until(func() -> bool: return false, PongMatch.STEP_CHUNK_S)
@@ -105,7 +105,7 @@ func _watch(match_node: PongMatch) -> void:
 	_stride = columns.size()
 	_time_column = maxi(columns.find("t"), 0)
 	_force_column = columns.find("normal_x")
-	Haptics.servo.drain_telemetry(Haptics.get_constant(&"TELEMETRY_QUEUE_CAPACITY"))
+	Haptics.servo.drain_telemetry(HapticServoConstants.TELEMETRY_QUEUE_CAPACITY)
 
 
 func _process(_delta: float) -> void:
@@ -116,7 +116,7 @@ func _process(_delta: float) -> void:
 func _drain() -> void:
 	if _force_column < 0 or _closed:
 		return
-	var capacity: int = Haptics.get_constant(&"TELEMETRY_QUEUE_CAPACITY")
+	var capacity: int = HapticServoConstants.TELEMETRY_QUEUE_CAPACITY
 	var data: PackedFloat32Array = Haptics.servo.drain_telemetry(capacity)
 	for i: int in range(0, data.size() - _stride + 1, _stride):
 		var t: float = data[i + _time_column]

@@ -43,15 +43,14 @@ func _init(
 
 ## An event of our servo: a floor bounce is recorded (server) and, when we are the
 ## master, charged (server) or claimed (client).
-func on_event(event: Dictionary) -> void:
-	if str(event.get("type", "")) != "floor":
+func on_event(event: PongEvent) -> void:
+	if event.type != PongServoFacts.PongEventType.FLOOR:
 		return
-	var territory: int = event.get("territory", -1)
+	var territory: int = event.territory
 	var on_server: bool = _is_server()
 	var ours: bool = _authority.is_master() and territory >= 0 and territory < judge.seats
 	if on_server:
-		var position: Vector3 = event.get("position", Vector3.ZERO)
-		judge.observe_floor(_match.now, position, ours)
+		judge.observe_floor(_match.now, event.position, ours)
 	if not ours or _match.rules.is_over():
 		return
 	if on_server:
@@ -61,7 +60,7 @@ func on_event(event: Dictionary) -> void:
 
 
 ## Each frame on the server: the ball's path, and the claims that were waiting for it.
-func observe(snapshot: HapticPongState) -> void:
+func observe(snapshot: PongState) -> void:
 	if not _is_server():
 		return
 	for epoch: int in range(_seen_epoch + 1, _authority.epoch + 1):

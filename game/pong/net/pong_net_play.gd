@@ -120,7 +120,7 @@ func frame(delta: float) -> void:
 		# Only the newest state played becomes a command to the servo (whose queue holds 64).
 		_master_velocity = ball.buffer.played.velocity
 		report.extra["ball_stream"] = ball.to_dict()
-	var snapshot: HapticPongState = match_node.snapshot
+	var snapshot: PongState = match_node.snapshot
 	var sim_dt: float = match_node.now - _last_now
 	_last_now = match_node.now
 	if authority.my_id == PongNetAuthority.SERVER_ID:
@@ -181,7 +181,7 @@ func take_over(peer: int) -> void:
 	var pending: bool = authority.master_peer == 0 or not authority.is_master()
 	var ours: bool = authority.owner_of(authority.territory) == PongNetAuthority.SERVER_ID
 	if was_master or (pending and ours):
-		var s: HapticPongState = match_node.snapshot
+		var s: PongState = match_node.snapshot
 		issue(
 			PongNetProtocol.TRANSFER_TAKEOVER,
 			s.territory,
@@ -204,7 +204,7 @@ func issue(
 	callv(&"_on_transfer", [authority.my_id] + args)
 
 
-func _hand_off(snapshot: HapticPongState) -> void:
+func _hand_off(snapshot: PongState) -> void:
 	var request: Dictionary = authority.relinquish(snapshot.territory)
 	if request.is_empty():
 		return
@@ -217,7 +217,7 @@ func _hand_off(snapshot: HapticPongState) -> void:
 
 ## The ball as the master gives it: the corrected one (a hand-off's correction may still be
 ## gliding in), which followers and the server aim at.
-func _ball_of(snapshot: HapticPongState) -> Array:
+func _ball_of(snapshot: PongState) -> Array:
 	var corrected: Vector3 = snapshot.ball_position + snapshot.ball_correction
 	return [corrected, snapshot.ball_velocity, snapshot.ball_spin]
 
@@ -369,7 +369,7 @@ func _on_owners(sender: int, owners: Variant) -> void:
 	owners_changed.emit()
 
 
-func _on_event(event: Dictionary) -> void:
+func _on_event(event: PongEvent) -> void:
 	if floor_hurts != null:
 		floor_hurts.on_event(event)
 
@@ -380,9 +380,9 @@ func _on_match_over(winner: int) -> void:
 
 
 ## A paddle this peer drives touched the ball ([method PongNetBall.touched]).
-func _on_ball_touch(event: Dictionary) -> void:
-	var player: int = event.get("player", -1)
-	if str(event.get("type", "")) == "paddle" and local_seats.has(player):
+func _on_ball_touch(event: PongEvent) -> void:
+	var paddle: bool = event.type == PongServoFacts.PongEventType.PADDLE
+	if paddle and local_seats.has(event.player):
 		ball.touched(PongNetBall.clock_s())
 
 

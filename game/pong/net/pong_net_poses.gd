@@ -37,7 +37,7 @@ func _init(
 
 
 ## Sends the poses of [param seats] from [param snapshot], with our leg [param leg_ms].
-func send(snapshot: HapticPongState, seats: PackedInt32Array, leg_ms: int) -> void:
+func send(snapshot: PongState, seats: PackedInt32Array, leg_ms: int) -> void:
 	for seat: int in seats:
 		var avatar: Vector3 = _match.avatar_of(seat)
 		var offset: Vector3 = snapshot.paddle_centers[seat] - avatar

@@ -33,7 +33,7 @@ class SwingingOwner:
 	var started: float = -1.0
 
 	func update(
-		now: float, _dt: float, _snapshot: HapticPongState, _opponent_avatar: Vector3
+		now: float, _dt: float, _snapshot: PongState, _opponent_avatar: Vector3
 	) -> PongIntent:
 		if started < 0.0:
 			started = now
@@ -61,7 +61,7 @@ class SteppingVictim:
 	var mines: PongMines = null
 
 	func update(
-		_now: float, _dt: float, _snapshot: HapticPongState, _opponent_avatar: Vector3
+		_now: float, _dt: float, _snapshot: PongState, _opponent_avatar: Vector3
 	) -> PongIntent:
 		for mine: PongMines.Mine in mines.placed:
 			if mine.owner == OWNER and mine.kind == "remote":
@@ -103,9 +103,9 @@ func make_controller(seat: int, match_node: PongMatch) -> PongController:
 		still.intent.avatar = victim_home
 		still.intent.normal = (PongCourt.forward(seat) + Vector3.UP * 0.4).normalized()
 		match_node.local_player = seat
-		Haptics.pong.set_hand_target_3d(Vector3.ZERO)
+		PongServo.shared().set_hand_target_3d(Vector3.ZERO)
 		if not passivity:
-			Haptics.pong.configure({"remote_passivity": false})
+			PongServo.shared().configure({"remote_passivity": false})
 		return still
 	var swinging: SwingingOwner = SwingingOwner.new()
 	swinging.player = seat
@@ -136,7 +136,7 @@ func follow(play: PongNetPlay) -> void:
 	_stride = columns.size()
 	for column: String in ["t", "position_x", "weight_x"]:
 		_columns[column] = columns.find(column)
-	Haptics.servo.drain_telemetry(Haptics.get_constant(&"TELEMETRY_QUEUE_CAPACITY"))
+	Haptics.servo.drain_telemetry(HapticServoConstants.TELEMETRY_QUEUE_CAPACITY)
 	_duration_s = _match.court.number("mine_effect_duration_s")
 	_match.mine_exploded.connect(_on_mine_exploded)
 
@@ -154,7 +154,7 @@ func _process(_delta: float) -> void:
 	if _match == null or _stride == 0 or _done:
 		return
 	var data: PackedFloat32Array = Haptics.servo.drain_telemetry(
-		Haptics.get_constant(&"TELEMETRY_QUEUE_CAPACITY")
+		HapticServoConstants.TELEMETRY_QUEUE_CAPACITY
 	)
 	if not _measuring:
 		return
@@ -186,7 +186,7 @@ func _process(_delta: float) -> void:
 
 # The servo's book of the coupling's work on the hand, J.
 func _remote_work() -> float:
-	return Haptics.pong.get_state().remote_work_j
+	return PongServo.shared().get_state().remote_work_j
 
 
 ## {passivity, complete, work_j, peak_work_j, telemetry_work_j, allowance_j, hand_travel_m,

@@ -49,9 +49,7 @@ static func flags_of(p_intent: PongIntent) -> int:
 	return (1 if p_intent.spin else 0) | (2 if p_intent.gun else 0)
 
 
-func update(
-	now: float, _dt: float, _snapshot: HapticPongState, _opponent_avatar: Vector3
-) -> PongIntent:
+func update(now: float, _dt: float, _snapshot: PongState, _opponent_avatar: Vector3) -> PongIntent:
 	# Its peer fires and places its mines (and says so): never here. The intent may be the
 	# one of the computer player this seat had before.
 	intent.fire = false

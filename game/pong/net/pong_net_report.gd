@@ -56,7 +56,7 @@ func transfer(entry: Dictionary) -> void:
 
 ## The ball in this peer's servo [param snapshot]; [param master]: whether this peer
 ## simulates it for everyone.
-func sample(snapshot: HapticPongState, master: bool) -> void:
+func sample(snapshot: PongState, master: bool) -> void:
 	correction_step_max_m = maxf(correction_step_max_m, snapshot.ball_correction_step_max)
 	var position: Vector3 = snapshot.ball_position
 	var sim_s: float = snapshot.time_s

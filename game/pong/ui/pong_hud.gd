@@ -88,19 +88,23 @@ func refresh(match_node: PongMatch, delta: float) -> void:
 		panel.show_health(match_node.rules.get_health(side))
 		panel.show_mines(match_node.mines.left(side), match_node.mines.next_kind(side))
 		panel.show_modes(intent.spin, intent.gun)
-		var effect: Dictionary = match_node.effect_of(side)
-		var remaining: float = effect.get("remaining_s", 0.0)
-		panel.show_effect(str(effect.get("kind", "")), remaining)
-	var snapshot: HapticPongState = match_node.snapshot
+		var effect: PongEffectState = match_node.effect_of(side)
+		if effect != null:
+			panel.show_effect(
+				PongServoFacts.PONG_EFFECT_KIND_NAMES[effect.kind], effect.remaining_s
+			)
+		else:
+			panel.show_effect("", 0.0)
+	var snapshot: PongState = match_node.snapshot
 	var total: float = match_node.take_peak_force()
 	_plot.advance(delta, total)
 	_force_value.text = "%.2f N" % total
 	_components.text = (
 		"contact %.2f  ·  spin %.2f  ·  effects %.2f N"
 		% [
-			snapshot.force_of("contact").length(),
-			snapshot.force_of("spin").length(),
-			snapshot.force_of("effects").length(),
+			snapshot.hand_force.contact.length(),
+			snapshot.hand_force.spin.length(),
+			snapshot.hand_force.effects.length(),
 		]
 	)
 	_message_left -= delta

@@ -64,7 +64,7 @@ func _ready() -> void:
 	setup.back_requested.connect(_leave)
 	setup.network_requested.connect(func() -> void: network_requested.emit(setup.get_players()))
 	setup.network_button.visible = not network_requested.get_connections().is_empty()
-	if not Haptics.pong.is_available():
+	if not PongServo.shared().is_available():
 		setup.show_offline(OFFLINE_TEXT if not Haptics.is_available() else OLD_EXTENSION_TEXT)
 		if quit_when_over:
 			print(setup.get_message())

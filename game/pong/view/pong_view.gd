@@ -102,7 +102,7 @@ func view_from(player: int) -> void:
 func render(match_node: PongMatch) -> void:
 	if _court == null:
 		return
-	var snapshot: HapticPongState = match_node.snapshot
+	var snapshot: PongState = match_node.snapshot
 	var ball: Vector3 = snapshot.ball_position
 	_ball.position = ball
 	var height: float = maxf(ball.y - _court.ball_radius, 0.0)

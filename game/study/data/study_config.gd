@@ -214,7 +214,7 @@ func _check_values(source: String) -> void:
 		if rule.size() == 3:
 			_check_range(source, path, _value(path), rule[1], rule[2])
 	# The telemetry keeps at least the format's minimum rate at the servo's default rate.
-	var servo_rate_hz: float = Haptics.get_constant(&"DEFAULT_RATE_HZ")
+	var servo_rate_hz: float = HapticServoConstants.DEFAULT_RATE_HZ
 	var decimation_max: int = maxi(1, floori(servo_rate_hz / StudyFormat.telemetry_min_rate_hz))
 	_check_range(source, "telemetry_decimation", _value("telemetry_decimation"), 1, decimation_max)
 	for path: String in CHOICES.keys() + CONTACT_MODEL_SETTINGS:

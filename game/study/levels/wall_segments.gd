@@ -1,7 +1,7 @@
 class_name WallSegments
 extends RefCounted
 ## Extracts the outline segments of a level's static walls for the constraint renderer
-## ([code]Haptics.set_constraint_geometry[/code]): every edge of every
+## ([code]HapticsConstraint.set_walls[/code]): every edge of every
 ## [CollisionPolygon2D] and [CollisionShape2D] under the given nodes, as consecutive point
 ## pairs [code]a0, b0, a1, b1, …[/code] in the coordinates of a reference [Node2D] (the
 ## level: maze units are the level's own pixels).

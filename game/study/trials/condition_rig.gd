@@ -153,7 +153,7 @@ func go() -> void:
 	Haptics.smoothing_enabled = smoothing
 	if StudyFormat.is_position_control(condition):
 		Haptics.force_scale = 1.0
-		Haptics.set_render_mode(&"constraint")
+		HapticsConstraint.of(Haptics).activate()
 		probe.heartbeat_only = true
 		probe.drive_input = false
 		player.set_physics_process(false)
@@ -209,12 +209,11 @@ func avatar_position() -> Vector2:
 	return player.global_position
 
 
-## Proxy state from the server ({} outside position control or without the extension).
-func proxy_state() -> Dictionary:
+## The constraint renderer's proxy (null outside position control).
+func proxy_state() -> HapticProxyState:
 	if not StudyFormat.is_position_control(condition) or not is_live:
-		return {}
-	var state: Dictionary = Haptics.get_proxy_state()
-	return state
+		return null
+	return HapticsConstraint.of(Haptics).get_proxy()
 
 
 ## The normalised hand position a trial starts from: the centre (acceleration control) or
@@ -228,9 +227,7 @@ func start_hand() -> Vector2:
 ## Whether the device renders (next to) no force: a trial starts only then, so nothing
 ## felt before it (a wall at the end of the previous trial) carries over.
 func is_settled() -> bool:
-	var forces: Dictionary = Haptics.get_forces()
-	var total: Vector2 = forces.get("total", Vector2.ZERO)
-	return total.length() < SETTLED_FORCE_N
+	return Haptics.get_forces().total.length() < SETTLED_FORCE_N
 
 
 ## The device's current normalised position (game axes).
@@ -265,10 +262,10 @@ func _input(event: InputEvent) -> void:
 # The follower: the avatar is drawn where the proxy is, its velocity estimated for the
 # hull's pose.
 func _follow_proxy(delta: float) -> void:
-	var state: Dictionary = proxy_state()
-	if state.is_empty():
+	var state: HapticProxyState = proxy_state()
+	if state == null:
 		return
-	var proxy: Vector2 = state.get("position", player.global_position)
+	var proxy: Vector2 = state.proxy
 	player.global_position = proxy
 	if delta > 0.0:
 		player.velocity = player.velocity.lerp((proxy - _last_proxy) / delta, 0.3)
@@ -326,5 +323,5 @@ func _send_constraint() -> bool:
 	}
 	var ok: bool = Haptics.configure("constraint", constraint)
 	var segments: PackedVector2Array = level.get_wall_segments()
-	var sent: bool = Haptics.set_constraint_geometry(segments, map)
+	var sent: bool = HapticsConstraint.of(Haptics).set_walls(segments, map)
 	return ok and sent

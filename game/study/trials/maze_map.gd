@@ -9,24 +9,33 @@ extends HapticMazeMapping
 
 ## The device's workspace radius, metres.
 var device_radius_m: float = 0.1
+## The maze rectangle, maze units (y down).
+var bounds: Rect2:
+	get:
+		return Rect2(maze_min, maze_max - maze_min)
 
 
+## [param p_workspace]: [code]disc[/code] or [code]square[/code]
+## ([constant HapticConstraint.WORKSPACE_SHAPE_NAMES]).
 func _init(
 	p_bounds: Rect2 = Rect2(0.0, 0.0, 1.0, 1.0),
 	p_workspace: String = "disc",
 	p_half_extent_m: float = 0.0,
 	p_device_radius_m: float = 0.1
 ) -> void:
-	super(p_bounds, p_workspace, p_half_extent_m)
+	maze_min = p_bounds.position
+	maze_max = p_bounds.end
+	var shape: int = maxi(HapticConstraint.WORKSPACE_SHAPE_NAMES.find(p_workspace), 0)
+	workspace_shape = shape as HapticConstraint.WorkspaceShape
+	workspace_half_extent_m = p_half_extent_m
 	device_radius_m = p_device_radius_m
 
 
 ## Metres of device travel per maze unit.
 func metres_per_unit() -> float:
-	var half: float = half_extent_m if half_extent_m > 0.0 else device_radius_m
-	var span: float = (
-		bounds.size.length() if workspace == "disc" else maxf(bounds.size.x, bounds.size.y)
-	)
+	var half: float = workspace_half_extent_m if workspace_half_extent_m > 0.0 else device_radius_m
+	var disc: bool = workspace_shape == HapticConstraint.WorkspaceShape.DISC
+	var span: float = bounds.size.length() if disc else maxf(bounds.size.x, bounds.size.y)
 	return 2.0 * half / maxf(span, 1e-9)
 
 

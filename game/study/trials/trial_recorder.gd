@@ -66,10 +66,11 @@ func _init(
 	# As the server has it (the rig set it up for the condition), not as the settings asked.
 	if not _position_control:
 		result.contact_model = Haptics.get_choice("force_model", "contact_model")
-	var flag: StringName = (
-		&"TELEMETRY_FLAG_PROXY_CONTACT" if _position_control else &"TELEMETRY_FLAG_CONTACT"
+	_contact_flag = (
+		HapticConstraint.TELEMETRY_FLAG_PROXY_CONTACT
+		if _position_control
+		else HapticServoConstants.TELEMETRY_FLAG_CONTACT
 	)
-	_contact_flag = Haptics.get_constant(flag)
 	var names: PackedStringArray = Haptics.servo.get_telemetry_columns()
 	_stride = names.size()
 	for i: int in names.size():
@@ -128,7 +129,7 @@ func finish(avatar: Vector2, time_s: float, completed: bool) -> bool:
 
 
 func _drain() -> PackedFloat32Array:
-	return Haptics.servo.drain_telemetry(Haptics.get_constant(&"TELEMETRY_QUEUE_CAPACITY"))
+	return Haptics.servo.drain_telemetry(HapticServoConstants.TELEMETRY_QUEUE_CAPACITY)
 
 
 func _drain_all() -> void:

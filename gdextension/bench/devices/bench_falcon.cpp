@@ -129,8 +129,7 @@ DeviceBenchResult run_falcon_bench(double p_seconds) {
 			std::this_thread::sleep_for(std::chrono::milliseconds(1));
 		}
 		Frame frame;
-		frame.contact_count = 1;
-		frame.contacts[0].normal = Vec3{ 0.0, 1.0, 0.0 };
+		add_contact(frame, Vec3{ 0.0, 1.0, 0.0 });
 		system.submit_frame(frame);
 		const int tick_count = static_cast<int>(p_seconds / 2.0 * 1000.0);
 		ticks.reserve(static_cast<size_t>(tick_count));

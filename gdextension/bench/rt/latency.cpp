@@ -49,7 +49,7 @@ LatencyResult measure(bool p_constraint, bool p_rigid) {
 	} else {
 		// A wall on the player's right (normal pointing left, towards the player); the hand
 		// steps right, into it.
-		frame.add_contact({ -1.0, 0.0, 0.0 });
+		add_contact(frame, { -1.0, 0.0, 0.0 });
 		step_to = { 0.05, 0.0, 0.0 };
 	}
 	require(system.set_hand_target({ 0.0, 0.0, 0.0 }), "hand");

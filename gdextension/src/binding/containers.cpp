@@ -68,6 +68,20 @@ Array Dictionary::keys() const {
 	return Array(std::move(ret));
 }
 
+PackedStringArray::PackedStringArray() :
+		value_(make_default(VariantType::PACKED_STRING_ARRAY)) {}
+
+void PackedStringArray::append(std::string_view p_text) {
+	Variant ret;
+	const Variant text{ std::string(p_text) };
+	const Variant *args[1] = { &text };
+	value_.call("append", args, 1, ret);
+}
+
+int64_t PackedStringArray::size() const {
+	return size_of(value_);
+}
+
 Array::Array() :
 		value_(make_default(VariantType::ARRAY)) {}
 
@@ -121,6 +135,22 @@ void *internal(const Variant &p_value, VariantType p_type) {
 } // namespace
 
 template <>
+uint8_t *PackedByteArray::ptrw() {
+	if (size() == 0) {
+		return nullptr;
+	}
+	return api.packed_byte_array_operator_index(internal(value_, VariantType::PACKED_BYTE_ARRAY), 0);
+}
+
+template <>
+const uint8_t *PackedByteArray::ptr() const {
+	if (size() == 0) {
+		return nullptr;
+	}
+	return api.packed_byte_array_operator_index_const(internal(value_, VariantType::PACKED_BYTE_ARRAY), 0);
+}
+
+template <>
 float *PackedFloat32Array::ptrw() {
 	if (size() == 0) {
 		return nullptr;
@@ -156,6 +186,7 @@ const Vector2 *PackedVector2Array::ptr() const {
 			internal(value_, VariantType::PACKED_VECTOR2_ARRAY), 0));
 }
 
+template class PackedArray<uint8_t, VariantType::PACKED_BYTE_ARRAY>;
 template class PackedArray<float, VariantType::PACKED_FLOAT32_ARRAY>;
 template class PackedArray<Vector2, VariantType::PACKED_VECTOR2_ARRAY>;
 

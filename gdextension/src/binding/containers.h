@@ -49,6 +49,22 @@ private:
 	Variant value_;
 };
 
+// Strings, appended one by one (names and messages: a handful at a time).
+class PackedStringArray {
+public:
+	PackedStringArray();
+	explicit PackedStringArray(Variant p_value) :
+			value_(std::move(p_value)) {}
+
+	void append(std::string_view p_text);
+	int64_t size() const;
+
+	const Variant &variant() const { return value_; }
+
+private:
+	Variant value_;
+};
+
 // Packed arrays of plain values, written through one pointer after a single resize.
 template <typename T, VariantType TYPE>
 class PackedArray {
@@ -69,9 +85,14 @@ private:
 	Variant value_;
 };
 
+using PackedByteArray = PackedArray<uint8_t, VariantType::PACKED_BYTE_ARRAY>;
 using PackedFloat32Array = PackedArray<float, VariantType::PACKED_FLOAT32_ARRAY>;
 using PackedVector2Array = PackedArray<Vector2, VariantType::PACKED_VECTOR2_ARRAY>;
 
+template <>
+uint8_t *PackedByteArray::ptrw();
+template <>
+const uint8_t *PackedByteArray::ptr() const;
 template <>
 float *PackedFloat32Array::ptrw();
 template <>
@@ -81,6 +102,7 @@ Vector2 *PackedVector2Array::ptrw();
 template <>
 const Vector2 *PackedVector2Array::ptr() const;
 
+extern template class PackedArray<uint8_t, VariantType::PACKED_BYTE_ARRAY>;
 extern template class PackedArray<float, VariantType::PACKED_FLOAT32_ARRAY>;
 extern template class PackedArray<Vector2, VariantType::PACKED_VECTOR2_ARRAY>;
 

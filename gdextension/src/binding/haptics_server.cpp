@@ -4,9 +4,9 @@
 #include <cmath>
 
 #include "binding/config_dictionary.h"
-#include "binding/conversions.h"
 #include "binding/log.h"
 #include "binding/version.h"
+#include "binding/wire_values.h"
 #include "core/base/coordinates.h"
 #include "core/servo/telemetry.h"
 #include "system/config_table.h"
@@ -19,19 +19,23 @@ namespace {
 
 constexpr int64_t NS_PER_US = 1000;
 
+// Device space (y up) to the 2D game's axes (y down): the input vector and the device's
+// position, which 2D games read every frame.
+gd::Vector2 to_game(const Vec3 &p_device) {
+	const GameVec2 game = device_to_game(p_device);
+	return { static_cast<float>(game.x), static_cast<float>(game.y) };
+}
+
 } // namespace
 
 void HapticsServer::bind_methods(gd::ClassBinder<HapticsServer> &r_binder) {
 	using S = HapticsServer;
 	r_binder.bind_method("list_devices", &S::list_devices);
-	r_binder.bind_method("get_device", &S::get_device, { "id" });
-	r_binder.bind_method("get_device_warnings", &S::get_device_warnings);
 	r_binder.bind_method("get_simulated_device_id", &S::get_simulated_device_id);
 	r_binder.bind_method("open_device", &S::open_device, { "id" });
 	r_binder.bind_method("close_device", &S::close_device);
 	r_binder.bind_method("get_device_id", &S::get_device_id);
 	r_binder.bind_method("get_device_name", &S::get_device_name);
-	r_binder.bind_method("get_device_limits", &S::get_device_limits);
 	r_binder.bind_method("get_device_capabilities", &S::get_device_capabilities);
 	r_binder.bind_method("get_device_status", &S::get_device_status);
 	r_binder.bind_method("calibrate", &S::calibrate);
@@ -54,15 +58,11 @@ void HapticsServer::bind_methods(gd::ClassBinder<HapticsServer> &r_binder) {
 			{ gd::Variant(static_cast<int64_t>(TELEMETRY_QUEUE_CAPACITY)) });
 	r_binder.bind_method("get_telemetry_stride", &S::get_telemetry_stride);
 	r_binder.bind_method("get_telemetry_columns", &S::get_telemetry_columns);
+	r_binder.bind_method("get_renderer_names", &S::get_renderer_names);
 	r_binder.bind_method("set_render_mode", &S::set_render_mode, { "mode" });
 	r_binder.bind_method("get_render_mode", &S::get_render_mode);
-	r_binder.bind_method("set_constraint_geometry", &S::set_constraint_geometry, { "segments", "mapping" });
-	r_binder.bind_method("get_proxy_state", &S::get_proxy_state);
-	r_binder.bind_method("set_pong_input", &S::set_pong_input, { "input" });
-	r_binder.bind_method("pong_command", &S::pong_command, { "command" });
-	r_binder.bind_method("get_pong_state", &S::get_pong_state);
-	r_binder.bind_method("drain_pong_events", &S::drain_pong_events);
-	r_binder.bind_method("set_hand_target_3d", &S::set_hand_target_3d, { "target_m" });
+	r_binder.bind_method("renderer_send", &S::renderer_send, { "mode", "message" });
+	r_binder.bind_method("renderer_read", &S::renderer_read, { "mode", "value_id" });
 	r_binder.bind_method("set_config", &S::set_config, { "section", "values" });
 	r_binder.bind_method("get_config", &S::get_config);
 	r_binder.bind_method("get_config_fields", &S::get_config_fields);
@@ -141,24 +141,14 @@ std::string HapticsServer::get_servo_status() const {
 	return system_.servo_status().message();
 }
 
-bool HapticsServer::submit_frame(const gd::Dictionary &p_frame) {
+bool HapticsServer::submit_frame(const gd::PackedByteArray &p_frame) {
 	Frame frame;
-	std::string error;
-	if (!frame_from_dictionary(p_frame, frame, error)) {
-		HAPTICS_ERROR("submit_frame: " + error + "; the previous frame stays in force.");
-		return false;
-	}
-	return report("submit_frame", system_.submit_frame(frame));
+	return decode_argument("submit_frame", p_frame, frame) && report("submit_frame", system_.submit_frame(frame));
 }
 
-bool HapticsServer::push_impact(const gd::Dictionary &p_impact) {
+bool HapticsServer::push_impact(const gd::PackedByteArray &p_impact) {
 	ImpactEvent event;
-	std::string error;
-	if (!impact_from_dictionary(p_impact, event, error)) {
-		HAPTICS_ERROR("push_impact: " + error);
-		return false;
-	}
-	return report("push_impact", system_.push_impact(event));
+	return decode_argument("push_impact", p_impact, event) && report("push_impact", system_.push_impact(event));
 }
 
 gd::Vector2 HapticsServer::get_input_vector() const {
@@ -169,14 +159,12 @@ gd::Vector2 HapticsServer::get_device_position() const {
 	return to_game(system_.device_position());
 }
 
-gd::Dictionary HapticsServer::get_forces() const {
-	const ServoOutput output = system_.output(); // The forces and whose they are, one tick.
-	const RegisteredRenderer &active = registered_renderers()[static_cast<size_t>(output.render_mode)];
-	return forces_to_dictionary(output.forces, active.info->force_names);
+gd::PackedByteArray HapticsServer::get_forces() const {
+	return encode_result(system_.forces());
 }
 
-gd::Dictionary HapticsServer::get_stats() const {
-	return stats_to_dictionary(system_.stats());
+gd::PackedByteArray HapticsServer::get_stats() const {
+	return encode_result(system_.stats());
 }
 
 gd::PackedFloat32Array HapticsServer::drain_telemetry(int64_t p_max_samples) {
@@ -198,7 +186,7 @@ int64_t HapticsServer::get_telemetry_stride() const {
 	return static_cast<int64_t>(TELEMETRY_STRIDE);
 }
 
-gd::Array HapticsServer::get_telemetry_columns() const {
+gd::PackedStringArray HapticsServer::get_telemetry_columns() const {
 	// The force parts' columns are named after the default renderer's components (the
 	// movement renderer's five); other renderers fill them in their own order.
 	const std::span<const char *const> parts = registered_renderers()[0].info->force_names;
@@ -207,7 +195,7 @@ gd::Array HapticsServer::get_telemetry_columns() const {
 		vectors.push_back(part < parts.size() ? parts[part] : "part" + std::to_string(part));
 	}
 	vectors.insert(vectors.end(), { "smoothed", "impact", "total" });
-	gd::Array names;
+	gd::PackedStringArray names;
 	names.append("t");
 	for (const std::string &vector : vectors) {
 		for (const char *axis : { "_x", "_y", "_z" }) {
@@ -215,6 +203,14 @@ gd::Array HapticsServer::get_telemetry_columns() const {
 		}
 	}
 	names.append("flags");
+	return names;
+}
+
+gd::PackedStringArray HapticsServer::get_renderer_names() const {
+	gd::PackedStringArray names;
+	for (const RegisteredRenderer &renderer : registered_renderers()) {
+		names.append(renderer.name);
+	}
 	return names;
 }
 
@@ -260,21 +256,28 @@ int64_t HapticsServer::get_render_mode() const {
 	return static_cast<int64_t>(system_.config().servo.render_mode);
 }
 
-bool HapticsServer::set_constraint_geometry(const gd::PackedVector2Array &p_segments,
-		const gd::Dictionary &p_mapping) {
-	std::vector<Segment2> segments;
-	MazeMapping mapping;
-	std::string error;
-	if (!segments_from_points(p_segments, segments, error) ||
-			!mapping_from_dictionary(p_mapping, mapping, error)) {
-		HAPTICS_ERROR("set_constraint_geometry: " + error + "; the previous walls stay.");
-		return false;
+RendererPort *HapticsServer::port_of(const char *p_method, int64_t p_mode) {
+	const auto &ports = system_.renderers().all_ports;
+	if (p_mode < 0 || p_mode >= static_cast<int64_t>(ports.size())) {
+		HAPTICS_ERROR(std::string(p_method) + ": no renderer has mode " + std::to_string(p_mode) + " (0.." +
+				std::to_string(ports.size() - 1) + ", get_renderer_names())");
+		return nullptr;
 	}
-	return report("set_constraint_geometry", constraint_.set_geometry(segments.data(), segments.size(), mapping));
+	return ports[static_cast<size_t>(p_mode)];
 }
 
-gd::Dictionary HapticsServer::get_proxy_state() const {
-	return proxy_state_to_dictionary(constraint_.state());
+bool HapticsServer::renderer_send(int64_t p_mode, const gd::PackedByteArray &p_message) {
+	RendererPort *port = port_of("renderer_send", p_mode);
+	return port && report("renderer_send", port->receive(bytes_of(p_message)));
+}
+
+gd::PackedByteArray HapticsServer::renderer_read(int64_t p_mode, int64_t p_value_id) {
+	RendererPort *port = port_of("renderer_read", p_mode);
+	std::vector<uint8_t> bytes;
+	if (!port || !report("renderer_read", port->give(static_cast<uint32_t>(p_value_id), bytes))) {
+		return gd::PackedByteArray();
+	}
+	return to_packed(bytes);
 }
 
 gd::Dictionary HapticsServer::get_config() const {

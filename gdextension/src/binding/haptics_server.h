@@ -1,11 +1,12 @@
-// HapticsServer: the one class GDScript talks to. A thin adapter over the engine-free
-// HapticsSystem (system/haptics_system.h) and the ports of the renderers that offer more
-// than the servo (ConstraintPort, PongPort): it converts engine values to the core's plain
-// structs and back (conversions.h) and reports rejected input through the engine's error
-// printer, naming the offending field; a rejected call changes nothing. All behaviour lives
-// below the binding.
+// HapticsServer: the one native class, which GDScript reaches through the Haptics door's native
+// backend only. A thin adapter over the engine-free HapticsSystem (system/haptics_system.h)
+// and its renderers' ports: values cross as the bytes of their schema (wire_values.h), so it
+// names no game and converts no field by hand; rejected input is reported through the
+// engine's error printer, naming the field, and a rejected call changes nothing. All
+// behaviour lives below the binding.
 //
-// Vectors are in game axes (x right, y down). Lengths are metres, forces newtons.
+// Vectors the 2D door reads every frame are in game axes (x right, y down); the hand target
+// is device space. Lengths are metres, forces newtons.
 #pragma once
 
 #include <string>
@@ -13,8 +14,6 @@
 
 #include "binding/class_db.h"
 #include "binding/containers.h"
-#include "renderers/constraint/constraint_port.h"
-#include "renderers/pong/pong_port.h"
 #include "system/haptics_system.h"
 
 namespace haptics::binding {
@@ -24,15 +23,10 @@ public:
 	static void bind_methods(gd::ClassBinder<HapticsServer> &r_binder);
 
 	// --- Devices --- (haptics_server_devices.cpp)
-	// Every device present: the simulated one first, then hidapi, libusb, evdev and
-	// OpenHaptics devices, each a Dictionary (id, backend, vendor_id, product_id, path,
-	// product, manufacturer, serial, usage_page, usage, known_haptic, model, driver,
-	// openable, unavailable_reason).
-	gd::Array list_devices();
-	// The entry of list_devices() with this id; an empty Dictionary (and an error) if none.
-	gd::Dictionary get_device(const std::string &p_id);
-	// Why the last enumeration could not look everywhere (no USB bus, no permission...).
-	gd::Array get_device_warnings() const;
+	// Every device present (the simulated one first, then hidapi, libusb, evdev and
+	// OpenHaptics devices) and why the enumeration could not look everywhere: a
+	// HapticDeviceList.
+	gd::PackedByteArray list_devices();
 	// The id of the simulated device, which every installation has ("simulated").
 	std::string get_simulated_device_id() const;
 	// Opens a device by id (get_simulated_device_id(), or an id from list_devices()). On
@@ -41,17 +35,15 @@ public:
 	void close_device();
 	std::string get_device_id() const;
 	std::string get_device_name() const;
-	// max_force_n, max_continuous_force_n, max_stiffness_n_per_m, workspace_radius_m.
-	gd::Dictionary get_device_limits() const;
-	// Limits plus input/output DOF, output kind, native rate, orientation, homing, buttons;
-	// empty without a device.
-	gd::Dictionary get_device_capabilities() const;
-	// {io: "ok" | "disconnected" | "failed", reason}: the device's own account of a fault.
-	gd::Dictionary get_device_status() const;
+	// A HapticDeviceCapabilities (its limits inside; all zero limits without a device).
+	gd::PackedByteArray get_device_capabilities() const;
+	// A HapticDeviceStatus: the device's own account of a fault.
+	gd::PackedByteArray get_device_status() const;
 	bool calibrate();
-	// Simulated device only: where its hand pulls the stylus, in metres (game axes).
-	bool set_hand_target(gd::Vector2 p_target_m);
-	gd::Vector2 get_hand_target() const;
+	// Simulated device only: where its hand pulls the stylus, in metres, device space (x right,
+	// y up, z toward the user).
+	bool set_hand_target(gd::Vector3 p_target_m);
+	gd::Vector3 get_hand_target() const;
 	// Devices in software only (HapticDevice::software_cable): unplug (false) or replug it, to
 	// exercise disconnect handling.
 	bool set_simulated_plugged(bool p_plugged);
@@ -68,48 +60,37 @@ public:
 	// "" while rendering is healthy, else why it stopped (e.g. the device was unplugged).
 	std::string get_servo_status() const;
 
-	// --- Game -> servo --- (dictionary layouts: conversions.h)
-	bool submit_frame(const gd::Dictionary &p_frame);
-	bool push_impact(const gd::Dictionary &p_impact);
+	// --- Game -> servo --- (each a HapticFrame's or HapticImpact's encode())
+	bool submit_frame(const gd::PackedByteArray &p_frame);
+	bool push_impact(const gd::PackedByteArray &p_impact);
 
 	// --- Servo -> game ---
 	gd::Vector2 get_input_vector() const;
 	gd::Vector2 get_device_position() const;
-	// The active renderer's components by its names (movement and constraint: normal,
-	// friction, weight, drag, inertia; Pong: contact, spin, effects), then continuous,
-	// smoothed, impact, total: Vector2 N.
-	gd::Dictionary get_forces() const;
-	gd::Dictionary get_stats() const;
+	// A HapticForces: the active renderer's components (its force enum names them), then
+	// continuous, smoothed, impact, total; game axes, N.
+	gd::PackedByteArray get_forces() const;
+	// A HapticServoStats.
+	gd::PackedByteArray get_stats() const;
 	// Up to p_max_samples samples of get_telemetry_stride() floats each, oldest first, in
 	// DEVICE axes (y up); get_telemetry_columns() names the floats.
 	gd::PackedFloat32Array drain_telemetry(int64_t p_max_samples);
 	int64_t get_telemetry_stride() const;
-	gd::Array get_telemetry_columns() const;
+	gd::PackedStringArray get_telemetry_columns() const;
 
 	// --- Constraint-based rendering (position control against a maze's walls) ---
+	// The renderers by name, in render-mode order (a mode is its name's index).
+	gd::PackedStringArray get_renderer_names() const;
 	// RENDER_MODE_MOVEMENT (the default), RENDER_MODE_CONSTRAINT or RENDER_MODE_PONG.
 	bool set_render_mode(int64_t p_mode);
 	int64_t get_render_mode() const;
-	// Walls as point pairs in maze units and how the maze maps onto the workspace
-	// (conversions.h). On error the previous walls stay.
-	bool set_constraint_geometry(const gd::PackedVector2Array &p_segments, const gd::Dictionary &p_mapping);
-	// position (where to draw the avatar), goal (the device in maze units), constraints
-	// (walls holding the proxy), placed, updates, geometry_segments.
-	gd::Dictionary get_proxy_state() const;
-
-	// --- Haptic Battle Pong (RENDER_MODE_PONG; haptics_server_pong.cpp) ---
-	// World vectors are Godot's 3D world (Vector3, metres, y up) and pass straight through;
-	// hand forces are the device player's device space. Layouts: pong_conversions.h.
-	// The latest paddles and modes, every frame (in PONG mode also the watchdog's heartbeat).
-	bool set_pong_input(const gd::Dictionary &p_input);
-	// set_ball, effect or clear_effects, queued for the servo's next tick.
-	bool pong_command(const gd::Dictionary &p_command);
-	gd::Dictionary get_pong_state() const;
-	// The events since the last drain, oldest first.
-	gd::Array drain_pong_events();
-	// Simulated device only: its hand target in DEVICE space (x right, y up, z toward the
-	// user), metres, so the stylus can be moved in depth.
-	bool set_hand_target_3d(gd::Vector3 p_target_m);
+	// --- What one renderer offers of its own (core/render/renderer_port.h) ---
+	// p_message: a value of that renderer's schema it takes (its encode()); refused ones are
+	// reported by name and change nothing.
+	bool renderer_send(int64_t p_mode, const gd::PackedByteArray &p_message);
+	// The value of layout p_value_id it gives (its SCHEMA_ID); empty, and reported, when it
+	// gives no such value.
+	gd::PackedByteArray renderer_read(int64_t p_mode, int64_t p_value_id);
 
 	// --- Configuration --- by section (system/config_table.h); only the keys given change.
 	// get_config() returns every section with every key, get_config_fields() the table
@@ -123,12 +104,11 @@ public:
 private:
 	bool report(const char *p_method, const Status &p_status) const;
 
+	RendererPort *port_of(const char *p_method, int64_t p_mode);
+
 	HapticsSystem system_;
-	ConstraintPort constraint_{ system_.renderers().constraint.channels };
-	PongPort pong_{ system_.renderers().pong.channels };
 	std::string device_id_;
-	gd::Vector2 hand_target_;
-	std::vector<std::string> last_warnings_;
+	gd::Vector3 hand_target_;
 };
 
 } // namespace haptics::binding

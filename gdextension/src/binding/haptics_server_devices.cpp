@@ -3,69 +3,18 @@
 
 #include "binding/haptics_server.h"
 
-#include "binding/conversions.h"
 #include "binding/log.h"
-#include "core/base/coordinates.h"
+#include "binding/wire_values.h"
 #include "system/device_factory.h"
 
 namespace haptics::binding {
 
-namespace {
-
-gd::Dictionary to_dictionary(const DeviceInfo &p_device) {
-	gd::Dictionary d;
-	d.set("id", p_device.id);
-	d.set("backend", p_device.backend);
-	d.set("vendor_id", static_cast<int64_t>(p_device.vendor_id));
-	d.set("product_id", static_cast<int64_t>(p_device.product_id));
-	d.set("path", p_device.path);
-	d.set("product", p_device.product);
-	d.set("manufacturer", p_device.manufacturer);
-	d.set("serial", p_device.serial);
-	d.set("usage_page", static_cast<int64_t>(p_device.usage_page));
-	d.set("usage", static_cast<int64_t>(p_device.usage));
-	d.set("known_haptic", p_device.known_haptic);
-	d.set("model", p_device.model);
-	d.set("driver", p_device.driver);
-	d.set("openable", p_device.openable);
-	d.set("unavailable_reason", p_device.unavailable_reason);
-	return d;
-}
-
-} // namespace
-
-gd::Array HapticsServer::list_devices() {
-	const DeviceList found = list_all_devices();
-	last_warnings_ = found.warnings;
-	gd::Array out;
-	for (const DeviceInfo &device : found.devices) {
-		out.append(to_dictionary(device).variant());
-	}
-	return out;
-}
-
-gd::Dictionary HapticsServer::get_device(const std::string &p_id) {
-	const DeviceList found = list_all_devices();
-	last_warnings_ = found.warnings;
-	for (const DeviceInfo &device : found.devices) {
-		if (device.id == p_id) {
-			return to_dictionary(device);
-		}
-	}
-	HAPTICS_ERROR("No device with id '" + p_id + "'; list_devices() shows what is present.");
-	return gd::Dictionary();
+gd::PackedByteArray HapticsServer::list_devices() {
+	return encode_result(list_all_devices());
 }
 
 std::string HapticsServer::get_simulated_device_id() const {
 	return std::string(SIMULATED_DEVICE_ID);
-}
-
-gd::Array HapticsServer::get_device_warnings() const {
-	gd::Array out;
-	for (const std::string &warning : last_warnings_) {
-		out.append(warning);
-	}
-	return out;
 }
 
 bool HapticsServer::open_device(const std::string &p_id) {
@@ -112,24 +61,20 @@ std::string HapticsServer::get_device_name() const {
 	return system_.device_name();
 }
 
-gd::Dictionary HapticsServer::get_device_limits() const {
-	return limits_to_dictionary(system_.device_limits());
+gd::PackedByteArray HapticsServer::get_device_capabilities() const {
+	return encode_result(system_.device_capabilities());
 }
 
-gd::Dictionary HapticsServer::get_device_capabilities() const {
-	return system_.has_device() ? capabilities_to_dictionary(system_.device_capabilities()) : gd::Dictionary();
-}
-
-gd::Dictionary HapticsServer::get_device_status() const {
-	return device_status_to_dictionary(system_.device_status());
+gd::PackedByteArray HapticsServer::get_device_status() const {
+	return encode_result(system_.device_status());
 }
 
 bool HapticsServer::calibrate() {
 	return report("calibrate", system_.calibrate());
 }
 
-bool HapticsServer::set_hand_target(gd::Vector2 p_target_m) {
-	const Vec3 target = game_to_device_scaled(p_target_m.x, p_target_m.y, 1.0);
+bool HapticsServer::set_hand_target(gd::Vector3 p_target_m) {
+	const Vec3 target{ p_target_m.x, p_target_m.y, p_target_m.z };
 	if (!report("set_hand_target", system_.set_hand_target(target))) {
 		return false;
 	}
@@ -137,7 +82,7 @@ bool HapticsServer::set_hand_target(gd::Vector2 p_target_m) {
 	return true;
 }
 
-gd::Vector2 HapticsServer::get_hand_target() const {
+gd::Vector3 HapticsServer::get_hand_target() const {
 	return hand_target_;
 }
 

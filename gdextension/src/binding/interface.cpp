@@ -49,6 +49,8 @@ bool load_interface(GDExtensionInterfaceGetProcAddress p_get, GDExtensionClassLi
 	HAPTICS_RESOLVE(string_new_with_utf8_chars_and_len2);
 	HAPTICS_RESOLVE(string_to_utf8_chars);
 	HAPTICS_RESOLVE(string_name_new_with_utf8_chars_and_len);
+	HAPTICS_RESOLVE(packed_byte_array_operator_index);
+	HAPTICS_RESOLVE(packed_byte_array_operator_index_const);
 	HAPTICS_RESOLVE(packed_float32_array_operator_index);
 	HAPTICS_RESOLVE(packed_vector2_array_operator_index);
 	HAPTICS_RESOLVE(packed_float32_array_operator_index_const);

@@ -41,8 +41,10 @@ struct Interface {
 	GDExtensionInterfaceStringToUtf8Chars string_to_utf8_chars = nullptr;
 	GDExtensionInterfaceStringNameNewWithUtf8CharsAndLen string_name_new_with_utf8_chars_and_len =
 			nullptr;
+	GDExtensionInterfacePackedByteArrayOperatorIndex packed_byte_array_operator_index = nullptr;
 	GDExtensionInterfacePackedFloat32ArrayOperatorIndex packed_float32_array_operator_index = nullptr;
 	GDExtensionInterfacePackedVector2ArrayOperatorIndex packed_vector2_array_operator_index = nullptr;
+	GDExtensionInterfacePackedByteArrayOperatorIndexConst packed_byte_array_operator_index_const = nullptr;
 	GDExtensionInterfacePackedFloat32ArrayOperatorIndexConst
 			packed_float32_array_operator_index_const = nullptr;
 	GDExtensionInterfacePackedVector2ArrayOperatorIndexConst

@@ -84,6 +84,10 @@ struct TypeInfo<Dictionary> : ManagedTypeInfo<Dictionary, VariantType::DICTIONAR
 template <>
 struct TypeInfo<Array> : ManagedTypeInfo<Array, VariantType::ARRAY> {};
 template <>
+struct TypeInfo<PackedStringArray> : ManagedTypeInfo<PackedStringArray, VariantType::PACKED_STRING_ARRAY> {};
+template <>
+struct TypeInfo<PackedByteArray> : ManagedTypeInfo<PackedByteArray, VariantType::PACKED_BYTE_ARRAY> {};
+template <>
 struct TypeInfo<PackedFloat32Array>
 		: ManagedTypeInfo<PackedFloat32Array, VariantType::PACKED_FLOAT32_ARRAY> {};
 template <>

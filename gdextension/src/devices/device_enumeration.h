@@ -14,12 +14,9 @@ struct hid_device_info;
 
 namespace haptics {
 
-struct DeviceList {
-	// The simulated device is always first, so there is always something to play with.
-	std::vector<DeviceInfo> devices;
-	// Human-readable, e.g. "libusb: no USB bus available (LIBUSB_ERROR_OTHER)".
-	std::vector<std::string> warnings;
-};
+// DeviceList (device_info.schema.toml): the simulated device always first, so there is always
+// something to play with; warnings for people ("libusb: no USB bus available
+// (LIBUSB_ERROR_OTHER)").
 
 // Never throws and never prints. Safe to call from several threads. It takes a few
 // milliseconds per bus but may block for seconds on a misbehaving USB device (libusb

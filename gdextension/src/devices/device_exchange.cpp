@@ -50,7 +50,7 @@ void DeviceExchange::fail(DeviceIo p_io, const char *p_format, ...) {
 	status.io = p_io == DeviceIo::OK ? DeviceIo::FAILED : p_io;
 	va_list args;
 	va_start(args, p_format);
-	std::vsnprintf(status.reason, DeviceStatus::REASON_CAPACITY, p_format, args);
+	std::vsnprintf(status.reason, DEVICE_REASON_CAPACITY, p_format, args);
 	va_end(args);
 	status_.store(status);
 	io_.store(status.io, std::memory_order_release);

@@ -96,7 +96,7 @@ DeviceStatus SimulatedDevice::status() const {
 	DeviceStatus status;
 	if (!plugged()) {
 		status.io = DeviceIo::DISCONNECTED;
-		std::snprintf(status.reason, DeviceStatus::REASON_CAPACITY, "simulated cable pulled");
+		std::snprintf(status.reason, DEVICE_REASON_CAPACITY, "simulated cable pulled");
 	}
 	return status;
 }

@@ -1,6 +1,6 @@
 #include "system/haptics_system.h"
 
-#include "core/render/frame_validation.h"
+#include "core/wire/codec.h"
 #include "system/config_table.h"
 
 #include <cstring>
@@ -230,7 +230,7 @@ DeviceCapabilities HapticsSystem::device_capabilities() const {
 }
 
 Status HapticsSystem::submit_frame(const Frame &p_frame) {
-	const Status valid = validate_frame(p_frame);
+	const Status valid = check_fields(p_frame);
 	if (!valid) {
 		++impl_->frames_rejected;
 		return valid;
@@ -242,7 +242,7 @@ Status HapticsSystem::submit_frame(const Frame &p_frame) {
 }
 
 Status HapticsSystem::push_impact(const ImpactEvent &p_event) {
-	const Status valid = validate_impact(p_event);
+	const Status valid = check_fields(p_event);
 	if (!valid) {
 		return valid;
 	}
@@ -283,6 +283,7 @@ ServoStats HapticsSystem::stats() const {
 	const bool threaded = impl_->loop.state() != ServoState::STOPPED || !impl_->manual_session;
 	stats.running = is_running();
 	stats.scheduler = threaded ? grants.kind : SchedulerKind::MANUAL;
+	stats.realtime = is_realtime_kind(stats.scheduler);
 	stats.realtime_priority = threaded ? grants.priority : 0;
 	if (threaded) {
 		stats.memory_locked = grants.memory_locked;

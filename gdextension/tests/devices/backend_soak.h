@@ -47,8 +47,7 @@ struct BackendSoakScript {
 
 inline void soak_frames(HapticsSystem &r_system, const Vec3 &p_normal, double p_seconds) {
 	Frame frame;
-	frame.contact_count = 1;
-	frame.contacts[0].normal = p_normal;
+	add_contact(frame, p_normal);
 	const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(p_seconds);
 	while (std::chrono::steady_clock::now() < end && r_system.is_running()) {
 		++frame.sequence;

@@ -98,7 +98,7 @@ TEST_CASE("dualsense system: a pushed impact reaches the pad's motors and dies a
 	const uint64_t before = pad->counters().reports_accepted;
 	ImpactEvent impact;
 	impact.direction = Vec3{ 0.0, 1.0, 0.0 };
-	impact.speed = 6.0; // 0.5 N/(m/s) * 6 = 3 N: the cap, full scale.
+	impact.speed_m_per_s = 6.0; // 0.5 N/(m/s) * 6 = 3 N: the cap, full scale.
 	REQUIRE(system.push_impact(impact));
 	const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(2);
 	while (pad->counters().max_motor == 0 && std::chrono::steady_clock::now() < deadline) {

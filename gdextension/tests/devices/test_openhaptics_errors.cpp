@@ -216,7 +216,7 @@ TEST_CASE("openhaptics: a position beyond any workspace fails the device like a 
 	const double position_mm[3] = { 0.0, 0.0, 1.0e6 }; // 1 km: garbage, not a stylus.
 	fake.set_doubles(HD_CURRENT_POSITION, position_mm, 3);
 	CHECK(run_until_failure(*device) == DeviceIo::FAILED);
-	const std::string reason = device->status().reason;
+	const std::string reason = device->status().reason.str();
 	CHECK(reason.starts_with("OpenHaptics: the device reported an HD_CURRENT_POSITION 1e+03 m from the workspace centre"));
 	CHECK(reason.ends_with("(no device reaches 10 m)"));
 	device->close();

@@ -96,10 +96,10 @@ TEST_CASE("pong correction: the ball glides onto the corrected trajectory, at mo
 		// first tick the changed velocity's flight too; 0 for the put ball.
 		PongState state;
 		corrected.fill_state(state);
-		CHECK(state.correction_step_max_m >= largest_step - 1e-12);
-		CHECK(state.correction_step_max_m <= ISSUE_MAX_TICK_MOVE_M);
+		CHECK(state.ball_correction_step_max >= largest_step - 1e-12);
+		CHECK(state.ball_correction_step_max <= ISSUE_MAX_TICK_MOVE_M);
 		put.fill_state(state);
-		CHECK(state.correction_step_max_m == 0.0);
+		CHECK(state.ball_correction_step_max == 0.0);
 		REQUIRE(done_at > 0.0);
 		CHECK(done_at <= correction_bound_s(config, length(error), config.correction_max_speed_m_per_s));
 		// On the corrected trajectory: the put ball's, to rounding.
@@ -150,7 +150,7 @@ TEST_CASE("pong correction: the territory is the corrected ball's, taken without
 	PongState state;
 	sim.fill_state(state);
 	CHECK(state.ball_correction == sim.correction().position_left());
-	CHECK((state.ball.position + state.ball_correction).z == doctest::Approx(-0.5).epsilon(0.01));
+	CHECK((state.ball_position + state.ball_correction).z == doctest::Approx(-0.5).epsilon(0.01));
 	// A correction outside the court is refused like a serve there.
 	PongConfig config;
 	const Status refused =

@@ -186,7 +186,7 @@ TEST_CASE("pong effects: clear_effects ends them at once, none does nothing, a n
 	run(sim, 1.0, hand);
 	PongState state;
 	sim.fill_state(state);
-	REQUIRE(state.effect_count == 1);
+	REQUIRE(state.effects.size() == 1);
 	CHECK(state.effects[0].kind == PongEffectKind::HEAVY);
 	CHECK(state.effects[0].remaining_s == doctest::Approx(PongConfig{}.mine_effect_duration_s - 1.0));
 	sim.apply(effect(0, PongEffectKind::HEAVY)); // Restarts: the ramp again from zero.
@@ -199,5 +199,5 @@ TEST_CASE("pong effects: clear_effects ends them at once, none does nothing, a n
 	sim.step(PONG_DT, &hand);
 	CHECK(sim.hand_forces().effects == Vec3{});
 	sim.fill_state(state);
-	CHECK(state.effect_count == 0);
+	CHECK(state.effects.size() == 0);
 }

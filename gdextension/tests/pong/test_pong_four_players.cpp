@@ -80,7 +80,7 @@ TEST_CASE("pong 4 players: each side rotation is orthonormal, turns about y, and
 		CHECK(side_rotation_inverse(player, side_rotation(player, v)) == v);
 		CHECK(side_rotation(player, side_rotation_inverse(player, v)) == v);
 		// The default input faces the centre.
-		CHECK(PongInput{}.players[player].normal == -SEAT_DIRECTION[player]);
+		CHECK(default_pong_input().players[player].normal == -SEAT_DIRECTION[player]);
 	}
 	// Device right for player 2 (at +x, looking toward -x) is world -z.
 	CHECK(side_rotation(2, axes[0]) == Vec3{ 0.0, 0.0, -1.0 });

@@ -204,7 +204,7 @@ TEST_CASE("pong sim: the device paddle is avatar + side rotation of the stylus t
 	}
 	CHECK(rotate(Orientation{}, PADDLE_FACING_DEVICE) == PADDLE_FACING_DEVICE);
 	CHECK(side_rotation(1, side_rotation(1, { 1.0, 2.0, 3.0 })) == Vec3{ 1.0, 2.0, 3.0 });
-	CHECK(PongInput{}.players[1].normal == Vec3{ 0.0, 0.0, 1.0 }); // Facing the opponent.
+	CHECK(default_pong_input().players[1].normal == Vec3{ 0.0, 0.0, 1.0 }); // Facing the opponent.
 }
 
 TEST_CASE("pong sim: game-driven paddles and walking avatars are extrapolated for 50 ms at most") {

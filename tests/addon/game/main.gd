@@ -53,7 +53,7 @@ func _physics_process(_delta: float) -> void:
 		if _touched_at < 0 and wall_contact:
 			_touched_at = _frame
 		if _touched_at >= 0 and _frame > _touched_at + SETTLE_FRAMES:
-			_pushes.append(-Haptics.get_forces()["normal"].x)
+			_pushes.append(-Haptics.get_forces().parts[HapticMovement.MovementForce.NORMAL].x)
 		if _frame == PUSH_FRAMES:
 			Haptics.device.set_hand_target(Vector2.LEFT)
 		return
@@ -72,9 +72,9 @@ func _on_impact(_collider: Object, normal: Vector2, speed: float) -> void:
 
 
 func _touches_wall() -> bool:
-	for contact: Dictionary in _probe.get(&"last_frame").to_dictionary().get("contacts", []):
-		var normal: Vector2 = contact["normal"]
-		if normal.is_equal_approx(Vector2.LEFT):
+	var frame: HapticFrame = _probe.get(&"last_frame")
+	for contact: HapticContact in frame.contacts:
+		if contact.normal.is_equal_approx(Vector2.LEFT):
 			return true
 	return false
 
@@ -86,7 +86,7 @@ func _finish() -> void:
 		failures.append("the extension is not loaded")
 	if _pushes.size() < 120:
 		failures.append("only %d frames pushing the wall" % _pushes.size())
-	var spin_us: float = Haptics.servo.get_stats().get("spin_us", -1.0)
+	var spin_us: float = Haptics.servo.get_stats().spin_s * 1e6
 	if spin_us != ProjectSettings.get_setting("haptics/servo/spin_us"):
 		failures.append("the servo spins %s us, not the project's haptics/servo/spin_us" % spin_us)
 	var weakest: float = INF

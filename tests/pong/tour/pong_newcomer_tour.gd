@@ -26,7 +26,7 @@ func _tour() -> void:
 	_main.show_pong()
 	await _shot("pong-setup", 0.8)
 	var pong: PongScreen = _main.get_screen() as PongScreen
-	if not Haptics.pong.is_available():
+	if not PongServo.shared().is_available():
 		print("no Pong renderer: ", pong.setup.get_message())
 		get_tree().quit(1)
 		return
@@ -37,12 +37,12 @@ func _tour() -> void:
 	var court: PongCourt = match_node.court
 	# The ball at rest against the near wall, left, middle and right in turn.
 	for x: float in [-1.2, 0.0, 1.2]:
-		Haptics.pong.set_ball(
+		PongServo.shared().set_ball(
 			Vector3(x, court.ball_radius, court.half_length - court.ball_radius), Vector3.ZERO
 		)
 		await _shot("pong-ball-near-wall-x%+.1f" % x, 0.4)
 	# A bullet next to the ball.
-	Haptics.pong.set_ball(Vector3(0.3, 1.0, 0.8), Vector3.ZERO)
+	PongServo.shared().set_ball(Vector3(0.3, 1.0, 0.8), Vector3.ZERO)
 	match_node.bullets.add(1, 0, Vector3(-0.2, 1.0, -0.5), Vector3(0.1, 0.0, 1.0))
 	await _shot("pong-bullet-and-ball", 0.05)
 	var mine: PongMines.Mine = PongMines.Mine.new(1, "none", Vector3(0.5, 0.0, 1.0))

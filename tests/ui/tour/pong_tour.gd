@@ -29,7 +29,7 @@ func _tour() -> void:
 	_main.show_pong()
 	await _shot("pong_setup", 0.6)
 	var pong: PongScreen = _main.get_screen() as PongScreen
-	if not pong.is_running() and not Haptics.pong.is_available():
+	if not pong.is_running() and not PongServo.shared().is_available():
 		print("no Pong renderer: ", pong.setup.get_message())
 		get_tree().quit(0)
 		return
@@ -71,7 +71,7 @@ func _tour() -> void:
 # A lob high over the near half, shot at its top: the shadow grows and fades with height.
 func _ball_high(pong: PongScreen) -> void:
 	pong.match_node.auto_serve = false
-	Haptics.pong.set_ball(Vector3(-0.7, 1.5, 1.2), Vector3(0.0, 2.4, 0.0))
+	PongServo.shared().set_ball(Vector3(-0.7, 1.5, 1.2), Vector3(0.0, 2.4, 0.0))
 	await _shot("pong_ball_high", 0.4)
 	pong.match_node.auto_serve = true
 
@@ -84,7 +84,7 @@ func _device(pong: PongScreen) -> void:
 	(match_node.controllers[0] as PongHumanPlayer).reads_input = false
 	await _shot("pong_vs_computer", 0.5)
 	var paddle: Vector3 = match_node.snapshot.paddle_centers[0]
-	Haptics.pong.set_ball(paddle + Vector3(0.0, 0.6, -0.05), Vector3.ZERO)
+	PongServo.shared().set_ball(paddle + Vector3(0.0, 0.6, -0.05), Vector3.ZERO)
 	await _shot("pong_device_contact_plot", 0.7)
 	var avatar: Vector3 = match_node.avatar_of(0)
 	for spot: Vector3 in [Vector3(-1.0, 0.0, -2.5), Vector3(avatar.x, 0.0, -avatar.z)]:

@@ -31,7 +31,8 @@ func _tour() -> void:
 	main_scene.autopilot_seconds = 0.0
 	main_scene.start_game(true)
 	var game: Game = main_scene.get_screen() as Game
-	game.autopilot_finished.disconnect(main.get(&"_on_autopilot_finished"))
+	var on_finished: Callable = main.get(&"_on_autopilot_finished")
+	game.autopilot_finished.disconnect(on_finished)
 	var waited: float = 0.0
 	for seconds: float in _game_seconds:
 		await _shot("game_%04.1fs" % seconds, seconds - waited)
@@ -57,7 +58,7 @@ func _demo_forces(hud: Hud) -> void:
 		var t: float = (Time.get_ticks_msec() - start) / 1000.0
 		var impact: float = 2.6 * exp(-t * 6.0) * sin(t * 120.0) if t < 1.0 else 0.0
 		var n: Vector2 = Vector2(-0.6, -0.8)
-		var forces: Dictionary = {
+		var forces: Dictionary[String, Vector2] = {
 			"normal": n * 1.4,
 			"friction": Vector2(0.8, -0.6) * 0.5,
 			"weight": Vector2(0.0, 0.7) if t > 1.5 else Vector2.ZERO,
@@ -69,7 +70,7 @@ func _demo_forces(hud: Hud) -> void:
 		for force: Vector2 in forces.values():
 			total += force
 		forces["total"] = total
-		hud.show_forces(forces)
+		hud.show_forces(TestHaptics.forces_of(forces))
 		await get_tree().process_frame
 	await _shot("hud_forces", 0.0)
 	hud.live = true

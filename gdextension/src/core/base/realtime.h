@@ -20,17 +20,12 @@
 
 namespace haptics {
 
-enum class SchedulerKind : int32_t {
-	MANUAL = 0, // step(dt): no thread.
-	NORMAL = 1, // SCHED_OTHER: SCHED_FIFO was refused (no privilege) or not asked for.
-	REALTIME_FIFO = 2, // SCHED_FIFO granted.
-	REALTIME_RR = 3, // SCHED_RR from RealtimeKit (realtime_kit.h): a normal user's real time.
-	// Windows (realtime_windows.cpp): the thread joined the multimedia class scheduler's task,
-	// which raises it into the real-time priority range a normal user may have.
-	MMCSS_PRO_AUDIO = 4,
-	MMCSS_GAMES = 5, // "Pro Audio" was refused, "Games" granted.
-};
+// SchedulerKind (realtime.schema.toml): MANUAL is step(dt), no thread; NORMAL is SCHED_OTHER
+// (SCHED_FIFO refused or not asked for); REALTIME_FIFO; REALTIME_RR from RealtimeKit (a normal
+// user's real time); on Windows MMCSS_PRO_AUDIO or MMCSS_GAMES, the multimedia class
+// scheduler's tasks, which raise the thread into the real-time range a normal user may have.
 
+// Its label for people ("SCHED_FIFO").
 const char *scheduler_kind_name(SchedulerKind p_kind);
 // Whether p_kind is one of the real-time classes (SCHED_FIFO, SCHED_RR, an MMCSS task).
 bool is_realtime_kind(SchedulerKind p_kind);

@@ -15,29 +15,19 @@
 // Blocking (one round trip each, bounded by a timeout): call it from the servo thread before
 // its loop starts, never from the tick.
 
+#include "core/base/realtime.gen.h"
+
 #include <cstdint>
 
 namespace haptics {
 
-enum class RtkitOutcome : int32_t {
-	NOT_ASKED = 0, // SCHED_FIFO was granted, or asking RealtimeKit is turned off.
-	REALTIME = 1, // SCHED_RR granted.
-	HIGH_PRIORITY = 2, // Real time refused; a raised nice level granted.
-	REFUSED = 3, // Both refused (e.g. no login session: polkit says no).
-	UNAVAILABLE = 4, // No libdbus, no system bus, or no RealtimeKit on it.
-};
+// RtkitOutcome and RtkitGrant (realtime.schema.toml): NOT_ASKED when SCHED_FIFO was granted
+// or asking is turned off; REALTIME is SCHED_RR granted; HIGH_PRIORITY a raised nice level
+// after real time was refused; REFUSED both (e.g. no login session: polkit says no);
+// UNAVAILABLE no libdbus, no system bus, or no RealtimeKit on it.
 
-// "not asked", "realtime", "high priority", "refused", "unavailable".
+// Its label for people ("high priority").
 const char *rtkit_outcome_name(RtkitOutcome p_outcome);
-
-struct RtkitGrant {
-	RtkitOutcome outcome = RtkitOutcome::NOT_ASKED;
-	int32_t priority = 0; // SCHED_RR priority when REALTIME.
-	int32_t nice = 0; // Nice level when HIGH_PRIORITY.
-	int32_t max_priority = 0; // What the daemon allows (MaxRealtimePriority); 0 when unknown.
-	int64_t rttime_usec = 0; // The RLIMIT_RTTIME set for it; 0 when none.
-	char reason[160] = {}; // Why not, when REFUSED or UNAVAILABLE; what was granted otherwise.
-};
 
 // Asks RealtimeKit to make the calling thread real-time at p_priority (lowered to what it
 // allows), setting SCHED_RESET_ON_FORK on the thread and the process's RLIMIT_RTTIME to the

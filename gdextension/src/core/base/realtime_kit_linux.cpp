@@ -82,7 +82,7 @@ const Dbus &dbus_api() {
 void say(RtkitGrant &r_grant, const char *p_format, ...) {
 	va_list args;
 	va_start(args, p_format);
-	std::vsnprintf(r_grant.reason, sizeof(r_grant.reason), p_format, args);
+	std::vsnprintf(r_grant.reason.data, sizeof(r_grant.reason.data), p_format, args);
 	va_end(args);
 }
 

@@ -17,41 +17,15 @@
 
 #include "core/base/status.h"
 #include "core/base/vec3.h"
+#include "core/device/device.gen.h"
 #include "core/device/software_cable.h"
 
 #include <cstdint>
 
 namespace haptics {
 
-struct DeviceLimits {
-	double max_force_n = 0.0; // Peak force the device may be commanded (transients), N.
-	double max_continuous_force_n = 0.0; // Sustainable force: the default continuous cap, N.
-	double max_stiffness_n_per_m = 0.0; // Highest stable virtual stiffness, N/m.
-	double workspace_radius_m = 0.0; // Radius of the usable workspace sphere, m.
-};
-
-// What the device can feel and render. Directional devices push the hand; vibration-only
-// devices (a gamepad) render transients as rumble and the continuous force's magnitude as
-// something it can (the DualSense's trigger resistance).
-enum class ForceOutput : int32_t {
-	NONE = 0,
-	DIRECTIONAL = 1,
-	VIBRATION = 2,
-};
-
-struct DeviceCapabilities {
-	int32_t input_dof = 3; // Position axes read: 1 wheel, 2 joystick, 3 Falcon/Touch.
-	int32_t output_dof = 3; // Force axes rendered (0 when output is VIBRATION or NONE).
-	ForceOutput output = ForceOutput::DIRECTIONAL;
-	DeviceLimits limits;
-	double native_rate_hz = 0.0; // The rate the device's own I/O runs at; 0 = the servo's.
-	bool has_orientation = false; // DeviceState::orientation is meaningful (Touch gimbal).
-	bool needs_homing = false; // No force until DeviceState::ready (Falcon homing).
-	// A physical device: the servo holds zero force at start until the rendered force is
-	// small (SafetyConfig::start_force_n), so a session never starts by kicking the hand.
-	bool physical = true;
-	int32_t button_count = 0;
-};
+// DeviceLimits, ForceOutput, DeviceCapabilities, DeviceIo and DeviceStatus: device.schema.toml.
+inline constexpr size_t DEVICE_REASON_CAPACITY = sizeof(DeviceStatus{}.reason.data);
 
 // A rotation as a unit quaternion (w, x, y, z), device space. Identity when the device has
 // no orientation.
@@ -75,20 +49,6 @@ struct DeviceState {
 struct ForceCommand {
 	Vec3 force_n; // Total force: continuous plus transients. Directional devices render it.
 	Vec3 impact_n; // The transients' share of force_n (rumble on vibration-only devices).
-};
-
-enum class DeviceIo : int32_t {
-	OK = 0,
-	DISCONNECTED = 1,
-	FAILED = 2, // Any other I/O failure; rendering stops too.
-};
-
-// The device's health as the game shows it. `reason` is empty when OK, else one sentence
-// for the player, e.g. "USB transfer failed: LIBUSB_ERROR_NO_DEVICE".
-struct DeviceStatus {
-	static constexpr size_t REASON_CAPACITY = 160;
-	DeviceIo io = DeviceIo::OK;
-	char reason[REASON_CAPACITY] = {};
 };
 
 // A device with its own I/O thread (device_exchange.h): how its transfers keep up.

@@ -12,6 +12,8 @@
 #include "core/servo/servo_stats.h"
 #include "core/servo/telemetry.h"
 
+#include "core/servo/servo.gen.h"
+
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
@@ -19,7 +21,7 @@
 namespace haptics {
 
 inline constexpr size_t IMPACT_QUEUE_CAPACITY = 64;
-inline constexpr size_t TELEMETRY_QUEUE_CAPACITY = 4096; // 4 s at 1 kHz.
+// TELEMETRY_QUEUE_CAPACITY: servo.schema.toml.
 
 struct ServoChannels {
 	Seqlock<Frame> frame; // Game -> servo, written by submit_frame only.

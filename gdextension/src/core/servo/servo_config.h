@@ -65,7 +65,7 @@ struct TelemetryConfig {
 
 struct ServoConfig {
 	InputConfig input;
-	ImpactMaterial default_impact; // For impacts with use_default_material ("force_model" too).
+	ImpactMaterial default_impact; // For impacts without a material ("force_model" too).
 	SafetyConfig safety;
 	PlaneHoldConfig plane_hold;
 	TelemetryConfig telemetry;

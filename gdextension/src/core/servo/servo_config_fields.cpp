@@ -18,7 +18,7 @@ const ConfigField FIELDS[] = {
 	{ "force_model", "input_radius_m", K::NUMBER, 0.001, 1.0, "m", "the device's workspace radius", {}, "input_radius",
 			SERVO_FIELD(input.input_radius_m) },
 	{ "force_model", "impact_gain_n_s_per_m", K::NUMBER, 0.0, MAX_GAIN, "N·s/m", nullptr, {}, "impact_gain",
-			SERVO_FIELD(default_impact.gain) },
+			SERVO_FIELD(default_impact.gain_n_s_per_m) },
 	{ "force_model", "impact_frequency_hz", K::NUMBER, MIN_IMPACT_FREQUENCY_HZ, MAX_IMPACT_FREQUENCY_HZ, "Hz", nullptr,
 			{}, "impact_frequency", SERVO_FIELD(default_impact.frequency_hz) },
 	{ "force_model", "impact_decay_s", K::NUMBER, MIN_IMPACT_DECAY_S, MAX_IMPACT_DECAY_S, "s", nullptr, {},

@@ -63,8 +63,8 @@ struct ServoOptions {
 	int64_t spin_ns = SPIN_AUTO;
 
 	static constexpr int64_t SPIN_AUTO = -1;
-	static constexpr int64_t DEFAULT_SPIN_NS = 50'000;
-	static constexpr int64_t UNHELD_SPIN_NS = 100'000;
+	static constexpr int64_t DEFAULT_SPIN_NS = haptics::DEFAULT_SPIN_NS; // servo.schema.toml
+	static constexpr int64_t UNHELD_SPIN_NS = haptics::UNHELD_SPIN_NS;
 };
 
 // The spin a servo with p_options spins once granted p_grants (SPIN_AUTO resolved).

@@ -165,8 +165,8 @@ DeviceIo ServoPipeline::tick(double p_dt_s) {
 void ServoPipeline::publish(const DeviceState &p_state, const Vec3 &p_input, const ForceComponents &p_forces,
 		const SafetyResult &p_safety, uint32_t p_renderer_flags) {
 	uint32_t flags = p_renderer_flags;
-	flags |= frame_.contact_count > 0 ? TELEMETRY_FLAG_CONTACT : 0u;
-	flags |= frame_.water.inside ? TELEMETRY_FLAG_IN_WATER : 0u;
+	flags |= !frame_.contacts.empty() ? TELEMETRY_FLAG_CONTACT : 0u;
+	flags |= frame_.in_water ? TELEMETRY_FLAG_IN_WATER : 0u;
 	flags |= p_safety.watchdog_tripped ? TELEMETRY_FLAG_WATCHDOG : 0u;
 	flags |= p_safety.clamped ? TELEMETRY_FLAG_CLAMPED : 0u;
 	flags |= p_safety.ramp_gain < 1.0 ? TELEMETRY_FLAG_RAMPING : 0u;

@@ -7,6 +7,7 @@
 // figures are exact. Percentiles are computed by the reader, never in the tick.
 
 #include "core/base/realtime.h"
+#include "core/servo/servo_stats.gen.h"
 
 #include <atomic>
 #include <cstddef>
@@ -43,47 +44,6 @@ private:
 extern template class Histogram<20000>;
 extern template class Histogram<10000>;
 
-// What the game reads. Times in seconds, rates in hertz.
-struct ServoStats {
-	bool running = false;
-	SchedulerKind scheduler = SchedulerKind::MANUAL;
-	int32_t realtime_priority = 0; // SCHED_FIFO or SCHED_RR priority when granted.
-	// The other real-time techniques (realtime.h) the servo thread asked for and got.
-	bool memory_locked = false; // mlockall
-	bool cpu_latency_held = false; // /dev/cpu_dma_latency at 0
-	int32_t pinned_cpu = -1; // -1 when not pinned
-	int32_t stack_prefaulted_kb = 0;
-	bool timer_slack_minimised = false; // SCHED_OTHER only
-	RtkitGrant realtime_kit; // Asked when SCHED_FIFO was refused (realtime_kit.h).
-	double spin_s = 0.0; // Busy-wait before each deadline (ServoOptions::spin_ns).
-	// Share of one CPU the servo thread used since its first tick (sleeping costs nothing;
-	// the spin and the tick do).
-	double thread_cpu_fraction = 0.0;
-	double nominal_rate_hz = 0.0;
-	double achieved_rate_hz = 0.0; // Ticks per second of servo time (wall clock if threaded).
-	uint64_t ticks = 0;
-	double period_mean_s = 0.0, period_p50_s = 0.0, period_p99_s = 0.0, period_p999_s = 0.0, period_max_s = 0.0;
-	// |period - nominal period|
-	double jitter_p50_s = 0.0, jitter_p99_s = 0.0, jitter_p999_s = 0.0, jitter_max_s = 0.0;
-	// Wake-up latency: how long after its deadline each tick woke (cyclictest's measure).
-	double latency_p50_s = 0.0, latency_p99_s = 0.0, latency_p999_s = 0.0, latency_max_s = 0.0;
-	uint64_t late_ticks = 0; // Woke more than half a period after the deadline.
-	uint64_t missed_deadlines = 0; // Whole periods skipped after a long stall.
-	double tick_cost_p50_s = 0.0, tick_cost_p99_s = 0.0, tick_cost_max_s = 0.0;
-	uint64_t frames_received = 0; // New frames the servo picked up.
-	uint64_t frames_rejected = 0; // submit_frame calls refused by validation.
-	double frame_age_s = 0.0; // Servo time since the last new frame; -1 when none yet.
-	bool watchdog_tripped = false;
-	uint64_t transient_drops = 0; // Impact queue full + transient bank full.
-	uint64_t telemetry_drops = 0; // Telemetry ring full (the game drains too rarely).
-	uint64_t clamped_ticks = 0; // Ticks whose output was scaled to the force limit.
-	uint64_t non_finite_ticks = 0; // Ticks where a non-finite force was zeroed.
-	// Devices with their own I/O thread (device_exchange.h): transfers done, and how old the
-	// servo's force was when it went on the wire (the latency the hand-over adds).
-	uint64_t device_io_cycles = 0;
-	double device_command_age_mean_s = 0.0;
-	double device_command_age_max_s = 0.0;
-};
 
 class ServoStatsRecorder {
 public:

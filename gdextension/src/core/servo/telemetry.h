@@ -25,6 +25,8 @@
 #include "core/render/force_components.h"
 #include "core/render/renderer_info.h"
 
+#include "core/servo/servo.gen.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -50,16 +52,8 @@ constexpr size_t telemetry_part_column(size_t p_part) {
 	return TELEMETRY_PARTS + 3 * p_part;
 }
 
-// The servo's own flags; renderers raise theirs from FIRST_RENDERER_FLAG_BIT up.
-enum TelemetryFlag : uint32_t {
-	TELEMETRY_FLAG_CONTACT = 1u << 0, // The frame has at least one contact.
-	TELEMETRY_FLAG_IN_WATER = 1u << 1,
-	TELEMETRY_FLAG_WATCHDOG = 1u << 2, // Watchdog tripped (frames stale).
-	TELEMETRY_FLAG_CLAMPED = 1u << 3, // Output scaled down to the force limit.
-	TELEMETRY_FLAG_RAMPING = 1u << 4, // Start-up ramp below 1.
-	TELEMETRY_FLAG_NON_FINITE = 1u << 5, // A non-finite value was replaced by zero.
-	TELEMETRY_FLAG_NEW_FRAME = 1u << 6, // This tick picked up a new frame.
-};
+// The servo's own flags (TELEMETRY_FLAG_*, servo.schema.toml); renderers raise theirs from
+// FIRST_RENDERER_FLAG_BIT up.
 static_assert(TELEMETRY_FLAG_NEW_FRAME < (1u << FIRST_RENDERER_FLAG_BIT));
 
 // The servo's flags by the names GDScript knows them by.

@@ -12,10 +12,10 @@ double TransientBank::envelope(const Transient &p_transient) const {
 
 bool TransientBank::add(const ImpactEvent &p_event, const ImpactMaterial &p_default, double p_max_amplitude_n,
 		double p_gain_scale) {
-	const ImpactMaterial &material = p_event.use_default_material ? p_default : p_event.material;
+	const ImpactMaterial &material = p_event.material.value_or(p_default);
 	Transient transient;
 	transient.direction = normalized_or_zero(p_event.direction);
-	transient.amplitude_n = std::min(p_gain_scale * material.gain * p_event.speed, p_max_amplitude_n);
+	transient.amplitude_n = std::min(p_gain_scale * material.gain_n_s_per_m * p_event.speed_m_per_s, p_max_amplitude_n);
 	transient.angular_frequency = 2.0 * std::numbers::pi * material.frequency_hz;
 	transient.decay_s = material.decay_s;
 	if (!(transient.amplitude_n > EXPIRY_N)) {

@@ -212,7 +212,7 @@ Status EvdevDevice::calibrate() {
 	const DeviceStatus status = exchange_.status();
 	if (status.io != DeviceIo::OK) {
 		return Status::error(status.io == DeviceIo::DISCONNECTED ? StatusCode::DEVICE_DISCONNECTED : StatusCode::DEVICE_ERROR,
-				"cannot calibrate '%s': %s", name_, status.reason);
+				"cannot calibrate '%s': %s", name_, status.reason.c_str());
 	}
 	return Status::success();
 }

@@ -113,7 +113,7 @@ Status FalconDevice::calibrate() {
 	}
 	DeviceState state;
 	if (exchange_.read_state(state) != DeviceIo::OK) {
-		return Status::error(StatusCode::DEVICE_DISCONNECTED, "cannot calibrate '%s': %s", name(), exchange_.status().reason);
+		return Status::error(StatusCode::DEVICE_DISCONNECTED, "cannot calibrate '%s': %s", name(), exchange_.status().reason.c_str());
 	}
 	if (!state.ready) {
 		return Status::error(StatusCode::DEVICE_ERROR,

@@ -296,7 +296,7 @@ Status HdDevice::calibrate() {
 	}
 	if (exchange_.status().io != DeviceIo::OK) {
 		return Status::error(StatusCode::DEVICE_DISCONNECTED, "cannot calibrate '%s': %s", name(),
-				exchange_.status().reason);
+				exchange_.status().reason.c_str());
 	}
 	const HdApi &hd = library_.api();
 	sync_error_ = HDErrorInfo{};
@@ -320,7 +320,7 @@ DeviceStatus HdDevice::status() const {
 	if (status.io == DeviceIo::OK && open_ && !ready_.load(std::memory_order_acquire)) {
 		// Not a fault: the servo runs and holds zero force until the device is calibrated.
 		const bool manual = calibration_status_.load(std::memory_order_acquire) == HD_CALIBRATION_NEEDS_MANUAL_INPUT;
-		std::snprintf(status.reason, DeviceStatus::REASON_CAPACITY, "%s", manual ? INKWELL_REASON : CALIBRATING_REASON);
+		std::snprintf(status.reason, DEVICE_REASON_CAPACITY, "%s", manual ? INKWELL_REASON : CALIBRATING_REASON);
 	}
 	return status;
 }

@@ -82,7 +82,7 @@ HDCallbackCode HdDevice::tick() {
 	hd.hdEndFrame(device);
 	const HDErrorInfo error = hd.hdGetError();
 	if (hd_failed(error)) {
-		char reason[DeviceStatus::REASON_CAPACITY];
+		char reason[DEVICE_REASON_CAPACITY];
 		format_hd_error(&hd, error, reason, sizeof(reason));
 		return stop_on_error(error.errorCode == HD_COMM_ERROR ? DeviceIo::DISCONNECTED : DeviceIo::FAILED, reason);
 	}
@@ -91,13 +91,13 @@ HDCallbackCode HdDevice::tick() {
 	state.position_m = position_from_hd(position_mm, report_.workspace.centre_m);
 	state.velocity_m_per_s = velocity_from_hd(velocity_mm_s);
 	if (!is_finite(state.position_m) || !is_finite(state.velocity_m_per_s)) {
-		char reason[DeviceStatus::REASON_CAPACITY];
+		char reason[DEVICE_REASON_CAPACITY];
 		std::snprintf(reason, sizeof(reason), "OpenHaptics: the device reported a non-finite %s",
 				is_finite(state.position_m) ? "HD_CURRENT_VELOCITY" : "HD_CURRENT_POSITION");
 		return stop_on_error(DeviceIo::FAILED, reason);
 	}
 	if (!position_plausible(state.position_m)) {
-		char reason[DeviceStatus::REASON_CAPACITY];
+		char reason[DEVICE_REASON_CAPACITY];
 		std::snprintf(reason, sizeof(reason),
 				"OpenHaptics: the device reported an HD_CURRENT_POSITION %.3g m from the workspace centre (no device reaches %g m)",
 				length(state.position_m), MAX_PLAUSIBLE_POSITION_M);

@@ -9,6 +9,7 @@
 #include "core/base/seqlock.h"
 #include "core/base/vec2.h"
 #include "core/render/renderer_channels.h"
+#include "renderers/constraint/constraint.gen.h"
 #include "renderers/constraint/constraint_config.h"
 #include "renderers/constraint/geometry_exchange.h"
 
@@ -16,20 +17,7 @@
 
 namespace haptics {
 
-struct ProxyState {
-	// Maze units; filled while the constraint renderer is the active one. Until the proxy is
-	// placed `proxy` is the goal, i.e. the device mapped into the maze.
-	Vec2 proxy;
-	Vec2 goal;
-	uint32_t constraints = 0; // Walls holding the proxy: 0 free, 1 sliding, 2+ stopped.
-	bool placed = false;
-	uint64_t updates = 0; // Proxy updates this session (1 per tick, or 1 per frame).
-	// The walls the servo holds, whatever the render mode: how many geometries it has picked
-	// up since the engine was made (a new geometry has taken effect once this moves), and
-	// their count.
-	uint64_t geometry_generation = 0;
-	uint32_t geometry_segments = 0;
-};
+// ProxyState: constraint.schema.toml.
 
 struct ConstraintChannels : RendererChannels {
 	Seqlock<ConstraintConfig> settings;

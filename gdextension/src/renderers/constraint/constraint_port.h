@@ -8,6 +8,7 @@
 //   each frame:      draw the avatar at port.state().proxy.
 
 #include "core/base/status.h"
+#include "core/render/renderer_port.h"
 #include "renderers/constraint/constraint_channels.h"
 #include "renderers/constraint/maze_mapping.h"
 #include "renderers/constraint/swept_disc.h"
@@ -16,9 +17,14 @@
 
 namespace haptics {
 
-class ConstraintPort {
+class ConstraintPort final : public RendererPort {
 public:
 	explicit ConstraintPort(ConstraintChannels &r_channels);
+
+	// As the game sends them (constraint.schema.toml): it takes MazeWalls (set_geometry) and
+	// gives ProxyState (state()).
+	Status receive(std::span<const uint8_t> p_message) override;
+	Status give(uint32_t p_value_id, std::vector<uint8_t> &r_bytes) override;
 
 	// The maze's static walls (maze units; polygons as closed chains, see
 	// append_closed_chain) and how the device's workspace maps onto the maze. Validated

@@ -5,7 +5,6 @@ namespace haptics {
 namespace {
 
 // The movement renderer's names, which a HUD already shows: only the first is ever nonzero.
-constexpr const char *FORCE_NAMES[] = { "normal", "friction", "weight", "drag", "inertia" };
 
 constexpr TelemetryFlagName FLAGS[] = {
 	{ "TELEMETRY_FLAG_CONSTRAINT_MODE", TELEMETRY_FLAG_CONSTRAINT_MODE },
@@ -15,7 +14,7 @@ constexpr TelemetryFlagName FLAGS[] = {
 } // namespace
 
 const RendererInfo &ConstraintRenderer::info() {
-	static const RendererInfo INFO{ FORCE_NAMES, constraint_config_fields(), FLAGS };
+	static const RendererInfo INFO{ CONSTRAINT_FORCE_NAMES, constraint_config_fields(), FLAGS };
 	return INFO;
 }
 

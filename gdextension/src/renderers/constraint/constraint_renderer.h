@@ -27,7 +27,9 @@
 #include "core/render/renderer.h"
 #include "core/render/renderer_info.h"
 #include "core/render/settings_inbox.h"
+#include "renderers/constraint/constraint.gen.h"
 #include "renderers/constraint/constraint_channels.h"
+#include "renderers/constraint/constraint_port.h"
 #include "renderers/constraint/constraint_solver.h"
 
 #include <cstddef>
@@ -36,14 +38,10 @@
 
 namespace haptics {
 
-// Its one force component, the walls' push: the first part (named "normal").
-inline constexpr size_t WALL_FORCE = 0;
+// Its one force component, the walls' push: WALL_FORCE (ConstraintForce, constraint.schema.toml).
 
-// Its telemetry flags (RendererInfo::telemetry_flags).
-enum ConstraintFlag : uint32_t {
-	TELEMETRY_FLAG_CONSTRAINT_MODE = 1u << 7, // The constraint renderer is the active one.
-	TELEMETRY_FLAG_PROXY_CONTACT = 1u << 8, // The proxy is held by at least one wall.
-};
+// Its telemetry flags (RendererInfo::telemetry_flags): TELEMETRY_FLAG_CONSTRAINT_MODE and
+// TELEMETRY_FLAG_PROXY_CONTACT, constraint.schema.toml.
 static_assert(TELEMETRY_FLAG_CONSTRAINT_MODE >= (1u << FIRST_RENDERER_FLAG_BIT));
 
 // Its rows of the configuration table (constraint_config_fields.cpp).
@@ -53,6 +51,7 @@ class ConstraintRenderer final : public Renderer {
 public:
 	using Config = ConstraintConfig;
 	using Channels = ConstraintChannels;
+	using Port = ConstraintPort;
 	static const RendererInfo &info();
 
 	explicit ConstraintRenderer(ConstraintChannels &r_channels);

@@ -19,31 +19,14 @@
 
 #include "core/base/status.h"
 #include "core/base/vec2.h"
+#include "renderers/constraint/constraint.gen.h"
 
 #include <cstdint>
 #include <type_traits>
 
 namespace haptics {
 
-enum class WorkspaceShape : int32_t {
-	DISC = 0,
-	SQUARE = 1,
-};
-// Their names, in enum order (what the binding also accepts).
-inline constexpr const char *WORKSPACE_SHAPE_NAMES[] = { "disc", "square" };
-
-struct MazeMapping {
-	Vec2 maze_min{ 0.0, 0.0 }; // Maze units; finite, |.| <= 1e9, min < max on both axes.
-	Vec2 maze_max{ 1.0, 1.0 };
-	bool maze_y_down = true; // Godot 2D: maze y grows down, device y grows up.
-	WorkspaceShape workspace_shape = WorkspaceShape::DISC;
-	// Disc radius or square half-side, m; 0 = the device's workspace radius, else [0.001, 1].
-	double workspace_half_extent_m = 0.0;
-	// Device x-y point the maze centre maps to, m; finite, |centre| <= 1.
-	Vec2 workspace_centre_m;
-};
-
-static_assert(std::is_trivially_copyable_v<MazeMapping>);
+// WorkspaceShape and MazeMapping: constraint.schema.toml.
 
 // The resolved map (the device's radius filled in). Maze -> device:
 //   d = centre_m + metres_per_unit * (m.x - maze_centre.x, y_sign * (m.y - maze_centre.y))

@@ -37,8 +37,8 @@ void per_contact_forces(const Frame &p_frame, const Vec3 &p_input, const ForceMo
 		const double push = contacts.pushes[j];
 		if (push > 0.0) {
 			const ContactMaterial &material = contacts.materials[j];
-			r_normal += contacts.normals[j] * (material.stiffness * push);
-			rubbing += material.friction * (engage > 0.0 ? std::min(1.0, push / engage) : 1.0);
+			r_normal += contacts.normals[j] * (material.stiffness_n * push);
+			rubbing += material.friction_n * (engage > 0.0 ? std::min(1.0, push / engage) : 1.0);
 		}
 	}
 	if (rubbing > 0.0) {
@@ -51,7 +51,7 @@ void per_contact_forces(const Frame &p_frame, const Vec3 &p_input, const ForceMo
 ContactResolution resolve_contacts(const Frame &p_frame, const ContactMaterial &p_default_material) {
 	ContactResolution result;
 	Vec3 sum;
-	for (uint32_t c = 0; c < p_frame.contact_count; ++c) {
+	for (uint32_t c = 0; c < p_frame.contacts.size(); ++c) {
 		sum += normalized_or_zero(p_frame.contacts[c].normal);
 	}
 	const double sum_length = length(sum);
@@ -62,12 +62,12 @@ ContactResolution resolve_contacts(const Frame &p_frame, const ContactMaterial &
 	result.normal = sum / sum_length;
 
 	double weight_total = 0.0;
-	for (uint32_t c = 0; c < p_frame.contact_count; ++c) {
+	for (uint32_t c = 0; c < p_frame.contacts.size(); ++c) {
 		const Contact &contact = p_frame.contacts[c];
 		const double share = std::max(0.0, dot(normalized_or_zero(contact.normal), result.normal));
-		const ContactMaterial &material = contact.use_default_material ? p_default_material : contact.material;
-		result.stiffness += share * material.stiffness;
-		result.friction += share * material.friction;
+		const ContactMaterial &material = contact.material.value_or(p_default_material);
+		result.stiffness += share * material.stiffness_n;
+		result.friction += share * material.friction_n;
 		weight_total += share;
 	}
 	// weight_total >= sum_length > 0: the shares sum to at least n.(sum of normals).
@@ -93,19 +93,19 @@ void compute_into(const Frame &p_frame, const Vec3 &p_input, const ForceModelCon
 	}
 
 	r_weight = Vec3{};
-	for (uint32_t j = 0; j < p_frame.resting_count; ++j) {
+	for (uint32_t j = 0; j < p_frame.resting.size(); ++j) {
 		const RestingObject &object = p_frame.resting[j];
 		const double n_dot_d = dot(normalized_or_zero(object.normal), DEVICE_DOWN);
 		if (n_dot_d > 0.0) {
-			r_weight += DEVICE_DOWN * (object.mass * p_config.gravity_n_per_kg * n_dot_d);
+			r_weight += DEVICE_DOWN * (object.mass_kg * p_config.gravity_n_per_kg * n_dot_d);
 		}
 	}
 
 	r_drag = Vec3{};
 	r_inertia = Vec3{};
-	if (p_frame.water.inside) {
-		r_drag = p_frame.player_velocity * -p_frame.water.drag;
-		r_inertia = DEVICE_DOWN * p_frame.water.inertia;
+	if (p_frame.in_water) {
+		r_drag = p_frame.velocity_m_per_s * -p_frame.water_drag_n_s_per_m;
+		r_inertia = DEVICE_DOWN * p_frame.water_inertia_n;
 	}
 
 	r_continuous = r_normal + r_friction + r_weight + r_drag + r_inertia;

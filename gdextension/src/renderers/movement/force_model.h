@@ -67,6 +67,7 @@
 #include "core/base/vec3.h"
 #include "core/render/force_components.h"
 #include "core/render/frame.h"
+#include "renderers/movement/movement.gen.h"
 #include "renderers/movement/movement_config.h"
 
 #include <cstddef>
@@ -74,17 +75,9 @@
 
 namespace haptics {
 
-// The components, in their order in ForceComponents::parts, and what get_forces() calls them.
-enum MovementForce : size_t {
-	NORMAL_FORCE = 0, // F_n
-	FRICTION_FORCE = 1, // F_f
-	WEIGHT_FORCE = 2, // W
-	DRAG_FORCE = 3, // F_d
-	INERTIA_FORCE = 4, // F_w
-	MOVEMENT_FORCE_COUNT = 5,
-};
-inline constexpr const char *MOVEMENT_FORCE_NAMES[] = { "normal", "friction", "weight", "drag", "inertia" };
-static_assert(std::size(MOVEMENT_FORCE_NAMES) == MOVEMENT_FORCE_COUNT && MOVEMENT_FORCE_COUNT <= MAX_FORCE_PARTS);
+// The components, in their order in ForceComponents::parts (MovementForce, movement.schema.toml):
+// F_n, F_f, W, F_d, F_w.
+static_assert(MOVEMENT_FORCE_COUNT <= MAX_FORCE_PARTS);
 
 // The components by name, for tests and tools that evaluate the model alone.
 struct MovementForces {

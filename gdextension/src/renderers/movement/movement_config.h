@@ -37,7 +37,7 @@ struct ForceModelConfig {
 	// Without it friction would jump from 0 to b |r| as the hand crosses a floor's plane.
 	// 0 switches friction fully on at any pressing.
 	double friction_engage = 0.05;
-	ContactMaterial default_contact; // For contacts with use_default_material.
+	ContactMaterial default_contact; // For contacts without a material.
 };
 
 struct SmoothingConfig {

@@ -18,9 +18,9 @@ const ConfigField FIELDS[] = {
 	{ "force_model", "friction_engage", K::NUMBER, 0.0, 0.5, "", nullptr, {}, nullptr,
 			MOVEMENT_FIELD(force_model.friction_engage) },
 	{ "force_model", "contact_stiffness_n", K::NUMBER, 0.0, MAX_GAIN, "N", nullptr, {}, "contact_stiffness",
-			MOVEMENT_FIELD(force_model.default_contact.stiffness) },
+			MOVEMENT_FIELD(force_model.default_contact.stiffness_n) },
 	{ "force_model", "contact_friction_n", K::NUMBER, 0.0, MAX_GAIN, "N", nullptr, {}, "contact_damping",
-			MOVEMENT_FIELD(force_model.default_contact.friction) },
+			MOVEMENT_FIELD(force_model.default_contact.friction_n) },
 	{ "smoothing", "enabled", K::FLAG, 0.0, 1.0, "", nullptr, {}, nullptr, MOVEMENT_FIELD(smoothing.enabled) },
 	{ "smoothing", "cutoff_hz", K::NUMBER, 0.5, 60.0, "Hz", nullptr, {}, nullptr, MOVEMENT_FIELD(smoothing.cutoff_hz) },
 };

@@ -9,6 +9,7 @@
 #include "core/render/renderer.h"
 #include "core/render/renderer_channels.h"
 #include "core/render/renderer_info.h"
+#include "core/render/renderer_port.h"
 #include "core/render/settings_inbox.h"
 #include "renderers/movement/movement_config.h"
 #include "renderers/movement/smoothing_filter.h"
@@ -28,6 +29,7 @@ class MovementRenderer final : public Renderer {
 public:
 	using Config = MovementConfig;
 	using Channels = MovementChannels;
+	using Port = NoPort;
 	static const RendererInfo &info();
 
 	explicit MovementRenderer(MovementChannels &r_channels);

@@ -70,13 +70,13 @@ void remove_active(uint32_t *r_active, uint32_t &r_count, uint32_t p_position) {
 void gather(const Frame &p_frame, const ContactMaterial &p_default_material, UnilateralContacts &r_contacts) {
 	uint32_t members[MAX_CONTACTS];
 	r_contacts.count = 0;
-	for (uint32_t c = 0; c < p_frame.contact_count && c < MAX_CONTACTS; ++c) {
+	for (uint32_t c = 0; c < p_frame.contacts.size() && c < MAX_CONTACTS; ++c) {
 		const Contact &contact = p_frame.contacts[c];
 		const Vec3 n = normalized_or_zero(contact.normal);
 		if (!is_finite(n) || n == Vec3{}) {
 			continue;
 		}
-		const ContactMaterial &material = contact.use_default_material ? p_default_material : contact.material;
+		const ContactMaterial &material = contact.material.value_or(p_default_material);
 		uint32_t m = 0;
 		while (m < r_contacts.count &&
 				dot(r_contacts.normals[m], n) < DUPLICATE_COS * length(r_contacts.normals[m])) {
@@ -89,14 +89,14 @@ void gather(const Frame &p_frame, const ContactMaterial &p_default_material, Uni
 			members[m] = 0;
 		}
 		r_contacts.normals[m] += n;
-		r_contacts.materials[m].stiffness += material.stiffness;
-		r_contacts.materials[m].friction += material.friction;
+		r_contacts.materials[m].stiffness_n += material.stiffness_n;
+		r_contacts.materials[m].friction_n += material.friction_n;
 		++members[m];
 	}
 	for (uint32_t m = 0; m < r_contacts.count; ++m) {
 		r_contacts.normals[m] = normalized_or_zero(r_contacts.normals[m]);
-		r_contacts.materials[m].stiffness /= members[m];
-		r_contacts.materials[m].friction /= members[m];
+		r_contacts.materials[m].stiffness_n /= members[m];
+		r_contacts.materials[m].friction_n /= members[m];
 	}
 }
 

@@ -31,11 +31,7 @@ namespace haptics {
 // what friction takes out of a slip before the ball rolls (walls, floor, paddles).
 inline constexpr double ROLLING_SHARE = 2.0 / 7.0;
 
-struct BallState {
-	Vec3 position; // World, m.
-	Vec3 velocity; // World, m/s.
-	Vec3 spin; // Angular velocity, world axes, rad/s.
-};
+// BallState: pong.schema.toml.
 
 // p_v shortened by p_decrease (>= 0), to zero at most; the direction is kept.
 Vec3 decrease_length(const Vec3 &p_v, double p_decrease);

@@ -25,17 +25,15 @@
 // for player 3 (device forward -> world +x). Quarter turns are exact (no trigonometry).
 
 #include "core/base/vec3.h"
+#include "renderers/pong/pong.gen.h"
 #include "renderers/pong/pong_config.h"
 
 #include <cstdint>
 
 namespace haptics {
 
-// The most players a court holds; fixed-size arrays in the servo use it (no allocation).
-inline constexpr int PONG_MAX_PLAYERS = 4;
-// A match unless the configuration says otherwise.
-inline constexpr int PONG_DEFAULT_PLAYERS = 2;
-// Kept for the 2-player callers: the default count.
+// PONG_MAX_PLAYERS (fixed-size arrays in the servo use it: no allocation) and
+// PONG_DEFAULT_PLAYERS: pong.schema.toml. Kept for the 2-player callers: the default count.
 inline constexpr int PONG_PLAYERS = PONG_DEFAULT_PLAYERS;
 
 // Whether a court of p_count players is built (2 and 4; 3 would need a hexagonal or
@@ -44,19 +42,10 @@ constexpr bool valid_player_count(int p_count) {
 	return p_count == 2 || p_count == 4;
 }
 
-// Which court surface; also the order of the names the binding uses.
-enum class CourtSurface : int32_t {
-	LEFT = 0, // x = -W
-	RIGHT = 1, // x = +W
-	BACK_NEAR = 2, // z = +L, behind player 0
-	BACK_FAR = 3, // z = -L, behind player 1
-	// With 4 players, RIGHT is player 2's back wall and LEFT player 3's.
-	CEILING = 4, // y = wall height
-	FLOOR = 5, // y = 0
-};
-inline constexpr int COURT_SURFACE_COUNT = 6;
-// The walls' names in enum order (the floor has its own event type).
-inline constexpr const char *COURT_WALL_NAMES[] = { "left", "right", "back_near", "back_far", "ceiling" };
+// CourtSurface (pong.schema.toml): LEFT x = -W, RIGHT x = +W, BACK_NEAR z = +L (behind player
+// 0), BACK_FAR z = -L (behind player 1), CEILING at the wall height, FLOOR y = 0; with 4
+// players RIGHT is player 2's back wall and LEFT player 3's.
+inline constexpr int COURT_SURFACE_COUNT = static_cast<int>(EnumInfo<CourtSurface>::COUNT);
 
 struct CourtPlane {
 	CourtSurface surface;

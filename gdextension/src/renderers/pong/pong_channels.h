@@ -21,8 +21,8 @@ namespace haptics {
 
 // A frame sends a few commands at most; 64 is a second of them with the servo stopped.
 inline constexpr size_t PONG_COMMAND_QUEUE_CAPACITY = 64;
-// A rally raises a few events a second; 256 outlasts seconds of a game that does not drain.
-inline constexpr size_t PONG_EVENT_QUEUE_CAPACITY = 256;
+// PONG_EVENT_QUEUE_CAPACITY (pong.schema.toml): a rally raises a few events a second; 256
+// outlasts seconds of a game that does not drain.
 
 struct PongChannels : RendererChannels {
 	Seqlock<PongConfig> settings;

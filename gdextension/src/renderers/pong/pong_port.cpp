@@ -2,6 +2,8 @@
 
 #include "renderers/pong/pong_validation.h"
 
+#include <type_traits>
+
 namespace haptics {
 
 PongPort::PongPort(PongChannels &r_channels) :
@@ -10,7 +12,13 @@ PongPort::PongPort(PongChannels &r_channels) :
 Status PongPort::set_input(const PongInput &p_input) {
 	const Status valid = validate_pong_input(p_input);
 	if (valid) {
-		channels_.input.store(p_input);
+		PongInput input = p_input;
+		for (int p = 0; p < PONG_MAX_PLAYERS; ++p) {
+			if (input.players[p].normal == Vec3{}) {
+				input.players[p].normal = seat_facing(p);
+			}
+		}
+		channels_.input.store(input);
 	}
 	return valid;
 }
@@ -27,6 +35,35 @@ Status PongPort::push_command(const PongCommand &p_command) {
 				PONG_COMMAND_QUEUE_CAPACITY);
 	}
 	return Status::success();
+}
+
+Status PongPort::receive(std::span<const uint8_t> p_message) {
+	return receive_one_of<PongInput, PongCommand>(p_message, [&](const auto &p_value) {
+		if constexpr (std::is_same_v<std::decay_t<decltype(p_value)>, PongInput>) {
+			return set_input(p_value);
+		} else {
+			return push_command(p_value);
+		}
+	});
+}
+
+Status PongPort::give(uint32_t p_value_id, std::vector<uint8_t> &r_bytes) {
+	if (p_value_id == PongState::SCHEMA_ID) {
+		r_bytes = encode(state());
+		return Status::success();
+	}
+	if (p_value_id == PongEventBatch::SCHEMA_ID) {
+		// The whole queue at most: one read a frame empties it.
+		PongEventBatch batch;
+		PongEvent event;
+		while (batch.events.size() < PONG_EVENT_QUEUE_CAPACITY && channels_.events.try_pop(event)) {
+			batch.events.push_back(event);
+		}
+		r_bytes = encode(batch);
+		return Status::success();
+	}
+	return Status::error(StatusCode::INVALID_ARGUMENT, "the Pong renderer gives PongState and PongEventBatch, not layout %08x",
+			unsigned(p_value_id));
 }
 
 PongState PongPort::state() const {

@@ -6,17 +6,23 @@
 //   each frame:   port.set_input(input)    (also the watchdog's heartbeat in PONG mode)
 //   on events:    port.push_command(...)   (serve, effects)
 //   each frame:   port.state(), port.drain_events(...)
+// The same through RendererPort, as the game sends them (pong.schema.toml): it takes
+// PongInput and PongCommand, and gives PongState and PongEventBatch (the drained events).
 
 #include "core/base/status.h"
+#include "core/render/renderer_port.h"
 #include "renderers/pong/pong_channels.h"
 
 #include <cstddef>
 
 namespace haptics {
 
-class PongPort {
+class PongPort final : public RendererPort {
 public:
 	explicit PongPort(PongChannels &r_channels);
+
+	Status receive(std::span<const uint8_t> p_message) override;
+	Status give(uint32_t p_value_id, std::vector<uint8_t> &r_bytes) override;
 
 	// The latest paddles and modes; validated (pong_validation.h), then published lock-free.
 	// On error the previous input stays in force.

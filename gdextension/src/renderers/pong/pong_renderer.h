@@ -30,6 +30,7 @@
 #include "core/render/renderer_info.h"
 #include "core/render/settings_inbox.h"
 #include "renderers/pong/pong_channels.h"
+#include "renderers/pong/pong_port.h"
 #include "renderers/pong/pong_sim.h"
 
 #include <cstddef>
@@ -38,20 +39,8 @@
 
 namespace haptics {
 
-// Its force components, in their order in ForceComponents::parts, and their names (what
-// get_forces() and PongState's hand force call them).
-enum PongForce : size_t {
-	CONTACT_FORCE = 0,
-	SPIN_FORCE = 1,
-	EFFECTS_FORCE = 2,
-};
-inline constexpr const char *PONG_FORCE_NAMES[] = { "contact", "spin", "effects" };
-
-// Its telemetry flags (RendererInfo::telemetry_flags).
-enum PongFlag : uint32_t {
-	TELEMETRY_FLAG_PONG_MODE = 1u << 9, // The Pong renderer is the active one.
-	TELEMETRY_FLAG_PADDLE_CONTACT = 1u << 10, // The device player's paddle touches the ball.
-};
+// Its force components, in their order in ForceComponents::parts (PongForce), and its
+// telemetry flags (TELEMETRY_FLAG_PONG_MODE, TELEMETRY_FLAG_PADDLE_CONTACT): pong.schema.toml.
 static_assert(TELEMETRY_FLAG_PONG_MODE >= (1u << FIRST_RENDERER_FLAG_BIT));
 
 // Its rows of the configuration table (pong_config_fields.cpp).
@@ -61,6 +50,7 @@ class PongRenderer final : public Renderer {
 public:
 	using Config = PongConfig;
 	using Channels = PongChannels;
+	using Port = PongPort;
 	static const RendererInfo &info();
 	// What the field table's per-field ranges cannot say (validate_pong_config).
 	static Status validate(const PongConfig &p_config);

@@ -31,6 +31,7 @@ Vec3 rotate(const Orientation &p_q, const Vec3 &p_v) {
 PongSim::PongSim() {
 	// Until the game says where its paddles are, none is in play: default poses (both at the
 	// world origin) must neither touch the ball nor push the hand.
+	input_ = default_pong_input();
 	input_.local_player = -1;
 	for (PongPlayerInput &player : input_.players) {
 		player.active = false;
@@ -348,20 +349,21 @@ void PongSim::step(double p_dt_s, const HandSample *p_hand) {
 
 void PongSim::fill_state(PongState &r_state) const {
 	r_state.time_s = time_s_;
-	r_state.ball = ball_;
+	r_state.ball_position = ball_.position;
+	r_state.ball_velocity = ball_.velocity;
+	r_state.ball_spin = ball_.spin;
 	r_state.ball_correction = correction_.position_left();
-	r_state.correction_step_max_m = correction_step_max_m_;
+	r_state.ball_correction_step_max = correction_step_max_m_;
 	r_state.territory = territory_;
 	r_state.player_count = players();
 	for (int p = 0; p < players(); ++p) {
-		PongPaddleState &paddle = r_state.players[p];
-		paddle.center = poses_[p].center;
-		paddle.normal = poses_[p].normal;
-		paddle.velocity = poses_[p].velocity;
-		paddle.in_contact = trackers_[p].touching();
+		r_state.paddle_centers[p] = poses_[p].center;
+		r_state.paddle_normals[p] = poses_[p].normal;
+		r_state.paddle_velocities[p] = poses_[p].velocity;
+		r_state.in_contact[p] = trackers_[p].touching();
 	}
 	r_state.hand_force = PongHandForce{};
-	r_state.effect_count = static_cast<uint32_t>(effects_.list(r_state.effects));
+	r_state.effects.count = static_cast<uint32_t>(effects_.list(r_state.effects.items.data()));
 	r_state.paddle_contacts = paddle_contacts_;
 	r_state.bounces = bounces_;
 	r_state.events_dropped = events_.dropped();

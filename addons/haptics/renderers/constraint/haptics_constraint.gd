@@ -1,0 +1,54 @@
+class_name HapticsConstraint
+extends RefCounted
+## The constraint renderer for a game (position control against a maze's walls, as the maze
+## study's constraint condition uses it): the workspace maps onto the whole maze, a finite
+## proxy is held by the walls, and the hand is pulled to the proxy, k (proxy - device). Give it
+## the walls and the mapping with [method set_walls], make it the active renderer with
+## [method activate], feed frames as usual (an empty frame is the watchdog's heartbeat), and
+## draw the avatar at [method get_proxy]'s [code]proxy[/code].
+
+## The renderer's name in the servo.
+const NAME := &"constraint"
+# The door's script by its path (this script may parse before the autoload is registered).
+const Haptics := preload("res://addons/haptics/door/haptics.gd")
+
+var _renderer: HapticsRenderer = null
+
+
+func _init(renderer: HapticsRenderer) -> void:
+	_renderer = renderer
+
+
+## The constraint renderer of [param haptics] (the [code]Haptics[/code] autoload, or a door of
+## a test's own).
+static func of(haptics: Haptics) -> HapticsConstraint:
+	return HapticsConstraint.new(haptics.renderer(NAME))
+
+
+## Whether the native library has it.
+func is_available() -> bool:
+	return _renderer.is_available()
+
+
+## Makes it the servo's renderer.
+func activate() -> bool:
+	return _renderer.activate()
+
+
+func is_active() -> bool:
+	return _renderer.is_active()
+
+
+## The maze's walls as point pairs (a0, b0, a1, b1, ...) in maze units, and how the
+## workspace maps onto the maze. Refused walls are reported and the previous ones stay.
+func set_walls(points: PackedVector2Array, mapping: HapticMazeMapping) -> bool:
+	var walls: HapticMazeWalls = HapticMazeWalls.new()
+	walls.points = points
+	walls.mapping = mapping
+	return _renderer.send(walls)
+
+
+## The proxy after the servo's latest tick (a proxy at the origin without the library).
+func get_proxy() -> HapticProxyState:
+	var state: HapticProxyState = HapticProxyState.decode(_renderer.read(HapticProxyState.SCHEMA_ID))
+	return state if state != null else HapticProxyState.new()
