@@ -67,6 +67,18 @@ func remaining(player: int) -> float:
 	return _remaining[player]
 
 
+## [param player]'s effect and the seconds it has left, as the servo reports the device
+## player's, or null when none.
+func state_of(player: int) -> PongEffectState:
+	var index: int = PongServoFacts.PONG_EFFECT_KIND_NAMES.find(_kind[player])
+	if index < 0:
+		return null
+	var state: PongEffectState = PongEffectState.new()
+	state.kind = index as PongServoFacts.PongEffectKind
+	state.remaining_s = _remaining[player]
+	return state
+
+
 ## The player who placed the mine of [param player]'s effect (-1 when none).
 func owner_of(player: int) -> int:
 	return _owner[player] if not _kind[player].is_empty() else -1

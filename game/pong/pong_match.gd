@@ -1,7 +1,7 @@
 class_name PongMatch
 extends Node
 ## One match of Haptic Battle Pong: it drives the servo's Pong renderer through
-## [code]Haptics.pong[/code] and keeps the rules. Every update it reads the newest state and
+## [code]PongServo.shared()[/code] and keeps the rules. Every update it reads the newest state and
 ## the events (floor bounces cost health, paddle contacts end the computer's swing), moves
 ## the bullets, sets mines off, asks each player's controller what it does, fires, places
 ## mines, serves when due, and hands the servo the input. The ball itself is only ever in
@@ -233,14 +233,7 @@ func effect_of(player: int) -> PongEffectState:
 			if PongMines.KINDS.has(PongServoFacts.PONG_EFFECT_KIND_NAMES[entry.kind]):
 				return entry
 		return null
-	var kind: String = effects.kind_of(player)
-	if kind.is_empty():
-		return null
-	var effect: PongEffectState = PongEffectState.new()
-	var index: int = PongServoFacts.PONG_EFFECT_KIND_NAMES.find(kind)
-	effect.kind = index as PongServoFacts.PongEffectKind
-	effect.remaining_s = effects.remaining(player)
-	return effect
+	return effects.state_of(player)
 
 
 # The ticks first: the update then reads the state they made and sends the input for the

@@ -1,6 +1,6 @@
 class_name PongServoLink
 extends RefCounted
-## A match's hold on the servo through [code]Haptics.pong[/code]: the court size it sets
+## A match's hold on the servo through [code]PongServo.shared()[/code]: the court size it sets
 ## (and gives back), the Pong renderer, the simulated hand, the servo thread (stopped while
 ## a stepped match runs it by hand), and the telemetry the peak force on the hand is read
 ## from. [method claim_court], then [method enter]; [method leave] gives everything back.

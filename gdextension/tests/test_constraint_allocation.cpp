@@ -55,7 +55,7 @@ TEST_CASE("constraint tick allocates nothing: 1 kHz and 50 Hz proxy, walls swapp
 	unsigned long allocations = 0;
 	for (int k = 0; k < 4000; ++k) {
 		if (k == 2000) {
-			config.update = ProxyUpdate::FRAME_RATE;
+			config.update = ProxyUpdate::FRAME;
 			REQUIRE(reconfigure(system, [&](RenderConfig &c) { c.constraint = config; }));
 		}
 		if (k % 500 == 250) { // New walls (built here, outside the watched step).

@@ -105,7 +105,7 @@ void compare_with_proxy_alone(ProxyUpdate p_update) {
 		const ServoOutput out = system.output();
 		const ProxyState proxy = proxy_state(system);
 		const ConstraintOutput expected =
-				alone.render(geometry.get(), 1, out.position_m, 0.1, p_update == ProxyUpdate::SERVO_RATE || frame);
+				alone.render(geometry.get(), 1, out.position_m, 0.1, p_update == ProxyUpdate::SERVO || frame);
 		REQUIRE(expected.placed);
 		differences += out.forces.parts[WALL_FORCE] == expected.force && out.forces.total == expected.force &&
 						proxy.proxy == expected.proxy && proxy.goal == expected.goal &&
@@ -125,7 +125,7 @@ void compare_with_proxy_alone(ProxyUpdate p_update) {
 	CHECK(system.output().render_mode == RenderMode::CONSTRAINT);
 	const ProxyState proxy = proxy_state(system);
 	CHECK(proxy.placed);
-	if (p_update == ProxyUpdate::SERVO_RATE) {
+	if (p_update == ProxyUpdate::SERVO) {
 		CHECK(proxy.updates == 3000);
 		CHECK(proxy_moves_between_frames > 1000);
 	} else {
@@ -138,16 +138,16 @@ void compare_with_proxy_alone(ProxyUpdate p_update) {
 } // namespace
 
 TEST_CASE("constraint system: step() renders what the proxy alone computes, 1 kHz proxy") {
-	compare_with_proxy_alone(ProxyUpdate::SERVO_RATE);
+	compare_with_proxy_alone(ProxyUpdate::SERVO);
 }
 
 TEST_CASE("constraint system: the paper's 50 Hz variant moves the proxy only on frames") {
-	compare_with_proxy_alone(ProxyUpdate::FRAME_RATE);
+	compare_with_proxy_alone(ProxyUpdate::FRAME);
 }
 
 TEST_CASE("constraint system: force is k_c (proxy - device), normal to the wall, in newtons") {
 	HapticsSystem system;
-	set_up(system, ProxyUpdate::SERVO_RATE);
+	set_up(system, ProxyUpdate::SERVO);
 	// One vertical wall at maze x = 120 across the whole maze; the device pushes to maze
 	// x = 130, y = 90 (10 units into it) from the left.
 	const Segment2 wall{ { 120.0, 0.0 }, { 120.0, 180.0 } };
@@ -174,8 +174,8 @@ TEST_CASE("constraint system: force is k_c (proxy - device), normal to the wall,
 
 TEST_CASE("constraint system: clamp, start-up ramp and watchdog still apply") {
 	HapticsSystem system;
-	set_up(system, ProxyUpdate::SERVO_RATE);
-	ConstraintConfig stiff = constraint_config(ProxyUpdate::SERVO_RATE);
+	set_up(system, ProxyUpdate::SERVO);
+	ConstraintConfig stiff = constraint_config(ProxyUpdate::SERVO);
 	stiff.stiffness_n_per_m = 5000.0;
 	REQUIRE(reconfigure(system, [&](RenderConfig &c) { c.constraint = stiff; }));
 	SafetyConfig safety;
@@ -214,7 +214,7 @@ TEST_CASE("constraint system: clamp, start-up ramp and watchdog still apply") {
 
 TEST_CASE("constraint system: switching modes hands over between the renderers") {
 	HapticsSystem system;
-	set_up(system, ProxyUpdate::SERVO_RATE);
+	set_up(system, ProxyUpdate::SERVO);
 	REQUIRE(reconfigure(system, [](RenderConfig &c) { c.movement.smoothing = SmoothingConfig{ false, 13.0 }; }));
 	REQUIRE(reconfigure(system, [](RenderConfig &c) { c.servo.render_mode = RenderMode::MOVEMENT; }));
 	const Segment2 wall{ { 120.0, 0.0 }, { 120.0, 180.0 } };
@@ -256,7 +256,7 @@ TEST_CASE("constraint system: switching modes hands over between the renderers")
 
 TEST_CASE("constraint system: rejected geometry or config names the problem and keeps the previous one") {
 	HapticsSystem system;
-	set_up(system, ProxyUpdate::SERVO_RATE);
+	set_up(system, ProxyUpdate::SERVO);
 	const Segment2 wall{ { 120.0, 0.0 }, { 120.0, 180.0 } };
 	REQUIRE(maze_port(system).set_geometry(&wall, 1, maze_mapping()));
 	REQUIRE(system.set_hand_target({ 0.0, 0.0, 0.0 }));
@@ -276,16 +276,16 @@ TEST_CASE("constraint system: rejected geometry or config names the problem and 
 	bad[3] = Segment2{ { 5.0, 5.0 }, { 5.0, 5.0 } };
 	status = maze_port(system).set_geometry(bad.data(), bad.size(), maze_mapping());
 	CHECK(std::strstr(status.message(), "constraint.segments[3]: degenerate") != nullptr);
-	ConstraintConfig wild = constraint_config(ProxyUpdate::SERVO_RATE);
+	ConstraintConfig wild = constraint_config(ProxyUpdate::SERVO);
 	wild.proxy_radius = 0.0;
 	status = reconfigure(system, [&](RenderConfig &c) { c.constraint = wild; });
-	CHECK(std::strstr(status.message(), "constraint.proxy_radius") != nullptr);
-	wild = constraint_config(ProxyUpdate::SERVO_RATE);
+	CHECK(std::strstr(status.message(), "HapticConstraintSettings.proxy_radius") != nullptr);
+	wild = constraint_config(ProxyUpdate::SERVO);
 	wild.stiffness_n_per_m = NaN;
-	CHECK(std::strstr(reconfigure(system, [&](RenderConfig &c) { c.constraint = wild; }).message(), "constraint.stiffness_n_per_m") != nullptr);
-	wild = constraint_config(ProxyUpdate::SERVO_RATE);
+	CHECK(std::strstr(reconfigure(system, [&](RenderConfig &c) { c.constraint = wild; }).message(), "HapticConstraintSettings.stiffness_n_per_m") != nullptr);
+	wild = constraint_config(ProxyUpdate::SERVO);
 	wild.max_iterations = 0;
-	CHECK(std::strstr(reconfigure(system, [&](RenderConfig &c) { c.constraint = wild; }).message(), "constraint.max_iterations") != nullptr);
+	CHECK(std::strstr(reconfigure(system, [&](RenderConfig &c) { c.constraint = wild; }).message(), "HapticConstraintSettings.max_iterations") != nullptr);
 	for (int k = 0; k < 10; ++k) {
 		REQUIRE(system.step(DT));
 	}
@@ -299,7 +299,7 @@ TEST_CASE("constraint system: walls swapped while the servo thread runs") {
 	SimulatedDeviceConfig device;
 	device.rigid_hand = true;
 	REQUIRE(system.open_simulated_device(device));
-	REQUIRE(reconfigure(system, [&](RenderConfig &c) { c.constraint = constraint_config(ProxyUpdate::SERVO_RATE); }));
+	REQUIRE(reconfigure(system, [&](RenderConfig &c) { c.constraint = constraint_config(ProxyUpdate::SERVO); }));
 	REQUIRE(reconfigure(system, [](RenderConfig &c) { c.servo.render_mode = RenderMode::CONSTRAINT; }));
 	ServoOptions options;
 	options.realtime.priority = 0;

@@ -1,10 +1,10 @@
 // The renderer table as the engine and the binding walk it: one row per renderer in
-// render-mode order, each naming its force components and raising telemetry flags of its
-// own, and its configuration rows in the one table.
+// render-mode order, each naming its force components, raising telemetry flags of its own and
+// holding its own settings value in the configuration.
 
-#include "core/servo/servo_config_fields.h"
+#include "core/wire/codec.h"
 #include "core/servo/telemetry.h"
-#include "system/config_table.h"
+#include "system/settings_validation.h"
 #include "system/render_config.h"
 #include "system/renderer_registry.h"
 
@@ -68,22 +68,17 @@ TEST_CASE("renderer table: telemetry flags are each renderer's own bits, above t
 	}
 }
 
-TEST_CASE("renderer table: the configuration table is the servo's rows, then each renderer's") {
-	size_t expected = servo_config_fields().size();
-	for (const RegisteredRenderer &row : registered_renderers()) {
-		expected += row.info->config_fields.size();
-	}
-	CHECK(config_fields().size() == expected);
-	CHECK(registered_renderers()[RenderMode::PONG].info->config_fields.size() == 43);
-	for (const ConfigField &row : registered_renderers()[RenderMode::PONG].info->config_fields) {
-		CHECK(std::string(row.section) == "pong"); // Pong's settings are Pong's alone.
-	}
-	// Each row reaches its own owner's part of a RenderConfig.
+TEST_CASE("renderer table: each renderer's settings are its own value in the configuration") {
 	RenderConfig config;
-	set_config_value(config, *find_config_field("pong", "gravity_m_per_s2"), 4.0);
-	set_config_value(config, *find_config_field("force_model", "dead_zone"), 0.1);
-	set_config_value(config, *find_config_field("force_model", "gravity_n_per_kg"), 2.0);
-	CHECK(config.pong.gravity_m_per_s2 == 4.0);
-	CHECK(config.servo.input.dead_zone == 0.1);
-	CHECK(config.movement.force_model.gravity_n_per_kg == 2.0);
+	config.pong.gravity_m_per_s2 = 4.0;
+	config.servo.input.dead_zone = 0.1;
+	config.movement.force_model.gravity_n_per_kg = 2.0;
+	CHECK(validate_render_config(config));
+	// A renderer's settings travel as its own schema value, whole.
+	PongConfig pong;
+	REQUIRE(decode(encode(config.pong), pong));
+	CHECK(pong.gravity_m_per_s2 == 4.0);
+	CHECK(std::string(PongConfig::NAME) == "PongSettings");
+	CHECK(std::string(MovementConfig::NAME) == "HapticMovementSettings");
+	CHECK(std::string(ConstraintConfig::NAME) == "HapticConstraintSettings");
 }

@@ -73,8 +73,10 @@ func _report(runs: Array[Dictionary]) -> void:
 	var wall: float = 0.0
 	for i: int in runs.size():
 		var run: Dictionary = runs[i]
-		simulated += float(run["simulated_s"])
-		wall += float(run["wall_s"])
+		var run_simulated: float = run["simulated_s"]
+		var run_wall: float = run["wall_s"]
+		simulated += run_simulated
+		wall += run_wall
 		print(
 			(
 				"%-8d %12.1f %10.2f %10.1f %20.1f %8d"

@@ -146,5 +146,5 @@ func test_enums_and_rates_are_the_servos_own() -> void:
 	var mapping: HapticMazeMapping = HapticMazeMapping.new()
 	mapping.maze_max = Vector2(100, 100)
 	mapping.workspace_shape = HapticConstraint.WorkspaceShape.SQUARE
-	assert_true(door.set_constraint_geometry(PackedVector2Array(), mapping))
+	assert_true(HapticsConstraint.of(door).set_walls(PackedVector2Array(), mapping))
 	assert_eq(HapticConstraint.TELEMETRY_FLAG_PROXY_CONTACT, 1 << 8)

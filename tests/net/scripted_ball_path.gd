@@ -52,9 +52,7 @@ func _one_delay() -> float:
 ## Takes every paddle out of play in the servo: only the court and the commands move the ball.
 static func no_paddles() -> void:
 	var input: PongInput = PongInput.new()
-	for seat: int in 2:
-		var player: PongPlayerInput = PongPlayerInput.new()
+	for player: PongPlayerInput in input.players:
 		player.active = false
 		player.kinematic = true
-		input.players.append(player)
 	PongServo.shared().set_input(input)

@@ -30,7 +30,7 @@ var _match: PongMatch = null
 # Where the device player's hand waits while walking onto a mine (fractions of the radius).
 var _hand_on_mine: Vector2 = Vector2.ZERO
 var _probe: PongFeltProbe = null
-var _events: Array[Dictionary] = []
+var _events: Array[PongEvent] = []
 
 
 func after_each() -> void:
@@ -156,7 +156,7 @@ func _meet_serve(brush: bool, spin: Vector3 = Vector3.ZERO) -> Dictionary:
 		if brush:
 			hand.x += BRUSH_AMPLITUDE * sin(TAU * BRUSH_HZ * _match.now)
 		_move_hand(hand.limit_length(0.95))
-		return _saw("release", 0)
+		return _saw(PongServoFacts.PongEventType.RELEASE, 0)
 	if not assert_true(_probe.run(2.5, follow), "the device paddle met the serve"):
 		return {}
 	_probe.run(0.05)
@@ -176,14 +176,13 @@ func _meet_serve(brush: bool, spin: Vector3 = Vector3.ZERO) -> Dictionary:
 func _contact_ticks(player: int) -> Vector2i:
 	var start: float = 0.0
 	var end: float = 0.0
-	for event: Dictionary in _events:
-		var who: int = event.get("player", -1)
-		if who != player:
+	for event: PongEvent in _events:
+		if event.player != player:
 			continue
-		if str(event.get("type", "")) == "paddle":
-			start = event.get("time_s", 0.0)
-		elif str(event.get("type", "")) == "release":
-			end = event.get("time_s", 0.0)
+		if event.type == PongServoFacts.PongEventType.PADDLE:
+			start = event.time_s
+		elif event.type == PongServoFacts.PongEventType.RELEASE:
+			end = event.time_s
 	return Vector2i(_probe.index_at(start), _probe.index_at(end))
 
 
@@ -248,9 +247,10 @@ func _device_velocity(index: int) -> Vector3:
 	return _device(0, paddle) / _match.court.workspace_scale
 
 
-func _saw(type: String, player: int) -> bool:
+func _saw(type: PongServoFacts.PongEventType, player: int) -> bool:
 	return PongTestEvents.saw(_events, type, player)
 
 
-func _servo_effect(kind: String) -> Dictionary:
-	return PongServo.shared().get_state().effect(kind)
+# The device player's running effect of [param kind] in the servo, or null.
+func _servo_effect(kind: String) -> PongEffectState:
+	return PongServo.effect_in(PongServo.shared().get_state(), kind)

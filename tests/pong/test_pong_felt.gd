@@ -140,4 +140,4 @@ func test_the_door_refuses_an_effect_the_servo_would_refuse() -> void:
 	)
 	assert_true(sent, "a slow effect with the defaults is sent")
 	_probe.run(0.05)
-	assert_false(_match.snapshot.effect("slow").is_empty(), "and runs in the servo")
+	assert_not_null(PongServo.effect_in(_match.snapshot, "slow"), "and runs in the servo")

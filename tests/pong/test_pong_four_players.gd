@@ -7,6 +7,8 @@ extends "res://tests/pong/pong_screen_suite.gd"
 
 const PongTestCourt := preload("res://tests/pong/pong_test_court.gd")
 const PongTestScreen := preload("res://tests/pong/pong_test_screen.gd")
+const PongTestEvents := preload("res://tests/pong/pong_test_events.gd")
+const SURFACE := PongServoFacts.CourtSurface
 
 var _court: PongCourt = null
 
@@ -53,17 +55,15 @@ func test_a_goal_costs_the_back_walls_owner_and_the_last_one_left_wins() -> void
 	rules.player_out.connect(func(player: int) -> void: outs.append(player))
 	rules.match_over.connect(func(winner: int) -> void: winners.append(winner))
 	var goal: int = PongRules.DAMAGE[PongRules.CAUSE_GOAL]
-	var wall_of_2: Dictionary = {
-		"type": "wall", "wall": "right", "back_wall_of": 2, "position": Vector3(3, 1, 0.3)
-	}
+	var wall_of_2: PongEvent = PongTestEvents.wall_hit(SURFACE.RIGHT, 2, Vector3(3, 1, 0.3))
 	assert_eq(rules.apply_event(wall_of_2, _court, false), 2, "the right wall is 2's goal")
 	assert_eq(rules.get_health(2), 10 - goal)
-	var ceiling: Dictionary = {"type": "wall", "wall": "ceiling", "back_wall_of": -1}
+	var ceiling: PongEvent = PongTestEvents.wall_hit(SURFACE.CEILING, -1)
 	assert_eq(rules.apply_event(ceiling, _court, false), -1, "the ceiling is nobody's goal")
 	assert_eq(outs, [2] as Array[int], "a goal took all 10: player 2 is out")
 	assert_false(rules.is_over(), "three are left")
 	assert_eq(rules.apply_event(wall_of_2, _court, false), -1, "an out player loses nothing")
-	var floor_of_2: Dictionary = {"type": "floor", "territory": 2}
+	var floor_of_2: PongEvent = PongTestEvents.floor_bounce(2)
 	assert_eq(rules.apply_event(floor_of_2, _court, false), -1, "nor on its floor")
 	assert_eq(rules.alive(), [0, 1, 3] as Array[int])
 	assert_eq(rules.hurt(0, PongRules.CAUSE_GOAL), 10)
@@ -75,13 +75,12 @@ func test_a_goal_costs_the_back_walls_owner_and_the_last_one_left_wins() -> void
 	assert_eq(rules.hurt(1, PongRules.CAUSE_FLOOR), 0, "frozen once over")
 	# Beginner mode: only within the target, measured along the wall (z for players 2, 3).
 	var beginner: PongRules = PongRules.new(99, 4)
-	var beside: Dictionary = wall_of_2.duplicate()
-	beside["position"] = Vector3(3.0, 1.0, 0.8)
+	var beside: PongEvent = PongTestEvents.wall_hit(SURFACE.RIGHT, 2, Vector3(3.0, 1.0, 0.8))
 	assert_eq(beginner.apply_event(beside, _court, true), -1, "beside 2's target")
 	assert_eq(beginner.apply_event(wall_of_2, _court, true), 2, "within it")
 	# Two players outside beginner mode: back walls are no goals (the paper's rule).
 	var two: PongRules = PongRules.new(99)
-	var near: Dictionary = {"type": "wall", "wall": "back_near", "back_wall_of": 0}
+	var near: PongEvent = PongTestEvents.wall_hit(SURFACE.BACK_NEAR, 0)
 	assert_eq(two.apply_event(near, PongTestCourt.make(), false), -1)
 
 
@@ -117,14 +116,14 @@ func test_a_four_computer_match_ends_with_one_winner() -> void:
 	add_child(_pong)
 	var match_node: PongMatch = _pong.match_node
 	assert_eq(match_node.court.players, 4)
-	assert_eq(PongServo.shared().get_state().players, 4, "the servo has four paddles")
+	assert_eq(PongServo.shared().get_state().player_count, 4, "the servo has four paddles")
 	var outs: Array[int] = []
 	match_node.player_out.connect(func(player: int) -> void: outs.append(player))
-	var territories: Dictionary = {}
+	var territories: Dictionary[int, bool] = {}
 	match_node.event_seen.connect(
-		func(event: Dictionary) -> void:
-			if event["type"] == "territory":
-				territories[event["territory"]] = true
+		func(event: PongEvent) -> void:
+			if event.type == PongServoFacts.PongEventType.TERRITORY:
+				territories[event.territory] = true
 	)
 	var over: bool = match_node.run_until(match_node.rules.is_over, 600.0)
 	assert_true(over, "over within 600 simulated s")

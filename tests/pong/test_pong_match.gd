@@ -8,11 +8,12 @@ extends "res://tests/pong/pong_screen_suite.gd"
 
 const PongTestScreen := preload("res://tests/pong/pong_test_screen.gd")
 const PongTestEvents := preload("res://tests/pong/pong_test_events.gd")
+const EVENT := PongServoFacts.PongEventType
 ## Tolerance of an effect's end: one match update either side, and one more for the order
 ## of update and servo ticks.
 const EFFECT_TOLERANCE_S: float = 2.0 * PongMatch.STEP_CHUNK_S + 0.005
 
-var _events: Array[Dictionary] = []
+var _events: Array[PongEvent] = []
 
 
 func after_each() -> void:
@@ -35,8 +36,10 @@ func test_the_computer_returns_served_balls() -> void:
 			0.5 - 0.25 * i, court.beginner_height, -court.half_length * (0.45 + 0.05 * i)
 		)
 		_events.clear()
-		PongServo.shared().set_ball(from, PongReferee.launch_velocity(from, target, court.gravity, 1.0))
-		var hit: bool = match_node.run_until(_saw.bind("paddle", 1), 3.0)
+		PongServo.shared().set_ball(
+			from, PongReferee.launch_velocity(from, target, court.gravity, 1.0)
+		)
+		var hit: bool = match_node.run_until(_saw.bind(EVENT.PADDLE, 1), 3.0)
 		var back: bool = hit and match_node.run_until(_ball_in.bind(0), 3.0)
 		if hit and back:
 			returned += 1
@@ -53,9 +56,9 @@ func test_a_bounce_in_ones_own_half_costs_exactly_one_point() -> void:
 	var start: int = match_node.rules.start_health
 	PongServo.shared().set_ball(Vector3(-0.9, 1.5, 1.5), Vector3(0.0, 0.0, 0.3))
 	match_node.run_until(func() -> bool: return false, 4.0)
-	var own: int = _count("floor", "territory", 0)
+	var own: int = PongTestEvents.count(_events, EVENT.FLOOR, 0)
 	assert_gt(own, 2, "the ball bounced several times in territory 0")
-	assert_eq(_count("floor", "territory", 1), 0, "never in territory 1")
+	assert_eq(PongTestEvents.count(_events, EVENT.FLOOR, 1), 0, "never in territory 1")
 	assert_eq(match_node.rules.get_health(0), start - own, "one point per bounce")
 	assert_eq(match_node.rules.get_health(1), start, "the other player lost nothing")
 
@@ -73,24 +76,24 @@ func test_a_mines_effect_starts_and_ends_on_time() -> void:
 	)
 	if not assert_not_null(mine, "player 1's mine under player 0"):
 		return
-	assert_true(_servo_effect(mine.kind).is_empty(), "no effect before")
+	assert_null(_servo_effect(mine.kind), "no effect before")
 	var started: bool = match_node.run_until(
-		func() -> bool: return not _servo_effect(mine.kind).is_empty(), 0.5
+		func() -> bool: return _servo_effect(mine.kind) != null, 0.5
 	)
 	if not assert_true(started, "the servo shows the %s effect" % mine.kind):
 		return
 	var start_time: float = match_node.now
-	var remaining: float = _servo_effect(mine.kind).get("remaining_s", 0.0)
+	var remaining: float = _servo_effect(mine.kind).remaining_s
 	assert_almost_eq(remaining, duration, EFFECT_TOLERANCE_S, "it starts with its duration")
 	assert_eq(match_node.rules.get_health(0), match_node.rules.start_health - 5, "a mine costs 5")
 	await wait_process_frames(2)
 	assert_has(_pong.hud.get_panel(0).get_effect_text(), "SLOW", "the HUD shows it")
 	var ended: bool = match_node.run_until(
-		func() -> bool: return _servo_effect(mine.kind).is_empty(), duration + 1.0
+		func() -> bool: return _servo_effect(mine.kind) == null, duration + 1.0
 	)
 	assert_true(ended, "the effect ends")
 	assert_almost_eq(match_node.now - start_time, duration, EFFECT_TOLERANCE_S, "on time")
-	assert_true(match_node.effect_of(0).is_empty(), "the game's clock agrees")
+	assert_null(match_node.effect_of(0), "the game's clock agrees")
 
 
 func test_beginner_mode_keeps_the_ball_in_its_plane() -> void:
@@ -106,7 +109,7 @@ func test_beginner_mode_keeps_the_ball_in_its_plane() -> void:
 		return false
 	match_node.run_until(check, 12.0)
 	assert_gt(match_node.referee.serves, 0, "served")
-	assert_gt(_count("paddle", "", 0), 2, "a rally: several paddle contacts")
+	assert_gt(PongTestEvents.count(_events, EVENT.PADDLE), 2, "a rally: several paddle contacts")
 	assert_lt(worst[0], 0.001, "y stays within 1 mm of the beginner plane")
 
 
@@ -129,7 +132,7 @@ func test_a_computer_match_runs_to_a_winner() -> void:
 				match_node.now,
 				match_node.speed_ratio(),
 				match_node.referee.serves,
-				_count("paddle", "", 0)
+				PongTestEvents.count(_events, EVENT.PADDLE)
 			]
 		)
 	)
@@ -166,7 +169,7 @@ func _stand_aside(match_node: PongMatch) -> void:
 	)
 
 
-func _saw(type: String, player: int) -> bool:
+func _saw(type: PongServoFacts.PongEventType, player: int) -> bool:
 	return PongTestEvents.saw(_events, type, player)
 
 
@@ -175,15 +178,6 @@ func _ball_in(territory: int) -> bool:
 	return PongCourt.territory_of(state.ball_position) == territory
 
 
-# Events of [param type]; with [param key], only those whose key equals [param value].
-func _count(type: String, key: String, value: int) -> int:
-	var count: int = 0
-	for event: Dictionary in _events:
-		var field: int = event.get(key, value) if not key.is_empty() else value
-		if str(event.get("type", "")) == type and field == value:
-			count += 1
-	return count
-
-
-func _servo_effect(kind: String) -> Dictionary:
-	return PongServo.shared().get_state().effect(kind)
+# The device player's running effect of [param kind] in the servo, or null.
+func _servo_effect(kind: String) -> PongEffectState:
+	return PongServo.effect_in(PongServo.shared().get_state(), kind)

@@ -30,17 +30,15 @@ class Tally:
 	# A serve to player 0 was counted: the territory event it may raise is the same ball.
 	var _served_in: bool = false
 
-	func count(event: Dictionary) -> void:
-		var who: int = event.get("player", -1)
-		var territory: int = event.get("territory", -1)
-		match str(event.get("type", "")):
-			"paddle":
+	func count(event: PongEvent) -> void:
+		match event.type:
+			PongServoFacts.PongEventType.PADDLE:
 				_rally += 1
-				own += 1 if who == 0 else 0
-			"territory":
-				balls_in += 1 if territory == 0 and not _served_in else 0
+				own += 1 if event.player == 0 else 0
+			PongServoFacts.PongEventType.TERRITORY:
+				balls_in += 1 if event.territory == 0 and not _served_in else 0
 				_served_in = false
-			"floor":
+			PongServoFacts.PongEventType.FLOOR:
 				end_rally()
 
 	func serve(receiver: int) -> void:

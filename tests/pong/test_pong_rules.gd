@@ -3,6 +3,7 @@ extends TestSuite
 ## placement rule and triggering, the effects' clocks, bullets, and the referee's serves.
 
 const PongTestCourt := preload("res://tests/pong/pong_test_court.gd")
+const PongTestEvents := preload("res://tests/pong/pong_test_events.gd")
 
 var _court: PongCourt = null
 
@@ -13,14 +14,15 @@ func before_each() -> void:
 
 func test_a_floor_bounce_costs_one_point_to_its_territorys_owner() -> void:
 	var rules: PongRules = PongRules.new(10)
-	var hurt: int = rules.apply_event({"type": "floor", "territory": 1}, _court, false)
+	var hurt: int = rules.apply_event(PongTestEvents.floor_bounce(1), _court, false)
 	assert_eq(hurt, 1)
 	assert_eq(rules.get_health(1), 9)
 	assert_eq(rules.get_health(0), 10, "the other player keeps everything")
-	rules.apply_event({"type": "paddle", "player": 0}, _court, false)
-	rules.apply_event(
-		{"type": "wall", "wall": "back_near", "position": Vector3(0, 1, 3)}, _court, false
+	rules.apply_event(PongTestEvents.paddle_touch(0), _court, false)
+	var back_near: PongEvent = PongTestEvents.wall_hit(
+		PongTestEvents.SURFACE.BACK_NEAR, 0, Vector3(0, 1, 3)
 	)
+	rules.apply_event(back_near, _court, false)
 	assert_eq([rules.get_health(0), rules.get_health(1)], [10, 9], "no other event hurts")
 
 
@@ -47,17 +49,18 @@ func test_damage_never_goes_below_zero() -> void:
 
 func test_a_beginner_goal_needs_the_target_on_the_back_wall() -> void:
 	var rules: PongRules = PongRules.new(99)
-	var inside: Dictionary = {"type": "wall", "wall": "back_far", "position": Vector3(0.3, 0.9, -3)}
-	var outside: Dictionary = {
-		"type": "wall", "wall": "back_far", "position": Vector3(0.8, 0.9, -3)
-	}
-	var side: Dictionary = {"type": "wall", "wall": "left", "position": Vector3(-1.5, 0.9, -1)}
+	var far: PongServoFacts.CourtSurface = PongTestEvents.SURFACE.BACK_FAR
+	var inside: PongEvent = PongTestEvents.wall_hit(far, 1, Vector3(0.3, 0.9, -3))
+	var outside: PongEvent = PongTestEvents.wall_hit(far, 1, Vector3(0.8, 0.9, -3))
+	var left: PongServoFacts.CourtSurface = PongTestEvents.SURFACE.LEFT
+	var side: PongEvent = PongTestEvents.wall_hit(left, -1, Vector3(-1.5, 0.9, -1))
 	assert_eq(rules.apply_event(outside, _court, true), -1, "beside the target")
 	assert_eq(rules.apply_event(side, _court, true), -1, "a side wall")
 	assert_eq(rules.apply_event(inside, _court, false), -1, "not in beginner mode")
 	assert_eq(rules.apply_event(inside, _court, true), 1, "the far wall's target: player 1")
 	assert_eq(rules.get_health(1), 99 - PongRules.DAMAGE[PongRules.CAUSE_GOAL])
-	inside["wall"] = "back_near"
+	inside.wall = PongTestEvents.SURFACE.BACK_NEAR
+	inside.back_wall_of = 0
 	assert_eq(rules.apply_event(inside, _court, true), 0)
 
 
@@ -118,12 +121,17 @@ func test_an_effect_runs_for_its_duration_and_ramps() -> void:
 	effects.advance(1.0)
 	assert_almost_eq(effects.speed_factor(1), PongEffects.SLOW_SPEED_FACTOR, 1e-4)
 	assert_almost_eq(effects.remaining(1), 4.0 - 1.125, 1e-4)
+	var state: PongEffectState = effects.state_of(1)
+	if assert_not_null(state, "the effect as the servo reports the device player's"):
+		assert_eq(state.kind, PongServoFacts.PongEffectKind.SLOW)
+		assert_almost_eq(state.remaining_s, 4.0 - 1.125, 1e-4)
 	effects.advance(2.8)
 	assert_eq(effects.kind_of(1), "slow", "still on just before the end")
 	effects.advance(0.1)
 	assert_eq(effects.kind_of(1), "", "over after 4 s")
 	assert_eq(effects.speed_factor(1), 1.0)
 	assert_eq(effects.kind_of(0), "", "the other player never had it")
+	assert_null(effects.state_of(1), "no state once over")
 
 
 func test_heavy_sags_and_remote_pulls_toward_the_owners_mirror_image() -> void:

@@ -89,11 +89,10 @@ func test_constraint_stops_the_proxy_at_the_wall_and_pulls_the_device_back() -> 
 
 func test_the_fifty_hertz_proxy_variant_moves_only_on_frames() -> void:
 	_config.merge({"conditions": {"constraint": {"update": "frame"}}})
-	var before: Dictionary = Haptics.get_proxy_state()
+	var constraint: HapticsConstraint = HapticsConstraint.of(Haptics)
+	var earlier: int = constraint.get_proxy().updates
 	var result: TrialResult = await _push("constraint", Vector2.INF, Vector2(330.0, 180.0))
-	var state: Dictionary = Haptics.get_proxy_state()
-	var updates: int = state.get("updates", 0)
-	var earlier: int = before.get("updates", 0)
+	var updates: int = constraint.get_proxy().updates
 	var moved: int = updates - earlier if updates >= earlier else updates
 	assert_gt(moved, 30, "the proxy moves on frames")
 	assert_lt(moved, PUSH_TICKS * 3, "at the frame rate, not 1 kHz")

@@ -145,7 +145,7 @@ func _sample(study: StudyRunner) -> void:
 	if phase in CONDITION_SET_UP:
 		key = study.current_condition()
 	if phase == StudySession.Phase.TRIAL:
-		var impact: Vector2 = Haptics.get_forces()["impact"]
+		var impact: Vector2 = Haptics.get_forces().impact
 		var largest: float = _largest_impact.get(key, 0.0)
 		_largest_impact[key] = maxf(largest, impact.length())
 	if key.is_empty():

@@ -90,6 +90,8 @@ def field_doc(f):
         parts.append(f"Unit: {f.unit}.")
     if f.min is not None or f.max is not None:
         parts.append(f"Range [{f.min if f.min is not None else '-inf'}, {f.max if f.max is not None else 'inf'}].")
+    if f.zero_means:
+        parts.append(f"0: {f.zero_means}.")
     return " ".join(parts)
 
 
@@ -109,6 +111,8 @@ def spec(f):
         items.append(".nonzero = true")
     if not f.finite:
         items.append(".finite = false")
+    if f.zero_means:
+        items.append(".zero_allowed = true")
     return "FieldSpec{ " + ", ".join(items) + " }"
 
 

@@ -164,8 +164,10 @@ def read_scalar(schema_set, f, name):
               "vec3": "vec3", "vec3f": "vec3f"}[t.name]
     args = [name]
     if t.name in ("float", "float32"):
-        if lo is not None or hi is not None or not f.finite:
+        if lo is not None or hi is not None or not f.finite or f.zero_means:
             args += [lo or "-INF", hi or "INF"]
+        if f.zero_means:
+            args += ["true" if f.finite else "false", "true"]
     else:
         if f.nonzero or hi is not None or not f.finite:
             args += ["true" if f.nonzero else "false", hi or "INF"]
@@ -209,6 +211,15 @@ def value_class(schema_set, v):
     out.append("")
     out.append("## This layout's id on the wire (docs/values.md): a change of any field changes it.")
     out.append(f"const SCHEMA_ID: int = 0x{v.schema_id:08x}")
+    for f in v.fields:
+        if not f.gd_bounds:
+            continue
+        kind = "int" if f.type.name in INTS else "float"
+        for which, value in (("MIN", bound(schema_set, f, "min")), ("MAX", bound(schema_set, f, "max"))):
+            if value is not None:
+                value = value.replace(".0", "") if kind == "int" else value
+                out.append(f"## The {'least' if which == 'MIN' else 'most'} [member {f.name}] takes.")
+                out.append(f"const {f.name.upper()}_{which}: {kind} = {value}")
     out.append("")
     for f in v.fields:
         parts = [f.doc] if f.doc else []
@@ -216,6 +227,8 @@ def value_class(schema_set, v):
             parts.append(f"Unit: {f.unit}.")
         if f.min is not None or f.max is not None:
             parts.append(f"Range [{f.min if f.min is not None else '-inf'}, {f.max if f.max is not None else 'inf'}].")
+        if f.zero_means:
+            parts.append(f"0: {f.zero_means}.")
         if f.type.container == "array":
             parts.append(f"At most {count_limit(schema_set, f).split('.')[-1]} ({schema_set.constants[f.max_count].value if isinstance(f.max_count, str) else f.max_count}).")
         out += doc_lines(" ".join(parts))

@@ -60,7 +60,7 @@ INTEGER_BITS = {"int": 32, "int64": 64, "uint8": 8, "uint16": 16, "uint32": 32, 
 VECTORS = {"vec2", "vec3", "vec2f", "vec3f", "game_vec2"}
 FIELD_KEYS = {
     "type", "doc", "unit", "min", "max", "default", "max_count", "max_length", "nonzero",
-    "finite", "fixed",
+    "finite", "fixed", "zero_means", "gd_bounds",
 }
 
 
@@ -99,6 +99,8 @@ class Field:
     nonzero: bool = False
     finite: bool = True
     fixed: bool = False  # arrays: always max_count items (C++ std::array)
+    zero_means: str = ""  # numbers: 0 is allowed besides [min, max], and means this
+    gd_bounds: bool = False  # numbers: GDScript gets <FIELD>_MIN and <FIELD>_MAX constants
     count_limit_value: int = 0  # arrays: max_count as a number
     min_ref: str = ""  # the constant min or max names ("-MAX_GAIN"), when it names one
     max_ref: str = ""
@@ -137,6 +139,7 @@ class Value:
     realtime: bool
     fields: list
     file: object = None
+    settings: bool = False  # a renderer's or the servo's settings
     _canonical: str = None
 
     def canonical(self):
@@ -229,7 +232,8 @@ def load(root):
         for name, spec in data.get("values", {}).items():
             _unique(schema_set, name, path)
             value = Value(name, spec.get("gd", name), spec.get("doc", "").strip(),
-                          bool(spec.get("realtime", False)), [], sf)
+                          bool(spec.get("realtime", False)), [], sf,
+                          settings=bool(spec.get("settings", False)))
             schema_set.values[name] = value
             sf.values.append(value)
             raw[(path, name)] = spec
@@ -274,7 +278,8 @@ def _field(schema_set, path, value, name, spec):
     f = Field(name, Type(kind, type_name, container, ref), spec.get("doc", "").strip(),
               spec.get("unit", ""), spec.get("min"), spec.get("max"), spec.get("default"),
               spec.get("max_count"), spec.get("max_length", 0), spec.get("nonzero", False),
-              spec.get("finite", True), spec.get("fixed", False))
+              spec.get("finite", True), spec.get("fixed", False), spec.get("zero_means", ""),
+              spec.get("gd_bounds", False))
     for bound in ("min", "max"):
         given = getattr(f, bound)
         if isinstance(given, str):

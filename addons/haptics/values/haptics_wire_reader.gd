@@ -75,21 +75,36 @@ func integer(
 	return value
 
 
-func f64(field: StringName, low: float = -INF, high: float = INF, finite: bool = true) -> float:
+## A binary64 within [param low] and [param high] (or 0 when [param zero_ok]: 0 means a default).
+func f64(
+	field: StringName,
+	low: float = -INF,
+	high: float = INF,
+	finite: bool = true,
+	zero_ok: bool = false
+) -> float:
 	if not _need(8):
 		return 0.0
 	var value: float = _bytes.decode_double(_offset)
 	_offset += 8
-	_check_number(field, value, low, high, finite)
+	if not (zero_ok and value == 0.0):
+		_check_number(field, value, low, high, finite)
 	return value
 
 
-func f32(field: StringName, low: float = -INF, high: float = INF, finite: bool = true) -> float:
+func f32(
+	field: StringName,
+	low: float = -INF,
+	high: float = INF,
+	finite: bool = true,
+	zero_ok: bool = false
+) -> float:
 	if not _need(4):
 		return 0.0
 	var value: float = _bytes.decode_float(_offset)
 	_offset += 4
-	_check_number(field, value, low, high, finite)
+	if not (zero_ok and value == 0.0):
+		_check_number(field, value, low, high, finite)
 	return value
 
 

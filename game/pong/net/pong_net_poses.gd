@@ -49,6 +49,10 @@ func send(snapshot: PongState, seats: PackedInt32Array, leg_ms: int) -> void:
 		_last_centers[-1 - seat] = Vector3(_match.now, 0.0, 0.0)
 		velocity = velocity.limit_length(MAX_SENT_PADDLE_SPEED_M_PER_S)
 		var normal: Vector3 = snapshot.paddle_normals[seat].normalized()
+		if normal.is_zero_approx():
+			# Before the servo's first state (whose normals start at zero): the seat's own
+			# facing, which is what the servo makes of a zero normal too.
+			normal = PongCourt.forward(seat)
 		var flags: int = PongNetRemotePlayer.flags_of(_match.controllers[seat].intent)
 		_wire.send_all(
 			&"_pose", [seat, avatar, offset, velocity, normal, flags, snapshot.time_s, leg_ms]

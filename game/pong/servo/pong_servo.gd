@@ -239,6 +239,14 @@ func _effect_refusal(
 		return "owner must be 0..%d on this court (got %d)" % [count - 1, owner]
 	if kind == "remote" and owner == player:
 		return "a remote effect's owner must be another player than %d" % player
+	return _effect_value_refusal(kind, magnitude_n, duration_s, direction)
+
+
+# Why the servo would refuse an effect's direction, strength or duration ("" when it would
+# not).
+func _effect_value_refusal(
+	kind: String, magnitude_n: float, duration_s: float, direction: Vector3
+) -> String:
 	var directed: bool = kind == "recoil" or kind == "hit"
 	if directed and (direction.is_zero_approx() or not direction.is_finite()):
 		return "a %s needs a direction (got %s)" % [kind, direction]

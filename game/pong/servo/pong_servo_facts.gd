@@ -3,10 +3,9 @@
 # (make lint checks that it is current). The wire format: docs/values.md.
 class_name PongServoFacts
 extends RefCounted
-## Haptic Battle Pong's renderer: the ball and every paddle simulated in the servo at 1 kHz. The
-## game hands it a PongInput every frame and PongCommands when something happens, and reads
-## PongState and PongEventBatch back. World space is Godot's 3D world (metres, y up); hand forces
-## are the device player's device space (x right, y up, z toward the user).
+## Haptic Battle Pong's renderer: the ball and every paddle simulated in the servo at 1 kHz. Its
+## constants and enums; its messages and state are in pong_messages.schema.toml and
+## pong_state.schema.toml.
 
 ## Its force components, in their order in HapticForces.parts (and PongHandForce's).
 enum PongForce { CONTACT, SPIN, EFFECTS }

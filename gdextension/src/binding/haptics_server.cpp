@@ -3,13 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
-#include "binding/config_dictionary.h"
 #include "binding/log.h"
 #include "binding/version.h"
 #include "binding/wire_values.h"
 #include "core/base/coordinates.h"
 #include "core/servo/telemetry.h"
-#include "system/config_table.h"
+#include "system/settings_validation.h"
 #include "system/device_factory.h"
 #include "system/renderer_registry.h"
 
@@ -63,38 +62,12 @@ void HapticsServer::bind_methods(gd::ClassBinder<HapticsServer> &r_binder) {
 	r_binder.bind_method("get_render_mode", &S::get_render_mode);
 	r_binder.bind_method("renderer_send", &S::renderer_send, { "mode", "message" });
 	r_binder.bind_method("renderer_read", &S::renderer_read, { "mode", "value_id" });
-	r_binder.bind_method("set_config", &S::set_config, { "section", "values" });
-	r_binder.bind_method("get_config", &S::get_config);
-	r_binder.bind_method("get_config_fields", &S::get_config_fields);
+	r_binder.bind_method("get_servo_settings", &S::get_servo_settings);
+	r_binder.bind_method("set_servo_settings", &S::set_servo_settings, { "settings" });
+	r_binder.bind_method("get_renderer_settings", &S::get_renderer_settings, { "mode" });
+	r_binder.bind_method("set_renderer_settings", &S::set_renderer_settings, { "mode", "settings" });
 	r_binder.bind_method("get_version", &S::get_version);
 
-	r_binder.bind_constant("", "MAX_CONTACTS", static_cast<int64_t>(MAX_CONTACTS));
-	r_binder.bind_constant("", "MAX_RESTING_OBJECTS", static_cast<int64_t>(MAX_RESTING_OBJECTS));
-	r_binder.bind_constant("", "MIN_RATE_HZ", static_cast<int64_t>(MIN_RATE_HZ));
-	r_binder.bind_constant("", "MAX_RATE_HZ", static_cast<int64_t>(MAX_RATE_HZ));
-	r_binder.bind_constant("", "DEFAULT_RATE_HZ", static_cast<int64_t>(DEFAULT_RATE_HZ));
-	static_assert(ServoOptions::DEFAULT_SPIN_NS % NS_PER_US == 0, "DEFAULT_SPIN_US is an integer constant");
-	r_binder.bind_constant("", "DEFAULT_SPIN_US", ServoOptions::DEFAULT_SPIN_NS / NS_PER_US);
-	static_assert(ServoOptions::UNHELD_SPIN_NS % NS_PER_US == 0, "UNHELD_SPIN_US is an integer constant");
-	r_binder.bind_constant("", "UNHELD_SPIN_US", ServoOptions::UNHELD_SPIN_NS / NS_PER_US);
-	r_binder.bind_constant("", "TELEMETRY_QUEUE_CAPACITY", static_cast<int64_t>(TELEMETRY_QUEUE_CAPACITY));
-	for (size_t mode = 0; mode < registered_renderers().size(); ++mode) {
-		r_binder.bind_constant("RenderMode", registered_renderers()[mode].mode_constant, static_cast<int64_t>(mode));
-	}
-	r_binder.bind_constant("ProxyUpdate", "PROXY_UPDATE_SERVO_RATE", static_cast<int64_t>(ProxyUpdate::SERVO_RATE));
-	r_binder.bind_constant("ProxyUpdate", "PROXY_UPDATE_FRAME_RATE", static_cast<int64_t>(ProxyUpdate::FRAME_RATE));
-	r_binder.bind_constant("ContactModel", "CONTACT_MODEL_PER_CONTACT", static_cast<int64_t>(ContactModel::PER_CONTACT));
-	r_binder.bind_constant("ContactModel", "CONTACT_MODEL_PAPER_SUM", static_cast<int64_t>(ContactModel::PAPER_SUM));
-	r_binder.bind_constant("WorkspaceShape", "WORKSPACE_DISC", static_cast<int64_t>(WorkspaceShape::DISC));
-	r_binder.bind_constant("WorkspaceShape", "WORKSPACE_SQUARE", static_cast<int64_t>(WorkspaceShape::SQUARE));
-	for (const TelemetryFlagName &flag : servo_telemetry_flags()) {
-		r_binder.bind_constant("TelemetryFlag", flag.name, static_cast<int64_t>(flag.flag), true);
-	}
-	for (const RegisteredRenderer &renderer : registered_renderers()) {
-		for (const TelemetryFlagName &flag : renderer.info->telemetry_flags) {
-			r_binder.bind_constant("TelemetryFlag", flag.name, static_cast<int64_t>(flag.flag), true);
-		}
-	}
 }
 
 bool HapticsServer::report(const char *p_method, const Status &p_status) const {
@@ -143,7 +116,11 @@ std::string HapticsServer::get_servo_status() const {
 
 bool HapticsServer::submit_frame(const gd::PackedByteArray &p_frame) {
 	Frame frame;
-	return decode_argument("submit_frame", p_frame, frame) && report("submit_frame", system_.submit_frame(frame));
+	if (!decode_argument("submit_frame", p_frame, frame)) {
+		system_.count_rejected_frame();
+		return false;
+	}
+	return report("submit_frame", system_.submit_frame(frame));
 }
 
 bool HapticsServer::push_impact(const gd::PackedByteArray &p_impact) {
@@ -214,24 +191,35 @@ gd::PackedStringArray HapticsServer::get_renderer_names() const {
 	return names;
 }
 
-bool HapticsServer::set_config(const std::string &p_section, const gd::Dictionary &p_values) {
-	std::string known;
-	bool found = false;
-	for (const char *section : config_sections()) {
-		found = found || p_section == section;
-		known += (known.empty() ? "" : ", ") + std::string(section);
-	}
-	if (!found) {
-		HAPTICS_ERROR("set_config: unknown section '" + p_section + "' (known: " + known + ")");
-		return false;
-	}
+gd::PackedByteArray HapticsServer::get_servo_settings() const {
+	return encode_result(static_cast<const ServoSettings &>(system_.config().servo));
+}
+
+bool HapticsServer::set_servo_settings(const gd::PackedByteArray &p_settings) {
 	RenderConfig config = system_.config();
-	std::string error;
-	if (!apply_config_section(p_section, p_values, config, error)) {
-		HAPTICS_ERROR("set_config: " + error + "; the previous settings stay in force.");
+	ServoSettings &settings = config.servo;
+	return decode_argument("set_servo_settings", p_settings, settings) &&
+			report("set_servo_settings", system_.configure(config));
+}
+
+gd::PackedByteArray HapticsServer::get_renderer_settings(int64_t p_mode) const {
+	gd::PackedByteArray out;
+	const RenderConfig &config = system_.config();
+	if (!visit_renderer_settings(config, p_mode, [&](const auto &p_settings) { out = encode_result(p_settings); })) {
+		HAPTICS_ERROR("get_renderer_settings: no renderer has mode " + std::to_string(p_mode));
+	}
+	return out;
+}
+
+bool HapticsServer::set_renderer_settings(int64_t p_mode, const gd::PackedByteArray &p_settings) {
+	RenderConfig config = system_.config();
+	bool decoded = false;
+	if (!visit_renderer_settings(config, p_mode,
+				[&](auto &r_settings) { decoded = decode_argument("set_renderer_settings", p_settings, r_settings); })) {
+		HAPTICS_ERROR("set_renderer_settings: no renderer has mode " + std::to_string(p_mode));
 		return false;
 	}
-	return report("set_config", system_.configure(config));
+	return decoded && report("set_renderer_settings", system_.configure(config));
 }
 
 bool HapticsServer::set_render_mode(int64_t p_mode) {
@@ -278,14 +266,6 @@ gd::PackedByteArray HapticsServer::renderer_read(int64_t p_mode, int64_t p_value
 		return gd::PackedByteArray();
 	}
 	return to_packed(bytes);
-}
-
-gd::Dictionary HapticsServer::get_config() const {
-	return config_to_dictionary(system_.config());
-}
-
-gd::Array HapticsServer::get_config_fields() const {
-	return config_fields_to_array();
 }
 
 std::string HapticsServer::get_version() const {

@@ -92,12 +92,13 @@ public:
 	// gives no such value.
 	gd::PackedByteArray renderer_read(int64_t p_mode, int64_t p_value_id);
 
-	// --- Configuration --- by section (system/config_table.h); only the keys given change.
-	// get_config() returns every section with every key, get_config_fields() the table
-	// itself (kinds, ranges, units, defaults).
-	bool set_config(const std::string &p_section, const gd::Dictionary &p_values);
-	gd::Dictionary get_config() const;
-	gd::Array get_config_fields() const;
+	// --- Settings --- (HapticServoSettings; each renderer's own, e.g. HapticMovementSettings)
+	// Whole values: read, change a copy, hand it back; a refused one is reported by field and
+	// changes nothing (any time, also while rendering).
+	gd::PackedByteArray get_servo_settings() const;
+	bool set_servo_settings(const gd::PackedByteArray &p_settings);
+	gd::PackedByteArray get_renderer_settings(int64_t p_mode) const;
+	bool set_renderer_settings(int64_t p_mode, const gd::PackedByteArray &p_settings);
 
 	std::string get_version() const;
 

@@ -1,7 +1,7 @@
 #include "system/haptics_system.h"
 
 #include "core/wire/codec.h"
-#include "system/config_table.h"
+#include "system/settings_validation.h"
 
 #include <cstring>
 #include <utility>
@@ -239,6 +239,10 @@ Status HapticsSystem::submit_frame(const Frame &p_frame) {
 	// At 50 Hz: frees what the servo has replaced (walls), so the next swap is never held up.
 	impl_->collect();
 	return Status::success();
+}
+
+void HapticsSystem::count_rejected_frame() {
+	++impl_->frames_rejected;
 }
 
 Status HapticsSystem::push_impact(const ImpactEvent &p_event) {

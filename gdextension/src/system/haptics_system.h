@@ -92,6 +92,8 @@ public:
 	// The latest frame; validated, then published lock-free. Rejected frames are counted in
 	// stats().frames_rejected and the previous frame stays in force.
 	Status submit_frame(const Frame &p_frame);
+	// A frame refused before it was one (bytes that did not decode): counted with the rest.
+	void count_rejected_frame();
 	// Queues an impact transient. A full queue is not an error: the drop is counted in
 	// stats().transient_drops and OK is returned.
 	Status push_impact(const ImpactEvent &p_event);

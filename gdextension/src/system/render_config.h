@@ -2,7 +2,7 @@
 
 // Everything the game configures, as one value: the servo's own settings and each
 // renderer's, under the renderer's name (renderer_table.h). HapticsSystem::configure()
-// validates it whole (config_table.h) and hands each part to the servo on its own channel. To
+// validates it whole (settings_validation.h) and hands each part to the servo on its own channel. To
 // change one field:
 //   RenderConfig config = system.config();  config.pong.gravity_m_per_s2 = 4.0;
 //   system.configure(config);
@@ -31,6 +31,22 @@ struct RenderMode {
 	enum : int32_t { HAPTICS_RENDERERS(HAPTICS_MODE_OF) };
 #undef HAPTICS_MODE_OF
 };
+
+// Calls p_visit with r_config's settings of the renderer with p_mode (its Config); false, and
+// no call, for a mode the table has not.
+template <typename Config, typename F>
+bool visit_renderer_settings(Config &r_config, int64_t p_mode, F &&p_visit) {
+	int64_t mode = 0;
+	bool found = false;
+#define HAPTICS_VISIT_OF(MODE, name, Class) \
+	if (mode++ == p_mode) { \
+		found = true; \
+		p_visit(r_config.name); \
+	}
+	HAPTICS_RENDERERS(HAPTICS_VISIT_OF)
+#undef HAPTICS_VISIT_OF
+	return found;
+}
 
 #define HAPTICS_COUNT_ONE(MODE, name, Class) +1
 inline constexpr size_t RENDER_MODE_COUNT = 0 HAPTICS_RENDERERS(HAPTICS_COUNT_ONE);

@@ -8,7 +8,7 @@
 #include "core/servo/telemetry.h"
 #include "renderers/pong/pong_port.h"
 #include "renderers/pong/pong_renderer.h"
-#include "system/config_table.h"
+#include "system/settings_validation.h"
 #include "system/haptics_system.h"
 #include "system_config.h"
 
@@ -308,15 +308,15 @@ TEST_CASE("pong system: the pong config section validates its joint limits by na
 	config.pong.beginner_height_m = 2.45; // The ball would poke through the 2.5 m ceiling.
 	Status status = validate_render_config(config);
 	CHECK(status.code() == StatusCode::OUT_OF_RANGE);
-	CHECK(mentions(status, "pong.beginner_height_m"));
+	CHECK(mentions(status, "PongSettings.beginner_height_m"));
 	config = RenderConfig{};
 	config.pong.ball_stiffness_n_per_m = 3000.0;
 	config.pong.ball_mass_kg = 0.01;
-	CHECK(mentions(validate_render_config(config), "pong.ball_stiffness_n_per_m"));
+	CHECK(mentions(validate_render_config(config), "PongSettings.ball_stiffness_n_per_m"));
 	config = RenderConfig{};
 	config.pong.beginner_target_half_width_m = 1.0;
 	config.pong.court_half_width_m = 0.8;
-	CHECK(mentions(validate_render_config(config), "pong.beginner_target_half_width_m"));
+	CHECK(mentions(validate_render_config(config), "PongSettings.beginner_target_half_width_m"));
 	HapticsSystem system;
 	const RenderConfig before = system.config();
 	CHECK_FALSE(reconfigure(system, [](RenderConfig &r_config) { r_config.pong.beginner_height_m = 2.45; }));

@@ -64,12 +64,11 @@ func _process(delta: float) -> void:
 		attack(_cli.net.play)
 
 
-func _on_event(event: Dictionary) -> void:
+func _on_event(event: PongEvent) -> void:
 	var play: PongNetPlay = _cli.net.play
-	if str(event.get("type", "")) != "paddle" or not play.authority.is_master():
+	if event.type != PongServoFacts.PongEventType.PADDLE or not play.authority.is_master():
 		return
-	var seat: int = event.get("player", -1)
-	if seat == _cli.net.my_seat() and _match_clock > MARK_AFTER_S:
+	if event.player == _cli.net.my_seat() and _match_clock > MARK_AFTER_S:
 		print("%s (match second %.2f)" % [HIT_MARK, _match_clock])
 
 

@@ -15,6 +15,11 @@ enum ConstraintForce { WALL }
 ## travel per maze unit, but the corners outside a spherical workspace's equator).
 enum WorkspaceShape { DISC, SQUARE }
 
+## When the proxy moves. servo: every servo tick (1 kHz), the product. frame: only on ticks that
+## pick up a new frame (50 Hz), as in the paper's study; between frames it is held and the force
+## still follows the device at the servo rate.
+enum ProxyUpdate { SERVO, FRAME }
+
 ## Telemetry flag: the constraint renderer is the active one.
 const TELEMETRY_FLAG_CONSTRAINT_MODE: int = 128
 
@@ -24,8 +29,14 @@ const TELEMETRY_FLAG_PROXY_CONTACT: int = 256
 ## The most wall end points one geometry holds: two a wall.
 const MAX_CONSTRAINT_POINTS: int = 524288
 
+## The most sweeps a proxy update may take.
+const MAX_PROXY_ITERATIONS: int = 16
+
 ## The names of [enum ConstraintForce]'s values, in order.
 const CONSTRAINT_FORCE_NAMES: PackedStringArray = ["wall"]
 
 ## The names of [enum WorkspaceShape]'s values, in order.
 const WORKSPACE_SHAPE_NAMES: PackedStringArray = ["disc", "square"]
+
+## The names of [enum ProxyUpdate]'s values, in order.
+const PROXY_UPDATE_NAMES: PackedStringArray = ["servo", "frame"]

@@ -8,5 +8,17 @@ extends RefCounted
 ## Its force components, in their order in HapticForces.parts: F_n, F_f, W, F_d, F_w.
 enum MovementForce { NORMAL, FRICTION, WEIGHT, DRAG, INERTIA }
 
+## How several contacts become one normal force and friction (force_model.h has the equations of
+## both). per_contact: each contact pushes back only against the part of the input pressing into it,
+## with its own material: a floor and a wall give exactly the wall's push-back for a horizontal
+## push, and pulling away from a contact gives no force; the default, for games. paper_sum: the
+## paper's literal model: one normal, the normalised sum of the contact normals, and F_n = -k p
+## whatever the sign of p (it pulls toward a contact the input points away from); for replicating
+## the paper.
+enum ContactModel { PER_CONTACT, PAPER_SUM }
+
 ## The names of [enum MovementForce]'s values, in order.
 const MOVEMENT_FORCE_NAMES: PackedStringArray = ["normal", "friction", "weight", "drag", "inertia"]
+
+## The names of [enum ContactModel]'s values, in order.
+const CONTACT_MODEL_NAMES: PackedStringArray = ["per_contact", "paper_sum"]

@@ -25,6 +25,7 @@ struct FieldSpec {
 	uint32_t max_count = 0; // Arrays: items; strings: bytes.
 	bool nonzero = false; // Vectors: must carry a direction.
 	bool finite = true; // Floats and vectors: NaN and infinities are refused.
+	bool zero_allowed = false; // Numbers: 0 is accepted besides [min, max] (it means a default).
 };
 
 // Generated for every schema enum: how many values it has and their names, in order.

@@ -4,7 +4,6 @@
 // describes itself once (its static info()); the engine's renderer table
 // (system/renderer_table.h) names it and gives its render mode.
 
-#include "core/config/config_field.h"
 #include "core/render/force_components.h"
 
 #include <cstdint>
@@ -25,8 +24,6 @@ struct RendererInfo {
 	// What get_forces() calls ForceComponents::parts while this renderer is active, in order;
 	// at most MAX_FORCE_PARTS.
 	std::span<const char *const> force_names;
-	// Its rows of the configuration table, on its Config struct.
-	std::span<const ConfigField> config_fields;
 	std::span<const TelemetryFlagName> telemetry_flags;
 };
 

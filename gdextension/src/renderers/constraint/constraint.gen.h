@@ -21,6 +21,9 @@ inline constexpr uint32_t TELEMETRY_FLAG_PROXY_CONTACT = 256u;
 // The most wall end points one geometry holds: two a wall.
 inline constexpr size_t MAX_CONSTRAINT_POINTS = 524288;
 
+// The most sweeps a proxy update may take.
+inline constexpr uint32_t MAX_PROXY_ITERATIONS = 16u;
+
 // Its one force component, the walls' push on the hand, k_c (proxy - device): the first of
 // HapticForces.parts.
 enum ConstraintForce : size_t {
@@ -48,6 +51,20 @@ template <>
 struct EnumInfo<WorkspaceShape> {
 	static constexpr uint32_t COUNT = 2;
 	static constexpr const char *const *NAMES = WORKSPACE_SHAPE_NAMES;
+};
+
+// When the proxy moves. servo: every servo tick (1 kHz), the product. frame: only on ticks that
+// pick up a new frame (50 Hz), as in the paper's study; between frames it is held and the force
+// still follows the device at the servo rate.
+enum class ProxyUpdate : int32_t {
+	SERVO = 0,
+	FRAME = 1,
+};
+inline constexpr const char *PROXY_UPDATE_NAMES[] = { "servo", "frame" };
+template <>
+struct EnumInfo<ProxyUpdate> {
+	static constexpr uint32_t COUNT = 2;
+	static constexpr const char *const *NAMES = PROXY_UPDATE_NAMES;
 };
 
 // How a maze maps onto the device's workspace for the constraint renderer: the maze rectangle,
@@ -138,5 +155,32 @@ struct ProxyState {
 	}
 };
 static_assert(std::is_trivially_copyable_v<ProxyState>);
+
+// The constraint renderer's settings.
+struct ConstraintConfig {
+	static constexpr uint32_t SCHEMA_ID = 0xc43af34au;
+	static constexpr const char *NAME = "HapticConstraintSettings";
+
+	// k_c. Keep it at or below the device's max_stiffness_n_per_m (the force is clamped by the
+	// safety stage either way). Unit: N/m. Range [0.0, 5000.0].
+	double stiffness_n_per_m{ 300.0 };
+	// Radius of the proxy disc in MAZE units (the avatar's collision radius). Changing it
+	// re-places the proxy (see FiniteProxy::reset). Unit: maze units. Range [1e-06, 1000000.0].
+	double proxy_radius{ 8.0 };
+	// When the proxy moves.
+	ProxyUpdate update{ ProxyUpdate::SERVO };
+	// Sweeps per proxy update: a corner needs 2-3, a dead end 3-4. Range [1.0, 16].
+	uint32_t max_iterations{ 6 };
+
+	// Every field with its schema limits, in wire order (core/wire/codec.h walks them).
+	template <typename Self, typename Visitor>
+	static void visit(Self &r_self, Visitor &&r_visitor) {
+		r_visitor(FieldSpec{ .name = "stiffness_n_per_m", .min = 0.0, .max = 5000.0 }, r_self.stiffness_n_per_m);
+		r_visitor(FieldSpec{ .name = "proxy_radius", .min = 1e-06, .max = 1000000.0 }, r_self.proxy_radius);
+		r_visitor(FieldSpec{ .name = "update" }, r_self.update);
+		r_visitor(FieldSpec{ .name = "max_iterations", .min = 1.0, .max = MAX_PROXY_ITERATIONS }, r_self.max_iterations);
+	}
+};
+static_assert(std::is_trivially_copyable_v<ConstraintConfig>);
 
 } // namespace haptics

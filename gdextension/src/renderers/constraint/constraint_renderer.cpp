@@ -14,7 +14,7 @@ constexpr TelemetryFlagName FLAGS[] = {
 } // namespace
 
 const RendererInfo &ConstraintRenderer::info() {
-	static const RendererInfo INFO{ CONSTRAINT_FORCE_NAMES, constraint_config_fields(), FLAGS };
+	static const RendererInfo INFO{ CONSTRAINT_FORCE_NAMES, FLAGS };
 	return INFO;
 }
 
@@ -45,7 +45,7 @@ void ConstraintRenderer::pick_up() {
 
 void ConstraintRenderer::render(const RenderInput &p_input, RenderResult &r_result) {
 	const GeometryExchange::Current geometry = channels_.geometry.current();
-	const bool step = config_.update == ProxyUpdate::SERVO_RATE || p_input.new_frame;
+	const bool step = config_.update == ProxyUpdate::SERVO || p_input.new_frame;
 	last_ = solver_.render(geometry.geometry, geometry.generation, p_input.device.position_m, p_input.device_radius_m,
 			step);
 	updates_ += last_.stepped ? 1 : 0;

@@ -44,8 +44,6 @@ namespace haptics {
 // TELEMETRY_FLAG_PROXY_CONTACT, constraint.schema.toml.
 static_assert(TELEMETRY_FLAG_CONSTRAINT_MODE >= (1u << FIRST_RENDERER_FLAG_BIT));
 
-// Its rows of the configuration table (constraint_config_fields.cpp).
-std::span<const ConfigField> constraint_config_fields();
 
 class ConstraintRenderer final : public Renderer {
 public:

@@ -31,7 +31,7 @@ public:
 	void reset();
 	void configure(const ConstraintConfig &p_config);
 	// p_geometry: what the servo holds now (null before any was set: no force).
-	// p_step_proxy: false holds the proxy where it is (the FRAME_RATE variant between
+	// p_step_proxy: false holds the proxy where it is (the FRAME variant between
 	// frames); the force still follows the device. p_device_radius_m resolves a mapping
 	// whose half extent is 0.
 	ConstraintOutput render(const ConstraintGeometry *p_geometry, uint64_t p_generation, const Vec3 &p_device_m,

@@ -32,13 +32,14 @@
 // No allocation: constraints are a fixed array; the broad phase needs no scratch.
 
 #include "core/base/vec2.h"
+#include "renderers/constraint/constraint.gen.h"
 #include "renderers/constraint/constraint_geometry.h"
 
 #include <cstdint>
 
 namespace haptics {
 
-inline constexpr uint32_t MAX_PROXY_ITERATIONS = 16;
+// MAX_PROXY_ITERATIONS: constraint.schema.toml.
 // Proxy skin (rest distance outside a wall) as a fraction of the radius.
 inline constexpr double PROXY_SKIN = 1e-6;
 

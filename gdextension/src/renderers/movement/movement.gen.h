@@ -3,9 +3,11 @@
 #pragma once
 
 #include "core/base/field_spec.h"
+#include "core/render/frame.gen.h"
 
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 
 namespace haptics {
 
@@ -24,5 +26,93 @@ struct EnumInfo<MovementForce> {
 	static constexpr uint32_t COUNT = 5;
 	static constexpr const char *const *NAMES = MOVEMENT_FORCE_NAMES;
 };
+
+// How several contacts become one normal force and friction (force_model.h has the equations of
+// both). per_contact: each contact pushes back only against the part of the input pressing into
+// it, with its own material: a floor and a wall give exactly the wall's push-back for a
+// horizontal push, and pulling away from a contact gives no force; the default, for games.
+// paper_sum: the paper's literal model: one normal, the normalised sum of the contact normals,
+// and F_n = -k p whatever the sign of p (it pulls toward a contact the input points away from);
+// for replicating the paper.
+enum class ContactModel : int32_t {
+	PER_CONTACT = 0,
+	PAPER_SUM = 1,
+};
+inline constexpr const char *CONTACT_MODEL_NAMES[] = { "per_contact", "paper_sum" };
+template <>
+struct EnumInfo<ContactModel> {
+	static constexpr uint32_t COUNT = 2;
+	static constexpr const char *const *NAMES = CONTACT_MODEL_NAMES;
+};
+
+// The movement renderer's contact law.
+struct ForceModelConfig {
+	static constexpr uint32_t SCHEMA_ID = 0x01e44f77u;
+	static constexpr const char *NAME = "HapticForceModelSettings";
+
+	// "g" of W = m g (n.d) d. Not Earth's 9.81: it is the gain from the game's masses to felt
+	// weight, and 9.81 would saturate a 3.3 N device with a 1 kg crate. Unit: N/kg. Range [0.0,
+	// 100.0].
+	double gravity_n_per_kg{ 1.0 };
+	// How several contacts combine.
+	ContactModel contact_model{ ContactModel::PER_CONTACT };
+	// PER_CONTACT only: a contact's friction fades in linearly while the input presses into the
+	// contacts by less than this (input units), and is the paper's -b r from there on. Without it
+	// friction would jump from 0 to b |r| as the hand crosses a floor's plane. 0 switches friction
+	// fully on at any pressing. Range [0.0, 0.5].
+	double friction_engage{ 0.05 };
+	// For contacts without a material.
+	ContactMaterial default_contact{};
+
+	// Every field with its schema limits, in wire order (core/wire/codec.h walks them).
+	template <typename Self, typename Visitor>
+	static void visit(Self &r_self, Visitor &&r_visitor) {
+		r_visitor(FieldSpec{ .name = "gravity_n_per_kg", .min = 0.0, .max = 100.0 }, r_self.gravity_n_per_kg);
+		r_visitor(FieldSpec{ .name = "contact_model" }, r_self.contact_model);
+		r_visitor(FieldSpec{ .name = "friction_engage", .min = 0.0, .max = 0.5 }, r_self.friction_engage);
+		r_visitor(FieldSpec{ .name = "default_contact" }, r_self.default_contact);
+	}
+};
+static_assert(std::is_trivially_copyable_v<ForceModelConfig>);
+
+// The low-pass filter from 50 Hz frames to the 1 kHz output.
+struct SmoothingConfig {
+	static constexpr uint32_t SCHEMA_ID = 0x0db01350u;
+	static constexpr const char *NAME = "HapticSmoothingSettings";
+
+	// Off, the continuous sum goes straight through (the 50 Hz staircase is felt). On, a 2nd-order
+	// Butterworth low-pass (smoothing_filter.h says why that filter).
+	bool enabled{ true };
+	// The filter's cutoff. Unit: Hz. Range [0.5, 60.0].
+	double cutoff_hz{ 13.0 };
+
+	// Every field with its schema limits, in wire order (core/wire/codec.h walks them).
+	template <typename Self, typename Visitor>
+	static void visit(Self &r_self, Visitor &&r_visitor) {
+		r_visitor(FieldSpec{ .name = "enabled" }, r_self.enabled);
+		r_visitor(FieldSpec{ .name = "cutoff_hz", .min = 0.5, .max = 60.0 }, r_self.cutoff_hz);
+	}
+};
+static_assert(std::is_trivially_copyable_v<SmoothingConfig>);
+
+// The movement renderer's settings (HapticsRenderer.get_settings / apply_settings of
+// Haptics.renderer(&"movement")).
+struct MovementConfig {
+	static constexpr uint32_t SCHEMA_ID = 0xe989661eu;
+	static constexpr const char *NAME = "HapticMovementSettings";
+
+	// The contact law.
+	ForceModelConfig force_model{};
+	// The output filter.
+	SmoothingConfig smoothing{};
+
+	// Every field with its schema limits, in wire order (core/wire/codec.h walks them).
+	template <typename Self, typename Visitor>
+	static void visit(Self &r_self, Visitor &&r_visitor) {
+		r_visitor(FieldSpec{ .name = "force_model" }, r_self.force_model);
+		r_visitor(FieldSpec{ .name = "smoothing" }, r_self.smoothing);
+	}
+};
+static_assert(std::is_trivially_copyable_v<MovementConfig>);
 
 } // namespace haptics

@@ -5,7 +5,7 @@
 namespace haptics {
 
 const RendererInfo &MovementRenderer::info() {
-	static const RendererInfo INFO{ MOVEMENT_FORCE_NAMES, movement_config_fields(), {} };
+	static const RendererInfo INFO{ MOVEMENT_FORCE_NAMES, {} };
 	return INFO;
 }
 

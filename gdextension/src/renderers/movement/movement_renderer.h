@@ -22,8 +22,6 @@ struct MovementChannels : RendererChannels {
 	Seqlock<MovementConfig> settings; // Game -> servo.
 };
 
-// Its rows of the configuration table (movement_config_fields.cpp).
-std::span<const ConfigField> movement_config_fields();
 
 class MovementRenderer final : public Renderer {
 public:

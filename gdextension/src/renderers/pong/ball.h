@@ -23,6 +23,7 @@
 
 #include "core/base/vec3.h"
 #include "renderers/pong/court.h"
+#include "renderers/pong/pong_state.gen.h"
 #include "renderers/pong/pong_config.h"
 
 namespace haptics {
@@ -31,7 +32,7 @@ namespace haptics {
 // what friction takes out of a slip before the ball rolls (walls, floor, paddles).
 inline constexpr double ROLLING_SHARE = 2.0 / 7.0;
 
-// BallState: pong.schema.toml.
+// BallState: pong_state.schema.toml.
 
 // p_v shortened by p_decrease (>= 0), to zero at most; the direction is kept.
 Vec3 decrease_length(const Vec3 &p_v, double p_decrease);

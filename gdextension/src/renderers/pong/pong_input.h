@@ -1,7 +1,7 @@
 #pragma once
 
 // What the game hands the Pong servo (game -> servo), in world space unless named
-// (pong.schema.toml defines the values):
+// (pong_messages.schema.toml defines the values):
 //   PongInput    the latest paddles and modes, every frame, through a seqlock;
 //   PongCommand  one-off orders (serve or correct the ball, start or clear an effect),
 //                through an SPSC queue.
@@ -9,7 +9,7 @@
 
 #include "core/base/vec3.h"
 #include "renderers/pong/court.h"
-#include "renderers/pong/pong.gen.h"
+#include "renderers/pong/pong_messages.gen.h"
 
 #include <cstdint>
 #include <type_traits>

@@ -17,7 +17,7 @@ constexpr TelemetryFlagName FLAGS[] = {
 } // namespace
 
 const RendererInfo &PongRenderer::info() {
-	static const RendererInfo INFO{ PONG_FORCE_NAMES, pong_config_fields(), FLAGS };
+	static const RendererInfo INFO{ PONG_FORCE_NAMES, FLAGS };
 	return INFO;
 }
 

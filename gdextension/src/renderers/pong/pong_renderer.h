@@ -43,9 +43,6 @@ namespace haptics {
 // telemetry flags (TELEMETRY_FLAG_PONG_MODE, TELEMETRY_FLAG_PADDLE_CONTACT): pong.schema.toml.
 static_assert(TELEMETRY_FLAG_PONG_MODE >= (1u << FIRST_RENDERER_FLAG_BIT));
 
-// Its rows of the configuration table (pong_config_fields.cpp).
-std::span<const ConfigField> pong_config_fields();
-
 class PongRenderer final : public Renderer {
 public:
 	using Config = PongConfig;

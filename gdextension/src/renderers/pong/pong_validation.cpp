@@ -67,19 +67,19 @@ Status validate_pong_command(const PongCommand &p_command, const PongConfig &p_c
 Status validate_pong_config(const PongConfig &p_config) {
 	if (!valid_player_count(p_config.players)) {
 		return Status::error(StatusCode::OUT_OF_RANGE,
-				"pong.players must be 2 (a rectangular court) or 4 (a square court); got %d", p_config.players);
+				"PongSettings.players must be 2 (a rectangular court) or 4 (a square court); got %d", p_config.players);
 	}
 	const double r = p_config.ball_radius_m;
 	const double top = p_config.wall_height_m - r;
 	if (p_config.beginner_height_m < r || p_config.beginner_height_m > top) {
 		return Status::error(StatusCode::OUT_OF_RANGE,
-				"pong.beginner_height_m must keep the ball inside the court: in [%g, %g] for ball_radius_m %g and "
+				"PongSettings.beginner_height_m must keep the ball inside the court: in [%g, %g] for ball_radius_m %g and "
 				"wall_height_m %g (got %g)",
 				r, top, r, p_config.wall_height_m, p_config.beginner_height_m);
 	}
 	if (p_config.beginner_target_half_width_m > court_half_x(p_config)) {
 		return Status::error(StatusCode::OUT_OF_RANGE,
-				"pong.beginner_target_half_width_m must fit the back wall: <= court_half_width_m %g (got %g)",
+				"PongSettings.beginner_target_half_width_m must fit the back wall: <= court_half_width_m %g (got %g)",
 				court_half_x(p_config), p_config.beginner_target_half_width_m);
 	}
 	// Semi-implicit Euler resolves the contact spring while omega_n dt stays well below its
@@ -87,7 +87,7 @@ Status validate_pong_config(const PongConfig &p_config) {
 	const double omega = std::sqrt(p_config.ball_stiffness_n_per_m / p_config.ball_mass_kg);
 	if (omega > MIN_RATE_HZ) {
 		return Status::error(StatusCode::OUT_OF_RANGE,
-				"pong.ball_stiffness_n_per_m %g on a %g kg ball rings at %g rad/s, faster than the slowest servo "
+				"PongSettings.ball_stiffness_n_per_m %g on a %g kg ball rings at %g rad/s, faster than the slowest servo "
 				"resolves (%g rad/s): lower it or make the ball heavier",
 				p_config.ball_stiffness_n_per_m, p_config.ball_mass_kg, omega, MIN_RATE_HZ);
 	}
