@@ -2,7 +2,7 @@
 """Checks that GDScript and the native library meet at one typed boundary, and prints the
 counts the issue asks for:
 
-- the native methods (HapticsServer's, as its header declares them) that take or return a
+- the native methods (HapticsSystem's, as its header declares them) that take or return a
   Dictionary or an untyped Array: at most MAX_MAPS, each a documented diagnostic report;
 - calls by name (`.call(&"...")`, `.callv(`) in the addon and the games: none may reach the
   native server, and the one script that names it (the door's native backend) has none;

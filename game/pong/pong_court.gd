@@ -2,13 +2,13 @@ class_name PongCourt
 extends RefCounted
 ## The court of Haptic Battle Pong as the game sees it. Everything the servo simulates
 ## (court size, ball, gravity, restitution, beginner plane, targets, effect strengths) is
-## read once from the servo's configuration ([code]PongServo.shared().get_config()[/code], the
-## [code]"pong"[/code] section) and never repeated here; the game-side geometry that only
-## the game uses (avatar body, mines) is defined here, once.
+## read once from the Pong renderer's settings ([code]PongServo.shared().get_settings()[/code],
+## a [PongSettings]) and never repeated here; the game-side geometry that only the game uses
+## (avatar body, mines) is defined here, once.
 ##
 ## World: metres, y up, floor y = 0, x in [-W, W], z in [-L, L]. Player 0 ("near") owns
 ## z >= 0, player 1 ("far") z < 0. With four players ([member players], the servo's
-## [code]pong.players[/code]) the court is square (W = L), player 2 sits at +x and player 3
+## [member PongSettings.players]) the court is square (W = L), player 2 sits at +x and player 3
 ## at -x, each side is its player's back wall and the territories are split by the
 ## diagonals (the servo's court.h; ties on a diagonal go to players 0 and 1).
 
@@ -41,42 +41,31 @@ var workspace_scale: float = 1.0
 var beginner_height: float = 0.0
 ## Half the width of the target on each back wall (beginner mode), metres.
 var target_half_width: float = 0.0
-## The configuration section read, for the effect strengths and durations.
-var config: Dictionary = {}
+## The settings read, for the effect strengths and durations.
+var settings: PongSettings = PongSettings.new()
 
 
-## The court from the servo's [code]"pong"[/code] configuration section. Missing keys are
-## reported (the binding and this game disagree) and left at 0.
-static func from_config(pong: Dictionary) -> PongCourt:
+## The court of the Pong renderer's [param pong] settings.
+static func from_settings(pong: PongSettings) -> PongCourt:
 	var court: PongCourt = PongCourt.new()
-	court.config = pong
-	court.half_width = court.number("court_half_width_m")
-	court.half_length = court.number("court_half_length_m")
-	court.wall_height = court.number("wall_height_m")
-	court.ball_radius = court.number("ball_radius_m")
-	court.paddle_radius = court.number("paddle_radius_m")
-	court.gravity = court.number("gravity_m_per_s2")
-	court.restitution_court = court.number("restitution_court")
-	court.restitution_wall = court.number("restitution_wall")
-	court.max_ball_speed = court.number("max_ball_speed_m_per_s")
-	court.workspace_scale = court.number("workspace_scale")
-	court.beginner_height = court.number("beginner_height_m")
-	court.target_half_width = court.number("beginner_target_half_width_m")
-	court.restitution_paddle = court.number("restitution_paddle")
-	var count: float = pong.get("players", 2.0)
-	court.players = roundi(count)
+	court.settings = pong
+	court.players = pong.players
+	court.half_width = pong.court_half_width_m
+	court.half_length = pong.court_half_length_m
+	court.wall_height = pong.wall_height_m
+	court.ball_radius = pong.ball_radius_m
+	court.paddle_radius = pong.paddle_radius_m
+	court.gravity = pong.gravity_m_per_s2
+	court.restitution_court = pong.restitution_court
+	court.restitution_wall = pong.restitution_wall
+	court.max_ball_speed = pong.max_ball_speed_m_per_s
+	court.workspace_scale = pong.workspace_scale
+	court.beginner_height = pong.beginner_height_m
+	court.target_half_width = pong.beginner_target_half_width_m
+	court.restitution_paddle = pong.restitution_paddle
 	if court.players == 4:
 		court.half_width = court.half_length
 	return court
-
-
-## A number of the configuration section; an error when it is missing.
-func number(key: String) -> float:
-	if not config.has(key):
-		push_error("PongCourt: the servo's pong configuration has no '%s'." % key)
-		return 0.0
-	var value: float = config[key]
-	return value
 
 
 ## The territory a point is in, in a court of [param count] players: 0 (near, z >= 0) or

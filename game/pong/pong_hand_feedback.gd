@@ -19,7 +19,7 @@ func _init(p_court: PongCourt) -> void:
 ## A bullet hit [param player] flying along [param direction] (world).
 func hit(player: int, direction: Vector3) -> void:
 	PongServo.shared().apply_effect(
-		player, "hit", court.number("hit_force_n"), court.number("hit_duration_s"), direction
+		player, "hit", court.settings.hit_force_n, court.settings.hit_duration_s, direction
 	)
 
 
@@ -38,8 +38,8 @@ func recoil(player: int, axis: Vector3) -> void:
 	PongServo.shared().apply_effect(
 		player,
 		"recoil",
-		court.number("recoil_force_n"),
-		court.number("recoil_duration_s"),
+		court.settings.recoil_force_n,
+		court.settings.recoil_duration_s,
 		-axis.normalized()
 	)
 
@@ -48,7 +48,7 @@ func recoil(player: int, axis: Vector3) -> void:
 func _magnitude(kind: String) -> float:
 	match kind:
 		"heavy":
-			return court.number("heavy_force_n")
+			return court.settings.heavy_force_n
 		"remote":
-			return court.number("remote_max_force_n")
+			return court.settings.remote_max_force_n
 	return PongServo.DEFAULT_STRENGTH

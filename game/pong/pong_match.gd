@@ -95,9 +95,9 @@ func start() -> bool:
 		return false
 	if not _servo.claim_court(players):
 		return false
-	court = PongCourt.from_config(PongServo.shared().get_config())
+	court = PongCourt.from_settings(PongServo.shared().get_settings())
 	_feedback = PongHandFeedback.new(court)
-	effects.ramp_s = court.number("mine_effect_ramp_s")
+	effects.ramp_s = court.settings.mine_effect_ramp_s
 	rules = PongRules.new(start_health, court.players)
 	rules.health_changed.connect(health_changed.emit)
 	rules.match_over.connect(_on_match_over)
@@ -303,7 +303,7 @@ func _check_mines() -> void:
 		var mine: PongMines.Mine = mines.step_on(player, avatar_of(player))
 		if mine == null:
 			continue
-		var duration: float = court.number("mine_effect_duration_s")
+		var duration: float = court.settings.mine_effect_duration_s
 		if mine.kind != "none" and player != local_player:
 			effects.start(player, mine.kind, duration, mine.owner)
 		if player == local_player:

@@ -14,10 +14,11 @@ var _telemetry_capacity: int = 0
 
 ## Sets the servo's court to [param players] seats; false (nothing changed) when refused.
 func claim_court(players: int) -> bool:
-	var configured_count: float = PongServo.shared().get_config().get("players", 2.0)
-	var configured: int = roundi(configured_count)
+	var settings: PongSettings = PongServo.shared().get_settings()
+	var configured: int = settings.players
 	if configured != players:
-		if not PongServo.shared().configure({"players": players}):
+		settings.players = players
+		if not PongServo.shared().apply_settings(settings):
 			return false
 		_previous_players = configured
 	return true
@@ -57,7 +58,9 @@ func leave() -> void:
 	PongServo.shared().set_hand_target_3d(Vector3.ZERO)
 	PongServo.shared().leave()
 	if _previous_players > 0:
-		PongServo.shared().configure({"players": _previous_players})
+		var settings: PongSettings = PongServo.shared().get_settings()
+		settings.players = _previous_players
+		PongServo.shared().apply_settings(settings)
 	Haptics.hand_follows_input = true
 	if _stopped_servo:
 		Haptics.servo.start()

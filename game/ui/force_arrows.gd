@@ -76,8 +76,8 @@ func set_forces(forces: HapticForces) -> void:
 ## the impact and the total.
 static func components_of(forces: HapticForces) -> Dictionary[String, Vector2]:
 	var out: Dictionary[String, Vector2] = {}
-	for part: int in HapticMovement.MOVEMENT_FORCE_NAMES.size():
-		out[HapticMovement.MOVEMENT_FORCE_NAMES[part]] = forces.parts[part]
+	for part: int in HapticMovementFacts.MOVEMENT_FORCE_NAMES.size():
+		out[HapticMovementFacts.MOVEMENT_FORCE_NAMES[part]] = forces.parts[part]
 	out["impact"] = forces.impact
 	out["total"] = forces.total
 	return out

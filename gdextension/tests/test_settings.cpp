@@ -99,7 +99,7 @@ TEST_CASE("settings: zero stands for a default where the schema says so, not bel
 	config.servo.safety.slew_rate_n_per_s = 0.5;
 	const Status slow = validate_render_config(config);
 	CHECK(slow.code() == StatusCode::OUT_OF_RANGE);
-	CHECK(mentions(slow, "HapticServoSettings.safety.slew_rate_n_per_s: 0.5 is outside [1, 1e+06]"));
+	CHECK(mentions(slow, "HapticServoSettings.safety.slew_rate_n_per_s: 0.5 is neither 0 (no slew limit) nor in [1, 1e+06]"));
 }
 
 TEST_CASE("settings: a refused configuration leaves the servo's in force") {

@@ -24,7 +24,7 @@ func _physics_process(delta: float) -> void:
 	_frame += 1
 	if _frame < FRAMES:
 		return
-	var push: Vector2 = Haptics.get_forces().parts[HapticMovement.MovementForce.NORMAL]
+	var push: Vector2 = Haptics.get_forces().parts[HapticMovementFacts.MovementForce.NORMAL]
 	var probe: HapticProbe = $Player/HapticProbe
 	var ok: bool = Haptics.is_available() and push.y < -MIN_PUSH_N
 	print(

@@ -1,13 +1,13 @@
 extends TestSuite
 ## The class reference in gdextension/doc_classes (shown in the editor's help) against what
-## the extension registers: every method with its parameters, every constant with its value
+## the extension registers: every method with its return and parameter types, every constant with its value
 ## and enum, nothing documented that does not exist.
 
 const DOC_DIR: String = "res://gdextension/doc_classes"
 
 
 func test_each_native_class_has_its_reference() -> void:
-	for native_class: StringName in [&"HapticsServer", &"DurableFile"]:
+	for native_class: StringName in [&"HapticsSystem", &"DurableFile"]:
 		var doc: Dictionary = _read(native_class)
 		assert_false(doc.is_empty(), "%s.xml is readable" % native_class)
 		if doc.is_empty():
@@ -16,17 +16,22 @@ func test_each_native_class_has_its_reference() -> void:
 		var methods: Dictionary = doc["methods"]
 		var bound: Dictionary[String, PackedStringArray] = {}
 		for method: Dictionary in ClassDB.class_get_method_list(native_class, true):
-			var params: PackedStringArray = PackedStringArray()
+			var returned: Dictionary = method["return"]
+			var returns: int = returned["type"]
+			var signature: PackedStringArray = [
+				"-> void" if returns == TYPE_NIL else "-> " + type_string(returns)
+			]
 			for arg: Dictionary in method["args"]:
-				params.append(str(arg["name"]))
-			bound[method["name"]] = params
+				var arg_type: int = arg["type"]
+				signature.append("%s: %s" % [arg["name"], type_string(arg_type)])
+			bound[method["name"]] = signature
 		for method_name: String in bound:
 			assert_true(
 				methods.has(method_name), "%s.%s is documented" % [native_class, method_name]
 			)
 			if methods.has(method_name):
 				assert_eq(
-					methods[method_name], bound[method_name], "parameters of %s" % method_name
+					methods[method_name], bound[method_name], "signature of %s" % method_name
 				)
 		for method_name: String in methods:
 			assert_true(bound.has(method_name), "%s.%s exists" % [native_class, method_name])
@@ -49,7 +54,7 @@ func test_each_native_class_has_its_reference() -> void:
 				)
 
 
-# {inherits, methods: {name: PackedStringArray of parameters}, constants: {name: {value, enum}}}
+# {inherits, methods: {name: ["-> Return", "param: Type", ...]}, constants: {name: {value, enum}}}
 func _read(native_class: StringName) -> Dictionary:
 	var parser: XMLParser = XMLParser.new()
 	if parser.open("%s/%s.xml" % [DOC_DIR, native_class]) != OK:
@@ -65,10 +70,14 @@ func _read(native_class: StringName) -> Dictionary:
 			"method":
 				method = parser.get_named_attribute_value("name")
 				doc["methods"][method] = PackedStringArray()
-			"param":
-				var params: PackedStringArray = doc["methods"][method]
-				params.append(parser.get_named_attribute_value("name"))
-				doc["methods"][method] = params
+			"return", "param":
+				var signature: PackedStringArray = doc["methods"][method]
+				var type_name: String = parser.get_named_attribute_value("type")
+				if parser.get_node_name() == "return":
+					signature.append("-> " + type_name)
+				else:
+					signature.append("%s: %s" % [parser.get_named_attribute_value("name"), type_name])
+				doc["methods"][method] = signature
 			"constant":
 				doc["constants"][parser.get_named_attribute_value("name")] = {
 					"value": parser.get_named_attribute_value("value").to_int(),

@@ -4,19 +4,19 @@ extends TestSuite
 
 
 func test_class_is_registered() -> void:
-	assert_true(ClassDB.class_exists(&"HapticsServer"))
-	assert_eq(ClassDB.get_parent_class(&"HapticsServer"), &"RefCounted")
-	assert_true(ClassDB.class_has_method(&"HapticsServer", &"list_devices"))
+	assert_true(ClassDB.class_exists(&"HapticsSystem"))
+	assert_eq(ClassDB.get_parent_class(&"HapticsSystem"), &"RefCounted")
+	assert_true(ClassDB.class_has_method(&"HapticsSystem", &"list_devices"))
 
 
-func test_autoload_owns_a_server() -> void:
+func test_the_autoload_reaches_the_library() -> void:
 	assert_true(Haptics.is_available())
 	assert_has(Haptics.get_version(), "haptics ")
 
 
 func test_simulated_device_is_listed_first_with_its_documented_fields() -> void:
 	# The binding's own bytes, decoded as the door decodes them.
-	var list: HapticDeviceList = HapticDeviceList.decode(HapticsServer.new().list_devices())
+	var list: HapticDeviceList = HapticDeviceList.decode(HapticsSystem.new().list_devices())
 	if not assert_not_null(list, HapticsWireReader.last_error):
 		return
 	assert_gt(list.devices.size(), 0)
@@ -37,8 +37,8 @@ func test_ids_are_unique() -> void:
 
 
 func test_typed_ptrcall_and_untyped_call_agree() -> void:
-	var typed: HapticsServer = HapticsServer.new()
-	var untyped: Variant = HapticsServer.new()
+	var typed: HapticsSystem = HapticsSystem.new()
+	var untyped: Variant = HapticsSystem.new()
 	@warning_ignore("unsafe_method_access")
 	assert_eq(typed.get_version(), untyped.get_version())
 	var by_ptrcall: PackedByteArray = typed.get_device_capabilities()
@@ -61,7 +61,7 @@ func test_typed_ptrcall_and_untyped_call_agree() -> void:
 
 
 func test_too_many_arguments_is_a_call_error_and_the_game_goes_on() -> void:
-	var server: HapticsServer = HapticsServer.new()
+	var server: HapticsSystem = HapticsSystem.new()
 	expect_error("expected 0 argument(s), but called with 1")
 	assert_null(server.callv(&"list_devices", [1]))
 	var list: HapticDeviceList = HapticDeviceList.decode(server.list_devices())
@@ -69,13 +69,13 @@ func test_too_many_arguments_is_a_call_error_and_the_game_goes_on() -> void:
 
 
 func test_too_few_arguments_is_a_call_error() -> void:
-	var server: HapticsServer = HapticsServer.new()
+	var server: HapticsSystem = HapticsSystem.new()
 	expect_error("expected 1 argument(s), but called with 0")
 	assert_null(server.callv(&"open_device", []))
 
 
 func test_wrong_argument_type_is_a_call_error() -> void:
-	var server: HapticsServer = HapticsServer.new()
+	var server: HapticsSystem = HapticsSystem.new()
 	expect_error("Cannot convert argument 1 from Array to String")
 	assert_null(server.callv(&"open_device", [[1, 2]]))
 	assert_true(server.open_device("simulated"))
@@ -83,20 +83,20 @@ func test_wrong_argument_type_is_a_call_error() -> void:
 
 
 func test_unknown_device_id_reports_an_error_and_opens_nothing() -> void:
-	var server: HapticsServer = HapticsServer.new()
+	var server: HapticsSystem = HapticsSystem.new()
 	expect_error("no device with id 'no-such-device'")
 	assert_false(server.open_device("no-such-device"))
 	assert_eq(server.get_device_id(), "")
 
 
 func test_non_ascii_text_crosses_the_boundary_intact() -> void:
-	var server: HapticsServer = HapticsServer.new()
+	var server: HapticsSystem = HapticsSystem.new()
 	expect_error("no device with id 'Überhaptik ✓'")
 	assert_false(server.open_device("Überhaptik ✓"))
 
 
 func test_enumeration_warnings_are_sentences() -> void:
-	var list: HapticDeviceList = HapticDeviceList.decode(HapticsServer.new().list_devices())
+	var list: HapticDeviceList = HapticDeviceList.decode(HapticsSystem.new().list_devices())
 	if not assert_not_null(list, HapticsWireReader.last_error):
 		return
 	for warning: String in list.warnings:

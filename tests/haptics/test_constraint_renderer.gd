@@ -7,21 +7,21 @@ const K_C := 300.0
 const RADIUS := 8.0
 const MAZE_MIN := Vector2(-100.0, -100.0)
 const MAZE_MAX := Vector2(100.0, 100.0)
-const WALL := HapticConstraint.ConstraintForce.WALL
+const WALL := HapticConstraintFacts.ConstraintForce.WALL
 
-var door: TestHaptics.Door = null
+var door: HapticsTestKit.Door = null
 var constraint: HapticsConstraint = null
 
 
 func before_each() -> void:
-	door = autofree(TestHaptics.manual())
+	door = autofree(HapticsTestKit.manual())
 	constraint = HapticsConstraint.of(door)
-	assert_true(door.configure("safety", {"startup_ramp_s": 0.0, "slew_rate_n_per_s": 0.0}))
-	assert_true(
-		door.configure(
-			"constraint", {"stiffness_n_per_m": K_C, "proxy_radius": RADIUS, "update": "servo"}
-		)
-	)
+	assert_true(HapticsTestKit.instant(door))
+	var settings: HapticConstraintSettings = constraint.get_settings()
+	settings.stiffness_n_per_m = K_C
+	settings.proxy_radius = RADIUS
+	settings.update = HapticConstraintFacts.ProxyUpdate.SERVO
+	assert_true(constraint.apply_settings(settings))
 	var wall: PackedVector2Array = [Vector2(20.0, -90.0), Vector2(20.0, 90.0)]
 	assert_true(constraint.set_walls(wall, _mapping()))
 	assert_true(constraint.activate())
@@ -38,7 +38,7 @@ func _mapping(maze_min: Vector2 = MAZE_MIN, maze_max: Vector2 = MAZE_MAX) -> Hap
 
 # Ticks with an empty frame before each (the watchdog's heartbeat).
 func _steps(count: int) -> void:
-	assert_true(TestHaptics.run(door, count, HapticFrame.new()))
+	assert_true(HapticsTestKit.run(door, count, HapticFrame.new()))
 
 
 # Metres per maze unit for the DISC fit: the maze's diagonal spans the workspace diameter.
@@ -47,10 +47,10 @@ func _metres_per_unit() -> float:
 
 
 func test_the_proxy_stops_at_the_wall_while_the_device_goes_past() -> void:
-	assert_true(TestHaptics.set_hand_m(door, Vector2(-0.02, 0.0)))
+	assert_true(HapticsTestKit.set_hand_m(door, Vector2(-0.02, 0.0)))
 	_steps(300)
 	assert_true(constraint.get_proxy().placed, "placed in free space")
-	assert_true(TestHaptics.set_hand_m(door, Vector2(0.06, 0.0)))
+	assert_true(HapticsTestKit.set_hand_m(door, Vector2(0.06, 0.0)))
 	_steps(400)
 	var state: HapticProxyState = constraint.get_proxy()
 	assert_gt(state.goal.x, 20.0 + RADIUS, "the device is past the wall")
@@ -60,9 +60,9 @@ func test_the_proxy_stops_at_the_wall_while_the_device_goes_past() -> void:
 
 
 func test_the_force_is_k_c_times_proxy_minus_device() -> void:
-	assert_true(TestHaptics.set_hand_m(door, Vector2(-0.02, 0.0)))
+	assert_true(HapticsTestKit.set_hand_m(door, Vector2(-0.02, 0.0)))
 	_steps(300)
-	assert_true(TestHaptics.set_hand_m(door, Vector2(0.05, 0.01)))
+	assert_true(HapticsTestKit.set_hand_m(door, Vector2(0.05, 0.01)))
 	_steps(400)
 	var state: HapticProxyState = constraint.get_proxy()
 	# Maze and game axes are both y-down, so the force reads the same in both.
@@ -76,12 +76,14 @@ func test_the_force_is_k_c_times_proxy_minus_device() -> void:
 
 
 func test_the_papers_fifty_hertz_variant_moves_the_proxy_only_on_frames() -> void:
-	assert_true(door.configure("constraint", {"update": "frame"}))
-	assert_true(TestHaptics.set_hand_m(door, Vector2(-0.03, 0.0)))
+	var settings: HapticConstraintSettings = constraint.get_settings()
+	settings.update = HapticConstraintFacts.ProxyUpdate.FRAME
+	assert_true(constraint.apply_settings(settings))
+	assert_true(HapticsTestKit.set_hand_m(door, Vector2(-0.03, 0.0)))
 	var before: int = constraint.get_proxy().updates
 	for frame: int in 10:
 		assert_true(door.submit_frame(HapticFrame.new()))
-		assert_true(TestHaptics.run(door, 20))
+		assert_true(HapticsTestKit.run(door, 20))
 	var updates: int = constraint.get_proxy().updates
 	assert_eq(updates - before, 10, "one proxy update per 50 Hz frame")
 
@@ -107,14 +109,17 @@ func test_unknown_modes_and_settings_are_refused() -> void:
 	expect_error("unknown renderer 'joystick'")
 	assert_false(door.set_render_mode(&"joystick"))
 	assert_true(constraint.is_active())
-	expect_error("constraint.update must be")
-	assert_false(door.configure("constraint", {"update": "sometimes"}))
-	assert_eq(door.get_choice("constraint", "update"), "servo")
+	var settings: HapticConstraintSettings = constraint.get_settings()
+	settings.proxy_radius = -1.0
+	expect_error("HapticConstraintSettings.proxy_radius")
+	assert_false(constraint.apply_settings(settings))
+	assert_eq(constraint.get_settings().proxy_radius, RADIUS, "unchanged")
+	assert_eq(constraint.get_settings().update, HapticConstraintFacts.ProxyUpdate.SERVO)
 
 
 func test_back_to_movement_mode() -> void:
 	assert_true(door.set_render_mode(&"movement"))
 	assert_false(constraint.is_active())
-	assert_true(TestHaptics.set_hand_m(door, Vector2(0.05, 0.0)))
+	assert_true(HapticsTestKit.set_hand_m(door, Vector2(0.05, 0.0)))
 	_steps(100)
 	assert_almost_eq(door.get_forces().total, Vector2.ZERO, 1e-4, "no contacts, no force")

@@ -60,7 +60,7 @@ func test_the_probe_feels_it_as_water() -> void:
 	body.add_child(_box(Vector2(20.0, 36.0)))
 	body.position = Vector2(400.0, 450.0)
 	var probe: HapticProbe = HapticProbe.new()
-	probe.haptics = autofree(TestHaptics.manual())
+	probe.haptics = autofree(HapticsTestKit.manual())
 	body.add_child(probe)
 	world.add_child(body)
 	for frame: int in 3:

@@ -1,5 +1,5 @@
 extends TestSuite
-## The Haptics autoload, the one door from GDScript to the native server: its settings are
+## The Haptics autoload, the one door from GDScript to the native library: its settings are
 ## the servo's (force scale and smoothing live in the servo's configuration), refused values
 ## leave them as they were, renderers come through by name and values as typed classes.
 
@@ -23,12 +23,12 @@ func after_each() -> void:
 	Haptics.set_render_mode(_render_mode)
 
 
-func test_the_force_scale_lives_in_the_servo() -> void:
+func test_the_force_scale_lives_in_the_servo_and_smoothing_in_the_renderer() -> void:
 	Haptics.force_scale = 0.35
-	assert_almost_eq(Haptics.get_config()["safety"]["force_scale"], 0.35, 1e-9)
+	assert_almost_eq(Haptics.servo.get_settings().safety.force_scale, 0.35, 1e-9)
 	assert_almost_eq(Haptics.force_scale, 0.35, 1e-9)
 	Haptics.smoothing_enabled = false
-	assert_false(Haptics.get_config()["smoothing"]["enabled"])
+	assert_false(HapticsMovement.of(Haptics).get_settings().smoothing.enabled, "the renderer's")
 
 
 func test_out_of_range_is_clamped_and_nan_refused() -> void:
@@ -74,13 +74,3 @@ func test_renderers_by_name_and_values_as_typed_classes() -> void:
 	var stats: HapticServoStats = Haptics.servo.get_stats()
 	assert_true(stats.running, "the autoload's servo thread")
 	assert_eq(stats.nominal_rate_hz, HapticServoConstants.DEFAULT_RATE_HZ)
-
-
-func test_a_choice_setting_by_its_name() -> void:
-	assert_eq(Haptics.get_choice("force_model", "contact_model"), "per_contact", "the default")
-	assert_true(Haptics.configure("force_model", {"contact_model": "paper_sum"}))
-	assert_eq(Haptics.get_choice("force_model", "contact_model"), "paper_sum")
-	assert_true(Haptics.configure("force_model", {"contact_model": "per_contact"}))
-	assert_eq(Haptics.get_choice("constraint", "update"), "servo")
-	expect_error("not a choice setting")
-	assert_eq(Haptics.get_choice("safety", "force_scale"), "")

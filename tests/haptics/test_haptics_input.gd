@@ -230,18 +230,18 @@ func test_feeding_the_actions_that_move_the_hand_does_not_hold_them_down() -> vo
 
 func test_telemetry_is_off_until_someone_drains_it() -> void:
 	# A fresh door started as the autoload is (nothing an earlier suite drained or left).
-	var haptics: TestHaptics.Door = add_child_autofree(TestHaptics.Door.new())
+	var haptics: HapticsTestKit.Door = add_child_autofree(HapticsTestKit.Door.new())
 	haptics.feed_actions = PackedStringArray()
 	haptics.hand_follows_input = false
 	var capacity: int = HapticServoConstants.TELEMETRY_QUEUE_CAPACITY
-	assert_false(haptics.get_config()["telemetry"]["enabled"], "off from the start")
+	assert_false(haptics.servo.get_settings().telemetry.enabled, "off from the start")
 	await _physics_frames(15)  # 0.3 s: 300 samples at 1 kHz if it were on
 	assert_true(haptics.servo.is_running())
 	# Stopped, so that no sample can come between draining's turning it on and its reading.
 	haptics.servo.stop()
 	assert_eq(haptics.servo.get_stats().telemetry_drops, 0, "nothing recorded, nothing to drop")
 	assert_eq(haptics.servo.drain_telemetry(capacity).size(), 0)
-	assert_true(haptics.get_config()["telemetry"]["enabled"], "draining turned it on")
+	assert_true(haptics.servo.get_settings().telemetry.enabled, "draining turned it on")
 	assert_true(haptics.servo.start())
 	await _physics_frames(3)
 	assert_gt(haptics.servo.drain_telemetry(16).size(), 0, "and samples arrive")

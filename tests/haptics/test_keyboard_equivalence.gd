@@ -18,7 +18,7 @@ func after_each() -> void:
 
 # The player's velocity after [param frames] physics frames, its probe talking to
 # [param door] (the Haptics autoload when null) and the door's servo stepped with them.
-func _velocity_after(frames: int, door: TestHaptics.Door) -> Vector2:
+func _velocity_after(frames: int, door: HapticsTestKit.Door) -> Vector2:
 	var room: TestRoom = TEST_ROOM.instantiate() as TestRoom
 	var probe: HapticProbe = room.get_node(^"Player/HapticProbe") as HapticProbe
 	if door != null:
@@ -28,7 +28,7 @@ func _velocity_after(frames: int, door: TestHaptics.Door) -> Vector2:
 	for i: int in frames:
 		await get_tree().physics_frame
 		if door != null:
-			TestHaptics.run(door, 20)
+			HapticsTestKit.run(door, 20)
 	return player.velocity
 
 
@@ -39,11 +39,11 @@ func test_keys_and_device_give_the_same_acceleration() -> void:
 	Input.action_release(&"move_right")
 
 	Haptics.control_mode = Haptics.CONTROL_DEVICE
-	var door: TestHaptics.Door = autofree(TestHaptics.manual())
+	var door: HapticsTestKit.Door = autofree(HapticsTestKit.manual())
 	assert_eq(door.control_mode, Haptics.CONTROL_DEVICE, "the probe's door drives the player")
 	# Beyond the workspace edge (kept on it): the stylus rests there, the input vector is 1.
-	assert_true(TestHaptics.set_hand_m(door, Vector2(0.3, 0.0)))
-	assert_true(TestHaptics.run(door, 300))
+	assert_true(HapticsTestKit.set_hand_m(door, Vector2(0.3, 0.0)))
+	assert_true(HapticsTestKit.run(door, 300))
 	assert_almost_eq(door.get_input_vector(), Vector2.RIGHT, 1e-4)
 	var by_device: Vector2 = await _velocity_after(5, door)
 

@@ -11,11 +11,11 @@ const DEVICE_ID := "openhaptics:default"
 ## Built with the native tests (gdextension/CMakeLists.txt, target fake_hd).
 const FAKE_RUNTIME := "res://.build/debug/libfake_hd.so"
 
-var door: TestHaptics.Door = null
+var door: HapticsTestKit.Door = null
 
 
 func before_each() -> void:
-	door = autofree(TestHaptics.Door.new())
+	door = autofree(HapticsTestKit.Door.new())
 
 
 func after_each() -> void:
@@ -25,7 +25,7 @@ func after_each() -> void:
 
 func test_a_runtime_that_does_not_load_is_listed_with_the_reason() -> void:
 	OS.set_environment(VARIABLE, "/nonexistent/libHD.so")
-	var entry: HapticDeviceInfo = TestHaptics.find_device(door, DEVICE_ID)
+	var entry: HapticDeviceInfo = HapticsTestKit.find_device(door, DEVICE_ID)
 	if not assert_not_null(entry, "the player's setting is answered in the list"):
 		return
 	assert_eq(entry.driver, "openhaptics")
@@ -45,7 +45,7 @@ func test_the_touch_renders_through_the_loaded_runtime() -> void:
 	var fake: String = ProjectSettings.globalize_path(FAKE_RUNTIME)
 	assert_true(FileAccess.file_exists(fake), "the fake runtime is built (make build): " + fake)
 	OS.set_environment(VARIABLE, fake)
-	var entry: HapticDeviceInfo = TestHaptics.find_device(door, DEVICE_ID)
+	var entry: HapticDeviceInfo = HapticsTestKit.find_device(door, DEVICE_ID)
 	if not assert_not_null(entry, "listed"):
 		return
 	assert_eq(entry.driver, "openhaptics")
@@ -62,7 +62,7 @@ func test_the_touch_renders_through_the_loaded_runtime() -> void:
 		func() -> bool: return door.servo.get_stats().device_io_cycles > 100, 5.0
 	)
 	assert_true(ran, "HD's scheduler called back into the device")
-	door.submit_frame(TestHaptics.wall(Vector2.UP))
+	door.submit_frame(HapticsTestKit.wall(Vector2.UP))
 	await wait_physics_frames(5)
 	var total: Vector2 = door.get_forces().total
 	assert_true(total.is_finite())

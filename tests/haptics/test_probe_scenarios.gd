@@ -8,21 +8,21 @@ const TEST_ROOM := preload("res://game/levels/test_room.tscn")
 const K := 2.0
 const B := 1.0
 const TICKS_PER_FRAME := 20
-const NORMAL := HapticMovement.MovementForce.NORMAL
-const FRICTION := HapticMovement.MovementForce.FRICTION
-const WEIGHT := HapticMovement.MovementForce.WEIGHT
-const DRAG := HapticMovement.MovementForce.DRAG
-const INERTIA := HapticMovement.MovementForce.INERTIA
+const NORMAL := HapticMovementFacts.MovementForce.NORMAL
+const FRICTION := HapticMovementFacts.MovementForce.FRICTION
+const WEIGHT := HapticMovementFacts.MovementForce.WEIGHT
+const DRAG := HapticMovementFacts.MovementForce.DRAG
+const INERTIA := HapticMovementFacts.MovementForce.INERTIA
 
-var door: TestHaptics.Door = null
+var door: HapticsTestKit.Door = null
 var room: TestRoom = null
 var player: Player = null
 var probe: HapticProbe = null
 
 
 func before_each() -> void:
-	door = autofree(TestHaptics.manual())
-	assert_true(door.configure("safety", {"startup_ramp_s": 0.0}))
+	door = autofree(HapticsTestKit.manual())
+	assert_true(HapticsTestKit.no_ramp(door))
 	room = TEST_ROOM.instantiate() as TestRoom
 	player = room.get_node(^"Player") as Player
 	# The player scene's own probe, pointed at this test's manually stepped door before it
@@ -39,15 +39,15 @@ func before_each() -> void:
 func _run_frames(count: int) -> void:
 	for i: int in count:
 		await get_tree().physics_frame
-		TestHaptics.run(door, TICKS_PER_FRAME)
+		HapticsTestKit.run(door, TICKS_PER_FRAME)
 
 
 func _hand(normalized: Vector2) -> void:
-	assert_true(TestHaptics.set_hand_m(door, normalized * 0.1))
+	assert_true(HapticsTestKit.set_hand_m(door, normalized * 0.1))
 
 
-func _part(part: HapticMovement.MovementForce) -> Vector2:
-	return TestHaptics.movement_part(door, part)
+func _part(part: HapticMovementFacts.MovementForce) -> Vector2:
+	return HapticsTestKit.movement_part(door, part)
 
 
 func _add_wall(through: Vector2, normal: Vector2) -> StaticBody2D:
@@ -90,8 +90,8 @@ func test_the_force_scale_reaches_a_wall_without_any_material() -> void:
 	# No material on the wall and none on the probe: the servo's default material, and
 	# still the servo's force scale (it used to be multiplied into materials only).
 	probe.default_material = null
-	var default_k: float = door.get_config()["force_model"]["contact_stiffness_n"]
-	assert_true(door.configure("safety", {"force_scale": 0.5}))
+	var default_k: float = HapticsTestKit.movement(door).force_model.default_contact.stiffness_n
+	door.force_scale = 0.5
 	_hand(Vector2.RIGHT)
 	await _run_frames(200)
 	var contacts: Array[HapticContact] = probe.last_frame.contacts

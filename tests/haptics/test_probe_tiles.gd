@@ -34,7 +34,7 @@ class Runner:
 		move_and_slide()
 
 
-var door: TestHaptics.Door = null
+var door: HapticsTestKit.Door = null
 var world: Node2D = null
 var layer: TileMapLayer = null
 var body: Runner = null
@@ -44,8 +44,8 @@ var ticks_per_second: int = 0
 
 func before_each() -> void:
 	ticks_per_second = Engine.physics_ticks_per_second
-	door = autofree(TestHaptics.manual())
-	assert_true(door.configure("safety", {"startup_ramp_s": 0.0}))
+	door = autofree(HapticsTestKit.manual())
+	assert_true(HapticsTestKit.no_ramp(door))
 	world = Node2D.new()
 	layer = _tile_layer()
 	world.add_child(layer)
@@ -116,7 +116,7 @@ func _wall_material() -> HapticMaterial:
 # One physics frame, the servo stepped at 1 kHz for as long.
 func _frame() -> void:
 	await get_tree().physics_frame
-	TestHaptics.run(door, roundi(1000.0 / Engine.physics_ticks_per_second))
+	HapticsTestKit.run(door, roundi(1000.0 / Engine.physics_ticks_per_second))
 
 
 # Godot's platformer demo: 120 ticks per second, strong gravity, and here a slow run-up
@@ -140,15 +140,15 @@ func _run_to_wall(frames: int) -> int:
 
 
 func _hand(normalized: Vector2) -> void:
-	assert_true(TestHaptics.set_hand_m(door, normalized * 0.1))
+	assert_true(HapticsTestKit.set_hand_m(door, normalized * 0.1))
 
 
 func _normal_force() -> Vector2:
-	return TestHaptics.movement_part(door, HapticMovement.MovementForce.NORMAL)
+	return HapticsTestKit.movement_part(door, HapticMovementFacts.MovementForce.NORMAL)
 
 
 func _weight() -> Vector2:
-	return TestHaptics.movement_part(door, HapticMovement.MovementForce.WEIGHT)
+	return HapticsTestKit.movement_part(door, HapticMovementFacts.MovementForce.WEIGHT)
 
 
 func _has_normal(normal: Vector2) -> bool:
@@ -347,7 +347,7 @@ func test_the_physics_material_mapping() -> void:
 
 
 func test_own_weight_presses_the_hand_down_only_while_standing_and_only_when_asked() -> void:
-	var g: float = door.get_config()["force_model"]["gravity_n_per_kg"]
+	var g: float = HapticsTestKit.movement(door).force_model.gravity_n_per_kg
 	for frame: int in 20:
 		await _frame()
 	assert_true(body.is_on_floor())

@@ -9,12 +9,12 @@ const VARIABLE := "HAPTICS_SCRIPTED_DEVICES"
 ## Every driver with a scripted model.
 const SCRIPTED_DRIVERS: Array[String] = ["falcon", "dualsense", "evdev", "hid-pid"]
 
-var door: TestHaptics.Door = null
+var door: HapticsTestKit.Door = null
 
 
 func before_each() -> void:
 	OS.set_environment(VARIABLE, "1")
-	door = autofree(TestHaptics.Door.new())
+	door = autofree(HapticsTestKit.Door.new())
 
 
 func after_each() -> void:
@@ -26,7 +26,7 @@ func test_scripted_devices_are_listed_only_when_asked_for() -> void:
 	var ids: Array[String] = _listed_ids()
 	for driver: String in SCRIPTED_DRIVERS:
 		assert_has(ids, "scripted:" + driver)
-		var entry: HapticDeviceInfo = TestHaptics.find_device(door, "scripted:" + driver)
+		var entry: HapticDeviceInfo = HapticsTestKit.find_device(door, "scripted:" + driver)
 		if not assert_not_null(entry, driver):
 			continue
 		assert_eq(entry.driver, driver)
@@ -87,17 +87,17 @@ func _listed_ids() -> Array[String]:
 
 
 func _openable(id: String) -> bool:
-	var entry: HapticDeviceInfo = TestHaptics.find_device(door, id)
+	var entry: HapticDeviceInfo = HapticsTestKit.find_device(door, id)
 	return entry != null and entry.openable
 
 
 # Pushes the stylus 2 cm into a floor for up to p_seconds; true once the rendered force
 # points up (game axes: negative y) by more than 0.1 N.
 func _press_into_floor(seconds: float) -> bool:
-	TestHaptics.set_hand_m(door, Vector2(0.0, 0.02))
+	HapticsTestKit.set_hand_m(door, Vector2(0.0, 0.02))
 	var deadline: float = Time.get_ticks_msec() + seconds * 1000.0
 	while Time.get_ticks_msec() < deadline:
-		door.submit_frame(TestHaptics.wall(Vector2.UP))
+		door.submit_frame(HapticsTestKit.wall(Vector2.UP))
 		await wait_physics_frames(1)
 		if door.get_forces().total.y < -0.1:
 			return true

@@ -10,57 +10,51 @@ const K := 2.0
 const B := 1.0
 const TOL := 1e-4
 const TICKS_PER_FRAME := 20
-const NORMAL := HapticMovement.MovementForce.NORMAL
+const NORMAL := HapticMovementFacts.MovementForce.NORMAL
 
-var door: TestHaptics.Door = null
+var door: HapticsTestKit.Door = null
 
 
 func before_each() -> void:
-	door = autofree(TestHaptics.manual())
-	assert_true(door.configure("safety", {"startup_ramp_s": 0.0, "slew_rate_n_per_s": 0.0}))
-	assert_true(door.configure("force_model", {"dead_zone": 0.0}))
+	door = autofree(HapticsTestKit.manual())
+	assert_true(HapticsTestKit.instant(door))
+	assert_true(HapticsTestKit.no_dead_zone(door))
 
 
 func _contacts(normals: Array[Vector2]) -> HapticFrame:
 	var contacts: Array[HapticContact] = []
 	for normal: Vector2 in normals:
-		contacts.append(TestHaptics.contact(normal, K, B))
-	return TestHaptics.frame_of(contacts)
+		contacts.append(HapticsTestKit.contact(normal, K, B))
+	return HapticsTestKit.frame_of(contacts)
 
 
 # Moves the simulated hand to [param hand_m] and renders [param frame] until it is there.
 func _settle(hand_m: Vector2, frame: HapticFrame, ticks: int = 300) -> void:
-	assert_true(TestHaptics.set_hand_m(door, hand_m))
-	assert_true(TestHaptics.run(door, ticks, frame))
+	assert_true(HapticsTestKit.set_hand_m(door, hand_m))
+	assert_true(HapticsTestKit.run(door, ticks, frame))
 
 
-func _use(model: String, smoothing: bool) -> void:
-	assert_true(door.configure("force_model", {"contact_model": model}))
-	assert_true(door.configure("smoothing", {"enabled": smoothing}))
+func _use(model: HapticMovementFacts.ContactModel, smoothing: bool) -> void:
+	var settings: HapticMovementSettings = HapticsMovement.of(door).get_settings()
+	settings.force_model.contact_model = model
+	settings.smoothing.enabled = smoothing
+	assert_true(HapticsMovement.of(door).apply_settings(settings))
 
 
 func _normal_force() -> Vector2:
-	return TestHaptics.movement_part(door, NORMAL)
+	return HapticsTestKit.movement_part(door, NORMAL)
 
 
-func test_the_default_is_per_contact_and_both_names_and_indices_are_accepted() -> void:
-	assert_eq(door.get_choice("force_model", "contact_model"), "per_contact")
-	assert_true(door.configure("force_model", {"contact_model": "paper_sum"}))
-	assert_eq(door.get_choice("force_model", "contact_model"), "paper_sum")
-	var choices: Array = []
-	for field: Dictionary in TestHaptics.config_fields():
-		if field["key"] == "contact_model":
-			choices = field["choices"]
-			assert_eq(field["kind"], "choice")
-	assert_eq(choices, ["per_contact", "paper_sum"])
-	assert_true(door.configure("force_model", {"contact_model": choices.find("per_contact")}))
-	assert_eq(door.get_choice("force_model", "contact_model"), "per_contact", "by its index")
-	expect_error("force_model.contact_model must be one of per_contact, paper_sum")
-	assert_false(door.configure("force_model", {"contact_model": "sum"}))
+func test_the_default_is_per_contact() -> void:
+	var model: int = HapticsMovement.of(door).get_settings().force_model.contact_model
+	assert_eq(model, HapticMovementFacts.ContactModel.PER_CONTACT)
+	_use(HapticMovementFacts.ContactModel.PAPER_SUM, true)
+	model = HapticsMovement.of(door).get_settings().force_model.contact_model
+	assert_eq(model, HapticMovementFacts.ContactModel.PAPER_SUM)
 
 
 func test_floor_and_wall_a_horizontal_push_gets_the_walls_push_back_only() -> void:
-	_use("per_contact", false)
+	_use(HapticMovementFacts.ContactModel.PER_CONTACT, false)
 	_settle(Vector2(0.06, 0.0), _contacts([Vector2.UP, Vector2.LEFT]))
 	var i: Vector2 = door.get_input_vector()
 	var forces: HapticForces = door.get_forces()
@@ -74,7 +68,7 @@ func test_floor_and_wall_a_horizontal_push_gets_the_walls_push_back_only() -> vo
 
 
 func test_floor_and_wall_the_paper_sum_pushes_at_45_degrees() -> void:
-	_use("paper_sum", false)
+	_use(HapticMovementFacts.ContactModel.PAPER_SUM, false)
 	_settle(Vector2(0.06, 0.0), _contacts([Vector2.UP, Vector2.LEFT]))
 	var i: Vector2 = door.get_input_vector()
 	var f_n: Vector2 = _normal_force()
@@ -88,14 +82,14 @@ func test_floor_and_wall_the_paper_sum_pushes_at_45_degrees() -> void:
 func test_pointing_away_from_a_wall_in_contact_pulls_only_under_the_paper_sum() -> void:
 	# The issue's measurement: about |i| = 0.47 away from the wall on the right, k = 2.
 	var away: Vector2 = Vector2(-0.047, 0.0)
-	_use("paper_sum", false)
+	_use(HapticMovementFacts.ContactModel.PAPER_SUM, false)
 	_settle(away, _contacts([Vector2.LEFT]))
 	var i: Vector2 = door.get_input_vector()
 	assert_almost_eq(i.length(), 0.47, 0.05, "the pull draws the relaxed hand in a little")
 	var pull: Vector2 = _normal_force()
 	assert_almost_eq(pull, Vector2(-K * i.x, 0.0), TOL, "paper_sum: k |i| into the wall")
 	assert_gt(pull.x, 0.8)
-	_use("per_contact", false)
+	_use(HapticMovementFacts.ContactModel.PER_CONTACT, false)
 	_settle(away, _contacts([Vector2.LEFT]), 5)
 	assert_almost_eq(door.get_forces().total, Vector2.ZERO, TOL, "per_contact: nothing")
 
@@ -105,14 +99,14 @@ func test_one_physics_frame_of_contact_while_pointing_away_through_the_filter() 
 	# filtered output over that frame and the filter's tail.
 	var into_wall: Dictionary = {"paper_sum": 0.0, "per_contact": 0.0}
 	for model: String in into_wall:
-		_use(model, true)
+		_use(HapticsValue.choice_value(HapticMovementFacts.ContactModel, model), true)
 		_settle(Vector2(-0.047, 0.0), HapticFrame.new())
 		var most: float = 0.0
 		for tick: int in TICKS_PER_FRAME + 200:
 			var frame: HapticFrame = (
 				_contacts([Vector2.LEFT]) if tick < TICKS_PER_FRAME else HapticFrame.new()
 			)
-			assert_true(TestHaptics.run(door, 1, frame))
+			assert_true(HapticsTestKit.run(door, 1, frame))
 			most = maxf(most, door.get_forces().total.x)
 		into_wall[model] = most
 	assert_gt(into_wall["paper_sum"], 0.3, "the paper's model pulls the hand into the wall")

@@ -6,34 +6,37 @@ extends TestSuite
 const K := 2.0
 const B := 1.5
 const TOL := 1e-4
-const NORMAL := HapticMovement.MovementForce.NORMAL
-const FRICTION := HapticMovement.MovementForce.FRICTION
-const WEIGHT := HapticMovement.MovementForce.WEIGHT
-const DRAG := HapticMovement.MovementForce.DRAG
-const INERTIA := HapticMovement.MovementForce.INERTIA
+const NORMAL := HapticMovementFacts.MovementForce.NORMAL
+const FRICTION := HapticMovementFacts.MovementForce.FRICTION
+const WEIGHT := HapticMovementFacts.MovementForce.WEIGHT
+const DRAG := HapticMovementFacts.MovementForce.DRAG
+const INERTIA := HapticMovementFacts.MovementForce.INERTIA
 
-var door: TestHaptics.Door = null
+var door: HapticsTestKit.Door = null
 
 
 func before_each() -> void:
-	door = autofree(TestHaptics.manual())
+	door = autofree(HapticsTestKit.manual())
 	# No ramp, slew or smoothing: the rendered force is the model's force at every tick.
-	assert_true(door.configure("safety", {"startup_ramp_s": 0.0, "slew_rate_n_per_s": 0.0}))
-	assert_true(door.configure("smoothing", {"enabled": false}))
-	assert_true(door.configure("force_model", {"dead_zone": 0.0, "gravity_n_per_kg": 1.0}))
+	assert_true(HapticsTestKit.instant(door))
+	var settings: HapticMovementSettings = HapticsTestKit.movement(door)
+	settings.smoothing.enabled = false
+	settings.force_model.gravity_n_per_kg = 1.0
+	assert_true(HapticsMovement.of(door).apply_settings(settings))
+	assert_true(HapticsTestKit.no_dead_zone(door))
 
 
 func _push(hand_target_m: Vector2, frame: HapticFrame, ticks: int = 200) -> void:
-	assert_true(TestHaptics.set_hand_m(door, hand_target_m))
-	assert_true(TestHaptics.run(door, ticks, frame))
+	assert_true(HapticsTestKit.set_hand_m(door, hand_target_m))
+	assert_true(HapticsTestKit.run(door, ticks, frame))
 
 
 func _wall(normal: Vector2) -> HapticFrame:
-	return TestHaptics.wall(normal, K, B)
+	return HapticsTestKit.wall(normal, K, B)
 
 
-func _part(part: HapticMovement.MovementForce) -> Vector2:
-	return TestHaptics.movement_part(door, part)
+func _part(part: HapticMovementFacts.MovementForce) -> Vector2:
+	return HapticsTestKit.movement_part(door, part)
 
 
 func _projection(input: Vector2, normal: Vector2) -> Vector2:
@@ -76,11 +79,11 @@ func test_sliding_along_the_floor_feels_friction_against_the_tangential_input() 
 
 func test_a_crate_on_top_is_felt_but_not_one_underneath() -> void:
 	var on_top: HapticFrame = HapticFrame.new()
-	on_top.resting = [TestHaptics.load(Vector2.DOWN, 1.2)]
+	on_top.resting = [HapticsTestKit.load(Vector2.DOWN, 1.2)]
 	_push(Vector2.ZERO, on_top, 5)
 	assert_almost_eq(_part(WEIGHT), Vector2(0.0, 1.2), TOL)
 	var underneath: HapticFrame = HapticFrame.new()
-	underneath.resting = [TestHaptics.load(Vector2.UP, 1.2)]
+	underneath.resting = [HapticsTestKit.load(Vector2.UP, 1.2)]
 	_push(Vector2.ZERO, underneath, 5)
 	assert_almost_eq(_part(WEIGHT), Vector2.ZERO, TOL)
 
@@ -107,9 +110,9 @@ func test_no_contact_means_no_continuous_force() -> void:
 
 
 func test_an_impact_is_a_raw_decaying_transient() -> void:
-	assert_true(door.configure("smoothing", {"enabled": true}))
+	door.smoothing_enabled = true
 	_push(Vector2.ZERO, HapticFrame.new(), 5)
-	assert_true(door.push_impact(TestHaptics.impact(Vector2.LEFT, 2.0, 0.5, 100.0, 0.02)))
+	assert_true(door.push_impact(HapticsTestKit.impact(Vector2.LEFT, 2.0, 0.5, 100.0, 0.02)))
 	var peak: float = 0.0
 	var peak_tick: int = -1
 	var late: float = 0.0
@@ -132,21 +135,21 @@ func test_nan_in_a_frame_is_rejected_and_the_previous_frame_stays() -> void:
 	_push(Vector2(0.06, 0.0), _wall(Vector2.LEFT))
 	var before: Vector2 = _part(NORMAL)
 	expect_error("submit_frame: HapticFrame.contacts[0].normal: not finite")
-	assert_false(door.submit_frame(TestHaptics.wall(Vector2(NAN, 0.0))))
+	assert_false(door.submit_frame(HapticsTestKit.wall(Vector2(NAN, 0.0))))
 	door.servo.step(0.001)
 	assert_almost_eq(_part(NORMAL), before, 0.01)
 
 
 func test_a_contact_without_a_direction_names_itself() -> void:
 	expect_error("submit_frame: HapticFrame.contacts[0].normal: zero length: a direction is needed")
-	assert_false(door.submit_frame(TestHaptics.wall(Vector2.ZERO)))
+	assert_false(door.submit_frame(HapticsTestKit.wall(Vector2.ZERO)))
 
 
 func test_a_material_out_of_range_names_its_field() -> void:
 	expect_error("HapticFrame.contacts[0].material.stiffness_n: 200 is outside [0, 100]")
-	assert_false(door.submit_frame(TestHaptics.wall(Vector2.UP, 200.0)))
+	assert_false(door.submit_frame(HapticsTestKit.wall(Vector2.UP, 200.0)))
 	expect_error("HapticImpact.speed_m_per_s")
-	assert_false(door.push_impact(TestHaptics.impact(Vector2.UP, -1.0)))
+	assert_false(door.push_impact(HapticsTestKit.impact(Vector2.UP, -1.0)))
 
 
 func test_bytes_that_are_no_frame_are_refused_by_name() -> void:
@@ -162,18 +165,21 @@ func test_bytes_that_are_no_frame_are_refused_by_name() -> void:
 
 
 func test_bad_settings_are_refused_and_the_old_ones_kept() -> void:
-	var cutoff: float = door.get_config()["smoothing"]["cutoff_hz"]
-	expect_error("cutoff_hz")
-	assert_false(door.configure("smoothing", {"cutoff_hz": NAN}))
-	assert_eq(door.get_config()["smoothing"]["cutoff_hz"], cutoff)
-	expect_error("unknown setting 'max_forc'")
-	assert_false(door.configure("safety", {"max_forc": 1.0}))
-	expect_error("unknown section 'bogus'")
-	assert_false(door.configure("bogus", {}))
+	var settings: HapticMovementSettings = HapticsTestKit.movement(door)
+	var cutoff: float = settings.smoothing.cutoff_hz
+	settings.smoothing.cutoff_hz = NAN
+	expect_error("HapticMovementSettings.smoothing.cutoff_hz: not finite")
+	assert_false(HapticsMovement.of(door).apply_settings(settings))
+	assert_eq(HapticsTestKit.movement(door).smoothing.cutoff_hz, cutoff)
+	var servo: HapticServoSettings = door.servo.get_settings()
+	servo.safety.max_force_n = -1.0
+	expect_error("HapticServoSettings.safety.max_force_n")
+	assert_false(door.servo.apply_settings(servo))
+	assert_eq(door.servo.get_settings().safety.max_force_n, 0.0)
 
 
 func test_force_output_never_exceeds_the_device_limit() -> void:
-	_push(Vector2(0.1, 0.0), TestHaptics.wall(Vector2.LEFT, 90.0, 0.0))
+	_push(Vector2(0.1, 0.0), HapticsTestKit.wall(Vector2.LEFT, 90.0, 0.0))
 	var limit: float = door.device.get_max_force()
 	assert_almost_eq(limit, 3.3, 1e-6)
 	assert_lt(door.get_forces().total.length(), limit + 1e-4)

@@ -2,11 +2,11 @@ extends TestSuite
 ## The servo thread as the game uses it, through a door of the test's own: start, stats,
 ## stop, device loss, bad devices.
 
-var door: TestHaptics.Door = null
+var door: HapticsTestKit.Door = null
 
 
 func before_each() -> void:
-	door = autofree(TestHaptics.Door.new())
+	door = autofree(HapticsTestKit.Door.new())
 
 
 func test_the_thread_runs_and_reports_its_statistics() -> void:
@@ -59,7 +59,7 @@ func test_frames_from_the_game_reach_the_thread() -> void:
 	assert_true(door.device.open("simulated"))
 	assert_true(door.servo.start(500.0))
 	for i: int in 5:
-		door.submit_frame(TestHaptics.wall(Vector2.UP))
+		door.submit_frame(HapticsTestKit.wall(Vector2.UP))
 		await wait_physics_frames(1)
 	assert_gt(door.servo.get_stats().frames_received, 0)
 
@@ -104,7 +104,7 @@ func test_many_start_stop_cycles_through_the_binding() -> void:
 
 
 func test_freeing_a_running_door_stops_its_thread() -> void:
-	var running: TestHaptics.Door = TestHaptics.manual()
+	var running: HapticsTestKit.Door = HapticsTestKit.manual()
 	assert_true(running.servo.start())
 	running.free()  # its server goes with it: the core joins the thread
 	await wait_physics_frames(1)

@@ -9,13 +9,13 @@ const Haptics := preload("res://addons/haptics/door/haptics.gd")
 const SETTING := "haptics/servo/spin_us"
 const REFUSED_AT_1000_HZ := "spin_us must be in [0, 500] (half a period at 1000 Hz)"
 
-var door: TestHaptics.Door = null
+var door: HapticsTestKit.Door = null
 var servo: HapticsServo = null
 var _setting_before: Variant = null
 
 
 func before_each() -> void:
-	door = autofree(TestHaptics.manual())
+	door = autofree(HapticsTestKit.manual())
 	servo = door.servo
 	_setting_before = ProjectSettings.get_setting(SETTING, null)
 

@@ -202,7 +202,7 @@ func _assert_bent_by_spin(ticks: Vector2i, player: int) -> void:
 	var bent: Vector3 = change - facing * change.dot(facing)
 	var slip: Vector3 = before.ball_spin.cross(-facing * _match.court.ball_radius)
 	var grip: Vector3 = -slip * 2.0 / 7.0
-	var friction: float = _match.court.number("surface_friction") * change.dot(facing)
+	var friction: float = _match.court.settings.surface_friction * change.dot(facing)
 	var expected: float = minf(grip.length(), friction)
 	print(
 		(
@@ -218,11 +218,12 @@ func _assert_bent_by_spin(ticks: Vector2i, player: int) -> void:
 # --- Reading the results --------------------------------------------------------------
 
 
-# A bullet's constant force: [param kind]'s size and duration, along [param direction]
-# (device space), starting at tick [param from].
+# A bullet's constant force: [param kind]'s ("recoil" or "hit") size and duration, along
+# [param direction] (device space), starting at tick [param from].
 func _assert_pulse(from: int, kind: String, direction: Vector3) -> void:
-	var size: float = _match.court.number(kind + "_force_n")
-	var duration: float = _match.court.number(kind + "_duration_s")
+	var settings: PongSettings = _match.court.settings
+	var size: float = settings.recoil_force_n if kind == "recoil" else settings.hit_force_n
+	var duration: float = settings.recoil_duration_s if kind == "recoil" else settings.hit_duration_s
 	var peak: float = _probe.peak(from)
 	print("    %s: peak %.3f N for %.3f s" % [kind, peak, _probe.span_s(from, size * 0.5)])
 	assert_almost_eq(peak, size, size * PULSE_FORCE_TOLERANCE, "%s: its size, newtons" % kind)

@@ -63,7 +63,7 @@ func test_a_paddle_hit_pushes_the_hand_along_the_paddles_normal() -> void:
 	var facing: Vector3 = contact["facing"]
 	var peak: int = _probe.peak_index(from, to)
 	var force: Vector3 = _probe.force(peak)
-	var limit: float = _match.court.number("contact_force_n")
+	var limit: float = _match.court.settings.contact_force_n
 	assert_gt(force.length(), 0.2, "the contact is felt")
 	assert_lt(force.length(), limit + 0.05, "no more than the contact law's c")
 	assert_gt(force.normalized().dot(-facing), 0.97, "pushed back, along the paddle's normal")
@@ -87,7 +87,7 @@ func test_a_spin_hit_spins_the_ball_drags_the_hand_and_the_spin_bends_the_next_h
 	var spun: PongState = _probe.states[to]
 	assert_gt(spun.ball_spin.length(), 5.0, "the brush spun the ball (rad/s)")
 	# The spinning ball drags the hand along its surface, in the paddle's plane.
-	var gain: float = _match.court.number("spin_force_gain")
+	var gain: float = _match.court.settings.spin_force_gain
 	var facing_world: Vector3 = contact["facing_world"]
 	var lever: Vector3 = -facing_world * _match.court.ball_radius
 	var expected: Vector3 = _device(0, spun.ball_spin.cross(lever) * gain)

@@ -15,7 +15,7 @@ func test_a_slow_mine_resists_the_hands_motion() -> void:
 		return false
 	_probe.run(3.0, swing)
 	assert_not_null(_servo_effect("slow"), "the servo runs the slow effect")
-	var damping: float = _match.court.number("slow_damping_n_s_per_m")
+	var damping: float = _match.court.settings.slow_damping_n_s_per_m
 	var ratios: Array[float] = []
 	var alignment: float = 0.0
 	for i: int in range(from + 500, from + 3000):
@@ -38,9 +38,9 @@ func test_a_heavy_mine_weighs_the_hand_down_for_its_duration() -> void:
 	var from: int = _step_on_mine("heavy")
 	if from < 0:
 		return
-	var duration: float = _match.court.number("mine_effect_duration_s")
-	var ramp: float = _match.court.number("mine_effect_ramp_s")
-	var weight: float = _match.court.number("heavy_force_n")
+	var duration: float = _match.court.settings.mine_effect_duration_s
+	var ramp: float = _match.court.settings.mine_effect_ramp_s
+	var weight: float = _match.court.settings.heavy_force_n
 	_probe.run(duration + 0.5)
 	var middle: int = from + roundi(duration * 0.5 / PongServo.TICK_S)
 	var held: Vector3 = _probe.mean(middle - 50, middle + 50)
@@ -70,7 +70,7 @@ func test_a_remote_mine_pulls_the_hand_to_the_owners_mirrored_stylus() -> void:
 		PongCourt.side_rotation(1).inverse() * _match.controllers[1].intent.paddle_offset / scale
 	)
 	var target: Vector3 = Vector3(-owner_m.x, owner_m.y, owner_m.z)
-	var cap: float = _match.court.number("remote_max_force_n")
+	var cap: float = _match.court.settings.remote_max_force_n
 	var force: Vector3 = _probe.force(at)
 	assert_almost_eq(force.length(), cap, cap * EFFECT_FORCE_TOLERANCE, "the spring at its cap")
 	assert_gt(

@@ -133,5 +133,4 @@ func test_a_four_computer_match_ends_with_one_winner() -> void:
 	assert_gt(match_node.rules.get_health(winner), 0)
 	assert_eq(territories.size(), 4, "the ball visited every triangle")
 	await _free_pong()
-	var pong_config: Dictionary = PongServo.shared().get_config()
-	assert_eq(pong_config["players"], 2, "the servo is back to two players")
+	assert_eq(PongServo.shared().get_settings().players, 2, "the servo is back to two players")

@@ -69,7 +69,7 @@ func test_a_mines_effect_starts_and_ends_on_time() -> void:
 		return
 	if not assert_eq(match_node.local_player, 0, "player 0 plays on the simulated device"):
 		return
-	var duration: float = match_node.court.number("mine_effect_duration_s")
+	var duration: float = match_node.court.settings.mine_effect_duration_s
 	var avatar: Vector3 = match_node.avatar_of(0)
 	var mine: PongMines.Mine = match_node.mines.place(
 		1, Vector3(avatar.x, 0.0, -avatar.z), match_node.court

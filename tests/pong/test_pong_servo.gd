@@ -10,12 +10,12 @@ const EVENT := PongServoFacts.PongEventType
 const SURFACE := PongServoFacts.CourtSurface
 const KIND := PongServoFacts.PongEffectKind
 
-var door: TestHaptics.Door = null
+var door: HapticsTestKit.Door = null
 var pong: PongServo = null
 
 
 func before_each() -> void:
-	door = autofree(TestHaptics.manual())
+	door = autofree(HapticsTestKit.manual())
 	pong = PongServo.new(door)
 	assert_true(door.device.set_hand_target_3d(Vector3.ZERO))
 	assert_true(pong.enter())
@@ -58,16 +58,20 @@ func _send(value: HapticsValue) -> bool:
 	return door.renderer(PongServo.NAME).send(value)
 
 
-func test_pong_is_a_renderer_by_name_with_its_own_config_section() -> void:
+func test_pong_is_a_renderer_by_name_with_its_own_settings() -> void:
 	assert_true(pong.is_available())
 	assert_true(pong.is_active())
 	assert_eq(door.get_render_mode(), PongServo.NAME)
-	var config: Dictionary = pong.get_config()
-	assert_almost_eq(config["contact_force_n"], 1.6, 1e-9, "c = k_p d by default")
-	assert_true(pong.configure({"gravity_m_per_s2": 0.0, "spin_gain": 2000.0}))
-	assert_eq(pong.get_config()["gravity_m_per_s2"], 0.0)
-	expect_error("pong.restitution_paddle must be in [0, 1] (got 1.5)")
-	assert_false(pong.configure({"restitution_paddle": 1.5}))
+	var settings: PongSettings = pong.get_settings()
+	assert_almost_eq(settings.contact_force_n, 1.6, 1e-9, "c = k_p d by default")
+	settings.gravity_m_per_s2 = 0.0
+	settings.spin_gain = 2000.0
+	assert_true(pong.apply_settings(settings))
+	assert_eq(pong.get_settings().gravity_m_per_s2, 0.0)
+	settings.restitution_paddle = 1.5
+	expect_error("PongSettings.restitution_paddle: 1.5 is outside [0, 1]")
+	assert_false(pong.apply_settings(settings))
+	assert_eq(pong.get_settings().restitution_paddle, PongSettings.new().restitution_paddle)
 	pong.leave()
 	assert_false(pong.is_active())
 	assert_eq(door.get_render_mode(), &"movement", "leave() restores the renderer before")
@@ -121,7 +125,7 @@ func test_a_wall_bounce_names_the_wall() -> void:
 	var input: PongInput = _flat_paddle()
 	input.players[0].active = false
 	input.beginner = true
-	var height: float = pong.get_config()["beginner_height_m"]
+	var height: float = pong.get_settings().beginner_height_m
 	assert_true(pong.set_ball(Vector3(1.0, height, 0.5), Vector3(3.0, 0.0, 0.0)))
 	var walls: Array[PongEvent] = PongTestEvents.of_type(_play(input, 300), EVENT.WALL)
 	assert_gt(walls.size(), 0)
@@ -131,9 +135,9 @@ func test_a_wall_bounce_names_the_wall() -> void:
 
 
 func test_effects_push_the_device_players_hand_in_its_own_device_space() -> void:
-	var config: Dictionary = pong.get_config()
-	var recoil_s: float = config["recoil_duration_s"]
-	var mine_s: float = config["mine_effect_duration_s"]
+	var settings: PongSettings = pong.get_settings()
+	var recoil_s: float = settings.recoil_duration_s
+	var mine_s: float = settings.mine_effect_duration_s
 	var strength: float = PongServo.DEFAULT_STRENGTH
 	for local_player: int in [0, 1]:
 		assert_true(pong.set_input(_flat_paddle(local_player)))
@@ -158,7 +162,7 @@ func test_effects_push_the_device_players_hand_in_its_own_device_space() -> void
 
 
 func test_the_3d_hand_target_moves_the_paddle_in_depth() -> void:
-	var scale: float = pong.get_config()["workspace_scale"]
+	var scale: float = pong.get_settings().workspace_scale
 	assert_true(pong.set_hand_target_3d(Vector3(0.0, 0.0, 0.04)))
 	_play(_flat_paddle(), 500)
 	var center: Vector3 = pong.get_state().paddle_centers[0]
@@ -266,11 +270,15 @@ func test_the_state_decodes_with_every_seat_and_the_far_paddle_faces_home() -> v
 
 
 func test_four_players_a_square_court_four_states_and_back_wall_owners() -> void:
-	expect_error("pong.players must be 2")
-	assert_false(pong.configure({"players": 3}), "3 is not built")
-	assert_eq(pong.get_config()["players"], 2, "a refused count changes nothing")
-	assert_true(pong.configure({"players": 4, "gravity_m_per_s2": 0.0}))
-	assert_eq(pong.get_config()["players"], 4)
+	var settings: PongSettings = pong.get_settings()
+	settings.players = 3
+	expect_error("PongSettings.players")
+	assert_false(pong.apply_settings(settings), "3 is not built")
+	assert_eq(pong.get_settings().players, 2, "a refused count changes nothing")
+	settings.players = 4
+	settings.gravity_m_per_s2 = 0.0
+	assert_true(pong.apply_settings(settings))
+	assert_eq(pong.get_settings().players, 4)
 	var input: PongInput = PongInput.new()
 	input.local_player = -1
 	for seat: int in PongServoFacts.PONG_MAX_PLAYERS:
@@ -279,7 +287,7 @@ func test_four_players_a_square_court_four_states_and_back_wall_owners() -> void
 	assert_true(pong.set_input(input))
 	# Toward player 2's back wall (x = +L, the square court's "right"): beyond the 2-player
 	# court's width, inside the square.
-	var l: float = pong.get_config()["court_half_length_m"]
+	var l: float = settings.court_half_length_m
 	assert_true(pong.set_ball(Vector3(l - 0.5, 1.0, 0.2), Vector3.RIGHT * 3.0))
 	var walls: Array[PongEvent] = PongTestEvents.of_type(_play(input, 400), EVENT.WALL)
 	assert_eq(walls.size(), 1)
@@ -298,6 +306,7 @@ func test_four_players_a_square_court_four_states_and_back_wall_owners() -> void
 	expect_error("PongCommand.player: 4 is outside [0, 3]")
 	assert_false(_send(_effect_command(4, KIND.HEAVY)))
 	assert_true(pong.apply_effect(3, "heavy", PongServo.DEFAULT_STRENGTH, 1.0))
-	assert_true(pong.configure({"players": 2}))
+	settings.players = 2
+	assert_true(pong.apply_settings(settings))
 	assert_true(door.servo.step(PongServo.TICK_S))
 	assert_eq(pong.get_state().player_count, 2)

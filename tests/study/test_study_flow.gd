@@ -200,7 +200,7 @@ func test_latin_square_orders_follow_the_participants_in_the_folder() -> void:
 func test_leaving_the_study_gives_back_the_haptics_settings() -> void:
 	var saved: float = Haptics.force_scale
 	Haptics.force_scale = 0.7
-	var model: String = Haptics.get_choice("force_model", "contact_model")
+	var model: HapticMovementFacts.ContactModel = _contact_model()
 	var study: StudyRunner = _study("P06")
 	var in_trial: bool = await wait_until(
 		func() -> bool: return study.phase == StudySession.Phase.TRIAL, 15.0
@@ -209,14 +209,14 @@ func test_leaving_the_study_gives_back_the_haptics_settings() -> void:
 	assert_false(Haptics.hand_follows_input, "the scripted participant holds the hand")
 	var condition: String = study.current_condition()
 	if not StudyFormat.is_position_control(condition):
-		assert_eq(Haptics.get_choice("force_model", "contact_model"), "paper_sum", condition)
+		assert_eq(_contact_model(), HapticMovementFacts.ContactModel.PAPER_SUM, condition)
 	study.queue_free()
 	await wait_process_frames(2)
 	assert_almost_eq(Haptics.force_scale, 0.7, 1e-6, "force scale given back")
 	assert_true(Haptics.hand_follows_input, "the mouse moves the hand again")
 	assert_true(Haptics.smoothing_enabled)
 	assert_eq(str(Haptics.get_render_mode()), "movement")
-	assert_eq(Haptics.get_choice("force_model", "contact_model"), model, "contact model given back")
+	assert_eq(_contact_model(), model, "contact model given back")
 	Haptics.force_scale = saved
 
 
@@ -264,7 +264,7 @@ func _check_trials(folder: String, order: PackedStringArray, recorded: Array[Tri
 		assert_eq(record["level"], "tiny_maze")
 		assert_eq(record["trial_index"], "0")
 		var model: String = "" if StudyFormat.is_position_control(condition) else "paper_sum"
-		assert_eq(record["contact_model"], model, "%s: the server's contact model" % condition)
+		assert_eq(record["contact_model"], model, "%s: the renderer's contact model" % condition)
 		assert_eq(recorded[i].contact_model, model)
 		assert_eq(record["completed"], "1", "the autopilot reached the goal")
 		for column: String in ["time_to_goal_s", "contact_time_s", "path_length_px"]:
@@ -310,3 +310,7 @@ func _check_with_the_analysis_tool() -> void:
 	assert_eq(summary.get("warnings"), [], "and has no warnings about it")
 	assert_true(FileAccess.file_exists(out.path_join("report.md")))
 	assert_true(FileAccess.file_exists(out.path_join("fig7_total.png")))
+
+
+func _contact_model() -> HapticMovementFacts.ContactModel:
+	return HapticsMovement.of(Haptics).get_settings().force_model.contact_model

@@ -57,12 +57,9 @@ func test_fields_are_checked_against_their_column() -> void:
 		assert_eq(StudyFormat.field_problem(column, str(case[1])), str(case[2]), what)
 
 
-func test_the_contact_models_are_the_servers_names() -> void:
-	var names: Array = []
-	for field: Dictionary in HapticsServer.new().get_config_fields():
-		if field["section"] == "force_model" and field["key"] == "contact_model":
-			names = field["choices"]
-	assert_eq(StudyFormat.contact_models, PackedStringArray(names))
+func test_the_contact_models_are_the_renderers_names() -> void:
+	var names: PackedStringArray = HapticsValue.choice_names(HapticMovementFacts.ContactModel)
+	assert_eq(StudyFormat.contact_models, names)
 
 
 func test_the_resume_scan_reads_records_by_column_name() -> void:

@@ -108,8 +108,7 @@ func test_the_wall_touching_participant_records_what_each_condition_renders() ->
 	var geometry: Geometry = Geometry.new()
 	geometry.read_level(TINY_MAZE)
 	var checks: Checks = Checks.new(geometry)
-	var force_model: Dictionary = Haptics.get_config().get("force_model", {})
-	checks.dead_zone = force_model.get("dead_zone", 0.0)
+	checks.dead_zone = Haptics.servo.get_settings().input.dead_zone
 	var records: Array[Dictionary] = Support.records_of(folder.path_join("trials.csv"))
 	assert_eq(records.size(), 3, "one trial per condition")
 	for record: Dictionary in records:

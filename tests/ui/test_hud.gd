@@ -23,7 +23,7 @@ func test_each_component_becomes_an_arrow_along_its_force() -> void:
 		_hud
 		. show_forces(
 			(
-				TestHaptics
+				HapticsTestKit
 				. forces_of(
 					{
 						"normal": Vector2(-MAX_FORCE, 0.0),
@@ -48,13 +48,13 @@ func test_each_component_becomes_an_arrow_along_its_force() -> void:
 
 
 func test_the_arrows_at_the_player_show_the_same_forces() -> void:
-	_hud.show_forces(TestHaptics.forces_of({"normal": Vector2(0.0, -1.0)}))
+	_hud.show_forces(HapticsTestKit.forces_of({"normal": Vector2(0.0, -1.0)}))
 	var world: ForceArrows = _hud.get_world_arrows()
 	assert_almost_eq(world.get_arrow("normal"), Vector2(0.0, -world.full_length / MAX_FORCE), 1e-3)
 
 
 func test_zero_components_draw_nothing_and_unknown_names_have_no_arrow() -> void:
-	_hud.show_forces(TestHaptics.forces_of({"weight": Vector2(0.0, 1.0)}))
+	_hud.show_forces(HapticsTestKit.forces_of({"weight": Vector2(0.0, 1.0)}))
 	var arrows: ForceArrows = _hud.get_world_arrows()
 	assert_ne(arrows.get_arrow("weight"), Vector2.ZERO)
 	assert_eq(arrows.get_arrow("normal"), Vector2.ZERO)
@@ -84,7 +84,7 @@ func test_the_components_are_named_from_the_renderers_parts() -> void:
 
 func test_forces_beyond_the_device_maximum_are_capped_but_keep_their_direction() -> void:
 	var arrows: ForceArrows = _hud.get_world_arrows()
-	_hud.show_forces(TestHaptics.forces_of({"impact": Vector2(30.0, -40.0)}))
+	_hud.show_forces(HapticsTestKit.forces_of({"impact": Vector2(30.0, -40.0)}))
 	var arrow: Vector2 = arrows.get_arrow("impact")
 	assert_almost_eq(arrow.length(), arrows.full_length * arrows.max_length_ratio, 1e-3)
 	assert_almost_eq(arrow.normalized(), Vector2(0.6, -0.8), 1e-4)
@@ -93,14 +93,14 @@ func test_forces_beyond_the_device_maximum_are_capped_but_keep_their_direction()
 func test_the_scale_follows_the_device_maximum_force() -> void:
 	_hud.set_max_force(8.0)
 	var arrows: ForceArrows = _hud.get_world_arrows()
-	_hud.show_forces(TestHaptics.forces_of({"normal": Vector2(4.0, 0.0)}))
+	_hud.show_forces(HapticsTestKit.forces_of({"normal": Vector2(4.0, 0.0)}))
 	assert_almost_eq(arrows.get_arrow("normal"), Vector2(arrows.full_length * 0.5, 0.0), 1e-3)
 	assert_eq(_hud.get_plot().y_max, 8.0)
 
 
 func test_the_legend_shows_each_magnitude() -> void:
 	_hud.show_forces(
-		TestHaptics.forces_of({"normal": Vector2(3.0, 4.0), "total": Vector2(0.0, -1.234)})
+		HapticsTestKit.forces_of({"normal": Vector2(3.0, 4.0), "total": Vector2(0.0, -1.234)})
 	)
 	assert_eq(_hud.get_legend_value("normal").text, "5.00 N")
 	assert_eq(_hud.get_legend_value("friction").text, "0.00 N")
@@ -116,7 +116,7 @@ func test_every_hud_control_lets_the_mouse_through() -> void:
 
 
 func test_the_plot_samples_the_total_magnitude_each_frame() -> void:
-	_hud.show_forces(TestHaptics.forces_of({"total": Vector2(0.0, 2.0)}))
+	_hud.show_forces(HapticsTestKit.forces_of({"total": Vector2(0.0, 2.0)}))
 	await wait_process_frames(12)
 	var plot: ForcePlot = _hud.get_plot()
 	assert_gt(plot.buffer.size(), 0)

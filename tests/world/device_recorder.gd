@@ -1,5 +1,5 @@
 extends RefCounted
-## Runs a test's own door ([code]TestHaptics.manual()[/code]) in step with the game: after
+## Runs a test's own door ([code]HapticsTestKit.manual()[/code]) in step with the game: after
 ## each physics frame, 1 ms servo ticks until device time has caught up with game time,
 ## recording what the device received on every tick (its [HapticForces], newtons, game axes:
 ## [code]total[/code], [code]impact[/code], and the movement renderer's [code]weight[/code],
@@ -8,18 +8,18 @@ extends RefCounted
 ## One servo tick, seconds.
 const TICK_S := 0.001
 ## The forces recorded per tick: [code]total[/code], [code]impact[/code], then movement
-## components by their names in [code]HapticMovement.MOVEMENT_FORCE_NAMES[/code].
+## components by their names in [code]HapticMovementFacts.MOVEMENT_FORCE_NAMES[/code].
 const KEYS: PackedStringArray = ["total", "impact", "weight", "drag", "inertia", "normal"]
 
 ## Each tick's record: [code]t[/code] (device seconds) and one Vector2 per [constant KEYS].
 var samples: Array[Dictionary] = []
 
-var _door: TestHaptics.Door = null
+var _door: HapticsTestKit.Door = null
 var _device_time: float = 0.0
 var _game_time: float = 0.0
 
 
-func _init(door: TestHaptics.Door) -> void:
+func _init(door: HapticsTestKit.Door) -> void:
 	_door = door
 
 
@@ -32,7 +32,7 @@ func run(dt: float) -> void:
 		var forces: HapticForces = _door.get_forces()
 		var sample: Dictionary = {"t": _device_time, "total": forces.total, "impact": forces.impact}
 		for key: String in KEYS:
-			var part: int = HapticMovement.MOVEMENT_FORCE_NAMES.find(key)
+			var part: int = HapticMovementFacts.MOVEMENT_FORCE_NAMES.find(key)
 			if part >= 0:
 				sample[key] = forces.parts[part]
 		samples.append(sample)

@@ -1,12 +1,12 @@
 extends TestSuite
-## What the game-action suites share: a door of the test's own ([code]TestHaptics.manual()[/code]:
+## What the game-action suites share: a door of the test's own ([code]HapticsTestKit.manual()[/code]:
 ## the simulated device, no start-up ramp) that a probe talks to, run 1 ms tick by tick in step
 ## with the physics while [member recorder] keeps what the device received, and the impacts
 ## the probe reported.
 
 const DeviceRecorder := preload("res://tests/world/device_recorder.gd")
 
-var door: TestHaptics.Door = null
+var door: HapticsTestKit.Door = null
 var recorder: DeviceRecorder = null
 ## Each impact the watched probe reported: [code]normal[/code], [code]speed[/code] (m/s).
 var impacts: Array[Dictionary] = []
@@ -14,8 +14,8 @@ var impacts: Array[Dictionary] = []
 
 ## Opens the door (call in before_each, before [method watch]); it is freed after the test.
 func open_door() -> void:
-	door = autofree(TestHaptics.manual())
-	assert_true(door.configure("safety", {"startup_ramp_s": 0.0}))
+	door = autofree(HapticsTestKit.manual())
+	assert_true(HapticsTestKit.no_ramp(door))
 	recorder = DeviceRecorder.new(door)
 	impacts.clear()
 
@@ -28,7 +28,7 @@ func watch(probe: HapticProbe) -> void:
 
 ## Puts the simulated hand at [param normalized] times 10 cm (game axes).
 func hand(normalized: Vector2) -> void:
-	assert_true(TestHaptics.set_hand_m(door, normalized * 0.1))
+	assert_true(HapticsTestKit.set_hand_m(door, normalized * 0.1))
 
 
 ## Waits [param count] physics frames, the servo running through each.

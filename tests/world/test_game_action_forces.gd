@@ -84,7 +84,7 @@ func test_a_crate_landing_on_the_avatar_knocks_down_then_weighs() -> void:
 		assert_almost_eq(normal, Vector2.DOWN, 0.1, "from above")
 	assert_gt(recorder.peak("impact", Vector2.DOWN, first), 0.5, "the knock, N")
 	assert_gt(recorder.peak("total", Vector2.DOWN, first), 0.5, "in the total, N")
-	var per_kg: float = door.get_config()["force_model"]["gravity_n_per_kg"]
+	var per_kg: float = HapticsTestKit.movement(door).force_model.gravity_n_per_kg
 	var weight: Vector2 = recorder.last("weight")
 	assert_almost_eq(weight, Vector2.DOWN * crate.mass * per_kg, 0.1 * crate.mass * per_kg, "N")
 	assert_almost_eq(recorder.last("total"), weight, 0.05, "all that is felt, N")

@@ -121,7 +121,7 @@ func test_an_enemy_standing_on_the_head_is_felt_as_weight() -> void:
 	if resting.size() == 1:
 		assert_almost_eq(resting[0].mass_kg, RigidStage.ENEMY_MASS, 1e-4)
 		assert_almost_eq(resting[0].normal, Vector2.DOWN, 0.05)
-	var per_kg: float = door.get_config()["force_model"]["gravity_n_per_kg"]
+	var per_kg: float = HapticsTestKit.movement(door).force_model.gravity_n_per_kg
 	var expected: Vector2 = Vector2.DOWN * RigidStage.ENEMY_MASS * per_kg
 	assert_almost_eq(recorder.last("weight"), expected, 0.05 * per_kg, "weight, N")
 	assert_gt(recorder.last("total").y, 0.5 * expected.y, "the hand is pressed down")

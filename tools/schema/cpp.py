@@ -1,6 +1,7 @@
 """The C++ header of a schema file: its constants, enums (with EnumInfo) and values (structs
 with their fields' defaults and a visit() listing each field's FieldSpec)."""
 
+import json
 import math
 import os
 
@@ -112,7 +113,7 @@ def spec(f):
     if not f.finite:
         items.append(".finite = false")
     if f.zero_means:
-        items.append(".zero_allowed = true")
+        items.append(f".zero_means = {json.dumps(f.zero_means)}")
     return "FieldSpec{ " + ", ".join(items) + " }"
 
 

@@ -235,7 +235,7 @@ def value_class(schema_set, v):
         out += wrapped("", f"var {f.name}: {gd_type(f)} = ", gd_default(f))
     out.append("")
     out.append("")
-    out.append("## This value's bytes (docs/values.md): what HapticsServer and the network take.")
+    out.append("## This value's bytes (docs/values.md): what the native library and the network take.")
     out.append("func encode() -> PackedByteArray:")
     out.append("\tvar writer: HapticsWireWriter = HapticsWireWriter.new(SCHEMA_ID)")
     out.append("\twrite_to(writer)")

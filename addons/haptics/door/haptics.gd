@@ -1,5 +1,5 @@
 extends Node
-## The one door from GDScript to the native [code]HapticsServer[/code] (registered as the
+## The one door from GDScript to the native [code]HapticsSystem[/code] (registered as the
 ## [code]Haptics[/code] autoload), and the owner of the game-wide haptic settings: the force
 ## scale and smoothing (kept in the servo's configuration), the control mode and whether the
 ## simulated hand follows the user's input.
@@ -22,7 +22,7 @@ extends Node
 signal status_changed
 
 ## Class name the extension registers.
-const SERVER_CLASS := &"HapticsServer"
+const NATIVE_CLASS := &"HapticsSystem"
 ## The backend that talks to it, loaded only when the class exists.
 const NATIVE_BACKEND_PATH := "res://addons/haptics/door/haptics_native_backend.gd"
 ## The device's input vector drives the player (acceleration control).
@@ -38,8 +38,8 @@ const SETTING_HAND_ACTIONS := "haptics/input/hand_actions"
 ## [method Input.get_axis]; an empty list (the default): none.
 const SETTING_FEED_ACTIONS := "haptics/input/feed_actions"
 ## The project setting for the servo's busy-wait before each deadline, in microseconds
-## (HapticsServer.start's [code]spin_us[/code]: 0 to half a period, or -1, the default: the
-## servo's own, HapticsServer.DEFAULT_SPIN_US under real time and none without). More spin,
+## (HapticsSystem.start's [code]spin_us[/code]: 0 to half a period, or -1, the default: the
+## servo's own, HapticsSystem.DEFAULT_SPIN_US under real time and none without). More spin,
 ## steadier ticks, more of a core; docs/servo-timing.md has the measurements.
 const SETTING_SPIN_US := "haptics/servo/spin_us"
 ## The hand's actions when the project names none: Godot's own, which every project has
@@ -52,31 +52,44 @@ const DEFAULT_FEED_ACTIONS: PackedStringArray = []
 const SETTINGS: Dictionary[String, PackedStringArray] = {
 	SETTING_HAND_ACTIONS: DEFAULT_HAND_ACTIONS, SETTING_FEED_ACTIONS: DEFAULT_FEED_ACTIONS
 }
-# The servo's settings while there is no server to keep them (nothing is rendered then),
-# starting from the defaults.
-const _OFFLINE_DEFAULTS: Dictionary = {"safety.force_scale": 1.0, "smoothing.enabled": true}
 # The keys, buttons, sticks and mouse that move the simulated hand, and the actions fed.
 const HapticsInput := preload("res://addons/haptics/door/haptics_input.gd")
 const HapticsBackend := preload("res://addons/haptics/door/haptics_backend.gd")
 
-## The player's strength preference, a gain on everything rendered. Kept by the servo;
-## finite values are clamped to its range ([method get_force_scale_range]), NaN is refused.
+## The player's strength preference, a gain on everything rendered. Kept by the servo
+## ([member HapticSafetySettings.force_scale]); finite values are clamped to its range
+## ([method get_force_scale_range]), NaN is refused.
 var force_scale: float:
 	get:
-		return float(_setting("safety", "force_scale"))
+		return servo.get_settings().safety.force_scale if is_available() else _offline_force_scale
 	set(value):
 		if is_nan(value):
 			push_error("Haptics.force_scale: not a number; keeping %s." % force_scale)
 			return
-		var scale_range: Vector2 = get_force_scale_range()
-		_set_setting("safety", "force_scale", clampf(value, scale_range.x, scale_range.y))
+		value = clampf(value, HapticSafetySettings.FORCE_SCALE_MIN, HapticSafetySettings.FORCE_SCALE_MAX)
+		if is_available():
+			var settings: HapticServoSettings = servo.get_settings()
+			settings.safety.force_scale = value
+			servo.apply_settings(settings)
+		else:
+			_offline_force_scale = value
+			status_changed.emit()
 ## Low-pass smoothing of the continuous force (50 Hz frames → 1 kHz output); kept by the
-## servo.
+## movement renderer ([member HapticSmoothingSettings.enabled]).
 var smoothing_enabled: bool:
 	get:
-		return bool(_setting("smoothing", "enabled"))
+		if not is_available():
+			return _offline_smoothing
+		return HapticsMovement.of(self).get_settings().smoothing.enabled
 	set(value):
-		_set_setting("smoothing", "enabled", value)
+		if is_available():
+			var movement: HapticsMovement = HapticsMovement.of(self)
+			var settings: HapticMovementSettings = movement.get_settings()
+			settings.smoothing.enabled = value
+			movement.apply_settings(settings)
+		else:
+			_offline_smoothing = value
+			status_changed.emit()
 ## [constant CONTROL_DEVICE] or [constant CONTROL_KEYBOARD]; anything else is refused.
 var control_mode: StringName = CONTROL_DEVICE:
 	set(value):
@@ -112,16 +125,15 @@ var servo: HapticsServo = null
 
 var _backend: HapticsBackend = null
 var _renderers: Dictionary[StringName, HapticsRenderer] = {}
-var _config_fields: Dictionary[String, Dictionary] = {}
-var _offline: Dictionary = _OFFLINE_DEFAULTS.duplicate()
+# The two game-wide settings while there is no servo to keep them (nothing is rendered then).
+var _offline_force_scale: float = HapticSafetySettings.new().force_scale
+var _offline_smoothing: bool = HapticSmoothingSettings.new().enabled
 var _user_input: HapticsInput = HapticsInput.new()
 
 
 func _init() -> void:
-	if ClassDB.class_exists(SERVER_CLASS):
+	if ClassDB.class_exists(NATIVE_CLASS):
 		_backend = (load(NATIVE_BACKEND_PATH) as GDScript).new()
-		for field: Dictionary in _backend.get_config_fields():
-			_config_fields["%s.%s" % [field["section"], field["key"]]] = field
 	else:
 		_backend = HapticsBackend.new()
 		push_warning(
@@ -146,7 +158,9 @@ func _ready() -> void:
 	if _backend.is_native():
 		# Nobody reads telemetry until someone drains it (HapticsServo.drain_telemetry turns
 		# it on): a game that never does is not counted telemetry drops.
-		configure("telemetry", {"enabled": false})
+		var settings: HapticServoSettings = servo.get_settings()
+		settings.telemetry.enabled = false
+		servo.apply_settings(settings)
 	if _backend.is_native() and device.open(device.get_simulated_id()) and not servo.start():
 		if servo.default_spin_us != HapticsServo.SPIN_US_DEFAULT:
 			var refused: float = servo.default_spin_us
@@ -192,7 +206,7 @@ func _follow_user_input_and_feed() -> void:
 ## defaults (the servo's) and ranges; a value the project has set is kept. The addon's editor
 ## plugin calls it. Without the extension it does nothing: the defaults are the servo's.
 static func add_project_settings() -> void:
-	if not ClassDB.class_exists(SERVER_CLASS):
+	if not ClassDB.class_exists(NATIVE_CLASS):
 		return
 	# -1 is the servo's own choice, which depends on whether the thread gets real time.
 	var spin_us: float = HapticsServo.SPIN_US_DEFAULT
@@ -210,7 +224,7 @@ static func add_project_settings() -> void:
 	ProjectSettings.add_property_info(info)
 
 
-## True when the native extension is loaded and its server exists.
+## True when the native extension is loaded and answers.
 func is_available() -> bool:
 	return _backend.is_native()
 
@@ -227,7 +241,7 @@ func get_input_vector() -> Vector2:
 
 ## The last servo tick's force, piece by piece, in newtons (game axes): the active renderer's
 ## components in [member HapticForces.parts] (its force enum names them, e.g.
-## [code]HapticMovement.MovementForce.NORMAL[/code]), then what the servo made of them.
+## [code]HapticMovementFacts.MovementForce.NORMAL[/code]), then what the servo made of them.
 func get_forces() -> HapticForces:
 	return _backend.forces()
 
@@ -280,40 +294,9 @@ func renderer(renderer_name: StringName) -> HapticsRenderer:
 	return _renderers[renderer_name]
 
 
-## Changes settings of one section (HapticsServer.get_config_fields lists them); only the
-## keys given change. Refused settings are reported and change nothing.
-func configure(section: String, values: Dictionary) -> bool:
-	if not _backend.is_native():
-		return false
-	var accepted: bool = _backend.set_config(section, values)
-	status_changed.emit()
-	return accepted
-
-
-## Every section of the servo's configuration with every key; empty without the extension.
-func get_config() -> Dictionary:
-	return _backend.get_config()
-
-
-## The name of the value a choice setting has now, e.g. [code]"per_contact"[/code] for
-## [code]get_choice("force_model", "contact_model")[/code]; empty without the extension.
-func get_choice(section: String, key: String) -> String:
-	if not _backend.is_native():
-		return ""
-	var field: Dictionary = _config_fields.get("%s.%s" % [section, key], {})
-	var choices: Array = field.get("choices", [])
-	var value: int = int(_setting(section, key))
-	if value < 0 or value >= choices.size():
-		push_error("Haptics.get_choice: %s.%s is not a choice setting." % [section, key])
-		return ""
-	return str(choices[value])
-
-
-## The force scale's allowed range (from the servo's field table; without the extension
-## anything finite and not negative).
+## The force scale's allowed range, from its schema.
 func get_force_scale_range() -> Vector2:
-	var field: Dictionary = _config_fields.get("safety.force_scale", {})
-	return Vector2(field.get("min", 0.0), field.get("max", INF))
+	return Vector2(HapticSafetySettings.FORCE_SCALE_MIN, HapticSafetySettings.FORCE_SCALE_MAX)
 
 
 ## Whether [param mode] is a control mode ([constant CONTROL_DEVICE],
@@ -322,35 +305,11 @@ func is_control_mode(mode: StringName) -> bool:
 	return mode == CONTROL_DEVICE or mode == CONTROL_KEYBOARD
 
 
-## Puts the force scale, smoothing and control mode back to their defaults (the servo's
-## defaults for the first two).
+## Puts the force scale, smoothing and control mode back to their defaults (their schemas').
 func reset_settings() -> void:
-	force_scale = float(_default("safety.force_scale"))
-	smoothing_enabled = bool(_default("smoothing.enabled"))
+	force_scale = HapticSafetySettings.new().force_scale
+	smoothing_enabled = HapticSmoothingSettings.new().enabled
 	control_mode = CONTROL_DEVICE
-
-
-func _setting(section: String, key: String) -> Variant:
-	if not _backend.is_native():
-		return _offline["%s.%s" % [section, key]]
-	var config: Dictionary = _backend.get_config()
-	return config[section][key]
-
-
-func _set_setting(section: String, key: String, value: Variant) -> void:
-	if _backend.is_native():
-		configure(section, {key: value})
-	else:
-		_offline["%s.%s" % [section, key]] = value
-		status_changed.emit()
-
-
-func _default(field_name: String) -> Variant:
-	return (
-		_config_fields[field_name]["default"]
-		if _backend.is_native()
-		else _OFFLINE_DEFAULTS[field_name]
-	)
 
 
 # The project's spin for the servo, or the servo's own when it sets none or a value that is

@@ -3,7 +3,7 @@ extends RefCounted
 ## What the [code]Haptics[/code] door asks of the native library, typed. This base answers
 ## as a game without the library plays: nothing present, nothing rendered, neutral values.
 ## The door loads the native backend ([code]haptics_native_backend.gd[/code]), which
-## overrides every method, only once the library has registered [code]HapticsServer[/code]:
+## overrides every method, only once the library has registered [code]HapticsSystem[/code]:
 ## that script is the only one that names the native class, so every other script parses
 ## where the library cannot load (an unsupported platform, a project before its first build).
 ##
@@ -136,16 +136,24 @@ func render_mode() -> int:
 	return -1
 
 
-func set_config(_section: String, _values: Dictionary) -> bool:
+## The servo's settings (the defaults here); a copy, the caller may change it.
+func servo_settings() -> HapticServoSettings:
+	return HapticServoSettings.new()
+
+
+## Hands the servo [param _settings] whole; refused ones are reported and change nothing.
+func set_servo_settings(_settings: HapticServoSettings) -> bool:
 	return false
 
 
-func get_config() -> Dictionary:
-	return {}
+## The bytes of renderer [param mode]'s settings (its own schema's value).
+func renderer_settings(_mode: int) -> PackedByteArray:
+	return PackedByteArray()
 
 
-func get_config_fields() -> Array:
-	return []
+## Hands renderer [param mode] its settings whole, as its schema's value.
+func set_renderer_settings(_mode: int, _settings: HapticsValue) -> bool:
+	return false
 
 
 ## Hands renderer [param mode] a value of its own schema (its bytes).

@@ -4,9 +4,9 @@ extends RefCounted
 ## it the active one, send it values of its own schema, read the values it gives. What only
 ## that renderer offers (the constraint renderer's walls, Pong's ball) is defined in its own
 ## folder, C++ and GDScript; this door into it is the same for every renderer, so neither the
-## framework nor the native server names any of them.
+## framework nor the native library names any of them.
 
-## It became the active renderer, or stopped being it.
+## It became the active renderer or stopped being it, or its settings were applied.
 signal changed
 
 const HapticsBackend := preload("res://addons/haptics/door/haptics_backend.gd")
@@ -56,3 +56,19 @@ func send(value: HapticsValue) -> bool:
 ## the library or when it gives no such value.
 func read(value_id: int) -> PackedByteArray:
 	return _backend.renderer_read(_mode, value_id) if is_available() else PackedByteArray()
+
+
+## The bytes of its settings, a value of its own schema (decode them with that class's
+## [code]decode()[/code], as [HapticsMovement.get_settings] does); empty without the library.
+func settings_bytes() -> PackedByteArray:
+	return _backend.renderer_settings(_mode) if is_available() else PackedByteArray()
+
+
+## Hands it [param settings] whole, a value of its own settings schema; refused ones are
+## reported, naming the field, and change nothing.
+func apply_settings(settings: HapticsValue) -> bool:
+	if not is_available():
+		return false
+	var accepted: bool = _backend.set_renderer_settings(_mode, settings)
+	changed.emit()
+	return accepted

@@ -4,10 +4,10 @@ extends RefCounted
 ## rendering thread's life, manual ticks, its statistics and its telemetry. Without the
 ## native extension it never runs and every answer is neutral.
 
-## The servo started or stopped.
+## The servo started or stopped, or its settings were applied.
 signal changed
 
-## [method start] given this spin uses [member default_spin_us]; the server given it uses
+## [method start] given this spin uses [member default_spin_us]; the library given it uses
 ## the servo's own ([constant HapticServoConstants.DEFAULT_SPIN_NS] when the thread has real
 ## time and holds the latency, [constant HapticServoConstants.UNHELD_SPIN_NS] with real time
 ## alone, none without).
@@ -77,10 +77,27 @@ func get_rate_hz() -> float:
 ## until a call turns it on (the [code]Haptics[/code] autoload turns it off at
 ## start: a game that never drains it is not counted drops).
 func drain_telemetry(max_samples: int) -> PackedFloat32Array:
-	var config: Dictionary = _backend.get_config()
-	if not config.is_empty() and not config["telemetry"]["enabled"]:
-		_backend.set_config("telemetry", {"enabled": true})
+	if _backend.is_native():
+		var settings: HapticServoSettings = _backend.servo_settings()
+		if not settings.telemetry.enabled:
+			settings.telemetry.enabled = true
+			_backend.set_servo_settings(settings)
 	return _backend.drain_telemetry(max_samples)
+
+
+## The servo's settings now (the input mapping, the safety stage, the plane hold, telemetry;
+## docs/values.md lists every field): a copy to read, or to change and hand to
+## [method apply_settings]. The defaults without the extension.
+func get_settings() -> HapticServoSettings:
+	return _backend.servo_settings()
+
+
+## Hands the servo [param settings] whole; refused ones are reported, naming the field, and
+## change nothing.
+func apply_settings(settings: HapticServoSettings) -> bool:
+	var accepted: bool = _backend.set_servo_settings(settings)
+	changed.emit()
+	return accepted
 
 
 ## The names of a telemetry sample's floats, in order.

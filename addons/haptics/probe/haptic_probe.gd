@@ -8,7 +8,7 @@ extends Node
 ## (normals and each one's [HapticMaterial]), dynamic bodies resting on top of the body's own
 ## shapes (mass and normal), the water volume it is in, its velocity, and the speed of new
 ## touches; converts pixels to metres; and submits the frame and impact events to the
-## haptics server. With [member drive_input] it also feeds the device's input vector to the
+## haptics servo. With [member drive_input] it also feeds the device's input vector to the
 ## body's [code]input_vector[/code] property before the body moves (acceleration control).
 ## [br][br]
 ## Impact speeds are taken from the velocity before the collision: a character's at the start
@@ -42,7 +42,7 @@ const HapticBodyShapes := preload("res://addons/haptics/probe/haptic_body_shapes
 ## second hits as fast as one on Earth. At start the probe prints the height this gives the
 ## body ([member report_scale]).
 @export_range(1.0, 10000.0, 0.1, "suffix:px/m") var pixels_per_metre: float = 100.0
-## Material for bodies that declare none; [code]null[/code] uses the server's default.
+## Material for bodies that declare none; [code]null[/code] uses the servo's default.
 @export var default_material: HapticMaterial = null
 ## Feed the device's input vector to the body's [code]input_vector[/code] property when
 ## the control mode is "device".

@@ -16,7 +16,7 @@ var stiffness_n: float = 2.0
 var friction_n: float = 1.0
 
 
-## This value's bytes (docs/values.md): what HapticsServer and the network take.
+## This value's bytes (docs/values.md): what the native library and the network take.
 func encode() -> PackedByteArray:
 	var writer: HapticsWireWriter = HapticsWireWriter.new(SCHEMA_ID)
 	write_to(writer)

@@ -18,7 +18,7 @@ var max_stiffness_n_per_m: float = 0.0
 var workspace_radius_m: float = 0.0
 
 
-## This value's bytes (docs/values.md): what HapticsServer and the network take.
+## This value's bytes (docs/values.md): what the native library and the network take.
 func encode() -> PackedByteArray:
 	var writer: HapticsWireWriter = HapticsWireWriter.new(SCHEMA_ID)
 	write_to(writer)

@@ -14,7 +14,7 @@ var io: HapticDeviceKinds.DeviceIo = HapticDeviceKinds.DeviceIo.OK
 var reason: String = ""
 
 
-## This value's bytes (docs/values.md): what HapticsServer and the network take.
+## This value's bytes (docs/values.md): what the native library and the network take.
 func encode() -> PackedByteArray:
 	var writer: HapticsWireWriter = HapticsWireWriter.new(SCHEMA_ID)
 	write_to(writer)

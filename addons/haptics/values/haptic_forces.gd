@@ -4,8 +4,8 @@
 class_name HapticForces
 extends HapticsValue
 ## One tick's force: the active renderer's components (its force enum names them:
-## HapticMovement.MovementForce, HapticConstraint.ConstraintForce, Pong's PongForce), their sum, and
-## what the servo made of it. Newtons.
+## HapticMovementFacts.MovementForce, HapticConstraintFacts.ConstraintForce, Pong's PongForce),
+## their sum, and what the servo made of it. Newtons.
 
 ## This layout's id on the wire (docs/values.md): a change of any field changes it.
 const SCHEMA_ID: int = 0x0a1fa4e6
@@ -26,7 +26,7 @@ var impact: Vector2 = Vector2.ZERO
 var total: Vector2 = Vector2.ZERO
 
 
-## This value's bytes (docs/values.md): what HapticsServer and the network take.
+## This value's bytes (docs/values.md): what the native library and the network take.
 func encode() -> PackedByteArray:
 	var writer: HapticsWireWriter = HapticsWireWriter.new(SCHEMA_ID)
 	write_to(writer)

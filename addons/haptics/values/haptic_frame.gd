@@ -29,7 +29,7 @@ var water_inertia_n: float = 0.0
 var velocity_m_per_s: Vector2 = Vector2.ZERO
 
 
-## This value's bytes (docs/values.md): what HapticsServer and the network take.
+## This value's bytes (docs/values.md): what the native library and the network take.
 func encode() -> PackedByteArray:
 	var writer: HapticsWireWriter = HapticsWireWriter.new(SCHEMA_ID)
 	write_to(writer)

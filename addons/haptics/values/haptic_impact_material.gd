@@ -17,7 +17,7 @@ var frequency_hz: float = 150.0
 var decay_s: float = 0.03
 
 
-## This value's bytes (docs/values.md): what HapticsServer and the network take.
+## This value's bytes (docs/values.md): what the native library and the network take.
 func encode() -> PackedByteArray:
 	var writer: HapticsWireWriter = HapticsWireWriter.new(SCHEMA_ID)
 	write_to(writer)

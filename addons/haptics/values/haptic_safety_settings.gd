@@ -43,7 +43,7 @@ var watchdog_timeout_s: float = 0.1
 var watchdog_fade_s: float = 0.04
 
 
-## This value's bytes (docs/values.md): what HapticsServer and the network take.
+## This value's bytes (docs/values.md): what the native library and the network take.
 func encode() -> PackedByteArray:
 	var writer: HapticsWireWriter = HapticsWireWriter.new(SCHEMA_ID)
 	write_to(writer)

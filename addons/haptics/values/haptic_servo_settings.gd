@@ -20,7 +20,7 @@ var plane_hold: HapticPlaneHoldSettings = HapticPlaneHoldSettings.new()
 var telemetry: HapticTelemetrySettings = HapticTelemetrySettings.new()
 
 
-## This value's bytes (docs/values.md): what HapticsServer and the network take.
+## This value's bytes (docs/values.md): what the native library and the network take.
 func encode() -> PackedByteArray:
 	var writer: HapticsWireWriter = HapticsWireWriter.new(SCHEMA_ID)
 	write_to(writer)

@@ -101,7 +101,7 @@ var device_command_age_mean_s: float = 0.0
 var device_command_age_max_s: float = 0.0
 
 
-## This value's bytes (docs/values.md): what HapticsServer and the network take.
+## This value's bytes (docs/values.md): what the native library and the network take.
 func encode() -> PackedByteArray:
 	var writer: HapticsWireWriter = HapticsWireWriter.new(SCHEMA_ID)
 	write_to(writer)

@@ -14,3 +14,25 @@ func encode() -> PackedByteArray:
 ## Writes the fields, in order (also as part of a value that holds this one).
 func write_to(_writer: HapticsWireWriter) -> void:
 	push_error("HapticsValue.write_to: %s does not override it." % (get_script() as Script).resource_path)
+
+
+## The name of [param value] in enum [param choices] as settings files and the wire's
+## documentation spell it ([code]HapticMovementFacts.ContactModel[/code], 1 →
+## [code]"paper_sum"[/code]); "" when it is none of them.
+static func choice_name(choices: Dictionary, value: int) -> String:
+	var key: Variant = choices.find_key(value)
+	return "" if key == null else str(key).to_lower()
+
+
+## The value named [param name] in enum [param choices] ([code]"paper_sum"[/code] → 1);
+## -1 when it names none of them.
+static func choice_value(choices: Dictionary, name: String) -> int:
+	return int(choices.get(name.to_upper(), -1)) if name == name.to_lower() else -1
+
+
+## The names of enum [param choices], in order ([code]["per_contact", "paper_sum"][/code]).
+static func choice_names(choices: Dictionary) -> PackedStringArray:
+	var names: PackedStringArray = []
+	for key: String in choices.keys():
+		names.append(key.to_lower())
+	return names

@@ -49,7 +49,7 @@ func make_still_paddle(seat: int, match_node: PongMatch) -> PongController:
 ## servo's out-of-contact law: gravity and a constant loss of speed, 1 ms steps).
 static func aim_for(court: PongCourt, home: Vector3) -> Vector3:
 	var aim: Vector3 = home
-	var decel: float = court.number("air_linear_decel_m_per_s2")
+	var decel: float = court.settings.air_linear_decel_m_per_s2
 	for iteration: int in 6:
 		var p: Vector3 = Vector3(0.0, PongReferee.SERVE_HEIGHT_M, 0.0)
 		var v: Vector3 = PongReferee.launch_velocity(

@@ -56,9 +56,7 @@ var _tokens_at: PackedFloat64Array = PackedFloat64Array()
 func _init(p_court: PongCourt, p_seats: int) -> void:
 	court = p_court
 	seats = p_seats
-	var slowest: float = 0.8
-	if court.config.has("min_bounce_speed_m_per_s"):
-		slowest = court.number("min_bounce_speed_m_per_s")
+	var slowest: float = court.settings.min_bounce_speed_m_per_s
 	if court.gravity > 0.0 and slowest > 0.0:
 		rate_per_s = court.gravity / (2.0 * slowest)
 	_tokens.resize(seats)

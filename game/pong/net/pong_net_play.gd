@@ -391,4 +391,4 @@ func _gravity() -> float:
 
 
 func _max_spin() -> float:
-	return match_node.court.number("max_spin_rad_per_s")
+	return match_node.court.settings.max_spin_rad_per_s

@@ -105,7 +105,9 @@ func make_controller(seat: int, match_node: PongMatch) -> PongController:
 		match_node.local_player = seat
 		PongServo.shared().set_hand_target_3d(Vector3.ZERO)
 		if not passivity:
-			PongServo.shared().configure({"remote_passivity": false})
+			var settings: PongSettings = PongServo.shared().get_settings()
+			settings.remote_passivity = false
+			PongServo.shared().apply_settings(settings)
 		return still
 	var swinging: SwingingOwner = SwingingOwner.new()
 	swinging.player = seat
@@ -137,7 +139,7 @@ func follow(play: PongNetPlay) -> void:
 	for column: String in ["t", "position_x", "weight_x"]:
 		_columns[column] = columns.find(column)
 	Haptics.servo.drain_telemetry(HapticServoConstants.TELEMETRY_QUEUE_CAPACITY)
-	_duration_s = _match.court.number("mine_effect_duration_s")
+	_duration_s = _match.court.settings.mine_effect_duration_s
 	_match.mine_exploded.connect(_on_mine_exploded)
 
 
@@ -195,8 +197,8 @@ func to_dict() -> Dictionary:
 	var cap: float = 0.0
 	var stiffness: float = 1.0
 	if _match != null:
-		cap = _match.court.number("remote_max_force_n")
-		stiffness = _match.court.number("remote_stiffness_n_per_m")
+		cap = _match.court.settings.remote_max_force_n
+		stiffness = _match.court.settings.remote_stiffness_n_per_m
 	var ages: PackedFloat32Array = _ages.duplicate()
 	ages.sort()
 	return {

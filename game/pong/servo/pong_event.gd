@@ -27,7 +27,7 @@ var wall: PongServoFacts.CourtSurface = PongServoFacts.CourtSurface.FLOOR
 var back_wall_of: int = -1
 
 
-## This value's bytes (docs/values.md): what HapticsServer and the network take.
+## This value's bytes (docs/values.md): what the native library and the network take.
 func encode() -> PackedByteArray:
 	var writer: HapticsWireWriter = HapticsWireWriter.new(SCHEMA_ID)
 	write_to(writer)

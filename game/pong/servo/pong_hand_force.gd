@@ -19,7 +19,7 @@ var effects: Vector3 = Vector3.ZERO
 var total: Vector3 = Vector3.ZERO
 
 
-## This value's bytes (docs/values.md): what HapticsServer and the network take.
+## This value's bytes (docs/values.md): what the native library and the network take.
 func encode() -> PackedByteArray:
 	var writer: HapticsWireWriter = HapticsWireWriter.new(SCHEMA_ID)
 	write_to(writer)

@@ -77,16 +77,17 @@ func is_active() -> bool:
 	return _renderer.is_active()
 
 
-## The [code]"pong"[/code] configuration section (court, ball, contact, spin, effects);
-## empty without the extension.
-func get_config() -> Dictionary:
-	var config: Dictionary = _haptics.get_config()
-	return config.get("pong", {})
+## The renderer's settings now (court, ball, contact, spin, effects): a copy to read, or to
+## change and hand to [method apply_settings]; the defaults without the extension.
+func get_settings() -> PongSettings:
+	var settings: PongSettings = PongSettings.decode(_renderer.settings_bytes())
+	return settings if settings != null else PongSettings.new()
 
 
-## Changes keys of the [code]"pong"[/code] configuration; refused values change nothing.
-func configure(values: Dictionary) -> bool:
-	return is_available() and _haptics.configure("pong", values)
+## Hands the renderer [param settings] whole; refused ones are reported, naming the field,
+## and change nothing.
+func apply_settings(settings: PongSettings) -> bool:
+	return _renderer.apply_settings(settings)
 
 
 ## Hands the servo this update's input: every player's avatar and paddle, who holds the
@@ -228,8 +229,7 @@ func _send_ball(
 func _effect_refusal(
 	player: int, kind: String, magnitude_n: float, duration_s: float, direction: Vector3, owner: int
 ) -> String:
-	var players: float = get_config().get("players", 2.0)
-	var count: int = roundi(players)
+	var count: int = get_settings().players
 	if not PongServoFacts.PONG_EFFECT_KIND_NAMES.has(kind):
 		var kinds: String = ", ".join(PongServoFacts.PONG_EFFECT_KIND_NAMES)
 		return "unknown kind '%s' (one of %s)" % [kind, kinds]

@@ -151,7 +151,7 @@ var beginner_height_m: float = 0.9
 var beginner_target_half_width_m: float = 0.5
 
 
-## This value's bytes (docs/values.md): what HapticsServer and the network take.
+## This value's bytes (docs/values.md): what the native library and the network take.
 func encode() -> PackedByteArray:
 	var writer: HapticsWireWriter = HapticsWireWriter.new(SCHEMA_ID)
 	write_to(writer)

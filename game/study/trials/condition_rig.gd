@@ -1,7 +1,7 @@
 class_name ConditionRig
 extends Node
 ## Puts one study condition into effect on a [StudyLevel]: the control scheme, the renderer
-## and the forces, through the [code]Haptics[/code] autoload's server.
+## and the forces, through the [code]Haptics[/code] autoload's servo.
 ## [br][br]
 ## [b]none[/b] and [b]movement[/b]: acceleration control; the render mode is
 ## [code]movement[/code] with the condition's [code]contact_model[/code]; a [StudyProbe],
@@ -68,10 +68,9 @@ static func save_haptics() -> Dictionary:
 	}
 	if Haptics.is_available():
 		saved["render_mode"] = Haptics.get_render_mode()
-		var config: Dictionary = Haptics.get_config()
-		saved["telemetry"] = config.get("telemetry", {})
-		saved["constraint"] = config.get("constraint", {})
-		saved["force_model"] = config.get("force_model", {})
+		saved["servo"] = Haptics.servo.get_settings()
+		saved["movement"] = HapticsMovement.of(Haptics).get_settings()
+		saved["constraint"] = HapticsConstraint.of(Haptics).get_settings()
 	return saved
 
 
@@ -82,22 +81,23 @@ static func restore_haptics(saved: Dictionary) -> void:
 	var force_scale: float = saved["force_scale"]
 	var smoothing: bool = saved["smoothing"]
 	var follows: bool = saved["hand_follows_input"]
-	Haptics.force_scale = force_scale
-	Haptics.smoothing_enabled = smoothing
 	Haptics.control_mode = StringName(str(saved["control_mode"]))
 	Haptics.hand_follows_input = follows
 	if Haptics.is_available() and saved.has("render_mode"):
-		var telemetry: Dictionary = saved["telemetry"]
-		var constraint: Dictionary = saved["constraint"]
-		var force_model: Dictionary = saved["force_model"]
+		var servo_settings: HapticServoSettings = saved["servo"]
+		var movement_settings: HapticMovementSettings = saved["movement"]
+		var constraint_settings: HapticConstraintSettings = saved["constraint"]
 		Haptics.set_render_mode(StringName(str(saved["render_mode"])))
-		Haptics.configure("telemetry", telemetry)
-		Haptics.configure("constraint", constraint)
-		Haptics.configure("force_model", force_model)
+		Haptics.servo.apply_settings(servo_settings)
+		HapticsMovement.of(Haptics).apply_settings(movement_settings)
+		HapticsConstraint.of(Haptics).apply_settings(constraint_settings)
+	else:
+		Haptics.force_scale = force_scale
+		Haptics.smoothing_enabled = smoothing
 
 
 ## Prepares [param p_condition] on [param p_level] with [param p_settings]; the avatar is
-## held (see [method hold]). Returns false when the native server refused something.
+## held (see [method hold]). Returns false when the servo refused something.
 func setup(p_level: StudyLevel, p_condition: String, p_settings: Dictionary) -> bool:
 	level = p_level
 	player = level.player
@@ -120,12 +120,14 @@ func setup(p_level: StudyLevel, p_condition: String, p_settings: Dictionary) -> 
 	_hand_point = level.get_spawn_position()
 	var ok: bool = true
 	if Haptics.is_available():
-		ok = Haptics.configure("telemetry", {"enabled": true, "decimation": 1})
+		var servo_settings: HapticServoSettings = Haptics.servo.get_settings()
+		servo_settings.telemetry.enabled = true
+		servo_settings.telemetry.decimation = 1
+		ok = Haptics.servo.apply_settings(servo_settings)
 		if StudyFormat.is_position_control(condition):
 			ok = _send_constraint() and ok
 		else:
-			var model: String = str(settings.get("contact_model", "paper_sum"))
-			ok = Haptics.configure("force_model", {"contact_model": model}) and ok
+			ok = _set_contact_model(str(settings.get("contact_model", "paper_sum"))) and ok
 	hold()
 	return ok
 
@@ -298,7 +300,7 @@ func _update_hand_following() -> void:
 
 # Every probe already on the avatar goes, at once: the player scene brings its own (the
 # side-scroller's, material "hard" with impacts), and a probe only queued for deletion
-# still submits frames this tick. Two probes would take turns at the server's frame and
+# still submits frames this tick. Two probes would take turns at the servo's frame and
 # push their own impacts: the condition would render what neither configuration says.
 func _remove_probes(body: Node) -> void:
 	for other: HapticProbe in probes_on(body):
@@ -313,15 +315,28 @@ func _remove_probe(other: HapticProbe) -> void:
 
 
 func _send_constraint() -> bool:
-	var stiffness: float = settings.get("stiffness", 300.0)
-	var iterations: int = settings.get("max_iterations", 6)
-	var constraint: Dictionary = {
-		"stiffness_n_per_m": stiffness,
-		"proxy_radius": Player.RADIUS,
-		"update": str(settings.get("update", "servo")),
-		"max_iterations": iterations,
-	}
-	var ok: bool = Haptics.configure("constraint", constraint)
-	var segments: PackedVector2Array = level.get_wall_segments()
-	var sent: bool = HapticsConstraint.of(Haptics).set_walls(segments, map)
+	var constraint: HapticsConstraint = HapticsConstraint.of(Haptics)
+	var update_name: String = str(settings.get("update", "servo"))
+	var update: int = HapticsValue.choice_value(HapticConstraintFacts.ProxyUpdate, update_name)
+	if update < 0:
+		push_error("ConditionRig: unknown constraint update '%s'." % update_name)
+		return false
+	var constraint_settings: HapticConstraintSettings = constraint.get_settings()
+	constraint_settings.stiffness_n_per_m = settings.get("stiffness", 300.0)
+	constraint_settings.proxy_radius = Player.RADIUS
+	constraint_settings.update = update as HapticConstraintFacts.ProxyUpdate
+	constraint_settings.max_iterations = settings.get("max_iterations", 6)
+	var ok: bool = constraint.apply_settings(constraint_settings)
+	var sent: bool = constraint.set_walls(level.get_wall_segments(), map)
 	return ok and sent
+
+
+func _set_contact_model(model_name: String) -> bool:
+	var model: int = HapticsValue.choice_value(HapticMovementFacts.ContactModel, model_name)
+	if model < 0:
+		push_error("ConditionRig: unknown contact model '%s'." % model_name)
+		return false
+	var movement: HapticsMovement = HapticsMovement.of(Haptics)
+	var movement_settings: HapticMovementSettings = movement.get_settings()
+	movement_settings.force_model.contact_model = model as HapticMovementFacts.ContactModel
+	return movement.apply_settings(movement_settings)

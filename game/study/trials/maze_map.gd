@@ -16,7 +16,7 @@ var bounds: Rect2:
 
 
 ## [param p_workspace]: [code]disc[/code] or [code]square[/code]
-## ([constant HapticConstraint.WORKSPACE_SHAPE_NAMES]).
+## ([constant HapticConstraintFacts.WORKSPACE_SHAPE_NAMES]).
 func _init(
 	p_bounds: Rect2 = Rect2(0.0, 0.0, 1.0, 1.0),
 	p_workspace: String = "disc",
@@ -25,8 +25,8 @@ func _init(
 ) -> void:
 	maze_min = p_bounds.position
 	maze_max = p_bounds.end
-	var shape: int = maxi(HapticConstraint.WORKSPACE_SHAPE_NAMES.find(p_workspace), 0)
-	workspace_shape = shape as HapticConstraint.WorkspaceShape
+	var shape: int = maxi(HapticConstraintFacts.WORKSPACE_SHAPE_NAMES.find(p_workspace), 0)
+	workspace_shape = shape as HapticConstraintFacts.WorkspaceShape
 	workspace_half_extent_m = p_half_extent_m
 	device_radius_m = p_device_radius_m
 
@@ -34,7 +34,7 @@ func _init(
 ## Metres of device travel per maze unit.
 func metres_per_unit() -> float:
 	var half: float = workspace_half_extent_m if workspace_half_extent_m > 0.0 else device_radius_m
-	var disc: bool = workspace_shape == HapticConstraint.WorkspaceShape.DISC
+	var disc: bool = workspace_shape == HapticConstraintFacts.WorkspaceShape.DISC
 	var span: float = bounds.size.length() if disc else maxf(bounds.size.x, bounds.size.y)
 	return 2.0 * half / maxf(span, 1e-9)
 

@@ -47,7 +47,7 @@ func load_level(scene: PackedScene, condition: String) -> bool:
 	rig.piloted = autopilot
 	rig.pointer = stage.pointer_in_level
 	if not rig.setup(level, condition, session.config.condition(condition)):
-		failed.emit("the haptics server refused the settings of the condition '%s'" % condition)
+		failed.emit("the haptics servo refused the settings of the condition '%s'" % condition)
 		return false
 	if autopilot:
 		pilot = StudyPilot.new(level.get_autopilot_path(), session.config.number("autopilot_speed"))

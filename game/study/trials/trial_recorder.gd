@@ -3,7 +3,7 @@ extends RefCounted
 ## Measures one maze trial and writes its servo telemetry (FORMAT.md).
 ##
 ## Fed once per physics tick ([method tick]) with the avatar's position, it drains the
-## server's 1 kHz telemetry and keeps every [member decimation]-th sample as a row of the
+## servo's 1 kHz telemetry and keeps every [member decimation]-th sample as a row of the
 ## telemetry file, in game axes (y down): input is the device position over the workspace
 ## radius, avatar the avatar's position in level pixels (between physics ticks interpolated;
 ## in position control the proxy, recovered exactly from the constraint force:
@@ -63,11 +63,12 @@ func _init(
 	result.level = level_id
 	result.trial_index = trial_index
 	result.telemetry_file = StudyFormat.telemetry_name(condition, trial_index)
-	# As the server has it (the rig set it up for the condition), not as the settings asked.
+	# As the renderer has it (the rig set it up for the condition), not as the settings asked.
 	if not _position_control:
-		result.contact_model = Haptics.get_choice("force_model", "contact_model")
+		var model: int = HapticsMovement.of(Haptics).get_settings().force_model.contact_model
+		result.contact_model = HapticsValue.choice_name(HapticMovementFacts.ContactModel, model)
 	_contact_flag = (
-		HapticConstraint.TELEMETRY_FLAG_PROXY_CONTACT
+		HapticConstraintFacts.TELEMETRY_FLAG_PROXY_CONTACT
 		if _position_control
 		else HapticServoConstants.TELEMETRY_FLAG_CONTACT
 	)

@@ -1,5 +1,5 @@
 // The class reference (gdextension/doc_classes/*.xml), embedded at build time so the editor
-// shows it under Help for HapticsServer and DurableFile.
+// shows it under Help for HapticsSystem and DurableFile.
 #pragma once
 
 #include <cstddef>

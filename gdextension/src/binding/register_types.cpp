@@ -6,7 +6,7 @@
 #include "binding/class_db.h"
 #include "binding/doc_data.h"
 #include "binding/durable_file_binding.h"
-#include "binding/haptics_server.h"
+#include "binding/system_object.h"
 #include "binding/interface.h"
 
 #if HAPTICS_DEV_TOOLS
@@ -33,7 +33,7 @@ void initialize(void * /*p_userdata*/, GDExtensionInitializationLevel p_level) {
 #if HAPTICS_DEV_TOOLS
 	haptics::register_scripted_devices();
 #endif
-	gd::register_class<haptics::binding::HapticsServer>("HapticsServer", "RefCounted");
+	gd::register_class<haptics::binding::SystemObject>("HapticsSystem", "RefCounted");
 	gd::register_class<haptics::binding::DurableFile>("DurableFile", "RefCounted");
 }
 

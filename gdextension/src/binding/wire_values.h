@@ -1,4 +1,4 @@
-// Schema values (core/wire/codec.h) across the binding: HapticsServer methods take and give
+// Schema values (core/wire/codec.h) across the binding: HapticsSystem's methods take and give
 // each value as the bytes of its GDScript class's encode(), so both sides are typed and the
 // layout is defined once, in the value's schema. A refused value is reported through the
 // engine's error printer, naming the method and the field, and changes nothing.

@@ -24,7 +24,7 @@
 namespace {
 
 constexpr const char *ENTRY_SYMBOL = "haptics_library_init";
-constexpr const char *EXPECTED_CLASSES[] = { "HapticsServer", "DurableFile" };
+constexpr const char *EXPECTED_CLASSES[] = { "HapticsSystem", "DurableFile" };
 
 struct RegisteredClass {
 	std::string parent;

@@ -53,7 +53,7 @@ func _physics_process(_delta: float) -> void:
 		if _touched_at < 0 and wall_contact:
 			_touched_at = _frame
 		if _touched_at >= 0 and _frame > _touched_at + SETTLE_FRAMES:
-			_pushes.append(-Haptics.get_forces().parts[HapticMovement.MovementForce.NORMAL].x)
+			_pushes.append(-Haptics.get_forces().parts[HapticMovementFacts.MovementForce.NORMAL].x)
 		if _frame == PUSH_FRAMES:
 			Haptics.device.set_hand_target(Vector2.LEFT)
 		return

@@ -70,7 +70,7 @@ func _demo_forces(hud: Hud) -> void:
 		for force: Vector2 in forces.values():
 			total += force
 		forces["total"] = total
-		hud.show_forces(TestHaptics.forces_of(forces))
+		hud.show_forces(HapticsTestKit.forces_of(forces))
 		await get_tree().process_frame
 	await _shot("hud_forces", 0.0)
 	hud.live = true

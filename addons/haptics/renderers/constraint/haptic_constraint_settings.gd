@@ -15,12 +15,12 @@ var stiffness_n_per_m: float = 300.0
 ## proxy (see FiniteProxy::reset). Unit: maze units. Range [1e-06, 1000000.0].
 var proxy_radius: float = 8.0
 ## When the proxy moves.
-var update: HapticConstraint.ProxyUpdate = HapticConstraint.ProxyUpdate.SERVO
+var update: HapticConstraintFacts.ProxyUpdate = HapticConstraintFacts.ProxyUpdate.SERVO
 ## Sweeps per proxy update: a corner needs 2-3, a dead end 3-4. Range [1.0, 16].
 var max_iterations: int = 6
 
 
-## This value's bytes (docs/values.md): what HapticsServer and the network take.
+## This value's bytes (docs/values.md): what the native library and the network take.
 func encode() -> PackedByteArray:
 	var writer: HapticsWireWriter = HapticsWireWriter.new(SCHEMA_ID)
 	write_to(writer)
@@ -50,8 +50,8 @@ static func read_from(reader: HapticsWireReader) -> HapticConstraintSettings:
 	var value: HapticConstraintSettings = HapticConstraintSettings.new()
 	value.stiffness_n_per_m = reader.f64(&"stiffness_n_per_m", 0.0, 5000.0)
 	value.proxy_radius = reader.f64(&"proxy_radius", 1e-06, 1000000.0)
-	value.update = reader.enum_index(&"update", 2) as HapticConstraint.ProxyUpdate
+	value.update = reader.enum_index(&"update", 2) as HapticConstraintFacts.ProxyUpdate
 	value.max_iterations = reader.integer(
-		&"max_iterations", 4, false, 1, HapticConstraint.MAX_PROXY_ITERATIONS
+		&"max_iterations", 4, false, 1, HapticConstraintFacts.MAX_PROXY_ITERATIONS
 	)
 	return value

@@ -16,7 +16,7 @@ var points: PackedVector2Array = PackedVector2Array()
 var mapping: HapticMazeMapping = HapticMazeMapping.new()
 
 
-## This value's bytes (docs/values.md): what HapticsServer and the network take.
+## This value's bytes (docs/values.md): what the native library and the network take.
 func encode() -> PackedByteArray:
 	var writer: HapticsWireWriter = HapticsWireWriter.new(SCHEMA_ID)
 	write_to(writer)
@@ -42,7 +42,7 @@ func write_to(writer: HapticsWireWriter) -> void:
 ## Reads the fields, in order, checking each against the schema.
 static func read_from(reader: HapticsWireReader) -> HapticMazeWalls:
 	var value: HapticMazeWalls = HapticMazeWalls.new()
-	for i: int in reader.count(&"points", HapticConstraint.MAX_CONSTRAINT_POINTS):
+	for i: int in reader.count(&"points", HapticConstraintFacts.MAX_CONSTRAINT_POINTS):
 		reader.enter_item(&"points", i)
 		value.points.append(reader.vec2(&""))
 		reader.leave()

@@ -52,3 +52,18 @@ func set_walls(points: PackedVector2Array, mapping: HapticMazeMapping) -> bool:
 func get_proxy() -> HapticProxyState:
 	var state: HapticProxyState = HapticProxyState.decode(_renderer.read(HapticProxyState.SCHEMA_ID))
 	return state if state != null else HapticProxyState.new()
+
+
+## Its settings now: the wall stiffness, the proxy's size and update (the defaults
+## without the library).
+func get_settings() -> HapticConstraintSettings:
+	var settings: HapticConstraintSettings = HapticConstraintSettings.decode(
+		_renderer.settings_bytes()
+	)
+	return settings if settings != null else HapticConstraintSettings.new()
+
+
+## Hands it [param settings] whole (read them, change a copy, hand it back); refused ones are
+## reported by field and change nothing.
+func apply_settings(settings: HapticConstraintSettings) -> bool:
+	return _renderer.apply_settings(settings)

@@ -12,7 +12,7 @@ const SCHEMA_ID: int = 0x01e44f77
 ## and 9.81 would saturate a 3.3 N device with a 1 kg crate. Unit: N/kg. Range [0.0, 100.0].
 var gravity_n_per_kg: float = 1.0
 ## How several contacts combine.
-var contact_model: HapticMovement.ContactModel = HapticMovement.ContactModel.PER_CONTACT
+var contact_model: HapticMovementFacts.ContactModel = HapticMovementFacts.ContactModel.PER_CONTACT
 ## PER_CONTACT only: a contact's friction fades in linearly while the input presses into the
 ## contacts by less than this (input units), and is the paper's -b r from there on. Without it
 ## friction would jump from 0 to b |r| as the hand crosses a floor's plane. 0 switches friction
@@ -22,7 +22,7 @@ var friction_engage: float = 0.05
 var default_contact: HapticContactMaterial = HapticContactMaterial.new()
 
 
-## This value's bytes (docs/values.md): what HapticsServer and the network take.
+## This value's bytes (docs/values.md): what the native library and the network take.
 func encode() -> PackedByteArray:
 	var writer: HapticsWireWriter = HapticsWireWriter.new(SCHEMA_ID)
 	write_to(writer)
@@ -51,7 +51,7 @@ func write_to(writer: HapticsWireWriter) -> void:
 static func read_from(reader: HapticsWireReader) -> HapticForceModelSettings:
 	var value: HapticForceModelSettings = HapticForceModelSettings.new()
 	value.gravity_n_per_kg = reader.f64(&"gravity_n_per_kg", 0.0, 100.0)
-	value.contact_model = reader.enum_index(&"contact_model", 2) as HapticMovement.ContactModel
+	value.contact_model = reader.enum_index(&"contact_model", 2) as HapticMovementFacts.ContactModel
 	value.friction_engage = reader.f64(&"friction_engage", 0.0, 0.5)
 	reader.enter(&"default_contact")
 	value.default_contact = HapticContactMaterial.read_from(reader)

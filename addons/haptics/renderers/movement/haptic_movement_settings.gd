@@ -15,7 +15,7 @@ var force_model: HapticForceModelSettings = HapticForceModelSettings.new()
 var smoothing: HapticSmoothingSettings = HapticSmoothingSettings.new()
 
 
-## This value's bytes (docs/values.md): what HapticsServer and the network take.
+## This value's bytes (docs/values.md): what the native library and the network take.
 func encode() -> PackedByteArray:
 	var writer: HapticsWireWriter = HapticsWireWriter.new(SCHEMA_ID)
 	write_to(writer)

@@ -4,7 +4,7 @@ extends RefCounted
 ## frames become the paper's forces, F_n = -k p, F_f = -b r, weight, water drag and inertia,
 ## smoothed to 1 kHz. Its settings are the contact law ([HapticForceModelSettings]) and the
 ## output filter ([HapticSmoothingSettings]); its forces are
-## [code]HapticForces.parts[HapticMovement.MovementForce.NORMAL][/code] and so on.
+## [code]HapticForces.parts[HapticMovementFacts.MovementForce.NORMAL][/code] and so on.
 
 ## The renderer's name in the servo.
 const NAME := &"movement"
@@ -24,9 +24,18 @@ static func of(haptics: Haptics) -> HapticsMovement:
 	return HapticsMovement.new(haptics.renderer(NAME))
 
 
+## Whether the native library has it.
+func is_available() -> bool:
+	return _renderer.is_available()
+
+
 ## Makes it the servo's renderer.
 func activate() -> bool:
 	return _renderer.activate()
+
+
+func is_active() -> bool:
+	return _renderer.is_active()
 
 
 ## Its settings now (the defaults without the library).

@@ -25,7 +25,8 @@ struct FieldSpec {
 	uint32_t max_count = 0; // Arrays: items; strings: bytes.
 	bool nonzero = false; // Vectors: must carry a direction.
 	bool finite = true; // Floats and vectors: NaN and infinities are refused.
-	bool zero_allowed = false; // Numbers: 0 is accepted besides [min, max] (it means a default).
+	// Numbers: when set, 0 is accepted besides [min, max], and this says what it means.
+	const char *zero_means = nullptr;
 };
 
 // Generated for every schema enum: how many values it has and their names, in order.

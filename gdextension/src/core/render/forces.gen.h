@@ -16,8 +16,8 @@ namespace haptics {
 inline constexpr size_t MAX_FORCE_PARTS = 5;
 
 // One tick's force: the active renderer's components (its force enum names them:
-// HapticMovement.MovementForce, HapticConstraint.ConstraintForce, Pong's PongForce), their sum,
-// and what the servo made of it. Newtons.
+// HapticMovementFacts.MovementForce, HapticConstraintFacts.ConstraintForce, Pong's PongForce),
+// their sum, and what the servo made of it. Newtons.
 struct ForceComponents {
 	static constexpr uint32_t SCHEMA_ID = 0x0a1fa4e6u;
 	static constexpr const char *NAME = "HapticForces";

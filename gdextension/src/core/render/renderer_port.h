@@ -3,7 +3,7 @@
 // What a renderer offers the game beyond what every renderer takes (frames, impacts, its
 // settings): values of its own schema, in and out, told apart by their layout id (the
 // first four bytes of an encoding, core/wire/codec.h). The binding hands these bytes through
-// untouched (HapticsServer.renderer_send / renderer_read), so a renderer's messages are
+// untouched (HapticsSystem.renderer_send / renderer_read), so a renderer's messages are
 // defined in its folder alone. Game thread only.
 
 #include "core/base/status.h"

@@ -27,7 +27,7 @@ struct InputConfig {
 	template <typename Self, typename Visitor>
 	static void visit(Self &r_self, Visitor &&r_visitor) {
 		r_visitor(FieldSpec{ .name = "dead_zone", .min = 0.0, .max = 0.5 }, r_self.dead_zone);
-		r_visitor(FieldSpec{ .name = "input_radius_m", .min = 0.001, .max = 1.0, .zero_allowed = true }, r_self.input_radius_m);
+		r_visitor(FieldSpec{ .name = "input_radius_m", .min = 0.001, .max = 1.0, .zero_means = "the device's workspace radius" }, r_self.input_radius_m);
 	}
 };
 static_assert(std::is_trivially_copyable_v<InputConfig>);
@@ -74,9 +74,9 @@ struct SafetyConfig {
 		r_visitor(FieldSpec{ .name = "force_scale", .min = 0.0, .max = 2.0 }, r_self.force_scale);
 		r_visitor(FieldSpec{ .name = "max_force_n", .min = 0.0, .max = 100.0 }, r_self.max_force_n);
 		r_visitor(FieldSpec{ .name = "max_impact_force_n", .min = 0.0, .max = 100.0 }, r_self.max_impact_force_n);
-		r_visitor(FieldSpec{ .name = "max_continuous_force_n", .min = 0.0, .max = 100.0, .zero_allowed = true }, r_self.max_continuous_force_n);
-		r_visitor(FieldSpec{ .name = "start_force_n", .min = 0.0, .max = 10.0, .zero_allowed = true }, r_self.start_force_n);
-		r_visitor(FieldSpec{ .name = "slew_rate_n_per_s", .min = 1.0, .max = 1000000.0, .zero_allowed = true }, r_self.slew_rate_n_per_s);
+		r_visitor(FieldSpec{ .name = "max_continuous_force_n", .min = 0.0, .max = 100.0, .zero_means = "the device's continuous rating" }, r_self.max_continuous_force_n);
+		r_visitor(FieldSpec{ .name = "start_force_n", .min = 0.0, .max = 10.0, .zero_means = "no wait" }, r_self.start_force_n);
+		r_visitor(FieldSpec{ .name = "slew_rate_n_per_s", .min = 1.0, .max = 1000000.0, .zero_means = "no slew limit" }, r_self.slew_rate_n_per_s);
 		r_visitor(FieldSpec{ .name = "startup_ramp_s", .min = 0.0, .max = 5.0 }, r_self.startup_ramp_s);
 		r_visitor(FieldSpec{ .name = "watchdog_timeout_s", .min = 0.005, .max = 10.0 }, r_self.watchdog_timeout_s);
 		r_visitor(FieldSpec{ .name = "watchdog_fade_s", .min = 0.0, .max = 0.05 }, r_self.watchdog_fade_s);
@@ -100,7 +100,7 @@ struct PlaneHoldConfig {
 	// Every field with its schema limits, in wire order (core/wire/codec.h walks them).
 	template <typename Self, typename Visitor>
 	static void visit(Self &r_self, Visitor &&r_visitor) {
-		r_visitor(FieldSpec{ .name = "stiffness_n_per_m", .min = 0.0, .max = 5000.0, .zero_allowed = true }, r_self.stiffness_n_per_m);
+		r_visitor(FieldSpec{ .name = "stiffness_n_per_m", .min = 0.0, .max = 5000.0, .zero_means = "off" }, r_self.stiffness_n_per_m);
 		r_visitor(FieldSpec{ .name = "damping_n_s_per_m", .min = 0.0, .max = 50.0 }, r_self.damping_n_s_per_m);
 	}
 };

@@ -5,8 +5,11 @@ namespace haptics::wire_detail {
 void check_number(WireReader &r_reader, const FieldSpec &p_spec, double p_value) {
 	if (p_spec.finite && !std::isfinite(p_value)) {
 		r_reader.fail(StatusCode::INVALID_ARGUMENT, "not finite (%g)", p_value);
-	} else if (p_spec.zero_allowed && p_value == 0.0) {
+	} else if (p_spec.zero_means != nullptr && p_value == 0.0) {
 		return;
+	} else if ((p_value < p_spec.min || p_value > p_spec.max) && p_spec.zero_means != nullptr) {
+		r_reader.fail(StatusCode::OUT_OF_RANGE, "%g is neither 0 (%s) nor in [%g, %g]", p_value, p_spec.zero_means,
+				p_spec.min, p_spec.max);
 	} else if (p_value < p_spec.min || p_value > p_spec.max) {
 		r_reader.fail(StatusCode::OUT_OF_RANGE, "%g is outside [%g, %g]", p_value, p_spec.min, p_spec.max);
 	}

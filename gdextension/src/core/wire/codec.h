@@ -239,7 +239,7 @@ Status decode(std::span<const uint8_t> p_bytes, T &r_value) {
 	const uint32_t id = reader.u32();
 	if (reader.ok() && id != T::SCHEMA_ID) {
 		reader.fail(StatusCode::INVALID_ARGUMENT,
-				"layout %08x is not this library's (%08x): the scripts and the library are out of step", unsigned(id),
+				"got layout %08x, not this value's (%08x): another value, or scripts and library out of step", unsigned(id),
 				unsigned(T::SCHEMA_ID));
 	}
 	T value{};

@@ -93,7 +93,7 @@ func _advance(state: Dictionary) -> void:
 			_scan(state, Stage.ADDON_SCAN)
 		Stage.ADDON_SCAN:
 			_check(true, "the editor found the addon (%.1f s)" % waited)
-			_check(ClassDB.class_exists(&"HapticsServer"), "the extension loaded in this session")
+			_check(ClassDB.class_exists(&"HapticsSystem"), "the extension loaded in this session")
 			_check_global_classes()
 			state["history"] = _global_history_version()
 			_to(state, Stage.ENABLED)

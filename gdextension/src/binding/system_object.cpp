@@ -1,4 +1,4 @@
-#include "binding/haptics_server.h"
+#include "binding/system_object.h"
 
 #include <algorithm>
 #include <cmath>
@@ -27,8 +27,8 @@ gd::Vector2 to_game(const Vec3 &p_device) {
 
 } // namespace
 
-void HapticsServer::bind_methods(gd::ClassBinder<HapticsServer> &r_binder) {
-	using S = HapticsServer;
+void SystemObject::bind_methods(gd::ClassBinder<SystemObject> &r_binder) {
+	using S = SystemObject;
 	r_binder.bind_method("list_devices", &S::list_devices);
 	r_binder.bind_method("get_simulated_device_id", &S::get_simulated_device_id);
 	r_binder.bind_method("open_device", &S::open_device, { "id" });
@@ -70,14 +70,14 @@ void HapticsServer::bind_methods(gd::ClassBinder<HapticsServer> &r_binder) {
 
 }
 
-bool HapticsServer::report(const char *p_method, const Status &p_status) const {
+bool SystemObject::report(const char *p_method, const Status &p_status) const {
 	if (!p_status.ok()) {
 		gd::print_error(std::string(p_method) + ": " + p_status.message(), p_method, __FILE__, __LINE__);
 	}
 	return p_status.ok();
 }
 
-bool HapticsServer::start(double p_rate_hz, double p_spin_us) {
+bool SystemObject::start(double p_rate_hz, double p_spin_us) {
 	ServoOptions options;
 	options.rate_hz = p_rate_hz;
 	if (p_spin_us != SPIN_US_SERVO_DEFAULT) {
@@ -98,23 +98,23 @@ bool HapticsServer::start(double p_rate_hz, double p_spin_us) {
 	return report("start", system_.start(options));
 }
 
-void HapticsServer::stop() {
+void SystemObject::stop() {
 	system_.stop();
 }
 
-bool HapticsServer::is_running() const {
+bool SystemObject::is_running() const {
 	return system_.is_running();
 }
 
-bool HapticsServer::step(double p_dt) {
+bool SystemObject::step(double p_dt) {
 	return report("step", system_.step(p_dt));
 }
 
-std::string HapticsServer::get_servo_status() const {
+std::string SystemObject::get_servo_status() const {
 	return system_.servo_status().message();
 }
 
-bool HapticsServer::submit_frame(const gd::PackedByteArray &p_frame) {
+bool SystemObject::submit_frame(const gd::PackedByteArray &p_frame) {
 	Frame frame;
 	if (!decode_argument("submit_frame", p_frame, frame)) {
 		system_.count_rejected_frame();
@@ -123,28 +123,28 @@ bool HapticsServer::submit_frame(const gd::PackedByteArray &p_frame) {
 	return report("submit_frame", system_.submit_frame(frame));
 }
 
-bool HapticsServer::push_impact(const gd::PackedByteArray &p_impact) {
+bool SystemObject::push_impact(const gd::PackedByteArray &p_impact) {
 	ImpactEvent event;
 	return decode_argument("push_impact", p_impact, event) && report("push_impact", system_.push_impact(event));
 }
 
-gd::Vector2 HapticsServer::get_input_vector() const {
+gd::Vector2 SystemObject::get_input_vector() const {
 	return to_game(system_.input_vector());
 }
 
-gd::Vector2 HapticsServer::get_device_position() const {
+gd::Vector2 SystemObject::get_device_position() const {
 	return to_game(system_.device_position());
 }
 
-gd::PackedByteArray HapticsServer::get_forces() const {
+gd::PackedByteArray SystemObject::get_forces() const {
 	return encode_result(system_.forces());
 }
 
-gd::PackedByteArray HapticsServer::get_stats() const {
+gd::PackedByteArray SystemObject::get_stats() const {
 	return encode_result(system_.stats());
 }
 
-gd::PackedFloat32Array HapticsServer::drain_telemetry(int64_t p_max_samples) {
+gd::PackedFloat32Array SystemObject::drain_telemetry(int64_t p_max_samples) {
 	gd::PackedFloat32Array out;
 	if (p_max_samples <= 0) {
 		return out;
@@ -159,11 +159,11 @@ gd::PackedFloat32Array HapticsServer::drain_telemetry(int64_t p_max_samples) {
 	return out;
 }
 
-int64_t HapticsServer::get_telemetry_stride() const {
+int64_t SystemObject::get_telemetry_stride() const {
 	return static_cast<int64_t>(TELEMETRY_STRIDE);
 }
 
-gd::PackedStringArray HapticsServer::get_telemetry_columns() const {
+gd::PackedStringArray SystemObject::get_telemetry_columns() const {
 	// The force parts' columns are named after the default renderer's components (the
 	// movement renderer's five); other renderers fill them in their own order.
 	const std::span<const char *const> parts = registered_renderers()[0].info->force_names;
@@ -183,7 +183,7 @@ gd::PackedStringArray HapticsServer::get_telemetry_columns() const {
 	return names;
 }
 
-gd::PackedStringArray HapticsServer::get_renderer_names() const {
+gd::PackedStringArray SystemObject::get_renderer_names() const {
 	gd::PackedStringArray names;
 	for (const RegisteredRenderer &renderer : registered_renderers()) {
 		names.append(renderer.name);
@@ -191,18 +191,18 @@ gd::PackedStringArray HapticsServer::get_renderer_names() const {
 	return names;
 }
 
-gd::PackedByteArray HapticsServer::get_servo_settings() const {
+gd::PackedByteArray SystemObject::get_servo_settings() const {
 	return encode_result(static_cast<const ServoSettings &>(system_.config().servo));
 }
 
-bool HapticsServer::set_servo_settings(const gd::PackedByteArray &p_settings) {
+bool SystemObject::set_servo_settings(const gd::PackedByteArray &p_settings) {
 	RenderConfig config = system_.config();
 	ServoSettings &settings = config.servo;
 	return decode_argument("set_servo_settings", p_settings, settings) &&
 			report("set_servo_settings", system_.configure(config));
 }
 
-gd::PackedByteArray HapticsServer::get_renderer_settings(int64_t p_mode) const {
+gd::PackedByteArray SystemObject::get_renderer_settings(int64_t p_mode) const {
 	gd::PackedByteArray out;
 	const RenderConfig &config = system_.config();
 	if (!visit_renderer_settings(config, p_mode, [&](const auto &p_settings) { out = encode_result(p_settings); })) {
@@ -211,7 +211,7 @@ gd::PackedByteArray HapticsServer::get_renderer_settings(int64_t p_mode) const {
 	return out;
 }
 
-bool HapticsServer::set_renderer_settings(int64_t p_mode, const gd::PackedByteArray &p_settings) {
+bool SystemObject::set_renderer_settings(int64_t p_mode, const gd::PackedByteArray &p_settings) {
 	RenderConfig config = system_.config();
 	bool decoded = false;
 	if (!visit_renderer_settings(config, p_mode,
@@ -222,7 +222,7 @@ bool HapticsServer::set_renderer_settings(int64_t p_mode, const gd::PackedByteAr
 	return decoded && report("set_renderer_settings", system_.configure(config));
 }
 
-bool HapticsServer::set_render_mode(int64_t p_mode) {
+bool SystemObject::set_render_mode(int64_t p_mode) {
 	const std::span<const RegisteredRenderer> renderers = registered_renderers();
 	if (p_mode < 0 || p_mode >= static_cast<int64_t>(renderers.size())) {
 		std::string modes; // "A, B or C"
@@ -240,11 +240,11 @@ bool HapticsServer::set_render_mode(int64_t p_mode) {
 	return report("set_render_mode", system_.configure(config));
 }
 
-int64_t HapticsServer::get_render_mode() const {
+int64_t SystemObject::get_render_mode() const {
 	return static_cast<int64_t>(system_.config().servo.render_mode);
 }
 
-RendererPort *HapticsServer::port_of(const char *p_method, int64_t p_mode) {
+RendererPort *SystemObject::port_of(const char *p_method, int64_t p_mode) {
 	const auto &ports = system_.renderers().all_ports;
 	if (p_mode < 0 || p_mode >= static_cast<int64_t>(ports.size())) {
 		HAPTICS_ERROR(std::string(p_method) + ": no renderer has mode " + std::to_string(p_mode) + " (0.." +
@@ -254,12 +254,12 @@ RendererPort *HapticsServer::port_of(const char *p_method, int64_t p_mode) {
 	return ports[static_cast<size_t>(p_mode)];
 }
 
-bool HapticsServer::renderer_send(int64_t p_mode, const gd::PackedByteArray &p_message) {
+bool SystemObject::renderer_send(int64_t p_mode, const gd::PackedByteArray &p_message) {
 	RendererPort *port = port_of("renderer_send", p_mode);
 	return port && report("renderer_send", port->receive(bytes_of(p_message)));
 }
 
-gd::PackedByteArray HapticsServer::renderer_read(int64_t p_mode, int64_t p_value_id) {
+gd::PackedByteArray SystemObject::renderer_read(int64_t p_mode, int64_t p_value_id) {
 	RendererPort *port = port_of("renderer_read", p_mode);
 	std::vector<uint8_t> bytes;
 	if (!port || !report("renderer_read", port->give(static_cast<uint32_t>(p_value_id), bytes))) {
@@ -268,7 +268,7 @@ gd::PackedByteArray HapticsServer::renderer_read(int64_t p_mode, int64_t p_value
 	return to_packed(bytes);
 }
 
-std::string HapticsServer::get_version() const {
+std::string SystemObject::get_version() const {
 	return std::string("haptics ") + EXTENSION_VERSION + " (Godot " +
 			std::to_string(gd::api.version_major) + "." + std::to_string(gd::api.version_minor) +
 			"." + std::to_string(gd::api.version_patch) + ")";

@@ -1,5 +1,5 @@
-// HapticsServer: the one native class, which GDScript reaches through the Haptics door's native
-// backend only. A thin adapter over the engine-free HapticsSystem (system/haptics_system.h)
+// SystemObject, registered as HapticsSystem: the one native class, which GDScript reaches
+// through the Haptics door's native backend only. A thin adapter over the engine-free HapticsSystem (system/haptics_system.h)
 // and its renderers' ports: values cross as the bytes of their schema (wire_values.h), so it
 // names no game and converts no field by hand; rejected input is reported through the
 // engine's error printer, naming the field, and a rejected call changes nothing. All
@@ -18,11 +18,11 @@
 
 namespace haptics::binding {
 
-class HapticsServer : public gd::ExtensionObject {
+class SystemObject : public gd::ExtensionObject {
 public:
-	static void bind_methods(gd::ClassBinder<HapticsServer> &r_binder);
+	static void bind_methods(gd::ClassBinder<SystemObject> &r_binder);
 
-	// --- Devices --- (haptics_server_devices.cpp)
+	// --- Devices --- (system_object_devices.cpp)
 	// Every device present (the simulated one first, then hidapi, libusb, evdev and
 	// OpenHaptics devices) and why the enumeration could not look everywhere: a
 	// HapticDeviceList.

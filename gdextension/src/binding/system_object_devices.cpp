@@ -1,7 +1,7 @@
-// HapticsServer's device methods: what is present (the device factory's list), opening and
+// HapticsSystem's device methods: what is present (the device factory's list), opening and
 // closing, what the open device offers, and the hand and cable of devices in software.
 
-#include "binding/haptics_server.h"
+#include "binding/system_object.h"
 
 #include "binding/log.h"
 #include "binding/wire_values.h"
@@ -9,15 +9,15 @@
 
 namespace haptics::binding {
 
-gd::PackedByteArray HapticsServer::list_devices() {
+gd::PackedByteArray SystemObject::list_devices() {
 	return encode_result(list_all_devices());
 }
 
-std::string HapticsServer::get_simulated_device_id() const {
+std::string SystemObject::get_simulated_device_id() const {
 	return std::string(SIMULATED_DEVICE_ID);
 }
 
-bool HapticsServer::open_device(const std::string &p_id) {
+bool SystemObject::open_device(const std::string &p_id) {
 	if (p_id == SIMULATED_DEVICE_ID) {
 		if (!report("open_device", system_.open_simulated_device())) {
 			return false;
@@ -48,32 +48,32 @@ bool HapticsServer::open_device(const std::string &p_id) {
 	return false;
 }
 
-void HapticsServer::close_device() {
+void SystemObject::close_device() {
 	system_.close_device();
 	device_id_.clear();
 }
 
-std::string HapticsServer::get_device_id() const {
+std::string SystemObject::get_device_id() const {
 	return system_.has_device() ? device_id_ : std::string();
 }
 
-std::string HapticsServer::get_device_name() const {
+std::string SystemObject::get_device_name() const {
 	return system_.device_name();
 }
 
-gd::PackedByteArray HapticsServer::get_device_capabilities() const {
+gd::PackedByteArray SystemObject::get_device_capabilities() const {
 	return encode_result(system_.device_capabilities());
 }
 
-gd::PackedByteArray HapticsServer::get_device_status() const {
+gd::PackedByteArray SystemObject::get_device_status() const {
 	return encode_result(system_.device_status());
 }
 
-bool HapticsServer::calibrate() {
+bool SystemObject::calibrate() {
 	return report("calibrate", system_.calibrate());
 }
 
-bool HapticsServer::set_hand_target(gd::Vector3 p_target_m) {
+bool SystemObject::set_hand_target(gd::Vector3 p_target_m) {
 	const Vec3 target{ p_target_m.x, p_target_m.y, p_target_m.z };
 	if (!report("set_hand_target", system_.set_hand_target(target))) {
 		return false;
@@ -82,11 +82,11 @@ bool HapticsServer::set_hand_target(gd::Vector3 p_target_m) {
 	return true;
 }
 
-gd::Vector3 HapticsServer::get_hand_target() const {
+gd::Vector3 SystemObject::get_hand_target() const {
 	return hand_target_;
 }
 
-bool HapticsServer::set_simulated_plugged(bool p_plugged) {
+bool SystemObject::set_simulated_plugged(bool p_plugged) {
 	// A development model's cable stays unplugged across reopen attempts, like a real one.
 	HapticDevice *device = system_.current_device();
 	if (SoftwareCable *cable = device ? device->software_cable() : nullptr) {

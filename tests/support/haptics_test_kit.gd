@@ -1,4 +1,4 @@
-class_name TestHaptics
+class_name HapticsTestKit
 extends RefCounted
 ## What tests need to drive the haptics through the same typed door games use: a door of the
 ## test's own (its own server, the simulated device open, outside the tree: no servo thread,
@@ -6,7 +6,6 @@ extends RefCounted
 ## Free the door with the suite's [code]autofree()[/code]: its device closes with it.
 
 const Door := preload("res://addons/haptics/door/haptics.gd")
-const Backend := preload("res://addons/haptics/door/haptics_backend.gd")
 const DT := 0.001
 
 
@@ -91,9 +90,9 @@ static func impact(
 	return out
 
 
-## The movement renderer's component [param part] (a [code]HapticMovement.MovementForce[/code])
+## The movement renderer's component [param part] (a [code]HapticMovementFacts.MovementForce[/code])
 ## of the door's last tick, newtons, game axes.
-static func movement_part(door: Door, part: HapticMovement.MovementForce) -> Vector2:
+static func movement_part(door: Door, part: HapticMovementFacts.MovementForce) -> Vector2:
 	return door.get_forces().parts[part]
 
 
@@ -106,23 +105,39 @@ static func find_device(door: Door, id: String) -> HapticDeviceInfo:
 	return null
 
 
-## The servo's configuration field table (one [Dictionary] per setting: section, key, kind,
-## min, max, unit, default, choices, old_key), as the door reads it from the native backend;
-## empty without the extension.
-static func config_fields() -> Array:
-	if not ClassDB.class_exists(Door.SERVER_CLASS):
-		return []
-	var backend: Backend = (load(Door.NATIVE_BACKEND_PATH) as GDScript).new()
-	return backend.get_config_fields()
+## Makes the door's force reach what it renders at once: no start-up ramp, no slew limit.
+static func instant(door: Door) -> bool:
+	var settings: HapticServoSettings = door.servo.get_settings()
+	settings.safety.slew_rate_n_per_s = 0.0
+	return door.servo.apply_settings(settings) and no_ramp(door)
+
+
+## Makes the door render at full strength from its first tick (no start-up ramp).
+static func no_ramp(door: Door) -> bool:
+	var settings: HapticServoSettings = door.servo.get_settings()
+	settings.safety.startup_ramp_s = 0.0
+	return door.servo.apply_settings(settings)
+
+
+## Makes the door's input vector the hand's position as it is (no dead zone).
+static func no_dead_zone(door: Door) -> bool:
+	var settings: HapticServoSettings = door.servo.get_settings()
+	settings.input.dead_zone = 0.0
+	return door.servo.apply_settings(settings)
+
+
+## The door's movement renderer's settings.
+static func movement(door: Door) -> HapticMovementSettings:
+	return HapticsMovement.of(door).get_settings()
 
 
 ## A [HapticForces] from components named as the HUD names them: the movement renderer's
-## ([code]HapticMovement.MOVEMENT_FORCE_NAMES[/code]), [code]"impact"[/code] and
+## ([code]HapticMovementFacts.MOVEMENT_FORCE_NAMES[/code]), [code]"impact"[/code] and
 ## [code]"total"[/code]; a component not given is zero.
 static func forces_of(named: Dictionary[String, Vector2]) -> HapticForces:
 	var out: HapticForces = HapticForces.new()
-	for part: int in HapticMovement.MOVEMENT_FORCE_NAMES.size():
-		out.parts[part] = _named(named, HapticMovement.MOVEMENT_FORCE_NAMES[part])
+	for part: int in HapticMovementFacts.MOVEMENT_FORCE_NAMES.size():
+		out.parts[part] = _named(named, HapticMovementFacts.MOVEMENT_FORCE_NAMES[part])
 	out.impact = _named(named, "impact")
 	out.total = _named(named, "total")
 	return out
