@@ -122,7 +122,8 @@ func load_settings() -> Error:
 	device_id = _read(file, "device", TYPE_STRING, device_id)
 	force_scale = _read(file, "force_scale", TYPE_FLOAT, force_scale)
 	smoothing_enabled = _read(file, "smoothing", TYPE_BOOL, smoothing_enabled)
-	control_mode = StringName(_read(file, "control_mode", TYPE_STRING, String(control_mode)))
+	var mode: String = _read(file, "control_mode", TYPE_STRING, String(control_mode))
+	control_mode = StringName(mode)
 	changed.emit()
 	return OK
 
@@ -194,7 +195,7 @@ func _warn(message: String) -> void:
 # [param fallback].
 static func _read(file: ConfigFile, key: String, type: Variant.Type, fallback: Variant) -> Variant:
 	var value: Variant = file.get_value(SECTION, key, fallback)
-	var found: Variant.Type = typeof(value)
+	var found: int = typeof(value)
 	if found == type or (type == TYPE_FLOAT and found == TYPE_INT):
 		return value
 	if type == TYPE_STRING and found == TYPE_STRING_NAME:

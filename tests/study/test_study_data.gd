@@ -5,41 +5,6 @@ extends TestSuite
 
 const Support := preload("res://tests/study/study_test_support.gd")
 
-## Every study script, compiled with the project's warnings raised to errors.
-const STUDY_SCRIPTS: PackedStringArray = [
-	"res://game/study/data/participant_state.gd",
-	"res://game/study/data/study_config.gd",
-	"res://game/study/data/study_format.gd",
-	"res://game/study/data/study_store.gd",
-	"res://game/study/levels/maze_walls.gd",
-	"res://game/study/levels/study_goal.gd",
-	"res://game/study/levels/study_level.gd",
-	"res://game/study/levels/wall_segments.gd",
-	"res://game/study/screens/centre_gauge.gd",
-	"res://game/study/screens/final_screen.gd",
-	"res://game/study/screens/message_screen.gd",
-	"res://game/study/screens/rating_screen.gd",
-	"res://game/study/screens/start_screen.gd",
-	"res://game/study/screens/study_stage.gd",
-	"res://game/study/screens/study_theme.gd",
-	"res://game/study/session/answer_flow.gd",
-	"res://game/study/session/condition_order.gd",
-	"res://game/study/session/scripted_participant.gd",
-	"res://game/study/session/session_start.gd",
-	"res://game/study/session/study_launch.gd",
-	"res://game/study/session/study_runner.gd",
-	"res://game/study/trials/condition_rig.gd",
-	"res://game/study/trials/maze_map.gd",
-	"res://game/study/trials/practice_flow.gd",
-	"res://game/study/trials/study_pilot.gd",
-	"res://game/study/trials/study_probe.gd",
-	"res://game/study/trials/trial_flow.gd",
-	"res://game/study/trials/trial_recorder.gd",
-	"res://game/study/data/trial_result.gd",
-	"res://tests/study/study_test_support.gd",
-	"res://tests/study/tour/study_tour.gd",
-]
-
 var _root: String = ""
 
 
@@ -49,11 +14,6 @@ func before_each() -> void:
 
 func after_each() -> void:
 	Support.remove_tree(_root)
-
-
-func test_every_study_script_compiles_without_warnings() -> void:
-	var enabled: int = await assert_scripts_compile_without_warnings(STUDY_SCRIPTS)
-	assert_gt(enabled, 0, "project.godot enables some GDScript warnings")
 
 
 func test_numbers_and_timestamps_follow_the_format() -> void:

@@ -38,9 +38,10 @@ const SETTING_HAND_ACTIONS := "haptics/input/hand_actions"
 ## [method Input.get_axis]; an empty list (the default): none.
 const SETTING_FEED_ACTIONS := "haptics/input/feed_actions"
 ## The project setting for the servo's busy-wait before each deadline, in microseconds
-## (HapticsSystem.start's [code]spin_us[/code]: 0 to half a period, or -1, the default: the
-## servo's own, HapticsSystem.DEFAULT_SPIN_US under real time and none without). More spin,
-## steadier ticks, more of a core; docs/servo-timing.md has the measurements.
+## ([method HapticsServo.start]'s [code]spin_us[/code]: 0 to half a period, or -1, the
+## default: the servo's own, [constant HapticServoConstants.DEFAULT_SPIN_NS] under real time
+## and none without). More spin, steadier ticks, more of a core; docs/servo-timing.md has the
+## measurements.
 const SETTING_SPIN_US := "haptics/servo/spin_us"
 ## The hand's actions when the project names none: Godot's own, which every project has
 ## (arrow keys and a gamepad's d-pad).
@@ -80,10 +81,10 @@ var smoothing_enabled: bool:
 	get:
 		if not is_available():
 			return _offline_smoothing
-		return HapticsMovement.of(self).get_settings().smoothing.enabled
+		return _movement().get_settings().smoothing.enabled
 	set(value):
 		if is_available():
-			var movement: HapticsMovement = HapticsMovement.of(self)
+			var movement: HapticsMovement = _movement()
 			var settings: HapticMovementSettings = movement.get_settings()
 			settings.smoothing.enabled = value
 			movement.apply_settings(settings)
@@ -317,7 +318,8 @@ func reset_settings() -> void:
 func _spin_us_setting() -> float:
 	var value: Variant = ProjectSettings.get_setting(SETTING_SPIN_US, HapticsServo.SPIN_US_DEFAULT)
 	if value is float or value is int:
-		return float(value)
+		var spin_us: float = value
+		return spin_us
 	push_error(
 		(
 			"Haptics: project setting %s = %s is not a number; using the servo's default."
@@ -325,6 +327,12 @@ func _spin_us_setting() -> float:
 		)
 	)
 	return HapticsServo.SPIN_US_DEFAULT
+
+
+# The movement renderer's face (made here, not by HapticsMovement.of(): that takes the
+# door's script, which this file's own copy is not when a test compiles it apart).
+func _movement() -> HapticsMovement:
+	return HapticsMovement.new(renderer(HapticsMovement.NAME))
 
 
 func _follow_user_input() -> void:

@@ -29,14 +29,19 @@ const MAX_GAIN := HapticFrameLimits.MAX_GAIN
 @export_range(1.0, 1000.0, 1.0, "suffix:Hz") var impact_frequency: float = 150.0
 ## Decay time constant of the impact transient.
 @export_range(0.001, 1.0, 0.001, "suffix:s") var impact_decay: float = 0.03
-## The name [member friction] had before 0.3.0: materials saved with it still load (with a
-## deprecation warning) until 0.4.0.
-var damping: float:
-	get:
-		return friction
-	set(value):
-		push_warning("HapticMaterial.damping is deprecated: use friction (accepted until 0.4.0).")
-		friction = value
+
+
+# A material saved before 0.3.0 names its friction "damping", which 0.4.0 no longer reads:
+# say so instead of loading it with the default friction in silence.
+func _set(property: StringName, _value: Variant) -> bool:
+	if property == &"damping":
+		push_error(
+			(
+				"HapticMaterial: 'damping' was renamed 'friction' in 0.3.0 and is no longer read; "
+				+ "set the material's friction again (docs/upgrading.md)."
+			)
+		)
+	return false
 
 
 ## This material's contact law, as a frame's contact carries it.

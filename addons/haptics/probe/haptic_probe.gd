@@ -50,7 +50,8 @@ const HapticBodyShapes := preload("res://addons/haptics/probe/haptic_body_shapes
 ## How far above the body to look for objects resting on it, in pixels.
 @export_range(0.5, 16.0, 0.5, "suffix:px") var resting_probe_distance: float = 2.0
 ## Gravity platformers: while standing on a floor, the avatar's own weight presses the hand
-## down with this mass × the servo's [code]force_model.gravity_n_per_kg[/code] (1 N/kg by
+## down with this mass × the movement renderer's
+## [member HapticForceModelSettings.gravity_n_per_kg] (1 N/kg by
 ## default, so the value reads as newtons). 0 (the default) leaves standing still force-free.
 @export_range(0.0, 10.0, 0.01, "suffix:kg") var own_weight_kg: float = 0.0
 ## Impacts slower than this are not played, in metres per second.
@@ -186,8 +187,9 @@ func build_frame() -> HapticFrame:
 	var room: int = HapticFrameLimits.MAX_RESTING_OBJECTS
 	for entry: Dictionary in above:
 		var rigid: RigidBody2D = entry["collider"]
+		var normal: Vector2 = entry["normal"]
 		if resting.size() < room:
-			resting.append(_load(entry["normal"], rigid.mass))
+			resting.append(_load(normal, rigid.mass))
 	if own_weight_kg > 0.0 and floor_normal.dot(Vector2.UP) > 0.5 and resting.size() < room:
 		# The avatar's own weight, felt like an object resting on the hand: pressed along
 		# the floor's normal into the floor.
@@ -323,10 +325,10 @@ func _report_impact(collision: Dictionary, material: HapticMaterial) -> void:
 
 
 static func _load(normal: Vector2, mass_kg: float) -> HapticLoad:
-	var load: HapticLoad = HapticLoad.new()
-	load.normal = normal
-	load.mass_kg = mass_kg
-	return load
+	var out: HapticLoad = HapticLoad.new()
+	out.normal = normal
+	out.mass_kg = mass_kg
+	return out
 
 
 # The collider's own HapticMaterial, else the touched tile's (HapticMaterial.of_tile), else

@@ -7,13 +7,13 @@ extends RefCounted
 
 ## This value's bytes: its layout id, then its fields.
 func encode() -> PackedByteArray:
-	push_error("HapticsValue.encode: %s does not override it." % (get_script() as Script).resource_path)
+	push_error("HapticsValue.encode: %s does not override it." % self)
 	return PackedByteArray()
 
 
 ## Writes the fields, in order (also as part of a value that holds this one).
 func write_to(_writer: HapticsWireWriter) -> void:
-	push_error("HapticsValue.write_to: %s does not override it." % (get_script() as Script).resource_path)
+	push_error("HapticsValue.write_to: %s does not override it." % self)
 
 
 ## The name of [param value] in enum [param choices] as settings files and the wire's
@@ -27,7 +27,8 @@ static func choice_name(choices: Dictionary, value: int) -> String:
 ## The value named [param name] in enum [param choices] ([code]"paper_sum"[/code] → 1);
 ## -1 when it names none of them.
 static func choice_value(choices: Dictionary, name: String) -> int:
-	return int(choices.get(name.to_upper(), -1)) if name == name.to_lower() else -1
+	var value: int = choices.get(name.to_upper(), -1)
+	return value if name == name.to_lower() else -1
 
 
 ## The names of enum [param choices], in order ([code]["per_contact", "paper_sum"][/code]).

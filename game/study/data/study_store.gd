@@ -18,7 +18,7 @@ var participant_id: String = ""
 ## Why the last write failed; empty after a success.
 var last_error: String = ""
 
-var _durable: DurableWriter = DurableWriter.new()
+var _durable: DurableWriter = DurableWriter.open()
 
 
 func _init(p_root: String = "", p_participant_id: String = "") -> void:

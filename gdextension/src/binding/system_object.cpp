@@ -225,11 +225,9 @@ bool SystemObject::set_renderer_settings(int64_t p_mode, const gd::PackedByteArr
 bool SystemObject::set_render_mode(int64_t p_mode) {
 	const std::span<const RegisteredRenderer> renderers = registered_renderers();
 	if (p_mode < 0 || p_mode >= static_cast<int64_t>(renderers.size())) {
-		std::string modes; // "A, B or C"
+		std::string modes; // "0 movement, 1 constraint, 2 pong"
 		for (size_t mode = 0; mode < renderers.size(); ++mode) {
-			modes += (mode == 0 ? "" : mode + 1 == renderers.size() ? " or "
-																	: ", ") +
-					std::string(renderers[mode].mode_constant);
+			modes += (mode == 0 ? "" : ", ") + std::to_string(mode) + " " + renderers[mode].name;
 		}
 		HAPTICS_ERROR("set_render_mode: unknown mode " + std::to_string(p_mode) + " (" + modes +
 				"); the current mode stays.");

@@ -78,10 +78,10 @@ public:
 	int64_t get_telemetry_stride() const;
 	gd::PackedStringArray get_telemetry_columns() const;
 
-	// --- Constraint-based rendering (position control against a maze's walls) ---
-	// The renderers by name, in render-mode order (a mode is its name's index).
+	// --- Renderers ---
+	// The renderers by name, in render-mode order (a mode is its name's index; the first is
+	// the default).
 	gd::PackedStringArray get_renderer_names() const;
-	// RENDER_MODE_MOVEMENT (the default), RENDER_MODE_CONSTRAINT or RENDER_MODE_PONG.
 	bool set_render_mode(int64_t p_mode);
 	int64_t get_render_mode() const;
 	// --- What one renderer offers of its own (core/render/renderer_port.h) ---

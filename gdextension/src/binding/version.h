@@ -1,5 +1,4 @@
-// The extension's version (the addon's plugin.cfg, passed in by CMake), and the release that
-// stops accepting the keys renamed in it.
+// The extension's version (the addon's plugin.cfg, passed in by CMake).
 #pragma once
 
 #ifndef HAPTICS_VERSION
@@ -9,6 +8,5 @@
 namespace haptics::binding {
 
 inline constexpr const char *EXTENSION_VERSION = HAPTICS_VERSION;
-inline constexpr const char *OLD_KEYS_REMOVED_IN = "0.4.0";
 
 } // namespace haptics::binding

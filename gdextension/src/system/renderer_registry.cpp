@@ -5,7 +5,7 @@
 namespace haptics {
 
 std::span<const RegisteredRenderer> registered_renderers() {
-#define HAPTICS_ROW_OF(MODE, name, Class) { #name, "RENDER_MODE_" #MODE, &Class::info() },
+#define HAPTICS_ROW_OF(MODE, name, Class) { #name, &Class::info() },
 	static const RegisteredRenderer ROWS[] = { HAPTICS_RENDERERS(HAPTICS_ROW_OF) };
 #undef HAPTICS_ROW_OF
 	return ROWS;

@@ -1,8 +1,7 @@
 #pragma once
 
 // The renderer table (renderer_table.h) as data, for what walks it at run time: the binding
-// (RENDER_MODE_* and TELEMETRY_FLAG_* constants, the names of get_forces()) and the
-// configuration table (config_table.h).
+// (the renderers' names, which GDScript chooses a renderer by) and the tests.
 
 #include "core/render/renderer_info.h"
 
@@ -12,7 +11,6 @@ namespace haptics {
 
 struct RegisteredRenderer {
 	const char *name; // "movement"
-	const char *mode_constant; // "RENDER_MODE_MOVEMENT"
 	const RendererInfo *info;
 };
 

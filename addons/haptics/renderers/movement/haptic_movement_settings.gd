@@ -3,8 +3,7 @@
 # (make lint checks that it is current). The wire format: docs/values.md.
 class_name HapticMovementSettings
 extends HapticsValue
-## The movement renderer's settings (HapticsRenderer.get_settings / apply_settings of
-## Haptics.renderer(&"movement")).
+## The movement renderer's settings (HapticsMovement.of(Haptics).get_settings() / apply_settings()).
 
 ## This layout's id on the wire (docs/values.md): a change of any field changes it.
 const SCHEMA_ID: int = 0xe989661e

@@ -3,14 +3,15 @@
 // The seam between the servo pipeline and what it renders. Each tick the pipeline reads the
 // device, picks up the game's inputs and asks the active renderer for a force; the impact
 // transients and the safety stage (core/servo/servo_pipeline.h) then apply to every renderer
-// alike. The core knows no renderer: the engine assembles them (system/renderer_table.h), and
-// ServoConfig::render_mode is the active one's index in the list the pipeline is given.
+// alike. The core knows no renderer: the system assembles them (system/renderer_table.h),
+// and ServoConfig::render_mode is the active one's index in the list the pipeline is given.
 //
-// Besides this interface a renderer class offers, for the engine: `Config` (its settings
-// struct, with its rows of the configuration table), `Channels` (derived from
+// Besides this interface a renderer class offers, for the system: `Config` (its settings, a
+// schema value: its fields' ranges are checked from the schema), `Channels` (derived from
 // RendererChannels: a Seqlock<Config> `settings` and whatever else it shares with the game),
-// a constructor taking its Channels, and a static `const RendererInfo &info()`; optionally a
-// static `Status validate(const Config &)` for limits that join its fields.
+// `Port` (what it takes from and gives GDScript, core/render/renderer_port.h; NoPort for
+// nothing), a constructor taking its Channels, and a static `const RendererInfo &info()`;
+// optionally a static `Status validate(const Config &)` for limits that join its fields.
 //
 // Call order, all on the thread that ticks the servo, none of it may allocate, lock, block
 // or log:

@@ -1,8 +1,8 @@
 #pragma once
 
-// What the engine and the game know of a renderer without running it. Each renderer
-// describes itself once (its static info()); the engine's renderer table
-// (system/renderer_table.h) names it and gives its render mode.
+// What the system and the game know of a renderer without running it. Each renderer
+// describes itself once (its static info()); the renderer table (system/renderer_table.h)
+// names it and gives its render mode.
 
 #include "core/render/force_components.h"
 
@@ -15,16 +15,12 @@ namespace haptics {
 // renderer raises bits from here up, each renderer its own (a doctest checks they differ).
 inline constexpr uint32_t FIRST_RENDERER_FLAG_BIT = 7;
 
-struct TelemetryFlagName {
-	const char *name; // The GDScript constant, e.g. "TELEMETRY_FLAG_PONG_MODE".
-	uint32_t flag;
-};
-
 struct RendererInfo {
 	// What get_forces() calls ForceComponents::parts while this renderer is active, in order;
 	// at most MAX_FORCE_PARTS.
 	std::span<const char *const> force_names;
-	std::span<const TelemetryFlagName> telemetry_flags;
+	// The telemetry flag bits it raises (its schema's TELEMETRY_FLAG_* constants name them).
+	std::span<const uint32_t> telemetry_flags;
 };
 
 } // namespace haptics

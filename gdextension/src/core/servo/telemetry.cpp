@@ -10,20 +10,20 @@ void put(TelemetrySample &r_sample, size_t p_column, const Vec3 &p_value) {
 	r_sample.values[p_column + 2] = static_cast<float>(p_value.z);
 }
 
-constexpr TelemetryFlagName FLAG_NAMES[] = {
-	{ "TELEMETRY_FLAG_CONTACT", TELEMETRY_FLAG_CONTACT },
-	{ "TELEMETRY_FLAG_IN_WATER", TELEMETRY_FLAG_IN_WATER },
-	{ "TELEMETRY_FLAG_WATCHDOG", TELEMETRY_FLAG_WATCHDOG },
-	{ "TELEMETRY_FLAG_CLAMPED", TELEMETRY_FLAG_CLAMPED },
-	{ "TELEMETRY_FLAG_RAMPING", TELEMETRY_FLAG_RAMPING },
-	{ "TELEMETRY_FLAG_NON_FINITE", TELEMETRY_FLAG_NON_FINITE },
-	{ "TELEMETRY_FLAG_NEW_FRAME", TELEMETRY_FLAG_NEW_FRAME },
+constexpr uint32_t SERVO_FLAGS[] = {
+	TELEMETRY_FLAG_CONTACT,
+	TELEMETRY_FLAG_IN_WATER,
+	TELEMETRY_FLAG_WATCHDOG,
+	TELEMETRY_FLAG_CLAMPED,
+	TELEMETRY_FLAG_RAMPING,
+	TELEMETRY_FLAG_NON_FINITE,
+	TELEMETRY_FLAG_NEW_FRAME,
 };
 
 } // namespace
 
-std::span<const TelemetryFlagName> servo_telemetry_flags() {
-	return FLAG_NAMES;
+std::span<const uint32_t> servo_telemetry_flags() {
+	return SERVO_FLAGS;
 }
 
 TelemetrySample make_telemetry_sample(double p_time_s, const Vec3 &p_input, const Vec3 &p_position,

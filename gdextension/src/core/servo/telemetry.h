@@ -56,8 +56,8 @@ constexpr size_t telemetry_part_column(size_t p_part) {
 // FIRST_RENDERER_FLAG_BIT up.
 static_assert(TELEMETRY_FLAG_NEW_FRAME < (1u << FIRST_RENDERER_FLAG_BIT));
 
-// The servo's flags by the names GDScript knows them by.
-std::span<const TelemetryFlagName> servo_telemetry_flags();
+// The servo's own flag bits.
+std::span<const uint32_t> servo_telemetry_flags();
 
 struct TelemetrySample {
 	float values[TELEMETRY_STRIDE] = {};

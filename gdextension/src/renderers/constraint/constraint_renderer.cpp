@@ -4,12 +4,7 @@ namespace haptics {
 
 namespace {
 
-// The movement renderer's names, which a HUD already shows: only the first is ever nonzero.
-
-constexpr TelemetryFlagName FLAGS[] = {
-	{ "TELEMETRY_FLAG_CONSTRAINT_MODE", TELEMETRY_FLAG_CONSTRAINT_MODE },
-	{ "TELEMETRY_FLAG_PROXY_CONTACT", TELEMETRY_FLAG_PROXY_CONTACT },
-};
+constexpr uint32_t FLAGS[] = { TELEMETRY_FLAG_CONSTRAINT_MODE, TELEMETRY_FLAG_PROXY_CONTACT };
 
 } // namespace
 

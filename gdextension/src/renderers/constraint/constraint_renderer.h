@@ -7,9 +7,8 @@
 //   goal  = to_maze(device.xy)
 //   F.xy  = k_c (to_device(proxy) - device.xy),   F.z = 0
 // Only the normal force, as in the study: the proxy is frictionless, so the force is always
-// along the normals of the walls holding it; it is reported as the first force component,
-// `normal` (the components keep the movement renderer's names, so a HUD reads a maze's wall
-// where it reads a floor; the others are zero). z is left free (the maze is planar). The
+// along the normals of the walls holding it; it is its one force component, `wall`
+// (ConstraintForce). z is left free (the maze is planar). The
 // force is not low-pass filtered: a filter inside a position-feedback loop adds phase lag,
 // which makes a stiff wall spongy and can make it unstable, and the force is already
 // continuous at the servo rate.

@@ -95,8 +95,8 @@ struct SmoothingConfig {
 };
 static_assert(std::is_trivially_copyable_v<SmoothingConfig>);
 
-// The movement renderer's settings (HapticsRenderer.get_settings / apply_settings of
-// Haptics.renderer(&"movement")).
+// The movement renderer's settings (HapticsMovement.of(Haptics).get_settings() /
+// apply_settings()).
 struct MovementConfig {
 	static constexpr uint32_t SCHEMA_ID = 0xe989661eu;
 	static constexpr const char *NAME = "HapticMovementSettings";

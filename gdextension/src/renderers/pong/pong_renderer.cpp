@@ -9,10 +9,7 @@ namespace {
 // Seqlock's constructor publishes a default value: version 1 means "nothing sent yet".
 constexpr uint64_t UNTOUCHED_VERSION = 1;
 
-constexpr TelemetryFlagName FLAGS[] = {
-	{ "TELEMETRY_FLAG_PONG_MODE", TELEMETRY_FLAG_PONG_MODE },
-	{ "TELEMETRY_FLAG_PADDLE_CONTACT", TELEMETRY_FLAG_PADDLE_CONTACT },
-};
+constexpr uint32_t FLAGS[] = { TELEMETRY_FLAG_PONG_MODE, TELEMETRY_FLAG_PADDLE_CONTACT };
 
 } // namespace
 
