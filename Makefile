@@ -24,7 +24,7 @@ BENCH_SECONDS ?= 10
 SOAK_SECONDS ?= 600
 
 .PHONY: help play edit test check deps engine schema build build-release import test-native test-godot \
-	test-godot-unit lint pong-demo \
+	test-godot-unit lint test-schema pong-demo \
 	export test-export export-server test-export-server dist test-dist test-windowed test-net bench-net bench soak sanitize analyze export-study \
 	test-analysis addon test-addon test-editor test-kernel test-rt test-bare clean distclean \
 	build-windows test-windows
@@ -101,8 +101,9 @@ pong-demo: import
 
 ## test: every suite: what CI runs (about 40 minutes)
 ## every suite; any failure fails the target
-test: import test-native test-godot lint test-analysis test-net test-export test-export-server \
-	test-dist test-windowed test-addon test-editor test-kernel test-rt test-bare test-windows
+test: import test-native test-godot lint test-schema test-analysis test-net test-export \
+	test-export-server test-dist test-windowed test-addon test-editor test-kernel test-rt \
+	test-bare test-windows
 	@echo "make test: all suites passed"
 
 ## check: the quick loop: build, doctests, the GDScript unit suites, lint (under 5 minutes)
@@ -302,6 +303,13 @@ export-study:
 ## the study analysis tool's pytest suite (hand-computed statistics)
 test-analysis:
 	@tools/analysis/run.sh -m pytest tools/analysis/tests -q
+
+## test-schema: a newcomer's change in a scratch copy: a schema field, a fourth renderer
+## in a copy of the working tree, one field added to one schema entry must reach C++ (built)
+## and GDScript typed and documented, and a fourth renderer must register by one row and
+## render (tests/schema, a few minutes)
+test-schema: engine
+	@tools/analysis/run.sh -m pytest tests/schema -q -p no:cacheprovider
 
 ## test-net: the network tests: real peers through a relay on 127.0.0.1
 ## the network tests: the UDP relay that gives loopback latency, jitter and loss,

@@ -3,6 +3,9 @@ extends TestSuite
 ## engine process (exit code, result lines, summary line, JUnit XML), since a deliberately
 ## failing run cannot happen inside this one.
 
+## Runs scenes or processes for seconds: make check (--quick) leaves it out.
+const SLOW := true
+
 const RUNNER_SCENE: String = "res://tests/runner/runner.tscn"
 const SCRATCH_DIR: String = "user://runner_self"
 ## Upper bound for one subprocess run, in seconds (the child has its own per-test timeouts).

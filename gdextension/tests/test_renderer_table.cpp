@@ -2,11 +2,11 @@
 // render-mode order, each naming its force components, raising telemetry flags of its own and
 // holding its own settings value in the configuration.
 
-#include "core/wire/codec.h"
 #include "core/servo/telemetry.h"
-#include "system/settings_validation.h"
+#include "core/wire/codec.h"
 #include "system/render_config.h"
 #include "system/renderer_registry.h"
+#include "system/settings_validation.h"
 
 #include <doctest/doctest.h>
 

@@ -1,7 +1,7 @@
 extends TestSuite
 ## The class reference in gdextension/doc_classes (shown in the editor's help) against what
-## the extension registers: every method with its return and parameter types, every constant with its value
-## and enum, nothing documented that does not exist.
+## the extension registers: every method with its return and parameter types, every constant
+## with its value and enum, nothing documented that does not exist.
 
 const DOC_DIR: String = "res://gdextension/doc_classes"
 
@@ -30,9 +30,7 @@ func test_each_native_class_has_its_reference() -> void:
 				methods.has(method_name), "%s.%s is documented" % [native_class, method_name]
 			)
 			if methods.has(method_name):
-				assert_eq(
-					methods[method_name], bound[method_name], "signature of %s" % method_name
-				)
+				assert_eq(methods[method_name], bound[method_name], "signature of %s" % method_name)
 		for method_name: String in methods:
 			assert_true(bound.has(method_name), "%s.%s exists" % [native_class, method_name])
 		var constants: Dictionary = doc["constants"]
@@ -76,7 +74,9 @@ func _read(native_class: StringName) -> Dictionary:
 				if parser.get_node_name() == "return":
 					signature.append("-> " + type_name)
 				else:
-					signature.append("%s: %s" % [parser.get_named_attribute_value("name"), type_name])
+					signature.append(
+						"%s: %s" % [parser.get_named_attribute_value("name"), type_name]
+					)
 				doc["methods"][method] = signature
 			"constant":
 				doc["constants"][parser.get_named_attribute_value("name")] = {

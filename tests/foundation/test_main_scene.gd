@@ -2,6 +2,9 @@ extends TestSuite
 ## The main scene as `make play` runs it without a display: a separate engine process
 ## running the autopilot, one status line per second, exit code 0.
 
+## Runs scenes or processes for seconds: make check (--quick) leaves it out.
+const SLOW := true
+
 
 func test_headless_autopilot_prints_status_lines_and_exits_cleanly() -> void:
 	var godot: String = ProjectSettings.globalize_path("res://tools/godot")

@@ -1,6 +1,9 @@
 extends "res://tests/foundation/room_suite.gd"
 ## The test room as a real scene: instanced, stepped at 50 Hz, the body steered into walls.
 
+## Runs scenes or processes for seconds: make check (--quick) leaves it out.
+const SLOW := true
+
 
 func test_physics_runs_at_fifty_hertz() -> void:
 	assert_eq(Engine.physics_ticks_per_second, 50)

@@ -3,6 +3,9 @@ extends TestSuite
 ## the addon's built libraries (addons/haptics/bin/) or their sources. It must parse, warn
 ## once, and play (no force feedback).
 
+## Runs scenes or processes for seconds: make check (--quick) leaves it out.
+const SLOW := true
+
 
 func test_the_game_plays_without_the_extension_and_says_so() -> void:
 	var script: String = ProjectSettings.globalize_path("res://tools/run-without-extension.sh")

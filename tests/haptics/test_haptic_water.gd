@@ -2,6 +2,9 @@ extends TestSuite
 ## The addon's self-contained water: the probe feels it as water, and rigid bodies float or
 ## sink by their density against the water's, with nothing from this game around it.
 
+## Runs scenes or processes for seconds: make check (--quick) leaves it out.
+const SLOW := true
+
 const SURFACE_Y := 300.0
 const BOTTOM_Y := 600.0
 

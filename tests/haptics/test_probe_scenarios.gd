@@ -4,6 +4,9 @@ extends TestSuite
 ## the stylus; the probe turns the stylus into the player's input and the contacts into
 ## forces.
 
+## Runs scenes or processes for seconds: make check (--quick) leaves it out.
+const SLOW := true
+
 const TEST_ROOM := preload("res://game/levels/test_room.tscn")
 const K := 2.0
 const B := 1.0

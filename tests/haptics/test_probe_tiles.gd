@@ -6,6 +6,9 @@ extends TestSuite
 ## material. A wall or ceiling stays a contact on the frames move_and_slide does not report it
 ## while the body still touches it, and stops being one as soon as the body has left it.
 
+## Runs scenes or processes for seconds: make check (--quick) leaves it out.
+const SLOW := true
+
 const K := 2.0
 const B := 1.0
 const TILE := 32

@@ -67,8 +67,11 @@ func test_refused_values_are_named_and_change_nothing() -> void:
 
 func test_choices_are_named_as_settings_files_name_them() -> void:
 	var models: Dictionary = HapticMovementFacts.ContactModel
-	assert_eq(HapticsValue.choice_names(models), PackedStringArray(["per_contact", "paper_sum"]))
-	assert_eq(HapticsValue.choice_name(models, HapticMovementFacts.ContactModel.PAPER_SUM), "paper_sum")
+	var names: PackedStringArray = ["per_contact", "paper_sum"]
+	assert_eq(HapticsValue.choice_names(models), names)
+	assert_eq(
+		HapticsValue.choice_name(models, HapticMovementFacts.ContactModel.PAPER_SUM), "paper_sum"
+	)
 	assert_eq(HapticsValue.choice_value(models, "paper_sum"), 1)
 	assert_eq(HapticsValue.choice_value(models, "PAPER_SUM"), -1, "the file's spelling only")
 	assert_eq(HapticsValue.choice_value(models, "sum"), -1)

@@ -7,6 +7,9 @@ extends "res://tests/pong/pong_screen_suite.gd"
 ## that reached it which the follower used, the largest move of its ball in one 1 ms tick (the
 ## issue's bound: 0.05 m), and how far the two balls are apart.
 
+## Runs scenes or processes for seconds: make check (--quick) leaves it out.
+const SLOW := true
+
 const PongTestScreen := preload("res://tests/pong/pong_test_screen.gd")
 const ScriptedBallPath := preload("res://tests/net/scripted_ball_path.gd")
 

@@ -3,6 +3,9 @@ extends "res://tests/net/lobby_suite.gd"
 ## Start needs a second player, Leave closes the session, and a join to a port where
 ## nobody listens fails with a message (no hang).
 
+## Runs scenes or processes for seconds: make check (--quick) leaves it out.
+const SLOW := true
+
 
 func test_hosting_lists_the_host_and_start_waits_for_a_second_player() -> void:
 	var net: PongNet = _lobby.net

@@ -223,7 +223,9 @@ func _assert_bent_by_spin(ticks: Vector2i, player: int) -> void:
 func _assert_pulse(from: int, kind: String, direction: Vector3) -> void:
 	var settings: PongSettings = _match.court.settings
 	var size: float = settings.recoil_force_n if kind == "recoil" else settings.hit_force_n
-	var duration: float = settings.recoil_duration_s if kind == "recoil" else settings.hit_duration_s
+	var duration: float = (
+		settings.recoil_duration_s if kind == "recoil" else settings.hit_duration_s
+	)
 	var peak: float = _probe.peak(from)
 	print("    %s: peak %.3f N for %.3f s" % [kind, peak, _probe.span_s(from, size * 0.5)])
 	assert_almost_eq(peak, size, size * PULSE_FORCE_TOLERANCE, "%s: its size, newtons" % kind)

@@ -14,6 +14,9 @@ extends "res://tests/pong/pong_screen_suite.gd"
 ## ball three times in a row), the point at which Pong feels like a rally and not a serve
 ## and a miss.
 
+## Runs scenes or processes for seconds: make check (--quick) leaves it out.
+const SLOW := true
+
 
 ## The match's paddle contacts and balls, from its events.
 class Tally:

@@ -4,6 +4,9 @@ extends TestSuite
 ## holds the ball where it was), the spin paddle's colour, and the way back (Esc on the
 ## setup, the pause menu's Quit to menu) leaving the servo as it was.
 
+## Runs scenes or processes for seconds: make check (--quick) leaves it out.
+const SLOW := true
+
 const MAIN_SCENE: PackedScene = preload("res://game/main/main.tscn")
 const PONG_SCENE: PackedScene = preload("res://game/pong/ui/pong.tscn")
 

@@ -3,6 +3,9 @@ extends TestSuite
 ## the headless demo says why there is no game (the ball lives only in the servo) and
 ## exits with an error, without script errors.
 
+## Runs scenes or processes for seconds: make check (--quick) leaves it out.
+const SLOW := true
+
 
 func test_the_pong_demo_says_it_needs_the_extension() -> void:
 	set_timeout(120.0)

@@ -306,5 +306,5 @@ def test_gdscript_has_the_field_typed_and_a_misspelling_does_not_parse(scratch, 
     assert "grip_nn" in misspelt.stdout + misspelt.stderr
     (scratch / "spring_use.gd").write_text(
         "extends RefCounted\n\n\nfunc k(settings: SpringSettings) -> float:\n"
-        "\treturn settings.stiffness_n_per_m + SpringFacts.SpringForce.PULL_FORCE\n")
+        "\treturn settings.stiffness_n_per_m + SpringFacts.SpringForce.PULL\n")
     assert _godot(scratch, "--check-only", "-s", "res://spring_use.gd", check=False).returncode == 0

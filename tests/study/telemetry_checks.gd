@@ -24,8 +24,8 @@ const PULL_N: float = 0.02
 const RECENT_WALL_S: float = 0.2
 
 var geometry: Geometry = null
-## The servo's input dead zone ([member HapticInputSettings.dead_zone]): the input vector the force model
-## uses is the file's input with it applied (core/servo/input_vector.h).
+## The servo's input dead zone ([member HapticInputSettings.dead_zone]): the input vector the
+## force model uses is the file's input with it applied (core/servo/input_vector.h).
 var dead_zone: float = 0.0
 
 

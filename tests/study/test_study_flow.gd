@@ -5,6 +5,9 @@ extends TestSuite
 ## analysis tool); a duplicate id is refused; a truncated ratings.csv is reported at resume
 ## and nothing is changed; invalid settings stop the study with a message.
 
+## Runs scenes or processes for seconds: make check (--quick) leaves it out.
+const SLOW := true
+
 const Support := preload("res://tests/study/study_test_support.gd")
 const STUDY_SCENE: PackedScene = preload("res://game/study/session/study.tscn")
 

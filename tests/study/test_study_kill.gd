@@ -6,6 +6,9 @@ extends TestSuite
 ## participant in this process continues with the second condition, gives the new trial
 ## the next unused index, and finishes the study.
 
+## Runs scenes or processes for seconds: make check (--quick) leaves it out.
+const SLOW := true
+
 const Support := preload("res://tests/study/study_test_support.gd")
 const STUDY_SCENE: PackedScene = preload("res://game/study/session/study.tscn")
 ## Seconds the child's scripted participant keeps still at the start of each trial, so the

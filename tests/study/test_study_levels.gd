@@ -4,6 +4,9 @@ extends TestSuite
 ## constraint renderer, a start, a goal and an autopilot path that keeps clear of the
 ## walls (so the scripted participant reaches the goal).
 
+## Runs scenes or processes for seconds: make check (--quick) leaves it out.
+const SLOW := true
+
 const LEVELS: PackedStringArray = [
 	"res://game/study/levels/maze.tscn",
 	"res://game/study/levels/demo_open.tscn",

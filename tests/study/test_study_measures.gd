@@ -5,6 +5,9 @@ extends TestSuite
 ## telemetry file of the documented shape; in position control the proxy must stop at the
 ## wall however far the device goes, and the telemetry's avatar is the proxy.
 
+## Runs scenes or processes for seconds: make check (--quick) leaves it out.
+const SLOW := true
+
 const Support := preload("res://tests/study/study_test_support.gd")
 const TINY_MAZE: PackedScene = preload("res://tests/study/fixtures/tiny_maze.tscn")
 ## The wall right of the start: its face, minus the avatar's radius.

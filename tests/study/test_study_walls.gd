@@ -10,6 +10,9 @@ extends TestSuite
 ## one, contact flags that match the geometry, and trial metrics a reader recomputes from
 ## the files.
 
+## Runs scenes or processes for seconds: make check (--quick) leaves it out.
+const SLOW := true
+
 const Support := preload("res://tests/study/study_test_support.gd")
 const Geometry := preload("res://tests/study/wall_geometry.gd")
 const Checks := preload("res://tests/study/telemetry_checks.gd")

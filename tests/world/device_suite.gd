@@ -1,8 +1,8 @@
 extends TestSuite
-## What the game-action suites share: a door of the test's own ([code]HapticsTestKit.manual()[/code]:
-## the simulated device, no start-up ramp) that a probe talks to, run 1 ms tick by tick in step
-## with the physics while [member recorder] keeps what the device received, and the impacts
-## the probe reported.
+## What the game-action suites share: a door of the test's own
+## ([code]HapticsTestKit.manual()[/code]: the simulated device, no start-up ramp) that a probe
+## talks to, run 1 ms tick by tick in step with the physics while [member recorder] keeps what
+## the device received, and the impacts the probe reported.
 
 const DeviceRecorder := preload("res://tests/world/device_recorder.gd")
 

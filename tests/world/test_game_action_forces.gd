@@ -7,6 +7,9 @@ extends "res://tests/world/device_suite.gd"
 ## force never arrives. (Riding a platform: the side-scroller has none; the rigid-body
 ## player's lift ride is in test_rigid_player.gd.)
 
+## Runs scenes or processes for seconds: make check (--quick) leaves it out.
+const SLOW := true
+
 const TEST_ROOM := preload("res://game/levels/test_room.tscn")
 const CRATE := preload("res://game/props/crate.tscn")
 const WATER := preload("res://game/props/water.tscn")

@@ -2,6 +2,9 @@ extends TestSuite
 ## Level 1 as a real scene: the Level contract, the autopilot run from start to goal,
 ## crates (settling, stacking on the player, floating and sinking), pearls and the goal.
 
+## Runs scenes or processes for seconds: make check (--quick) leaves it out.
+const SLOW := true
+
 const LEVEL_1 := preload("res://game/levels/level_1.tscn")
 const CRATE := preload("res://game/props/crate.tscn")
 const HEAVY_CRATE := preload("res://game/props/crate_heavy.tscn")

@@ -4,6 +4,9 @@ extends "res://tests/foundation/room_suite.gd"
 ## used to keep its full speed into the wall and take about seven ticks to come off); along
 ## a floor it slides at the top speed; a crate it drives into is still shoved.
 
+## Runs scenes or processes for seconds: make check (--quick) leaves it out.
+const SLOW := true
+
 const CRATE := preload("res://game/props/crate.tscn")
 ## The test room's right wall (its outline's centre line), and its floor.
 const WALL_X: float = 1240.0

@@ -7,6 +7,9 @@ extends "res://tests/world/device_suite.gd"
 ## impact. Each test drives the player through its own controls and asserts what the device
 ## received (get_forces, stepped 1 ms at a time in step with the 120 Hz physics).
 
+## Runs scenes or processes for seconds: make check (--quick) leaves it out.
+const SLOW := true
+
 const RigidStage := preload("res://tests/world/rigid/rigid_stage.gd")
 const RigidPlayer := preload("res://tests/world/rigid/rigid_player.gd")
 ## The demo's physics rate.

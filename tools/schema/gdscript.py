@@ -185,8 +185,10 @@ def wrapped(indent, head, call):
     of call's first parenthesis on a line of their own, or one argument a line."""
     line = indent + head + call
     opens = [i for i in (call.find("("), call.find("["), call.find("{")) if i >= 0]
-    if width(line) <= 100 or not opens:
+    if width(line) <= 100:
         return [line]
+    if not opens:  # a long name: gdformat puts it in parentheses on a line of its own
+        return [indent + head + "(", indent + "\t" + call, indent + ")"]
     start = min(opens)
     pair = {"(": ")", "[": "]", "{": "}"}[call[start]]
     depth, end = 0, start
@@ -195,6 +197,9 @@ def wrapped(indent, head, call):
         if depth == 0:
             break
     name, args, rest = call[:start], call[start + 1 : end].strip(), call[end + 1 :]
+    if rest.strip().startswith("as ") and width(indent + "\t" + call) <= 100:
+        # A cast of a call: gdformat puts the whole expression in parentheses.
+        return [indent + head + "(", indent + "\t" + call, indent + ")"]
     parts = [a.strip() for a in args.split(", ")]
     inner = indent + "\t" + ", ".join(parts)
     opener, closer = call[start], pair

@@ -67,7 +67,9 @@ var force_scale: float:
 		if is_nan(value):
 			push_error("Haptics.force_scale: not a number; keeping %s." % force_scale)
 			return
-		value = clampf(value, HapticSafetySettings.FORCE_SCALE_MIN, HapticSafetySettings.FORCE_SCALE_MAX)
+		value = clampf(
+			value, HapticSafetySettings.FORCE_SCALE_MIN, HapticSafetySettings.FORCE_SCALE_MAX
+		)
 		if is_available():
 			var settings: HapticServoSettings = servo.get_settings()
 			settings.safety.force_scale = value
@@ -338,4 +340,3 @@ func _movement() -> HapticsMovement:
 func _follow_user_input() -> void:
 	if hand_follows_input and control_mode == CONTROL_DEVICE and device.is_simulated():
 		device.set_hand_target(_user_input.hand_target(get_viewport()))
-

@@ -6,8 +6,8 @@
 #include "binding/class_db.h"
 #include "binding/doc_data.h"
 #include "binding/durable_file_binding.h"
-#include "binding/system_object.h"
 #include "binding/interface.h"
+#include "binding/system_object.h"
 
 #if HAPTICS_DEV_TOOLS
 #include "dev_tools/scripted_backends.h"

@@ -8,9 +8,9 @@
 #include "binding/wire_values.h"
 #include "core/base/coordinates.h"
 #include "core/servo/telemetry.h"
-#include "system/settings_validation.h"
 #include "system/device_factory.h"
 #include "system/renderer_registry.h"
+#include "system/settings_validation.h"
 
 namespace haptics::binding {
 
@@ -67,7 +67,6 @@ void SystemObject::bind_methods(gd::ClassBinder<SystemObject> &r_binder) {
 	r_binder.bind_method("get_renderer_settings", &S::get_renderer_settings, { "mode" });
 	r_binder.bind_method("set_renderer_settings", &S::set_renderer_settings, { "mode", "settings" });
 	r_binder.bind_method("get_version", &S::get_version);
-
 }
 
 bool SystemObject::report(const char *p_method, const Status &p_status) const {

@@ -8,8 +8,8 @@
 #include "core/servo/telemetry.h"
 #include "renderers/pong/pong_port.h"
 #include "renderers/pong/pong_renderer.h"
-#include "system/settings_validation.h"
 #include "system/haptics_system.h"
+#include "system/settings_validation.h"
 #include "system_config.h"
 
 #include <doctest/doctest.h>

@@ -17,7 +17,9 @@ var maze_max: Vector2 = Vector2(1.0, 1.0)
 ## The maze's y grows down (Godot 2D); the device's grows up.
 var maze_y_down: bool = true
 ## How the rectangle fits the workspace.
-var workspace_shape: HapticConstraintFacts.WorkspaceShape = HapticConstraintFacts.WorkspaceShape.DISC
+var workspace_shape: HapticConstraintFacts.WorkspaceShape = (
+	HapticConstraintFacts.WorkspaceShape.DISC
+)
 ## The disc's radius or the square's half side; 0: the device's workspace radius, else at least
 ## 0.001. Unit: m. Range [0.0, 1.0].
 var workspace_half_extent_m: float = 0.0
@@ -56,9 +58,9 @@ static func read_from(reader: HapticsWireReader) -> HapticMazeMapping:
 	value.maze_min = reader.vec2(&"maze_min", false, 1000000000.0)
 	value.maze_max = reader.vec2(&"maze_max", false, 1000000000.0)
 	value.maze_y_down = reader.boolean(&"maze_y_down")
-	value.workspace_shape = reader.enum_index(
-		&"workspace_shape", 2
-	) as HapticConstraintFacts.WorkspaceShape
+	value.workspace_shape = (
+		reader.enum_index(&"workspace_shape", 2) as HapticConstraintFacts.WorkspaceShape
+	)
 	value.workspace_half_extent_m = reader.f64(&"workspace_half_extent_m", 0.0, 1.0)
 	value.workspace_centre_m = reader.vec2(&"workspace_centre_m", false, 1.0)
 	return value

@@ -50,7 +50,9 @@ func set_walls(points: PackedVector2Array, mapping: HapticMazeMapping) -> bool:
 
 ## The proxy after the servo's latest tick (a proxy at the origin without the library).
 func get_proxy() -> HapticProxyState:
-	var state: HapticProxyState = HapticProxyState.decode(_renderer.read(HapticProxyState.SCHEMA_ID))
+	var state: HapticProxyState = HapticProxyState.decode(
+		_renderer.read(HapticProxyState.SCHEMA_ID)
+	)
 	return state if state != null else HapticProxyState.new()
 
 

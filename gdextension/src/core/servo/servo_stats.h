@@ -44,7 +44,6 @@ private:
 extern template class Histogram<20000>;
 extern template class Histogram<10000>;
 
-
 class ServoStatsRecorder {
 public:
 	ServoStatsRecorder();

@@ -6,12 +6,12 @@
 // with the value's SCHEMA_ID, so bytes of another layout (a library and scripts out of step)
 // are refused by name. Game thread only: it allocates.
 
-#include "core/base/status.h"
-#include "core/base/vec2.h"
-#include "core/base/vec3.h"
 #include "core/base/bounded_array.h"
 #include "core/base/field_spec.h"
 #include "core/base/fixed_string.h"
+#include "core/base/status.h"
+#include "core/base/vec2.h"
+#include "core/base/vec3.h"
 #include "core/wire/wire_io.h"
 
 #include <array>
@@ -27,7 +27,10 @@
 namespace haptics {
 
 template <typename T>
-concept SchemaValue = requires { T::SCHEMA_ID; T::NAME; };
+concept SchemaValue = requires {
+	T::SCHEMA_ID;
+	T::NAME;
+};
 
 namespace wire_detail {
 

@@ -3,8 +3,8 @@
 #include "renderers/constraint/constraint_geometry.h"
 
 #include <memory>
-#include <vector>
 #include <utility>
+#include <vector>
 
 namespace haptics {
 

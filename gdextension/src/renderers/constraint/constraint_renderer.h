@@ -43,7 +43,6 @@ namespace haptics {
 // TELEMETRY_FLAG_PROXY_CONTACT, constraint.schema.toml.
 static_assert(TELEMETRY_FLAG_CONSTRAINT_MODE >= (1u << FIRST_RENDERER_FLAG_BIT));
 
-
 class ConstraintRenderer final : public Renderer {
 public:
 	using Config = ConstraintConfig;

@@ -22,7 +22,6 @@ struct MovementChannels : RendererChannels {
 	Seqlock<MovementConfig> settings; // Game -> servo.
 };
 
-
 class MovementRenderer final : public Renderer {
 public:
 	using Config = MovementConfig;

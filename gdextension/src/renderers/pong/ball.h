@@ -23,8 +23,8 @@
 
 #include "core/base/vec3.h"
 #include "renderers/pong/court.h"
-#include "renderers/pong/pong_state.gen.h"
 #include "renderers/pong/pong_config.h"
+#include "renderers/pong/pong_state.gen.h"
 
 namespace haptics {
 

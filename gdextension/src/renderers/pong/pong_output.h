@@ -8,5 +8,5 @@
 
 #include "renderers/pong/ball.h"
 #include "renderers/pong/court.h"
-#include "renderers/pong/pong_state.gen.h"
 #include "renderers/pong/pong_input.h"
+#include "renderers/pong/pong_state.gen.h"

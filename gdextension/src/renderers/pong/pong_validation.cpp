@@ -1,8 +1,8 @@
 #include "renderers/pong/pong_validation.h"
 
 #include "core/base/value_checks.h"
-#include "core/wire/codec.h"
 #include "core/servo/servo_rate.h"
+#include "core/wire/codec.h"
 
 #include <cmath>
 #include <cstdio>
