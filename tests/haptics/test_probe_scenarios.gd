@@ -4,7 +4,7 @@ extends TestSuite
 ## the stylus; the probe turns the stylus into the player's input and the contacts into
 ## forces.
 
-const TEST_ROOM := preload("res://game/levels/test_room.tscn")
+const TEST_ROOM := preload("res://tests/support/room.tscn")
 const K := 2.0
 const B := 1.0
 const TICKS_PER_FRAME := 20
