@@ -46,6 +46,9 @@ func _ready() -> void:
 	var scene: PackedScene = level_scene
 	if scene == null:
 		scene = load(LEVEL_1_PATH) as PackedScene
+	if scene == null:
+		push_error("The level is missing: %s" % LEVEL_1_PATH)
+		return
 	level = scene.instantiate() as Level
 	if level == null:
 		push_error("The level scene's root is not a Level: %s" % scene.resource_path)
