@@ -71,14 +71,17 @@ run_game() {
 }
 
 # The checks the game's own output allows (as before the bundle): extension, main menu, no
-# error, not even at exit (CleanExit keeps the engine's own exit noise of the release
-# template from the player: tools/bare/repro-disconnect.sh).
+# error and no leak, not even at exit (CleanExit keeps the engine's own exit noise of the
+# release template from the player: tools/bare/repro-disconnect.sh).
 check_output() {
   ((status == 0)) || fail "$1: exit status $status"
   grep -q "haptics [0-9.]* (Godot" "$log" || fail "$1: the bundled extension did not load"
   grep -q "^System check: the main menu showed" "$log" || fail "$1: the main menu did not show"
   if grep -E "^(ERROR|SCRIPT ERROR)" "$log"; then
     fail "$1: errors were printed"
+  fi
+  if grep -E "leaked at exit|still in use at exit" "$log"; then
+    fail "$1: leaks were reported at exit"
   fi
   grep -q "^$game/runtime/lib/libc.so.6$" "$tmp/objects" || fail "$1: the bundled C library was not mapped"
   ! grep -q "\.engine/" "$tmp/objects" || fail "$1: a library of .engine/ was loaded"
