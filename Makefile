@@ -14,7 +14,8 @@ BUILD := .build
 CMAKE_GENERATOR := $(shell command -v ninja >/dev/null 2>&1 && echo Ninja || echo "Unix Makefiles")
 CMAKE_CONFIGURE = cmake -S gdextension -G "$(CMAKE_GENERATOR)" -Wno-dev
 JOBS := $(shell nproc 2>/dev/null || echo 2)
-# Extra arguments for the game after `--`, e.g. make play ARGS=--autopilot-seconds=20
+# Extra arguments after `--`: for the game (e.g. make play ARGS=--system-check), or without a
+# display for its autopilot (make play ARGS=--autopilot-seconds=20)
 ARGS ?=
 # Extra arguments for the Godot test runner, e.g. make test-godot TEST_ARGS=--filter=binding
 TEST_ARGS ?=
@@ -82,22 +83,23 @@ edit: import
 	@$(GODOT) --editor --path .
 
 ## play: play the game (headless under the autopilot when there is no display)
-## the game; headless with an autopilot when there is no display
+## the game; without a display, level 1 headless under the autopilot (a test driver:
+## tests/drivers/game_autopilot.tscn)
 play: import
 	@if [[ -n "$${DISPLAY:-}" || -n "$${WAYLAND_DISPLAY:-}" ]]; then \
 		$(GODOT) --path . -- $(ARGS); \
 	else \
 		echo "No display: running the level headless under the autopilot."; \
-		$(GODOT) --headless --path . -- --autopilot $(ARGS); \
+		$(GODOT) --headless --path . res://tests/drivers/game_autopilot.tscn -- $(ARGS); \
 	fi
 
 ## pong-demo: a headless computer-vs-computer Haptic Battle Pong match
 ## a headless computer-vs-computer Haptic Battle Pong match, the servo stepped by
-## the game (faster than real time); prints the winner and simulated vs wall seconds.
-## ARGS=--pong-health=N sets each player's health (default 15), --pong-players=4 plays on the
-## square four-player court.
+## the game (faster than real time); prints the winner and simulated vs wall seconds
+## (tests/drivers/pong_demo.tscn). ARGS=--pong-health=N sets each player's health (default
+## 15), --pong-players=4 plays on the square four-player court.
 pong-demo: import
-	@$(GODOT) --headless --path . -- --pong-demo $(ARGS)
+	@$(GODOT) --headless --path . res://tests/drivers/pong_demo.tscn -- $(ARGS)
 
 ## test: every suite: what CI runs (about 40 minutes)
 ## every suite; any failure fails the target
@@ -142,9 +144,10 @@ test-godot: import
 	@$(GODOT) --headless --path . res://tests/runner/runner.tscn -- --warnings-as-errors \
 		--junit=$(BUILD)/godot-tests.xml $(TEST_ARGS)
 
-## test-windowed: the game in a window (Xvfb) under its autopilot
-## the game in a window (Xvfb) under its autopilot for a few seconds; fails on
-## a non-zero exit or any leak reported at exit (tools/test-windowed.sh)
+## test-windowed: the game in a window (Xvfb) under its autopilot, then its menu
+## the game in a window (Xvfb) under its autopilot for a few seconds, then the
+## product's main menu under its system check; fails on a non-zero exit, an error or any
+## leak reported at exit (tools/test-windowed.sh)
 test-windowed: import
 	@tools/test-windowed.sh
 
@@ -152,11 +155,13 @@ test-windowed: import
 ## the C++ layers' include directions and the 400-line limit (tools/check-includes.py),
 ## the GDScript folders' layers and the Haptics door (tools/check-gd-layers.py), gdlint
 ## (400 lines a file) and gdformat --check over addons/, game/ and tests/ (gdtoolkit,
-## pinned, in .venv), and clang-format (Debian's, .clang-format: Godot's style) over the C++
+## pinned, in .venv), clang-format (Debian's, .clang-format: Godot's style) over the C++,
+## and the test of tools/check-product.sh on fake packs (tools/test-check-product.sh)
 lint: deps
 	@python3 tools/schema/generate.py --check
 	@python3 tools/check-includes.py
 	@python3 tools/check-gd-layers.py
+	@tools/test-check-product.sh
 	@tools/gdtoolkit.sh gdlint addons game tests
 	@tools/gdtoolkit.sh gdformat --check addons game tests
 	@find gdextension/src gdextension/tests gdextension/bench gdextension/vm_tests gdextension/rt_probe -name '*.h' -o -name '*.cpp' | \
@@ -171,8 +176,9 @@ export: import build-release
 
 ## test-export: export, then run the copy in an emptied environment
 ## export, then run a copy outside the project with an emptied environment,
-## headless and windowed (Xvfb): exit 0, extension loaded, every library from the bundle
-## except the system's GPU driver (tools/test-export.sh)
+## headless and windowed (Xvfb), under the game's system check: exit 0, extension loaded,
+## main menu shown, every library from the bundle except the system's GPU driver, no driver
+## of tests/ or tools/ in the pack (tools/test-export.sh)
 test-export: export
 	@tools/test-export.sh
 
@@ -191,7 +197,7 @@ test-export-server: export-server
 		tools/analysis/run.sh -m pytest tests/net/test_exported_server.py -q -p no:cacheprovider
 
 ## test-bare: the exported game and server on minimal Debian 12 and 11 roots
-## the exported game (headless, autopilot) and dedicated server in minimal Debian 12
+## the exported game (headless, system check) and dedicated server in minimal Debian 12
 ## and 11 roots without any graphics package (debootstrap, built once into .bare/), run as an
 ## ordinary user: they start and exit 0 without an error line; on Debian 11 a windowed start
 ## is stopped by the launcher naming the system's glibc (tools/bare/test-bare.sh). The first

@@ -7,13 +7,15 @@ Exit 0 when every dependency runs downward, 1 with one line per offending edge o
 A module is a folder of game/ (its scenes and scripts together, e.g. "pong/net"), and
 an addon is one module with its subfolders. A file depends on another
 when it names the other's class_name or autoload, or names its path (preload, load, a
-res:// or uid:// string, a scene's ext_resource). Tests (tests/) sit above everything and
-are not checked; assets/ holds data and is below everything.
+res:// or uid:// string, a scene's ext_resource). Tests (tests/) and tools (tools/) sit above
+everything and are not checked, but a class they declare counts as theirs: game code that
+names one depends on them; assets/ holds data and is below everything.
 
 Reported: an edge from a module to one on the same or a higher floor (with the class or
-path that makes it), a module that is in no floor, a dependency on tests/, and a game
-script that names a native class (HapticsSystem, DurableFile) in its code outside the one
-script allowed to (the door's native backend, the study's durable writer).
+path that makes it), a module that is in no floor, a dependency on tests/ or tools/ (where
+every test, benchmark and trial driver lives: never the product's), and a game script that
+names a native class (HapticsSystem, DurableFile) in its code outside the one script
+allowed to (the door's native backend, the study's durable writer).
 """
 
 import configparser
@@ -31,7 +33,7 @@ FLOORS = [
     ["common"],
     ["common/ui"],
     # The platformer the side-scroller and the maze study share: the avatar, the props
-    # (and the effects they set off), the level base, the autopilot and level 1.
+    # (and the effects they set off), the level base and level 1.
     ["player"],
     ["props"],
     ["levels"],
@@ -55,6 +57,8 @@ FLOORS = [
 ]
 
 ROOTS = ["addons", "game"]
+# Above every floor: their classes are known only so that a dependency on them is reported.
+ABOVE = ["tests", "tools"]
 # Prefixes that name a module by the rest of the path.
 MODULE_PREFIXES = ["game/"]
 # The native classes, each named by one script only: the typed door to it. Every other
@@ -118,9 +122,9 @@ def split_code(text):
     return "".join(code), strings
 
 
-def project_files():
+def project_files(roots=ROOTS):
     out = []
-    for root in ROOTS:
+    for root in roots:
         for folder, dirs, files in os.walk(root):
             if os.path.exists(os.path.join(folder, ".gdignore")):
                 dirs[:] = []
@@ -188,6 +192,11 @@ def scan(files):
                 classes[name] = path
     for name, path in autoloads().items():
         classes.setdefault(name, path)
+    for path in project_files(ABOVE):
+        if path.endswith(".gd"):
+            with open(path, encoding="utf-8") as f:
+                for name in CLASS_NAME.findall(f.read()):
+                    classes.setdefault(name, path)
     edges = []
     bypasses = []
     for path, text in sources.items():
@@ -226,8 +235,9 @@ def main():
     module_edges = {}
     for source, target, why in edges:
         a = module_of(source)
-        if target.startswith("tests/"):
-            problems.append(f"{source} -> {target} ({why}): tests/ is above every floor")
+        above = target.split("/", 1)[0]
+        if above in ABOVE:
+            problems.append(f"{source} -> {target} ({why}): {above}/ is above every floor")
             continue
         b = module_of(target)
         if b is None or a == b:

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Runs the game from a temporary copy of the project that lacks the native extension, the
 # way a player without a built library would: it must start, warn once, and play without
-# force feedback. Arguments go to the engine, e.g. -- --autopilot --autopilot-seconds=2.
+# force feedback. Arguments go to the engine, e.g. -- --system-check, or
+# res://tests/drivers/game_autopilot.tscn -- --autopilot-seconds=2 (level 1 under the autopilot).
 set -euo pipefail
 project=$(cd "$(dirname "$0")/.." && pwd)
 copy=$(mktemp -d)

@@ -28,9 +28,9 @@ var _spawn_position: Vector2 = Vector2.ZERO
 @onready var player: Player = _bind_player()
 
 
-## World-space waypoints from the start to the goal: an autopilot that steers toward each
-## in turn (moving on within [member Autopilot.reach_radius]) reaches the goal without
-## getting stuck.
+## World-space waypoints from the start to the goal: a follower that steers toward each in
+## turn (moving on within about 28 px of it) reaches the goal without getting stuck. The
+## game itself never follows them; test drivers' autopilots do.
 func get_autopilot_path() -> PackedVector2Array:
 	var path_node: Node = get_node_or_null(^"AutopilotPath")
 	var points: PackedVector2Array = PackedVector2Array()

@@ -4,31 +4,18 @@ extends Node
 ##
 ## The player steers with the haptic device or the keyboard as [code]Haptics.control_mode[/code]
 ## says (the level's [HapticProbe] feeds the device's input vector; the [code]Haptics[/code]
-## autoload moves the simulated hand with the mouse), or an [Autopilot] follows
-## [method Level.get_autopilot_path], moving the simulated hand along. With the autopilot
-## on, one status line is printed per second of game time and [signal autopilot_finished]
-## is emitted at the goal or after [member autopilot_seconds].
+## autoload moves the simulated hand with the mouse), or a [member pilot] steers instead.
 
 ## The player chose Quit to menu (pause menu) or Menu (goal screen).
 signal menu_requested
 ## The player chose Play again on the goal screen.
 signal restart_requested
-## The autopilot run ended: [param reason] is [code]"goal"[/code] or [code]"time"[/code].
-signal autopilot_finished(reason: String)
 
-## The full level.
+## The level the game plays.
 const LEVEL_1_PATH: String = "res://game/levels/level_1.tscn"
-## The level used while the full one does not exist.
-const FALLBACK_LEVEL_PATH: String = "res://game/levels/test_room.tscn"
 
-## Level to play; [method default_level_path] when null.
+## Level to play; level 1 ([constant LEVEL_1_PATH]) when null.
 @export var level_scene: PackedScene = null
-## Drive the player with the autopilot.
-@export var autopilot: bool = false
-## Game seconds after which the autopilot run ends (0: only at the goal).
-@export var autopilot_seconds: float = 5.0
-## Print a status line per second while the autopilot drives.
-@export var print_status: bool = true
 
 ## The level being played.
 var level: Level = null
@@ -42,10 +29,12 @@ var collected: int = 0
 var total_items: int = -1
 ## Whether the goal was reached.
 var finished: bool = false
+## Who steers in place of the person ([GamePilot]; null: the person, with the keys, the
+## gamepad or the device). Set it before the game enters the tree.
+var pilot: GamePilot = null
 
-var _pilot: Autopilot = null
 var _ticks: int = 0
-var _autopilot_done: bool = false
+var _stopped: bool = false
 var _control_text: String = ""
 
 @onready var hud: Hud = $Hud
@@ -56,7 +45,10 @@ var _control_text: String = ""
 func _ready() -> void:
 	var scene: PackedScene = level_scene
 	if scene == null:
-		scene = load(default_level_path()) as PackedScene
+		scene = load(LEVEL_1_PATH) as PackedScene
+	if scene == null:
+		push_error("The level is missing: %s" % LEVEL_1_PATH)
+		return
 	level = scene.instantiate() as Level
 	if level == null:
 		push_error("The level scene's root is not a Level: %s" % scene.resource_path)
@@ -72,102 +64,47 @@ func _ready() -> void:
 	pause_menu.quit_requested.connect(menu_requested.emit)
 	goal_screen.play_again_requested.connect(restart_requested.emit)
 	goal_screen.menu_requested.connect(menu_requested.emit)
-	if autopilot:
-		_pilot = Autopilot.new(level.get_autopilot_path())
+	if pilot != null:
 		player.use_keyboard = false
 		Haptics.hand_follows_input = false
+		pilot.start(self)
 
 
 func _exit_tree() -> void:
-	if _pilot != null:
+	if pilot != null:
 		Haptics.device.set_hand_target(Vector2.ZERO)
 		Haptics.hand_follows_input = true
 
 
 func _physics_process(delta: float) -> void:
-	if player == null or finished or _autopilot_done:
+	if player == null or finished or _stopped:
 		return
 	_ticks += 1
 	elapsed = _ticks * delta
 	_steer(delta)
 	hud.set_run_info(elapsed, collected, total_items)
-	if not autopilot:
-		return
-	if _ticks % Engine.physics_ticks_per_second == 0 and print_status:
-		print(status_line())
-	if autopilot_seconds > 0.0 and _ticks >= roundi(autopilot_seconds / delta):
-		_finish_autopilot("time")
 
 
-## The level played when none is given: level 1, or the test room until it exists.
-static func default_level_path() -> String:
-	if ResourceLoader.exists(LEVEL_1_PATH):
-		return LEVEL_1_PATH
-	return FALLBACK_LEVEL_PATH
-
-
-## Whether the player steers with the haptic device (rather than keys or the autopilot).
+## Whether the player steers with the haptic device (rather than keys or a pilot).
 func uses_device_control() -> bool:
-	return _pilot == null and Haptics.control_mode == Haptics.CONTROL_DEVICE
-
-
-## The autopilot's once-a-second line: time, servo rate, input, total force, contacts.
-func status_line() -> String:
-	var rate: float = Haptics.servo.get_rate_hz()
-	var servo: String = "%d Hz" % roundi(rate) if rate > 0.0 else "off"
-	var input: Vector2 = player.input_vector
-	var force: Vector2 = Haptics.get_forces().total
-	return (
-		"t=%4.1fs servo=%s input=(%+.2f, %+.2f) force=(%+.2f, %+.2f) N |F|=%.2f N contacts=%d"
-		% [
-			elapsed,
-			servo,
-			_tidy(input.x),
-			_tidy(input.y),
-			_tidy(force.x),
-			_tidy(force.y),
-			force.length(),
-			player.get_slide_collision_count(),
-		]
-	)
-
-
-## The autopilot steering the player, or null.
-func get_autopilot() -> Autopilot:
-	return _pilot
+	return pilot == null and Haptics.control_mode == Haptics.CONTROL_DEVICE
 
 
 func _steer(delta: float) -> void:
 	var text: String = "keyboard / gamepad"
-	if _pilot != null and _pilot.path.size() < 2:
-		# No path (a bare test room): sweep round a circle to meet every wall.
-		var angle: float = elapsed * 0.9
-		player.input_vector = Vector2(cos(angle), sin(angle * 1.3)).limit_length(1.0)
-	if _pilot != null:
-		if _pilot.path.size() >= 2:
-			_pilot.drive(player, delta)
+	if pilot != null:
 		player.use_keyboard = false
-		# The simulated hand follows, so the device agrees with what the autopilot does.
+		if not pilot.steer(self, delta):
+			_stopped = true
+			player.input_vector = Vector2.ZERO
+		# The simulated hand follows, so the device agrees with what the pilot does.
 		Haptics.device.set_hand_target(player.input_vector)
-		text = "autopilot"
+		text = pilot.get_label()
 	elif uses_device_control():
 		text = "haptic device" if Haptics.servo.is_running() else "device (not running)"
 	if text != _control_text:
 		_control_text = text
 		hud.set_control_text(text)
-
-
-# Rounds what prints as ±0.00 to a plain zero, so the lines never show "-0.00".
-static func _tidy(value: float) -> float:
-	return 0.0 if absf(value) < 0.005 else value
-
-
-func _finish_autopilot(reason: String) -> void:
-	if _autopilot_done:
-		return
-	_autopilot_done = true
-	player.input_vector = Vector2.ZERO
-	autopilot_finished.emit(reason)
 
 
 func _on_item_collected(p_collected: int, total: int) -> void:
@@ -181,10 +118,6 @@ func _on_goal_reached() -> void:
 		return
 	finished = true
 	pause_menu.enabled = false
-	if autopilot:
-		if print_status:
-			print("goal reached at t=%.1fs" % elapsed)
-		_finish_autopilot("goal")
-	else:
-		player.input_vector = Vector2.ZERO
+	player.input_vector = Vector2.ZERO
+	if pilot == null:
 		goal_screen.show_result(elapsed, collected, total_items)

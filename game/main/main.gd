@@ -3,14 +3,11 @@ extends Node
 ## Entry scene: the main menu and the screens it leads to (Play, Haptic Battle Pong, Maze
 ## study, Settings).
 ##
-## On a machine without a display, or with [code]-- --autopilot[/code], it skips the menu
-## and plays level 1 under the [Autopilot], printing one status line per second, and quits
-## with exit code 0 at the goal or after [code]--autopilot-seconds=N[/code] (default 5).
-## With [code]-- --pong-demo[/code] it plays a computer-vs-computer Pong match instead,
-## the servo stepped by the game (faster than real time), each player starting with
-## [code]--pong-health=N[/code] (default [constant PONG_DEMO_HEALTH]), with
-## [code]--pong-players=4[/code] four computers on the square court (default 2), and
-## prints the winner and the simulated/wall time ratio.
+## After [code]--[/code] on the command line: [code]--system-check[/code] prints
+## [method system_line] (what this installation found: the extension, the devices), shows the
+## main menu for [constant SYSTEM_CHECK_FRAMES] frames and quits with exit code 0, for a
+## player's report and the export's own test; [PongNetCli]'s options start networked Pong or
+## its dedicated server.
 
 const MENU_SCENE: PackedScene = preload("res://game/ui/main_menu.tscn")
 const SETTINGS_SCENE: PackedScene = preload("res://game/common/ui/settings_screen.tscn")
@@ -22,14 +19,12 @@ const GAME_SCENE: PackedScene = preload("res://game/main/game.tscn")
 const PONG_SCENE: PackedScene = preload("res://game/pong/ui/pong.tscn")
 ## Networked Pong's lobby, over the Pong setup.
 const PONG_LOBBY_SCENE: PackedScene = preload("res://game/pong/net/ui/pong_lobby.tscn")
-## Health of each player in the headless Pong demo: a short match.
-const PONG_DEMO_HEALTH: int = 15
+## Frames the system check shows the main menu for before it quits.
+const SYSTEM_CHECK_FRAMES: int = 60
 
-## Whether [method _ready] looks at the display and the command line to start the
-## autopilot (tests turn it off, then drive the screens themselves).
-@export var detect_autopilot: bool = true
-## Game seconds the autopilot runs (0: until the goal); [code]--autopilot-seconds=N[/code].
-@export var autopilot_seconds: float = 5.0
+## Whether [method _ready] reads the command line (tests turn it off, then drive the
+## screens themselves).
+@export var read_command_line: bool = true
 
 var _screen: Node = null
 
@@ -37,43 +32,30 @@ var _screen: Node = null
 
 
 func _ready() -> void:
-	if not detect_autopilot:
+	if not read_command_line:
 		show_menu()
 		return
 	var args: PackedStringArray = OS.get_cmdline_user_args()
-	var pong_health: int = PONG_DEMO_HEALTH
-	var pong_players: int = 2
-	for arg: String in args:
-		if arg.begins_with("--autopilot-seconds="):
-			autopilot_seconds = arg.get_slice("=", 1).to_float()
-		elif arg.begins_with("--pong-health="):
-			pong_health = maxi(1, arg.get_slice("=", 1).to_int())
-		elif arg.begins_with("--pong-players="):
-			pong_players = 4 if arg.get_slice("=", 1).to_int() == 4 else 2
 	if PongNetCli.wants(args):
 		_background.visible = DisplayServer.get_name() != "headless"
 		add_child(PongNetCli.new())
 		return
-	if args.has("--pong-demo"):
-		start_pong_demo(pong_health, pong_players)
-		return
-	var headless: bool = DisplayServer.get_name() == "headless"
-	if headless or args.has("--autopilot"):
-		print(
-			(
-				"Autopilot on (%s): %s; %d device(s) found; %s; level %s"
-				% [
-					"no display" if headless else "--autopilot",
-					Haptics.get_version(),
-					Haptics.device.list_present().size(),
-					MainMenu.device_status_text(),
-					Game.default_level_path(),
-				]
-			)
-		)
-		start_game(true)
-	else:
-		show_menu()
+	show_menu()
+	if args.has("--system-check"):
+		_system_check()
+
+
+## One line on what this installation found: the haptics extension's and the engine's
+## versions, how many devices are present, and the chosen device's state.
+static func system_line() -> String:
+	return (
+		"%s; %d device(s) found; %s"
+		% [
+			Haptics.get_version(),
+			Haptics.device.list_present().size(),
+			MainMenu.device_status_text(),
+		]
+	)
 
 
 ## The screen showing now (a [MainMenu], [SettingsScreen], [StudyRunner] or [Game]).
@@ -83,7 +65,7 @@ func get_screen() -> Node:
 
 func show_menu() -> void:
 	var menu: MainMenu = _switch_to(MENU_SCENE) as MainMenu
-	menu.play_requested.connect(start_game.bind(false))
+	menu.play_requested.connect(start_game)
 	menu.pong_requested.connect(show_pong)
 	menu.maze_requested.connect(show_maze)
 	menu.settings_requested.connect(show_settings)
@@ -107,28 +89,13 @@ func show_pong() -> void:
 	_switch_to_node(_new_pong())
 
 
-## A computer-vs-computer match with the servo stepped by the game, printing its result
-## and quitting when it is over.
-func start_pong_demo(health: int, players: int = 2) -> void:
-	var pong: PongScreen = PONG_SCENE.instantiate() as PongScreen
-	pong.skip_setup = true
-	pong.mode = PongMatch.Mode.DEMO
-	pong.stepped = true
-	pong.start_health = health
-	pong.players = players
-	pong.quit_when_over = true
-	print("Pong demo: %d computers, health %d, stepped servo" % [players, health])
-	_switch_to_node(pong)
-
-
-## Starts a run of the level, under the autopilot when [param with_autopilot].
-func start_game(with_autopilot: bool = false) -> void:
+## Starts a run of the level, steered by [param pilot] instead of the person when given (a
+## test driver's; see [member Game.pilot]).
+func start_game(pilot: GamePilot = null) -> void:
 	var game: Game = GAME_SCENE.instantiate() as Game
-	game.autopilot = with_autopilot
-	game.autopilot_seconds = autopilot_seconds
+	game.pilot = pilot
 	game.menu_requested.connect(show_menu)
-	game.restart_requested.connect(start_game.bind(with_autopilot))
-	game.autopilot_finished.connect(_on_autopilot_finished)
+	game.restart_requested.connect(start_game.bind(pilot))
 	_switch_to_node(game)
 
 
@@ -174,8 +141,17 @@ func _open_pong_lobby(seats: int, pong: PongScreen) -> void:
 	lobby.choose_seats(seats)
 
 
-func _on_autopilot_finished(_reason: String) -> void:
-	CleanExit.quit(0)
+# The menu shows for SYSTEM_CHECK_FRAMES frames, then the game quits as a player's Quit does.
+func _system_check() -> void:
+	print("System check: " + system_line())
+	for _frame: int in SYSTEM_CHECK_FRAMES:
+		await get_tree().process_frame
+	if _screen is MainMenu:
+		print("System check: the main menu showed for %d frames" % SYSTEM_CHECK_FRAMES)
+		CleanExit.quit(0)
+	else:
+		push_error("System check: the main menu is not showing")
+		CleanExit.quit(1)
 
 
 func _on_quit_requested() -> void:

@@ -2,7 +2,7 @@ extends TestSuite
 ## The base of the suites that play in the test room: a fresh room per test with its
 ## player, which the test steers itself (not through the haptic device).
 
-const TEST_ROOM := preload("res://game/levels/test_room.tscn")
+const TEST_ROOM := preload("res://tests/support/room.tscn")
 
 var _room: TestRoom = null
 var _player: Player = null

@@ -1,10 +1,10 @@
 extends TestSuite
-## Every script a player or a developer gets (the addon and the games) compiles with the
-## project's GDScript warnings raised to errors, the scene scripts too, which other suites may
-## load before warnings are raised. project.godot makes an unsafe property or method access
+## Every script a player or a developer gets (the addon and the games), and the drivers that
+## run them in tests, compiles with the project's GDScript warnings raised to errors, the
+## scene scripts too, which other suites may load before warnings are raised. project.godot makes an unsafe property or method access
 ## an error already, so a misspelt member of a typed value does not parse.
 
-const FOLDERS: Array[String] = ["res://addons/haptics", "res://game"]
+const FOLDERS: Array[String] = ["res://addons/haptics", "res://game", "res://tests/drivers"]
 
 
 func test_every_product_script_compiles_without_warnings() -> void:

@@ -1,7 +1,8 @@
 extends TestSuite
 ## The game without its native library: a separate engine runs a copy of the project without
 ## the addon's built libraries (addons/haptics/bin/) or their sources. It must parse, warn
-## once, and play (no force feedback).
+## once, and play (no force feedback): level 1 under the autopilot driver
+## (tests/drivers/game_autopilot.tscn).
 
 ## Runs scenes or processes for seconds: make check (--quick) leaves it out.
 const SLOW := true
@@ -11,7 +12,10 @@ func test_the_game_plays_without_the_extension_and_says_so() -> void:
 	var script: String = ProjectSettings.globalize_path("res://tools/run-without-extension.sh")
 	var output: Array = []
 	var code: int = OS.execute(
-		"bash", [script, "--", "--autopilot", "--autopilot-seconds=2"], output, true
+		"bash",
+		[script, "res://tests/drivers/game_autopilot.tscn", "--", "--autopilot-seconds=2"],
+		output,
+		true
 	)
 	var text: String = "\n".join(output)
 	assert_eq(code, 0, text)

@@ -2,7 +2,7 @@ extends TestSuite
 ## Acceleration control is the same whichever way the input vector arrives: the arrow keys
 ## held right, or the haptic device's stylus pushed to the right edge of its workspace.
 
-const TEST_ROOM := preload("res://game/levels/test_room.tscn")
+const TEST_ROOM := preload("res://tests/support/room.tscn")
 
 var _mode_before: StringName = &""
 

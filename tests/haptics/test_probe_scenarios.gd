@@ -7,7 +7,7 @@ extends TestSuite
 ## Runs scenes or processes for seconds: make check (--quick) leaves it out.
 const SLOW := true
 
-const TEST_ROOM := preload("res://game/levels/test_room.tscn")
+const TEST_ROOM := preload("res://tests/support/room.tscn")
 const K := 2.0
 const B := 1.0
 const TICKS_PER_FRAME := 20

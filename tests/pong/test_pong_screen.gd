@@ -17,7 +17,7 @@ var _mode_before: StringName = &""
 func before_each() -> void:
 	_mode_before = Haptics.get_render_mode()
 	_main = MAIN_SCENE.instantiate() as Main
-	_main.detect_autopilot = false
+	_main.read_command_line = false
 	add_child_autofree(_main)
 	await wait_process_frames(2)
 

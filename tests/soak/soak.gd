@@ -45,10 +45,11 @@ func _start_level() -> void:
 		remove_child(_game)
 		_game.queue_free()
 	_game = GAME_SCENE.instantiate() as Game
-	_game.autopilot = true
-	_game.autopilot_seconds = 0.0
-	_game.print_status = false
-	_game.autopilot_finished.connect(_on_autopilot_finished)
+	var pilot: LevelPilot = LevelPilot.new()
+	pilot.seconds = 0.0
+	pilot.print_status = false
+	pilot.finished.connect(_on_autopilot_finished)
+	_game.pilot = pilot
 	add_child(_game)
 	_levels_started += 1
 

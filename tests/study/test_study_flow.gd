@@ -151,7 +151,7 @@ func test_a_trial_that_runs_out_of_time_is_recorded_unfinished() -> void:
 	set_timeout(30.0)
 	_write_root_config('{"trial_timeout_s": 1.0}')
 	var study: StudyRunner = _study("P05")
-	study.scripted_hold_s = 3.0
+	(study.participant as ScriptedParticipant).hold_s = 3.0
 	var recorded: Array[TrialResult] = []
 	study.trial_recorded.connect(func(result: TrialResult) -> void: recorded.append(result))
 	var ended: bool = await wait_until(func() -> bool: return not recorded.is_empty(), 20.0)
@@ -233,8 +233,7 @@ func _study(id: String, resume: bool = false) -> StudyRunner:
 	var study: StudyRunner = STUDY_SCENE.instantiate() as StudyRunner
 	study.study_root = _root
 	study.config_path = Support.TINY_CONFIG
-	study.scripted_participant = id
-	study.scripted_resume = resume
+	ScriptedParticipant.new(id, resume).take_part_in(study)
 	add_child_autofree(study)
 	return study
 

@@ -1,10 +1,10 @@
 extends TestSuite
 ## Data safety against a real crash: a child engine runs the study headless with a scripted
-## participant; once the first condition is rated and the second condition's trial is under
-## way, the child is killed with SIGKILL ([method OS.kill]). Every record written before is
-## intact and complete, the interrupted trial left only its telemetry, and resuming the
-## participant in this process continues with the second condition, gives the new trial
-## the next unused index, and finishes the study.
+## participant (tests/drivers/study_scripted.tscn); once the first condition is rated and the
+## second condition's trial is under way, the child is killed with SIGKILL ([method OS.kill]).
+## Every record written before is intact and complete, the interrupted trial left only its
+## telemetry, and resuming the participant in this process continues with the second
+## condition, gives the new trial the next unused index, and finishes the study.
 
 ## Runs scenes or processes for seconds: make check (--quick) leaves it out.
 const SLOW := true
@@ -40,7 +40,7 @@ func test_a_session_killed_mid_trial_keeps_its_records_and_resumes() -> void:
 		"--quiet",
 		"--path",
 		ProjectSettings.globalize_path("res://"),
-		"res://game/study/session/study.tscn",
+		"res://tests/drivers/study_scripted.tscn",
 		"--",
 		"--study-root=" + ProjectSettings.globalize_path(_root),
 		"--study-config=" + Support.TINY_CONFIG,
@@ -97,8 +97,7 @@ func _resume() -> bool:
 	var study: StudyRunner = STUDY_SCENE.instantiate() as StudyRunner
 	study.study_root = _root
 	study.config_path = Support.TINY_CONFIG
-	study.scripted_participant = "PK"
-	study.scripted_resume = true
+	ScriptedParticipant.new("PK", true).take_part_in(study)
 	add_child_autofree(study)
 	var phases: Array[StudySession.Phase] = []
 	study.phase_changed.connect(func(phase: StudySession.Phase) -> void: phases.append(phase))

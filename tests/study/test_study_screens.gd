@@ -1,8 +1,8 @@
 extends TestSuite
 ## The study's screens on their own: the start screen checks its fields before it lets a
 ## session start, the rating screen needs all six answers and works from the keyboard, the
-## final screen maps the methods back to conditions, and the researcher's consent text
-## replaces the shipped one.
+## final screen maps the methods back to conditions, the researcher's consent text replaces
+## the shipped one, and the screens wait for a person unless a driver takes part.
 
 const Support := preload("res://tests/study/study_test_support.gd")
 const START_SCENE: PackedScene = preload("res://game/study/screens/start_screen.tscn")
@@ -122,6 +122,24 @@ func test_the_researchers_consent_text_replaces_the_shipped_one() -> void:
 	assert_eq(_consent_shown(root), "Our lab's consent text.")
 	DirAccess.remove_absolute(root.path_join("consent.txt"))
 	assert_has(_consent_shown(root), "Information and consent", "else the shipped text")
+	await wait_process_frames(2)
+	Support.remove_tree(root)
+
+
+func test_a_person_takes_part_unless_a_driver_says_otherwise() -> void:
+	var root: String = Support.fresh_root("person")
+	var study: StudyRunner = STUDY_SCENE.instantiate() as StudyRunner
+	study.study_root = root
+	add_child_autofree(study)
+	var person: StudyParticipant = study.participant
+	if not assert_not_null(person, "the runner has a participant"):
+		return
+	assert_eq(person.get_script(), StudyParticipant as Script, "the product's own: a person")
+	assert_false(person.steers_hand(), "a person moves the device, the mouse or the keys")
+	await wait_process_frames(5)
+	assert_eq(study.phase, StudySession.Phase.START, "nothing is pressed for them")
+	assert_true(study.get_screen() is StartScreen)
+	study.queue_free()
 	await wait_process_frames(2)
 	Support.remove_tree(root)
 

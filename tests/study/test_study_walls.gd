@@ -93,8 +93,9 @@ func test_the_wall_touching_participant_records_what_each_condition_renders() ->
 	var study: StudyRunner = STUDY_SCENE.instantiate() as StudyRunner
 	study.study_root = _root
 	study.config_path = WALL_CONFIG
-	study.scripted_participant = PARTICIPANT
-	study.scripted_touches_walls = true
+	var participant: ScriptedParticipant = ScriptedParticipant.new(PARTICIPANT)
+	participant.touch_walls = true
+	participant.take_part_in(study)
 	add_child_autofree(study)
 	var frames: int = 0
 	while study.phase != StudySession.Phase.DONE and frames < SESSION_S * 50.0:

@@ -1,7 +1,7 @@
 extends TestSuite
-## The game under the autopilot, in process: it follows the level's path, prints the
-## documented status line, ends after its time budget, and hands the simulated device's
-## hand back to the mouse when it leaves.
+## The game under the autopilot (a [LevelPilot], tests/drivers/), in process: it follows the
+## level's path, prints the documented status line, ends after its time budget, and hands the
+## simulated device's hand back to the mouse when it leaves.
 
 const GAME_SCENE: PackedScene = preload("res://game/main/game.tscn")
 const STATUS_PATTERN: String = (
@@ -10,13 +10,15 @@ const STATUS_PATTERN: String = (
 )
 
 var _game: Game = null
+var _pilot: LevelPilot = null
 
 
 func before_each() -> void:
 	_game = GAME_SCENE.instantiate() as Game
-	_game.autopilot = true
-	_game.autopilot_seconds = 1.0
-	_game.print_status = false
+	_pilot = LevelPilot.new()
+	_pilot.seconds = 1.0
+	_pilot.print_status = false
+	_game.pilot = _pilot
 	add_child_autofree(_game)
 
 
@@ -24,16 +26,13 @@ func after_each() -> void:
 	get_tree().paused = false
 
 
-func test_the_level_is_level_1_when_it_exists() -> void:
-	var expected: String = Game.LEVEL_1_PATH
-	if not ResourceLoader.exists(expected):
-		expected = Game.FALLBACK_LEVEL_PATH
-	assert_eq(Game.default_level_path(), expected)
-	assert_eq(_game.level.scene_file_path, expected)
+func test_the_level_is_level_1() -> void:
+	assert_true(ResourceLoader.exists(Game.LEVEL_1_PATH), "the game has no fallback level")
+	assert_eq(_game.level.scene_file_path, Game.LEVEL_1_PATH)
 
 
 func test_the_autopilot_steers_toward_the_first_waypoint() -> void:
-	var pilot: Autopilot = _game.get_autopilot()
+	var pilot: Autopilot = _pilot.autopilot
 	if not assert_not_null(pilot):
 		return
 	assert_eq(pilot.path, _game.level.get_autopilot_path())
@@ -54,14 +53,14 @@ func test_the_autopilot_steers_toward_the_first_waypoint() -> void:
 func test_the_status_line_has_the_documented_shape() -> void:
 	await wait_physics_frames(3)
 	var pattern: RegEx = RegEx.create_from_string(STATUS_PATTERN)
-	var line: String = _game.status_line()
+	var line: String = _pilot.status_line()
 	assert_not_null(pattern.search(line), line)
 	assert_true(line.begins_with("t= 0."), line)
 
 
 func test_the_run_ends_after_its_time_budget() -> void:
 	var reasons: Array[String] = []
-	_game.autopilot_finished.connect(func(reason: String) -> void: reasons.append(reason))
+	_pilot.finished.connect(func(reason: String) -> void: reasons.append(reason))
 	await wait_physics_frames(55)
 	assert_eq(reasons, ["time"] as Array[String])
 	assert_almost_eq(_game.elapsed, 1.0, 1e-4)
@@ -69,7 +68,7 @@ func test_the_run_ends_after_its_time_budget() -> void:
 
 func test_reaching_the_goal_ends_the_run_without_the_goal_screen() -> void:
 	var reasons: Array[String] = []
-	_game.autopilot_finished.connect(func(reason: String) -> void: reasons.append(reason))
+	_pilot.finished.connect(func(reason: String) -> void: reasons.append(reason))
 	await wait_physics_frames(2)
 	_game.level.goal_reached.emit()
 	assert_eq(reasons, ["goal"] as Array[String])

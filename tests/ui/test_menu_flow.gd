@@ -11,7 +11,7 @@ var _main: Main = null
 
 func before_each() -> void:
 	_main = MAIN_SCENE.instantiate() as Main
-	_main.detect_autopilot = false
+	_main.read_command_line = false
 	add_child_autofree(_main)
 	await wait_process_frames(2)
 
@@ -95,7 +95,7 @@ func test_play_starts_the_level_with_its_hud() -> void:
 	assert_not_null(game.level)
 	assert_not_null(game.player)
 	assert_not_null(game.hud)
-	assert_false(game.autopilot)
+	assert_null(game.pilot, "the person steers")
 	assert_false((_main.get_node(^"Background") as CanvasItem).visible)
 	await wait_physics_frames(5)
 	assert_gt(game.elapsed, 0.0, "the clock runs")

@@ -5,7 +5,7 @@ extends TestSuite
 
 const GAME_SCENE: PackedScene = preload("res://game/main/game.tscn")
 ## The smallest level: these tests are about the flow, not the world.
-const ROOM_SCENE: PackedScene = preload("res://game/levels/test_room.tscn")
+const ROOM_SCENE: PackedScene = preload("res://tests/support/room.tscn")
 
 var _game: Game = null
 

@@ -10,13 +10,13 @@ extends "res://tests/world/device_suite.gd"
 ## Runs scenes or processes for seconds: make check (--quick) leaves it out.
 const SLOW := true
 
-const TEST_ROOM := preload("res://game/levels/test_room.tscn")
+const TEST_ROOM := preload("res://tests/support/room.tscn")
 const CRATE := preload("res://game/props/crate.tscn")
 const WATER := preload("res://game/props/water.tscn")
 ## The probe scene's material (materials/hard.tres) for the room's walls.
 const WALL_STIFFNESS := 3.0
 const WALL_IMPACT_GAIN := 0.8
-## The room's floor and right wall (test_room.tscn's outline), px.
+## The room's floor and right wall (tests/support/room.tscn's outline), px.
 const FLOOR_Y := 680.0
 const WALL_X := 1240.0
 ## Below this, newtons, an impact's ring has died away.

@@ -3,8 +3,10 @@
 # graphics package (tools/bare/root.sh), each run in its own mount, PID and network namespace
 # (chroot; /proc of its own; no network but its own loopback), the game started by the
 # ordinary user 'player' with an emptied environment:
-#  - Debian 12: the game headless under the autopilot and the dedicated Pong server for a few
-#    seconds start, run and exit 0 without an ERROR line; the same start without the
+#  - Debian 12: the game headless under its system check (it shows its main menu for a
+#    moment; an export holds no test driver, so no autopilot: docs/testing.md) and the
+#    dedicated Pong server for a few seconds start, run and exit 0 without an ERROR line; the
+#    same start without the
 #    launcher's stand-in for the missing libgbm fails (the root really lacks it);
 #  - Debian 11: the headless game runs too; a windowed start stops at once with the launcher's
 #    message naming the system's glibc as the cause (its graphics driver cannot load beside
@@ -93,12 +95,12 @@ run_as_player ./haptic-game/runtime/haptic-game.loader --library-path ./haptic-g
   fail "Debian 12: the engine started without libgbm: the root is not bare (status $status)" "$log"
 
 started=$SECONDS
-run_as_player "$game" --headless -- --autopilot --autopilot-seconds=2
+run_as_player "$game" --headless -- --system-check
 ((status == 0)) || fail "Debian 12: the headless game exited with $status" "$log"
 grep -q "haptics [0-9.]* (Godot" "$log" || fail "Debian 12: the bundled extension did not load" "$log"
-grep -q "^t= 1.0s" "$log" || fail "Debian 12: the autopilot did not run" "$log"
+grep -q "^System check: the main menu showed" "$log" || fail "Debian 12: the main menu did not show" "$log"
 (($(errors) == 0)) || fail "Debian 12: the headless game printed $(errors) error lines" "$log"
-echo "test-bare: Debian 12, player, headless game under the autopilot: exit 0, no error line" \
+echo "test-bare: Debian 12, player, headless game's system check: exit 0, no error line" \
   "($((SECONDS - started)) s)"
 
 started=$SECONDS
@@ -114,13 +116,13 @@ rm -rf "$root/home/player/run"
 root=$(tools/bare/root.sh bullseye)
 check_bare "Debian 11"
 install_builds
-run_as_player "$game" --headless -- --autopilot --autopilot-seconds=2
+run_as_player "$game" --headless -- --system-check
 ((status == 0)) || fail "Debian 11: the headless game exited with $status" "$log"
-grep -q "^t= 1.0s" "$log" || fail "Debian 11: the autopilot did not run" "$log"
+grep -q "^System check: the main menu showed" "$log" || fail "Debian 11: the main menu did not show" "$log"
 (($(errors) == 0)) || fail "Debian 11: the headless game printed $(errors) error lines" "$log"
-echo "test-bare: Debian 11, player, headless game under the autopilot: exit 0, no error line"
+echo "test-bare: Debian 11, player, headless game's system check: exit 0, no error line"
 
-run_as_player "$game" -- --autopilot --autopilot-seconds=2
+run_as_player "$game" -- --system-check
 ((status == 1)) || fail "Debian 11: a windowed start exited with $status, not the launcher's 1" "$log"
 grep -q "this system's C library is glibc 2.31" "$log" ||
   fail "Debian 11: the launcher did not name the system's C library" "$log"

@@ -2,7 +2,7 @@
 # Starts the exported game named after this file (runtime/<name>.x86_64) with the C library
 # and the libraries shipped in runtime/, so it needs none of the system's except the GPU
 # driver. Arguments are passed to the game (e.g. ./haptic-game --rendering-driver opengl3,
-# ./haptic-game -- --autopilot, or ./haptic-pong-server --headless -- --server).
+# ./haptic-game --headless -- --system-check, or ./haptic-pong-server --headless -- --server).
 self=$(readlink -f "$0")
 here=$(dirname "$self")
 name=$(basename "$self")

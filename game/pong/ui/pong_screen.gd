@@ -6,9 +6,8 @@ extends Node
 ## back: the ball lives in the servo, and there is no other ball.
 ##
 ## Runs on its own (F6): it starts on the setup; Menu then quits and Play again reloads.
-## [member skip_setup] starts the match
-## straight away (the main scene's headless demo, tests); with [member quit_when_over] it
-## prints the result and the simulated/wall time ratio and quits.
+## [member skip_setup] starts the match straight away (Play again, tests and the headless
+## demo of [code]tests/drivers/[/code], which watch [member match_node] themselves).
 
 ## Back to the main menu (pause menu's Quit to menu, the winner screen's Menu, setup's Back).
 signal menu_requested
@@ -39,8 +38,6 @@ const OLD_EXTENSION_TEXT: String = (
 @export_enum("2:2", "4:4") var players: int = 2
 ## Run the servo by hand, faster than real time (computer vs computer).
 @export var stepped: bool = false
-## Print the result and quit when the match is over (headless demo).
-@export var quit_when_over: bool = false
 
 var _running: bool = false
 
@@ -66,9 +63,6 @@ func _ready() -> void:
 	setup.network_button.visible = not network_requested.get_connections().is_empty()
 	if not PongServo.shared().is_available():
 		setup.show_offline(OFFLINE_TEXT if not Haptics.is_available() else OLD_EXTENSION_TEXT)
-		if quit_when_over:
-			print(setup.get_message())
-			CleanExit.quit(1)
 		return
 	if skip_setup:
 		start_match(mode, beginner)
@@ -183,8 +177,6 @@ func _on_bullet_hit(hit: Dictionary) -> void:
 
 func _on_player_out(player: int) -> void:
 	hud.flash("%s is out!" % player_name(player))
-	if quit_when_over:
-		print("Pong: %s is out at %.1f s" % [player_name(player), match_node.now])
 
 
 func _on_match_over(winner: int) -> void:
@@ -192,20 +184,4 @@ func _on_match_over(winner: int) -> void:
 	var health: Array[int] = []
 	for player: int in match_node.court.players:
 		health.append(match_node.rules.get_health(player))
-	if quit_when_over:
-		print(
-			(
-				"Pong: %s wins, %d players, health %s, %.1f simulated s in %.1f wall s (%.1fx real time)"
-				% [
-					player_name(winner),
-					health.size(),
-					" : ".join(health.map(func(h: int) -> String: return str(h))),
-					match_node.now,
-					match_node.now / maxf(match_node.speed_ratio(), 1e-6),
-					match_node.speed_ratio(),
-				]
-			)
-		)
-		CleanExit.quit(0)
-		return
 	winner_screen.show_winner(player_name(winner), health)

@@ -7,12 +7,9 @@ extends RefCounted
 ## [codeblock]
 ## --study-root=PATH          study folder (default: the config's, user://study)
 ## --study-config=PATH        extra settings file merged over the defaults
-## --scripted-participant=ID  a ScriptedParticipant plays the whole session (tests, demos)
-## --resume                   the scripted participant resumes ID instead of starting it
-## --hold=SECONDS             the scripted participant waits this long in each trial
-## --touch-walls              the scripted participant pushes into (and through) the walls
-## --quit-when-done           quit when the session ends (exit code 0)
 ## [/codeblock]
+## (A scripted participant plays the study from [code]tests/drivers/study_scripted.tscn[/code],
+## which takes these too.)
 
 ## The consent text shipped with the game; a [code]consent.txt[/code] in the study folder
 ## replaces it.
@@ -28,16 +25,6 @@ static func command_line() -> Dictionary:
 			out["study_root"] = value
 		elif arg.begins_with("--study-config="):
 			out["config_path"] = value
-		elif arg.begins_with("--scripted-participant="):
-			out["scripted_participant"] = value
-		elif arg == "--resume":
-			out["scripted_resume"] = true
-		elif arg.begins_with("--hold="):
-			out["scripted_hold_s"] = value.to_float()
-		elif arg == "--touch-walls":
-			out["scripted_touches_walls"] = true
-		elif arg == "--quit-when-done":
-			out["quit_when_done"] = true
 	return out
 
 

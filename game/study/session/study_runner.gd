@@ -16,7 +16,8 @@ extends Control
 ## back by signal: [SessionStart] (a new or resumed participant), [PracticeFlow],
 ## [TrialFlow] (the maze trials) and [AnswerFlow] (ratings, favourite, the end). Settings
 ## come from [StudyConfig]; the properties below override them (tests use their own study
-## root). Run on its own, the scene reads the command line ([StudyLaunch]).
+## root). Run on its own, the scene reads the command line ([StudyLaunch]). Who takes part
+## is the [member participant]: a person at these screens, unless a test driver gives its own.
 
 ## The study was left (Back on the start screen, or the end).
 signal closed
@@ -24,7 +25,7 @@ signal closed
 signal phase_changed(new_phase: StudySession.Phase)
 ## A maze trial ended and its record was written.
 signal trial_recorded(result: TrialResult)
-## [param screen] is shown now (the scripted participant follows the screens).
+## [param screen] is shown now (the [member participant] is told too).
 signal screen_shown(screen: Control)
 
 const START_SCENE: PackedScene = preload("res://game/study/screens/start_screen.tscn")
@@ -38,25 +39,6 @@ const FINAL_SCENE: PackedScene = preload("res://game/study/screens/final_screen.
 @export var study_root: String = ""
 ## Settings file merged over the defaults (empty: none).
 @export var config_path: String = ""
-## When not empty, a [ScriptedParticipant] with this id plays the session.
-@export var scripted_participant: String = ""
-## The scripted participant resumes instead of starting.
-@export var scripted_resume: bool = false
-## The scripted participant keeps still this long at the start of each trial, seconds.
-@export var scripted_hold_s: float:
-	get:
-		return _context.pilot_hold_s
-	set(value):
-		_context.pilot_hold_s = value
-## The scripted participant pushes into the walls around the start of each trial (and
-## through them in position control) before heading for the goal.
-@export var scripted_touches_walls: bool:
-	get:
-		return _context.pilot_touches_walls
-	set(value):
-		_context.pilot_touches_walls = value
-## Quit the program when the session ends.
-@export var quit_when_done: bool = false
 ## Seconds the "Goal!" message shows before the next screen.
 @export var pause_after_trial_s: float = 1.0
 
@@ -74,12 +56,10 @@ var phase: StudySession.Phase:
 var report: PackedStringArray:
 	get:
 		return session.report
-## Steer with [StudyPilot] (the scripted participant) instead of the mouse/keys.
-var autopilot: bool:
-	get:
-		return _context.autopilot
-	set(value):
-		_context.autopilot = value
+## Who takes part: null (the default) stands for a person at these screens and the device
+## (a plain [StudyParticipant]); a test driver sets its own before the runner enters the
+## tree.
+var participant: StudyParticipant = null
 
 var _screen: Control = null
 var _saved_haptics: Dictionary = {}
@@ -90,7 +70,6 @@ var _session_start: SessionStart = SessionStart.new()
 var _practice: PracticeFlow = PracticeFlow.new()
 var _trials: TrialFlow = TrialFlow.new()
 var _answers: AnswerFlow = AnswerFlow.new()
-var _participant: ScriptedParticipant = null
 
 
 func _ready() -> void:
@@ -104,16 +83,13 @@ func _ready() -> void:
 	_saved_haptics = ConditionRig.save_haptics()
 	_rig.name = "ConditionRig"
 	add_child(_rig)
-	if not scripted_participant.is_empty():
-		_participant = ScriptedParticipant.new()
-		_participant.name = "ScriptedParticipant"
-		_participant.participant_id = scripted_participant
-		_participant.resume = scripted_resume
-		add_child(_participant)
-		_participant.setup(session, _screen)
-		screen_shown.connect(_participant.show_screen)
-		autopilot = true
-		pause_after_trial_s = minf(pause_after_trial_s, 0.1)
+	if participant == null:
+		participant = StudyParticipant.new()
+	participant.name = "Participant"
+	add_child(participant)
+	_context.participant = participant
+	participant.join(session)
+	screen_shown.connect(participant.show_screen)
 	session.phase_changed.connect(phase_changed.emit)
 	_connect_steps()
 	var refusal: String = StudyLaunch.refusal(config)
@@ -323,8 +299,6 @@ func _on_finished() -> void:
 		"Back to menu" if not is_standalone() else "Quit"
 	)
 	session.phase = StudySession.Phase.DONE
-	if quit_when_done:
-		CleanExit.quit(0)
 
 
 func _on_goal_reached() -> void:

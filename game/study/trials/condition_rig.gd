@@ -237,7 +237,7 @@ func hand_position() -> Vector2:
 	return Haptics.device.get_position()
 
 
-## Moves the simulated hand to [param normalised] (the scripted participant).
+## Moves the simulated hand to [param normalised] (a participant that steers the hand).
 func set_hand(normalised: Vector2) -> void:
 	Haptics.device.set_hand_target(normalised)
 

@@ -39,8 +39,8 @@ func tick(delta: float) -> void:
 			rig.go()
 			_context.stage.hide_card()
 			_context.stage.show_hand(Vector2.ZERO, false)
-	elif _context.autopilot and _context.pilot != null:
-		rig.set_hand(_context.pilot.steer(rig, delta))
+	else:
+		_context.steer(delta)
 
 
 ## The goal was reached in practice: cheer, put the avatar back, and arm the goal again.

@@ -1,9 +1,10 @@
 class_name StudyContext
 extends RefCounted
 ## What the practice and the maze trials are handed: the session, the stage, the
-## [ConditionRig] that puts a condition into effect on the level shown, and the scripted
-## hand. It loads a level under a condition and waits for the handle at the start; what it
-## cannot do, it reports ([signal failed]) and the [StudyRunner] stops the study.
+## [ConditionRig] that puts a condition into effect on the level shown, and the
+## [StudyParticipant]. It loads a level under a condition and waits for the handle at the
+## start; what it cannot do, it reports ([signal failed]) and the [StudyRunner] stops the
+## study.
 
 ## A level or its condition could not be set up.
 signal failed(error: String)
@@ -17,15 +18,8 @@ var session: StudySession = null
 var rig: ConditionRig = null
 ## The stage while it is shown, else null (the runner sets it).
 var stage: StudyStage = null
-## Steer with the [member pilot] (the scripted participant) instead of the mouse/keys.
-var autopilot: bool = false
-## The scripted participant's hand in the level shown (null until a level is loaded).
-var pilot: StudyPilot = null
-## The scripted participant keeps still this long at the start of each trial, seconds.
-var pilot_hold_s: float = 0.0
-## The scripted participant pushes into the walls before heading for the goal
-## ([member StudyPilot.touch_walls]).
-var pilot_touches_walls: bool = false
+## Who takes part (the runner sets it; null: nobody steers the hand, as with a person).
+var participant: StudyParticipant = null
 
 var _centre_held: float = 0.0
 
@@ -44,14 +38,26 @@ func load_level(scene: PackedScene, condition: String) -> bool:
 		failed.emit("the level could not be loaded")
 		return false
 	level.goal_reached.connect(goal_reached.emit)
-	rig.piloted = autopilot
+	rig.piloted = participant_steers()
 	rig.pointer = stage.pointer_in_level
 	if not rig.setup(level, condition, session.config.condition(condition)):
 		failed.emit("the haptics servo refused the settings of the condition '%s'" % condition)
 		return false
-	if autopilot:
-		pilot = StudyPilot.new(level.get_autopilot_path(), session.config.number("autopilot_speed"))
+	if participant != null:
+		participant.start_level(rig, false)
 	return true
+
+
+## Whether the [member participant] moves the hand itself ([method StudyParticipant.steer]).
+func participant_steers() -> bool:
+	return participant != null and participant.steers_hand()
+
+
+## One physics tick of the avatar moving: a [member participant] that steers the hand moves
+## it (a person moves the device).
+func steer(delta: float) -> void:
+	if participant_steers():
+		rig.set_hand(participant.steer(rig, delta))
 
 
 ## The card that asks for the handle at the start position (the gauge shows where it is).
@@ -76,7 +82,7 @@ func show_centring() -> void:
 ## enough.
 func centre(delta: float) -> bool:
 	var target: Vector2 = rig.start_hand()
-	if autopilot:
+	if participant_steers():
 		rig.set_hand(target)
 	var hand: Vector2 = rig.hand_position()
 	var position_control: bool = StudyFormat.is_position_control(rig.condition)

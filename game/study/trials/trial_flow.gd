@@ -73,8 +73,7 @@ func centre(delta: float) -> void:
 func tick(delta: float) -> void:
 	_ticks += 1
 	var rig: ConditionRig = _context.rig
-	if _context.autopilot and _context.pilot != null:
-		rig.set_hand(_context.pilot.steer(rig, delta))
+	_context.steer(delta)
 	if not _recorder.tick(rig.avatar_position(), delta):
 		failed.emit(_recorder.error)
 		return
@@ -126,9 +125,8 @@ func _begin_trial() -> void:
 	if not _recorder.begin(rig.avatar_position()):
 		failed.emit(_recorder.error)
 		return
-	_context.pilot = StudyPilot.new(level.get_autopilot_path(), config.number("autopilot_speed"))
-	_context.pilot.hold_s = _context.pilot_hold_s
-	_context.pilot.touch_walls = _context.pilot_touches_walls
+	if _context.participant != null:
+		_context.participant.start_level(rig, true)
 	_ticks = 0
 	_context.stage.hide_card()
 	_context.stage.show_hand(Vector2.ZERO, false)

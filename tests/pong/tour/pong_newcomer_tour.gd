@@ -21,7 +21,7 @@ func _ready() -> void:
 
 func _tour() -> void:
 	_main = MAIN_SCENE.instantiate() as Main
-	_main.detect_autopilot = false
+	_main.read_command_line = false
 	add_child(_main)
 	_main.show_pong()
 	await _shot("pong-setup", 0.8)

@@ -31,7 +31,7 @@ func _ready() -> void:
 # The way in from the title screen and back.
 func _menu_tour() -> void:
 	var main: Main = MAIN_SCENE.instantiate() as Main
-	main.detect_autopilot = false
+	main.read_command_line = false
 	add_child(main)
 	await _shot("menu", 0.8)
 	var menu: MainMenu = main.get_screen() as MainMenu
@@ -47,6 +47,10 @@ func _tour() -> void:
 	var root: String = "user://study_tour/%d" % Time.get_ticks_usec()
 	var study: StudyRunner = STUDY_SCENE.instantiate() as StudyRunner
 	study.study_root = root
+	# The tour answers the screens itself; the scripted participant only steers the hand.
+	var hand: ScriptedParticipant = ScriptedParticipant.new()
+	hand.plays_screens = false
+	study.participant = hand
 	add_child(study)
 	await _shot("start_empty", 0.6)
 	var start: StartScreen = study.get_screen() as StartScreen
@@ -61,7 +65,6 @@ func _tour() -> void:
 	start.consent_check.button_pressed = true
 	if not _maze.is_empty():
 		study.config.merge({"maze_level": _maze})
-	study.autopilot = true
 	start.start_button.pressed.emit()
 	await _shot("practice_open", 1.5)
 	study.get_stage().next_condition_pressed.emit()

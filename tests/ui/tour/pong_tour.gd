@@ -23,7 +23,7 @@ func _ready() -> void:
 
 func _tour() -> void:
 	_main = MAIN_SCENE.instantiate() as Main
-	_main.detect_autopilot = false
+	_main.read_command_line = false
 	add_child(_main)
 	await _shot("pong_menu", 1.0)
 	_main.show_pong()

@@ -20,7 +20,7 @@ func _option(arg: String) -> void:
 
 func _tour() -> void:
 	var main: Node = MAIN_SCENE.instantiate()
-	main.set(&"detect_autopilot", false)
+	main.set(&"read_command_line", false)
 	add_child(main)
 	await _shot("menu", 1.5)
 	main.call(&"show_settings")
@@ -28,11 +28,10 @@ func _tour() -> void:
 	main.call(&"show_maze")
 	await _shot("maze", 0.8)
 	var main_scene: Main = main as Main
-	main_scene.autopilot_seconds = 0.0
-	main_scene.start_game(true)
+	var pilot: LevelPilot = LevelPilot.new()
+	pilot.seconds = 0.0
+	main_scene.start_game(pilot)
 	var game: Game = main_scene.get_screen() as Game
-	var on_finished: Callable = main.get(&"_on_autopilot_finished")
-	game.autopilot_finished.disconnect(on_finished)
 	var waited: float = 0.0
 	for seconds: float in _game_seconds:
 		await _shot("game_%04.1fs" % seconds, seconds - waited)

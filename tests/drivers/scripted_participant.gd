@@ -1,11 +1,11 @@
 class_name ScriptedParticipant
-extends Node
+extends StudyParticipant
 ## Plays a whole study session through the real screens, as a participant and researcher
-## would (fields filled, buttons pressed), for tests and unattended demonstrations. The
-## [StudyRunner] adds it (see its [code]--scripted-participant[/code] option), hands it the
-## session ([method setup]) and tells it each screen it shows ([method show_screen]); the
-## runner's [member StudyRunner.autopilot] steers the simulated hand in the levels.
-## Ratings, and unless told otherwise the demographics and the favourite
+## would (fields filled, buttons pressed), for tests and unattended demonstrations
+## ([code]study_scripted.tscn[/code] beside it). Given to a [StudyRunner] with
+## [method take_part_in], it is handed the session ([method join]) and each screen
+## ([method show_screen]), and steers the simulated hand in the levels with a [StudyPilot]
+## ([method steer]). Ratings, and unless told otherwise the demographics and the favourite
 ## ([method profile_of]), are drawn from generators seeded with the id, so a run is
 ## reproducible and a study of several scripted participants varies as real ones do.
 
@@ -15,6 +15,8 @@ signal finished
 ## How many methods a drawn favourite names, each entry equally likely: none (abstains),
 ## one (three times as often) or two.
 const FAVOURITE_COUNTS: Array[int] = [0, 1, 1, 1, 2]
+## Longest "Goal!" pause after a trial in a scripted session, seconds.
+const PAUSE_AFTER_TRIAL_S: float = 0.1
 
 ## Id to start (or resume).
 var participant_id: String = "SCRIPTED"
@@ -31,6 +33,16 @@ var favourite: PackedInt32Array = PackedInt32Array()
 var draw_favourite: bool = true
 ## Free text entered at the end.
 var differences_text: String = "Scripted run: the methods felt different."
+## Fill in and press through the screens (off: only the hand is scripted, and whoever drives
+## the runner answers the screens).
+var plays_screens: bool = true
+## Seconds to keep still at the start of each trial (lets tests act mid-trial).
+var hold_s: float = 0.0
+## Push into the walls around the start of each trial (and through them in position
+## control) before heading for the goal ([member StudyPilot.touch_walls]).
+var touch_walls: bool = false
+## The hand in the level shown (null until a level is set up).
+var pilot: StudyPilot = null
 
 var _session: StudySession = null
 var _screen: Control = null
@@ -39,10 +51,21 @@ var _practice_steps: int = -1
 var _practice_left: float = 0.0
 
 
-## Plays the session [param session] from its current screen [param screen] on.
-func setup(session: StudySession, screen: Control) -> void:
+func _init(id: String = "SCRIPTED", p_resume: bool = false) -> void:
+	participant_id = id
+	resume = p_resume
+	name = "ScriptedParticipant"
+
+
+## Takes part in [param study] (before it enters the tree), with a short "Goal!" pause.
+func take_part_in(study: StudyRunner) -> void:
+	study.participant = self
+	study.pause_after_trial_s = minf(study.pause_after_trial_s, PAUSE_AFTER_TRIAL_S)
+
+
+## Plays the session [param session] from its current screen on.
+func join(session: StudySession) -> void:
 	_session = session
-	_screen = screen
 	_rng.seed = hash(participant_id)
 	var profile: Dictionary = profile_of(participant_id)
 	if demographics.is_empty():
@@ -52,6 +75,22 @@ func setup(session: StudySession, screen: Control) -> void:
 	_session.phase_changed.connect(_on_phase_changed)
 	if _session.phase == StudySession.Phase.START and _screen is StartScreen:
 		_on_phase_changed.call_deferred(StudySession.Phase.START)
+
+
+func steers_hand() -> bool:
+	return true
+
+
+func start_level(rig: ConditionRig, trial: bool) -> void:
+	var speed: float = _session.config.number("autopilot_speed")
+	pilot = StudyPilot.new(rig.level.get_autopilot_path(), speed)
+	if trial:
+		pilot.hold_s = hold_s
+		pilot.touch_walls = touch_walls
+
+
+func steer(rig: ConditionRig, delta: float) -> Vector2:
+	return pilot.steer(rig, delta) if pilot != null else rig.start_hand()
 
 
 ## What scripted participant [param id] answers when not told: [code]demographics[/code]
@@ -83,6 +122,10 @@ func show_screen(screen: Control) -> void:
 
 
 func _on_phase_changed(phase: StudySession.Phase) -> void:
+	if phase == StudySession.Phase.DONE:
+		finished.emit()
+	if not plays_screens:
+		return
 	match phase:
 		StudySession.Phase.START:
 			_fill_start.call_deferred()
@@ -94,8 +137,6 @@ func _on_phase_changed(phase: StudySession.Phase) -> void:
 			_rate.call_deferred()
 		StudySession.Phase.FINAL:
 			_answer_final.call_deferred()
-		StudySession.Phase.DONE:
-			finished.emit()
 
 
 func _fill_start() -> void:

@@ -1,7 +1,7 @@
 class_name StudyPilot
 extends RefCounted
-## The scripted participant's hand: steers the simulated device along a level's autopilot
-## path, the way a person would hold the handle.
+## The scripted participant's hand ([ScriptedParticipant]): steers the simulated device along
+## a level's autopilot path, the way a person would hold the handle.
 ##
 ## Acceleration control: the hand is deflected by [method Autopilot.steer]'s input vector
 ## toward the next waypoint, so the avatar accelerates there through the real device, probe
