@@ -31,37 +31,33 @@ SOAK_SECONDS ?= 600
 	build-windows test-windows
 
 ## help: the documented targets, one line each (this list)
-## the documented targets, each with its line (this list)
 help:
 	@python3 tools/make_help.py Makefile
 
 ## deps: install the missing OS packages
-## install missing OS packages (apt-get; sudo when not root)
+## apt-get; sudo when not root.
 deps:
 	@tools/install-deps.sh
 
 ## engine: provision Godot 4.5+ if needed and say which one runs
-## resolve (and if needed provision) Godot 4.5+ and print which one
 engine: deps
 	@$(GODOT) --which
 
 ## schema: write what the schemas define (C++ structs, GDScript values, docs/values.md)
-## write what the schemas define (*.schema.toml: the C++ structs, the GDScript value
-## classes, docs/values.md); make build does it first, make lint checks it is current
+## From every *.schema.toml; make build does it first, make lint checks it is current.
 schema:
 	@python3 tools/schema/generate.py
 
 ## build: build the development library and the doctests
-## the development library (RelWithDebInfo, with the development tools: the scripted
-## devices the tests use; loaded by this project's editor and debug runs) and the doctests
+## RelWithDebInfo, with the development tools (the scripted devices the tests use), loaded by
+## this project's editor and debug runs.
 build: engine schema
 	@$(CMAKE_CONFIGURE) -B $(BUILD)/debug -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 		-DHAPTICS_TARGET=template_debug -DHAPTICS_DEV_TOOLS=ON >/dev/null
 	@cmake --build $(BUILD)/debug -j $(JOBS)
 
 ## build-release: build the product library that exports and the addon ship
-## the product library (optimised, no development tools), bundled by exports
-## and packed into the addon
+## Optimised, without development tools; bundled by exports and packed into the addon.
 build-release: engine schema
 	@$(CMAKE_CONFIGURE) -B $(BUILD)/release -DCMAKE_BUILD_TYPE=Release \
 		-DHAPTICS_TARGET=template_release -DHAPTICS_DEV_TOOLS=OFF -DHAPTICS_BUILD_TESTS=OFF \
@@ -69,8 +65,8 @@ build-release: engine schema
 	@cmake --build $(BUILD)/release -j $(JOBS) --target haptics
 
 ## import: let Godot import the project
-## let the engine import the project (the extension is listed first: a fresh import
-## that registers a class otherwise crashes, Godot #111048; docs/troubleshooting.md)
+## The extension is listed first: a fresh import that registers a class otherwise crashes (Godot
+## #111048; docs/troubleshooting.md).
 import: build
 	@mkdir -p .godot
 	@echo "res://addons/haptics/haptics.gdextension" > .godot/extension_list.cfg
@@ -78,13 +74,13 @@ import: build
 		{ tail -n 30 $(BUILD)/import.log; echo "import failed (log: $(BUILD)/import.log)"; exit 1; }
 
 ## edit: open this project in the Godot editor
-## this project in the Godot editor (F5/F6 play the game from it)
+## F5/F6 play the game from it.
 edit: import
 	@$(GODOT) --editor --path .
 
 ## play: play the game (headless under the autopilot when there is no display)
-## the game; without a display, level 1 headless under the autopilot (a test driver:
-## tests/drivers/game_autopilot.tscn)
+## Without a display: level 1 headless under the autopilot (a test driver:
+## tests/drivers/game_autopilot.tscn).
 play: import
 	@if [[ -n "$${DISPLAY:-}" || -n "$${WAYLAND_DISPLAY:-}" ]]; then \
 		$(GODOT) --path . -- $(ARGS); \
@@ -94,15 +90,14 @@ play: import
 	fi
 
 ## pong-demo: a headless computer-vs-computer Haptic Battle Pong match
-## a headless computer-vs-computer Haptic Battle Pong match, the servo stepped by
-## the game (faster than real time); prints the winner and simulated vs wall seconds
-## (tests/drivers/pong_demo.tscn). ARGS=--pong-health=N sets each player's health (default
-## 15), --pong-players=4 plays on the square four-player court.
+## The servo stepped by the game, faster than real time; prints the winner and simulated vs wall
+## seconds (tests/drivers/pong_demo.tscn). ARGS=--pong-health=N sets each player's health
+## (default 15), --pong-players=4 plays on the square four-player court.
 pong-demo: import
 	@$(GODOT) --headless --path . res://tests/drivers/pong_demo.tscn -- $(ARGS)
 
 ## test: every suite: what CI runs (about 40 minutes)
-## every suite; any failure fails the target
+## Any failure fails the target.
 test: import test-native test-godot lint test-schema test-analysis test-net test-export \
 	test-export-server test-dist test-windowed test-addon test-editor test-kernel test-rt \
 	test-bare test-windows
@@ -121,33 +116,30 @@ test-godot-unit: import
 		$(TEST_ARGS)
 
 ## test-native: the C++ doctest suite
-## the C++ doctest suite through CTest
+## Through CTest.
 test-native: build
 	@ctest --test-dir $(BUILD)/debug --output-on-failure -j $(JOBS)
 
 ## build-windows: cross-build the extension for Windows (MinGW-w64)
-## the extension for Windows x86_64 (MinGW-w64), hidapi and libusb from
-## Debian's sources linked in, as addons/haptics/bin/libhaptics.windows.*.dll, and the
-## doctests as an .exe; checks the DLLs import only Windows' own DLLs (tools/windows/build.sh)
+## x86_64, hidapi and libusb from Debian's sources linked in, as
+## addons/haptics/bin/libhaptics.windows.*.dll, and the doctests as an .exe; checks the DLLs
+## import only Windows' own DLLs (tools/windows/build.sh).
 build-windows: engine
 	@nice -n 19 tools/windows/build.sh
 
 ## test-windows: the doctest suite under Wine, and the DLLs' imports
-## the doctest suite under Wine, every test but the Linux-only ones (counted
-## and listed), and the DLLs' imports (tools/windows/test.sh)
+## Every test but the Linux-only ones (counted and listed) (tools/windows/test.sh).
 test-windows: build build-windows
 	@nice -n 19 tools/windows/test.sh
 
 ## test-godot: every GDScript suite, headless, with the real extension
-## the headless GDScript suite with the real extension loaded
 test-godot: import
 	@$(GODOT) --headless --path . res://tests/runner/runner.tscn -- --warnings-as-errors \
 		--junit=$(BUILD)/godot-tests.xml $(TEST_ARGS)
 
 ## test-windowed: the game in a window (Xvfb) under its autopilot, then its menu
-## the game in a window (Xvfb) under its autopilot for a few seconds, then the
-## product's main menu under its system check; fails on a non-zero exit, an error or any
-## leak reported at exit (tools/test-windowed.sh)
+## A few seconds under the autopilot, then the product's main menu under its system check; fails
+## on a non-zero exit, an error or any leak reported at exit (tools/test-windowed.sh).
 test-windowed: import
 	@tools/test-windowed.sh
 
@@ -169,91 +161,86 @@ lint: deps
 	@echo "clang-format: the C++ is formatted"
 
 ## export: a self-contained Linux build in .export/linux/
-## a self-contained Linux x86_64 release build in .export/linux/: ./haptic-game starts
-## it with the C library and libraries shipped in runtime/ (tools/bundle-runtime.sh)
+## ./haptic-game starts it with the C library and libraries shipped in runtime/
+## (tools/bundle-runtime.sh).
 export: import build-release
 	@tools/export.sh
 
 ## test-export: export, then run the copy in an emptied environment
-## export, then run a copy outside the project with an emptied environment,
-## headless and windowed (Xvfb), under the game's system check: exit 0, extension loaded,
-## main menu shown, every library from the bundle except the system's GPU driver, no driver
-## of tests/ or tools/ in the pack (tools/test-export.sh)
+## A copy outside the project with an emptied environment, headless and windowed (Xvfb), under
+## the game's system check: exit 0, extension loaded, main menu shown, every library from the
+## bundle except the system's GPU driver, no driver of tests/ or tools/ in the pack
+## (tools/test-export.sh).
 test-export: export
 	@tools/test-export.sh
 
 ## export-server: the dedicated Pong server, self-contained, in .export/linux-server/
-## the dedicated Pong server, self-contained like the game, in
-## .export/linux-server/: ./haptic-pong-server --headless -- --server [--port=P]
+## ./haptic-pong-server --headless -- --server [--port=P]
 export-server: import build-release
 	@tools/export.sh server
 
 ## test-export-server: the exported server referees a match between two clients
-## the exported server, started with an emptied environment, referees a
-## match between two clients of the source tree: exit 0, no error in any log
+## Started with an emptied environment; the clients run from the source tree: exit 0, no error
+## in any log.
 test-export-server: export-server
 	@tools/check-product.sh .export/linux-server
 	@HAPTICS_SERVER=.export/linux-server/haptic-pong-server \
 		tools/analysis/run.sh -m pytest tests/net/test_exported_server.py -q -p no:cacheprovider
 
 ## test-bare: the exported game and server on minimal Debian 12 and 11 roots
-## the exported game (headless, system check) and dedicated server in minimal Debian 12
-## and 11 roots without any graphics package (debootstrap, built once into .bare/), run as an
-## ordinary user: they start and exit 0 without an error line; on Debian 11 a windowed start
-## is stopped by the launcher naming the system's glibc (tools/bare/test-bare.sh). The first
-## run downloads and builds the roots (minutes; docs/supported-systems.md), later runs reuse them.
+## Without any graphics package (debootstrap, built once into .bare/), run as an ordinary user:
+## they start and exit 0 without an error line; on Debian 11 a windowed start is stopped by the
+## launcher naming the system's glibc (tools/bare/test-bare.sh). The first run downloads and
+## builds the roots (minutes; docs/supported-systems.md), later runs reuse them.
 test-bare: export export-server
 	@tools/bare/test-bare.sh
 
 ## dist: the player's archive, .export/haptic-game-linux-x86_64.tar.gz
-## .export/haptic-game-linux-x86_64.tar.gz: the self-contained build, a player README
-## (controls, devices, permissions) and the udev rules; prints its size (tools/dist.sh)
+## The self-contained build, a player README (controls, devices, permissions) and the udev
+## rules; prints its size (tools/dist.sh).
 dist: export
 	@tools/dist.sh
 
 ## test-dist: make dist, then check the archive's contents
-## make dist, then unpack the archive and check its contents (tools/test-dist.sh)
+## Unpacks the archive and checks its contents (tools/test-dist.sh).
 test-dist: dist
 	@tools/test-dist.sh
 
 ## addon: the Godot addon and its Asset Library zip
-## the Godot addon (.build/addon/addons/haptics/, assembled from the sources: the
-## scripts, the probe scene, the materials, the Linux and Windows libraries, the editor
-## plugin) and its Asset Library zip (.build/addon/haptics-addon-<version>.zip)
+## Assembled from the sources into .build/addon/addons/haptics/ (the scripts, the probe scene,
+## the materials, the Linux and Windows libraries, the editor plugin), zipped as
+## .build/addon/haptics-addon-<version>.zip.
 addon: import build-release build-windows
 	@tools/build-addon.sh
 
 ## test-addon: install the addon into a small game the README's way and play it
-## a small platformer we did not build it into gets the addon the README's way
-## (temporary folder): one import without a crash, then a steady push from a tile wall on
-## every physics frame of a slow run-up's push, an impact, the wall let go of once walked
-## away from, no error output (tools/test-addon.sh)
+## A small platformer we did not build it into, in a temporary folder: one import without a
+## crash, then a steady push from a tile wall on every physics frame of a slow run-up's push, an
+## impact, the wall let go of once walked away from, no error output (tools/test-addon.sh).
 test-addon: addon
 	@tools/test-addon.sh
 
 ## test-editor: a developer's first hour with the addon in the GUI editor (Xvfb)
-## a game developer's first hour in the GUI editor (Xvfb), in one session of an
-## editor started by tools/godot: a project that has never seen the addon gets the zip
-## unpacked while the editor runs, enables the plugin, creates a HapticProbe and plays the
-## scene (F6); the game must feel the floor, nothing may print an error, and closing the
-## editor must not ask anything (tools/test-editor.sh)
+## In one session of an editor started by tools/godot: a project that has never seen the addon
+## gets the zip unpacked while the editor runs, enables the plugin, creates a HapticProbe and
+## plays the scene (F6); the game must feel the floor, nothing may print an error, and closing
+## the editor must not ask anything (tools/test-editor.sh).
 test-editor: addon
 	@tools/test-editor.sh
 
 ## test-kernel: our device stack against the real Linux drivers (QEMU)
-## our device stack against the real Linux drivers: Debian 12's kernel and Debian
-## testing's (each fetched once into .kernel/) boot under QEMU with the VM test program
-## (gdextension/vm_tests), whose device models are real devices there (uhid, uinput, USB
-## gadgets); every backend's transport end to end through the servo, unplug and replug
-## (tools/kernel/run.sh). KERNEL_SUITES=bookworm runs one.
+## Debian 12's kernel and Debian testing's (each fetched once into .kernel/) boot under QEMU
+## with the VM test program (gdextension/vm_tests), whose device models are real devices there
+## (uhid, uinput, USB gadgets); every backend's transport end to end through the servo, unplug
+## and replug (tools/kernel/run.sh). KERNEL_SUITES=bookworm runs one.
 KERNEL_SUITES ?= bookworm testing
 test-kernel: build
 	@for suite in $(KERNEL_SUITES); do tools/kernel/run.sh $(BUILD)/debug/haptics_vm_tests $$suite || exit 1; done
 
 ## test-rt: the servo as an ordinary user gets it (RealtimeKit)
-## the servo as an ordinary user gets it: a private system bus, polkitd and RealtimeKit
-## started for the test, the servo run as 'nobody', the kernel's view of its thread checked
-## against its stats (SCHED_RR from RealtimeKit; a nice level; nothing) (tools/rt/test-rtkit.sh)
+## A private system bus, polkitd and RealtimeKit started for the test, the servo run as
+## 'nobody', the kernel's view of its thread checked against its stats (SCHED_RR from
+## RealtimeKit; a nice level; nothing) (tools/rt/test-rtkit.sh).
 test-rt: build
 	@tools/rt/test-rtkit.sh $(BUILD)/debug/haptics_rt_probe
 
@@ -276,14 +263,12 @@ bench: import
 	@$(GODOT) --headless --path . res://tests/bench/pong_bench.tscn -- --json=.bench/pong.json
 
 ## soak: level 1 under the autopilot for SOAK_SECONDS with the servo at 1 kHz
-## level 1 under the autopilot for SOAK_SECONDS (10 min) with the servo at 1 kHz; prints
-## rate drift, telemetry drops, resident memory growth and lateness against their bounds
-## (tests/soak/soak.gd; not part of make test)
+## 10 minutes by default; prints rate drift, telemetry drops, resident memory growth and
+## lateness against their bounds (tests/soak/soak.gd; not part of make test).
 soak: import
 	@$(GODOT) --headless --path . res://tests/soak/soak.tscn -- --seconds=$(SOAK_SECONDS)
 
 ## sanitize: the doctests under ThreadSanitizer, then AddressSanitizer+UBSan
-## the doctest suite under ThreadSanitizer, then AddressSanitizer+UBSan
 sanitize: deps
 	@for s in thread address; do \
 		$(CMAKE_CONFIGURE) -B $(BUILD)/sanitize-$$s -DCMAKE_BUILD_TYPE=RelWithDebInfo \
@@ -293,33 +278,33 @@ sanitize: deps
 	done
 
 ## analyze: a study's figures, report.md and summary.json
-## figures, report.md and summary.json of a study (into STUDY/analysis)
+## Into STUDY/analysis.
 analyze:
 	@if [[ -z "$(STUDY)" ]]; then \
 		echo "usage: make analyze STUDY=<study folder> [ANALYZE_ARGS=--skip-invalid]" >&2; exit 2; fi
 	@tools/analysis/run.sh analyze.py "$(STUDY)" $(ANALYZE_ARGS)
 
 ## export-study: every participant of a study in one CSV
-## every participant of STUDY in one CSV (OUT, default STUDY/all.csv)
+## OUT, default STUDY/all.csv.
 export-study:
 	@if [[ -z "$(STUDY)" ]]; then echo "usage: make export-study STUDY=<folder> [OUT=file.csv]" >&2; exit 2; fi
 	@tools/analysis/run.sh export_csv.py "$(STUDY)" "$(or $(OUT),$(STUDY)/all.csv)"
 
 ## test-analysis: the study analysis tool's pytest suite
-## the study analysis tool's pytest suite (hand-computed statistics)
+## Hand-computed statistics.
 test-analysis:
 	@tools/analysis/run.sh -m pytest tools/analysis/tests -q
 
 ## test-schema: a newcomer's change in a scratch copy: a schema field, a fourth renderer
-## in a copy of the working tree, one field added to one schema entry must reach C++ (built)
-## and GDScript typed and documented, and a fourth renderer must register by one row and
-## render (tests/schema, a few minutes)
+## In a copy of the working tree, one field added to one schema entry must reach C++ (built) and
+## GDScript typed and documented, and a fourth renderer must register by one row and render
+## (tests/schema, about a minute).
 test-schema: engine
 	@tools/analysis/run.sh -m pytest tests/schema -q -p no:cacheprovider
 
 ## test-net: the network tests: real peers through a relay on 127.0.0.1
-## the network tests: the UDP relay that gives loopback latency, jitter and loss,
-## then networked Pong with headless peers through it (tests/net, a few minutes)
+## The UDP relay that gives loopback latency, jitter and loss, then networked Pong with headless
+## peers through it (tests/net, a few minutes).
 test-net: import
 	@tools/analysis/run.sh -m pytest tools/net/tests tests/net -q -p no:cacheprovider \
 		--ignore=tests/net/test_exported_server.py

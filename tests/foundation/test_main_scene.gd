@@ -4,6 +4,9 @@ extends TestSuite
 ## (tests/drivers/game_autopilot.tscn, what `make play` runs without a display) plays level 1
 ## with one status line per second and quits with 0.
 
+## Runs scenes or processes for seconds: make check (--quick) leaves it out.
+const SLOW := true
+
 
 func test_the_system_check_shows_the_menu_and_exits_cleanly() -> void:
 	var text: String = _run(["--", "--system-check"], 0)
@@ -12,9 +15,6 @@ func test_the_system_check_shows_the_menu_and_exits_cleanly() -> void:
 	assert_has(text, "System check: the main menu showed for %d frames" % Main.SYSTEM_CHECK_FRAMES)
 	assert_false(text.contains("Autopilot on"), "the product has no autopilot")
 	assert_false(text.contains("t= 1.0s"), "and plays no level by itself")
-
-## Runs scenes or processes for seconds: make check (--quick) leaves it out.
-const SLOW := true
 
 
 func test_headless_autopilot_prints_status_lines_and_exits_cleanly() -> void:

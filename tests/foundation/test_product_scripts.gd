@@ -1,8 +1,9 @@
 extends TestSuite
 ## Every script a player or a developer gets (the addon and the games), and the drivers that
 ## run them in tests, compiles with the project's GDScript warnings raised to errors, the
-## scene scripts too, which other suites may load before warnings are raised. project.godot makes an unsafe property or method access
-## an error already, so a misspelt member of a typed value does not parse.
+## scene scripts too, which other suites may load before warnings are raised. project.godot
+## makes an unsafe property or method access an error already, so a misspelt member of a
+## typed value does not parse.
 
 const FOLDERS: Array[String] = ["res://addons/haptics", "res://game", "res://tests/drivers"]
 
