@@ -83,10 +83,10 @@ var smoothing_enabled: bool:
 	get:
 		if not is_available():
 			return _offline_smoothing
-		return _movement().get_settings().smoothing.enabled
+		return HapticsMovement.of(self).get_settings().smoothing.enabled
 	set(value):
 		if is_available():
-			var movement: HapticsMovement = _movement()
+			var movement: HapticsMovement = HapticsMovement.of(self)
 			var settings: HapticMovementSettings = movement.get_settings()
 			settings.smoothing.enabled = value
 			movement.apply_settings(settings)
@@ -329,12 +329,6 @@ func _spin_us_setting() -> float:
 		)
 	)
 	return HapticsServo.SPIN_US_DEFAULT
-
-
-# The movement renderer's face (made here, not by HapticsMovement.of(): that takes the
-# door's script, which this file's own copy is not when a test compiles it apart).
-func _movement() -> HapticsMovement:
-	return HapticsMovement.new(renderer(HapticsMovement.NAME))
 
 
 func _follow_user_input() -> void:

@@ -83,15 +83,10 @@ func f64(
 	finite: bool = true,
 	zero_ok: bool = false
 ) -> float:
-	if not _need(8):
-		return 0.0
-	var value: float = _bytes.decode_double(_offset)
-	_offset += 8
-	if not (zero_ok and value == 0.0):
-		_check_number(field, value, low, high, finite)
-	return value
+	return _float(8, field, low, high, finite, zero_ok)
 
 
+## A binary32, checked as [method f64] checks.
 func f32(
 	field: StringName,
 	low: float = -INF,
@@ -99,13 +94,7 @@ func f32(
 	finite: bool = true,
 	zero_ok: bool = false
 ) -> float:
-	if not _need(4):
-		return 0.0
-	var value: float = _bytes.decode_float(_offset)
-	_offset += 4
-	if not (zero_ok and value == 0.0):
-		_check_number(field, value, low, high, finite)
-	return value
+	return _float(4, field, low, high, finite, zero_ok)
 
 
 func vec2(
@@ -207,6 +196,18 @@ func enter_item(field: StringName, index: int) -> void:
 
 func leave() -> void:
 	_path.remove_at(_path.size() - 1)
+
+
+func _float(
+	width: int, field: StringName, low: float, high: float, finite: bool, zero_ok: bool
+) -> float:
+	if not _need(width):
+		return 0.0
+	var value: float = _bytes.decode_double(_offset) if width == 8 else _bytes.decode_float(_offset)
+	_offset += width
+	if not (zero_ok and value == 0.0):
+		_check_number(field, value, low, high, finite)
+	return value
 
 
 func _u8() -> int:

@@ -1,5 +1,5 @@
 class_name HapticsConstraint
-extends RefCounted
+extends HapticsRendererFace
 ## The constraint renderer for a game (position control against a maze's walls, as the maze
 ## study's constraint condition uses it): the workspace maps onto the whole maze, a finite
 ## proxy is held by the walls, and the hand is pulled to the proxy, k (proxy - device). Give it
@@ -12,31 +12,11 @@ const NAME := &"constraint"
 # The door's script by its path (this script may parse before the autoload is registered).
 const Haptics := preload("res://addons/haptics/door/haptics.gd")
 
-var _renderer: HapticsRenderer = null
-
-
-func _init(renderer: HapticsRenderer) -> void:
-	_renderer = renderer
-
 
 ## The constraint renderer of [param haptics] (the [code]Haptics[/code] autoload, or a door of
 ## a test's own).
 static func of(haptics: Haptics) -> HapticsConstraint:
 	return HapticsConstraint.new(haptics.renderer(NAME))
-
-
-## Whether the native library has it.
-func is_available() -> bool:
-	return _renderer.is_available()
-
-
-## Makes it the servo's renderer.
-func activate() -> bool:
-	return _renderer.activate()
-
-
-func is_active() -> bool:
-	return _renderer.is_active()
 
 
 ## The maze's walls as point pairs (a0, b0, a1, b1, ...) in maze units, and how the

@@ -1,5 +1,5 @@
 class_name HapticsMovement
-extends RefCounted
+extends HapticsRendererFace
 ## The movement-based renderer for a game (acceleration control, the default): the probe's
 ## frames become the paper's forces, F_n = -k p, F_f = -b r, weight, water drag and inertia,
 ## smoothed to 1 kHz. Its settings are the contact law ([HapticForceModelSettings]) and the
@@ -11,31 +11,11 @@ const NAME := &"movement"
 # The door's script by its path (this script may parse before the autoload is registered).
 const Haptics := preload("res://addons/haptics/door/haptics.gd")
 
-var _renderer: HapticsRenderer = null
-
-
-func _init(renderer: HapticsRenderer) -> void:
-	_renderer = renderer
-
 
 ## The movement renderer of [param haptics] (the [code]Haptics[/code] autoload, or a door of
 ## a test's own).
 static func of(haptics: Haptics) -> HapticsMovement:
 	return HapticsMovement.new(haptics.renderer(NAME))
-
-
-## Whether the native library has it.
-func is_available() -> bool:
-	return _renderer.is_available()
-
-
-## Makes it the servo's renderer.
-func activate() -> bool:
-	return _renderer.activate()
-
-
-func is_active() -> bool:
-	return _renderer.is_active()
 
 
 ## Its settings now (the defaults without the library).
