@@ -240,8 +240,8 @@ func wait_seconds(seconds: float) -> void:
 
 ## Asserts that each script in [param paths] compiles with every GDScript warning the
 ## project enables raised to an error. Fresh copies are compiled, standing in at each
-## script's path only while they compile, so the live scripts are never recompiled in place. Returns how many warnings the project
-## enables (0 would make the check vacuous).
+## script's path only while they compile, so the live scripts are never recompiled in place.
+## Returns how many warnings the project enables (0 would make the check vacuous).
 func assert_scripts_compile_without_warnings(paths: PackedStringArray) -> int:
 	var raised: Dictionary[String, int] = {}
 	var enabled: int = 0
