@@ -19,7 +19,7 @@ import re
 import sys
 
 MAX_MAPS = 2
-HEADER = "gdextension/src/binding/haptics_server.h"
+HEADER = "gdextension/src/binding/system_object.h"
 NATIVE_BACKEND = "addons/haptics/door/haptics_native_backend.gd"
 SCRIPT_ROOTS = ("addons", "game")
 METHOD = re.compile(r"^\t(?:static )?([\w:<>]+) (\w+)\((.*?)\)(?: const)?;", re.M)
