@@ -15,11 +15,18 @@ extends Node
 ## A message of a known layout that nobody handles now (a match's message between matches) is
 ## dropped quietly.
 
-## Where bad messages are counted, and whether this peer is the server.
+## Where bad messages are counted, and whether this peer is the server: the session the
+## router is a child of.
 var session: PongNetSession = null
 
 var _decoders: Dictionary[int, Callable] = PongNetFacts.message_decoders()
 var _handlers: Dictionary[int, Callable] = {}
+
+
+func _enter_tree() -> void:
+	var parent: PongNetSession = get_parent() as PongNetSession
+	if parent != null:
+		session = parent
 
 
 ## From now on, messages of layout [param schema_id] go to [param handler], a

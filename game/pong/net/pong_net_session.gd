@@ -55,7 +55,6 @@ var _drops: Array[int] = []
 func _init() -> void:
 	router = PongNetRouter.new()
 	router.name = "Router"
-	router.session = self
 	add_child(router)
 	router.handle(PongNetBeatMessage.SCHEMA_ID, _on_beat)
 	router.handle(PongNetStallMessage.SCHEMA_ID, _on_stall)
