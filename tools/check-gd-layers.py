@@ -48,6 +48,7 @@ FLOORS = [
     ["pong"],
     ["pong/view"],
     ["pong/ui"],
+    ["pong/net/messages"],
     ["pong/net"],
     ["pong/net/ui"],
     # The side-scroller's HUD and goal screen, the main menu; then the main scene (the

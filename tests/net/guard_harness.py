@@ -15,7 +15,7 @@ import struct
 import time
 from pathlib import Path
 
-from net_harness import Peer, Relay, udp_ports
+from net_harness import DRIVER_SCENE, Peer, Relay, udp_ports
 
 ENET_MAXIMUM_PEER_ID = 0xFFF
 ENET_FLAG_SENT_TIME = 0x8000
@@ -192,7 +192,7 @@ def cut_on_line(index: int, text: str, cut_at: list[float], patience_s: float = 
     return hook
 
 
-def start_peer(workdir: Path, name: str, args: list[str], scene: str = "") -> Peer:
+def start_peer(workdir: Path, name: str, args: list[str], scene: str = DRIVER_SCENE) -> Peer:
     """A peer of the source tree started now (the caller kills it in a finally)."""
     peer = Peer(name, args, workdir, scene=scene)
     peer.start()

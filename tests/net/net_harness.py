@@ -27,6 +27,10 @@ from net_relay import ROUGH, Network, Relay, udp_ports  # noqa: F401 (the tests'
 
 ROOT = Path(__file__).resolve().parents[2]
 GODOT = ROOT / "tools" / "godot"
+# Every peer of the source tree runs the game's networked-Pong command line under the test
+# driver (tests/net/driver/net_peer.gd: autopilot, match seconds, scripts, the JSON report),
+# which an exported game does not have.
+DRIVER_SCENE = "res://tests/net/driver/net_peer.tscn"
 FAILURES = ROOT / ".build" / "net-failures"
 # Generous bounds for a loaded 2-core machine (never timing assertions).
 START_PATIENCE_S = 30.0
@@ -47,9 +51,9 @@ class Peer:
     # What runs it, before the "--" and the game's arguments: the source tree's engine, or an
     # exported build's launcher.
     command: tuple[str, ...] = (str(GODOT), "--headless", "--path", str(ROOT))
-    # A scene of the source tree to run instead of the game's main scene (a test peer such
-    # as tests/net/rogue_peer.tscn); empty: the game.
-    scene: str = ""
+    # The scene of the source tree it runs: the test driver, or another test peer (the rogue,
+    # tests/net/rogue/rogue_peer.tscn); empty: the game's main scene (an exported build).
+    scene: str = DRIVER_SCENE
     proc: subprocess.Popen | None = None
     report: dict = field(default_factory=dict)
 
@@ -142,9 +146,10 @@ def run_match(workdir: Path, peers: int, network: Network, seconds: float,
     network is impaired, waits for all to exit; returns the peers (reports loaded) and the
     relay's counts. [client_scenes][i] runs client i as that scene (see Peer.scene) with the
     same arguments. [on_running](peers, relay) runs once every client is connected (relay:
-    the Relay, None when there is none); [seed] picks
-    the relay's drop and delay sequence; [server_command] runs the dedicated server from an
-    exported build instead of the source tree."""
+    the Relay, None when there is none); [seed] picks the relay's drop and delay sequence;
+    [server_command] runs the dedicated server from an exported build instead of the source
+    tree: without the test driver it writes no report (its report holds "exit_code" only)
+    and serves until its deadline, --pong-net-max-seconds, an option of the game's own."""
     port = free_udp_port()
     players = peers
     # A peer quits by itself after its match's seconds, and in any case after a deadline.
@@ -157,6 +162,7 @@ def run_match(workdir: Path, peers: int, network: Network, seconds: float,
             host = Peer("server", ["--server", f"--port={port}", *common, *host_args], workdir)
             if server_command:
                 host.command = server_command
+                host.scene = ""
         else:
             host = Peer("host", ["--pong-net=host", f"--port={port}", "--name=host", *common,
                                  *host_args], workdir)
@@ -171,7 +177,7 @@ def run_match(workdir: Path, peers: int, network: Network, seconds: float,
             extra = client_args[i] if i < len(client_args) else ()
             peer = Peer(f"client{i + 1}", ["--pong-net=join", f"--port={target}",
                                            f"--name=client{i + 1}", *common, *extra], workdir,
-                        scene=client_scenes[i] if i < len(client_scenes) else "")
+                        scene=client_scenes[i] if i < len(client_scenes) else DRIVER_SCENE)
             peer.start()
             started.append(peer)
         if on_running is not None:

@@ -1,32 +1,40 @@
 extends "res://tests/pong/pong_screen_suite.gd"
 ## The fixture of the play suites: one peer of a real stepped match (the host, seat 0; the
 ## client, peer 42, drives seat 1, whose paddle comes over the network) without sockets.
-## Received messages are handed to the handlers with their sender's id; what this peer
-## sends is recorded.
+## Received messages reach it as bytes through its router ([method _receive]), with their
+## sender's id, as from the network; what this peer sends is recorded; the test driver's
+## report counts what happened.
 
 const PongTestScreen := preload("res://tests/pong/pong_test_screen.gd")
+const NetReport := preload("res://tests/net/driver/net_report.gd")
 const HOST: int = 1
 const CLIENT: int = 42
 
 
-## A play node that records what it would send.
-class RecordingPlay:
-	extends PongNetPlay
+## A router that records what this peer sends instead of sending it.
+class RecordingRouter:
+	extends PongNetRouter
 
-	var sent: Array[Array] = []
+	var sent: Array[PongNetMessage] = []
 
-	func send_all(method: StringName, args: Array) -> void:
-		sent.append([method] + args)
+	func send_all(message: PongNetMessage) -> void:
+		sent.append(message)
 
-	func sent_of(method: StringName) -> Array[Array]:
-		var out: Array[Array] = []
-		for entry: Array in sent:
-			if entry[0] == method:
-				out.append(entry)
+	func send_to(_peer: int, message: PongNetMessage) -> void:
+		sent.append(message)
+
+	## What was sent of the layout [param schema_id], in order.
+	func sent_of(schema_id: int) -> Array[PongNetMessage]:
+		var out: Array[PongNetMessage] = []
+		for message: PongNetMessage in sent:
+			if message.encode().decode_u32(0) == schema_id:
+				out.append(message)
 		return out
 
 
-var _play: RecordingPlay = null
+var _play: PongNetPlay = null
+var _router: RecordingRouter = null
+var _report: NetReport = null
 
 
 func after_each() -> void:
@@ -37,7 +45,7 @@ func after_each() -> void:
 
 
 ## The host's play, begun; null (and a failure) without the Pong renderer.
-func _open_play() -> RecordingPlay:
+func _open_play() -> PongNetPlay:
 	if not assert_true(PongServo.shared().is_available(), "the extension has the Pong renderer"):
 		return null
 	_pong = PongTestScreen.stepped()
@@ -47,13 +55,63 @@ func _open_play() -> RecordingPlay:
 	remote.intent = match_node.controllers[1].intent
 	match_node.controllers[1] = remote
 	(match_node.controllers[0] as PongAi).use_weapons = false
-	_play = RecordingPlay.new()
-	_play.session = PongNetSession.new()
+	_play = PongNetPlay.new()
+	var session: PongNetSession = PongNetSession.new()
+	session.is_server = true
+	_play.session = session
 	add_child(_play)
-	_play.add_child(_play.session)
+	_play.add_child(session)
+	_router = RecordingRouter.new()
+	_router.session = session
+	session.add_child(_router)
+	session.router = _router
+	_report = NetReport.new()
+	_report.watch(_play)
 	_play.begin(
 		match_node,
 		PongNetAuthority.new(HOST, PackedInt64Array([HOST, CLIENT])),
 		PackedInt32Array([0])
 	)
+	_report.begin(_play)
 	return _play
+
+
+## [param message] reaches this peer from [param sender]: its bytes, through the router.
+func _receive(sender: int, message: PongNetMessage) -> void:
+	_router.receive(sender, message.encode())
+
+
+## How many bad messages of [param what] this peer counted.
+func _refused(what: String) -> int:
+	return _report.refused.get(what, 0)
+
+
+static func _bullet(
+	seat: int, id: int, origin: Vector3, direction: Vector3, time_s: float
+) -> PongNetBulletMessage:
+	var bullet: PongNetBulletMessage = PongNetBulletMessage.new()
+	bullet.seat = seat
+	bullet.id = id
+	bullet.origin = origin
+	bullet.direction = direction
+	bullet.time_s = time_s
+	return bullet
+
+
+static func _mine(seat: int, id: int, position: Vector3) -> PongNetMineMessage:
+	var mine: PongNetMineMessage = PongNetMineMessage.new()
+	mine.seat = seat
+	mine.id = id
+	mine.position = position
+	return mine
+
+
+static func _weapon_hurt(
+	victim: int, cause: PongNetFacts.WeaponCause, seat: int, id: int
+) -> PongNetWeaponHurtMessage:
+	var hurt: PongNetWeaponHurtMessage = PongNetWeaponHurtMessage.new()
+	hurt.victim = victim
+	hurt.cause = cause
+	hurt.seat = seat
+	hurt.id = id
+	return hurt

@@ -125,12 +125,6 @@ func test_the_budget_warns_once_then_counts_then_disconnects_once() -> void:
 	assert_eq(PongNetBudget.new().limit, PongNetProtocol.MISBEHAVIOUR_BUDGET)
 
 
-func test_an_rpc_with_the_wrong_count_is_a_bad_message_not_an_engine_error() -> void:
-	assert_eq(PongNetProtocol.check_arity([1, 2, 3], 3), "")
-	assert_eq(PongNetProtocol.check_arity([1], 3), "1 arguments, not 3")
-	assert_eq(PongNetProtocol.check_arity([1, 2, 3, 4], 3), "4 arguments, not 3")
-
-
 func test_one_address_holds_a_few_unauthenticated_connections_the_oldest_go() -> void:
 	var open: PongNetHalfOpen = PongNetHalfOpen.new(2)
 	assert_eq(open.add(10, "10.0.0.1", 1.0), [])
@@ -270,14 +264,28 @@ func test_a_victim_loses_no_more_floor_points_than_a_ball_can_bounce() -> void:
 # --- on the host of a stepped match ---
 
 
-func _client_master_at_epoch_one(play: RecordingPlay) -> void:
-	var transfer: Dictionary = play.authority.next_transfer(PongNetProtocol.TRANSFER_SERVE, 1)
+func _client_master_at_epoch_one(play: PongNetPlay) -> void:
+	var transfer: Dictionary = play.authority.next_transfer(PongNetFacts.TransferKind.SERVE, 1)
 	assert_eq(play.authority.apply_transfer(HOST, transfer), "")
 	assert_eq(play.authority.master_at(1), CLIENT)
 
 
+func _claim(epoch: int, victim: int) -> PongNetFloorClaimMessage:
+	var claim: PongNetFloorClaimMessage = PongNetFloorClaimMessage.new()
+	claim.epoch = epoch
+	claim.victim = victim
+	return claim
+
+
+func _floor_hurt(epoch: int, victim: int) -> PongNetFloorHurtMessage:
+	var hurt: PongNetFloorHurtMessage = PongNetFloorHurtMessage.new()
+	hurt.epoch = epoch
+	hurt.victim = victim
+	return hurt
+
+
 func test_the_host_charges_a_clients_claim_for_a_bounce_it_saw_and_no_forgery() -> void:
-	var play: RecordingPlay = _open_play()
+	var play: PongNetPlay = _open_play()
 	if play == null:
 		return
 	_client_master_at_epoch_one(play)
@@ -285,54 +293,60 @@ func test_the_host_charges_a_clients_claim_for_a_bounce_it_saw_and_no_forgery() 
 	var start: int = rules.get_health(0)
 	var hurts: PongNetFloorHurts = play.floor_hurts
 	for i: int in 40:
-		hurts.on_claim(CLIENT, 1, 0)
+		_receive(CLIENT, _claim(1, 0))
 	for i: int in 3:
-		hurts.on_claim(HOST, 1, 1)
+		hurts.on_claim(HOST, _claim(1, 1))
 	play.match_node.now += PongNetHurtJudge.WAIT_S + 0.1
 	hurts.observe(play.match_node.snapshot)
 	assert_eq(rules.get_health(0), start, "40 forged claims on the host's seat: nothing")
-	assert_eq(play.report.refused.get("floor claim", 0), 43, "each refused and counted")
+	assert_eq(_refused("floor claim"), 43, "each refused and counted")
 	assert_eq(play.session.budget.count_of(CLIENT), 40)
-	assert_eq(play.sent_of(&"_hurt"), [], "nothing charged")
+	assert_eq(_router.sent_of(PongNetFloorHurtMessage.SCHEMA_ID), [], "nothing charged")
 	hurts.judge.observe_floor(play.match_node.now, FAR)
-	hurts.on_claim(CLIENT, 1, 1)
+	_receive(CLIENT, _claim(1, 1))
 	assert_eq(rules.get_health(1), start - 1, "the client's own bounce costs it a point")
-	assert_eq(play.sent_of(&"_hurt"), [[&"_hurt", 1, 1, "floor"]], "charged on every peer")
-	assert_eq(play.report.hurts, [[1, 1, "floor"]])
+	var charged: Array[PongNetMessage] = _router.sent_of(PongNetFloorHurtMessage.SCHEMA_ID)
+	assert_eq(charged.size(), 1, "charged on every peer")
+	if charged.size() == 1:
+		var hurt: PongNetFloorHurtMessage = charged[0]
+		assert_eq([hurt.epoch, hurt.victim], [1, 1])
+	assert_eq(_report.hurts, [[1, 1, "floor"]])
 
 
-func test_only_the_server_charges_floor_hurts_on_a_client() -> void:
-	var play: RecordingPlay = _open_play()
+func test_only_the_server_charges_floor_hurts() -> void:
+	var play: PongNetPlay = _open_play()
 	if play == null:
 		return
 	var rules: PongRules = play.match_node.rules
 	var start: int = rules.get_health(0)
-	var hurts: PongNetFloorHurts = play.floor_hurts
-	hurts.on_hurt(CLIENT, 0, 0, "floor")
+	_receive(CLIENT, _floor_hurt(0, 0))
 	assert_eq(rules.get_health(0), start, "a client's word is not a charge")
-	hurts.on_hurt(HOST, 0, 0, "floor")
+	_receive(HOST, _floor_hurt(0, 0))
 	assert_eq(rules.get_health(0), start - 1, "the server's is")
-	hurts.on_hurt(HOST, 0, 0, "x".repeat(65536))
-	hurts.on_hurt(HOST, 0, 5, "floor")
+	var long: PackedByteArray = _floor_hurt(0, 0).encode() + "x".repeat(65536).to_utf8_buffer()
+	_router.receive(HOST, long)
+	_receive(HOST, _floor_hurt(0, 5))
+	_receive(HOST, _floor_hurt(7, 0))
 	assert_eq(rules.get_health(0), start - 1)
-	assert_eq(play.report.refused.get("hurt", 0), 3)
+	assert_eq(_refused("hurt"), 4, "from a client, too long, seat 5, a future epoch")
 
 
 func test_a_weapon_hurt_needs_a_weapon_that_could_reach_the_victim() -> void:
-	var play: RecordingPlay = _open_play()
+	var play: PongNetPlay = _open_play()
 	if play == null:
 		return
 	var weapons: PongNetWeapons = play.weapons
 	var rules: PongRules = play.match_node.rules
+	var bullet: PongNetFacts.WeaponCause = PongNetFacts.WeaponCause.BULLET
 	# The client's shots from its half: one toward its own back wall, one toward the host.
 	var origin: Vector3 = Vector3(0.0, 0.8, -2.0)
-	weapons.on_bullet(CLIENT, 1, 0, origin, Vector3.FORWARD, 10.0)
-	weapons.on_bullet(CLIENT, 1, 1, origin, Vector3.BACK, 10.5)
+	_receive(CLIENT, _bullet(1, 0, origin, Vector3.FORWARD, 10.0))
+	_receive(CLIENT, _bullet(1, 1, origin, Vector3.BACK, 10.5))
 	assert_eq(weapons.shots, [[1, 0], [1, 1]], "both flew")
-	weapons.on_hurt(HOST, 0, "bullet", 1, 0)
+	weapons.on_hurt(HOST, _weapon_hurt(0, bullet, 1, 0))
 	assert_eq(rules.get_health(0), 99, "a shot away from the host's half cannot hit it")
-	assert_eq(play.report.refused.get("weapon hurt", 0), 1)
-	weapons.on_hurt(HOST, 0, "bullet", 1, 1)
+	assert_eq(_refused("weapon hurt"), 1)
+	weapons.on_hurt(HOST, _weapon_hurt(0, bullet, 1, 1))
 	assert_eq(rules.get_health(0), 99 - PongRules.DAMAGE[PongRules.CAUSE_BULLET], "this one can")
 
 

@@ -17,8 +17,8 @@ def thread_names(pid: int) -> list[str]:
 
 def test_a_dedicated_server_waiting_for_players_runs_no_servo_thread() -> None:
     with workspace() as work:
-        server = Peer("server", ["--server", f"--port={free_udp_port()}", "--pong-net-max-seconds=60"],
-                      work)
+        # The game itself (its main scene), as an operator runs it: no test driver.
+        server = Peer("server", ["--server", f"--port={free_udp_port()}"], work, scene="")
         server.start()
         try:
             # The servo is stopped before the server starts hosting.

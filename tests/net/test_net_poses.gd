@@ -1,10 +1,9 @@
 extends "res://tests/net/net_play_suite.gd"
-## The poses this peer sends are ones the other peers take (PongNetPoses.on_pose's checks),
-## from the match's first frame on, before the servo has given a state.
+## The poses this peer sends are ones the other peers take (their fields within the schema's
+## limits, the seat and the avatar this match's), from the match's first frame on, before
+## the servo has given a state.
 
 const FRAME_S: float = 1.0 / 60.0
-## The paddle reach the receiving peers check a pose's offset against (on_pose's).
-const RECEIVER_REACH_M: float = 2.0
 
 
 func test_our_poses_pass_the_other_peers_checks_from_the_first_frame() -> void:
@@ -16,11 +15,35 @@ func test_our_poses_pass_the_other_peers_checks_from_the_first_frame() -> void:
 	for frame: int in 3:
 		_play.frame(FRAME_S)
 		_play.match_node.advance(FRAME_S)
-	var poses: Array[Array] = _play.sent_of(&"_pose")
+	var poses: Array[PongNetMessage] = _router.sent_of(PongNetPoseMessage.SCHEMA_ID)
 	assert_gt(poses.size(), 0, "our seat's poses")
-	for pose: Array in poses:
-		var reason: String = PongNetProtocol.check_pose(
-			pose[1], court.players, pose[2], pose[3], pose[4], pose[5], court, RECEIVER_REACH_M
-		)
-		assert_eq(reason, "", "taken by the other peers")
-	assert_almost_eq(poses[0][5], PongCourt.forward(0), 1e-6, "at first the seat's own facing")
+	for sent: PongNetMessage in poses:
+		var pose: PongNetPoseMessage = PongNetPoseMessage.decode(sent.encode())
+		assert_not_null(pose, HapticsWireReader.last_error)
+		if pose == null:
+			continue
+		assert_eq(PongNetProtocol.check_seat(pose.seat, court.players), "")
+		var limit: Vector3 = PongNetProtocol.position_limit(court)
+		assert_eq(PongNetProtocol.check_box(pose.avatar, limit, "avatar"), "")
+	var first: PongNetPoseMessage = poses[0]
+	assert_almost_eq(first.normal, PongCourt.forward(0), 1e-6, "at first the seat's own facing")
+
+
+func test_a_pose_moves_the_remote_seat_only_from_its_peer() -> void:
+	if _open_play() == null:
+		return
+	var pose: PongNetPoseMessage = PongNetPoseMessage.new()
+	pose.seat = 1
+	pose.avatar = _play.match_node.avatar_of(1) + Vector3(0.2, 0.0, 0.0)
+	pose.normal = Vector3.BACK
+	pose.spin = true
+	_receive(HOST + 1000, pose)
+	assert_eq(_refused("pose"), 1, "seat 1 is not the sender's")
+	_receive(CLIENT, pose)
+	var remote: PongNetRemotePlayer = _play.match_node.controllers[1]
+	assert_eq(remote.intent.avatar, pose.avatar)
+	assert_true(remote.intent.spin)
+	assert_eq(_report.poses, 1)
+	pose.avatar = Vector3(0.0, 0.0, 50.0)
+	_receive(CLIENT, pose)
+	assert_eq(_refused("pose"), 2, "an avatar outside this court")

@@ -1,5 +1,6 @@
 extends TestSuite
-## The checks every received message passes: types, finiteness, ranges, sizes.
+## The checks every received message passes: its fields against the schema's limits as it is
+## decoded (types, finiteness, ranges, sizes), then against this match's court.
 
 const PongTestCourt := preload("res://tests/pong/pong_test_court.gd")
 
@@ -10,71 +11,95 @@ func before_each() -> void:
 	_court = PongTestCourt.make()
 
 
-func _ball(overrides: Dictionary) -> String:
-	var m: Dictionary = {
-		"epoch": 1,
-		"seq": 2,
-		"time": 3.5,
-		"position": Vector3(0, 1, -1),
-		"velocity": Vector3(0, 0, 5),
-		"spin": Vector3.ZERO,
-	}
-	m.merge(overrides, true)
-	return PongNetProtocol.check_ball(
-		m["epoch"], m["seq"], m["time"], m["position"], m["velocity"], m["spin"], _court, 120.0
-	)
+func _ball(overrides: Dictionary) -> PongNetBallMessage:
+	var state: PongNetBallMessage = PongNetBallMessage.new()
+	state.epoch = 1
+	state.seq = 2
+	state.time_s = 3.5
+	state.position = Vector3(0, 1, -1)
+	state.velocity = Vector3(0, 0, 5)
+	for key: String in overrides:
+		state.set(key, overrides[key])
+	return state
+
+
+# Why the ball state of [param overrides] is refused: by its decode, or against the court.
+func _why(overrides: Dictionary) -> String:
+	var state: PongNetBallMessage = PongNetBallMessage.decode(_ball(overrides).encode())
+	if state == null:
+		return HapticsWireReader.last_error
+	return PongNetProtocol.check_ball(state.position, state.velocity, state.spin, _court, 120.0)
 
 
 func test_a_good_ball_state_passes() -> void:
-	assert_eq(_ball({}), "")
+	assert_eq(_why({}), "")
 
 
 func test_bad_ball_states_are_refused_with_the_reason() -> void:
-	assert_true(_ball({"epoch": "1"}).contains("epoch is a String"), _ball({"epoch": "1"}))
-	assert_true(_ball({"seq": -1}).contains("seq -1 is out of"))
-	assert_true(_ball({"time": NAN}).contains("time"))
-	assert_true(_ball({"position": Vector3(0, 1, 99)}).contains("position"))
-	assert_true(_ball({"position": [0, 1, 2]}).contains("not a Vector3"))
-	assert_true(_ball({"velocity": Vector3(INF, 0, 0)}).contains("not finite"))
+	assert_true(_why({"epoch": -1}).contains("epoch"), _why({"epoch": -1}))
+	assert_true(_why({"seq": -1}).contains("seq: -1 is outside"), _why({"seq": -1}))
+	assert_true(_why({"time_s": NAN}).contains("time_s: not finite"))
+	assert_true(_why({"position": Vector3(0, 1, 99)}).contains("position"))
+	assert_true(_why({"position": Vector3(0, 1, 101)}).contains("position: length"))
+	assert_true(_why({"velocity": Vector3(INF, 0, 0)}).contains("not finite"))
 	var fast: float = _court.max_ball_speed * PongNetProtocol.SPEED_MARGIN + 0.1
-	assert_true(_ball({"velocity": Vector3(0, 0, fast)}).contains("velocity"))
-	assert_true(_ball({"spin": Vector3(500, 0, 0)}).contains("spin"))
+	assert_true(_why({"velocity": Vector3(0, 0, fast)}).contains("velocity"))
+	assert_true(_why({"spin": Vector3(500, 0, 0)}).contains("spin"))
+	assert_true(_why({"leg_ms": 10001}).contains("leg_ms: 10001 is outside"))
+
+
+func test_the_bytes_of_a_state_are_its_layout_id_then_its_fields() -> void:
+	var bytes: PackedByteArray = _ball({}).encode()
+	assert_eq(bytes.decode_u32(0), PongNetBallMessage.SCHEMA_ID)
+	# epoch u32, seq i64, time f64, three vec3f, leg u16.
+	assert_eq(bytes.size(), 4 + 4 + 8 + 8 + 3 * 12 + 2)
+	assert_null(PongNetBallMessage.decode(bytes.slice(0, bytes.size() - 1)))
+	assert_true(HapticsWireReader.last_error.contains("end early"), HapticsWireReader.last_error)
+	assert_null(PongNetPoseMessage.decode(bytes), "another message's layout")
+	assert_true(HapticsWireReader.last_error.contains("is not this one"))
 
 
 func test_poses_are_checked_for_seat_ranges_and_a_unit_normal() -> void:
-	var good: String = PongNetProtocol.check_pose(
-		1, 2, Vector3(0, 0.9, -1.8), Vector3(0.1, 0, 0), Vector3.ZERO, Vector3.BACK, _court, 0.5
-	)
-	assert_eq(good, "")
-	var seat: String = PongNetProtocol.check_pose(
-		2, 2, Vector3.ZERO, Vector3.ZERO, Vector3.ZERO, Vector3.BACK, _court, 0.5
-	)
-	assert_true(seat.contains("seat 2"), seat)
-	var normal: String = PongNetProtocol.check_pose(
-		0, 2, Vector3.ZERO, Vector3.ZERO, Vector3.ZERO, Vector3(0, 0, 0.5), _court, 0.5
-	)
-	assert_true(normal.contains("unit"), normal)
-	var reach: String = PongNetProtocol.check_pose(
-		0, 2, Vector3.ZERO, Vector3(0, 0, 3), Vector3.ZERO, Vector3.BACK, _court, 0.5
-	)
-	assert_true(reach.contains("paddle offset"), reach)
+	var pose: PongNetPoseMessage = PongNetPoseMessage.new()
+	pose.seat = 1
+	pose.avatar = Vector3(0, 0.9, -1.8)
+	pose.offset = Vector3(0.1, 0, 0)
+	pose.normal = Vector3.BACK
+	assert_not_null(PongNetPoseMessage.decode(pose.encode()), HapticsWireReader.last_error)
+	assert_true(PongNetProtocol.check_seat(pose.seat, 2).is_empty())
+	assert_true(PongNetProtocol.check_seat(2, 2).contains("seat 2"))
+	pose.normal = Vector3(0, 0, 0.5)
+	assert_null(PongNetPoseMessage.decode(pose.encode()))
+	assert_true(HapticsWireReader.last_error.contains("normal: length 0.5 is below 0.99"))
+	pose.normal = Vector3.BACK
+	pose.offset = Vector3(0, 0, 3.5)
+	assert_null(PongNetPoseMessage.decode(pose.encode()))
+	assert_true(HapticsWireReader.last_error.contains("offset"), HapticsWireReader.last_error)
 
 
 func test_names_must_be_short_non_empty_strings() -> void:
 	assert_eq(PongNetProtocol.check_name("Ada"), "")
 	assert_ne(PongNetProtocol.check_name("   "), "")
-	assert_ne(PongNetProtocol.check_name("x".repeat(65536)), "", "an oversized name")
-	assert_ne(PongNetProtocol.check_name(42), "")
+	assert_ne(PongNetProtocol.check_name("x".repeat(25)), "", "more than 24 characters")
+	var hello: PongNetHelloMessage = PongNetHelloMessage.new()
+	hello.name = "x".repeat(65535)
+	assert_null(PongNetHelloMessage.decode(hello.encode()), "an oversized name")
+	assert_true(HapticsWireReader.last_error.contains("65535 bytes of text, at most 96"))
 
 
-func test_channels_are_distinct_and_the_stream_has_its_own() -> void:
+func test_channels_are_distinct_and_the_streams_have_their_own() -> void:
 	var channels: Array[int] = [
-		PongNetProtocol.CHANNEL_BALL, PongNetProtocol.CHANNEL_POSE, PongNetProtocol.CHANNEL_RELIABLE
+		PongNetFacts.NET_CHANNEL_BALL,
+		PongNetFacts.NET_CHANNEL_POSE,
+		PongNetFacts.NET_CHANNEL_RELIABLE,
+		PongNetFacts.NET_CHANNEL_BEAT,
 	]
-	assert_eq(channels.size(), 3)
-	assert_true(channels.all(func(c: int) -> bool: return c > 0), "0 is Godot's default")
-	assert_ne(PongNetProtocol.CHANNEL_BALL, PongNetProtocol.CHANNEL_RELIABLE)
-	assert_ne(PongNetProtocol.CHANNEL_POSE, PongNetProtocol.CHANNEL_BALL)
+	for i: int in channels.size():
+		assert_gt(channels[i], 0, "0 is Godot's own, the handshake's")
+		assert_eq(channels.count(channels[i]), 1, "channel %d is one stream's" % channels[i])
+	assert_eq(PongNetBallMessage.CHANNEL, PongNetFacts.NET_CHANNEL_BALL)
+	assert_eq(PongNetPoseMessage.CHANNEL, PongNetFacts.NET_CHANNEL_POSE)
+	assert_eq(PongNetHelloMessage.CHANNEL, PongNetFacts.NET_CHANNEL_HANDSHAKE)
 
 
 func test_the_timeout_cap_falls_between_enets_fourth_and_fifth_retransmission() -> void:

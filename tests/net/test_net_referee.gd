@@ -28,16 +28,27 @@ func test_the_server_serves_again_when_its_masters_ball_has_stalled() -> void:
 			break
 	assert_eq(_serves().size(), 1, "the opening serve")
 	var epoch: int = _play.authority.epoch + 1
-	var handoff: int = PongNetProtocol.TRANSFER_HANDOFF
-	_play._on_transfer(HOST, epoch, handoff, 1, CLIENT, rest, Vector3.ZERO, Vector3.ZERO, 0)
+	var handoff: PongNetTransferMessage = PongNetTransferMessage.new()
+	handoff.epoch = epoch
+	handoff.kind = PongNetFacts.TransferKind.HANDOFF
+	handoff.territory = 1
+	handoff.master = CLIENT
+	handoff.position = rest
+	_receive(HOST, handoff)
 	assert_false(_play.authority.is_master(), "the client masters the ball")
-	_play.sent.clear()
+	_router.sent.clear()
 	var served: bool = false
 	var seconds: float = PongReferee.STALL_SECONDS + 1.0
 	for frame: int in roundi(seconds / FRAME_S):
 		# The first state sets the clock (no delay); the others are a leg late.
 		var sent_at: float = Time.get_ticks_usec() / 1e6 - (LATE_S if frame > 0 else 0.0)
-		_play._on_ball(CLIENT, epoch, frame + 1, sent_at, rest, Vector3.ZERO, Vector3.ZERO, 150)
+		var state: PongNetBallMessage = PongNetBallMessage.new()
+		state.epoch = epoch
+		state.seq = frame + 1
+		state.time_s = sent_at
+		state.position = rest
+		state.leg_ms = 150
+		_receive(CLIENT, state)
 		_play.frame(FRAME_S)
 		if not _serves().is_empty():
 			served = true
@@ -46,9 +57,10 @@ func test_the_server_serves_again_when_its_masters_ball_has_stalled() -> void:
 	assert_true(served, "served again within %.1f s" % seconds)
 
 
-func _serves() -> Array[Array]:
-	var serves: Array[Array] = []
-	for entry: Array in _play.sent_of(&"_transfer"):
-		if entry[2] == PongNetProtocol.TRANSFER_SERVE:
-			serves.append(entry)
+func _serves() -> Array[PongNetTransferMessage]:
+	var serves: Array[PongNetTransferMessage] = []
+	for sent: PongNetMessage in _router.sent_of(PongNetTransferMessage.SCHEMA_ID):
+		var transfer: PongNetTransferMessage = sent
+		if transfer.kind == PongNetFacts.TransferKind.SERVE:
+			serves.append(transfer)
 	return serves

@@ -1,56 +1,76 @@
 extends "res://tests/net/net_play_suite.gd"
-## Bullets and mines in a networked match, without sockets: the message checks, and the
+## Bullets and mines in a networked match, without sockets: the messages' checks, and the
 ## authority rules of [PongNetWeapons] on one peer of a real stepped match (the host, seat
-## 0; the client, peer 42, drives seat 1). Received messages are handed to the handlers
-## with their sender's id; what this peer sends is recorded.
+## 0; the client, peer 42, drives seat 1). Received messages reach it as bytes through its
+## router with their sender's id; what this peer sends is recorded.
 
-const PongTestCourt := preload("res://tests/pong/pong_test_court.gd")
+const BULLET: PongNetFacts.WeaponCause = PongNetFacts.WeaponCause.BULLET
+const MINE: PongNetFacts.WeaponCause = PongNetFacts.WeaponCause.MINE
 
 
 func _open() -> PongNetWeapons:
-	var play: RecordingPlay = _open_play()
+	var play: PongNetPlay = _open_play()
 	return play.weapons if play != null else null
 
 
-# --- the protocol's checks ---
+# --- the checks ---
 
 
-func test_good_weapon_messages_pass_the_protocol_checks() -> void:
-	var court: PongCourt = PongTestCourt.make()
-	var up: Vector3 = Vector3.UP
-	assert_eq(PongNetProtocol.check_bullet(1, 2, 0, Vector3(0, 1, -2), up, 3.0, court), "")
-	assert_eq(PongNetProtocol.check_mine(1, 2, 2, Vector3(0.5, 0, 1.5), "remote", court), "")
-	assert_eq(PongNetProtocol.check_weapon_hurt(0, 2, "bullet", 1, 7), "")
+func test_good_weapon_messages_decode_as_they_were_sent() -> void:
+	var shot: PongNetBulletMessage = _bullet(1, 0, Vector3(0, 1, -2), Vector3.UP, 3.0)
+	var back: PongNetBulletMessage = PongNetBulletMessage.decode(shot.encode())
+	assert_not_null(back, HapticsWireReader.last_error)
+	if back != null:
+		assert_eq(
+			[back.seat, back.id, back.origin, back.direction], [1, 0, shot.origin, Vector3.UP]
+		)
+	var mine: PongNetMineMessage = _mine(1, 2, Vector3(0.5, 0, 1.5))
+	assert_not_null(PongNetMineMessage.decode(mine.encode()), HapticsWireReader.last_error)
+	var hurt: PongNetWeaponHurtMessage = _weapon_hurt(0, BULLET, 1, 7)
+	assert_not_null(PongNetWeaponHurtMessage.decode(hurt.encode()), HapticsWireReader.last_error)
 
 
-func test_bad_weapon_messages_are_refused_with_the_reason() -> void:
-	var court: PongCourt = PongTestCourt.make()
+# Why [param message]'s bytes decode to nothing ("" when they decode).
+func _why_not(message: PongNetMessage) -> String:
+	var decoder: Callable = PongNetFacts.message_decoders()[message.encode().decode_u32(0)]
+	return "" if decoder.call(message.encode()) != null else HapticsWireReader.last_error
+
+
+func test_weapon_messages_outside_the_schemas_limits_do_not_decode() -> void:
 	var at: Vector3 = Vector3(0, 1, -2)
 	var up: Vector3 = Vector3.UP
-	var bullet: Callable = PongNetProtocol.check_bullet
-	assert_true(str(bullet.call("1", 2, 0, at, up, 3.0, court)).contains("seat is a String"))
-	assert_true(str(bullet.call(2, 2, 0, at, up, 3.0, court)).contains("seat 2 is out of"))
-	assert_true(str(bullet.call(1, 2, -1, at, up, 3.0, court)).contains("bullet id -1"))
-	assert_true(str(bullet.call(1, 2, 0, Vector3(0, 1, 99), up, 3.0, court)).contains("origin"))
-	assert_true(str(bullet.call(1, 2, 0, at, up * 2.0, 3.0, court)).contains("direction"))
-	assert_true(
-		str(bullet.call(1, 2, 0, at, Vector3(NAN, 0, 0), 3.0, court)).contains("not finite")
-	)
-	assert_true(str(bullet.call(1, 2, 0, at, up, "now", court)).contains("time is a String"))
-	var mine: Callable = PongNetProtocol.check_mine
+	assert_true(_why_not(_bullet(4, 0, at, up, 3.0)).contains("seat: 4 is outside"))
+	var far: String = _why_not(_bullet(1, 0, Vector3(0, 1, 199), up, 3.0))
+	assert_true(far.contains("origin: length"), far)
+	assert_true(_why_not(_bullet(1, 0, at, up * 2.0, 3.0)).contains("direction: length 2"))
+	assert_true(_why_not(_bullet(1, 0, at, Vector3.ZERO, 3.0)).contains("direction: zero"))
+	assert_true(_why_not(_bullet(1, 0, at, Vector3(NAN, 0, 0), 3.0)).contains("not finite"))
+	assert_true(_why_not(_bullet(1, 0, at, up, -1.0)).contains("time_s"))
+	var id: int = PongNetFacts.NET_MAX_WEAPON_ID + 1
+	assert_true(_why_not(_bullet(1, id, at, up, 3.0)).contains("id: %d is outside" % id))
+	assert_true(_why_not(_mine(1, 4, Vector3(0.5, 0, 1.5))).contains("id: 4 is outside"))
+	var hurt: PackedByteArray = _weapon_hurt(0, MINE, 1, 0).encode()
+	hurt[5] = 2
+	assert_null(PongNetWeaponHurtMessage.decode(hurt))
+	assert_true(HapticsWireReader.last_error.contains("cause: 2 is none of the 2"))
+
+
+func test_weapon_messages_that_cannot_be_in_this_match_are_refused() -> void:
+	var weapons: PongNetWeapons = _open()
+	if weapons == null:
+		return
 	var spot: Vector3 = Vector3(0.5, 0, 1.5)
-	assert_true(str(mine.call(1, 2, 4, spot, "none", court)).contains("mine id 4 is out of"))
-	assert_true(str(mine.call(1, 2, 0, spot, "remote", court)).contains("is not mine 0's, slow"))
-	assert_true(str(mine.call(1, 2, 0, spot, 7, court)).contains("kind 7"))
-	assert_true(str(mine.call(1, 2, 0, spot + Vector3.UP, "slow", court)).contains("mine position"))
-	assert_true(str(mine.call(1, 2, 0, Vector3(0, 0, 9), "slow", court)).contains("mine position"))
-	assert_true(str(mine.call(0, 2, 0, spot, "slow", court)).contains("its owner's own territory"))
-	var hurt: Callable = PongNetProtocol.check_weapon_hurt
-	assert_true(str(hurt.call(0, 2, "floor", 1, 0)).contains("cause floor is not a weapon"))
-	var long: String = str(hurt.call(0, 2, "x".repeat(65536), 1, 0))
-	assert_true(long.contains("is not a weapon") and long.length() < 100, long.left(100))
-	assert_true(str(hurt.call(1, 2, "mine", 1, 0)).contains("never hurts its owner"))
-	assert_true(str(hurt.call(0, 2, "mine", 1, 1 << 31)).contains("weapon id"))
+	_receive(CLIENT, _bullet(2, 0, Vector3(0, 1, -2), Vector3.UP, 3.0))
+	_receive(CLIENT, _bullet(1, 0, Vector3(0, 1, 9), Vector3.UP, 3.0))
+	assert_eq(_refused("bullet"), 2, "a seat of no two-seat court, outside the court")
+	_receive(CLIENT, _mine(1, 0, spot + Vector3.UP))
+	_receive(CLIENT, _mine(1, 0, Vector3(0, 0, 9)))
+	_receive(CLIENT, _mine(0, 0, spot))
+	assert_eq(_refused("mine"), 3, "off the floor, outside the court, the owner's territory")
+	_receive(CLIENT, _weapon_hurt(1, MINE, 1, 0))
+	_receive(CLIENT, _weapon_hurt(2, MINE, 1, 0))
+	assert_eq(_refused("weapon hurt"), 2, "its owner, a seat of no two-seat court")
+	assert_true(weapons.shots.is_empty() and weapons.mines_placed.is_empty())
 
 
 # --- the authority rules on one peer ---
@@ -62,20 +82,20 @@ func test_a_shot_is_taken_once_from_its_seats_peer_and_keeps_the_cooldown() -> v
 		return
 	var bullets: PongBullets = _play.match_node.bullets
 	var origin: Vector3 = Vector3(0.0, 1.0, -2.0)
-	weapons.on_bullet(HOST, 1, 0, origin, Vector3.BACK, 10.0)
+	_receive(HOST, _bullet(1, 0, origin, Vector3.BACK, 10.0))
 	assert_eq(bullets.flying.size(), 0, "not from the host: seat 1 is the client's")
-	weapons.on_bullet(CLIENT, 1, 0, origin, Vector3.BACK, 10.0)
+	_receive(CLIENT, _bullet(1, 0, origin, Vector3.BACK, 10.0))
 	assert_eq(bullets.flying.size(), 1, "from the seat's peer: it flies")
 	var flying: PongBullets.Bullet = bullets.flying[0]
 	assert_eq([flying.owner, flying.id], [1, 0])
 	# It flew on for the message's age (no round trip measured here: at least 0).
 	assert_true(flying.position.z >= origin.z and flying.position.z - origin.z < 3.6)
-	weapons.on_bullet(CLIENT, 1, 0, origin, Vector3.BACK, 11.0)
-	weapons.on_bullet(CLIENT, 1, 1, origin, Vector3.BACK, 10.1)
+	_receive(CLIENT, _bullet(1, 0, origin, Vector3.BACK, 11.0))
+	_receive(CLIENT, _bullet(1, 1, origin, Vector3.BACK, 10.1))
 	assert_eq(bullets.flying.size(), 1, "a reused number and a shot within the cooldown are not")
-	weapons.on_bullet(CLIENT, 1, 1, origin, Vector3.BACK, 10.5)
+	_receive(CLIENT, _bullet(1, 1, origin, Vector3.BACK, 10.5))
 	assert_eq(bullets.flying.size(), 2, "the next shot after the cooldown is")
-	assert_eq(_play.report.refused.get("bullet", 0), 3)
+	assert_eq(_refused("bullet"), 3)
 	assert_eq(weapons.shots, [[1, 0], [1, 1]])
 
 
@@ -85,16 +105,17 @@ func test_a_mine_is_put_where_its_owner_put_it_once_and_only_from_its_peer() -> 
 		return
 	var mines: PongMines = _play.match_node.mines
 	var spot: Vector3 = Vector3(0.3, 0.0, 1.5)
-	weapons.on_mine(HOST, 1, 0, spot, "slow")
+	_receive(HOST, _mine(1, 0, spot))
 	assert_eq(mines.placed.size(), 0, "not from the host")
-	weapons.on_mine(CLIENT, 1, 2, spot, "remote")
+	_receive(CLIENT, _mine(1, 2, spot))
 	assert_eq(mines.placed.size(), 1, "the client's third mine, where it put it")
 	assert_eq(mines.placed[0].position, spot)
 	assert_eq(mines.next_kind(1), "none", "its earlier numbers are spent")
-	weapons.on_mine(CLIENT, 1, 1, spot + Vector3.RIGHT, "heavy")
-	weapons.on_mine(CLIENT, 1, 2, spot + Vector3.RIGHT, "remote")
+	assert_eq(mines.placed[0].kind, "remote", "its kind is its number's")
+	_receive(CLIENT, _mine(1, 1, spot + Vector3.RIGHT))
+	_receive(CLIENT, _mine(1, 2, spot + Vector3.RIGHT))
 	assert_eq(mines.placed.size(), 1, "numbers are not reused")
-	assert_eq(_play.report.refused.get("mine", 0), 3)
+	assert_eq(_refused("mine"), 3)
 
 
 func test_a_weapon_hurt_counts_once_only_from_the_victims_peer_for_a_known_weapon() -> void:
@@ -106,20 +127,20 @@ func test_a_weapon_hurt_counts_once_only_from_the_victims_peer_for_a_known_weapo
 	# The host's own mine (placed here) in the client's half.
 	var mine: PongMines.Mine = mines.place(0, Vector3(0.3, 1.0, 1.5), _play.match_node.court)
 	_play.match_node.mine_placed.emit(mine)
-	assert_eq(_play.sent_of(&"_mine").size(), 1, "the host's mine went out")
-	weapons.on_hurt(HOST, 1, "mine", 0, mine.id)
+	assert_eq(_router.sent_of(PongNetMineMessage.SCHEMA_ID).size(), 1, "the host's mine went out")
+	_receive(HOST, _weapon_hurt(1, MINE, 0, mine.id))
 	assert_eq(rules.get_health(1), 99, "the host does not judge the client's seat")
-	weapons.on_hurt(CLIENT, 1, "mine", 0, mine.id + 1)
+	_receive(CLIENT, _weapon_hurt(1, MINE, 0, mine.id + 1))
 	assert_eq(rules.get_health(1), 99, "an unknown mine (waiting for it)")
-	weapons.on_hurt(CLIENT, 1, "mine", 0, mine.id)
+	_receive(CLIENT, _weapon_hurt(1, MINE, 0, mine.id))
 	var lost: int = PongRules.DAMAGE[PongRules.CAUSE_MINE]
 	assert_eq(rules.get_health(1), 99 - lost, "the client's word on its seat")
 	assert_eq(mines.placed.size(), 0, "the mine went off here too")
-	weapons.on_hurt(CLIENT, 1, "mine", 0, mine.id)
+	_receive(CLIENT, _weapon_hurt(1, MINE, 0, mine.id))
 	assert_eq(rules.get_health(1), 99 - lost, "a mine hurts once")
-	assert_eq(_play.report.refused.get("weapon hurt", 0), 2)
+	assert_eq(_refused("weapon hurt"), 2)
 	weapons.expire_pending(true)
-	assert_eq(_play.report.refused.get("weapon hurt", 0), 3, "the unknown mine never came")
+	assert_eq(_refused("weapon hurt"), 3, "the unknown mine never came")
 	assert_eq(weapons.hurts, [[1, "mine", 0, mine.id]])
 
 
@@ -132,22 +153,22 @@ func test_a_hurt_that_overtakes_its_weapon_waits_for_it() -> void:
 	var third: PongNetAuthority = PongNetAuthority.new(7, PackedInt64Array([HOST, CLIENT]))
 	_play.authority = third
 	weapons.authority = third
-	weapons.on_hurt(HOST, 0, "mine", 1, 0)
-	weapons.on_hurt(HOST, 0, "bullet", 1, 0)
+	_receive(HOST, _weapon_hurt(0, MINE, 1, 0))
+	_receive(HOST, _weapon_hurt(0, BULLET, 1, 0))
 	assert_eq(match_node.rules.get_health(0), 99, "not before the weapons are known")
-	assert_eq(_play.report.refused.get("weapon hurt", 0), 0, "waiting, not refused")
-	weapons.on_mine(CLIENT, 1, 0, Vector3(0.3, 0.0, 1.5), "slow")
+	assert_eq(_refused("weapon hurt"), 0, "waiting, not refused")
+	_receive(CLIENT, _mine(1, 0, Vector3(0.3, 0.0, 1.5)))
 	var after_mine: int = 99 - PongRules.DAMAGE[PongRules.CAUSE_MINE]
 	assert_eq(match_node.rules.get_health(0), after_mine, "the mine came: it went off")
 	assert_eq(match_node.mines.placed.size(), 0)
 	var host_avatar: Vector3 = match_node.avatar_of(0)
-	weapons.on_bullet(CLIENT, 1, 0, host_avatar + Vector3(0.0, 0.0, -1.0), Vector3.BACK, 10.0)
+	_receive(CLIENT, _bullet(1, 0, host_avatar + Vector3(0.0, 0.0, -1.0), Vector3.BACK, 10.0))
 	var lost: int = PongRules.DAMAGE[PongRules.CAUSE_BULLET]
 	assert_eq(match_node.rules.get_health(0), after_mine - lost, "the bullet came: it hit")
 	assert_true(match_node.bullets.flying.is_empty(), "a bullet that has hit does not fly")
 	assert_eq(weapons.hurts, [[0, "mine", 1, 0], [0, "bullet", 1, 0]])
 	weapons.expire_pending(true)
-	assert_eq(_play.report.refused.get("weapon hurt", 0), 0, "nothing left waiting")
+	assert_eq(_refused("weapon hurt"), 0, "nothing left waiting")
 
 
 func test_only_the_seats_this_peer_drives_are_judged_here() -> void:
@@ -160,7 +181,7 @@ func test_only_the_seats_this_peer_drives_are_judged_here() -> void:
 	# A client's bullet through the host's avatar: judged here, told to everyone.
 	var host_avatar: Vector3 = match_node.avatar_of(0)
 	var from: Vector3 = host_avatar + Vector3(0.0, 0.0, -0.5)
-	weapons.on_bullet(CLIENT, 1, 0, from, Vector3.BACK, 10.0)
+	_receive(CLIENT, _bullet(1, 0, from, Vector3.BACK, 10.0))
 	# The host's bullet through the client's avatar: not judged here (no hurt).
 	var client_avatar: Vector3 = match_node.avatar_of(1)
 	var bullet: PongBullets.Bullet = match_node.bullets.fire(
@@ -168,14 +189,16 @@ func test_only_the_seats_this_peer_drives_are_judged_here() -> void:
 	)
 	match_node.bullet_fired.emit(bullet)
 	match_node.run_until(func() -> bool: return match_node.bullets.flying.is_empty(), 1.0)
-	var hurts: Array[Array] = _play.sent_of(&"_weapon_hurt")
-	assert_eq(hurts, [[&"_weapon_hurt", 0, "bullet", 1, 0]], "only the hit on seat 0")
+	var hurts: Array[PongNetMessage] = _router.sent_of(PongNetWeaponHurtMessage.SCHEMA_ID)
+	assert_eq(hurts.size(), 1, "only the hit on seat 0")
+	if hurts.size() == 1:
+		var hit: PongNetWeaponHurtMessage = hurts[0]
+		assert_eq([hit.victim, hit.cause, hit.seat, hit.id], [0, BULLET, 1, 0])
 	var lost: int = PongRules.DAMAGE[PongRules.CAUSE_BULLET]
 	assert_eq(match_node.rules.get_health(0), 99 - lost)
 	assert_eq(match_node.rules.get_health(1), 99, "seat 1's peer decides its own")
-	assert_eq(
-		_play.sent_of(&"_bullet").size(), 1, "the host's shot went out, the client's not back"
-	)
+	var shots: Array[PongNetMessage] = _router.sent_of(PongNetBulletMessage.SCHEMA_ID)
+	assert_eq(shots.size(), 1, "the host's shot went out, the client's not back")
 
 
 func test_a_clients_age_of_another_clients_message_counts_the_senders_leg() -> void:

@@ -1,6 +1,6 @@
 """docs/values.md: the wire format, then every schema file's constants, enums and values."""
 
-from model import SCALARS
+from model import SCALARS, VECTORS
 
 INTRO = """\
 # Values that cross a boundary
@@ -43,7 +43,9 @@ value that fails is refused whole.
 
 def limits(f, schema_set):
     parts = []
-    if f.min is not None or f.max is not None:
+    if f.type.name in VECTORS and f.min is not None:
+        parts.append(f"length in [{f.min}, {f.max if f.max is not None else '∞'}]")
+    elif f.min is not None or f.max is not None:
         parts.append(f"[{f.min if f.min is not None else '-∞'}, {f.max if f.max is not None else '∞'}]")
     if f.type.container == "array":
         n = f.max_count
@@ -55,6 +57,15 @@ def limits(f, schema_set):
     if not f.finite:
         parts.append("may be infinite")
     return ", ".join(parts)
+
+
+def message_line(v):
+    m = v.message
+    channel = f"{m.channel} (`{m.channel_ref}`)" if m.channel_ref else str(m.channel)
+    sender = "the server only" if m.from_server else "any peer"
+    receiver = "the server only" if m.to_server else "any peer"
+    return (f"Network message \"{m.label}\": channel {channel}, {m.transfer.replace('_', ' ')}; "
+            f"sent by {sender}, taken by {receiver}.")
 
 
 def page(schema_set):
@@ -78,6 +89,11 @@ def page(schema_set):
         for v in sf.values:
             title = f"### {v.gd}" + (f" (C++ `{v.name}`)" if sf.cpp and v.name != v.gd else "")
             out.append(f"{title}\n\n{v.doc}\n\nLayout id `0x{v.schema_id:08x}`.\n")
+            if v.message is not None:
+                out.append(message_line(v) + "\n")
+            if not v.fields:
+                out.append("No fields: the layout id is the whole message.\n")
+                continue
             out.append("| field | type | unit | limits | default | meaning |")
             out.append("|---|---|---|---|---|---|")
             for f in v.fields:

@@ -168,6 +168,10 @@ def read_scalar(schema_set, f, name):
             args += [lo or "-INF", hi or "INF"]
         if f.zero_means:
             args += ["true" if f.finite else "false", "true"]
+    elif lo is not None:
+        # A vector's min is its shortest length (GDScript only: model.py).
+        args += ["true" if f.nonzero else "false", hi or "INF", "true" if f.finite else "false", lo]
+        return f"reader.{method}({', '.join(args)})"
     else:
         if f.nonzero or hi is not None or not f.finite:
             args += ["true" if f.nonzero else "false", hi or "INF"]
@@ -211,11 +215,13 @@ def wrapped(indent, head, call):
 
 def value_class(schema_set, v):
     sf = v.file
-    out = [HEADER.format(source=sf.path) + f"class_name {v.gd}", "extends HapticsValue"]
+    out = [HEADER.format(source=sf.path) + f"class_name {v.gd}", f"extends {sf.gd_extends if v.message else 'HapticsValue'}"]
     out += doc_lines(v.doc)
     out.append("")
     out.append("## This layout's id on the wire (docs/values.md): a change of any field changes it.")
     out.append(f"const SCHEMA_ID: int = 0x{v.schema_id:08x}")
+    if v.message is not None:
+        out += message_constants(v)
     for f in v.fields:
         if not f.gd_bounds:
             continue
@@ -225,7 +231,8 @@ def value_class(schema_set, v):
                 value = value.replace(".0", "") if kind == "int" else value
                 out.append(f"## The {'least' if which == 'MIN' else 'most'} [member {f.name}] takes.")
                 out.append(f"const {f.name.upper()}_{which}: {kind} = {value}")
-    out.append("")
+    if v.fields:
+        out.append("")
     for f in v.fields:
         parts = [f.doc] if f.doc else []
         if f.unit:
@@ -253,10 +260,14 @@ def value_class(schema_set, v):
     out += wrapped("\t", "var reader: HapticsWireReader = ", f'HapticsWireReader.new(bytes, SCHEMA_ID, "{v.gd}")')
     out.append(f"\tvar value: {v.gd} = read_from(reader)")
     out.append("\treturn value if reader.finish() else null")
+    if v.message is not None:
+        out += message_methods()
     out.append("")
     out.append("")
     out.append("## Writes the fields, in order (also as part of a value that holds this one).")
-    out.append("func write_to(writer: HapticsWireWriter) -> void:")
+    out.append(f"func write_to({'writer' if v.fields else '_writer'}: HapticsWireWriter) -> void:")
+    if not v.fields:
+        out.append("\tpass")
     for f in v.fields:
         t = f.type
         if t.container == "array":
@@ -280,7 +291,7 @@ def value_class(schema_set, v):
     out.append("")
     out.append("")
     out.append("## Reads the fields, in order, checking each against the schema.")
-    out.append(f"static func read_from(reader: HapticsWireReader) -> {v.gd}:")
+    out.append(f"static func read_from({'reader' if v.fields else '_reader'}: HapticsWireReader) -> {v.gd}:")
     out.append(f"\tvar value: {v.gd} = {v.gd}.new()")
     for f in v.fields:
         t = f.type
@@ -310,6 +321,62 @@ def value_class(schema_set, v):
     return "\n".join(out) + "\n"
 
 
+TRANSFER_MODES = {
+    "reliable": "MultiplayerPeer.TRANSFER_MODE_RELIABLE",
+    "unreliable": "MultiplayerPeer.TRANSFER_MODE_UNRELIABLE",
+    "unreliable_ordered": "MultiplayerPeer.TRANSFER_MODE_UNRELIABLE_ORDERED",
+}
+
+
+def message_constants(v):
+    """A network message's facts as constants: how it travels and who sends and takes it."""
+    m = v.message
+    channel = f"{v.file.gd_constants}.{m.channel_ref}" if m.channel_ref else str(m.channel)
+    return [
+        "## Words for people: what this message is (log lines, counts).",
+        f'const LABEL: String = "{m.label}"',
+        "## The channel it travels on ([method SceneMultiplayer.send_bytes]).",
+        f"const CHANNEL: int = {channel}",
+        "## How it travels.",
+        *transfer_line(TRANSFER_MODES[m.transfer]),
+        "## Only the server sends it: from any other peer it is a bad message.",
+        f"const FROM_SERVER: bool = {'true' if m.from_server else 'false'}",
+        "## Only the server takes it: on any other peer it is a bad message.",
+        f"const TO_SERVER: bool = {'true' if m.to_server else 'false'}",
+    ]
+
+
+def transfer_line(mode):
+    line = f"const TRANSFER_MODE: MultiplayerPeer.TransferMode = {mode}"
+    return [line] if width(line) <= 100 else wrapped("", line[: -len(mode)], f"({mode})")
+
+
+def message_methods():
+    out = []
+    for name, kind, const in (("label", "String", "LABEL"), ("channel", "int", "CHANNEL"),
+                              ("transfer_mode", "MultiplayerPeer.TransferMode", "TRANSFER_MODE"),
+                              ("from_server", "bool", "FROM_SERVER"), ("to_server", "bool", "TO_SERVER")):
+        out += ["", "", f"func {name}() -> {kind}:", f"\treturn {const}"]
+    return out
+
+
+def message_tables(sf):
+    """The file's network messages by layout id: words for people, and each decode()."""
+    messages = [v for v in sf.values if v.message is not None]
+    if not messages:
+        return []
+    out = ["", "## Words for people for each network message of this file, by its layout id."]
+    out.append("const MESSAGE_LABELS: Dictionary[int, String] = {")
+    out += [f'\t0x{v.schema_id:08x}: "{v.message.label}",' for v in messages]
+    out.append("}")
+    out += ["", "", "## The decode() of each network message of this file, by its layout id."]
+    out.append("static func message_decoders() -> Dictionary[int, Callable]:")
+    out.append("\treturn {")
+    out += [f"\t\t{v.gd}.SCHEMA_ID: {v.gd}.decode," for v in messages]
+    out.append("\t}")
+    return out
+
+
 def constants_class(sf):
     out = [HEADER.format(source=sf.path) + f"class_name {sf.gd_constants}", "extends RefCounted"]
     out += doc_lines(sf.doc or "Constants and enums of " + sf.path + ".")
@@ -332,6 +399,7 @@ def constants_class(sf):
             out.append(f"## Words for people for [enum {e.gd}]'s values, in order.")
             labels = ", ".join('"' + label + '"' for label in e.labels)
             out += wrapped("", f"const {upper(e.gd)}_LABELS: PackedStringArray = ", f"[{labels}]")
+    out += message_tables(sf)
     return "\n".join(out) + "\n"
 
 

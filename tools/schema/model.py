@@ -5,12 +5,21 @@ A schema file (TOML) holds:
   [schema]     doc; cpp (the C++ header written next to the file; omit for GDScript-only
                values); gdscript (the folder, from the project root, of the GDScript classes;
                omit for C++-only values); gd_constants (the GDScript class that carries the
-               file's constants and enums); cpp_includes (extra headers the C++ needs)
+               file's constants and enums); cpp_includes (extra headers the C++ needs);
+               gd_extends (a file of network messages: their GDScript classes' base, which
+               extends HapticsValue and declares label(), channel(), transfer_mode(),
+               from_server() and to_server(); other values extend HapticsValue)
   [constants.NAME]  value, doc
   [enums.Name]      values (lowercase names in order), doc, gd (name in gd_constants)
   [values.Name]     gd (the GDScript class), doc, realtime (C++: trivially copyable, fixed
                     capacity), fields.<name> = { type, doc, unit, min, max, default,
-                    max_count, max_length, nonzero, finite }
+                    max_count, max_length (a number or a constant's name), nonzero,
+                    finite }; a network message (GDScript
+                    only) adds channel (a number or a constant's name), transfer
+                    ("reliable", "unreliable" or "unreliable_ordered"), label (words for
+                    people), sender and receiver ("any", the default, or "server"), and may
+                    have no fields
+A vector's max is its longest length; its min (GDScript only) its shortest.
 The wire format and the types are described in docs/values.md (written from here too).
 """
 
@@ -58,6 +67,8 @@ PACKED = {
 }
 INTEGER_BITS = {"int": 32, "int64": 64, "uint8": 8, "uint16": 16, "uint32": 32, "uint64": 64}
 VECTORS = {"vec2", "vec3", "vec2f", "vec3f", "game_vec2"}
+TRANSFERS = ("reliable", "unreliable", "unreliable_ordered")
+PEERS = ("any", "server")
 FIELD_KEYS = {
     "type", "doc", "unit", "min", "max", "default", "max_count", "max_length", "nonzero",
     "finite", "fixed", "zero_means", "gd_bounds",
@@ -140,6 +151,7 @@ class Value:
     fields: list
     file: object = None
     settings: bool = False  # a renderer's or the servo's settings
+    message: object = None  # a network message's Message, None for other values
     _canonical: str = None
 
     def canonical(self):
@@ -159,6 +171,20 @@ class Value:
 
 
 @dataclass
+class Message:
+    """How a network message travels: its channel (and the constant that names it), transfer
+    mode, words for people, and whether only the server sends it and only the server takes
+    it."""
+
+    channel: int
+    channel_ref: str
+    transfer: str
+    label: str
+    from_server: bool
+    to_server: bool
+
+
+@dataclass
 class SchemaFile:
     path: str  # project-relative
     doc: str
@@ -166,6 +192,7 @@ class SchemaFile:
     gdscript: str  # project-relative folder, or ""
     gd_constants: str
     cpp_includes: list
+    gd_extends: str = ""
     constants: list = field(default_factory=list)
     enums: list = field(default_factory=list)
     values: list = field(default_factory=list)
@@ -215,6 +242,7 @@ def load(root):
             gdscript=head.get("gdscript", ""),
             gd_constants=head.get("gd_constants", ""),
             cpp_includes=list(head.get("cpp_includes", [])),
+            gd_extends=head.get("gd_extends", ""),
         )
         for name, spec in data.get("constants", {}).items():
             _unique(schema_set, name, path)
@@ -237,6 +265,8 @@ def load(root):
             schema_set.values[name] = value
             sf.values.append(value)
             raw[(path, name)] = spec
+            if any(key in spec for key in MESSAGE_KEYS):
+                value.message = _message(schema_set, sf, name, spec)
         if (sf.constants or sf.enums) and sf.gdscript and not sf.gd_constants:
             raise SchemaError(f"{path}: constants or enums need [schema] gd_constants")
         schema_set.files.append(sf)
@@ -245,9 +275,39 @@ def load(root):
             spec = raw[(sf.path, value.name)]
             for field_name, fspec in spec.get("fields", {}).items():
                 value.fields.append(_field(schema_set, sf.path, value, field_name, fspec))
-            if not value.fields:
+            if not value.fields and value.message is None:
                 raise SchemaError(f"{sf.path}: {value.name} has no fields")
     return schema_set
+
+
+MESSAGE_KEYS = ("channel", "transfer", "label", "sender", "receiver")
+
+
+def _message(schema_set, sf, name, spec):
+    where = f"{sf.path}: {name}"
+    if sf.cpp or not sf.gdscript:
+        raise SchemaError(f"{where}: network messages are GDScript-only (no cpp, a gdscript folder)")
+    if not sf.gd_constants:
+        raise SchemaError(f"{where}: a file of network messages needs [schema] gd_constants (their tables)")
+    if not sf.gd_extends:
+        raise SchemaError(f"{where}: a file of network messages needs [schema] gd_extends")
+    channel = spec.get("channel")
+    channel_ref = ""
+    if isinstance(channel, str):
+        if channel not in schema_set.constants:
+            raise SchemaError(f"{where}: channel names no constant ({channel})")
+        channel_ref, channel = channel, schema_set.constants[channel].value
+    if not isinstance(channel, int) or isinstance(channel, bool) or channel < 0:
+        raise SchemaError(f"{where}: a message needs a channel (0 or more, or a constant's name)")
+    if spec.get("transfer") not in TRANSFERS:
+        raise SchemaError(f"{where}: transfer must be one of {list(TRANSFERS)}")
+    if not spec.get("label"):
+        raise SchemaError(f"{where}: a message needs a label (words for people)")
+    for key in ("sender", "receiver"):
+        if spec.get(key, "any") not in PEERS:
+            raise SchemaError(f"{where}: {key} must be one of {list(PEERS)}")
+    return Message(channel, channel_ref, spec["transfer"], spec["label"],
+                   spec.get("sender", "any") == "server", spec.get("receiver", "any") == "server")
 
 
 def _unique(schema_set, name, path):
@@ -289,11 +349,17 @@ def _field(schema_set, path, value, name, spec):
             sign = -1 if given.startswith("-") else 1
             setattr(f, bound, sign * schema_set.constants[name].value)
             setattr(f, bound + "_ref", given)
+    if isinstance(f.max_length, str):
+        if f.max_length not in schema_set.constants:
+            raise SchemaError(f"{where}: max_length names no constant ({f.max_length})")
+        f.max_length = schema_set.constants[f.max_length].value
     if container == "array":
         limit = f.max_count
         if limit is None or (isinstance(limit, str) and limit not in schema_set.constants):
             raise SchemaError(f"{where}: an array needs max_count (a number or a constant)")
         f.count_limit_value = f.count_limit(schema_set)
+    if kind == "scalar" and type_name in VECTORS and f.min is not None and value.file.cpp:
+        raise SchemaError(f"{where}: a vector's min (its shortest length) is checked in GDScript only")
     if type_name == "string" and not f.max_length:
         raise SchemaError(f"{where}: a string needs max_length (bytes)")
     if value.realtime and kind == "value" and not f.type.ref.realtime:

@@ -98,38 +98,54 @@ func f32(
 
 
 func vec2(
-	field: StringName, nonzero: bool = false, max_length: float = INF, finite: bool = true
+	field: StringName,
+	nonzero: bool = false,
+	max_length: float = INF,
+	finite: bool = true,
+	min_length: float = 0.0
 ) -> Vector2:
 	var value: Vector2 = Vector2(f64(&"", -INF, INF, false), f64(&"", -INF, INF, false))
-	_check_vector(field, Vector3(value.x, value.y, 0.0), nonzero, max_length, finite)
+	_check_vector(field, Vector3(value.x, value.y, 0.0), nonzero, max_length, finite, min_length)
 	return value
 
 
 func vec2f(
-	field: StringName, nonzero: bool = false, max_length: float = INF, finite: bool = true
+	field: StringName,
+	nonzero: bool = false,
+	max_length: float = INF,
+	finite: bool = true,
+	min_length: float = 0.0
 ) -> Vector2:
 	var value: Vector2 = Vector2(f32(&"", -INF, INF, false), f32(&"", -INF, INF, false))
-	_check_vector(field, Vector3(value.x, value.y, 0.0), nonzero, max_length, finite)
+	_check_vector(field, Vector3(value.x, value.y, 0.0), nonzero, max_length, finite, min_length)
 	return value
 
 
 func vec3(
-	field: StringName, nonzero: bool = false, max_length: float = INF, finite: bool = true
+	field: StringName,
+	nonzero: bool = false,
+	max_length: float = INF,
+	finite: bool = true,
+	min_length: float = 0.0
 ) -> Vector3:
 	var value: Vector3 = Vector3(
 		f64(&"", -INF, INF, false), f64(&"", -INF, INF, false), f64(&"", -INF, INF, false)
 	)
-	_check_vector(field, value, nonzero, max_length, finite)
+	_check_vector(field, value, nonzero, max_length, finite, min_length)
 	return value
 
 
 func vec3f(
-	field: StringName, nonzero: bool = false, max_length: float = INF, finite: bool = true
+	field: StringName,
+	nonzero: bool = false,
+	max_length: float = INF,
+	finite: bool = true,
+	min_length: float = 0.0
 ) -> Vector3:
 	var value: Vector3 = Vector3(
 		f32(&"", -INF, INF, false), f32(&"", -INF, INF, false), f32(&"", -INF, INF, false)
 	)
-	_check_vector(field, value, nonzero, max_length, finite)
+	_check_vector(field, value, nonzero, max_length, finite, min_length)
 	return value
 
 
@@ -235,7 +251,12 @@ func _check_number(field: StringName, value: float, low: float, high: float, fin
 
 
 func _check_vector(
-	field: StringName, value: Vector3, nonzero: bool, max_length: float, finite: bool
+	field: StringName,
+	value: Vector3,
+	nonzero: bool,
+	max_length: float,
+	finite: bool,
+	min_length: float = 0.0
 ) -> void:
 	if finite and not value.is_finite():
 		_fail("not finite %s" % value, field)
@@ -243,6 +264,8 @@ func _check_vector(
 		_fail("zero length: a direction is needed", field)
 	elif value.length() > max_length:
 		_fail("length %s is above %s" % [value.length(), max_length], field)
+	elif value.length() < min_length:
+		_fail("length %s is below %s" % [value.length(), min_length], field)
 
 
 func _fail(reason: String, field: StringName = &"") -> void:

@@ -2,7 +2,10 @@ class_name PongNet
 extends Node
 ## Networked Haptic Battle Pong on this machine: the session ([PongNetSession]), the lobby
 ## (names, seats, ready-up, start, rematch, leave) and the match ([PongNetPlay]). It lives
-## at /root/PongNet on every peer, so its RPCs find the same node everywhere.
+## at /root/PongNet on every peer. The lobby's messages ([PongNetHelloMessage],
+## [PongNetReadyMessage], [PongNetLobbyMessage], [PongNetStartMessage]) come and go through
+## the session's [PongNetRouter], which has checked their fields; this node checks them
+## against the lobby.
 ##
 ## The server (peer 1) keeps the lobby: it gives each joining player the first free seat,
 ## starts the match when every player is ready (a dedicated server: by itself; a hosting
@@ -56,6 +59,11 @@ func _init() -> void:
 	session.failed.connect(func(reason: String) -> void: status_changed.emit(reason))
 	session.peer_left.connect(_on_peer_left)
 	session.server_lost.connect(_on_server_lost)
+	var router: PongNetRouter = session.router
+	router.handle(PongNetHelloMessage.SCHEMA_ID, _on_hello)
+	router.handle(PongNetReadyMessage.SCHEMA_ID, _on_ready_message)
+	router.handle(PongNetLobbyMessage.SCHEMA_ID, _on_lobby)
+	router.handle(PongNetStartMessage.SCHEMA_ID, _on_start)
 
 
 func _process(delta: float) -> void:
@@ -99,8 +107,10 @@ func leave() -> void:
 func set_ready(is_ready: bool) -> void:
 	if session.is_server:
 		_on_ready(1, is_ready)
-	elif session.is_open() and multiplayer.get_peers().has(PongNetAuthority.SERVER_ID):
-		_ready_up.rpc_id(PongNetAuthority.SERVER_ID, is_ready)
+	else:
+		var message: PongNetReadyMessage = PongNetReadyMessage.new()
+		message.ready = is_ready
+		session.router.send_to(PongNetAuthority.SERVER_ID, message)
 
 
 ## Server: whether a match may start now (two players or more, all ready, none running).
@@ -124,7 +134,10 @@ func start_match() -> bool:
 		owners[players[peer]["seat"]] = peer
 	for peer: int in players:
 		players[peer]["ready"] = false
-	_start.rpc(owners, start_health)
+	var start: PongNetStartMessage = PongNetStartMessage.new()
+	start.owners = owners
+	start.health = start_health
+	session.router.send_all(start)
 	_begin(owners, start_health)
 	return true
 
@@ -157,7 +170,9 @@ func seats_changed() -> void:
 
 func _on_connected() -> void:
 	status_changed.emit("Connected; waiting for the host to start")
-	_hello.rpc_id(1, my_name)
+	var hello: PongNetHelloMessage = PongNetHelloMessage.new()
+	hello.name = my_name
+	session.router.send_to(PongNetAuthority.SERVER_ID, hello)
 
 
 func _on_peer_left(peer: int) -> void:
@@ -184,10 +199,6 @@ func _after_peer_left(peer: int) -> void:
 
 func _on_server_lost() -> void:
 	status_changed.emit("The server is gone (%s)" % session.lost_reason)
-	if play.is_running():
-		play.report.extra["server_lost"] = {
-			"wall_s": PongNetReport.now(), "why": session.lost_reason
-		}
 	_end_match(-1, "server lost")
 	players.clear()
 	lobby_changed.emit()
@@ -281,18 +292,22 @@ func close_screen() -> void:
 
 
 func _broadcast_lobby() -> void:
-	var rows: Array = []
+	var lobby: PongNetLobbyMessage = PongNetLobbyMessage.new()
+	lobby.seats = seats
 	for peer: int in players:
-		var entry: Dictionary = players[peer]
-		rows.append([peer, entry["name"], entry["seat"], entry["ready"]])
-	if session.is_open():
-		_lobby.rpc(rows, seats)
+		var row: PongNetLobbyRow = PongNetLobbyRow.new()
+		row.peer = peer
+		row.name = players[peer]["name"]
+		row.seat = players[peer]["seat"]
+		row.ready = players[peer]["ready"]
+		lobby.rows.append(row)
+	session.router.send_all(lobby)
 	lobby_changed.emit()
 
 
-func _on_ready(peer: int, is_ready: Variant) -> void:
-	if typeof(is_ready) != TYPE_BOOL or not players.has(peer):
-		session.misbehaved(peer, "ready", "not a bool or not in the lobby")
+func _on_ready(peer: int, is_ready: bool) -> void:
+	if not players.has(peer):
+		session.misbehaved(peer, PongNetReadyMessage.LABEL, "not in the lobby")
 		return
 	players[peer]["ready"] = is_ready
 	_broadcast_lobby()
@@ -308,80 +323,49 @@ func _free_seat() -> int:
 	return -1
 
 
-# The lobby's messages take their arguments as a list, so a wrong count is one of our bad
-# messages, not an engine error (PongNetProtocol.check_arity); [] when it is wrong.
-func _args(args: Array, count: int, what: String) -> Array:
-	var reason: String = PongNetProtocol.check_arity(args, count)
-	if reason.is_empty():
-		return args
-	session.misbehaved(multiplayer.get_remote_sender_id(), what, reason)
-	return []
+# --- received, their fields checked (PongNetRouter): the checks against the lobby ---
 
 
-@rpc("any_peer", "call_remote", "reliable", PongNetProtocol.CHANNEL_HANDSHAKE)
-func _hello(...args: Array) -> void:
-	var sender: int = multiplayer.get_remote_sender_id()
-	var hello: Array = _args(args, 1, "hello")
-	if not session.is_server or hello.is_empty():
-		return
-	var reason: String = PongNetProtocol.check_name(hello[0])
-	if not reason.is_empty() or players.has(sender):
-		session.misbehaved(sender, "hello", reason if not reason.is_empty() else "a second one")
+func _on_hello(sender: int, hello: PongNetHelloMessage) -> void:
+	var reason: String = PongNetProtocol.check_name(hello.name)
+	if reason.is_empty() and players.has(sender):
+		reason = "a second one"
+	if not reason.is_empty():
+		session.misbehaved(sender, PongNetHelloMessage.LABEL, reason)
 		return
 	var seat: int = _free_seat()
 	if play.is_running() or seat < 0:
 		session.refuse(sender, "a match is running" if play.is_running() else "the server is full")
 		return
-	var player_name: String = hello[0]
-	players[sender] = {"name": player_name, "seat": seat, "ready": false}
-	status_changed.emit("%s joined (seat %d)" % [player_name, seat])
+	players[sender] = {"name": hello.name, "seat": seat, "ready": false}
+	status_changed.emit("%s joined (seat %d)" % [hello.name, seat])
 	_broadcast_lobby()
 
 
-@rpc("any_peer", "call_remote", "reliable", PongNetProtocol.CHANNEL_RELIABLE)
-func _ready_up(...args: Array) -> void:
-	var ready_args: Array = _args(args, 1, "ready")
-	if session.is_server and not ready_args.is_empty():
-		_on_ready(multiplayer.get_remote_sender_id(), ready_args[0])
+func _on_ready_message(sender: int, message: PongNetReadyMessage) -> void:
+	_on_ready(sender, message.ready)
 
 
-@rpc("any_peer", "call_remote", "reliable", PongNetProtocol.CHANNEL_RELIABLE)
-func _lobby(...args: Array) -> void:
-	var sender: int = multiplayer.get_remote_sender_id()
-	var lobby: Array = _args(args, 2, "lobby")
-	if lobby.is_empty():
-		return
-	var reason: String = PongNetProtocol.check_lobby(lobby[0], lobby[1])
-	if sender != PongNetAuthority.SERVER_ID:
-		reason = "only the server sends it"
-	if not reason.is_empty():
-		session.misbehaved(sender, "lobby", reason)
-		return
+func _on_lobby(sender: int, lobby: PongNetLobbyMessage) -> void:
+	var reason: String = ""
+	if not PongNetProtocol.SEAT_COUNTS.has(lobby.seats):
+		reason = "%d seats" % lobby.seats
 	var table: Dictionary[int, Dictionary] = {}
-	var list: Array = lobby[0]
-	for row: Array in list:
-		table[row[0]] = {"name": row[1], "seat": row[2], "ready": row[3]}
-	seats = lobby[1]
+	for row: PongNetLobbyRow in lobby.rows:
+		if reason.is_empty() and row.seat >= lobby.seats:
+			reason = "a row with seat %d of %d" % [row.seat, lobby.seats]
+		table[row.peer] = {"name": row.name, "seat": row.seat, "ready": row.ready}
+	if not reason.is_empty():
+		session.misbehaved(sender, PongNetLobbyMessage.LABEL, reason)
+		return
+	seats = lobby.seats
 	players = table
 	lobby_changed.emit()
 
 
-@rpc("any_peer", "call_remote", "reliable", PongNetProtocol.CHANNEL_RELIABLE)
-func _start(...args: Array) -> void:
-	var sender: int = multiplayer.get_remote_sender_id()
-	var start: Array = _args(args, 2, "start")
-	if start.is_empty():
+func _on_start(sender: int, start: PongNetStartMessage) -> void:
+	if start.owners.size() != seats:
+		var reason: String = "owners is not %d peer ids" % seats
+		session.misbehaved(sender, PongNetStartMessage.LABEL, reason)
 		return
-	var reason: String = PongNetProtocol.check_int(start[1], 1, 999, "health")
-	if sender != PongNetAuthority.SERVER_ID:
-		reason = "only the server starts a match"
-	var list: PackedInt64Array = PackedInt64Array()
-	if typeof(start[0]) == TYPE_PACKED_INT64_ARRAY:
-		list = start[0]
-	if reason.is_empty() and list.size() != seats:
-		reason = "owners is not %d peer ids" % seats
-	if not reason.is_empty():
-		session.misbehaved(sender, "start", reason)
-		return
-	var start_with: int = start[1]
-	_begin(list, start_with)
+	_begin(start.owners, start.health)

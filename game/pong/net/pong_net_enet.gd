@@ -1,7 +1,7 @@
 class_name PongNetEnet
 extends RefCounted
 ## What [PongNetSession] does to Godot's ENet peers: their timeouts and throttle, the
-## heartbeat's packets and limits, and dropping a peer at once.
+## heartbeat's limits, and dropping a peer at once.
 
 
 ## Sets [param packet_peer]'s timeouts from its measured round trip (see
@@ -23,27 +23,13 @@ static func tune(packet_peer: ENetPacketPeer) -> void:
 	)
 
 
-## Sends a heartbeat (one byte, unreliable, its own channel) through [param api]: a server
-## to every client, a client to the server once it has passed the version check. Ordered,
-## so that ENet never hands over a beat older than a stall notice that followed it.
-static func beat(api: SceneMultiplayer, server: bool) -> void:
-	var ordered: MultiplayerPeer.TransferMode = MultiplayerPeer.TRANSFER_MODE_UNRELIABLE_ORDERED
-	_send_watch(api, server, PongNetProtocol.PACKET_BEAT, ordered)
-
-
-## Says to the same peers, reliably on the heartbeat's channel (no beat overtakes it), that
-## this peer is about to stall.
-static func send_stall(api: SceneMultiplayer, server: bool) -> void:
-	_send_watch(api, server, PongNetProtocol.PACKET_STALL, MultiplayerPeer.TRANSFER_MODE_RELIABLE)
-
-
-static func _send_watch(
-	api: SceneMultiplayer, server: bool, kind: int, mode: MultiplayerPeer.TransferMode
-) -> void:
-	var packet: PackedByteArray = PackedByteArray([kind])
-	for peer: int in api.get_peers():
-		if server or peer == PongNetAuthority.SERVER_ID:
-			api.send_bytes(packet, peer, mode, PongNetProtocol.CHANNEL_BEAT)
+## Sets the timeouts of every connection of [param enet] from its round trip now: a
+## [param server]'s to each client, a client's to the server once connected.
+static func retune(enet: ENetMultiplayerPeer, api: SceneMultiplayer, server: bool) -> void:
+	if enet.get_connection_status() != MultiplayerPeer.CONNECTION_CONNECTED or api == null:
+		return
+	for id: int in api.get_peers() if server else PackedInt32Array([1]):
+		tune(enet.get_peer(id))
 
 
 ## The silence that drops the peer at the end of [param path], from ENet's measures of its

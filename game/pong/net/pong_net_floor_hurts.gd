@@ -1,21 +1,24 @@
 class_name PongNetFloorHurts
 extends RefCounted
 ## Floor bounces that cost health in a networked match. The ball's master sees the bounce
-## in its servo; a client master claims it from the server ([code]_claim[/code]: epoch,
+## in its servo; a client master claims it from the server ([PongNetFloorClaimMessage]: epoch,
 ## victim), the server, the authority, judges the claim against the ball's path as its own
 ## servo ran it ([PongNetHurtJudge]) and charges what it accepts: the health loss goes to
-## every peer ([code]_hurt[/code]: epoch, victim, "floor"), the master included, and every
-## peer applies the server's hurts and no one else's, in the server's order. A claim that
-## cannot be true (no such bounce here, a bounce charged already, faster than a ball can
-## bounce, from a peer that was not the master at its epoch) is refused and counted against
-## the sender. The server's own bounces as master are charged at once.
+## every peer ([PongNetFloorHurtMessage]: epoch, victim), the master included, and every
+## peer applies the server's hurts and no one else's (only the server sends them: the
+## router), in the server's order. A claim that cannot be true (no such bounce here, a
+## bounce charged already, faster than a ball can bounce, from a peer that was not the master
+## at its epoch) is refused and counted against the sender. The server's own bounces as
+## master are charged at once.
+
+## A floor bounce cost [param victim] a point at [param epoch], here as on every peer.
+signal hurt_applied(epoch: int, victim: int)
 
 var judge: PongNetHurtJudge = null
 
-var _wire: PongNetWire = null
+var _router: PongNetRouter = null
 var _match: PongMatch = null
 var _authority: PongNetAuthority = null
-var _report: PongNetReport = null
 var _reject: Callable = Callable()
 # Claims waiting for their bounce to show in our path: [sender, epoch, victim, arrived at].
 var _pending: Array[Array] = []
@@ -24,21 +27,18 @@ var _epoch_from: Dictionary[int, float] = {}
 var _seen_epoch: int = 0
 
 
-## Follows [param p_match]; sends through [param wire]; [param p_reject] as
+## Follows [param p_match]; sends and takes through [param router]; [param p_reject] as
 ## [PongNetWeapons] takes it.
 func _init(
-	wire: PongNetWire,
-	p_match: PongMatch,
-	authority: PongNetAuthority,
-	report: PongNetReport,
-	p_reject: Callable
+	router: PongNetRouter, p_match: PongMatch, authority: PongNetAuthority, p_reject: Callable
 ) -> void:
-	_wire = wire
+	_router = router
 	_match = p_match
 	_authority = authority
-	_report = report
 	_reject = p_reject
 	judge = PongNetHurtJudge.new(_match.court, _authority.owners.size())
+	_router.handle(PongNetFloorClaimMessage.SCHEMA_ID, on_claim)
+	_router.handle(PongNetFloorHurtMessage.SCHEMA_ID, on_hurt)
 
 
 ## An event of our servo: a floor bounce is recorded (server) and, when we are the
@@ -56,7 +56,10 @@ func on_event(event: PongEvent) -> void:
 	if on_server:
 		_charge(_authority.epoch, territory)
 	else:
-		_wire.send_to(PongNetAuthority.SERVER_ID, &"_claim", [_authority.epoch, territory])
+		var claim: PongNetFloorClaimMessage = PongNetFloorClaimMessage.new()
+		claim.epoch = _authority.epoch
+		claim.victim = territory
+		_router.send_to(PongNetAuthority.SERVER_ID, claim)
 
 
 ## Each frame on the server: the ball's path, and the claims that were waiting for it.
@@ -71,43 +74,31 @@ func observe(snapshot: PongState) -> void:
 	_settle()
 
 
-## Server: [param sender] claims that a floor bounce at [param epoch] cost [param victim].
-func on_claim(sender: int, epoch: Variant, victim: Variant) -> void:
+## Server: [param sender] claims that a floor bounce at its epoch cost its victim a point.
+func on_claim(sender: int, claim: PongNetFloorClaimMessage) -> void:
 	if not _is_server():
 		return
-	var reason: String = PongNetProtocol.check_int(epoch, 1, _authority.epoch, "epoch")
-	if reason.is_empty():
-		reason = PongNetProtocol.check_int(victim, 0, judge.seats - 1, "victim")
+	var reason: String = PongNetProtocol.check_seat(claim.victim, judge.seats, "victim")
+	if reason.is_empty() and (claim.epoch < 1 or claim.epoch > _authority.epoch):
+		reason = "epoch %d of %d" % [claim.epoch, _authority.epoch]
+	if reason.is_empty() and _authority.master_at(claim.epoch) != sender:
+		reason = "peer %d was not the master at epoch %d" % [sender, claim.epoch]
 	if not reason.is_empty():
-		_reject.call(sender, "floor claim", reason)
+		_reject.call(sender, PongNetFloorClaimMessage.LABEL, reason)
 		return
-	var at_epoch: int = epoch
-	var seat: int = victim
-	if _authority.master_at(at_epoch) != sender:
-		var why: String = "peer %d was not the master at epoch %d" % [sender, at_epoch]
-		_reject.call(sender, "floor claim", why)
-		return
-	_pending.append([sender, at_epoch, seat, _match.now])
+	_pending.append([sender, claim.epoch, claim.victim, _match.now])
 	_settle()
 
 
-## A health loss the server charged ([param sender] must be the server).
-func on_hurt(sender: int, epoch: Variant, player: Variant, cause: Variant) -> void:
-	var reason: String = ""
-	if sender != PongNetAuthority.SERVER_ID:
-		reason = "only the server charges floor bounces"
-	if reason.is_empty():
-		reason = PongNetProtocol.check_int(epoch, 0, _authority.epoch, "epoch")
-	if reason.is_empty():
-		reason = PongNetProtocol.check_int(player, 0, judge.seats - 1, "player")
-	if reason.is_empty() and (typeof(cause) != TYPE_STRING or cause != "floor"):
-		reason = "cause %s is not one the network carries" % str(cause).left(32)
+## A health loss the server charged (only the server sends it: the router).
+func on_hurt(sender: int, hurt: PongNetFloorHurtMessage) -> void:
+	var reason: String = PongNetProtocol.check_seat(hurt.victim, judge.seats, "victim")
+	if reason.is_empty() and hurt.epoch > _authority.epoch:
+		reason = "epoch %d of %d" % [hurt.epoch, _authority.epoch]
 	if not reason.is_empty():
-		_reject.call(sender, "hurt", reason)
+		_reject.call(sender, PongNetFloorHurtMessage.LABEL, reason)
 		return
-	var at_epoch: int = epoch
-	var victim: int = player
-	_apply(at_epoch, victim)
+	_apply(hurt.epoch, hurt.victim)
 
 
 func _is_server() -> bool:
@@ -138,10 +129,13 @@ func _settle() -> void:
 func _charge(epoch: int, victim: int) -> void:
 	if _match.rules.is_over():
 		return
-	_wire.send_all(&"_hurt", [epoch, victim, "floor"])
+	var hurt: PongNetFloorHurtMessage = PongNetFloorHurtMessage.new()
+	hurt.epoch = epoch
+	hurt.victim = victim
+	_router.send_all(hurt)
 	_apply(epoch, victim)
 
 
 func _apply(epoch: int, victim: int) -> void:
 	_match.rules.hurt(victim, PongRules.CAUSE_FLOOR)
-	_report.hurts.append([epoch, victim, "floor"])
+	hurt_applied.emit(epoch, victim)

@@ -1,5 +1,5 @@
 class_name PongNetPlay
-extends PongNetWire
+extends Node
 ## One networked match on this peer: the private haptic space. Every peer runs the servo
 ## and simulates the ball; the owner of the territory the ball is in is its master
 ## ([PongNetAuthority]): it sends the ball state on every new servo state (>= 60 Hz,
@@ -11,17 +11,28 @@ extends PongNetWire
 ## inputs of the local servo ([PongNetPoses], [PongNetRemotePlayer]). Health changes come
 ## as reliable messages: floor bounces from the server, which judges the master's claims
 ## against the ball's path ([PongNetFloorHurts]), weapon hurts from the victim's peer
-## ([PongNetWeapons]). Every received message is checked ([PongNetProtocol]); a bad one is
-## dropped and counted against its sender ([method PongNetSession.misbehaved]). Messages are
-## aged by [PongNetLatency].
-##
-## RPC surface: the same methods at the same path on every peer (/root/PongNet/Play).
-## The play node lives as long as the session (RPCs may arrive before or after a match).
+## ([PongNetWeapons]). Each message is a [PongNetMessage] that comes and goes through the
+## session's [PongNetRouter], which has checked its fields; the node that owns its state
+## checks it against the match (this one: the ball's, the transfers' and the owners'), and a
+## bad one is dropped and counted against its sender ([method PongNetSession.misbehaved]).
+## Messages are aged by [PongNetLatency]. The play node lives as long as the session; its
+## handlers and those of the match's parts are registered for each match.
 
 ## Health changed on every peer the same way; the match is over on every peer.
 signal finished(winner: int)
 ## The server changed who owns which seat (a player left).
 signal owners_changed
+## This peer, the master, sent a ball state.
+signal ball_state_sent
+## A state of the master's ball was taken into the jitter buffer, [param age_s] old.
+signal ball_state_taken(age_s: float)
+## A state of the master's ball came too late to play (an old epoch or one the play passed).
+signal ball_state_late
+## A transfer was applied ([param transfer]: epoch, kind, territory, master); the ball here
+## was [param correction_m] from where the transfer put it.
+signal transferred(transfer: Dictionary, correction_m: float)
+## Server: [param peer] left and the computer took its [param seats].
+signal seats_taken_over(peer: int, seats: PackedInt32Array)
 
 ## Servo seconds after a transfer during which the servo's state is not trusted: the
 ## set_ball of the transfer reaches the servo a tick later (no hand-off request, no
@@ -33,11 +44,16 @@ const CHUNK_S: float = PongMatch.STEP_CHUNK_S
 ## machine renders hundreds of frames a second), Hz.
 const MAX_STREAM_HZ: float = 125.0
 
+## The connection; its router carries every message.
+var session: PongNetSession = null
 var authority: PongNetAuthority = null
 var match_node: PongMatch = null
+## The match's bullets and mines, paddle poses and floor hurts while a match runs.
+var weapons: PongNetWeapons = null
+var poses: PongNetPoses = null
+var floor_hurts: PongNetFloorHurts = null
 ## Our ball in the servo, as the network moves it.
 var ball: PongNetBall = PongNetBall.new()
-var report: PongNetReport = PongNetReport.new()
 ## Seats this peer drives (its player's, or on the server the computer's).
 var local_seats: PackedInt32Array = PackedInt32Array()
 ## Stepped: the servo is stepped here, paced by the wall clock (headless peers).
@@ -74,14 +90,16 @@ func begin(p_match: PongMatch, p_authority: PongNetAuthority, seats: PackedInt32
 	match_node.event_seen.connect(_on_event)
 	match_node.event_seen.connect(_on_ball_touch)
 	match_node.match_over.connect(_on_match_over)
-	report.begin(authority.my_id)
 	if _latency == null:
 		_latency = PongNetLatency.new(session)
-	weapons = PongNetWeapons.new(self, match_node, authority, _reject, _age_of)
-	poses = PongNetPoses.new(self, match_node, authority, report, _reject, _age_of)
-	floor_hurts = PongNetFloorHurts.new(self, match_node, authority, report, _reject)
-	report.extra["weapons"] = weapons.to_dict()
-	report.extra["ball_stream"] = ball.to_dict()
+	var router: PongNetRouter = session.router
+	router.handle(PongNetBallMessage.SCHEMA_ID, _on_ball)
+	router.handle(PongNetHandOffMessage.SCHEMA_ID, _on_request)
+	router.handle(PongNetTransferMessage.SCHEMA_ID, _on_transfer)
+	router.handle(PongNetOwnersMessage.SCHEMA_ID, _on_owners)
+	weapons = PongNetWeapons.new(router, match_node, authority, _reject, _age_of)
+	poses = PongNetPoses.new(router, match_node, authority, _reject, _age_of)
+	floor_hurts = PongNetFloorHurts.new(router, match_node, authority, _reject)
 	# The servo's clock may have started over with the match.
 	_last_sent_time = -INF
 	_last_pose_time = -INF
@@ -95,6 +113,8 @@ func end() -> void:
 	_running = false
 	if weapons != null:
 		weapons.expire_pending(true)
+	for part: Object in [self, weapons, poses, floor_hurts]:
+		session.router.forget(part)
 	weapons = null
 	poses = null
 	floor_hurts = null
@@ -119,7 +139,6 @@ func frame(delta: float) -> void:
 	if not authority.is_master() and ball.follow(PongNetBall.clock_s(), _predictor, _gravity()):
 		# Only the newest state played becomes a command to the servo (whose queue holds 64).
 		_master_velocity = ball.buffer.played.velocity
-		report.extra["ball_stream"] = ball.to_dict()
 	var snapshot: PongState = match_node.snapshot
 	var sim_dt: float = match_node.now - _last_now
 	_last_now = match_node.now
@@ -133,15 +152,19 @@ func frame(delta: float) -> void:
 	if authority.is_master() and settled and due:
 		_last_sent_time = snapshot.time_s
 		_seq += 1
-		report.sent += 1
-		send_all(
-			&"_ball",
-			[authority.epoch, _seq, snapshot.time_s] + _ball_of(snapshot) + [_latency.my_leg_ms()]
-		)
+		var state: PongNetBallMessage = PongNetBallMessage.new()
+		state.epoch = authority.epoch
+		state.seq = _seq
+		state.time_s = snapshot.time_s
+		state.position = snapshot.ball_position + snapshot.ball_correction
+		state.velocity = snapshot.ball_velocity
+		state.spin = snapshot.ball_spin
+		state.leg_ms = _latency.my_leg_ms()
+		session.router.send_all(state)
+		ball_state_sent.emit()
 	if snapshot.time_s - _last_pose_time >= 1.0 / MAX_STREAM_HZ:
 		_last_pose_time = snapshot.time_s
 		poses.send(snapshot, local_seats, _latency.my_leg_ms())
-	report.sample(snapshot, authority.is_master())
 	floor_hurts.observe(snapshot)
 
 
@@ -163,9 +186,8 @@ func _referee(sim_dt: float) -> void:
 		match_node.court, aim, match_node.beginner
 	)
 	var territory: int = match_node.court.territory_at(serve.position)
-	issue(
-		PongNetProtocol.TRANSFER_SERVE, territory, serve.position, serve.velocity, Vector3.ZERO, 0
-	)
+	var serving: PongNetFacts.TransferKind = PongNetFacts.TransferKind.SERVE
+	issue(serving, territory, serve.position, serve.velocity, Vector3.ZERO, 0)
 
 
 ## Server: [param peer] left. Its seats go to the computer (driven here), and a ball it was
@@ -174,52 +196,59 @@ func _referee(sim_dt: float) -> void:
 func take_over(peer: int) -> void:
 	var was_master: bool = authority.master_peer == peer
 	var freed: PackedInt32Array = authority.release_peer(peer)
-	var left: Array = report.extra.get_or_add("peers_left", [])
-	left.append({"peer": peer, "seats": Array(freed), "wall_s": PongNetReport.now()})
-	send_all(&"_owners", [authority.owners])
+	seats_taken_over.emit(peer, freed)
+	var owners: PongNetOwnersMessage = PongNetOwnersMessage.new()
+	owners.owners = authority.owners
+	session.router.send_all(owners)
 	owners_changed.emit()
 	var pending: bool = authority.master_peer == 0 or not authority.is_master()
 	var ours: bool = authority.owner_of(authority.territory) == PongNetAuthority.SERVER_ID
 	if was_master or (pending and ours):
 		var s: PongState = match_node.snapshot
-		issue(
-			PongNetProtocol.TRANSFER_TAKEOVER,
-			s.territory,
-			s.ball_position,
-			s.ball_velocity,
-			s.ball_spin,
-			0
-		)
+		var takeover: PongNetFacts.TransferKind = PongNetFacts.TransferKind.TAKEOVER
+		issue(takeover, s.territory, s.ball_position, s.ball_velocity, s.ball_spin, 0)
 
 
 ## Server: issues the next transfer to everyone, itself included.
 func issue(
-	kind: int, territory: int, position: Vector3, velocity: Vector3, spin: Vector3, age_ms: int
+	kind: PongNetFacts.TransferKind,
+	territory: int,
+	position: Vector3,
+	velocity: Vector3,
+	spin: Vector3,
+	age_ms: int
 ) -> void:
-	var transfer: Dictionary = authority.next_transfer(kind, territory)
-	var args: Array = [
-		transfer["epoch"], kind, territory, transfer["master"], position, velocity, spin, age_ms
-	]
-	send_all(&"_transfer", args)
-	callv(&"_on_transfer", [authority.my_id] + args)
+	var next: Dictionary = authority.next_transfer(kind, territory)
+	var transfer: PongNetTransferMessage = PongNetTransferMessage.new()
+	transfer.epoch = next["epoch"]
+	transfer.kind = kind
+	transfer.territory = territory
+	transfer.master = next["master"]
+	transfer.position = position
+	transfer.velocity = velocity
+	transfer.spin = spin
+	transfer.age_ms = age_ms
+	session.router.send_all(transfer)
+	_on_transfer(authority.my_id, transfer)
 
 
+# The master's ball crossed into another territory: it asks the server for the hand-off,
+# with the ball as it gives it (the corrected one: a hand-off's correction may still be
+# gliding in).
 func _hand_off(snapshot: PongState) -> void:
-	var request: Dictionary = authority.relinquish(snapshot.territory)
-	if request.is_empty():
+	var relinquished: Dictionary = authority.relinquish(snapshot.territory)
+	if relinquished.is_empty():
 		return
-	var args: Array = [request["epoch"], request["territory"]] + _ball_of(snapshot)
+	var request: PongNetHandOffMessage = PongNetHandOffMessage.new()
+	request.epoch = relinquished["epoch"]
+	request.territory = relinquished["territory"]
+	request.position = snapshot.ball_position + snapshot.ball_correction
+	request.velocity = snapshot.ball_velocity
+	request.spin = snapshot.ball_spin
 	if authority.my_id == PongNetAuthority.SERVER_ID:
-		callv(&"_on_request", [authority.my_id] + args)
+		_on_request(authority.my_id, request)
 	else:
-		send_to(PongNetAuthority.SERVER_ID, &"_request", args)
-
-
-## The ball as the master gives it: the corrected one (a hand-off's correction may still be
-## gliding in), which followers and the server aim at.
-func _ball_of(snapshot: PongState) -> Array:
-	var corrected: Vector3 = snapshot.ball_position + snapshot.ball_correction
-	return [corrected, snapshot.ball_velocity, snapshot.ball_spin]
+		session.router.send_to(PongNetAuthority.SERVER_ID, request)
 
 
 ## How old a message of [param sender] stamped with its servo time [param sent_at] is, s
@@ -230,142 +259,97 @@ func _age_of(sender: int, sent_at: float, reported_leg_ms: int = -1) -> float:
 
 
 func _reject(sender: int, what: String, reason: String) -> void:
-	report.refuse(what)
-	super(sender, what, reason)
+	session.misbehaved(sender, what, reason)
 
 
-# --- handlers of PongNetWire, with the sender's id ---
+# --- received, their fields checked (PongNetRouter): the checks against this match ---
 
 
-func _on_ball(
-	sender: int,
-	epoch: Variant,
-	seq: Variant,
-	time_s: Variant,
-	position: Variant,
-	velocity: Variant,
-	spin: Variant,
-	leg_ms: Variant
-) -> void:
+func _on_ball(sender: int, state: PongNetBallMessage) -> void:
 	if not _running:
 		return
 	var reason: String = PongNetProtocol.check_ball(
-		epoch, seq, time_s, position, velocity, spin, match_node.court, _max_spin()
+		state.position, state.velocity, state.spin, match_node.court, _max_spin()
 	)
-	if reason.is_empty():
-		reason = PongNetProtocol.check_int(leg_ms, 0, 10000, "leg")
 	if not reason.is_empty():
-		_reject(sender, "ball state", reason)
+		_reject(sender, PongNetBallMessage.LABEL, reason)
 		return
-	var state_epoch: int = epoch
-	var state_seq: int = seq
-	var sent_at: float = time_s
-	var leg: int = leg_ms
 	# The stream is unordered: the authority judges the epoch and the sender, the buffer the
 	# order (a state older than the newest may fill a gap).
-	reason = authority.accept_state(sender, state_epoch, state_seq)
-	var in_stream: bool = state_epoch == authority.epoch and sender == authority.master_peer
+	reason = authority.accept_state(sender, state.epoch, state.seq)
+	var in_stream: bool = state.epoch == authority.epoch and sender == authority.master_peer
 	if not reason.is_empty() and not in_stream:
-		report.late += 1
+		ball_state_late.emit()
 		return
 	var arrival: float = PongNetBall.clock_s()
-	var age: float = _age_of(sender, sent_at, leg)
-	var state: PongNetBallBuffer.State = PongNetBallBuffer.State.new(
-		state_seq, sent_at, [position, velocity, spin], arrival, age
+	var age: float = _age_of(sender, state.time_s, state.leg_ms)
+	var buffered: PongNetBallBuffer.State = PongNetBallBuffer.State.new(
+		state.seq, state.time_s, [state.position, state.velocity, state.spin], arrival, age
 	)
-	var taken: PongNetBallBuffer.Taken = ball.take(state)
+	var taken: PongNetBallBuffer.Taken = ball.take(buffered)
 	if taken == PongNetBallBuffer.Taken.DUPLICATE or taken == PongNetBallBuffer.Taken.LATE:
-		report.late += 1
+		ball_state_late.emit()
 		return
-	report.states += 1
-	report.ages.append(age)
+	ball_state_taken.emit(age)
 
 
-func _on_request(
-	sender: int,
-	epoch: Variant,
-	territory: Variant,
-	position: Variant,
-	velocity: Variant,
-	spin: Variant
-) -> void:
+func _on_request(sender: int, request: PongNetHandOffMessage) -> void:
 	if not _running or authority.my_id != PongNetAuthority.SERVER_ID:
 		return
 	var reason: String = PongNetProtocol.check_ball(
-		epoch, 0, 0.0, position, velocity, spin, match_node.court, _max_spin()
+		request.position, request.velocity, request.spin, match_node.court, _max_spin()
 	)
 	if reason.is_empty():
-		reason = PongNetProtocol.check_int(territory, 0, authority.owners.size() - 1, "territory")
+		reason = PongNetProtocol.check_seat(request.territory, authority.owners.size(), "territory")
 	if not reason.is_empty():
-		_reject(sender, "hand-off request", reason)
+		_reject(sender, PongNetHandOffMessage.LABEL, reason)
 		return
-	var seen: int = epoch
-	var to: int = territory
-	var state: Array[Vector3] = [position, velocity, spin]
-	if not authority.check_request(sender, seen, to).is_empty():
+	if not authority.check_request(sender, request.epoch, request.territory).is_empty():
 		return  # A race with a newer transfer (the authority counts it), not a bad message.
+	var handoff: PongNetFacts.TransferKind = PongNetFacts.TransferKind.HANDOFF
 	var age_ms: int = _latency.leg_ms(sender)
-	issue(PongNetProtocol.TRANSFER_HANDOFF, to, state[0], state[1], state[2], age_ms)
+	issue(handoff, request.territory, request.position, request.velocity, request.spin, age_ms)
 
 
-func _on_transfer(
-	sender: int,
-	epoch: Variant,
-	kind: Variant,
-	territory: Variant,
-	master: Variant,
-	position: Variant,
-	velocity: Variant,
-	spin: Variant,
-	age_ms: Variant
-) -> void:
+func _on_transfer(sender: int, transfer: PongNetTransferMessage) -> void:
 	if not _running:
 		return
 	var reason: String = PongNetProtocol.check_ball(
-		epoch, 0, 0.0, position, velocity, spin, match_node.court, _max_spin()
+		transfer.position, transfer.velocity, transfer.spin, match_node.court, _max_spin()
 	)
-	for extra: String in [
-		PongNetProtocol.check_int(kind, 0, PongNetProtocol.TRANSFER_NAMES.size() - 1, "kind"),
-		PongNetProtocol.check_int(territory, 0, authority.owners.size() - 1, "territory"),
-		PongNetProtocol.check_int(master, 0, 1 << 31, "master"),
-		PongNetProtocol.check_int(age_ms, 0, 10000, "age"),
-	]:
-		reason = extra if reason.is_empty() else reason
 	if reason.is_empty():
-		var transfer: Dictionary = {
-			"epoch": epoch, "kind": kind, "territory": territory, "master": master
+		reason = PongNetProtocol.check_seat(
+			transfer.territory, authority.owners.size(), "territory"
+		)
+	if reason.is_empty():
+		var entry: Dictionary = {
+			"epoch": transfer.epoch,
+			"kind": transfer.kind,
+			"territory": transfer.territory,
+			"master": transfer.master,
 		}
-		reason = authority.apply_transfer(sender, transfer)
+		reason = authority.apply_transfer(sender, entry)
 	if not reason.is_empty():
-		_reject(sender, "transfer", reason)
+		_reject(sender, PongNetTransferMessage.LABEL, reason)
 		return
-	report.transfer(authority.history[-1])
 	ball.restart()
 	_master_velocity = Vector3.INF
-	var state: Array[Vector3] = [position, velocity, spin]
-	var sent_age_ms: int = age_ms
-	var age: float = (sent_age_ms + _latency.my_leg_ms()) / 1000.0
+	var age: float = (transfer.age_ms + _latency.my_leg_ms()) / 1000.0
 	var target: Array[Vector3] = PongNetSmoother.extrapolate(
-		_predictor, state[0], state[1], _gravity(), age
+		_predictor, transfer.position, transfer.velocity, _gravity(), age
 	)
-	var local: Vector3 = ball.local()[0]
-	report.handoff_corrections.append((target[0] - local).length())
-	var serve: bool = kind == PongNetProtocol.TRANSFER_SERVE
-	ball.transfer(serve, [target[0], target[1], state[2]], age, PongNetBall.clock_s())
+	transferred.emit(authority.history[-1], (target[0] - ball.local()[0]).length())
+	var serve: bool = transfer.kind == PongNetFacts.TransferKind.SERVE
+	ball.transfer(serve, [target[0], target[1], transfer.spin], age, PongNetBall.clock_s())
 	_settle_until = match_node.snapshot.time_s + SETTLE_S
 
 
-func _on_owners(sender: int, owners: Variant) -> void:
-	if sender != PongNetAuthority.SERVER_ID or typeof(owners) != TYPE_PACKED_INT64_ARRAY:
-		_reject(sender, "owners", "not from the server or not a PackedInt64Array")
+func _on_owners(sender: int, owners: PongNetOwnersMessage) -> void:
+	if owners.owners.size() != authority.owners.size():
+		var seats: Array[int] = [owners.owners.size(), authority.owners.size()]
+		_reject(sender, PongNetOwnersMessage.LABEL, "%d seats, the match has %d" % seats)
 		return
-	var list: PackedInt64Array = owners
-	if list.size() != authority.owners.size():
-		_reject(
-			sender, "owners", "%d seats, the match has %d" % [list.size(), authority.owners.size()]
-		)
-		return
-	authority.owners = list
+	authority.owners = owners.owners
 	owners_changed.emit()
 
 
@@ -375,7 +359,6 @@ func _on_event(event: PongEvent) -> void:
 
 
 func _on_match_over(winner: int) -> void:
-	report.winner = winner
 	finished.emit(winner)
 
 

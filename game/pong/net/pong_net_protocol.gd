@@ -1,35 +1,21 @@
 class_name PongNetProtocol
 extends RefCounted
-## The wire facts of networked Haptic Battle Pong, defined once, and the checks every
-## received message passes before it touches the game. A message that fails a check is
-## dropped with one log line naming the sender and the reason; the game goes on.
-##
-## Channels (ENet, through SceneMultiplayer's transfer_channel): the ball state stream
-## (unreliable) and the pose stream (unreliable_ordered) each get their own channel so they
-## never queue behind reliable traffic; lobby, hand-offs and rules share one reliable channel.
+## The facts of networked Haptic Battle Pong that are not a message's: the version, the
+## seats, ENet's timeouts and slots, the heartbeat, the budget of bad messages; and the checks
+## of a received message against this match's court (its fields' own limits are the schema's,
+## checked as it is decoded: [code]pong_net_messages.schema.toml[/code], [PongNetRouter]).
+## A message that fails a check is dropped and counted against its sender
+## ([method PongNetSession.misbehaved]); the game goes on.
 
 ## Sent and compared at connect (auth): peers of another protocol version are refused.
-const VERSION: String = "hbp-net-3"
+const VERSION: String = "hbp-net-4"
 const DEFAULT_PORT: int = 7420
-## The client's first message (its hello) goes on the channel of the version check. Godot
-## 4.6 admits a client once each side has sent the other its "auth complete" on channel 0,
-## and drops (with an engine error) anything else the client sends before its own "complete"
-## has arrived: when that packet was lost and ENet was resending it, a hello on another
-## channel overtook it and was thrown away, and the client never joined (seen in CI and on
-## lossy paths: docs/pong-networking.md). On channel 0 ENet delivers it after the "complete".
-const CHANNEL_HANDSHAKE: int = 0
-## The ball stream: unreliable and unordered (ENet's unsequenced), so a state that arrives
-## after a newer one still reaches the follower's jitter buffer ([PongNetBallBuffer]); on an
-## unreliable_ordered channel ENet drops it, two thirds of the states on a path that reorders.
-const CHANNEL_BALL: int = 1
-const CHANNEL_POSE: int = 2
-const CHANNEL_RELIABLE: int = 3
-## The heartbeat's channel (raw packets, unreliable): nothing queues in front of it.
-const CHANNEL_BEAT: int = 4
 ## Seats (territories) a match may have.
 const MAX_SEATS: int = 4
 ## The courts a match can have: two players, or four on a square court.
 const SEAT_COUNTS: Array[int] = [2, MAX_SEATS]
+## Longest player name, characters (the lobby's field; the hello carries up to
+## [constant PongNetFacts.NET_MAX_NAME_BYTES] bytes of it).
 const MAX_NAME_LENGTH: int = 24
 ## Longest auth payload accepted, bytes (a version string).
 const MAX_AUTH_BYTES: int = 64
@@ -38,18 +24,6 @@ const MAX_AUTH_BYTES: int = 64
 const POSITION_MARGIN_M: float = 1.0
 ## Received speeds may exceed the servo's caps by this factor (the sender's extrapolation).
 const SPEED_MARGIN: float = 1.5
-## Ball stream rate the master keeps at least, Hz (it sends on each new servo state).
-const MIN_STREAM_HZ: float = 60.0
-## Transfer kinds, in the order ties would be broken (the server sequences them, so ties
-## never happen on the wire; the rank is for the log).
-const TRANSFER_SERVE: int = 0
-const TRANSFER_HANDOFF: int = 1
-const TRANSFER_TAKEOVER: int = 2
-const TRANSFER_NAMES: Array[String] = ["serve", "handoff", "takeover"]
-## What a weapon hurt names as its cause (the rules' causes a weapon has).
-const WEAPON_CAUSES: Array[String] = ["bullet", "mine"]
-## Highest bullet number a seat may send (a shot every 0.4 s: a few million years).
-const MAX_WEAPON_ID: int = 1 << 30
 ## A seat's shots are at least its cooldown apart in its servo's time; this share of it is
 ## accepted (the firer counts the cooldown in game time, which a real-time game's frames
 ## round).
@@ -101,7 +75,7 @@ const AUTH_TIMEOUT_S: float = 15.0
 ## unable to beat. Until a first beat the handshake's bound holds.
 const FIRST_BEAT_TIMEOUT_S: float = AUTH_TIMEOUT_S
 
-## The heartbeat: every connected pair sends each other a one-byte raw packet this often, and
+## The heartbeat: every connected pair sends each other a [PongNetBeatMessage] this often, and
 ## drops the other when nothing has come from it for [method heartbeat_timeout_s]. It does
 ## not wait for ENet, which notices a dead peer only when a reliable packet goes unanswered
 ## for its whole retransmission schedule (a client killed with nothing reliable in flight
@@ -114,17 +88,6 @@ const HEARTBEAT_MISSES: int = 4
 ## four-peer match on two cores several times over; the ceiling is the promise.
 const HEARTBEAT_TIMEOUT_MIN_S: float = 1.0
 const HEARTBEAT_TIMEOUT_MAX_S: float = 3.0
-## Raw packets (SceneMultiplayer.send_bytes) start with their kind: a heartbeat, the reason
-## the server refuses a client (UTF-8 after the kind byte), or a peer's word that it is
-## about to stall (it loads a match's court: over a second of silence with four peers on two
-## busy cores), sent reliably on the heartbeat's channel, after which its silence may last
-## the ceiling until its next beat.
-const PACKET_BEAT: int = 1
-const PACKET_REFUSAL: int = 2
-const PACKET_STALL: int = 3
-## Longest refusal reason sent or taken, bytes.
-const MAX_REFUSAL_BYTES: int = 200
-
 ## ENet peer slots of a server. ENet keeps a peer for every CONNECT datagram it answers
 ## until the handshake completes or about 30 s pass, and Godot shows no such half-open peer
 ## to a script (ENetConnection.get_peers() lists a peer only once it has connected), so
@@ -144,74 +107,11 @@ const HALF_OPEN_PER_ADDRESS: int = MAX_SEATS
 const MISBEHAVIOUR_BUDGET: int = 16
 
 
-## Why the arguments of an RPC ([param args], taken as a variadic list so that the engine
-## never fails a call for its count) are not [param count] of them, or "".
-static func check_arity(args: Array, count: int) -> String:
-	if args.size() != count:
-		return "%d arguments, not %d" % [args.size(), count]
-	return ""
-
-
-## Why [param value] is not a finite [Vector3] within [param limit] of the origin along
-## each axis ([param limit] per component), or "" when it is.
-static func check_vector(value: Variant, limit: Vector3, what: String) -> String:
-	if typeof(value) != TYPE_VECTOR3:
-		return "%s is a %s, not a Vector3" % [what, type_string(typeof(value))]
-	var v: Vector3 = value
-	if not v.is_finite():
-		return "%s is not finite" % what
-	if absf(v.x) > limit.x or absf(v.y) > limit.y or absf(v.z) > limit.z:
-		return "%s %s is out of range" % [what, v]
-	return ""
-
-
-## Why [param value] is not an int in [[param low], [param high]], or "".
-static func check_int(value: Variant, low: int, high: int, what: String) -> String:
-	if typeof(value) != TYPE_INT:
-		return "%s is a %s, not an int" % [what, type_string(typeof(value))]
-	var i: int = value
-	if i < low or i > high:
-		return "%s %d is out of [%d, %d]" % [what, i, low, high]
-	return ""
-
-
-## Why [param value] is not a finite float (an int is accepted) in [[param low],
-## [param high]], or "".
-static func check_float(value: Variant, low: float, high: float, what: String) -> String:
-	if typeof(value) != TYPE_FLOAT and typeof(value) != TYPE_INT:
-		return "%s is a %s, not a number" % [what, type_string(typeof(value))]
-	var f: float = value
-	if not is_finite(f) or f < low or f > high:
-		return "%s %s is out of [%s, %s]" % [what, f, low, high]
-	return ""
-
-
-## Why [param value] is not a player name, or "".
-static func check_name(value: Variant) -> String:
-	if typeof(value) != TYPE_STRING:
-		return "name is a %s, not a String" % type_string(typeof(value))
-	var text: String = value
-	if text.strip_edges().is_empty() or text.length() > MAX_NAME_LENGTH:
-		return "name must have 1 to %d characters" % MAX_NAME_LENGTH
-	return ""
-
-
-## Why the server's lobby ([param rows] of [peer, name, seat, ready] for a court of
-## [param seat_count] seats) is malformed, or "".
-static func check_lobby(rows: Variant, seat_count: Variant) -> String:
-	if typeof(rows) != TYPE_ARRAY:
-		return "rows are a %s, not an Array" % type_string(typeof(rows))
-	if typeof(seat_count) != TYPE_INT or not SEAT_COUNTS.has(seat_count):
-		return "%s seats" % str(seat_count).left(16)
-	var list: Array = rows
-	for row: Variant in list:
-		var r: Array = row if typeof(row) == TYPE_ARRAY else []
-		if r.size() != 4 or typeof(r[0]) != TYPE_INT or typeof(r[2]) != TYPE_INT:
-			return "a malformed row"
-		if typeof(r[3]) != TYPE_BOOL or not check_name(r[1]).is_empty():
-			return "a malformed row"
-		if r[2] < 0 or r[2] >= seat_count:
-			return "a row with seat %d" % r[2]
+## Why [param name] is not a player's name (1 to [constant MAX_NAME_LENGTH] characters, not
+## all blank), or "".
+static func check_name(name: String) -> String:
+	if name.strip_edges().is_empty() or name.length() > MAX_NAME_LENGTH:
+		return "a name must have 1 to %d characters" % MAX_NAME_LENGTH
 	return ""
 
 
@@ -221,59 +121,32 @@ static func position_limit(court: PongCourt) -> Vector3:
 	return Vector3(court.half_width, court.wall_height, court.half_length) + margin
 
 
-## The checks of one ball state {epoch, seq, time, position, velocity, spin}: "" or why
-## not. [param max_spin] in rad/s.
+## Why [param value] is not within [param limit] of the origin along each axis, or "".
+static func check_box(value: Vector3, limit: Vector3, what: String) -> String:
+	if absf(value.x) > limit.x or absf(value.y) > limit.y or absf(value.z) > limit.z:
+		return "%s %s is out of range" % [what, value]
+	return ""
+
+
+## Why a ball ([param position], [param velocity], [param spin]) cannot be in this match's
+## [param court] (its box, its speed cap, the spin cap [param max_spin] in rad/s, each with
+## the sender's extrapolation's margin), or "".
 static func check_ball(
-	epoch: Variant,
-	seq: Variant,
-	time_s: Variant,
-	position: Variant,
-	velocity: Variant,
-	spin: Variant,
-	court: PongCourt,
-	max_spin: float
+	position: Vector3, velocity: Vector3, spin: Vector3, court: PongCourt, max_spin: float
 ) -> String:
-	var speed: float = court.max_ball_speed * SPEED_MARGIN
-	var spin_limit: float = max_spin * SPEED_MARGIN
 	for reason: String in [
-		check_int(epoch, 0, 1 << 30, "epoch"),
-		check_int(seq, 0, 1 << 40, "seq"),
-		check_float(time_s, 0.0, 1e7, "time"),
-		check_vector(position, position_limit(court), "position"),
-		check_vector(velocity, Vector3.ONE * speed, "velocity"),
-		check_vector(spin, Vector3.ONE * spin_limit, "spin"),
+		check_box(position, position_limit(court), "position"),
+		check_box(velocity, Vector3.ONE * court.max_ball_speed * SPEED_MARGIN, "velocity"),
+		check_box(spin, Vector3.ONE * max_spin * SPEED_MARGIN, "spin"),
 	]:
 		if not reason.is_empty():
 			return reason
 	return ""
 
 
-## The checks of one pose {seat, avatar, paddle offset, paddle velocity, normal}: "" or
-## why not. [param reach]: the paddle's reach from its avatar, metres.
-static func check_pose(
-	seat: Variant,
-	seats: int,
-	avatar: Variant,
-	offset: Variant,
-	velocity: Variant,
-	normal: Variant,
-	court: PongCourt,
-	reach: float
-) -> String:
-	var reach_limit: Vector3 = Vector3.ONE * (reach + POSITION_MARGIN_M)
-	for reason: String in [
-		check_int(seat, 0, seats - 1, "seat"),
-		check_vector(avatar, position_limit(court), "avatar"),
-		check_vector(offset, reach_limit, "paddle offset"),
-		check_vector(velocity, Vector3.ONE * court.max_ball_speed * 4.0, "paddle velocity"),
-		check_vector(normal, Vector3.ONE * 1.01, "normal"),
-	]:
-		if not reason.is_empty():
-			return reason
-	var n: Vector3 = normal
-	if absf(n.length() - 1.0) > 0.01:
-		return "normal is not a unit vector"
-	return ""
+## Why a seat number [param seat] is not one of a match of [param seats], or "".
+static func check_seat(seat: int, seats: int, what: String = "seat") -> String:
+	return "" if seat < seats else "%s %d of a court of %d" % [what, seat, seats]
 
 
 ## ENet's hard cap on an unacknowledged packet for a path of round trip [param rtt_ms]
@@ -307,78 +180,3 @@ static func near_territory(point: Vector3, territory: int, seats: int, margin: f
 		if PongCourt.territory_of(point + offset, seats) == territory:
 			return true
 	return false
-
-
-## Why [param value] is not a unit [Vector3] (within 1 %), or "".
-static func check_unit(value: Variant, what: String) -> String:
-	var reason: String = check_vector(value, Vector3.ONE * 1.01, what)
-	if not reason.is_empty():
-		return reason
-	var v: Vector3 = value
-	return "%s is not a unit vector" % what if absf(v.length() - 1.0) > 0.01 else ""
-
-
-## The checks of one shot {seat, id, origin, direction, time}: "" or why not.
-static func check_bullet(
-	seat: Variant,
-	seats: int,
-	id: Variant,
-	origin: Variant,
-	direction: Variant,
-	time_s: Variant,
-	court: PongCourt
-) -> String:
-	for reason: String in [
-		check_int(seat, 0, seats - 1, "seat"),
-		check_int(id, 0, MAX_WEAPON_ID, "bullet id"),
-		check_vector(origin, position_limit(court), "origin"),
-		check_unit(direction, "direction"),
-		check_float(time_s, 0.0, 1e7, "time"),
-	]:
-		if not reason.is_empty():
-			return reason
-	return ""
-
-
-## The checks of one mine {seat, id, position, kind}: "" or why not. A mine lies on the
-## floor inside the walls, in another seat's territory, and its kind is the seat's
-## [param id]-th ([constant PongMines.KINDS]).
-static func check_mine(
-	seat: Variant, seats: int, id: Variant, position: Variant, kind: Variant, court: PongCourt
-) -> String:
-	var floor_box: Vector3 = Vector3(court.half_width, FLOOR_TOLERANCE_M, court.half_length)
-	for reason: String in [
-		check_int(seat, 0, seats - 1, "seat"),
-		check_int(id, 0, PongMines.KINDS.size() - 1, "mine id"),
-		check_vector(position, floor_box, "mine position"),
-	]:
-		if not reason.is_empty():
-			return reason
-	var mine_id: int = id
-	if typeof(kind) != TYPE_STRING or kind != PongMines.KINDS[mine_id]:
-		return (
-			"kind %s is not mine %d's, %s" % [str(kind).left(32), mine_id, PongMines.KINDS[mine_id]]
-		)
-	var owner: int = seat
-	var at: Vector3 = position
-	if PongCourt.territory_of(at, seats) == owner:
-		return "mine in its owner's own territory"
-	return ""
-
-
-## The checks of one weapon hurt {victim, cause, weapon seat, weapon id}: "" or why not.
-static func check_weapon_hurt(
-	victim: Variant, seats: int, cause: Variant, seat: Variant, id: Variant
-) -> String:
-	for reason: String in [
-		check_int(victim, 0, seats - 1, "victim"),
-		check_int(seat, 0, seats - 1, "weapon seat"),
-		check_int(id, 0, MAX_WEAPON_ID, "weapon id"),
-	]:
-		if not reason.is_empty():
-			return reason
-	if typeof(cause) != TYPE_STRING or not WEAPON_CAUSES.has(cause):
-		return "cause %s is not a weapon" % str(cause).left(32)
-	if victim == seat:
-		return "a weapon never hurts its owner"
-	return ""

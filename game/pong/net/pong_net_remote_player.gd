@@ -23,30 +23,17 @@ func _init(p_player: int) -> void:
 	kinematic = true
 
 
-## A pose of this player: [param age_s] seconds old when it arrived at [param now].
-func set_pose(
-	now: float,
-	age_s: float,
-	avatar: Vector3,
-	offset: Vector3,
-	velocity: Vector3,
-	normal: Vector3,
-	flags: int
-) -> void:
-	intent.avatar = avatar
-	intent.paddle_offset = offset
-	intent.paddle_velocity = velocity
-	intent.normal = normal.normalized()
-	intent.spin = flags & 1 != 0
-	intent.gun = flags & 2 != 0
+## A [param pose] of this player: [param age_s] seconds old when it arrived at [param now].
+func set_pose(now: float, age_s: float, pose: PongNetPoseMessage) -> void:
+	intent.avatar = pose.avatar
+	intent.paddle_offset = pose.offset
+	intent.paddle_velocity = pose.velocity
+	intent.normal = pose.normal.normalized()
+	intent.spin = pose.spin
+	intent.gun = pose.gun
 	_received_at = now
 	_age_s = age_s
 	poses += 1
-
-
-## The pose flags of [param p_intent] (spin, gun).
-static func flags_of(p_intent: PongIntent) -> int:
-	return (1 if p_intent.spin else 0) | (2 if p_intent.gun else 0)
 
 
 func update(now: float, _dt: float, _snapshot: PongState, _opponent_avatar: Vector3) -> PongIntent:

@@ -5,8 +5,9 @@ extends Node
 ## peer 1) or joins, checks the protocol version at connect (auth: each side sends its
 ## [constant PongNetProtocol.VERSION]; a mismatch is refused with a message on both sides)
 ## and shortens ENet's timeouts; the cap follows each connection's round trip.
-## [br]A heartbeat ([PongNetHeartbeat], one-byte raw packets each way) drops a peer silent
-## for [method PongNetProtocol.heartbeat_timeout_s] (1 to 3 s) at once, whatever ENet's
+## [br]Every message comes and goes through its [member router] as a raw packet. A heartbeat
+## ([PongNetHeartbeat], a [PongNetBeatMessage] each way) drops a peer silent for
+## [method PongNetProtocol.heartbeat_timeout_s] (1 to 3 s) at once, whatever ENet's
 ## retransmissions do. The server takes a few unauthenticated connections per address
 ## ([PongNetHalfOpen]), tells a client it refuses why ([method refuse]), and disconnects a
 ## peer whose bad messages reach the budget ([method misbehaved], [PongNetBudget]).
@@ -23,6 +24,8 @@ signal peer_left(peer: int)
 signal server_lost
 ## A peer went silent and was dropped after [param silence_s] seconds (the heartbeat).
 signal peer_silent(peer: int, silence_s: float)
+## [param peer] sent a bad message: a [param what] that [param reason] ([method misbehaved]).
+signal bad_message(peer: int, what: String, reason: String)
 
 ## Seconds a refused client keeps its connection, so it learns why before it is dropped.
 const REFUSAL_GRACE_S: float = 0.5
@@ -30,17 +33,14 @@ const REFUSAL_GRACE_S: float = 0.5
 var is_server: bool = false
 ## The last refusal or failure, for the UI.
 var last_error: String = ""
-## Seconds from a peer's loss to its notice are the ENet timeouts' business; this is when
-## the notice came (Time.get_ticks_msec) by peer, for the report.
-var left_at_ms: Dictionary[int, int] = {}
 ## The version this peer claims (a test may set another to be refused).
 var version: String = PongNetProtocol.VERSION
 ## How the server was lost (a client): it left, or it went silent.
 var lost_reason: String = ""
 ## Bad messages by peer (see [method misbehaved]).
 var budget: PongNetBudget = PongNetBudget.new()
-## Whether to send heartbeats (a test turns them off to play a peer that hangs).
-var beating: bool = true
+## Every message of this peer comes and goes through it.
+var router: PongNetRouter = null
 
 var _peer: ENetMultiplayerPeer = null
 var _retune_in: float = 0.0
@@ -50,6 +50,15 @@ var _half_open: PongNetHalfOpen = PongNetHalfOpen.new()
 var _refusal: String = ""
 # Peers to drop at the next frame (see drop_now).
 var _drops: Array[int] = []
+
+
+func _init() -> void:
+	router = PongNetRouter.new()
+	router.name = "Router"
+	add_child(router)
+	router.handle(PongNetBeatMessage.SCHEMA_ID, _on_beat)
+	router.handle(PongNetStallMessage.SCHEMA_ID, _on_stall)
+	router.handle(PongNetRefusalMessage.SCHEMA_ID, _on_refusal)
 
 
 ## Hosts on [param port] (all interfaces unless [param bind_ip]); "" or the error.
@@ -98,7 +107,7 @@ func close() -> void:
 		closing.close()
 	if api != null:
 		api.multiplayer_peer = OfflineMultiplayerPeer.new()
-		for pair: Array in _connections(api) + [[api.peer_packet, _on_packet]]:
+		for pair: Array in _connections(api) + [[api.peer_packet, router.receive]]:
 			var sig: Signal = pair[0]
 			var handler: Callable = pair[1]
 			if sig.is_connected(handler):
@@ -130,12 +139,11 @@ func refuse(peer: int, reason: String) -> void:
 	var api: SceneMultiplayer = _api()
 	if not is_server or api == null or not api.get_peers().has(peer):
 		return
-	var text: PackedByteArray = reason.to_utf8_buffer()
-	text.resize(mini(text.size(), PongNetProtocol.MAX_REFUSAL_BYTES))
-	var packet: PackedByteArray = PackedByteArray([PongNetProtocol.PACKET_REFUSAL]) + text
-	api.send_bytes(
-		packet, peer, MultiplayerPeer.TRANSFER_MODE_RELIABLE, PongNetProtocol.CHANNEL_RELIABLE
-	)
+	var refusal: PongNetRefusalMessage = PongNetRefusalMessage.new()
+	refusal.reason = reason
+	while refusal.reason.to_utf8_buffer().size() > PongNetFacts.NET_MAX_REASON_BYTES:
+		refusal.reason = refusal.reason.left(-1)
+	router.send_to(peer, refusal)
 	get_tree().create_timer(REFUSAL_GRACE_S, true, false, true).timeout.connect(drop_now.bind(peer))
 
 
@@ -143,6 +151,7 @@ func refuse(peer: int, reason: String) -> void:
 ## logged, the rest counted; a server disconnects the peer when its count reaches the budget.
 ## Returns whether the peer is being disconnected for it.
 func misbehaved(peer: int, what: String, reason: String) -> bool:
+	bad_message.emit(peer, what, reason)
 	var verdict: PongNetBudget.Verdict = budget.note(peer)
 	var line: String = budget.log_line(verdict, peer, what, reason)
 	if verdict == PongNetBudget.Verdict.DISCONNECT and not is_server:
@@ -166,9 +175,8 @@ func drop_now(peer: int) -> void:
 ## silence may then last the ceiling, [constant PongNetProtocol.HEARTBEAT_TIMEOUT_MAX_S],
 ## until its next beat.
 func announce_stall() -> void:
-	var api: SceneMultiplayer = _api()
-	if _peer != null and api != null:
-		PongNetEnet.send_stall(api, is_server)
+	if _peer != null and _api() != null:
+		_send_watch(PongNetStallMessage.new())
 
 
 func _exit_tree() -> void:
@@ -182,27 +190,16 @@ func _process(delta: float) -> void:
 		_flush_drops()
 		_beat()
 	_retune_in -= delta
-	if _peer == null or _retune_in > 0.0:
-		return
-	_retune_in = 1.0
-	var ids: Array[int] = []
-	if is_server:
-		ids.assign(multiplayer.get_peers())
-	elif _peer.get_connection_status() == MultiplayerPeer.CONNECTION_CONNECTED:
-		ids.append(1)
-	for id: int in ids:
-		_tune(id)
-
-
-func _tune(id: int) -> void:
-	PongNetEnet.tune(_peer.get_peer(id))
+	if _peer != null and _retune_in <= 0.0:
+		_retune_in = 1.0
+		PongNetEnet.retune(_peer, _api(), is_server)
 
 
 func _install() -> void:
 	var api: SceneMultiplayer = _api()
 	api.auth_callback = _on_auth
 	api.auth_timeout = PongNetProtocol.AUTH_TIMEOUT_S
-	for pair: Array in _connections(api) + [[api.peer_packet, _on_packet]]:
+	for pair: Array in _connections(api) + [[api.peer_packet, router.receive]]:
 		var sig: Signal = pair[0]
 		var handler: Callable = pair[1]
 		if not sig.is_connected(handler):
@@ -233,8 +230,8 @@ func _beat() -> void:
 		return
 	var now: float = _now_s()
 	var peers: PackedInt32Array = api.get_peers()
-	if beating and _heartbeat.due(now):
-		PongNetEnet.beat(api, is_server)
+	if _heartbeat.due(now):
+		_send_watch(PongNetBeatMessage.new())
 	var limit_of: Callable = func(peer: int) -> float:
 		if _heartbeat.is_stalling(peer) or not peers.has(peer):
 			return PongNetProtocol.HEARTBEAT_TIMEOUT_MAX_S
@@ -266,21 +263,24 @@ func _flush_drops() -> void:
 	PongNetEnet.drop(api, _peer, dropping)
 
 
-# A raw packet: a heartbeat, or (from the server) why it refuses us.
-func _on_packet(peer: int, packet: PackedByteArray) -> void:
-	var kind: int = packet[0] if not packet.is_empty() else -1
-	if kind == PongNetProtocol.PACKET_BEAT and packet.size() == 1:
-		_heartbeat.heard(peer, _now_s())
-		return
-	if kind == PongNetProtocol.PACKET_STALL and packet.size() == 1:
-		_heartbeat.stalls(peer, _now_s())
-		return
-	var from_server: bool = peer == PongNetAuthority.SERVER_ID and not is_server
-	if kind == PongNetProtocol.PACKET_REFUSAL and from_server:
-		var text: PackedByteArray = packet.slice(1, 1 + PongNetProtocol.MAX_REFUSAL_BYTES)
-		_refusal = text.get_string_from_utf8()
-		return
-	misbehaved(peer, "raw packet", "%d bytes of kind %d" % [packet.size(), kind])
+# To the peers that watch our heartbeat: a server's clients, a client's server.
+func _send_watch(message: PongNetMessage) -> void:
+	for peer: int in _api().get_peers():
+		if is_server or peer == PongNetAuthority.SERVER_ID:
+			router.send_to(peer, message)
+
+
+func _on_beat(peer: int, _message: PongNetBeatMessage) -> void:
+	_heartbeat.heard(peer, _now_s())
+
+
+func _on_stall(peer: int, _message: PongNetStallMessage) -> void:
+	_heartbeat.stalls(peer, _now_s())
+
+
+# Why the server refuses us, before it drops us (only the server sends it: the router).
+func _on_refusal(_sender: int, refusal: PongNetRefusalMessage) -> void:
+	_refusal = refusal.reason
 
 
 func _connections(api: SceneMultiplayer) -> Array[Array]:
@@ -302,7 +302,7 @@ func _api() -> SceneMultiplayer:
 func _on_authenticating(peer: int) -> void:
 	# Somebody answered: from here the cap follows the round trip (the short connect cap
 	# dropped lossy handshakes, and a server's pending peers kept ENet's 30 s).
-	_tune(peer)
+	PongNetEnet.tune(_peer.get_peer(peer))
 	if is_server:
 		var address: String = _peer.get_peer(peer).get_remote_address()
 		for oldest: int in _half_open.add(peer, address, _now_s()):
@@ -352,14 +352,13 @@ func _on_authentication_failed(peer: int) -> void:
 
 func _on_peer_connected(peer: int) -> void:
 	if is_server:
-		_tune(peer)
+		PongNetEnet.tune(_peer.get_peer(peer))
 		_half_open.remove(peer)
 		_heartbeat.watch(peer, _now_s())
 	peer_joined.emit(peer)
 
 
 func _on_peer_disconnected(peer: int) -> void:
-	left_at_ms[peer] = Time.get_ticks_msec()
 	_heartbeat.forget(peer)
 	_half_open.remove(peer)
 	peer_left.emit(peer)
@@ -368,7 +367,7 @@ func _on_peer_disconnected(peer: int) -> void:
 func _on_connected() -> void:
 	# From the round trip ENet assumes before it has measured one (500 ms): a fixed LAN cap
 	# here dropped a live server on a slow lossy path before the first retune.
-	_tune(1)
+	PongNetEnet.tune(_peer.get_peer(1))
 	_heartbeat.watch(PongNetAuthority.SERVER_ID, _now_s())
 	connected.emit()
 

@@ -3,26 +3,28 @@ extends PongWeaponReferee
 ## Bullets and mines in a networked match. The peer that drives a seat is the authority for
 ## that seat's actions (it fires, it places its mines) and for what happens to it (a bullet
 ## crosses its avatar, its avatar steps on a mine): it has the exact avatar, every other
-## peer only a late copy. Three reliable messages (PongNetProtocol.CHANNEL_RELIABLE):
-## [br]- a shot {seat, id, origin, direction, servo time}: every peer flies the bullet from
-## where it would be by now (the message's age, as for the ball states);
-## [br]- a mine {seat, id, position, kind}: every peer puts it where the owner's rule put it;
-## [br]- a weapon hurt {victim, cause, weapon seat, weapon id}: the victim's peer decided it,
-## every peer takes the health (the same way everywhere, as the master's floor hurts) and
-## removes the bullet or mine.
+## peer only a late copy. Three reliable messages:
+## [br]- a shot ([PongNetBulletMessage]: seat, id, origin, direction, servo time): every peer
+## flies the bullet from where it would be by now (the message's age, as for the ball states);
+## [br]- a mine ([PongNetMineMessage]: seat, id, position): every peer puts it where the
+## owner's rule put it;
+## [br]- a weapon hurt ([PongNetWeaponHurtMessage]: victim, cause, weapon seat, weapon id): the
+## victim's peer decided it, every peer takes the health (the same way everywhere, as the
+## master's floor hurts) and removes the bullet or mine.
 ## The firer's recoil and the victim's hit or mine effect stay in their own servo. A remote
 ## mine pulls the victim's hand toward the owner's stylus as the pose stream brings it, with
 ## its age (the servo's passivity rule keeps that coupling from gaining energy).
 ##
-## Every received message is checked: the protocol's types and ranges, the sender owns the
+## Every received message is checked: its fields by the schema ([PongNetRouter]), then against
+## the match: seats of this court, positions in it, the sender owns the
 ## seat (a shot, a mine) or the victim (a hurt), numbers are not reused, a seat's shots keep
 ## its cooldown, a hurt names a weapon this peer knows, that could reach the victim (a mine
 ## in or next to its territory, a bullet whose flight crosses it; from the weapon's own
 ## message, so every peer judges alike) and hurts only once. A bad one is dropped and
-## counted against its sender. A hurt may overtake its weapon: a client's message
-## to all goes to each peer on its own until Godot has confirmed the node's path with all of
-## them, so the victim's word (one leg) can come before a shot held up on the other leg by a
-## lost packet. Such a hurt waits up to [constant PENDING_HURT_S] for its weapon.
+## counted against its sender. A hurt may overtake its weapon: the two come from different
+## peers, each in order on its own path (a client's through the server's relay), so the
+## victim's word can come before a shot held up on the shooter's path by a lost packet. Such a
+## hurt waits up to [constant PENDING_HURT_S] for its weapon.
 
 ## How long a hurt waits for the weapon it names, seconds (ENet's fifth retransmission on
 ## a 150 ms path comes after about 13 s; a weapon later than this is as good as lost).
@@ -32,8 +34,8 @@ const PENDING_HURT_S: float = 3.0
 const REACH_STEP_M: float = 0.1
 const REACH_LIMIT_M: float = 20.0
 
-## Where this peer's messages go out.
-var wire: PongNetWire = null
+## Where this peer's messages come and go.
+var router: PongNetRouter = null
 var match_node: PongMatch = null
 var authority: PongNetAuthority = null
 ## [seat, id] of each shot taken (fired here or received), in order.
@@ -48,7 +50,7 @@ var _known: Dictionary[int, bool] = {}
 # Where each known weapon was: a bullet's [origin, direction], a mine's [position].
 var _where: Dictionary[int, Array] = {}
 var _spent: Dictionary[int, bool] = {}
-# Hurts waiting for their weapon, by its key: [sender, victim, cause, seat, id, wall time].
+# Hurts waiting for their weapon, by its key: [sender, the hurt, wall time].
 var _pending: Dictionary[int, Array] = {}
 # Per seat: the last shot's number and its sender's servo time.
 var _last_shot: PackedInt64Array = PackedInt64Array([-1, -1, -1, -1])
@@ -57,17 +59,17 @@ var _reject: Callable = Callable()
 var _age_of: Callable = Callable()
 
 
-## Follows [param p_match]; sends through [param p_wire]. [param p_reject]: Callable(sender,
-## what, reason) drops a message with a log line and counts it; [param p_age_of]:
-## Callable(sender, servo time) -> the age of a message, seconds.
+## Follows [param p_match]; sends and takes through [param p_router]. [param p_reject]:
+## Callable(sender, what, reason) drops a message with a log line and counts it;
+## [param p_age_of]: Callable(sender, servo time) -> the age of a message, seconds.
 func _init(
-	p_wire: PongNetWire,
+	p_router: PongNetRouter,
 	p_match: PongMatch,
 	p_authority: PongNetAuthority,
 	p_reject: Callable,
 	p_age_of: Callable
 ) -> void:
-	wire = p_wire
+	router = p_router
 	match_node = p_match
 	authority = p_authority
 	_reject = p_reject
@@ -75,6 +77,9 @@ func _init(
 	match_node.weapon_referee = self
 	match_node.bullet_fired.connect(_on_bullet_fired)
 	match_node.mine_placed.connect(_on_mine_placed)
+	router.handle(PongNetBulletMessage.SCHEMA_ID, on_bullet)
+	router.handle(PongNetMineMessage.SCHEMA_ID, on_mine)
+	router.handle(PongNetWeaponHurtMessage.SCHEMA_ID, on_hurt)
 
 
 ## A peer judges the seats it drives.
@@ -86,138 +91,146 @@ func judges(seat: int) -> bool:
 func hurt(
 	_rules: PongRules, victim: int, cause: StringName, weapon_owner: int, weapon_id: int
 ) -> void:
-	var args: Array = [victim, String(cause), weapon_owner, weapon_id]
-	wire.send_all(&"_weapon_hurt", args)
-	on_hurt(authority.my_id, victim, String(cause), weapon_owner, weapon_id)
-
-
-## The report's part: {shots, mines, hurts}.
-func to_dict() -> Dictionary:
-	return {"shots": shots, "mines": mines_placed, "hurts": hurts}
+	var message: PongNetWeaponHurtMessage = PongNetWeaponHurtMessage.new()
+	message.victim = victim
+	message.cause = PongNetFacts.WEAPON_CAUSE_NAMES.find(String(cause)) as PongNetFacts.WeaponCause
+	message.seat = weapon_owner
+	message.id = weapon_id
+	router.send_all(message)
+	on_hurt(authority.my_id, message)
 
 
 # A weapon's name across seats and kinds.
-static func _key(cause: String, seat: int, id: int) -> int:
-	var kind: int = PongNetProtocol.WEAPON_CAUSES.find(cause)
-	return (id * PongNetProtocol.MAX_SEATS + seat) * PongNetProtocol.WEAPON_CAUSES.size() + kind
+static func _key(cause: PongNetFacts.WeaponCause, seat: int, id: int) -> int:
+	var causes: int = PongNetFacts.WEAPON_CAUSE_NAMES.size()
+	return (id * PongNetProtocol.MAX_SEATS + seat) * causes + cause
 
 
 func _on_bullet_fired(bullet: PongBullets.Bullet) -> void:
 	if not judges(bullet.owner):
 		return
-	var direction: Vector3 = bullet.velocity.normalized()
-	_take_shot(bullet.owner, bullet.id, match_node.snapshot.time_s, bullet.position, direction)
-	wire.send_all(
-		&"_bullet",
-		[bullet.owner, bullet.id, bullet.position, direction, match_node.snapshot.time_s]
-	)
+	var shot: PongNetBulletMessage = PongNetBulletMessage.new()
+	shot.seat = bullet.owner
+	shot.id = bullet.id
+	shot.origin = bullet.position
+	shot.direction = bullet.velocity.normalized()
+	shot.time_s = match_node.snapshot.time_s
+	_take_shot(shot)
+	router.send_all(shot)
 
 
 func _on_mine_placed(mine: PongMines.Mine) -> void:
 	if not judges(mine.owner):
 		return
 	_take_mine(mine)
-	wire.send_all(&"_mine", [mine.owner, mine.id, mine.position, mine.kind])
+	var placed: PongNetMineMessage = PongNetMineMessage.new()
+	placed.seat = mine.owner
+	placed.id = mine.id
+	placed.position = mine.position
+	router.send_all(placed)
 
 
-func _take_shot(seat: int, id: int, time_s: float, origin: Vector3, direction: Vector3) -> void:
-	_last_shot[seat] = id
-	_last_shot_s[seat] = time_s
-	_known[_key("bullet", seat, id)] = true
-	_where[_key("bullet", seat, id)] = [origin, direction]
-	shots.append([seat, id])
+func _take_shot(shot: PongNetBulletMessage) -> void:
+	var key: int = _key(PongNetFacts.WeaponCause.BULLET, shot.seat, shot.id)
+	_last_shot[shot.seat] = shot.id
+	_last_shot_s[shot.seat] = shot.time_s
+	_known[key] = true
+	_where[key] = [shot.origin, shot.direction]
+	shots.append([shot.seat, shot.id])
 
 
 func _take_mine(mine: PongMines.Mine) -> void:
-	_known[_key("mine", mine.owner, mine.id)] = true
-	_where[_key("mine", mine.owner, mine.id)] = [mine.position]
+	var key: int = _key(PongNetFacts.WeaponCause.MINE, mine.owner, mine.id)
+	_known[key] = true
+	_where[key] = [mine.position]
 	mines_placed.append([mine.owner, mine.id, mine.kind, mine.position.x, mine.position.z])
 
 
-# --- received (PongNetWire's stubs, with the sender's id) ---
+# --- received, their fields checked (PongNetRouter): the checks against this match ---
 
 
-func on_bullet(
-	sender: int, seat: Variant, id: Variant, origin: Variant, direction: Variant, time_s: Variant
-) -> void:
-	var reason: String = PongNetProtocol.check_bullet(
-		seat, authority.owners.size(), id, origin, direction, time_s, match_node.court
-	)
+func on_bullet(sender: int, shot: PongNetBulletMessage) -> void:
+	var reason: String = _check_shot(sender, shot)
 	if not reason.is_empty():
-		_reject.call(sender, "bullet", reason)
+		_reject.call(sender, PongNetBulletMessage.LABEL, reason)
 		return
-	var shooter: int = seat
-	var shot: int = id
-	var sent_at: float = time_s
-	var from: Vector3 = origin
-	var along: Vector3 = direction
-	reason = _check_shot(sender, shooter, shot, sent_at)
-	if not reason.is_empty():
-		_reject.call(sender, "bullet", reason)
-		return
-	_take_shot(shooter, shot, sent_at, from, along)
-	if _resolve_pending(_key("bullet", shooter, shot)):
+	_take_shot(shot)
+	if _resolve_pending(_key(PongNetFacts.WeaponCause.BULLET, shot.seat, shot.id)):
 		return  # It has already hit its victim.
 	# Where it is by now: it flew on for the message's age.
-	var measured: float = _age_of.call(sender, sent_at)
+	var measured: float = _age_of.call(sender, shot.time_s)
 	var age: float = minf(measured, 0.5)
-	var at: Vector3 = from + along * PongBullets.SPEED_M_PER_S * age
+	var at: Vector3 = shot.origin + shot.direction * PongBullets.SPEED_M_PER_S * age
 	if match_node.court.clamp_inside(at, 0.0) == at:
-		match_node.bullet_fired.emit(match_node.bullets.add(shooter, shot, at, along))
+		match_node.bullet_fired.emit(match_node.bullets.add(shot.seat, shot.id, at, shot.direction))
 
 
-func _check_shot(sender: int, seat: int, id: int, time_s: float) -> String:
+func _check_shot(sender: int, shot: PongNetBulletMessage) -> String:
+	var seat: int = shot.seat
+	var reason: String = PongNetProtocol.check_seat(seat, authority.owners.size())
+	if reason.is_empty():
+		var limit: Vector3 = PongNetProtocol.position_limit(match_node.court)
+		reason = PongNetProtocol.check_box(shot.origin, limit, "origin")
+	if not reason.is_empty():
+		return reason
 	if authority.owner_of(seat) != sender:
 		return "seat %d is not theirs" % seat
-	if id <= _last_shot[seat]:
-		return "bullet id %d of seat %d is not after %d" % [id, seat, _last_shot[seat]]
+	if shot.id <= _last_shot[seat]:
+		return "bullet id %d of seat %d is not after %d" % [shot.id, seat, _last_shot[seat]]
 	var least: float = PongBullets.COOLDOWN_S * PongNetProtocol.COOLDOWN_SHARE
-	if time_s - _last_shot_s[seat] < least:
-		return "seat %d fired %.3f s after its last shot" % [seat, time_s - _last_shot_s[seat]]
+	if shot.time_s - _last_shot_s[seat] < least:
+		return "seat %d fired %.3f s after its last shot" % [seat, shot.time_s - _last_shot_s[seat]]
 	return ""
 
 
-func on_mine(sender: int, seat: Variant, id: Variant, position: Variant, kind: Variant) -> void:
-	var reason: String = PongNetProtocol.check_mine(
-		seat, authority.owners.size(), id, position, kind, match_node.court
-	)
-	if not reason.is_empty():
-		_reject.call(sender, "mine", reason)
-		return
-	var owner: int = seat
-	var number: int = id
-	var at: Vector3 = position
-	if authority.owner_of(owner) != sender:
-		reason = "seat %d is not theirs" % owner
+func on_mine(sender: int, placed: PongNetMineMessage) -> void:
+	var reason: String = _check_mine(sender, placed)
 	var mine: PongMines.Mine = null
 	if reason.is_empty():
-		mine = match_node.mines.put(owner, number, at)
+		mine = match_node.mines.put(placed.seat, placed.id, placed.position)
 		if mine == null:
-			reason = "mine id %d of seat %d is used" % [number, owner]
+			reason = "mine id %d of seat %d is used" % [placed.id, placed.seat]
 	if not reason.is_empty():
-		_reject.call(sender, "mine", reason)
+		_reject.call(sender, PongNetMineMessage.LABEL, reason)
 		return
 	_take_mine(mine)
 	match_node.mine_placed.emit(mine)
-	_resolve_pending(_key("mine", owner, number))
+	_resolve_pending(_key(PongNetFacts.WeaponCause.MINE, placed.seat, placed.id))
 
 
-func on_hurt(sender: int, victim: Variant, cause: Variant, seat: Variant, id: Variant) -> void:
-	var reason: String = PongNetProtocol.check_weapon_hurt(
-		victim, authority.owners.size(), cause, seat, id
+# A mine lies on the floor inside the walls, in another seat's territory.
+func _check_mine(sender: int, placed: PongNetMineMessage) -> String:
+	var seats: int = authority.owners.size()
+	var court: PongCourt = match_node.court
+	var floor_box: Vector3 = Vector3(
+		court.half_width, PongNetProtocol.FLOOR_TOLERANCE_M, court.half_length
 	)
-	if not reason.is_empty():
-		_reject.call(sender, "weapon hurt", reason)
-		return
-	var hurt_seat: int = victim
-	var weapon_seat: int = seat
-	var weapon_id: int = id
-	var what: String = cause
-	if authority.owner_of(hurt_seat) != sender:
+	var reason: String = PongNetProtocol.check_seat(placed.seat, seats)
+	if reason.is_empty():
+		reason = PongNetProtocol.check_box(placed.position, floor_box, "mine position")
+	if reason.is_empty() and PongCourt.territory_of(placed.position, seats) == placed.seat:
+		reason = "mine in its owner's own territory"
+	if reason.is_empty() and authority.owner_of(placed.seat) != sender:
+		reason = "seat %d is not theirs" % placed.seat
+	return reason
+
+
+func on_hurt(sender: int, hurt_message: PongNetWeaponHurtMessage) -> void:
+	var seats: int = authority.owners.size()
+	var hurt_seat: int = hurt_message.victim
+	var weapon_seat: int = hurt_message.seat
+	var weapon_id: int = hurt_message.id
+	var what: String = PongNetFacts.WEAPON_CAUSE_NAMES[hurt_message.cause]
+	var reason: String = PongNetProtocol.check_seat(hurt_seat, seats, "victim")
+	if reason.is_empty():
+		reason = PongNetProtocol.check_seat(weapon_seat, seats, "weapon seat")
+	if reason.is_empty() and hurt_seat == weapon_seat:
+		reason = "a weapon never hurts its owner"
+	if reason.is_empty() and authority.owner_of(hurt_seat) != sender:
 		reason = "seat %d is not theirs to judge" % hurt_seat
-	var key: int = _key(what, weapon_seat, weapon_id)
+	var key: int = _key(hurt_message.cause, weapon_seat, weapon_id)
 	if reason.is_empty() and not _known.has(key) and not _pending.has(key):
-		_pending[key] = [sender, victim, cause, seat, id, _now_s()]
+		_pending[key] = [sender, hurt_message, _now_s()]
 		return
 	if reason.is_empty() and not _known.has(key):
 		reason = "no %s %d of seat %d is known here" % [what, weapon_id, weapon_seat]
@@ -226,10 +239,10 @@ func on_hurt(sender: int, victim: Variant, cause: Variant, seat: Variant, id: Va
 	if reason.is_empty() and not _could_reach(key, hurt_seat):
 		reason = "%s %d of seat %d cannot reach seat %d" % [what, weapon_id, weapon_seat, hurt_seat]
 	if not reason.is_empty():
-		_reject.call(sender, "weapon hurt", reason)
+		_reject.call(sender, PongNetWeaponHurtMessage.LABEL, reason)
 		return
 	_spent[key] = true
-	var bullet: bool = what == "bullet"
+	var bullet: bool = hurt_message.cause == PongNetFacts.WeaponCause.BULLET
 	match_node.rules.hurt(hurt_seat, PongRules.CAUSE_BULLET if bullet else PongRules.CAUSE_MINE)
 	hurts.append([hurt_seat, what, weapon_seat, weapon_id])
 	if sender == authority.my_id:
@@ -282,21 +295,25 @@ func _could_reach(key: int, victim: int) -> bool:
 func expire_pending(all: bool = false) -> void:
 	var now: float = _now_s()
 	for key: int in _pending.keys():
-		var hurt_args: Array = _pending[key]
-		var since: float = hurt_args[5]
+		var waiting: Array = _pending[key]
+		var since: float = waiting[2]
 		if all or now - since > PENDING_HURT_S:
 			_pending.erase(key)
-			var what: String = "%s %d of seat %d" % [hurt_args[2], hurt_args[4], hurt_args[3]]
-			_reject.call(hurt_args[0], "weapon hurt", "no %s came here" % what)
+			var hurt_message: PongNetWeaponHurtMessage = waiting[1]
+			var cause: String = PongNetFacts.WEAPON_CAUSE_NAMES[hurt_message.cause]
+			var what: String = "%s %d of seat %d" % [cause, hurt_message.id, hurt_message.seat]
+			_reject.call(waiting[0], PongNetWeaponHurtMessage.LABEL, "no %s came here" % what)
 
 
 # Applies the hurt that waited for the weapon [param key] names; true if there was one.
 func _resolve_pending(key: int) -> bool:
 	if not _pending.has(key):
 		return false
-	var hurt_args: Array = _pending[key]
+	var waiting: Array = _pending[key]
 	_pending.erase(key)
-	callv(&"on_hurt", hurt_args.slice(0, 5))
+	var sender: int = waiting[0]
+	var hurt_message: PongNetWeaponHurtMessage = waiting[1]
+	on_hurt(sender, hurt_message)
 	return _spent.has(key)
 
 

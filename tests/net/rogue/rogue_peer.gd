@@ -1,11 +1,14 @@
-extends Node
+extends "res://tests/net/driver/net_peer.gd"
 ## A misbehaving peer for the fault tests (tests/net/test_net_guard.py starts this scene): it
-## joins like the game's networked-Pong command line ([PongNetCli], the same arguments) and,
-## once its match runs, does what [code]--rogue=MODE[/code] says, through the same RPC
-## surface as an honest peer:
-## [br]- [code]bad[/code] (default): every kind of malformed or unauthorised message, and
-## calls with the wrong number of arguments. The server must drop each, log the peer once,
-## disconnect it at the budget, and play on.
+## joins like every test peer (the game's networked-Pong command line under the test driver,
+## the same arguments) and, once its match runs, does what [code]--rogue=MODE[/code] says,
+## through the same raw-packet path as an honest peer ([method SceneMultiplayer.send_bytes],
+## which [PongNetRouter] uses):
+## [br]- [code]bad[/code] (default): every kind of bad bytes ([method attack]): too short,
+## cut off, with bytes left over, unknown layouts, fields outside the schema's limits, NaN,
+## huge strings, messages only the server may send, messages only the server may take,
+## messages about seats it does not drive, a flood. The server must drop each, log the peer
+## once, disconnect it at the budget, write no engine error, and play on.
 ## [br]- [code]forge[/code]: the issue's cheat: while it is the ball's master it claims
 ## [constant FORGED] floor bounces that cost the host's seat a point (and tells every peer so
 ## directly). None may cost the host anything.
@@ -16,7 +19,7 @@ extends Node
 ## folder Godot does not scan (.gdignore), since an export lists the path of every file the
 ## scan gave a uid. The harness runs it by path.
 
-## Rounds of bad messages: unreliable ones may be dropped by ENet's throttle in a burst.
+## Rounds of bad messages: unreliable ones may be lost on the way.
 const ROUNDS: int = 3
 ## Match seconds before the first round, and between rounds.
 const FIRST_S: float = 1.0
@@ -27,113 +30,181 @@ const FORGED_PER_FRAME: int = 10
 const HIT_MARK: String = "PongNet rogue: my paddle hit the ball, I am the master"
 ## Match seconds before a hit is marked: past the court's loading stall, and its first beat.
 const MARK_AFTER_S: float = 3.0
+## Bad packets in the flood that ends each round.
+const FLOOD: int = 40
+const RELIABLE: MultiplayerPeer.TransferMode = MultiplayerPeer.TRANSFER_MODE_RELIABLE
 
-var _cli: PongNetCli = PongNetCli.new()
 var _mode: String = "bad"
-var _match_clock: float = -1.0
+var _rogue_clock: float = -1.0
 var _rounds: int = 0
 var _forged: int = 0
 
 
 func _ready() -> void:
-	_mode = PongNetCli.parse(OS.get_cmdline_user_args()).get("rogue", "bad")
-	add_child(_cli)
-	# After the command line's own deferred launch, which makes its PongNet.
-	_follow.call_deferred()
-
-
-func _follow() -> void:
-	if _cli.net != null:
-		_cli.net.match_started.connect(_on_match_started)
+	super()
+	_mode = option("rogue", "bad")
 
 
 func _on_match_started() -> void:
-	_match_clock = 0.0
+	super()
+	_rogue_clock = 0.0
 	if _mode == "mark":
-		_cli.net.play.match_node.event_seen.connect(_on_event)
+		cli.net.play.match_node.event_seen.connect(_on_event)
 
 
 func _process(delta: float) -> void:
-	if _match_clock < 0.0 or not _cli.net.play.is_running():
+	super(delta)
+	if _rogue_clock < 0.0 or cli == null or not cli.net.play.is_running():
 		return
-	_match_clock += delta
+	_rogue_clock += delta
 	if _mode == "forge":
-		_forge(_cli.net.play)
-	elif _mode == "bad" and _rounds < ROUNDS and _match_clock > FIRST_S + EVERY_S * _rounds:
+		_forge(cli.net.play)
+	elif _mode == "bad" and _rounds < ROUNDS and _rogue_clock > FIRST_S + EVERY_S * _rounds:
 		_rounds += 1
-		attack(_cli.net.play)
+		attack(cli.net.play)
 
 
 func _on_event(event: PongEvent) -> void:
-	var play: PongNetPlay = _cli.net.play
+	var play: PongNetPlay = cli.net.play
 	if event.type != PongServoFacts.PongEventType.PADDLE or not play.authority.is_master():
 		return
-	if event.player == _cli.net.my_seat() and _match_clock > MARK_AFTER_S:
-		print("%s (match second %.2f)" % [HIT_MARK, _match_clock])
+	if event.player == cli.net.my_seat() and _rogue_clock > MARK_AFTER_S:
+		print("%s (match second %.2f)" % [HIT_MARK, _rogue_clock])
 
 
-# While master: claims that the host's seat (not the ball's territory) lost points.
+# While master: claims that the host's seat (not the ball's territory) lost points, and tells
+# every peer it did (a floor hurt only the server may send).
 func _forge(play: PongNetPlay) -> void:
 	if _forged >= FORGED or not play.authority.is_master():
 		return
-	var host_seat: int = 0
+	var claim: PongNetFloorClaimMessage = PongNetFloorClaimMessage.new()
+	claim.epoch = play.authority.epoch
+	claim.victim = 0
+	var hurt: PongNetFloorHurtMessage = PongNetFloorHurtMessage.new()
+	hurt.epoch = play.authority.epoch
+	hurt.victim = 0
 	for _claim_index: int in FORGED_PER_FRAME:
-		play._claim.rpc_id(PongNetAuthority.SERVER_ID, play.authority.epoch, host_seat)
-		play._hurt.rpc(play.authority.epoch, host_seat, "floor")
+		play.session.router.send_to(PongNetAuthority.SERVER_ID, claim)
+		play.session.router.send_all(hurt)
 		_forged += 1
 	print("PongNet rogue: %d forged floor hurts sent" % _forged)
 
 
-## Sends the bad messages from [param play]'s peer.
+## Sends the bad messages from [param play]'s peer to the server, as raw packets.
 static func attack(play: PongNetPlay) -> void:
-	var far: Vector3 = Vector3(0.0, 1.0, 0.0)
-	var me: int = play.authority.my_id
-	var not_mine: int = 0 if play.authority.owner_of(0) != me else 1
+	var api: SceneMultiplayer = play.multiplayer as SceneMultiplayer
+	var send: Callable = func(bytes: PackedByteArray) -> void:
+		api.send_bytes(
+			bytes, PongNetAuthority.SERVER_ID, RELIABLE, PongNetFacts.NET_CHANNEL_RELIABLE
+		)
 	print("PongNet rogue: sending bad messages")
-	# Wrong types.
-	play._ball.rpc("one", 2, 3.0, far, far, far, 0)
-	play._pose.rpc(0, "avatar", far, far, Vector3.UP, 0, 1.0, 0)
-	# Out of range: a ball far outside the court, a non-finite velocity, a bad seat.
-	play._ball.rpc(play.authority.epoch, 1 << 20, 1.0, Vector3(99, 99, 99), far, far, 0)
-	play._ball.rpc(play.authority.epoch, 1 << 21, 1.0, far, Vector3(NAN, 0, 0), far, 0)
-	play._pose.rpc(7, far, Vector3.ZERO, Vector3.ZERO, Vector3.UP, 0, 1.0, 0)
-	play._pose.rpc(1 - not_mine, far, Vector3.ZERO, Vector3.ZERO, Vector3.UP, 0, 1.0, -5)
-	# No authority: a ball state while not the master, a pose for another's seat, a transfer
-	# (only the server issues them), a health loss (only the server charges them), a
-	# hand-off request, owners.
-	play._ball.rpc(play.authority.epoch, 1 << 22, 1.0, far, Vector3.ZERO, Vector3.ZERO, 0)
-	play._pose.rpc(not_mine, far, Vector3.ZERO, Vector3.ZERO, Vector3.UP, 0, 1.0, 0)
-	play._transfer.rpc(play.authority.epoch + 50, 1, 0, me, far, Vector3.ZERO, Vector3.ZERO, 0)
-	play._hurt.rpc(0, not_mine, "floor")
-	play._request.rpc_id(1, play.authority.epoch + 7, 0, far, Vector3.ZERO, Vector3.ZERO)
-	play._owners.rpc(PackedInt64Array([me, me]))
-	# Oversized: a 64 KiB name.
-	play._hurt.rpc(play.authority.epoch, 0, "x".repeat(65536))
-	# The wrong number of arguments, which the engine itself would fail with an error line
-	# per call: too few, too many, none.
-	play.rpc(&"_hurt", 1)
-	play.rpc(&"_claim", 1, 2, 3, 4)
-	play.rpc(&"_pose")
-	play.get_parent().rpc(&"_ready_up", true, false)
-	_attack_weapons(play, not_mine)
+	for bytes: PackedByteArray in bad_bytes(play):
+		send.call(bytes)
+	# Messages only the server sends, and a pose for a seat this peer does not drive.
+	for message: PongNetMessage in unauthorised(play):
+		send.call(message.encode())
+	# A flood of unknown layouts (the server has disconnected this peer by now).
+	for i: int in FLOOD:
+		send.call(PackedByteArray([0xEF, 0xBE, 0xAD, 0xDE, i & 0xFF]))
 
 
-# Bullets, mines and weapon hurts: each a wrong type, out of range, or without authority.
-static func _attack_weapons(play: PongNetPlay, not_mine: int) -> void:
-	var mine: int = 1 - not_mine
-	var far: Vector3 = Vector3(0.0, 1.0, 0.0)
-	var theirs: Vector3 = Vector3(0.2, 0.0, 1.5 if mine == 1 else -1.5)
-	play._bullet.rpc("zero", 0, far, Vector3.UP, 1.0)
-	play._bullet.rpc(mine, 1 << 27, Vector3(99, 99, 99), Vector3.UP, 1.0)
-	play._bullet.rpc(not_mine, 1 << 27, far, Vector3.UP, 1.0)
-	# A fresh number, then the same one again, then the next one at once (cooldown).
-	var shot: int = (1 << 28) + roundi(play.match_node.now * 10.0)
-	play._bullet.rpc(mine, shot, far, Vector3.UP, 1e6 + play.match_node.now)
-	play._bullet.rpc(mine, shot, far, Vector3.UP, 1e6 + play.match_node.now + 1.0)
-	play._bullet.rpc(mine, shot + 1, far, Vector3.UP, 1e6 + play.match_node.now + 0.01)
-	play._mine.rpc(mine, 0, "here", "slow")
-	play._mine.rpc(mine, 2, theirs, "slow")
-	play._mine.rpc(not_mine, 3, -theirs, "none")
-	play._weapon_hurt.rpc(not_mine, "bullet", mine, 0)
-	play._weapon_hurt.rpc(mine, "bullet", not_mine, 1 << 29)
-	play._weapon_hurt.rpc(mine, "x".repeat(65536), not_mine, 0)
+## Bytes that decode to no valid message: each fails the schema's checks.
+static func bad_bytes(play: PongNetPlay) -> Array[PackedByteArray]:
+	var out: Array[PackedByteArray] = []
+	var ball: PongNetBallMessage = _ball(play)
+	var good: PackedByteArray = ball.encode()
+	out.append(PackedByteArray([1, 2, 3]))  # No layout id.
+	out.append(good.slice(0, good.size() - 5))  # Cut off.
+	out.append(good + PackedByteArray([0, 0, 0]))  # Bytes left over.
+	var unknown: PackedByteArray = good.duplicate()
+	unknown.encode_u32(0, 0xDEADBEEF)  # A layout of no message.
+	out.append(unknown)
+	# Out of the schema's range: a ball far outside any court, a NaN velocity, a leg of a
+	# minute, a pose's seat 7, a bullet number past the limit, a mine's number 9.
+	ball.position = Vector3(99.0, 99.0, 99.0)
+	out.append(ball.encode())
+	ball = _ball(play)
+	ball.velocity = Vector3(NAN, 0.0, 0.0)
+	out.append(ball.encode())
+	ball = _ball(play)
+	ball.leg_ms = 60000
+	out.append(ball.encode())
+	var pose: PongNetPoseMessage = _pose(play, 7)
+	out.append(pose.encode())
+	pose = _pose(play, _mine(play))
+	pose.normal = Vector3(0.0, 0.0, 0.5)  # Not a unit vector.
+	out.append(pose.encode())
+	var bullet: PongNetBulletMessage = PongNetBulletMessage.new()
+	bullet.seat = _mine(play)
+	bullet.id = PongNetFacts.NET_MAX_WEAPON_ID + 1
+	bullet.origin = Vector3(0.0, 1.0, 0.0)
+	bullet.direction = Vector3.UP
+	out.append(bullet.encode())
+	var mine: PongNetMineMessage = PongNetMineMessage.new()
+	mine.id = 9
+	out.append(mine.encode())
+	var hurt: PongNetWeaponHurtMessage = PongNetWeaponHurtMessage.new()
+	var hurt_bytes: PackedByteArray = hurt.encode()
+	hurt_bytes[5] = 7  # Its cause: no such weapon.
+	out.append(hurt_bytes)
+	# Huge strings: a hello of a 60 000-byte name (its count says so), and one whose count
+	# claims more than the packet holds.
+	var hello: PongNetHelloMessage = PongNetHelloMessage.new()
+	hello.name = "x".repeat(60000)
+	out.append(hello.encode())
+	var short_hello: PackedByteArray = PongNetHelloMessage.new().encode()
+	short_hello.encode_u16(4, 40000)
+	out.append(short_hello)
+	return out
+
+
+## Messages that decode but are not this peer's to send: only the server's (a transfer, a
+## floor hurt, owners, the lobby, a start, a refusal), and a pose and a bullet for a seat it
+## does not drive.
+static func unauthorised(play: PongNetPlay) -> Array[PongNetMessage]:
+	var me: int = play.authority.my_id
+	var transfer: PongNetTransferMessage = PongNetTransferMessage.new()
+	transfer.epoch = play.authority.epoch + 50
+	transfer.master = me
+	var hurt: PongNetFloorHurtMessage = PongNetFloorHurtMessage.new()
+	hurt.victim = 1 - _mine(play)
+	var owners: PongNetOwnersMessage = PongNetOwnersMessage.new()
+	owners.owners = PackedInt64Array([me, me])
+	var start: PongNetStartMessage = PongNetStartMessage.new()
+	start.owners = PackedInt64Array([me, me])
+	start.health = 1
+	var refusal: PongNetRefusalMessage = PongNetRefusalMessage.new()
+	refusal.reason = "go away"
+	var bullet: PongNetBulletMessage = PongNetBulletMessage.new()
+	bullet.seat = 1 - _mine(play)
+	bullet.id = 1 << 27
+	bullet.origin = Vector3(0.0, 1.0, 0.0)
+	bullet.direction = Vector3.UP
+	bullet.time_s = 1.0
+	var out: Array[PongNetMessage] = [transfer, hurt, owners, start, refusal, bullet]
+	out.append(_pose(play, 1 - _mine(play)))
+	out.append(PongNetLobbyMessage.new())
+	return out
+
+
+# The seat this peer drives.
+static func _mine(play: PongNetPlay) -> int:
+	return 0 if play.authority.owner_of(0) == play.authority.my_id else 1
+
+
+static func _ball(play: PongNetPlay) -> PongNetBallMessage:
+	var ball: PongNetBallMessage = PongNetBallMessage.new()
+	ball.epoch = play.authority.epoch
+	ball.seq = 1 << 20
+	ball.time_s = 1.0
+	ball.position = Vector3(0.0, 1.0, 0.0)
+	return ball
+
+
+static func _pose(play: PongNetPlay, seat: int) -> PongNetPoseMessage:
+	var pose: PongNetPoseMessage = PongNetPoseMessage.new()
+	pose.seat = seat
+	pose.avatar = play.match_node.avatar_of(mini(seat, 1))
+	pose.normal = Vector3.BACK
+	pose.time_s = 1.0
+	return pose

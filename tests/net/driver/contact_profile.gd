@@ -1,11 +1,11 @@
-class_name PongNetContactProfile
 extends Node
 ## The force on the hand of one scripted hit, tick by tick, in a networked game and in a
 ## local one: the contact test compares them (contact is never networked, so latency must
 ## not change it). The seat under test is a device paddle held still at its avatar's home;
 ## the first serve goes to it. The profile is the servo's telemetry (every 1 ms tick) of
 ## the paddle's contact force, from the first tick over [constant THRESHOLD_N] until it has
-## stayed below for [constant GAP_S].
+## stayed below for [constant GAP_S]. A test tool (net_peer.gd's
+## [code]--pong-net-script=hit[/code] and [code]--pong-net=local[/code]).
 
 ## The local game is over (its profile is complete).
 signal done

@@ -1,7 +1,6 @@
-class_name PongNetRemoteMineScript
 extends Node
-## The remote-operation mine across the network, scripted for the energy test
-## ([code]--pong-net-script=remote[/code]). Seat 0, the owner, places its mines (slow and
+## The remote-operation mine across the network, scripted for the energy test (net_peer.gd's
+## [code]--pong-net-script=remote[/code]). Seat 0, the owner, places its mines (slow and
 ## heavy out of the way, then the remote one at the victim's avatar) and swings its
 ## paddle left and right all along. Seat 1, the victim, is the device player, who steps onto
 ## the remote mine once it lands beside it ([SteppingVictim]): the simulated

@@ -1,8 +1,9 @@
-class_name PongNetReport
 extends RefCounted
-## What one peer saw of a networked match, for the tests and the benchmark (written as
-## JSON at exit by the autopilot). Wall times are this machine's Unix clock: the protocol
-## never uses them, they only let a test line up peers running on one machine.
+## What one peer saw of a networked match, for the tests and the benchmark (written as JSON
+## at exit by the test driver, net_peer.gd), gathered from the signals of the product's
+## nodes ([method watch], [method begin]) and a sample of the ball each frame
+## ([method sample]). Wall times are this machine's Unix clock: the protocol never uses them,
+## they only let a test line up peers running on one machine.
 
 ## Seconds between trajectory samples.
 const SAMPLE_INTERVAL_S: float = 0.01
@@ -27,6 +28,7 @@ var refused: Dictionary[String, int] = {}
 ## Extra entries (peer losses, contact profiles, ...).
 var extra: Dictionary = {}
 
+var _play: PongNetPlay = null
 var _transfers: Array[Dictionary] = []
 var _samples: Array[PackedFloat64Array] = []
 var _intervals: Array[PackedFloat64Array] = []
@@ -35,23 +37,55 @@ var _last_sample: float = -INF
 var _started: float = 0.0
 
 
-func begin(p_peer: int) -> void:
-	peer = p_peer
+## Follows [param play] and its session for the whole session.
+func watch(play: PongNetPlay) -> void:
+	_play = play
+	play.session.bad_message.connect(_on_bad_message)
+	play.ball_state_sent.connect(func() -> void: sent += 1)
+	play.ball_state_taken.connect(_on_state_taken)
+	play.ball_state_late.connect(func() -> void: late += 1)
+	play.transferred.connect(_on_transferred)
+	play.seats_taken_over.connect(_on_seats_taken_over)
+	play.finished.connect(func(p_winner: int) -> void: winner = p_winner)
+
+
+## A match began (after [method PongNetPlay.begin]): its poses, floor hurts and weapons.
+func begin(play: PongNetPlay) -> void:
+	peer = play.authority.my_id
 	_started = now()
+	play.poses.pose_taken.connect(func(_seat: int) -> void: poses += 1)
+	play.floor_hurts.hurt_applied.connect(
+		func(epoch: int, victim: int) -> void: hurts.append([epoch, victim, "floor"])
+	)
+	var weapons: PongNetWeapons = play.weapons
+	extra["weapons"] = {
+		"shots": weapons.shots, "mines": weapons.mines_placed, "hurts": weapons.hurts
+	}
 
 
 static func now() -> float:
 	return Time.get_unix_time_from_system()
 
 
-func refuse(what: String) -> void:
+func _on_bad_message(_peer: int, what: String, _reason: String) -> void:
 	refused[what] = refused.get(what, 0) + 1
 
 
-func transfer(entry: Dictionary) -> void:
+func _on_state_taken(age_s: float) -> void:
+	states += 1
+	ages.append(age_s)
+
+
+func _on_transferred(entry: Dictionary, correction_m: float) -> void:
 	var copy: Dictionary = entry.duplicate()
 	copy["wall_s"] = now()
 	_transfers.append(copy)
+	handoff_corrections.append(correction_m)
+
+
+func _on_seats_taken_over(left_peer: int, seats: PackedInt32Array) -> void:
+	var left: Array = extra.get_or_add("peers_left", [])
+	left.append({"peer": left_peer, "seats": Array(seats), "wall_s": now()})
 
 
 ## The ball in this peer's servo [param snapshot]; [param master]: whether this peer
@@ -71,9 +105,12 @@ func sample(snapshot: PongState, master: bool) -> void:
 		_samples.append(PackedFloat64Array([t, sim_s, position.x, position.y, position.z]))
 
 
-## Everything as a JSON-ready Dictionary; [param smoother] gives the correction sizes,
-## [param authority] the refusals it counted.
-func to_dict(smoother: PongNetSmoother, authority: PongNetAuthority) -> Dictionary:
+## Everything as a JSON-ready Dictionary: the play's ball gives the correction sizes and the
+## stream's counts, its authority the refusals it counted.
+func to_dict() -> Dictionary:
+	var smoother: PongNetSmoother = _play.ball.smoother
+	var authority: PongNetAuthority = _play.authority
+	extra["ball_stream"] = _play.ball.to_dict()
 	var intervals: Array = _intervals.duplicate()
 	if _master_since >= 0.0:
 		intervals.append(PackedFloat64Array([_master_since, now()]))

@@ -1,0 +1,99 @@
+class_name PongNetRouter
+extends Node
+## The one way networked Pong's messages come and go. Each is a [PongNetMessage], sent as a
+## raw packet ([method SceneMultiplayer.send_bytes]) on its own channel in its own transfer
+## mode, both defined in the schema. Each packet received ([signal
+## SceneMultiplayer.peer_packet], its sender's id as Godot knows it: a relayed packet names its
+## source, which only the server writes) is decoded by its layout id (its first four bytes)
+## with its class's [code]decode()[/code], which checks every field against the schema; then
+## it must come from the server if only the server sends it, and reach the server if only the
+## server takes it; then it goes to the handler the node that owns its state registered
+## ([method handle]), typed. Anything else (too short, an unknown layout, a field out of its
+## limits, a wrong sender or receiver) is one of the sender's bad messages
+## ([method PongNetSession.misbehaved]), never an engine error: no RPC is involved, so no wrong
+## count or type of arguments can reach Godot's RPC layer (docs/networking.md, "Raw packets").
+## A message of a known layout that nobody handles now (a match's message between matches) is
+## dropped quietly.
+
+## Where bad messages are counted, and whether this peer is the server: the session the
+## router is a child of.
+var session: PongNetSession = null
+
+var _decoders: Dictionary[int, Callable] = PongNetFacts.message_decoders()
+var _handlers: Dictionary[int, Callable] = {}
+
+
+func _enter_tree() -> void:
+	var parent: PongNetSession = get_parent() as PongNetSession
+	if parent != null:
+		session = parent
+
+
+## From now on, messages of layout [param schema_id] go to [param handler], a
+## Callable(sender: int, message) whose message parameter has that layout's class (one handler
+## a layout: the last one registered).
+func handle(schema_id: int, handler: Callable) -> void:
+	_handlers[schema_id] = handler
+
+
+## Messages stop going to the handlers of [param listener] (its match is over).
+func forget(listener: Object) -> void:
+	for schema_id: int in _handlers.keys():
+		if _handlers[schema_id].get_object() == listener:
+			_handlers.erase(schema_id)
+
+
+## Sends [param message] to every other peer (a client's goes through the server's relay).
+func send_all(message: PongNetMessage) -> void:
+	if _connected():
+		_send(message, MultiplayerPeer.TARGET_PEER_BROADCAST)
+
+
+## Sends [param message] to [param peer] while it is connected (a peer just gone is no longer
+## one of [method MultiplayerAPI.get_peers]: the engine would log an error).
+func send_to(peer: int, message: PongNetMessage) -> void:
+	if _connected() and multiplayer.get_peers().has(peer):
+		_send(message, peer)
+
+
+## A raw packet from [param sender] ([signal SceneMultiplayer.peer_packet]).
+func receive(sender: int, packet: PackedByteArray) -> void:
+	if packet.size() < 4:
+		_bad(sender, "message", "%d bytes: no layout id" % packet.size())
+		return
+	var schema_id: int = packet.decode_u32(0)
+	var decoder: Callable = _decoders.get(schema_id, Callable())
+	if not decoder.is_valid():
+		_bad(sender, "message", "layout %08x is none of this version's messages" % schema_id)
+		return
+	var label: String = PongNetFacts.MESSAGE_LABELS[schema_id]
+	var message: PongNetMessage = decoder.call(packet)
+	if message == null:
+		_bad(sender, label, HapticsWireReader.last_error)
+		return
+	if message.from_server() and sender != PongNetAuthority.SERVER_ID:
+		_bad(sender, label, "only the server sends it")
+		return
+	if message.to_server() and not session.is_server:
+		_bad(sender, label, "only the server takes it")
+		return
+	var handler: Callable = _handlers.get(schema_id, Callable())
+	if handler.is_valid():
+		handler.call(sender, message)
+
+
+func _send(message: PongNetMessage, peer: int) -> void:
+	var api: SceneMultiplayer = multiplayer as SceneMultiplayer
+	api.send_bytes(message.encode(), peer, message.transfer_mode(), message.channel())
+
+
+func _connected() -> bool:
+	if session == null or not session.is_open() or not is_inside_tree():
+		return false
+	var peer: MultiplayerPeer = multiplayer.multiplayer_peer
+	return peer != null and peer.get_connection_status() == MultiplayerPeer.CONNECTION_CONNECTED
+
+
+func _bad(sender: int, what: String, reason: String) -> void:
+	if session != null:
+		session.misbehaved(sender, what, reason)
