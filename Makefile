@@ -143,9 +143,11 @@ test-godot: import
 test-windowed: import
 	@tools/test-windowed.sh
 
-## lint: the schemas current, include layers, file sizes, gdlint, gdformat, clang-format
+## lint: the schemas current, include layers, the typed boundary, gdlint, gdformat, clang-format
 ## the C++ layers' include directions and the 400-line limit (tools/check-includes.py),
-## the GDScript folders' layers and the Haptics door (tools/check-gd-layers.py), gdlint
+## the GDScript folders' layers and the Haptics door (tools/check-gd-layers.py), the typed
+## boundary (tools/check-boundary.py: native methods with maps, calls by name, untyped @rpc,
+## citations of files outside the repository), gdlint
 ## (400 lines a file) and gdformat --check over addons/, game/ and tests/ (gdtoolkit,
 ## pinned, in .venv), clang-format (Debian's, .clang-format: Godot's style) over the C++,
 ## and the test of tools/check-product.sh on fake packs (tools/test-check-product.sh)
@@ -153,6 +155,7 @@ lint: deps
 	@python3 tools/schema/generate.py --check
 	@python3 tools/check-includes.py
 	@python3 tools/check-gd-layers.py
+	@python3 tools/check-boundary.py
 	@tools/test-check-product.sh
 	@tools/gdtoolkit.sh gdlint addons game tests
 	@tools/gdtoolkit.sh gdformat --check addons game tests
