@@ -97,6 +97,8 @@ func f32(
 	return _float(4, field, low, high, finite, zero_ok)
 
 
+## Two binary64 components; [param nonzero], the length bounds and [param finite] are checked
+## on the vector as a whole.
 func vec2(
 	field: StringName,
 	nonzero: bool = false,
@@ -104,11 +106,11 @@ func vec2(
 	finite: bool = true,
 	min_length: float = 0.0
 ) -> Vector2:
-	var value: Vector2 = Vector2(f64(&"", -INF, INF, false), f64(&"", -INF, INF, false))
-	_check_vector(field, Vector3(value.x, value.y, 0.0), nonzero, max_length, finite, min_length)
-	return value
+	var v: Vector3 = _vector(2, 8, field, nonzero, max_length, finite, min_length)
+	return Vector2(v.x, v.y)
 
 
+## Two binary32 components, checked as [method vec2] checks.
 func vec2f(
 	field: StringName,
 	nonzero: bool = false,
@@ -116,11 +118,11 @@ func vec2f(
 	finite: bool = true,
 	min_length: float = 0.0
 ) -> Vector2:
-	var value: Vector2 = Vector2(f32(&"", -INF, INF, false), f32(&"", -INF, INF, false))
-	_check_vector(field, Vector3(value.x, value.y, 0.0), nonzero, max_length, finite, min_length)
-	return value
+	var v: Vector3 = _vector(2, 4, field, nonzero, max_length, finite, min_length)
+	return Vector2(v.x, v.y)
 
 
+## Three binary64 components, checked as [method vec2] checks.
 func vec3(
 	field: StringName,
 	nonzero: bool = false,
@@ -128,13 +130,11 @@ func vec3(
 	finite: bool = true,
 	min_length: float = 0.0
 ) -> Vector3:
-	var value: Vector3 = Vector3(
-		f64(&"", -INF, INF, false), f64(&"", -INF, INF, false), f64(&"", -INF, INF, false)
-	)
-	_check_vector(field, value, nonzero, max_length, finite, min_length)
-	return value
+	var v: Vector3 = _vector(3, 8, field, nonzero, max_length, finite, min_length)
+	return v
 
 
+## Three binary32 components, checked as [method vec2] checks.
 func vec3f(
 	field: StringName,
 	nonzero: bool = false,
@@ -142,11 +142,8 @@ func vec3f(
 	finite: bool = true,
 	min_length: float = 0.0
 ) -> Vector3:
-	var value: Vector3 = Vector3(
-		f32(&"", -INF, INF, false), f32(&"", -INF, INF, false), f32(&"", -INF, INF, false)
-	)
-	_check_vector(field, value, nonzero, max_length, finite, min_length)
-	return value
+	var v: Vector3 = _vector(3, 4, field, nonzero, max_length, finite, min_length)
+	return v
 
 
 ## At most [param max_bytes] bytes of well-formed UTF-8.
@@ -248,6 +245,22 @@ func _check_number(field: StringName, value: float, low: float, high: float, fin
 		_fail("not finite (%s)" % value, field)
 	elif value < low or value > high:
 		_fail("%s is outside [%s, %s]" % [value, low, high], field)
+
+
+func _vector(
+	components: int,
+	width: int,
+	field: StringName,
+	nonzero: bool,
+	max_length: float,
+	finite: bool,
+	min_length: float
+) -> Vector3:
+	var value: Vector3 = Vector3.ZERO
+	for i in components:
+		value[i] = _float(width, &"", -INF, INF, false, false)
+	_check_vector(field, value, nonzero, max_length, finite, min_length)
+	return value
 
 
 func _check_vector(
