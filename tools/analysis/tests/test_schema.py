@@ -4,6 +4,7 @@ game reads the same file."""
 from __future__ import annotations
 
 import re
+import tomllib
 
 import pytest
 
@@ -53,13 +54,12 @@ def test_the_fast_telemetry_pattern_matches_valid_rows_only():
 
 
 def test_the_contact_models_are_the_servers_names():
-    # The names are defined once beside the enum (the movement renderer's settings); the
-    # schema lists them for the data.
+    # The names are defined once, in the movement renderer's schema (the C++ enum and its
+    # names are generated from it); the study schema lists them for the data.
     project = schema.SCHEMA_PATH.parents[2]
-    renderer = project / "gdextension" / "src" / "renderers" / "movement"
-    header = (renderer / "movement_config.h").read_text("utf-8")
-    names = re.search(r"CONTACT_MODEL_NAMES\[\] = \{([^}]*)\}", header).group(1)
-    assert tuple(re.findall(r'"([a-z_]+)"', names)) == schema.CONTACT_MODELS
+    renderer_schema = project / "gdextension" / "src" / "renderers" / "movement" / "movement.schema.toml"
+    names = tomllib.loads(renderer_schema.read_text("utf-8"))["enums"]["ContactModel"]["values"]
+    assert tuple(names) == schema.CONTACT_MODELS
 
 
 def test_the_game_reads_the_same_schema():
