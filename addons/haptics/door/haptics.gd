@@ -186,6 +186,15 @@ func _input(event: InputEvent) -> void:
 	_user_input.notice(event)
 
 
+func _unhandled_input(event: InputEvent) -> void:
+	_user_input.notice_unhandled(event)
+
+
+func _notification(what: int) -> void:
+	if what == NOTIFICATION_APPLICATION_FOCUS_OUT:
+		_user_input.release_mouse_stick()
+
+
 func _process(delta: float) -> void:
 	device.poll_reconnect(delta)
 	# Fed after the frame's physics too: a RigidBody2D's _integrate_forces runs first in the
@@ -300,6 +309,14 @@ func renderer(renderer_name: StringName) -> HapticsRenderer:
 ## The force scale's allowed range, from its schema.
 func get_force_scale_range() -> Vector2:
 	return Vector2(HapticSafetySettings.FORCE_SCALE_MIN, HapticSafetySettings.FORCE_SCALE_MAX)
+
+
+## The mouse stick as the player holds it (for a game to draw); not [member HapticsMouseStick.held]
+## while it is let go or the hand does not follow the user.
+func get_mouse_stick() -> HapticsMouseStick:
+	var stick: HapticsMouseStick = _user_input.mouse_stick(get_viewport())
+	stick.held = stick.held and hand_follows_input
+	return stick
 
 
 ## Whether [param mode] is a control mode ([constant CONTROL_DEVICE],

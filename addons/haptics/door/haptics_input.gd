@@ -8,6 +8,8 @@ extends RefCounted
 ## Fed strengths up to this release the action even where the action's deadzone is smaller
 ## (a centred device presses nothing).
 const FEED_THRESHOLD := 0.05
+## The mouse stick's full deflection, as a fraction of the viewport's height.
+const MOUSE_STICK_REACH := 0.25
 
 ## The actions (left, right, up, down) that move the simulated hand; empty: none. An
 ## action the project does not define counts as released.
@@ -23,16 +25,43 @@ var feed_actions: PackedStringArray = []:
 		release_fed()
 		feed_actions = _checked_actions(value, "feed_actions", feed_actions)
 
-var _mouse_seen: bool = false
+var _stick_held: bool = false
+var _stick_origin: Vector2 = Vector2.ZERO
 # The actions this door pressed and has not released.
 var _fed: Dictionary[String, bool] = {}
 var _hand_actions_complete: bool = false
 
 
-## Takes note of [param event] (the mouse moves the hand only once it has moved).
+## Takes note of [param event] wherever it goes: a left-button release lets go of the mouse
+## stick (even over a control).
 func notice(event: InputEvent) -> void:
-	if event is InputEventMouseMotion:
-		_mouse_seen = true
+	var button: InputEventMouseButton = event as InputEventMouseButton
+	if button != null and button.button_index == MOUSE_BUTTON_LEFT and not button.pressed:
+		_stick_held = false
+
+
+## Takes note of [param event] that no control took: a left-button press in the game grips
+## the mouse stick where it is.
+func notice_unhandled(event: InputEvent) -> void:
+	var button: InputEventMouseButton = event as InputEventMouseButton
+	if button != null and button.button_index == MOUSE_BUTTON_LEFT and button.pressed:
+		_stick_held = true
+		_stick_origin = button.position
+
+
+## Lets go of the mouse stick (the window lost the focus, so its release may never come).
+func release_mouse_stick() -> void:
+	_stick_held = false
+
+
+## The mouse stick in [param viewport] as the player holds it now.
+func mouse_stick(viewport: Viewport) -> HapticsMouseStick:
+	var stick: HapticsMouseStick = HapticsMouseStick.new()
+	stick.held = _stick_held
+	stick.origin = _stick_origin
+	stick.pointer = viewport.get_mouse_position()
+	stick.radius = viewport.get_visible_rect().size.y * MOUSE_STICK_REACH
+	return stick
 
 
 ## Presses [member feed_actions] as far as [param input_vector] points their way, as a stick
@@ -72,8 +101,8 @@ func release_fed() -> void:
 
 
 ## Where the user puts the simulated hand (normalised): keyboard/gamepad deflection wins;
-## otherwise the mouse's offset from the centre of [param viewport], a quarter of its
-## height being the workspace edge.
+## otherwise, while the mouse stick is held, the pointer's offset from where it was
+## gripped ([constant MOUSE_STICK_REACH] of its height being the workspace edge); else the centre.
 func hand_target(viewport: Viewport) -> Vector2:
 	var keys: Vector2 = Vector2.ZERO
 	if _hand_actions_complete and feed_actions.is_empty():
@@ -83,11 +112,9 @@ func hand_target(viewport: Viewport) -> Vector2:
 			_action_strength(1) - _action_strength(0), _action_strength(3) - _action_strength(2)
 		)
 		keys = keys.limit_length(1.0)
-	if not keys.is_zero_approx() or not _mouse_seen:
+	if not keys.is_zero_approx():
 		return keys
-	var size: Vector2 = viewport.get_visible_rect().size
-	var offset: Vector2 = viewport.get_mouse_position() - size * 0.5
-	return (offset / (size.y * 0.25)).limit_length(1.0)
+	return mouse_stick(viewport).deflection()
 
 
 # Four actions or none; an empty name is no action, names the project lacks are reported once;

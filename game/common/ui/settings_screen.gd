@@ -49,7 +49,7 @@ func _ready() -> void:
 		force_slider.min_value = scale_range.x
 		force_slider.max_value = scale_range.y
 	control_option.clear()
-	control_option.add_item("Haptic device (the mouse moves the hand)")
+	control_option.add_item("Haptic device (drag with the mouse to steer)")
 	control_option.add_item("Keyboard / gamepad")
 	_populate_devices()
 	refresh()
