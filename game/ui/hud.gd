@@ -1,13 +1,20 @@
 class_name Hud
 extends CanvasLayer
-## The in-game overlay: the rendered force as arrows by component around a small avatar
-## glyph (and at the player's screen position), with a colour legend; a scrolling plot of
-## |total force| over the last 5 s; the device name and servo rate; the simulated device's
-## device position against the hand target; the run's time and items.
+## The in-game overlay. [constant View.COMPACT] (the default) shows the run's time and items
+## in one small panel, and the mouse stick while it is held. [constant View.LAB] adds the
+## rendered force as arrows by component around a small avatar glyph (and at the player's
+## screen position), with a colour legend; a scrolling plot of |total force| over the last
+## 5 s; the device name and servo rate; the simulated device's position against the hand
+## target. The [code]lab_view[/code] action (H) switches between them.
 ##
 ## Every control ignores the mouse, which moves the simulated device's hand target. With
 ## [member live] on, the HUD polls the [code]Haptics[/code] autoload each frame; tests turn
 ## it off and call [method show_forces] directly.
+
+## The player switched the view with the lab_view action.
+signal view_changed(view: View)
+
+enum View { COMPACT, LAB }
 
 ## Components listed in the legend, in order.
 const LEGEND_ORDER: Array[String] = [
@@ -22,8 +29,15 @@ const LABEL_PERIOD: float = 0.25
 
 ## Poll the haptics every frame (off in tests, which feed [method show_forces]).
 @export var live: bool = true
-## Draw the force arrows at the player's screen position too.
+## Draw the force arrows at the player's screen position too (in the lab view).
 @export var arrows_at_player: bool = true
+## What it shows; the run panel sits at the top in the compact view and at the bottom in
+## the lab view, clear of the lab panels at every window size.
+@export var view: View = View.COMPACT:
+	set(value):
+		view = value
+		if is_node_ready():
+			_show_view()
 
 var _player: Node2D = null
 var _legend_values: Dictionary[String, Label] = {}
@@ -43,14 +57,26 @@ var _label_timer: float = 0.0
 @onready var _control: Label = %Control
 @onready var _time: Label = %TimeValue
 @onready var _items: Label = %ItemsValue
+@onready var _forces_panel: Control = %ForcesPanel
+@onready var _right_column: Control = %RightColumn
+@onready var _run_panel: Control = %RunPanel
+@onready var _view_hint: Label = %ViewHint
 
 
 func _ready() -> void:
 	_build_legend()
 	_ignore_mouse(self)
+	_show_view()
 	set_max_force(ForcePlot.full_scale(Haptics.device.get_max_force()))
 	set_run_info(0.0, 0, -1)
 	_refresh_labels()
+
+
+func _unhandled_input(event: InputEvent) -> void:
+	if event.is_action_pressed(&"lab_view"):
+		view = View.LAB if view == View.COMPACT else View.COMPACT
+		view_changed.emit(view)
+		get_viewport().set_input_as_handled()
 
 
 func _process(delta: float) -> void:
@@ -176,8 +202,25 @@ static func servo_stopped_text(servo_status: String, device_status: HapticDevice
 	return "servo stopped: %s" % servo_status
 
 
+func _show_view() -> void:
+	var lab: bool = view == View.LAB
+	_forces_panel.visible = lab
+	_right_column.visible = lab
+	_view_hint.text = "H: hide the lab view" if lab else "H: lab view (forces, device)"
+	# Top centre in the compact view; bottom centre under the lab view's two top panels.
+	var height: float = _run_panel.offset_bottom - _run_panel.offset_top
+	var top: float = 16.0 if not lab else -16.0 - height
+	_run_panel.anchor_top = 0.0 if not lab else 1.0
+	_run_panel.anchor_bottom = _run_panel.anchor_top
+	_run_panel.offset_top = top
+	_run_panel.offset_bottom = top + height
+	_follow_player()
+
+
 func _follow_player() -> void:
-	var follow: bool = arrows_at_player and _player != null and is_instance_valid(_player)
+	var follow: bool = (
+		view == View.LAB and arrows_at_player and _player != null and is_instance_valid(_player)
+	)
 	_world_arrows.visible = follow
 	if follow:
 		_world_arrows.position = _player.get_global_transform_with_canvas().origin

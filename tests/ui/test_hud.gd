@@ -130,7 +130,10 @@ func test_the_world_arrows_sit_on_the_player() -> void:
 	_hud.set_player(body)
 	await wait_process_frames(2)
 	var world: ForceArrows = _hud.get_world_arrows()
-	assert_true(world.visible)
+	assert_false(world.visible, "the compact view draws nothing over the player")
+	_hud.view = Hud.View.LAB
+	await wait_process_frames(2)
+	assert_true(world.visible, "the lab view does")
 	assert_almost_eq(world.position, body.get_global_transform_with_canvas().origin, 0.01)
 	_hud.set_player(null)
 	assert_false(world.visible)
