@@ -66,12 +66,17 @@ func _ready() -> void:
 ## Shows the consent text and where the researcher edits it.
 func set_consent_text(text: String, source: String) -> void:
 	_consent_text.text = text.strip_edges()
-	_consent_hint.text = "Shown from %s" % source
+	_consent_hint.text = (
+		"Shown from %s (your approved text goes in consent.txt in the study folder)" % source
+		if source.begins_with("res://")
+		else "Shown from %s" % source
+	)
 
 
-## Shows the study folder.
+## Shows the study folder; a long path wraps after a folder separator, never inside a name
+## (a zero-width space after each one is where the line may break).
 func set_data_folder(path: String) -> void:
-	_data_label.text = "Data: %s" % path
+	_data_label.text = "Data: %s" % path.replace("/", "/\u200b")
 
 
 ## Presets the researcher's options.
