@@ -27,6 +27,8 @@ func _ready() -> void:
 	settings_button.pressed.connect(settings_requested.emit)
 	quit_button.pressed.connect(quit_requested.emit)
 	_status.text = device_status_text()
+	# One name for the game: the project's, which the window title and exports carry too.
+	(%Title as Label).text = ProjectSettings.get_setting("application/config/name")
 	UiFocus.grab_later(play_button)
 
 
