@@ -1,7 +1,8 @@
 class_name GameSettings
 extends Node
-## Keeps the player's haptic settings in [code]user://settings.cfg[/code]: the chosen
-## device, and the [code]Haptics[/code] autoload's force scale, smoothing and control mode.
+## Keeps the player's settings in [code]user://settings.cfg[/code]: the chosen device, the
+## [code]Haptics[/code] autoload's force scale, smoothing and control mode, and the
+## display's: volume, fullscreen and the HUD's lab view.
 ##
 ## The values themselves, their defaults and their validation belong to [code]Haptics[/code]:
 ## [member force_scale], [member smoothing_enabled] and [member control_mode] read and write
@@ -27,6 +28,8 @@ signal changed
 const DEFAULT_PATH: String = "user://settings.cfg"
 ## Section of the file holding the haptics settings.
 const SECTION: String = "haptics"
+## Section of the file holding the display settings.
+const DISPLAY_SECTION: String = "display"
 
 ## File this instance loads from and saves to.
 var path: String = DEFAULT_PATH
@@ -53,6 +56,28 @@ var control_mode: StringName:
 	set(value):
 		var mode: StringName = value if Haptics.is_control_mode(value) else Haptics.CONTROL_DEVICE
 		_change(func() -> void: Haptics.control_mode = mode)
+## The master volume, 0 (silent) to 1 (full), applied to the audio's master bus.
+var volume: float = 1.0:
+	set(value):
+		var clamped: float = clampf(value, 0.0, 1.0) if is_finite(value) else volume
+		if clamped != volume:
+			volume = clamped
+			_apply_display()
+			changed.emit()
+## Whether the game fills the screen.
+var fullscreen: bool = false:
+	set(value):
+		if value != fullscreen:
+			fullscreen = value
+			_apply_display()
+			changed.emit()
+## Whether the side-scroller's HUD opens in its lab view (forces, plot, device); the H key
+## switches it during play too.
+var lab_view: bool = false:
+	set(value):
+		if value != lab_view:
+			lab_view = value
+			changed.emit()
 ## Why the last [method load_settings] or [method apply] fell back to something; empty
 ## when all went well.
 var last_warning: String = ""
@@ -101,6 +126,9 @@ func set_device_id(value: String) -> void:
 ## Restores every value to its default (does not save).
 func reset_to_defaults() -> void:
 	device_id = Haptics.device.get_simulated_id()
+	volume = 1.0
+	fullscreen = false
+	lab_view = false
 	_change(Haptics.reset_settings)
 
 
@@ -124,6 +152,9 @@ func load_settings() -> Error:
 	smoothing_enabled = _read(file, "smoothing", TYPE_BOOL, smoothing_enabled)
 	var mode: String = _read(file, "control_mode", TYPE_STRING, String(control_mode))
 	control_mode = StringName(mode)
+	volume = _read(file, "volume", TYPE_FLOAT, volume, DISPLAY_SECTION)
+	fullscreen = _read(file, "fullscreen", TYPE_BOOL, fullscreen, DISPLAY_SECTION)
+	lab_view = _read(file, "lab_view", TYPE_BOOL, lab_view, DISPLAY_SECTION)
 	changed.emit()
 	return OK
 
@@ -135,6 +166,9 @@ func save_settings() -> Error:
 	file.set_value(SECTION, "force_scale", force_scale)
 	file.set_value(SECTION, "smoothing", smoothing_enabled)
 	file.set_value(SECTION, "control_mode", String(control_mode))
+	file.set_value(DISPLAY_SECTION, "volume", volume)
+	file.set_value(DISPLAY_SECTION, "fullscreen", fullscreen)
+	file.set_value(DISPLAY_SECTION, "lab_view", lab_view)
 	var err: Error = file.save(path)
 	if err != OK:
 		_warn("Could not save settings to %s: %s." % [path, error_string(err)])
@@ -172,6 +206,22 @@ func _change(change: Callable) -> void:
 		changed.emit()
 
 
+# Volume and window mode take effect at once for the autoload's settings (other instances,
+# the tests', turn load_on_ready off); a headless run has no window to change.
+func _apply_display() -> void:
+	if not (load_on_ready and is_inside_tree()):
+		return
+	var bus: int = AudioServer.get_bus_index(&"Master")
+	if bus >= 0:
+		AudioServer.set_bus_volume_linear(bus, volume)
+	if DisplayServer.get_name() == "headless":
+		return
+	var window: Window = get_tree().root
+	var wanted: Window.Mode = Window.MODE_FULLSCREEN if fullscreen else Window.MODE_WINDOWED
+	if window.mode != wanted and not (window.mode == Window.MODE_MAXIMIZED and not fullscreen):
+		window.mode = wanted
+
+
 func _open_simulated() -> void:
 	var simulated: String = Haptics.device.get_simulated_id()
 	device_id = simulated
@@ -191,10 +241,12 @@ func _warn(message: String) -> void:
 	push_warning(message)
 
 
-# The file's value of [param key] if it has [param type] (an int counts as a float), else
-# [param fallback].
-static func _read(file: ConfigFile, key: String, type: Variant.Type, fallback: Variant) -> Variant:
-	var value: Variant = file.get_value(SECTION, key, fallback)
+# The file's value of [param key] in [param section] if it has [param type] (an int counts
+# as a float), else [param fallback].
+static func _read(
+	file: ConfigFile, key: String, type: Variant.Type, fallback: Variant, section: String = SECTION
+) -> Variant:
+	var value: Variant = file.get_value(section, key, fallback)
 	var found: int = typeof(value)
 	if found == type or (type == TYPE_FLOAT and found == TYPE_INT):
 		return value

@@ -61,6 +61,8 @@ func _ready() -> void:
 	total_items = level.get_item_total()
 	hud.set_player(player)
 	hud.set_run_info(0.0, 0, total_items)
+	hud.view = Hud.View.LAB if Settings.lab_view else Hud.View.COMPACT
+	hud.view_changed.connect(_on_hud_view_changed)
 	pause_menu.quit_requested.connect(menu_requested.emit)
 	goal_screen.play_again_requested.connect(restart_requested.emit)
 	goal_screen.menu_requested.connect(menu_requested.emit)
@@ -121,3 +123,9 @@ func _on_goal_reached() -> void:
 	player.input_vector = Vector2.ZERO
 	if pilot == null:
 		goal_screen.show_result(elapsed, collected, total_items)
+
+
+# The H key's choice is the player's setting from then on.
+func _on_hud_view_changed(view: Hud.View) -> void:
+	Settings.lab_view = view == Hud.View.LAB
+	Settings.save_settings()

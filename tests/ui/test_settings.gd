@@ -130,3 +130,33 @@ func _assert_defaults(settings: GameSettings) -> void:
 	assert_eq(settings.force_scale, 1.0)
 	assert_true(settings.smoothing_enabled)
 	assert_eq(settings.control_mode, Haptics.CONTROL_DEVICE)
+
+
+func test_the_display_settings_survive_a_save_and_refuse_nonsense() -> void:
+	var written: GameSettings = _make()
+	written.volume = 0.4
+	written.fullscreen = true
+	written.lab_view = true
+	assert_eq(written.save_settings(), OK)
+	var read: GameSettings = _make()
+	assert_eq(read.load_settings(), OK)
+	assert_almost_eq(read.volume, 0.4, 1e-6)
+	assert_true(read.fullscreen)
+	assert_true(read.lab_view)
+	read.volume = NAN
+	assert_almost_eq(read.volume, 0.4, 1e-6, "NaN keeps the volume")
+	read.volume = 3.0
+	assert_almost_eq(read.volume, 1.0, 1e-6, "clamped to full")
+	read.reset_to_defaults()
+	assert_almost_eq(read.volume, 1.0, 1e-6)
+	assert_false(read.fullscreen)
+	assert_false(read.lab_view, "the compact HUD by default")
+
+
+func test_the_autoloads_volume_reaches_the_master_bus() -> void:
+	var settings: GameSettings = get_node(^"/root/Settings") as GameSettings
+	settings.volume = 0.25
+	var bus: int = AudioServer.get_bus_index(&"Master")
+	assert_almost_eq(AudioServer.get_bus_volume_linear(bus), 0.25, 1e-3)
+	settings.volume = 1.0
+	assert_almost_eq(AudioServer.get_bus_volume_linear(bus), 1.0, 1e-3)

@@ -1,7 +1,8 @@
 class_name SettingsScreen
 extends Control
 ## Edits a [GameSettings] (the [code]Settings[/code] autoload unless [member settings] is
-## set before the screen enters the tree): device, force scale, smoothing and control mode.
+## set before the screen enters the tree): device, force scale, smoothing, control mode,
+## volume, fullscreen and the HUD's lab view.
 ## Changes apply to the haptics at once; [b]Back[/b] (or [code]ui_cancel[/code]) saves
 ## them when anything changed and emits [signal closed].
 
@@ -26,11 +27,15 @@ var _refreshing: bool = false
 @onready var smoothing_check: CheckButton = %SmoothingCheck
 ## Control mode: index 0 device, 1 keyboard.
 @onready var control_option: OptionButton = %ControlOption
+@onready var volume_slider: HSlider = %VolumeSlider
+@onready var fullscreen_check: CheckButton = %FullscreenCheck
+@onready var lab_view_check: CheckButton = %LabViewCheck
 @onready var defaults_button: Button = %DefaultsButton
 ## Saves and closes.
 @onready var back_button: Button = %BackButton
 @onready var _device_info: Label = %DeviceInfo
 @onready var _force_value: Label = %ForceValue
+@onready var _volume_value: Label = %VolumeValue
 @onready var _warning: Label = %Warning
 @onready var _dim: ColorRect = %Dim
 
@@ -57,6 +62,9 @@ func _ready() -> void:
 	force_slider.value_changed.connect(_on_force_changed)
 	smoothing_check.toggled.connect(_on_smoothing_toggled)
 	control_option.item_selected.connect(_on_control_selected)
+	volume_slider.value_changed.connect(_on_volume_changed)
+	fullscreen_check.toggled.connect(_on_fullscreen_toggled)
+	lab_view_check.toggled.connect(_on_lab_view_toggled)
 	defaults_button.pressed.connect(_on_defaults_pressed)
 	back_button.pressed.connect(close)
 	UiFocus.grab_later(device_option)
@@ -86,6 +94,10 @@ func refresh() -> void:
 	_force_value.text = "%.2f×" % settings.force_scale
 	smoothing_check.button_pressed = settings.smoothing_enabled
 	control_option.select(1 if settings.control_mode == Haptics.CONTROL_KEYBOARD else 0)
+	volume_slider.value = settings.volume
+	_volume_value.text = "%d %%" % roundi(settings.volume * 100.0)
+	fullscreen_check.button_pressed = settings.fullscreen
+	lab_view_check.button_pressed = settings.lab_view
 	_show_device_info()
 	_show_warning(settings.last_warning)
 	_refreshing = false
@@ -173,6 +185,26 @@ func _on_control_selected(index: int) -> void:
 		return
 	settings.control_mode = Haptics.CONTROL_KEYBOARD if index == 1 else Haptics.CONTROL_DEVICE
 	_changed()
+
+
+func _on_volume_changed(value: float) -> void:
+	_volume_value.text = "%d %%" % roundi(value * 100.0)
+	if _refreshing:
+		return
+	settings.volume = value
+	_changed()
+
+
+func _on_fullscreen_toggled(on: bool) -> void:
+	if not _refreshing:
+		settings.fullscreen = on
+		_changed()
+
+
+func _on_lab_view_toggled(on: bool) -> void:
+	if not _refreshing:
+		settings.lab_view = on
+		_changed()
 
 
 func _on_defaults_pressed() -> void:
