@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(build-essential cmake ninja-build pkg-config libhidapi-dev libusb-1.0-0-dev
   doctest-dev clang-format python3 python3-venv debian-archive-keyring ca-certificates
-  rt-tests xvfb openbox patchelf qemu-system-x86 busybox-static kmod libdbus-1-dev rtkit dbus
+  rt-tests xvfb openbox xdotool patchelf qemu-system-x86 busybox-static kmod libdbus-1-dev rtkit dbus
   polkitd util-linux debootstrap
   # The Windows build (tools/windows/): MinGW-w64 (the posix thread model: std::thread) and
   # Wine to run its doctests.

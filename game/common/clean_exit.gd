@@ -18,19 +18,50 @@ const MIXES_TO_WAIT: int = 2
 ## whose audio thread never mixes still quits, after this long.
 const MIX_WAIT_LIMIT_S: float = 1.0
 
+## Frames after the window lost the focus or the pointer during which [method _process]
+## checks whether another program destroyed it.
+const GONE_CHECK_FRAMES: int = 30
+
 ## What quits once the sounds are gone; tests replace it.
 var quit_function: Callable = _quit_tree
 
 var _quitting: bool = false
+var _gone_checks_left: int = 0
 
 
 func _ready() -> void:
 	get_tree().auto_accept_quit = false
+	process_mode = Node.PROCESS_MODE_ALWAYS
 
 
 func _notification(what: int) -> void:
 	if what == NOTIFICATION_WM_CLOSE_REQUEST:
 		quit(0)
+	elif what == NOTIFICATION_WM_WINDOW_FOCUS_OUT or what == NOTIFICATION_WM_MOUSE_EXIT:
+		_gone_checks_left = GONE_CHECK_FRAMES
+
+
+# A window destroyed under the game (xdotool windowclose: no close request comes) left it
+# running, each frame drawing into nothing with X errors, until the driver crashed: the
+# focus and pointer leave it then, so a few frames after either ask X whether it is still
+# there, and quit without drawing again if not.
+func _process(_delta: float) -> void:
+	if _gone_checks_left <= 0 or _quitting:
+		return
+	_gone_checks_left -= 1
+	if window_gone():
+		RenderingServer.render_loop_enabled = false
+		quit(0)
+
+
+## Whether the main window no longer exists (X11 only: another program destroyed it). X
+## answers a query about a destroyed window with an error, which leaves the size unset.
+static func window_gone() -> bool:
+	if DisplayServer.get_name() != "X11":
+		return false
+	var outer: Vector2i = DisplayServer.window_get_size_with_decorations()
+	var inner: Vector2i = DisplayServer.window_get_size()
+	return outer.x < inner.x or outer.y < inner.y
 
 
 ## Whether [method quit] has been called (it runs over a few frames).

@@ -120,6 +120,9 @@ func update(_now: float, dt: float, _snapshot: PongState, _opponent: Vector3) ->
 	)
 	var before: Vector3 = intent.avatar
 	var step: Vector3 = Vector3(walk.x, 0.0, walk.y) * AVATAR_SPEED_M_PER_S * speed_factor * dt
+	if scheme == Scheme.DEVICE:
+		# The camera sits behind the device player's own side (a network game's seat).
+		step = PongCourt.side_rotation(player) * step
 	intent.avatar = _court.clamp_avatar(player, intent.avatar + step)
 	var offset: Vector3 = _device_offset(dt) if scheme == Scheme.DEVICE else _keyboard_offset(dt)
 	intent.normal = _normal()

@@ -1,7 +1,7 @@
 extends "res://tests/net/lobby_suite.gd"
 ## The network lobby on one machine: hosting lists the host in seat 1, ready-up is shown,
-## Start needs a second player, Leave closes the session, and a join to a port where
-## nobody listens fails with a message (no hang).
+## Start needs a second player and says at once that it starts the match, Leave closes the
+## session, and a join to a port where nobody listens fails with a message (no hang).
 
 ## Runs scenes or processes for seconds: make check (--quick) leaves it out.
 const SLOW := true
@@ -41,3 +41,19 @@ func test_joining_nobody_fails_with_a_message() -> void:
 		assert_true(failures[0].contains("no answer from the server"), failures[0])
 	assert_true(_lobby._status.text.contains("no answer"), _lobby._status.text)
 	assert_false(net.session.is_open())
+
+
+func test_start_says_so_at_once_and_the_match_follows() -> void:
+	var net: PongNet = _lobby.net
+	assert_eq(net.host(_port()), "")
+	net.set_ready(true)
+	net.players[42] = {"name": "Bob", "seat": 1, "ready": true}
+	_lobby._refresh()
+	assert_false(_lobby._start_button.disabled, "two players, both ready")
+	_lobby._start_button.pressed.emit()
+	# Before any frame: the press shows, though loading the court stalls the next frames.
+	assert_eq(_lobby._status.text, PongLobby.STARTING_TEXT)
+	assert_true(_lobby._start_button.disabled, "no second press")
+	assert_true(await wait_until(func() -> bool: return net.play.is_running(), 10.0))
+	assert_false(_lobby.visible, "the match shows instead of the lobby")
+	net.leave()

@@ -50,7 +50,7 @@ func test_the_seats_choice_reaches_pong_net_when_hosting() -> void:
 	assert_true(_lobby._seats_option.disabled, "the choice is fixed while hosting")
 	var lines: PackedStringArray = _lobby._players.text.split("\n")
 	assert_eq(lines.size(), 4, _lobby._players.text)
-	assert_true(lines[0].begins_with("Seat 1: Player"), lines[0])
+	assert_true(lines[0].begins_with("Seat 1: Host"), lines[0])
 	assert_true(lines[3].contains("Seat 4: open"), lines[3])
 	net.leave()
 	assert_false(_lobby._seats_option.disabled)

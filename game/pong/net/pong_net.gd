@@ -56,7 +56,8 @@ func _init() -> void:
 	play.owners_changed.connect(seats_changed)
 	add_child(play)
 	session.connected.connect(_on_connected)
-	session.failed.connect(func(reason: String) -> void: status_changed.emit(reason))
+	# Deferred: the session closes right after it fails, and the lobby shows it closed.
+	session.failed.connect(status_changed.emit, CONNECT_DEFERRED)
 	session.peer_left.connect(_on_peer_left)
 	session.server_lost.connect(_on_server_lost)
 	var router: PongNetRouter = session.router
@@ -166,6 +167,11 @@ func seats_changed() -> void:
 		return
 	for seat: int in seats:
 		_set_controller(seat)
+		var seat_owner: int = play.authority.owner_of(seat)
+		var me: int = multiplayer.get_unique_id()
+		var title: String = PongNetNames.seat_title(players, seats, seat, seat_owner, me)
+		if screen != null and screen.player_name(seat) != title:
+			screen.rename_player(seat, title)
 
 
 func _on_connected() -> void:
@@ -210,18 +216,25 @@ func _begin(owners: PackedInt64Array, health: int) -> void:
 	close_screen()
 	get_tree().paused = false
 	var me: int = multiplayer.get_unique_id()
+	var seat_here: int = players[me]["seat"] if players.has(me) else -1
+	var person_here: bool = seat_here >= 0 and not autopilot and not dedicated
 	session.announce_stall()
 	screen = PONG_SCENE.instantiate() as PongScreen
 	screen.stepped = stepped
 	screen.players = seats
 	screen.start_health = health
+	screen.viewer_seat = maxi(seat_here, 0)
+	for seat: int in seats:
+		screen.seat_names[seat] = PongNetNames.seat_title(players, seats, seat, owners[seat], me)
 	screen.process_mode = Node.PROCESS_MODE_PAUSABLE
 	add_child(screen)
 	var match_node: PongMatch = screen.match_node
 	match_node.self_stepping = false
 	match_node.auto_serve = false
 	match_node.rules_from_events = false
-	if not screen.start_match(PongMatch.Mode.DEMO, false):
+	# A person plays here against people: the computer only plays the seats nobody took.
+	var mode: PongMatch.Mode = PongMatch.Mode.VS_COMPUTER if person_here else PongMatch.Mode.DEMO
+	if not screen.start_match(mode, false):
 		status_changed.emit("No Pong renderer: build the extension")
 		return
 	screen.hud.visible = not dedicated
@@ -243,6 +256,8 @@ func _set_controller(seat: int) -> void:
 	var current: PongController = match_node.controllers[seat]
 	var seats_here: PackedInt32Array = play.local_seats
 	if seat_owner != me:
+		if match_node.local_player == seat:
+			match_node.local_player = -1  # No device drives a seat the network moves.
 		if not current is PongNetRemotePlayer:
 			var remote: PongNetRemotePlayer = PongNetRemotePlayer.new(seat)
 			remote.intent = current.intent
@@ -260,17 +275,30 @@ func _set_controller(seat: int) -> void:
 			return
 	if current is PongAi and (autopilot or not mine):
 		return
-	var radius: float = Haptics.device.get_workspace_radius()
 	if mine and not autopilot:
-		var human: PongHumanPlayer = PongHumanPlayer.new(
-			seat, PongHumanPlayer.Scheme.DEVICE, match_node.court, match_node.reach, radius
-		)
-		human.kinematic = true
-		match_node.controllers[seat] = human
+		_seat_person(seat, match_node)
 		return
 	var ai: PongAi = PongAi.new(seat, match_node.court, match_node.reach, seat + 1)
 	ai.intent = current.intent
 	match_node.controllers[seat] = ai
+
+
+# This peer's player drives [param seat] as in a match on this machine: the device scheme,
+# the device's own paddle (felt in the servo) when one is usable, else the mouse's kinematic
+# one.
+func _seat_person(seat: int, match_node: PongMatch) -> void:
+	var device: bool = PongServoLink.new().device_usable()
+	match_node.local_player = seat if device else -1
+	var current: PongController = match_node.controllers[seat]
+	if current is PongHumanPlayer and current.player == seat:
+		current.kinematic = not device
+		return
+	var radius: float = Haptics.device.get_workspace_radius()
+	var human: PongHumanPlayer = PongHumanPlayer.new(
+		seat, PongHumanPlayer.Scheme.DEVICE, match_node.court, match_node.reach, radius
+	)
+	human.kinematic = not device
+	match_node.controllers[seat] = human
 
 
 func _on_finished(winner: int) -> void:
@@ -337,8 +365,9 @@ func _on_hello(sender: int, hello: PongNetHelloMessage) -> void:
 	if play.is_running() or seat < 0:
 		session.refuse(sender, "a match is running" if play.is_running() else "the server is full")
 		return
-	players[sender] = {"name": hello.name, "seat": seat, "ready": false}
-	status_changed.emit("%s joined (seat %d)" % [hello.name, seat])
+	var unique: String = PongNetNames.unique(hello.name, players)
+	players[sender] = {"name": unique, "seat": seat, "ready": false}
+	status_changed.emit("%s joined (seat %d)" % [unique, seat + 1])
 	_broadcast_lobby()
 
 

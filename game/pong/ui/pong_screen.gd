@@ -38,6 +38,11 @@ const OLD_EXTENSION_TEXT: String = (
 @export_enum("2:2", "4:4") var players: int = 2
 ## Run the servo by hand, faster than real time (computer vs computer).
 @export var stepped: bool = false
+## The seat whose side the camera shows (-1: the device player's, else player 0's). A
+## network match sets its own player's seat.
+var viewer_seat: int = -1
+## Names by seat that replace the ones the controllers give (a network match: the lobby's).
+var seat_names: Dictionary[int, String] = {}
 
 var _running: bool = false
 
@@ -88,7 +93,8 @@ func start_match(p_mode: PongMatch.Mode, p_beginner: bool) -> bool:
 		setup.show_offline(OLD_EXTENSION_TEXT)
 		return false
 	setup.visible = false
-	world.build(match_node.court, match_node.reach, beginner, maxi(match_node.local_player, 0))
+	var viewer: int = viewer_seat if viewer_seat >= 0 else maxi(match_node.local_player, 0)
+	world.build(match_node.court, match_node.reach, beginner, viewer)
 	var titles: Array[String] = []
 	for player: int in match_node.court.players:
 		titles.append(player_name(player))
@@ -127,12 +133,22 @@ func is_running() -> bool:
 
 ## How [param player] is named on the HUD and the winner screen.
 func player_name(player: int) -> String:
+	if seat_names.has(player):
+		return seat_names[player]
 	var controller: PongController = match_node.controllers[player]
 	if controller is PongAi:
 		return "Computer" if mode != PongMatch.Mode.DEMO else "Computer %d" % (player + 1)
 	if player == match_node.local_player:
 		return "You · device"
 	return "You · mouse" if player == 0 else "Player 2 · keyboard"
+
+
+## Names [param player] [param title] from now on (a network player left: the computer
+## plays the seat).
+func rename_player(player: int, title: String) -> void:
+	seat_names[player] = title
+	if _running:
+		hud.get_panel(player).set_player(title, PongView.PLAYER_COLORS[player], start_health)
 
 
 ## Shows [param screen] (the network lobby) instead of the setup, which comes back when

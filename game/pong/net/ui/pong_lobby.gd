@@ -11,6 +11,10 @@ signal back_requested
 
 ## The court sizes a host can choose, in the order of the Seats choice.
 const SEAT_CHOICES: Array[int] = [2, 4]
+## The names of players who leave the name field empty.
+const HOST_NAME: String = "Host"
+const GUEST_NAME: String = "Guest"
+const STARTING_TEXT: String = "Starting the match…"
 
 var net: PongNet = null
 
@@ -27,6 +31,8 @@ var _back_button: Button = Button.new()
 var _status: Label = Label.new()
 var _players: Label = Label.new()
 var _panel: PanelContainer = PanelContainer.new()
+# Start was pressed and the match is about to load.
+var _starting: bool = false
 # Each input field's visible label, by field.
 var _labels: Dictionary[Control, Label] = {}
 
@@ -127,7 +133,7 @@ func _build() -> void:
 	_join_button.pressed.connect(_on_join)
 	_address_edit.text_submitted.connect(func(_text: String) -> void: _on_join())
 	_ready_check.toggled.connect(func(on: bool) -> void: net.set_ready(on))
-	_start_button.pressed.connect(func() -> void: net.start_match())
+	_start_button.pressed.connect(_on_start)
 	_leave_button.pressed.connect(_on_leave)
 	_back_button.pressed.connect(_on_back)
 	UiFocus.grab_later(_host_button)
@@ -140,11 +146,11 @@ func _build_form() -> GridContainer:
 	form.columns = 3
 	form.add_theme_constant_override(&"h_separation", 12)
 	form.add_theme_constant_override(&"v_separation", 8)
-	_name_edit.text = "Player"
+	_name_edit.placeholder_text = "%s or %s" % [HOST_NAME, GUEST_NAME]
 	_name_edit.max_length = PongNetProtocol.MAX_NAME_LENGTH
 	_name_edit.tooltip_text = (
-		"Your name, as the other players see it (up to %d characters)."
-		% PongNetProtocol.MAX_NAME_LENGTH
+		"Your name, as the other players see it (up to %d characters; empty: %s or %s)."
+		% [PongNetProtocol.MAX_NAME_LENGTH, HOST_NAME, GUEST_NAME]
 	)
 	_port_spin.min_value = 1024
 	_port_spin.max_value = 65535
@@ -187,13 +193,13 @@ func _add_row(form: GridContainer, text: String, field: Control, action: Button)
 
 
 func _on_host() -> void:
-	net.my_name = _player_name()
+	net.my_name = _player_name(HOST_NAME)
 	net.seats = chosen_seats()
 	net.host(int(_port_spin.value))
 
 
 func _on_join() -> void:
-	net.my_name = _player_name()
+	net.my_name = _player_name(GUEST_NAME)
 	net.join(_address_edit.text.strip_edges(), int(_port_spin.value))
 
 
@@ -208,9 +214,23 @@ func _on_back() -> void:
 	back_requested.emit()
 
 
-func _player_name() -> String:
+func _player_name(default: String) -> String:
 	var text: String = _name_edit.text.strip_edges()
-	return text if not text.is_empty() else "Player"
+	return text if not text.is_empty() else default
+
+
+# Loading the court stalls this peer for a moment: the lobby says so, and draws it, first.
+func _on_start() -> void:
+	if not net.can_start():
+		return
+	_starting = true
+	_start_button.disabled = true
+	_status.text = STARTING_TEXT
+	for frame: int in 2:
+		await get_tree().process_frame
+	_starting = false
+	if not net.start_match():
+		_refresh()
 
 
 func _on_status(text: String) -> void:
@@ -234,7 +254,7 @@ func _refresh() -> void:
 	_ready_check.disabled = not connected
 	_leave_button.disabled = not connected
 	_start_button.visible = net.session.is_server
-	_start_button.disabled = not net.can_start()
+	_start_button.disabled = _starting or not net.can_start()
 	_players.text = _player_lines() if connected else "No players yet."
 	var mine: Dictionary = net.players.get(net.my_id(), {})
 	var mine_ready: bool = mine.get("ready", false)

@@ -1,0 +1,132 @@
+extends TestSuite
+## A match started from the lobby is one between its people, seen from each one's own seat:
+## not the computer's demo, each seat named by its player (ours marked), the camera behind
+## our own seat, our avatar and paddle moved by our keys and mouse toward the sides we see,
+## the other person's seat driven by the network. No sockets: this peer is the server (the
+## offline peer's id, 1) with a second player, 42, in its lobby; what it sends goes nowhere.
+
+const OTHER: int = 42
+
+var _net: PongNet = null
+
+
+func after_each() -> void:
+	await _stop()
+
+
+# Ends the match and frees the peer.
+func _stop() -> void:
+	Input.action_release(&"move_left")
+	if _net != null and is_instance_valid(_net):
+		_net.leave()
+		_net.close_screen()
+		_net.queue_free()
+	_net = null
+	await wait_process_frames(2)
+
+
+## Starts a lobby match with this peer's player "Ada" in [param my_seat] and "Bob" in the
+## other; the match's screen, or null (and a failure) without the Pong renderer.
+func _start(my_seat: int) -> PongScreen:
+	if not assert_true(PongServo.shared().is_available(), "the extension has the Pong renderer"):
+		return null
+	_net = PongNet.new()
+	_net.stepped = true
+	add_child(_net)
+	_net.session.is_server = true
+	_net.players[1] = {"name": "Ada", "seat": my_seat, "ready": true}
+	_net.players[OTHER] = {"name": "Bob", "seat": 1 - my_seat, "ready": true}
+	assert_true(_net.can_start(), "two players, both ready")
+	assert_true(_net.start_match())
+	assert_not_null(_net.screen, "the match's screen")
+	return _net.screen
+
+
+# Steps the match [param seconds] of simulated time.
+func _step(seconds: float) -> void:
+	_net.play.match_node.run_until(func() -> bool: return false, seconds)
+
+
+# The camera's right, flat on the court.
+func _screen_right(screen: PongScreen) -> Vector3:
+	var right: Vector3 = screen.world.camera.global_transform.basis.x
+	return Vector3(right.x, 0.0, right.z).normalized()
+
+
+func test_the_match_is_between_the_people_and_named_by_the_lobby() -> void:
+	var screen: PongScreen = _start(0)
+	if screen == null:
+		return
+	var match_node: PongMatch = screen.match_node
+	assert_ne(match_node.mode, PongMatch.Mode.DEMO, "not the computer playing every side")
+	assert_true(match_node.controllers[0] is PongHumanPlayer, "our seat is our player's")
+	assert_true(match_node.controllers[1] is PongNetRemotePlayer, "Bob's comes over the network")
+	for controller: PongController in match_node.controllers:
+		assert_false(controller is PongAi, "no computer in a match of two people")
+	assert_eq(screen.player_name(0), "Ada (you)")
+	assert_eq(screen.player_name(1), "Bob")
+	assert_true(screen.hud.visible)
+
+
+func test_the_camera_and_the_keys_follow_our_own_seat() -> void:
+	for seat: int in [0, 1]:
+		var screen: PongScreen = _start(seat)
+		if screen == null:
+			return
+		var match_node: PongMatch = screen.match_node
+		var behind: Vector3 = -PongCourt.forward(seat)
+		assert_gt(screen.world.camera.global_position.dot(behind), 0.0, "behind seat %d" % seat)
+		assert_eq(screen.player_name(seat), "Ada (you)")
+		assert_eq(screen.player_name(1 - seat), "Bob")
+		_step(0.2)
+		var before: Vector3 = match_node.avatar_of(seat)
+		Input.action_press(&"move_left")
+		_step(0.4)
+		Input.action_release(&"move_left")
+		var moved: Vector3 = match_node.avatar_of(seat) - before
+		# Left as this window shows the court: against the camera's right.
+		assert_lt(moved.dot(_screen_right(screen)), -0.2, "seat %d walked left: %s" % [seat, moved])
+		await _stop()
+
+
+func test_the_mouse_moves_our_paddle_toward_the_side_we_see() -> void:
+	for seat: int in [0, 1]:
+		var screen: PongScreen = _start(seat)
+		if screen == null:
+			return
+		var match_node: PongMatch = screen.match_node
+		var size: Vector2 = Vector2(1280.0, 720.0)
+		var centre: InputEventMouseMotion = InputEventMouseMotion.new()
+		centre.position = size * 0.5
+		match_node.controllers[seat].handle_input(centre, size)
+		_step(0.6)
+		var before: Vector3 = match_node.snapshot.paddle_centers[seat]
+		var right: InputEventMouseMotion = InputEventMouseMotion.new()
+		right.position = size * 0.5 + Vector2(size.y * 0.2, 0.0)
+		match_node.controllers[seat].handle_input(right, size)
+		_step(0.6)
+		var moved: Vector3 = match_node.snapshot.paddle_centers[seat] - before
+		assert_gt(moved.dot(_screen_right(screen)), 0.05, "seat %d paddle: %s" % [seat, moved])
+		await _stop()
+
+
+func test_players_who_keep_the_default_name_get_distinct_ones() -> void:
+	_net = PongNet.new()
+	add_child(_net)
+	_net.seats = 4
+	_net.session.is_server = true
+	_net.players[1] = {"name": "Host", "seat": 0, "ready": false}
+	var lines: Array[String] = []
+	_net.status_changed.connect(func(text: String) -> void: lines.append(text))
+	for peer: int in [OTHER, OTHER + 1]:
+		var hello: PongNetHelloMessage = PongNetHelloMessage.new()
+		hello.name = "Guest"
+		_net.session.router.receive(peer, hello.encode())
+	assert_eq(_net.players[OTHER]["name"], "Guest")
+	assert_eq(_net.players[OTHER + 1]["name"], "Guest 2")
+	assert_eq(lines, ["Guest joined (seat 2)", "Guest 2 joined (seat 3)"] as Array[String])
+	var long: String = "x".repeat(PongNetProtocol.MAX_NAME_LENGTH)
+	_net.players[OTHER + 2] = {"name": long, "seat": 3, "ready": false}
+	var again: String = PongNetNames.unique(long, _net.players)
+	assert_eq(again.length(), PongNetProtocol.MAX_NAME_LENGTH, again)
+	assert_true(again.ends_with(" 2"), again)
