@@ -166,6 +166,7 @@ class Person:
     scratch: Path
     ocr_seconds: list[float] = field(default_factory=list)
     _count: int = 0
+    _last_look: str = OCR_VARIANTS[0][0]
 
     def _x(self, *args: str) -> None:
         subprocess.run(["xdotool", *args], env=self.display.env(), check=True, timeout=30,
@@ -214,14 +215,25 @@ class Person:
         deadline = time.monotonic() + patience
         while True:
             shot = self.grab(self.scratch / "look.png")
-            for variant in OCR_VARIANTS:
+            # The look that found the last text first: screens come in runs of one kind.
+            for variant in sorted(OCR_VARIANTS, key=lambda v: v[0] != self._last_look):
                 boxes = [b for b in _phrase_boxes(self.read_words(shot, variant), text)
                          if b.top >= below]
                 if boxes:
+                    self._last_look = variant[0]
                     return boxes[0]
             if time.monotonic() > deadline:
                 return None
             time.sleep(0.5)
+
+    def wait_gone(self, text: str, patience: float = FIND_PATIENCE_S, below: int = 24) -> bool:
+        """Whether `text` has left the screen (looked at again until the deadline)."""
+        deadline = time.monotonic() + patience
+        while self.find_text(text, 0.0, below) is not None:
+            if time.monotonic() > deadline:
+                return False
+            time.sleep(0.3)
+        return True
 
     def wait_text(self, text: str, patience: float = FIND_PATIENCE_S, below: int = 24) -> Box:
         box = self.find_text(text, patience, below)
