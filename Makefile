@@ -28,7 +28,7 @@ SOAK_SECONDS ?= 600
 	test-godot-unit lint test-schema pong-demo \
 	export test-export export-server test-export-server dist test-dist test-windowed test-net bench-net bench soak sanitize analyze export-study \
 	test-analysis addon test-addon test-editor test-kernel test-rt test-bare clean distclean \
-	build-windows test-windows
+	build-windows test-windows test-person
 
 ## help: the documented targets, one line each (this list)
 help:
@@ -99,8 +99,8 @@ pong-demo: import
 ## test: every suite: what CI runs (about 40 minutes)
 ## Any failure fails the target.
 test: import test-native test-godot lint test-schema test-analysis test-net test-export \
-	test-export-server test-dist test-windowed test-addon test-editor test-kernel test-rt \
-	test-bare test-windows
+	test-export-server test-dist test-windowed test-person test-addon test-editor test-kernel \
+	test-rt test-bare test-windows
 	@echo "make test: all suites passed"
 
 ## check: the quick loop: build, doctests, the GDScript unit suites, lint (under 5 minutes)
@@ -142,6 +142,16 @@ test-godot: import
 ## on a non-zero exit, an error or any leak reported at exit (tools/test-windowed.sh).
 test-windowed: import
 	@tools/test-windowed.sh
+
+## test-person: a scripted person plays the windowed game with keys and mouse (Xvfb)
+## The real game in a window (Xvfb, openbox), started as `make play` starts it (and the exported
+## one when .export/linux has it); the person acts only through input events (xdotool) at
+## places it reads off screenshots (tesseract): level 1 through the pause menu and Settings,
+## played with the keys toward the goal, the window closed (exit 0); Pong against the computer
+## and its serve. Fails on any error or X error line; screenshots in .build/person/<test>/
+## (tests/person, about 5 minutes).
+test-person: import
+	@tools/analysis/run.sh -m pytest tests/person -q -rsx -p no:cacheprovider -s
 
 ## lint: the schemas current, include layers, the typed boundary, gdlint, gdformat, clang-format
 ## the C++ layers' include directions and the 400-line limit (tools/check-includes.py),

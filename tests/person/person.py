@@ -1,0 +1,357 @@
+"""A scripted person at the real windowed game: only the screen, the keys and the mouse.
+
+Everything a test does goes through the X server the game draws on (Xvfb, 1280x720, with
+openbox as the window manager, as on a desktop): screenshots (ImageMagick's `import`), words
+found on them by OCR (tesseract's word boxes), and input events (xdotool: mouse moves,
+clicks, key presses and releases, the window manager's close shortcut). Nothing reads the
+game's internals, and the game is started with a player's command line and no flag of ours.
+
+Every process is started here and stopped by its PID (the game, openbox, Xvfb); every
+screenshot of a key moment is kept in .build/person/<test>/NN-moment.png.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import signal
+import subprocess
+import tempfile
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+GODOT = ROOT / "tools" / "godot"
+EXPORTED = ROOT / ".export" / "linux" / "haptic-game"
+SHOTS = ROOT / ".build" / "person"
+SCREEN = (1280, 720)
+# Generous bounds for a loaded 2-core machine: they only stop a test that hangs.
+START_PATIENCE_S = 90.0
+FIND_PATIENCE_S = 30.0
+EXIT_PATIENCE_S = 30.0
+# What fails every run when the game prints it: an engine or script error, or an X error.
+ERROR_LINE = re.compile(r"^(ERROR|SCRIPT ERROR)|BadWindow|BadDrawable|X Error")
+
+
+def tools_missing() -> list[str]:
+    return [t for t in ("Xvfb", "openbox", "xdotool", "import", "convert", "tesseract") if not shutil.which(t)]
+
+
+def _stop(proc: subprocess.Popen | None, patience: float = 10.0) -> None:
+    """Stops one process we started, by its PID: SIGTERM, then SIGKILL."""
+    if proc is None or proc.poll() is not None:
+        return
+    proc.send_signal(signal.SIGTERM)
+    try:
+        proc.wait(timeout=patience)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        proc.wait(timeout=patience)
+
+
+class Display:
+    """Xvfb on a free display (-displayfd, as tools/xvfb.sh) and openbox on it."""
+
+    def __init__(self, scratch: Path) -> None:
+        self.scratch = scratch
+        self.xvfb: subprocess.Popen | None = None
+        self.wm: subprocess.Popen | None = None
+        self.name = ""
+
+    def start(self) -> None:
+        read_fd, write_fd = os.pipe()
+        with open(self.scratch / "xvfb.log", "wb") as log:
+            self.xvfb = subprocess.Popen(
+                ["Xvfb", "-displayfd", str(write_fd), "-screen", "0", f"{SCREEN[0]}x{SCREEN[1]}x24",
+                 "-nolisten", "tcp"],
+                pass_fds=(write_fd,), stdout=log, stderr=log)
+        os.close(write_fd)
+        number = b""
+        deadline = time.monotonic() + 30.0
+        with os.fdopen(read_fd, "rb", buffering=0) as pipe:
+            while not number.endswith(b"\n") and time.monotonic() < deadline:
+                chunk = pipe.read(16)
+                if not chunk:
+                    break
+                number += chunk
+        if not number.strip():
+            raise RuntimeError(f"Xvfb did not start: {(self.scratch / 'xvfb.log').read_text()}")
+        self.name = ":" + number.decode().strip()
+        with open(self.scratch / "openbox.log", "wb") as log:
+            self.wm = subprocess.Popen(["openbox"], env=self.env(), stdout=log, stderr=log)
+
+    def env(self) -> dict[str, str]:
+        env = dict(os.environ)
+        env["DISPLAY"] = self.name
+        env.pop("WAYLAND_DISPLAY", None)
+        return env
+
+    def stop(self) -> None:
+        _stop(self.wm)
+        _stop(self.xvfb)
+
+
+@dataclass
+class Word:
+    text: str
+    left: int
+    top: int
+    width: int
+    height: int
+    conf: float
+
+    @property
+    def right(self) -> int:
+        return self.left + self.width
+
+
+@dataclass
+class Box:
+    text: str
+    left: int
+    top: int
+    right: int
+    bottom: int
+
+    @property
+    def center(self) -> tuple[int, int]:
+        return ((self.left + self.right) // 2, (self.top + self.bottom) // 2)
+
+
+def _norm(word: str) -> str:
+    return re.sub(r"[^0-9a-z/]", "", word.lower())
+
+
+def _phrase_boxes(words: list[Word], phrase: str) -> list[Box]:
+    """Every place where the phrase's words stand in a row on one line."""
+    wanted = [_norm(w) for w in phrase.split() if _norm(w)]
+    usable = [w for w in words if _norm(w.text)]
+    rows = sorted(usable, key=lambda w: (w.top + w.height // 2, w.left))
+    found = []
+    for i, first in enumerate(rows):
+        if _norm(first.text) != wanted[0]:
+            continue
+        chain = [first]
+        for want in wanted[1:]:
+            last = chain[-1]
+            mid = last.top + last.height / 2
+            nxt = [w for w in usable
+                   if _norm(w.text) == want and abs(w.top + w.height / 2 - mid) < last.height * 0.7
+                   and 0 <= w.left - last.right < 3 * last.height]
+            if not nxt:
+                break
+            chain.append(min(nxt, key=lambda w: w.left))
+        if len(chain) == len(wanted):
+            found.append(Box(phrase, min(w.left for w in chain), min(w.top for w in chain),
+                             max(w.right for w in chain), max(w.top + w.height for w in chain)))
+    return found
+
+
+# Two looks at a screenshot: the light text alone (a gray threshold, black on white: the
+# game's buttons, whose borders and focus rings otherwise hide a short word such as "Play"),
+# then the whole picture in gray, negated, at twice its size (the orange titles, the HUD's
+# small text). Tesseract's sparse-text mode finds words anywhere on a screen that is not a page.
+OCR_VARIANTS = (("light", ["-colorspace", "Gray", "-threshold", "65%", "-negate"], 1),
+                ("gray2x", ["-colorspace", "Gray", "-negate", "-resize", "200%"], 2))
+
+
+@dataclass
+class Person:
+    """The person: eyes (screenshots, OCR), hands (xdotool), a folder of key moments."""
+
+    display: Display
+    shots: Path
+    scratch: Path
+    ocr_seconds: list[float] = field(default_factory=list)
+    _count: int = 0
+    _last_look: str = OCR_VARIANTS[0][0]
+
+    def _x(self, *args: str) -> None:
+        subprocess.run(["xdotool", *args], env=self.display.env(), check=True, timeout=30,
+                       stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+
+    # Eyes.
+    def grab(self, path: Path) -> Path:
+        subprocess.run(["import", "-window", "root", str(path)], env=self.display.env(),
+                       check=True, timeout=60)
+        return path
+
+    def screenshot(self, name: str) -> Path:
+        """Keeps a screenshot of a key moment as NN-name.png in the test's folder."""
+        self._count += 1
+        return self.grab(self.shots / f"{self._count:02d}-{name}.png")
+
+    def read_words(self, shot: Path, variant: tuple[str, list[str], int]) -> list[Word]:
+        label, args, scale = variant
+        prepared = self.scratch / f"ocr-{label}.png"
+        subprocess.run(["convert", str(shot), *args, str(prepared)], check=True, timeout=60)
+        started = time.monotonic()
+        # One thread: the machine is shared, and tesseract's threads gain nothing on a screen.
+        out = subprocess.run(["tesseract", str(prepared), "-", "--psm", "11", "tsv"],
+                             env={**os.environ, "OMP_THREAD_LIMIT": "1"}, check=True,
+                             capture_output=True, text=True, timeout=120).stdout
+        self.ocr_seconds.append(time.monotonic() - started)
+        words = []
+        for line in out.splitlines()[1:]:
+            cols = line.split("\t")
+            if len(cols) < 12 or not cols[11].strip() or float(cols[10]) < 40:
+                continue
+            left, top, width, height = (int(int(c) / scale) for c in cols[6:10])
+            words.append(Word(cols[11], left, top, width, height, float(cols[10])))
+        return words
+
+    def read_screen(self, shot: Path | None = None) -> list[Word]:
+        """Every word either look finds on the screen (or on a screenshot given)."""
+        shot = shot or self.grab(self.scratch / "look.png")
+        return [w for v in OCR_VARIANTS for w in self.read_words(shot, v)]
+
+    def find_text(self, text: str, patience: float = FIND_PATIENCE_S,
+                  below: int = 0) -> Box | None:
+        """Where `text` (one or more words on a line) is on the screen, looking again until the
+        deadline; None if it never shows. `below` skips what is above that screen row (the
+        window's title bar names the game too)."""
+        deadline = time.monotonic() + patience
+        while True:
+            shot = self.grab(self.scratch / "look.png")
+            # The look that found the last text first: screens come in runs of one kind.
+            for variant in sorted(OCR_VARIANTS, key=lambda v: v[0] != self._last_look):
+                boxes = [b for b in _phrase_boxes(self.read_words(shot, variant), text)
+                         if b.top >= below]
+                if boxes:
+                    self._last_look = variant[0]
+                    return boxes[0]
+            if time.monotonic() > deadline:
+                return None
+            time.sleep(0.5)
+
+    def wait_gone(self, text: str, patience: float = FIND_PATIENCE_S, below: int = 24) -> bool:
+        """Whether `text` has left the screen (looked at again until the deadline)."""
+        deadline = time.monotonic() + patience
+        while self.find_text(text, 0.0, below) is not None:
+            if time.monotonic() > deadline:
+                return False
+            time.sleep(0.3)
+        return True
+
+    def wait_text(self, text: str, patience: float = FIND_PATIENCE_S, below: int = 24) -> Box:
+        box = self.find_text(text, patience, below)
+        if box is None:
+            shot = self.screenshot(f"missing-{_norm(text) or 'text'}")
+            raise AssertionError(f"{text!r} never showed on the screen within {patience:.0f} s "
+                                 f"(last screen: {shot})")
+        return box
+
+    # Hands.
+    def move_mouse(self, x: int, y: int) -> None:
+        self._x("mousemove", str(x), str(y))
+
+    def click(self, x: int, y: int) -> None:
+        """A person's click: the pointer comes to rest, the button is held a moment, and the
+        hand stays put a moment after (a game reads a click over several frames)."""
+        self._x("mousemove", str(x), str(y))
+        time.sleep(0.25)
+        self._x("mousedown", "1")
+        time.sleep(0.1)
+        self._x("mouseup", "1")
+        time.sleep(0.4)
+
+    def click_text(self, text: str, patience: float = FIND_PATIENCE_S) -> Box:
+        box = self.wait_text(text, patience)
+        self.click(*box.center)
+        return box
+
+    def press(self, key: str) -> None:
+        """A key pressed as a person does: down, a moment, up."""
+        self._x("keydown", key)
+        time.sleep(0.1)
+        self._x("keyup", key)
+        time.sleep(0.3)
+
+    def hold_keys(self, keys: list[str], seconds: float) -> None:
+        """Holds the keys down together for `seconds`, then lets them go (even on a failure)."""
+        for key in keys:
+            self._x("keydown", key)
+        try:
+            time.sleep(seconds)
+        finally:
+            for key in keys:
+                self._x("keyup", key)
+
+    def hold_key(self, key: str, seconds: float) -> None:
+        self.hold_keys([key], seconds)
+
+    def close_window(self) -> None:
+        """Closes the game's window as a player does on this desktop: the window manager's
+        close shortcut (Alt+F4 in openbox), which asks the game to close (WM_DELETE_WINDOW)."""
+        self.press("alt+F4")
+
+
+class Game:
+    """The game in its window, started as a player starts it, its output in a log file."""
+
+    def __init__(self, build: str, display: Display, log: Path) -> None:
+        self.build = build
+        self.display = display
+        self.log = log
+        self.proc: subprocess.Popen | None = None
+
+    def command(self) -> list[str]:
+        if self.build == "export":
+            return [str(EXPORTED)]
+        # What `make play` runs on a display (the Makefile's play target), with the renderer
+        # and audio this machine has (tools/test-windowed.sh): no flag of the tests.
+        return [str(GODOT), "--path", str(ROOT), "--rendering-driver", "opengl3",
+                "--audio-driver", "Dummy"]
+
+    def start(self) -> None:
+        with open(self.log, "wb") as out:
+            self.proc = subprocess.Popen(self.command(), cwd=ROOT, env=self.display.env(),
+                                         stdout=out, stderr=subprocess.STDOUT,
+                                         start_new_session=True)
+
+    def output(self) -> str:
+        return self.log.read_text(errors="replace") if self.log.exists() else ""
+
+    def error_lines(self) -> list[str]:
+        return [line for line in self.output().splitlines() if ERROR_LINE.search(line)]
+
+    def running(self) -> bool:
+        return self.proc is not None and self.proc.poll() is None
+
+    def wait_exit(self, patience: float = EXIT_PATIENCE_S) -> int | None:
+        assert self.proc is not None
+        try:
+            return self.proc.wait(timeout=patience)
+        except subprocess.TimeoutExpired:
+            return None
+
+    def stop(self) -> None:
+        # tools/godot execs the engine, so this PID is the game itself.
+        _stop(self.proc)
+
+
+class Session:
+    """One test's display, game and person; `close()` stops all of them."""
+
+    def __init__(self, test_name: str, build: str) -> None:
+        self.scratch = Path(tempfile.mkdtemp(prefix="person-"))
+        self.shots = SHOTS / test_name
+        shutil.rmtree(self.shots, ignore_errors=True)
+        self.shots.mkdir(parents=True)
+        print(f"person: screenshots of {test_name} in {self.shots}")
+        self.display = Display(self.scratch)
+        self.game = Game(build, self.display, self.shots / "game.log")
+        self.person = Person(self.display, self.shots, self.scratch)
+
+    def start(self) -> None:
+        self.display.start()
+        self.game.start()
+
+    def close(self) -> None:
+        try:
+            self.game.stop()
+        finally:
+            self.display.stop()
+            shutil.rmtree(self.scratch, ignore_errors=True)
