@@ -38,7 +38,7 @@ func act(dt: float) -> void:
 	var motion: InputEventMouseMotion = InputEventMouseMotion.new()
 	motion.position = size * 0.5 + planar.limit_length(1.0) * size.y * 0.25
 	motion.global_position = motion.position
-	viewport.push_input(motion)
+	viewport.push_input(motion, true)
 
 
 ## Lets go of every key it holds.
