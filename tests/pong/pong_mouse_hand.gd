@@ -32,7 +32,11 @@ func act(dt: float) -> void:
 	_hold(&"move_left", lag.x < -WALK_SLACK_M)
 	_hold(&"move_right", lag.x > WALK_SLACK_M)
 	var hand: Vector3 = turn.inverse() * (brain.avatar + brain.paddle_offset - avatar)
-	var planar: Vector2 = Vector2(hand.x, -hand.y) / _match.reach
+	_push_mouse(Vector2(hand.x, -hand.y) / _match.reach)
+
+
+# The mouse to [param planar] (screen directions, fractions of the workspace's radius).
+func _push_mouse(planar: Vector2) -> void:
 	var viewport: Viewport = _match.get_viewport()
 	var size: Vector2 = viewport.get_visible_rect().size
 	var motion: InputEventMouseMotion = InputEventMouseMotion.new()
@@ -41,11 +45,13 @@ func act(dt: float) -> void:
 	viewport.push_input(motion, true)
 
 
-## Lets go of every key it holds.
+## Lets go of every key it holds and puts the mouse back in the middle, where the door's
+## simulated hand rests after the match (it follows the mouse once the mouse has moved).
 func release() -> void:
 	for action: StringName in _pressed:
 		Input.action_release(action)
 	_pressed.clear()
+	_push_mouse(Vector2.ZERO)
 
 
 func _hold(action: StringName, down: bool) -> void:
