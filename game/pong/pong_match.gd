@@ -93,7 +93,7 @@ var _paused_ball: PongState = null
 func start() -> bool:
 	if not PongServo.shared().is_available():
 		return false
-	if not _servo.claim_court(players):
+	if not _servo.claim_court(players, beginner):
 		return false
 	court = PongCourt.from_settings(PongServo.shared().get_settings())
 	_feedback = PongHandFeedback.new(court)

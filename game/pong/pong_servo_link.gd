@@ -5,22 +5,35 @@ extends RefCounted
 ## a stepped match runs it by hand), and the telemetry the peak force on the hand is read
 ## from. [method claim_court], then [method enter]; [method leave] gives everything back.
 
+## The ball's air friction in beginner mode (the settings' own is the paper's, for play under
+## gravity, where a falling ball gains speed): in the plane a ball only ever loses speed, and
+## at the paper's friction a ball returned by a paddle held still stops before the net, out of
+## everyone's reach, so a newcomer's gentle returns never reach the computer.
+const BEGINNER_AIR_DECEL_M_PER_S2: float = 0.15
+
 var _previous_players: int = -1
+var _previous_air_decel: float = -1.0
 var _stopped_servo: bool = false
 var _telemetry_stride: int = 0
 var _telemetry_total: int = -1
 var _telemetry_capacity: int = 0
 
 
-## Sets the servo's court to [param players] seats; false (nothing changed) when refused.
-func claim_court(players: int) -> bool:
+## Sets the servo's court to [param players] seats, with the beginner plane's air friction
+## when [param beginner]; false (nothing changed) when refused.
+func claim_court(players: int, beginner: bool = false) -> bool:
 	var settings: PongSettings = PongServo.shared().get_settings()
 	var configured: int = settings.players
-	if configured != players:
-		settings.players = players
-		if not PongServo.shared().apply_settings(settings):
-			return false
-		_previous_players = configured
+	var air_decel: float = settings.air_linear_decel_m_per_s2
+	settings.players = players
+	if beginner:
+		settings.air_linear_decel_m_per_s2 = minf(air_decel, BEGINNER_AIR_DECEL_M_PER_S2)
+	if configured == players and settings.air_linear_decel_m_per_s2 == air_decel:
+		return true
+	if not PongServo.shared().apply_settings(settings):
+		return false
+	_previous_players = configured
+	_previous_air_decel = air_decel
 	return true
 
 
@@ -60,6 +73,7 @@ func leave() -> void:
 	if _previous_players > 0:
 		var settings: PongSettings = PongServo.shared().get_settings()
 		settings.players = _previous_players
+		settings.air_linear_decel_m_per_s2 = _previous_air_decel
 		PongServo.shared().apply_settings(settings)
 	Haptics.hand_follows_input = true
 	if _stopped_servo:
