@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(build-essential cmake ninja-build pkg-config libhidapi-dev libusb-1.0-0-dev
   doctest-dev clang-format python3 python3-venv debian-archive-keyring ca-certificates
-  rt-tests xvfb openbox xdotool patchelf qemu-system-x86 busybox-static kmod libdbus-1-dev rtkit dbus
+  rt-tests xvfb openbox patchelf qemu-system-x86 busybox-static kmod libdbus-1-dev rtkit dbus
   polkitd util-linux debootstrap
   # The scripted person (tests/person/): input events, screenshots and OCR of the screen.
   xdotool imagemagick tesseract-ocr tesseract-ocr-eng
