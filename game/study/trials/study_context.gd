@@ -66,16 +66,7 @@ func show_centring() -> void:
 	stage.gauge.tolerance = session.config.number("centre_tolerance")
 	stage.gauge.target = rig.start_hand()
 	stage.gauge.progress = 0.0
-	var practice: bool = session.phase == StudySession.Phase.PRACTICE
-	stage.show_card(
-		"Hold still at the start",
-		(
-			"Bring the handle to the green zone of the gauge and hold it there; then %s."
-			% ("you can move" if practice else "the trial begins")
-		),
-		"",
-		true
-	)
+	stage.show_card("Hold still at the start", _centring_text(false), "", true)
 
 
 ## One tick of waiting for the handle at the start; true once it has been held there long
@@ -88,13 +79,28 @@ func centre(delta: float) -> bool:
 	var position_control: bool = StudyFormat.is_position_control(rig.condition)
 	stage.show_hand(rig.map.point_of_hand(hand), position_control)
 	var tolerance: float = session.config.number("centre_tolerance")
-	if hand.distance_to(target) <= tolerance and rig.is_settled():
+	var inside: bool = hand.distance_to(target) <= tolerance
+	var settled: bool = rig.is_settled()
+	if inside and settled:
 		_centre_held += delta
 	else:
 		_centre_held = 0.0
+	# In the zone but still pushed (a wall felt from the last trial): say so, or the card
+	# seems not to notice a hand that is where the gauge asks for it.
+	stage.card_body.text = _centring_text(inside and not settled)
 	stage.gauge.hand = hand
 	stage.gauge.progress = _centre_held / CENTRE_HOLD_S
 	return _centre_held >= CENTRE_HOLD_S
+
+
+func _centring_text(pushed: bool) -> String:
+	if pushed:
+		return "Hold the handle there, without pressing it anywhere, until the device's force eases."
+	var practice: bool = session.phase == StudySession.Phase.PRACTICE
+	return (
+		"Bring the handle to the green zone of the gauge and hold it there; then %s."
+		% ("you can move" if practice else "the trial begins")
+	)
 
 
 ## Lets go of the level shown (the rig releases the condition; the stage clears).
