@@ -1,18 +1,21 @@
 #!/usr/bin/env bash
 # Exports a self-contained Linux x86_64 build (tools/bundle-runtime.sh):
-#   tools/export.sh          the game, release template: .export/linux/haptic-game
+#   tools/export.sh          the game, debug template: .export/linux/haptic-game
 #   tools/export.sh server   the dedicated Pong server ("Linux Server" preset), debug
 #                            template: .export/linux-server/haptic-pong-server
-# The server takes the debug template because Debian's 4.6 release template prints an engine
-# error for every Container child's internal signal connection when the tree is freed (146
-# lines at each server exit; none with the debug template), and a server's log is read.
+# Both take the debug template because Debian's 4.6 release template prints an engine
+# error for every Container child's internal signal connection whenever a Control leaves a
+# container (about 20 lines at each change of screen, 146 at a server's exit; none with the
+# debug template, tools/bare/repro-disconnect.sh): a player's and a server's log would be
+# full of engine noise hiding real errors. The game sets its window title itself, so the
+# debug template's " (DEBUG)" never shows.
 # With the project-local engine, its Debian export templates are installed into the
 # project's hermetic XDG data folder first; with your own engine, install the matching
 # official templates yourself.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 case ${1:-game} in
-  game) preset=Linux dir=.export/linux name=haptic-game flavour=release ;;
+  game) preset=Linux dir=.export/linux name=haptic-game flavour=debug ;;
   server) preset="Linux Server" dir=.export/linux-server name=haptic-pong-server flavour=debug ;;
   *) echo "usage: tools/export.sh [game|server]" >&2; exit 2 ;;
 esac

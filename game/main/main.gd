@@ -32,6 +32,8 @@ var _screen: Node = null
 
 
 func _ready() -> void:
+	# The project's name alone: debug builds (the shipped one too) would add " (DEBUG)".
+	get_window().title = ProjectSettings.get_setting("application/config/name")
 	if not read_command_line:
 		show_menu()
 		return
