@@ -160,7 +160,9 @@ def _phrase_boxes(words: list[Word], phrase: str) -> list[Box]:
 # then the whole picture in gray, negated, at twice its size (the orange titles, the HUD's
 # small text). Tesseract's sparse-text mode finds words anywhere on a screen that is not a page.
 OCR_VARIANTS = (("light", ["-colorspace", "Gray", "-threshold", "65%", "-negate"], 1),
-                ("gray2x", ["-colorspace", "Gray", "-negate", "-resize", "200%"], 2))
+                ("gray2x", ["-colorspace", "Gray", "-negate", "-resize", "200%"], 2),
+                # Small pale captions over a bright level (the HUD's): larger still.
+                ("gray3x", ["-colorspace", "Gray", "-negate", "-resize", "300%"], 3))
 
 
 @dataclass
