@@ -7,8 +7,9 @@ packages=(build-essential cmake ninja-build pkg-config libhidapi-dev libusb-1.0-
   doctest-dev clang-format python3 python3-venv debian-archive-keyring ca-certificates
   rt-tests xvfb openbox patchelf qemu-system-x86 busybox-static kmod libdbus-1-dev rtkit dbus
   polkitd util-linux debootstrap
-  # The scripted person (tests/person/): input events, screenshots and OCR of the screen.
-  xdotool imagemagick tesseract-ocr tesseract-ocr-eng
+  # The scripted person (tests/person/): input events, screenshots and OCR of the screen, and
+  # a desktop's sound server (with a null sink: this machine has no sound card).
+  xdotool imagemagick tesseract-ocr tesseract-ocr-eng pulseaudio
   # The Windows build (tools/windows/): MinGW-w64 (the posix thread model: std::thread) and
   # Wine to run its doctests.
   g++-mingw-w64-x86-64-posix wine64)

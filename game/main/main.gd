@@ -32,8 +32,7 @@ var _screen: Node = null
 
 
 func _ready() -> void:
-	# The project's name alone: debug builds (the shipped one too) would add " (DEBUG)".
-	get_window().title = ProjectSettings.get_setting("application/config/name")
+	show_title.call_deferred()
 	if not read_command_line:
 		show_menu()
 		return
@@ -57,6 +56,18 @@ static func system_line() -> String:
 			Haptics.device.list_present().size(),
 			MainMenu.device_status_text(),
 		]
+	)
+
+
+## Titles the window with the game's name alone. In a debug build (the shipped game is one)
+## the root [Window] adds " (DEBUG)" to any title it is given, so the name goes to the
+## display server directly.
+func show_title() -> void:
+	if DisplayServer.get_name() == "headless":
+		return
+	var window: Window = get_window()
+	DisplayServer.window_set_title(
+		ProjectSettings.get_setting("application/config/name"), window.get_window_id()
 	)
 
 

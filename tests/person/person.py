@@ -1,12 +1,12 @@
 """A scripted person at the real windowed game: only the screen, the keys and the mouse.
 
 Everything a test does goes through the X server the game draws on (Xvfb, 1280x720, with
-openbox as the window manager, as on a desktop): screenshots (ImageMagick's `import`), words
+openbox as the window manager and PulseAudio as the sound server, as on a desktop): screenshots (ImageMagick's `import`), words
 found on them by OCR (tesseract's word boxes), and input events (xdotool: mouse moves,
 clicks, key presses and releases, the window manager's close shortcut). Nothing reads the
 game's internals, and the game is started with a player's command line and no flag of ours.
 
-Every process is started here and stopped by its PID (the game, openbox, Xvfb); every
+Every process is started here and stopped by its PID (the game, openbox, PulseAudio, Xvfb); every
 screenshot of a key moment is kept in .build/person/<test>/NN-moment.png.
 """
 
@@ -36,7 +36,8 @@ ERROR_LINE = re.compile(r"^(ERROR|SCRIPT ERROR)|BadWindow|BadDrawable|X Error")
 
 
 def tools_missing() -> list[str]:
-    return [t for t in ("Xvfb", "openbox", "xdotool", "import", "convert", "tesseract") if not shutil.which(t)]
+    return [t for t in ("Xvfb", "openbox", "pulseaudio", "xdotool", "import", "convert", "tesseract")
+            if not shutil.which(t)]
 
 
 def _stop(proc: subprocess.Popen | None, patience: float = 10.0) -> None:
@@ -52,12 +53,16 @@ def _stop(proc: subprocess.Popen | None, patience: float = 10.0) -> None:
 
 
 class Display:
-    """Xvfb on a free display (-displayfd, as tools/xvfb.sh) and openbox on it."""
+    """Xvfb on a free display (-displayfd, as tools/xvfb.sh), openbox on it, and a sound
+    server: a player's desktop has one, and the game's audio driver waits on it between mixes.
+    This machine has no sound card, so it plays into a null sink, which keeps a card's time
+    (ALSA's null device does not: Godot's audio thread then spins on a core of its own)."""
 
     def __init__(self, scratch: Path) -> None:
         self.scratch = scratch
         self.xvfb: subprocess.Popen | None = None
         self.wm: subprocess.Popen | None = None
+        self.sound: subprocess.Popen | None = None
         self.name = ""
 
     def start(self) -> None:
@@ -81,21 +86,37 @@ class Display:
         self.name = ":" + number.decode().strip()
         with open(self.scratch / "openbox.log", "wb") as log:
             self.wm = subprocess.Popen(["openbox"], env=self.env(), stdout=log, stderr=log)
+        self._start_sound()
+
+    def _start_sound(self) -> None:
+        socket = self.scratch / "pulse" / "native"
+        socket.parent.mkdir()
+        script = self.scratch / "pulse.pa"
+        script.write_text(f"load-module module-native-protocol-unix socket={socket} auth-anonymous=1\n"
+                          "load-module module-null-sink sink_name=speakers\n"
+                          "set-default-sink speakers\n")
+        env = {**self.env(), "HOME": str(self.scratch), "XDG_RUNTIME_DIR": str(socket.parent)}
+        with open(self.scratch / "pulseaudio.log", "wb") as log:
+            self.sound = subprocess.Popen(
+                ["pulseaudio", "-n", "-F", str(script), "--daemonize=no", "--exit-idle-time=-1",
+                 "--use-pid-file=no", "--disable-shm=yes"], env=env, stdout=log, stderr=log)
+        deadline = time.monotonic() + 30.0
+        while not socket.exists():
+            if self.sound.poll() is not None or time.monotonic() > deadline:
+                raise RuntimeError("PulseAudio did not start: "
+                                   + (self.scratch / "pulseaudio.log").read_text(errors="replace"))
+            time.sleep(0.1)
 
     def env(self) -> dict[str, str]:
         env = dict(os.environ)
         env["DISPLAY"] = self.name
         env.pop("WAYLAND_DISPLAY", None)
-        # A player's machine has a sound card; this one has none, so ALSA's default device is
-        # a null one (the game's own audio driver opens it as it would a card's).
-        asoundrc = self.scratch / "asoundrc"
-        asoundrc.write_text("pcm.!default { type null }\n")
-        env["ALSA_CONFIG_PATH"] = ":".join(
-            [p for p in ("/usr/share/alsa/alsa.conf",) if Path(p).exists()] + [str(asoundrc)])
+        env["PULSE_SERVER"] = f"unix:{self.scratch / 'pulse' / 'native'}"
         return env
 
     def stop(self) -> None:
         _stop(self.wm)
+        _stop(self.sound)
         _stop(self.xvfb)
 
 
@@ -175,6 +196,7 @@ class Person:
     ocr_seconds: list[float] = field(default_factory=list)
     _count: int = 0
     _last_look: str = OCR_VARIANTS[0][0]
+    _held: set[str] = field(default_factory=set)
 
     def _x(self, *args: str) -> None:
         subprocess.run(["xdotool", *args], env=self.display.env(), check=True, timeout=30,
@@ -290,10 +312,35 @@ class Person:
     def hold_key(self, key: str, seconds: float) -> None:
         self.hold_keys([key], seconds)
 
+    def hold_only(self, keys: list[str]) -> None:
+        """Keeps exactly these keys held from now on: lets go of the others, presses the new."""
+        for key in sorted(self._held - set(keys)):
+            self._x("keyup", key)
+        for key in keys:
+            if key not in self._held:
+                self._x("keydown", key)
+        self._held = set(keys)
+
     def close_window(self) -> None:
         """Closes the game's window as a player does on this desktop: the window manager's
         close shortcut (Alt+F4 in openbox), which asks the game to close (WM_DELETE_WINDOW)."""
         self.press("alt+F4")
+
+    def close_and_see_it_exit(self, game: "Game") -> float:
+        """Closes the game's window and waits for the game to end by itself, with exit code 0;
+        returns how long that took. A failure says whether the window was still there (the
+        close never reached the game) or gone (the game hung while quitting)."""
+        closing = time.monotonic()
+        self.close_window()
+        code = game.wait_exit()
+        took = time.monotonic() - closing
+        if code is None:
+            shot = self.screenshot("still-running")
+            where = "still on the screen" if game.has_window() else "gone"
+            raise AssertionError(f"the game still ran {took:.0f} s after Alt+F4, its window "
+                                 f"{where} (last screen: {shot})")
+        assert code == 0, f"the game exited with {code} after its window closed"
+        return took
 
 
 class Game:
@@ -323,6 +370,23 @@ class Game:
 
     def error_lines(self) -> list[str]:
         return [line for line in self.output().splitlines() if ERROR_LINE.search(line)]
+
+    def _windows(self) -> list[str]:
+        assert self.proc is not None
+        found = subprocess.run(["xdotool", "search", "--onlyvisible", "--pid", str(self.proc.pid)],
+                               env=self.display.env(), capture_output=True, text=True, timeout=30)
+        return found.stdout.split()
+
+    def has_window(self) -> bool:
+        """Whether a window of the game's process is on the display (asked of X, as a window
+        list would)."""
+        return bool(self._windows())
+
+    def window_titles(self) -> list[str]:
+        """The titles of the game's windows, as the title bar and the task list show them."""
+        return [subprocess.run(["xdotool", "getwindowname", w], env=self.display.env(),
+                               capture_output=True, text=True, timeout=30).stdout.strip()
+                for w in self._windows()]
 
     def running(self) -> bool:
         return self.proc is not None and self.proc.poll() is None

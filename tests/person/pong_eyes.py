@@ -1,0 +1,129 @@
+"""What a person sees of a Pong match on a screenshot, and the hand that follows it.
+
+The ball is the one small, round, pure-white disc on the court; the person's paddle is the
+blue disc with the near-white (cyan-tinted) rim on their side of the net. The hand is a
+first-time player's (tests/pong/pong_clumsy_player.gd's limits): it sees the ball once per
+look (about a third of a second: a newcomer's reaction), moves the mouse by part of the gap
+between its paddle and the ball, and wobbles."""
+
+from __future__ import annotations
+
+import random
+from dataclasses import dataclass, field
+
+import numpy as np
+from PIL import Image
+from scipy import ndimage
+
+# The court, inside the HUD's corners (the players' panels above, the force graph below right).
+COURT = (320, 180, 960, 700)
+# Movement smaller than this (px, screen y) between looks is not a change of direction.
+TURN_PX = 12.0
+# Past the person's paddle by this much (screen y), the ball went by them; above this row it
+# went by the computer.
+PAST_PADDLE_PX = 60.0
+PAST_COMPUTER_Y = 250.0
+
+
+def _court_pixels(shot) -> np.ndarray:
+    pixels = np.asarray(Image.open(shot).convert("RGB")).astype(int)
+    mask = np.zeros(pixels.shape[:2], dtype=bool)
+    left, top, right, bottom = COURT
+    mask[top:bottom, left:right] = True
+    return pixels, mask
+
+
+def ball_at(shot) -> tuple[float, float] | None:
+    """The ball's centre on the screen, None when it is not seen (behind a paddle)."""
+    pixels, court = _court_pixels(shot)
+    white = court & (pixels.min(axis=2) > 235)
+    labels, _count = ndimage.label(white)
+    for i, box in enumerate(ndimage.find_objects(labels), 1):
+        h, w = box[0].stop - box[0].start, box[1].stop - box[1].start
+        area = int((labels[box] == i).sum())
+        if 6 <= w <= 48 and 6 <= h <= 48 and abs(w - h) <= max(w, h) * 0.4 and area >= 0.6 * w * h:
+            return ((box[1].start + box[1].stop) / 2, (box[0].start + box[0].stop) / 2)
+    return None
+
+
+def paddle_at(shot) -> tuple[float, float] | None:
+    """The centre of the person's paddle's rim on the screen, None when it is not seen."""
+    pixels, court = _court_pixels(shot)
+    r, g, b = pixels[..., 0], pixels[..., 1], pixels[..., 2]
+    rim = court & (g > 235) & (b > 235) & (r > 150) & (r < 245)
+    ys, xs = np.nonzero(rim)
+    if len(xs) < 20:
+        return None
+    return (float(xs.mean()), float(ys.mean()))
+
+
+@dataclass
+class RallyWatch:
+    """Paddle contacts as a person counts them: the ball turning back toward the other side.
+    A ball that goes past a paddle ends the rally."""
+
+    contacts: int = 0
+    rally: int = 0
+    longest: int = 0
+    misses: int = 0
+    served_at: float | None = None
+    _y: float | None = None
+    _extreme: float | None = None
+    _coming: bool | None = None
+    log: list[str] = field(default_factory=list)
+
+    def see(self, t: float, ball: tuple[float, float] | None,
+            paddle: tuple[float, float] | None) -> None:
+        if ball is None:
+            return
+        y = ball[1]
+        if self._y is None:
+            self._y = self._extreme = y
+            return
+        if self.served_at is None and abs(y - self._y) >= TURN_PX:
+            self.served_at = t
+        paddle_y = paddle[1] if paddle else None
+        if (paddle_y is not None and y > paddle_y + PAST_PADDLE_PX) or y < PAST_COMPUTER_Y:
+            if self.rally:
+                self.log.append(f"{t:.1f} s: past a paddle, rally of {self.rally} over")
+                self.misses += 1
+            self.rally = 0
+            self._coming = None
+            self._extreme = y
+            self._y = y
+            return
+        coming = self._coming
+        if coming is None:
+            if abs(y - self._extreme) >= TURN_PX:
+                self._coming = y > self._extreme
+                self._extreme = y
+        elif (coming and y < self._extreme - TURN_PX) or (not coming and y > self._extreme + TURN_PX):
+            self.contacts += 1
+            self.rally += 1
+            self.longest = max(self.longest, self.rally)
+            self.log.append(f"{t:.1f} s: {'the person' if coming else 'the computer'} returned it"
+                            f" (rally {self.rally})")
+            self._coming = not coming
+            self._extreme = y
+        elif (coming and y > self._extreme) or (not coming and y < self._extreme):
+            self._extreme = y
+        self._y = y
+
+
+class ClumsyMouseHand:
+    """Moves the mouse so the paddle seen on the screen goes part of the way to the ball seen,
+    across the screen only, with a newcomer's wobble."""
+
+    GAIN = 0.6
+    WOBBLE_PX = 18.0  # about half the paddle's drawn radius
+
+    def __init__(self, rest: tuple[int, int], seed: int) -> None:
+        self.x, self.y = rest
+        self.rng = random.Random(seed)
+
+    def follow(self, ball: tuple[float, float] | None,
+               paddle: tuple[float, float] | None) -> tuple[int, int]:
+        if ball is not None and paddle is not None:
+            self.x += self.GAIN * (ball[0] - paddle[0]) + self.rng.gauss(0.0, self.WOBBLE_PX)
+            self.x = min(max(self.x, COURT[0]), COURT[2])
+        return (round(self.x), self.y)

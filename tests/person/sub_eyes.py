@@ -1,0 +1,169 @@
+"""What a person sees of the side-scroller on a screenshot, and the keys they steer it with.
+
+The sub is the one saturated orange body on the screen (its hull keeps that colour under the
+water's tint; sand and crates are paler). Where the sub is in the level a person judges from
+the scenery going by: here, how far the picture scrolled between two looks (phase
+correlation of the two screenshots, the HUD and the sub left out), added up from the start,
+plus the sub's own move on the screen. The way to the goal is the route a person who has
+played the level learnt (given in the level's pixels from its start)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from PIL import Image
+from scipy import ndimage
+
+# The HUD's bar at the top of the screen is not scenery.
+HUD_BOTTOM = 100
+# Looks are compared at half size: enough for a scroll of a few pixels, four times cheaper.
+SCALE = 2
+
+
+def _pixels(shot) -> np.ndarray:
+    return np.asarray(Image.open(shot).convert("RGB")).astype(int)
+
+
+def sub_at(pixels: np.ndarray) -> tuple[float, float] | None:
+    """The sub's centre on the screen, None when it is not seen."""
+    r, g, b = pixels[..., 0], pixels[..., 1], pixels[..., 2]
+    orange = (r > 150) & ((r - b) > 0.7 * r) & (g > 0.4 * r) & (g < 0.85 * r)
+    orange[:HUD_BOTTOM] = False
+    labels, count = ndimage.label(ndimage.binary_closing(orange, iterations=2))
+    if count == 0:
+        return None
+    sizes = ndimage.sum(orange, labels, range(1, count + 1))
+    best = int(np.argmax(sizes)) + 1
+    if sizes[best - 1] < 60:
+        return None
+    ys, xs = np.nonzero(labels == best)
+    return (float(xs.mean()), float(ys.mean()))
+
+
+def goal_at(pixels: np.ndarray) -> tuple[float, float] | None:
+    """The goal's buoy on the screen (the only red and white stripes in the level), None when
+    it is not in view."""
+    r, g, b = pixels[..., 0], pixels[..., 1], pixels[..., 2]
+    red = (r > 170) & (g < 90) & (b < 110) & (r - g > 110)
+    red[:HUD_BOTTOM] = False
+    ys, xs = np.nonzero(red)
+    if len(xs) < 150:
+        return None
+    return (float(np.median(xs)), float(np.median(ys)))
+
+
+def _scenery(pixels: np.ndarray, sub: tuple[float, float] | None) -> np.ndarray:
+    gray = pixels.mean(axis=2)[HUD_BOTTOM:, :]
+    if sub is not None:
+        x, y = int(sub[0]), int(sub[1]) - HUD_BOTTOM
+        gray[max(0, y - 40):max(0, y + 40), max(0, x - 50):x + 50] = gray.mean()
+    small = gray[::SCALE, ::SCALE]
+    small = small - small.mean()
+    window = np.outer(np.hanning(small.shape[0]), np.hanning(small.shape[1]))
+    return small * window
+
+
+def scroll_between(before: np.ndarray, after: np.ndarray) -> tuple[float, float]:
+    """How far the scenery moved on the screen from `before` to `after` (screen pixels)."""
+    cross = np.fft.fft2(after) * np.conj(np.fft.fft2(before))
+    cross /= np.abs(cross) + 1e-9
+    corr = np.fft.ifft2(cross).real
+    peak_y, peak_x = np.unravel_index(np.argmax(corr), corr.shape)
+    h, w = corr.shape
+    dy = peak_y - h if peak_y > h // 2 else peak_y
+    dx = peak_x - w if peak_x > w // 2 else peak_x
+    return (float(dx * SCALE), float(dy * SCALE))
+
+
+class Whereabouts:
+    """The sub's place in the level as a person keeps track of it, from one look to the next."""
+
+    def __init__(self, start: tuple[float, float]) -> None:
+        self.start = start
+        self.camera = None  # the level point at the screen's top-left corner
+        self._scenery: np.ndarray | None = None
+        self.position: tuple[float, float] | None = None
+        # What the last look saw on the screen: the sub and the goal (None: not seen).
+        self.sub: tuple[float, float] | None = None
+        self.goal: tuple[float, float] | None = None
+
+    def look(self, shot) -> tuple[float, float] | None:
+        pixels = _pixels(shot)
+        sub = sub_at(pixels)
+        self.sub, self.goal = sub, goal_at(pixels)
+        scenery = _scenery(pixels, sub)
+        if self._scenery is None:
+            if sub is None:
+                return None
+            self.camera = (self.start[0] - sub[0], self.start[1] - sub[1])
+        else:
+            dx, dy = scroll_between(self._scenery, scenery)
+            # The scenery moving left on the screen is the camera moving right in the level.
+            self.camera = (self.camera[0] - dx, self.camera[1] - dy)
+        self._scenery = scenery
+        if sub is not None:
+            self.position = (self.camera[0] + sub[0], self.camera[1] + sub[1])
+        return self.position
+
+
+# The keys held for each of the eight directions (angles in degrees, screen y down).
+CHORDS = {0: ["Right"], 45: ["Right", "Down"], 90: ["Down"], 135: ["Left", "Down"],
+          180: ["Left"], -135: ["Left", "Up"], -90: ["Up"], -45: ["Right", "Up"]}
+
+
+def chord_toward(here: tuple[float, float], there: tuple[float, float]) -> list[str]:
+    """The arrow keys a person holds to go from here toward there (the nearest of eight)."""
+    angle = math.degrees(math.atan2(there[1] - here[1], there[0] - here[0]))
+    nearest = min(CHORDS, key=lambda a: abs((angle - a + 180) % 360 - 180))
+    return CHORDS[nearest]
+
+
+class Route:
+    """A learnt way through the level, followed as a person follows a path they know: toward a
+    point a little ahead along it of where they are now, never turning back along it."""
+
+    LOOKAHEAD_PX = 160.0
+    # Only this far along the route ahead of the furthest point reached is a place a person
+    # can believe they are (the level folds back on itself: the route passes near itself).
+    WINDOW_PX = 600.0
+
+    def __init__(self, points: list[tuple[float, float]]) -> None:
+        self.points = points
+        self.lengths = [0.0]
+        for a, b in zip(points, points[1:]):
+            self.lengths.append(self.lengths[-1] + math.dist(a, b))
+        self.reached = 0.0
+
+    @property
+    def length(self) -> float:
+        return self.lengths[-1]
+
+    def _point_at(self, along: float) -> tuple[float, float]:
+        along = min(max(along, 0.0), self.length)
+        for k in range(len(self.points) - 1):
+            if along <= self.lengths[k + 1]:
+                a, b = self.points[k], self.points[k + 1]
+                f = (along - self.lengths[k]) / max(1e-9, self.lengths[k + 1] - self.lengths[k])
+                return (a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1]))
+        return self.points[-1]
+
+    def _along(self, here: tuple[float, float]) -> float:
+        best, best_d = self.reached, math.inf
+        for k in range(len(self.points) - 1):
+            if self.lengths[k] > self.reached + self.WINDOW_PX or self.lengths[k + 1] < self.reached:
+                continue
+            a, b = self.points[k], self.points[k + 1]
+            seg = (b[0] - a[0], b[1] - a[1])
+            f = ((here[0] - a[0]) * seg[0] + (here[1] - a[1]) * seg[1]) / max(1e-9, seg[0] ** 2 + seg[1] ** 2)
+            f = min(max(f, 0.0), 1.0)
+            d = math.dist(here, (a[0] + f * seg[0], a[1] + f * seg[1]))
+            along = self.lengths[k] + f * (self.lengths[k + 1] - self.lengths[k])
+            if d < best_d and along <= self.reached + self.WINDOW_PX:
+                best, best_d = along, d
+        return best
+
+    def aim(self, here: tuple[float, float]) -> tuple[float, float]:
+        """Where to head from `here`; moves the furthest point reached on."""
+        self.reached = max(self.reached, self._along(here))
+        return self._point_at(self.reached + self.LOOKAHEAD_PX)
