@@ -215,7 +215,8 @@ class Person:
 
     def read_words(self, shot: Path, variant: tuple[str, list[str], int]) -> list[Word]:
         label, args, scale = variant
-        prepared = self.scratch / f"ocr-{label}.png"
+        # An uncompressed picture: writing a PNG three times the screen's size took 1.5-3 s.
+        prepared = self.scratch / f"ocr-{label}.pgm"
         subprocess.run(["convert", str(shot), *args, str(prepared)], check=True, timeout=60)
         started = time.monotonic()
         # One thread: the machine is shared, and tesseract's threads gain nothing on a screen.
@@ -287,10 +288,17 @@ class Person:
         self._x("mouseup", "1")
         time.sleep(0.4)
 
-    def click_text(self, text: str, patience: float = FIND_PATIENCE_S) -> Box:
-        box = self.wait_text(text, patience)
+    def click_text(self, text: str, patience: float = FIND_PATIENCE_S, below: int = 24) -> Box:
+        box = self.wait_text(text, patience, below)
         self.click(*box.center)
         return box
+
+    def type_into(self, label: Box, text: str, offset: int = 200) -> None:
+        """Clicks the field right of a label, selects what it holds and types over it."""
+        self.click(label.right + offset, (label.top + label.bottom) // 2)
+        self._x("key", "ctrl+a")
+        self._x("type", "--delay", "80", text)
+        time.sleep(0.2)
 
     def press(self, key: str) -> None:
         """A key pressed as a person does: down, a moment, up."""

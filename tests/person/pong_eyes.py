@@ -46,11 +46,27 @@ def ball_at(shot) -> tuple[float, float] | None:
     return None
 
 
-def paddle_at(shot) -> tuple[float, float] | None:
-    """The centre of the person's paddle's rim on the screen, None when it is not seen."""
+# Where the person's own paddle is drawn: a band about the net line (the paddle is held up
+# near the net; the ball rolling behind it on the floor is lower on the screen).
+NEAR_TOP = 330
+NEAR_BOTTOM = 430
+# More light pixels than this in one screen row is the net line, wider than any paddle.
+NET_ROW_PX = 120
+
+
+def paddle_at(shot, colour: str = "blue") -> tuple[float, float] | None:
+    """The centre of the person's paddle's rim on the screen, None when it is not seen. The
+    rim is near-white, tinted with the seat's colour: blue (seat 1) or orange (seat 2)."""
     pixels, court = _court_pixels(shot)
+    court[:NEAR_TOP] = False
+    court[NEAR_BOTTOM:] = False
     r, g, b = pixels[..., 0], pixels[..., 1], pixels[..., 2]
-    rim = court & (g > 235) & (b > 235) & (r > 150) & (r < 245)
+    if colour == "blue":
+        rim = court & (g > 235) & (b > 235) & (r > 150) & (r < 245)
+    else:
+        rim = court & (r > 225) & (g > 225) & (b > 130) & (b < 215)
+    # The net line is drawn in the same light tint: rows the rim alone could not fill are it.
+    rim[rim.sum(axis=1) > NET_ROW_PX] = False
     ys, xs = np.nonzero(rim)
     if len(xs) < 20:
         return None

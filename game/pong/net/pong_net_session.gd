@@ -29,6 +29,10 @@ signal bad_message(peer: int, what: String, reason: String)
 
 ## Seconds a refused client keeps its connection, so it learns why before it is dropped.
 const REFUSAL_GRACE_S: float = 0.5
+## Frames after [method announce_stall] in which this peer repeats the stall notice instead
+## of beating: the loaded court's first frames compile its shaders and can each take over a
+## second on a slow machine, which its partners must not take for a dead peer.
+const SETTLE_FRAMES: int = 20
 
 var is_server: bool = false
 ## The last refusal or failure, for the UI.
@@ -50,6 +54,8 @@ var _half_open: PongNetHalfOpen = PongNetHalfOpen.new()
 var _refusal: String = ""
 # Peers to drop at the next frame (see drop_now).
 var _drops: Array[int] = []
+# Frames left in which a stall notice goes out instead of a beat (see announce_stall).
+var _settle_frames_left: int = 0
 
 
 func _init() -> void:
@@ -115,6 +121,7 @@ func close() -> void:
 	is_server = false
 	_heartbeat.clear()
 	_half_open.clear()
+	_settle_frames_left = 0
 
 
 func is_open() -> bool:
@@ -173,8 +180,9 @@ func drop_now(peer: int) -> void:
 
 ## Tells the connected peers that this one is about to stall (it loads a match's court): its
 ## silence may then last the ceiling, [constant PongNetProtocol.HEARTBEAT_TIMEOUT_MAX_S],
-## until its next beat.
+## until its next beat, which comes only after [constant SETTLE_FRAMES] more frames.
 func announce_stall() -> void:
+	_settle_frames_left = SETTLE_FRAMES
 	if _peer != null and _api() != null:
 		_send_watch(PongNetStallMessage.new())
 
@@ -230,7 +238,10 @@ func _beat() -> void:
 		return
 	var now: float = _now_s()
 	var peers: PackedInt32Array = api.get_peers()
-	if _heartbeat.due(now):
+	if _settle_frames_left > 0:
+		_settle_frames_left -= 1
+		_send_watch(PongNetStallMessage.new())
+	elif _heartbeat.due(now):
 		_send_watch(PongNetBeatMessage.new())
 	var limit_of: Callable = func(peer: int) -> float:
 		if _heartbeat.is_stalling(peer) or not peers.has(peer):

@@ -1,0 +1,146 @@
+"""Scenario 3: two people play a network match through the lobby, each at their own screen
+(two displays, one machine, 127.0.0.1): one hosts, the other joins, both say they are ready
+and the host starts. Each window must show its own side of the court near it and its
+player's chosen name, each paddle must follow its own player's mouse, both windows must
+agree on the health, and closing one window must end that game while the other carries on
+(the source build closes the guest's window first, the exported one the host's)."""
+
+from __future__ import annotations
+
+import re
+import socket
+import time
+
+import pytest
+
+from person import Person, Session, tools_missing, EXPORTED
+from pong_eyes import ball_at, paddle_at
+
+NAMES = ("Ada", "Bo")
+COLOURS = ("blue", "orange")  # seat 1's and seat 2's, as the lobby and the HUD show them
+# A closed window's game must be gone this soon; generous for a loaded machine (the time
+# taken is printed, and a quiet machine takes well under 2 s).
+CLOSE_BOUND_S = 10.0
+# How long the other side is watched carrying on after the first window closed.
+CARRY_ON_S = 3.0
+
+
+def free_udp_port() -> int:
+    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+@pytest.fixture(params=["source", "export"])
+def two(request):
+    build = request.param
+    missing = tools_missing()
+    if missing:
+        pytest.skip(f"missing {', '.join(missing)} (make deps installs them)")
+    if build == "export" and not EXPORTED.exists():
+        pytest.skip("no exported game (make export builds it)")
+    sessions = [Session(f"test_network_match-{build}-{seat}", build) for seat in ("host", "guest")]
+    try:
+        for s in sessions:
+            s.start()
+        yield build, sessions
+    finally:
+        for s in sessions:
+            s.close()
+        errors = [f"{s.shots.name}: {line}" for s in sessions for line in s.game.error_lines()]
+        assert not errors, "the games printed errors:\n" + "\n".join(errors[:20])
+
+
+def health_numbers(person: Person, shot) -> list[str]:
+    """The two health numbers at the ends of the players' bars, left then right."""
+    words = [w for w in person.read_screen(shot) if w.top < 110 and re.fullmatch(r"\d{1,3}", w.text)]
+    left = [w.text for w in words if w.left < 400]
+    right = [w.text for w in words if w.left > 880]
+    return [left[0] if left else "?", right[0] if right else "?"]
+
+
+def paddle_follows(person: Person, colour: str, scratch) -> tuple[float, float]:
+    """Where the person's paddle is seen with the mouse held left, then right, of the middle."""
+    seen = []
+    for x in (400, 880):
+        person.move_mouse(x, 370)
+        time.sleep(1.0)
+        spot = paddle_at(person.grab(scratch / "paddle.png"), colour)
+        seen.append(spot[0] if spot else float("nan"))
+    person.move_mouse(640, 370)
+    return seen[0], seen[1]
+
+
+def test_two_people_play_a_network_match(two) -> None:
+    build, (host, guest) = two
+    port = str(free_udp_port())
+    started = time.monotonic()
+    timings: dict[str, float] = {}
+
+    def lap(name: str) -> None:
+        timings[name] = time.monotonic() - started - sum(timings.values())
+    for s, name in zip((host, guest), NAMES):
+        p = s.person
+        p.click_text("Haptic Battle Pong", patience=90.0)
+        p.click_text("Network game")
+        p.type_into(p.wait_text("Your name"), name)
+        p.type_into(p.wait_text("Port"), port)
+        p.press("Tab")
+        p.screenshot("lobby")
+    lap("lobbies filled")
+    host.person.click_text("Host")
+    host.person.wait_text("Seat 1: Ada")
+    guest.person.click_text("Join")
+    for s in (host, guest):
+        s.person.wait_text("Seat 2: Bo")
+        s.person.click_text("Ready", below=s.person.wait_text("Seat 2").bottom)
+    host.person.wait_text("Seat 2: Bo (ready)")
+    host.person.screenshot("both-ready")
+    host.person.click_text("Start the match")
+    lap("ready and started")
+
+    # Each window: its own name, marked as the player's, and the other's name opposite.
+    for s, name, other in ((host, "Ada", "Bo"), (guest, "Bo", "Ada")):
+        s.person.wait_text(f"{name} (you)", patience=60.0)
+        s.person.wait_text(other)
+        s.person.screenshot("match")
+    lap("names seen")
+    # Each paddle follows its own player's mouse (and only it: the other hand rests).
+    for s, colour in zip((host, guest), COLOURS):
+        left, right = paddle_follows(s.person, colour, s.scratch)
+        s.person.screenshot("paddle-moved")
+        print(f"person: {s.shots.name}: paddle at x {left:.0f} with the mouse left, "
+              f"{right:.0f} with it right")
+        assert right - left > 60, (f"{s.shots.name}: the paddle did not follow the mouse "
+                                   f"(x {left:.0f} then {right:.0f}; {s.shots})")
+    lap("paddles moved")
+    # One match: both windows show the same health (read a few times: a goal may fall
+    # between the two looks).
+    agreed = None
+    for _ in range(5):
+        # Both screens at (almost) the same moment, read afterwards.
+        shots = [s.person.grab(s.scratch / "health.png") for s in (host, guest)]
+        seen = [health_numbers(s.person, shot) for s, shot in zip((host, guest), shots)]
+        # The guest sees the host's panel on the left too (seat 1's panel is always left).
+        if seen[0] == seen[1] and "?" not in seen[0]:
+            agreed = seen[0]
+            break
+    print(f"person: health as both windows show it: {agreed or seen}")
+    assert agreed is not None, f"the windows disagree on the health: {seen}"
+
+    lap("health read")
+    # Closing one window ends that game; the other carries on.
+    first, second = (guest, host) if build == "source" else (host, guest)
+    took = first.person.close_and_see_it_exit(first.game)
+    print(f"person: {first.shots.name}'s game ended {took:.1f} s after its window closed")
+    assert took <= CLOSE_BOUND_S, f"{first.shots.name}'s game took {took:.1f} s to end"
+    time.sleep(CARRY_ON_S)
+    assert second.game.running(), f"{second.shots.name}'s game ended when the other window closed"
+    if second is host:
+        # The computer stands in for the player who left; the host's match goes on.
+        second.person.wait_text("Computer")
+    second.person.screenshot("after-the-other-left")
+    took = second.person.close_and_see_it_exit(second.game)
+    print(f"person: {second.shots.name}'s game ended {took:.1f} s after its window closed")
+    lap("closed")
+    print("person: timings " + ", ".join(f"{k} {v:.1f} s" for k, v in timings.items()))
