@@ -146,10 +146,12 @@ test-windowed: import
 ## test-person: a scripted person plays the windowed game with keys and mouse (Xvfb)
 ## The real game in a window (Xvfb, openbox), started as `make play` starts it (and the exported
 ## one when .export/linux has it); the person acts only through input events (xdotool) at
-## places it reads off screenshots (tesseract): level 1 through the pause menu and Settings,
-## played with the keys toward the goal, the window closed (exit 0); Pong against the computer
-## and its serve. Fails on any error or X error line; screenshots in .build/person/<test>/
-## (tests/person, about 5 minutes).
+## places it reads off screenshots (tesseract, and the sub, ball and paddles by colour): level 1
+## through the pause menu and Settings, steered with the keys to the goal, the goal screen's
+## Menu, the window closed (exit 0); Pong against the computer with a clumsy mouse hand (a
+## serve within 5 s, a rally of six contacts); a network match of two people at two screens
+## through the lobby. Fails on any error or X error line; screenshots in
+## .build/person/<test>/ (tests/person, about 8 minutes).
 test-person: import
 	@tools/analysis/run.sh -m pytest tests/person -q -rsx -p no:cacheprovider -s
 

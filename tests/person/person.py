@@ -22,6 +22,8 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from ocr import OCR_VARIANTS, Box, Word, norm, phrase_boxes, read_words
+
 ROOT = Path(__file__).resolve().parents[2]
 GODOT = ROOT / "tools" / "godot"
 EXPORTED = ROOT / ".export" / "linux" / "haptic-game"
@@ -121,72 +123,6 @@ class Display:
 
 
 @dataclass
-class Word:
-    text: str
-    left: int
-    top: int
-    width: int
-    height: int
-    conf: float
-
-    @property
-    def right(self) -> int:
-        return self.left + self.width
-
-
-@dataclass
-class Box:
-    text: str
-    left: int
-    top: int
-    right: int
-    bottom: int
-
-    @property
-    def center(self) -> tuple[int, int]:
-        return ((self.left + self.right) // 2, (self.top + self.bottom) // 2)
-
-
-def _norm(word: str) -> str:
-    return re.sub(r"[^0-9a-z/]", "", word.lower())
-
-
-def _phrase_boxes(words: list[Word], phrase: str) -> list[Box]:
-    """Every place where the phrase's words stand in a row on one line."""
-    wanted = [_norm(w) for w in phrase.split() if _norm(w)]
-    usable = [w for w in words if _norm(w.text)]
-    rows = sorted(usable, key=lambda w: (w.top + w.height // 2, w.left))
-    found = []
-    for i, first in enumerate(rows):
-        if _norm(first.text) != wanted[0]:
-            continue
-        chain = [first]
-        for want in wanted[1:]:
-            last = chain[-1]
-            mid = last.top + last.height / 2
-            nxt = [w for w in usable
-                   if _norm(w.text) == want and abs(w.top + w.height / 2 - mid) < last.height * 0.7
-                   and 0 <= w.left - last.right < 3 * last.height]
-            if not nxt:
-                break
-            chain.append(min(nxt, key=lambda w: w.left))
-        if len(chain) == len(wanted):
-            found.append(Box(phrase, min(w.left for w in chain), min(w.top for w in chain),
-                             max(w.right for w in chain), max(w.top + w.height for w in chain)))
-    return found
-
-
-# Two looks at a screenshot: the light text alone (a gray threshold, black on white: the
-# game's buttons, whose borders and focus rings otherwise hide a short word such as "Play"),
-# then the whole picture in gray, negated, at twice its size (the orange titles, the HUD's
-# small text). Tesseract's sparse-text mode finds words anywhere on a screen that is not a page.
-OCR_VARIANTS = (("light", ["-colorspace", "Gray", "-threshold", "65%", "-negate"], 1),
-                ("gray2x", ["-colorspace", "Gray", "-negate", "-resize", "200%"], 2),
-                # Small pale captions over a bright level (the HUD's): larger still.
-                ("gray3x", ["-colorspace", "Gray", "-negate", "-resize", "300%"], 3))
-
-
-@dataclass
 class Person:
     """The person: eyes (screenshots, OCR), hands (xdotool), a folder of key moments."""
 
@@ -214,23 +150,9 @@ class Person:
         return self.grab(self.shots / f"{self._count:02d}-{name}.png")
 
     def read_words(self, shot: Path, variant: tuple[str, list[str], int]) -> list[Word]:
-        label, args, scale = variant
-        # An uncompressed picture: writing a PNG three times the screen's size took 1.5-3 s.
-        prepared = self.scratch / f"ocr-{label}.pgm"
-        subprocess.run(["convert", str(shot), *args, str(prepared)], check=True, timeout=60)
         started = time.monotonic()
-        # One thread: the machine is shared, and tesseract's threads gain nothing on a screen.
-        out = subprocess.run(["tesseract", str(prepared), "-", "--psm", "11", "tsv"],
-                             env={**os.environ, "OMP_THREAD_LIMIT": "1"}, check=True,
-                             capture_output=True, text=True, timeout=120).stdout
+        words = read_words(shot, variant, self.scratch)
         self.ocr_seconds.append(time.monotonic() - started)
-        words = []
-        for line in out.splitlines()[1:]:
-            cols = line.split("\t")
-            if len(cols) < 12 or not cols[11].strip() or float(cols[10]) < 40:
-                continue
-            left, top, width, height = (int(int(c) / scale) for c in cols[6:10])
-            words.append(Word(cols[11], left, top, width, height, float(cols[10])))
         return words
 
     def read_screen(self, shot: Path | None = None) -> list[Word]:
@@ -248,7 +170,7 @@ class Person:
             shot = self.grab(self.scratch / "look.png")
             # The look that found the last text first: screens come in runs of one kind.
             for variant in sorted(OCR_VARIANTS, key=lambda v: v[0] != self._last_look):
-                boxes = [b for b in _phrase_boxes(self.read_words(shot, variant), text)
+                boxes = [b for b in phrase_boxes(self.read_words(shot, variant), text)
                          if b.top >= below]
                 if boxes:
                     self._last_look = variant[0]
@@ -269,7 +191,7 @@ class Person:
     def wait_text(self, text: str, patience: float = FIND_PATIENCE_S, below: int = 24) -> Box:
         box = self.find_text(text, patience, below)
         if box is None:
-            shot = self.screenshot(f"missing-{_norm(text) or 'text'}")
+            shot = self.screenshot(f"missing-{norm(text) or 'text'}")
             raise AssertionError(f"{text!r} never showed on the screen within {patience:.0f} s "
                                  f"(last screen: {shot})")
         return box

@@ -4,10 +4,15 @@ extends RefCounted
 ## ([constant PongNetProtocol.HEARTBEAT_HZ]). Times are seconds of one monotonic clock the
 ## caller passes in, so the rules can be tested without waiting.
 
+## Frames of stall notices after [method settle].
+const SETTLE_FRAMES: int = 20
+
 var _last_heard: Dictionary[int, float] = {}
 var _next_beat_s: float = -INF
 # Peers that said they are about to stall, until their next beat.
 var _stalling: Dictionary[int, bool] = {}
+# Frames left in which this peer sends stall notices instead of beats (see settle).
+var _settle_frames_left: int = 0
 # Peers watched and not yet heard ([constant PongNetProtocol.FIRST_BEAT_TIMEOUT_S]).
 var _unheard: Dictionary[int, bool] = {}
 
@@ -32,6 +37,7 @@ func clear() -> void:
 	_stalling.clear()
 	_unheard.clear()
 	_next_beat_s = -INF
+	_settle_frames_left = 0
 
 
 ## A beat of [param peer] came at [param now_s]; ignored for a peer not watched (one that
@@ -55,6 +61,22 @@ func stalls(peer: int, now_s: float) -> void:
 ## Whether [param peer] said it stalls and has not beaten since.
 func is_stalling(peer: int) -> bool:
 	return _stalling.has(peer)
+
+
+## This peer has announced a stall (it loads a match's court): for the next
+## [constant SETTLE_FRAMES] frames it repeats the notice instead of beating. The court's first
+## frames compile its shaders and can each take over a second on a slow machine; a beat
+## between them would end the partners' patience with this peer.
+func settle() -> void:
+	_settle_frames_left = SETTLE_FRAMES
+
+
+## Whether this frame sends a stall notice rather than a beat (counts the frame).
+func settling() -> bool:
+	if _settle_frames_left <= 0:
+		return false
+	_settle_frames_left -= 1
+	return true
 
 
 ## Whether our beats are due at [param now_s]; when they are, the next ones are scheduled

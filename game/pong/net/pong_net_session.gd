@@ -29,10 +29,6 @@ signal bad_message(peer: int, what: String, reason: String)
 
 ## Seconds a refused client keeps its connection, so it learns why before it is dropped.
 const REFUSAL_GRACE_S: float = 0.5
-## Frames after [method announce_stall] in which this peer repeats the stall notice instead
-## of beating: the loaded court's first frames compile its shaders and can each take over a
-## second on a slow machine, which its partners must not take for a dead peer.
-const SETTLE_FRAMES: int = 20
 
 var is_server: bool = false
 ## The last refusal or failure, for the UI.
@@ -54,8 +50,6 @@ var _half_open: PongNetHalfOpen = PongNetHalfOpen.new()
 var _refusal: String = ""
 # Peers to drop at the next frame (see drop_now).
 var _drops: Array[int] = []
-# Frames left in which a stall notice goes out instead of a beat (see announce_stall).
-var _settle_frames_left: int = 0
 
 
 func _init() -> void:
@@ -121,7 +115,6 @@ func close() -> void:
 	is_server = false
 	_heartbeat.clear()
 	_half_open.clear()
-	_settle_frames_left = 0
 
 
 func is_open() -> bool:
@@ -160,15 +153,14 @@ func refuse(peer: int, reason: String) -> void:
 func misbehaved(peer: int, what: String, reason: String) -> bool:
 	bad_message.emit(peer, what, reason)
 	var verdict: PongNetBudget.Verdict = budget.note(peer)
+	var drops: bool = verdict == PongNetBudget.Verdict.DISCONNECT and is_server
 	var line: String = budget.log_line(verdict, peer, what, reason)
-	if verdict == PongNetBudget.Verdict.DISCONNECT and not is_server:
-		line = ""  # A client cannot disconnect the server; it has said so once.
-	if not line.is_empty():
+	# A client cannot disconnect the server; it has said so once.
+	if not line.is_empty() and (drops or verdict != PongNetBudget.Verdict.DISCONNECT):
 		printerr(line)
-	if verdict == PongNetBudget.Verdict.DISCONNECT and is_server:
+	if drops:
 		drop_now(peer)
-		return true
-	return false
+	return drops
 
 
 ## Server: drops [param peer] at this node's next frame, without awaiting a goodbye: its
@@ -178,11 +170,10 @@ func drop_now(peer: int) -> void:
 		_drops.append(peer)
 
 
-## Tells the connected peers that this one is about to stall (it loads a match's court): its
-## silence may then last the ceiling, [constant PongNetProtocol.HEARTBEAT_TIMEOUT_MAX_S],
-## until its next beat, which comes only after [constant SETTLE_FRAMES] more frames.
+## Tells the peers this one is about to stall (it loads a court): they then wait up to
+## [constant PongNetProtocol.HEARTBEAT_TIMEOUT_MAX_S] until it settles ([PongNetHeartbeat]).
 func announce_stall() -> void:
-	_settle_frames_left = SETTLE_FRAMES
+	_heartbeat.settle()
 	if _peer != null and _api() != null:
 		_send_watch(PongNetStallMessage.new())
 
@@ -191,14 +182,14 @@ func _exit_tree() -> void:
 	close()
 
 
-# Heartbeats each frame they are due; every second the timeouts follow each connection's
-# round trip.
+# Heartbeats each frame they are due; every second the timeouts follow each path's round trip.
 func _process(delta: float) -> void:
-	if _peer != null:
-		_flush_drops()
-		_beat()
+	if _peer == null:
+		return
+	_flush_drops()
+	_beat()
 	_retune_in -= delta
-	if _peer != null and _retune_in <= 0.0:
+	if _retune_in <= 0.0:
 		_retune_in = 1.0
 		PongNetEnet.retune(_peer, _api(), is_server)
 
@@ -238,8 +229,7 @@ func _beat() -> void:
 		return
 	var now: float = _now_s()
 	var peers: PackedInt32Array = api.get_peers()
-	if _settle_frames_left > 0:
-		_settle_frames_left -= 1
+	if _heartbeat.settling():
 		_send_watch(PongNetStallMessage.new())
 	elif _heartbeat.due(now):
 		_send_watch(PongNetBeatMessage.new())
