@@ -66,9 +66,8 @@ func show_title() -> void:
 	if DisplayServer.get_name() == "headless":
 		return
 	var window: Window = get_window()
-	DisplayServer.window_set_title(
-		ProjectSettings.get_setting("application/config/name"), window.get_window_id()
-	)
+	var name_of_game: String = ProjectSettings.get_setting("application/config/name")
+	DisplayServer.window_set_title(name_of_game, window.get_window_id())
 
 
 ## The screen showing now (a [MainMenu], [SettingsScreen], [StudyRunner] or [Game]).

@@ -10,6 +10,8 @@ const MESSAGE_S: float = 2.0
 ## How far the status line moves down when four panels fill the top row (the gap between
 ## the panels, where it sits with two players, is then too narrow for it).
 const STATUS_DROP_FOUR_PLAYERS_PX: float = 150.0
+## Room between the controls line and the force plot.
+const CONTROLS_GAP_PX: float = 16.0
 const CONTROLS: String = (
 	"WASD move  ·  mouse paddle  ·  wheel / R F depth  ·  Q E  Z C turn  ·  V spin  ·  G gun"
 	+ "  ·  Space fire  ·  B mine  ·  Esc pause"
@@ -30,6 +32,8 @@ var _status_bottom: float = 0.0
 @onready var _force_value: Label = %ForceValue
 @onready var _components: Label = %Components
 @onready var _controls: Label = %Controls
+@onready var _controls_width: float = _controls.size.x
+@onready var _plot_panel: Control = $Root/PlotPanel
 
 
 func _ready() -> void:
@@ -48,6 +52,8 @@ func _ready() -> void:
 	_top.add_child(gap)
 	_top.add_child(_panels[2])
 	_top.add_child(_panels[1])
+	get_viewport().size_changed.connect(_fit_controls)
+	_fit_controls.call_deferred()
 	_status_top = _status.offset_top
 	_status_bottom = _status.offset_bottom
 	_ignore_mouse(self)
@@ -137,3 +143,10 @@ static func _ignore_mouse(node: Node) -> void:
 		(node as Control).mouse_filter = Control.MOUSE_FILTER_IGNORE
 	for child: Node in node.get_children():
 		_ignore_mouse(child)
+
+
+# The controls line keeps its width where there is room and wraps left of the force plot
+# where there is not (a 1024-pixel-wide window).
+func _fit_controls() -> void:
+	var room: float = _plot_panel.get_rect().position.x - CONTROLS_GAP_PX - _controls.offset_left
+	_controls.offset_right = _controls.offset_left + minf(_controls_width, room)
