@@ -2,7 +2,8 @@ class_name GameSettings
 extends Node
 ## Keeps the player's settings in [code]user://settings.cfg[/code]: the chosen device, the
 ## [code]Haptics[/code] autoload's force scale, smoothing and control mode, and the
-## display's: volume, fullscreen and the HUD's lab view.
+## display's: volume, fullscreen and the HUD's lab view; and the player's movement keys
+## ([KeyBindings]).
 ##
 ## The values themselves, their defaults and their validation belong to [code]Haptics[/code]:
 ## [member force_scale], [member smoothing_enabled] and [member control_mode] read and write
@@ -30,6 +31,8 @@ const DEFAULT_PATH: String = "user://settings.cfg"
 const SECTION: String = "haptics"
 ## Section of the file holding the display settings.
 const DISPLAY_SECTION: String = "display"
+## Section of the file holding the movement keys.
+const KEYS_SECTION: String = "keys"
 
 ## File this instance loads from and saves to.
 var path: String = DEFAULT_PATH
@@ -78,6 +81,8 @@ var lab_view: bool = false:
 		if value != lab_view:
 			lab_view = value
 			changed.emit()
+## The movement keys; change them with [method bind_key].
+var key_bindings: KeyBindings = KeyBindings.new()
 ## Why the last [method load_settings] or [method apply] fell back to something; empty
 ## when all went well.
 var last_warning: String = ""
@@ -129,6 +134,8 @@ func reset_to_defaults() -> void:
 	volume = 1.0
 	fullscreen = false
 	lab_view = false
+	key_bindings.reset()
+	_apply_keys()
 	_change(Haptics.reset_settings)
 
 
@@ -155,6 +162,10 @@ func load_settings() -> Error:
 	volume = _read(file, "volume", TYPE_FLOAT, volume, DISPLAY_SECTION)
 	fullscreen = _read(file, "fullscreen", TYPE_BOOL, fullscreen, DISPLAY_SECTION)
 	lab_view = _read(file, "lab_view", TYPE_BOOL, lab_view, DISPLAY_SECTION)
+	var refused: String = key_bindings.read(file, KEYS_SECTION)
+	if not refused.is_empty():
+		_warn("Saved keys not used (%s): the default keys apply." % refused)
+	_apply_keys()
 	changed.emit()
 	return OK
 
@@ -169,6 +180,7 @@ func save_settings() -> Error:
 	file.set_value(DISPLAY_SECTION, "volume", volume)
 	file.set_value(DISPLAY_SECTION, "fullscreen", fullscreen)
 	file.set_value(DISPLAY_SECTION, "lab_view", lab_view)
+	key_bindings.write(file, KEYS_SECTION)
 	var err: Error = file.save(path)
 	if err != OK:
 		_warn("Could not save settings to %s: %s." % [path, error_string(err)])
@@ -198,6 +210,16 @@ func apply() -> void:
 		_open_simulated()
 
 
+## Moves [param action] (one of [constant KeyBindings.ACTIONS]) to the key at
+## [param physical]; returns why not (nothing changes then), or "".
+func bind_key(action: StringName, physical: Key) -> String:
+	var why: String = key_bindings.bind(action, physical)
+	if why.is_empty():
+		_apply_keys()
+		changed.emit()
+	return why
+
+
 # Runs a change of the Haptics settings and emits `changed` if it changed anything.
 func _change(change: Callable) -> void:
 	var before: Array = [force_scale, smoothing_enabled, control_mode]
@@ -220,6 +242,13 @@ func _apply_display() -> void:
 	var wanted: Window.Mode = Window.MODE_FULLSCREEN if fullscreen else Window.MODE_WINDOWED
 	if window.mode != wanted and not (window.mode == Window.MODE_MAXIMIZED and not fullscreen):
 		window.mode = wanted
+
+
+# The keys go into the input map for the autoload's settings only (tests' instances leave
+# the game's keys alone).
+func _apply_keys() -> void:
+	if load_on_ready and is_inside_tree():
+		key_bindings.apply()
 
 
 func _open_simulated() -> void:

@@ -2,7 +2,7 @@ class_name SettingsScreen
 extends Control
 ## Edits a [GameSettings] (the [code]Settings[/code] autoload unless [member settings] is
 ## set before the screen enters the tree): device, force scale, smoothing, control mode,
-## volume, fullscreen and the HUD's lab view.
+## volume, fullscreen, the HUD's lab view and the movement keys.
 ## Changes apply to the haptics at once; [b]Back[/b] (or [code]ui_cancel[/code]) saves
 ## them when anything changed and emits [signal closed].
 
@@ -21,6 +21,7 @@ var _device_ids: PackedStringArray = PackedStringArray()
 var _devices: Array[HapticDeviceInfo] = []
 var _dirty: bool = false
 var _refreshing: bool = false
+var _keys: KeyBindingRow = KeyBindingRow.new()
 
 @onready var device_option: OptionButton = %DeviceOption
 @onready var force_slider: HSlider = %ForceSlider
@@ -57,6 +58,7 @@ func _ready() -> void:
 	control_option.add_item("Haptic device (drag with the mouse to steer)")
 	control_option.add_item("Keyboard / gamepad")
 	_populate_devices()
+	_add_keys_row()
 	refresh()
 	device_option.item_selected.connect(_on_device_selected)
 	force_slider.value_changed.connect(_on_force_changed)
@@ -98,6 +100,7 @@ func refresh() -> void:
 	_volume_value.text = "%d %%" % roundi(settings.volume * 100.0)
 	fullscreen_check.button_pressed = settings.fullscreen
 	lab_view_check.button_pressed = settings.lab_view
+	_keys.show_keys(settings.key_bindings)
 	_show_device_info()
 	_show_warning(settings.last_warning)
 	_refreshing = false
@@ -143,6 +146,27 @@ func _show_device_info() -> void:
 	if not driver.is_empty() and not device.openable:
 		parts.append("cannot be opened: %s" % device.unavailable_reason)
 	_device_info.text = "  ·  ".join(parts)
+
+
+# "Keys" and its buttons, the grid's last row.
+func _add_keys_row() -> void:
+	var label: Label = Label.new()
+	label.text = "Keys"
+	var grid: GridContainer = $Center/Panel/Column/Grid
+	grid.add_child(label)
+	grid.add_child(_keys)
+	_keys.key_chosen.connect(_on_key_chosen)
+
+
+func _on_key_chosen(action: StringName, physical: Key) -> void:
+	if physical != KEY_NONE:
+		var why: String = settings.bind_key(action, physical)
+		if why.is_empty():
+			_changed()
+		else:
+			settings.last_warning = "That key was not taken: %s." % why
+	_keys.show_keys(settings.key_bindings)
+	_show_warning(settings.last_warning)
 
 
 func _show_warning(text: String) -> void:
