@@ -263,7 +263,9 @@ test-rt: build
 ## servo loop vs naive loop, the force model's and the proxy's tick cost, each device
 ## backend's tick cost and protocol rate against its scripted transport, the game's
 ## physics-frame and probe cost, the servo next to cyclictest idle / under CPU load / under
-## rendering load, the end-to-end latency, and headless Pong matches' speed against real time
+## rendering load, the end-to-end latency, headless Pong matches' speed against real time, and
+## a player's numbers beside the autopilot's (tests/person/bench_person.py: level 1's time to
+## the goal and frame time in a 1280x720 window, a Pong minute's contacts and longest rally)
 ## (numbers and ratios, not tests; JSON in .bench/)
 bench: import
 	@$(CMAKE_CONFIGURE) -B $(BUILD)/bench -DCMAKE_BUILD_TYPE=Release -DHAPTICS_BUILD_EXTENSION=OFF \
@@ -276,6 +278,7 @@ bench: import
 	@$(GODOT) --headless --path . --fixed-fps 50 res://tests/bench/game_bench.tscn -- \
 		--frames=1500 --json=.bench/game.json
 	@$(GODOT) --headless --path . res://tests/bench/pong_bench.tscn -- --json=.bench/pong.json
+	@tools/analysis/run.sh tests/person/bench_person.py --json .bench/person.json
 
 ## soak: level 1 under the autopilot for SOAK_SECONDS with the servo at 1 kHz
 ## 10 minutes by default; prints rate drift, telemetry drops, resident memory growth and

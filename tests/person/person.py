@@ -281,13 +281,15 @@ class Game:
         self.display = display
         self.log = log
         self.proc: subprocess.Popen | None = None
+        # Engine options a benchmark adds (--print-fps); the tests add none.
+        self.engine_args: list[str] = []
 
     def command(self) -> list[str]:
         if self.build == "export":
-            return [str(EXPORTED)]
+            return [str(EXPORTED), *self.engine_args]
         # What `make play` runs on a display (the Makefile's play target), with the renderer
         # this machine has (tools/test-windowed.sh): no flag of the tests.
-        return [str(GODOT), "--path", str(ROOT), "--rendering-driver", "opengl3"]
+        return [str(GODOT), "--path", str(ROOT), "--rendering-driver", "opengl3", *self.engine_args]
 
     def start(self) -> None:
         with open(self.log, "wb") as out:
