@@ -7,6 +7,7 @@ longest rally in a minute. One run each: numbers to compare, not bounds."""
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
 import re
 import statistics
@@ -50,11 +51,20 @@ def autopilot(scratch: Path) -> dict:
     return {"exit": code, "goal_s": float(goal.group(1)) if goal else None, **frame_ms(text)}
 
 
-def person_level(name: str) -> dict:
+@contextlib.contextmanager
+def playing(name: str):
+    """The game from source in its window, printing its frame times, stopped at the end."""
     session = Session(name, "source")
     session.game.engine_args = ["--print-fps"]
     try:
         session.start()
+        yield session
+    finally:
+        session.close()
+
+
+def person_level(name: str) -> dict:
+    with playing(name) as session:
         person = session.person
         person.click_text("Play", patience=90.0)
         person.wait_text("ITEMS", patience=60.0)
@@ -63,15 +73,10 @@ def person_level(name: str) -> dict:
         goal_s = time.monotonic() - started if reached else None
         person.close_and_see_it_exit(session.game)
         return {"goal_s": goal_s, "looks": looks, **frame_ms(session.game.output())}
-    finally:
-        session.close()
 
 
 def person_pong(name: str) -> dict:
-    session = Session(name, "source")
-    session.game.engine_args = ["--print-fps"]
-    try:
-        session.start()
+    with playing(name) as session:
         person = session.person
         person.click_text("Haptic Battle Pong", patience=90.0)
         person.click_text("Play against the computer")
@@ -88,8 +93,6 @@ def person_pong(name: str) -> dict:
         person.close_and_see_it_exit(session.game)
         return {"contacts": watch.contacts, "longest_rally": watch.longest, "misses": watch.misses,
                 "seconds": PONG_SECONDS, **frame_ms(session.game.output())}
-    finally:
-        session.close()
 
 
 def main() -> int:

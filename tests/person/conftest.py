@@ -20,15 +20,20 @@ signal.signal(signal.SIGTERM, _unwind)
 sys.dont_write_bytecode = True
 
 
-@pytest.fixture(params=["source", "export"])
-def session(request):
-    build = request.param
+def skip_unless_playable(build: str) -> None:
+    """Skips the test where the tools or the build it needs are not here."""
     missing = tools_missing()
     if missing:
         pytest.skip(f"missing {', '.join(missing)} (make deps installs them)")
     if build == "export" and not EXPORTED.exists():
         pytest.skip(f"no exported game at {EXPORTED.relative_to(EXPORTED.parents[2])} "
                     "(make export builds it)")
+
+
+@pytest.fixture(params=["source", "export"])
+def session(request):
+    build = request.param
+    skip_unless_playable(build)
     name = request.node.name.replace("[", "-").replace("]", "")
     s = Session(name, build)
     try:

@@ -13,7 +13,8 @@ import time
 
 import pytest
 
-from person import Person, Session, tools_missing, EXPORTED
+from conftest import skip_unless_playable
+from person import Person, Session
 from pong_eyes import ball_at, paddle_at
 
 NAMES = ("Ada", "Bo")
@@ -34,11 +35,7 @@ def free_udp_port() -> int:
 @pytest.fixture(params=["source", "export"])
 def two(request):
     build = request.param
-    missing = tools_missing()
-    if missing:
-        pytest.skip(f"missing {', '.join(missing)} (make deps installs them)")
-    if build == "export" and not EXPORTED.exists():
-        pytest.skip("no exported game (make export builds it)")
+    skip_unless_playable(build)
     sessions = [Session(f"test_network_match-{build}-{seat}", build) for seat in ("host", "guest")]
     try:
         for s in sessions:
