@@ -88,6 +88,11 @@ class RallyWatch:
     _coming: bool | None = None
     log: list[str] = field(default_factory=list)
 
+    def restart(self) -> None:
+        """A new match: the rally so far is over."""
+        self.rally = 0
+        self._y = self._extreme = self._coming = None
+
     def see(self, t: float, ball: tuple[float, float] | None,
             paddle: tuple[float, float] | None) -> None:
         if ball is None:

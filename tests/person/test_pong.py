@@ -13,6 +13,9 @@ from pong_eyes import ClumsyMouseHand, RallyWatch, ball_at, paddle_at
 SERVE_WITHIN_S = 5.0
 RALLY_CONTACTS = 6
 RALLY_WITHIN_S = 120.0
+# Looks without the ball after which a person reads the screen: a lost match shows the
+# winner screen, and they play again.
+UNSEEN_LOOKS = 10
 
 
 def test_a_person_plays_pong_against_the_computer(session) -> None:
@@ -31,6 +34,8 @@ def test_a_person_plays_pong_against_the_computer(session) -> None:
     hand = ClumsyMouseHand(rest, seed=7)
     watch = RallyWatch()
     looks = 0
+    unseen = 0
+    rematches = 0
     while watch.longest < RALLY_CONTACTS and time.monotonic() - shown < RALLY_WITHIN_S:
         look = person.grab(session.scratch / "pong.png")
         t = time.monotonic() - shown
@@ -48,10 +53,20 @@ def test_a_person_plays_pong_against_the_computer(session) -> None:
         if watch.contacts != contacts_before and watch.contacts <= 3:
             person.screenshot(f"contact-{watch.contacts}")
         person.move_mouse(*hand.follow(ball, paddle))
+        unseen = unseen + 1 if ball is None else 0
+        if unseen >= UNSEEN_LOOKS:
+            unseen = 0
+            again = person.find_text("Play again", patience=0.0)
+            if again is not None:
+                person.screenshot(f"lost-{rematches + 1}")
+                person.click(*again.center)
+                rematches += 1
+                watch.restart()
+                person.move_mouse(*rest)
     person.screenshot("rally" if watch.longest >= RALLY_CONTACTS else "no-rally")
     print(f"person: pong: {looks} looks in {time.monotonic() - shown:.0f} s; the ball first seen "
           f"moving {watch.served_at or 0:.1f} s after the click; {watch.contacts} contacts, longest rally {watch.longest}, "
-          f"{watch.misses} misses\n  " + "\n  ".join(watch.log))
+          f"{watch.misses} misses, {rematches} matches lost and played again\n  " + "\n  ".join(watch.log))
 
     quit_s = person.close_and_see_it_exit(game)
     print(f"person: pong scenario {time.monotonic() - started:.1f} s; the game ended {quit_s:.1f} s "
