@@ -32,9 +32,10 @@ func reset() -> void:
 ## it has none).
 static func default_key(action: StringName) -> Key:
 	var setting: Dictionary = ProjectSettings.get_setting("input/%s" % action, {})
-	for event: Variant in setting.get("events", []):
-		if event is InputEventKey and not RESERVED.has((event as InputEventKey).physical_keycode):
-			return (event as InputEventKey).physical_keycode
+	for event: Object in setting.get("events", []):
+		var key: InputEventKey = event as InputEventKey
+		if key != null and not RESERVED.has(key.physical_keycode):
+			return key.physical_keycode
 	return KEY_NONE
 
 
@@ -76,7 +77,8 @@ func read(file: ConfigFile, section: String) -> String:
 		var value: Variant = file.get_value(section, action, keys[action])
 		if typeof(value) != TYPE_INT:
 			return "the key for %s is not a key" % NAMES[ACTIONS.find(action)]
-		chosen[action] = value as Key
+		var code: int = value
+		chosen[action] = code as Key
 	for action: StringName in ACTIONS:
 		keys[action] = KEY_NONE
 	for action: StringName in ACTIONS:

@@ -114,6 +114,12 @@ class Display:
         env["DISPLAY"] = self.name
         env.pop("WAYLAND_DISPLAY", None)
         env["PULSE_SERVER"] = f"unix:{self.scratch / 'pulse' / 'native'}"
+        # A fresh player's folders for the exported game (make play's tools/godot points them
+        # into the project's .xdg itself): nothing of this machine's user is read or written.
+        for name in ("CONFIG", "DATA", "CACHE"):
+            folder = self.scratch / "home" / name.lower()
+            folder.mkdir(parents=True, exist_ok=True)
+            env[f"XDG_{name}_HOME"] = str(folder)
         return env
 
     def stop(self) -> None:
@@ -178,6 +184,16 @@ class Person:
             if time.monotonic() > deadline:
                 return None
             time.sleep(0.5)
+
+    def find_all(self, text: str) -> list[Box]:
+        """Every place `text` stands on the screen now, as the first look that finds any
+        reads it."""
+        shot = self.grab(self.scratch / "look.png")
+        for variant in OCR_VARIANTS:
+            boxes = phrase_boxes(self.read_words(shot, variant), text)
+            if boxes:
+                return boxes
+        return []
 
     def wait_gone(self, text: str, patience: float = FIND_PATIENCE_S, below: int = 24) -> bool:
         """Whether `text` has left the screen (looked at again until the deadline)."""
