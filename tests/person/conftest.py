@@ -30,11 +30,8 @@ def skip_unless_playable(build: str) -> None:
                     "(make export builds it)")
 
 
-@pytest.fixture(params=["source", "export"])
-def session(request):
-    build = request.param
+def _played(name: str, build: str):
     skip_unless_playable(build)
-    name = request.node.name.replace("[", "-").replace("]", "")
     s = Session(name, build)
     try:
         s.start()
@@ -47,3 +44,17 @@ def session(request):
               f"{sum(s.person.ocr_seconds) / max(1, len(s.person.ocr_seconds)):.2f} s each "
               f"on average; screenshots in {s.shots}")
         assert not errors, "the game printed errors:\n" + "\n".join(errors[:20])
+
+
+@pytest.fixture(params=["source", "export"])
+def session(request):
+    """The game in each build a player starts: from source (make play) and exported."""
+    yield from _played(request.node.name.replace("[", "-").replace("]", ""), request.param)
+
+
+@pytest.fixture
+def shipped_session(request):
+    """The game as it ships (the exported build; from source where none is exported), for
+    a scenario too long to play twice."""
+    build = "export" if EXPORTED.exists() else "source"
+    yield from _played(f"{request.node.name}-{build}", build)
