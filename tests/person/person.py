@@ -114,12 +114,14 @@ class Display:
         env["DISPLAY"] = self.name
         env.pop("WAYLAND_DISPLAY", None)
         env["PULSE_SERVER"] = f"unix:{self.scratch / 'pulse' / 'native'}"
-        # A fresh player's folders for the exported game (make play's tools/godot points them
-        # into the project's .xdg itself): nothing of this machine's user is read or written.
+        # A fresh player's folders: the exported game's XDG ones, and the root of those
+        # tools/godot gives the source build (make play's own). Two people are two players:
+        # two copies sharing one shader cache corrupted it ("shader_file_header").
         for name in ("CONFIG", "DATA", "CACHE"):
             folder = self.scratch / "home" / name.lower()
             folder.mkdir(parents=True, exist_ok=True)
             env[f"XDG_{name}_HOME"] = str(folder)
+        env["HAPTICS_XDG_ROOT"] = str(self.scratch / "home")
         return env
 
     def stop(self) -> None:

@@ -14,7 +14,7 @@ import numpy as np
 from scipy import ndimage
 
 from maze_eyes import Way, goal_at, pixels_of, sub_in_maze
-from person import ROOT, Person
+from person import Person
 from sub_eyes import chord_toward
 
 METHODS = 3
@@ -181,9 +181,8 @@ def test_a_participant_goes_through_the_maze_study(shipped_session) -> None:
     person.wait_text("Haptic Battle Pong", patience=30.0)
     took = person.close_and_see_it_exit(session.game)
     # What the researcher takes home: the participant's folder in the study's data folder
-    # (the start screen names it: the game's user data, under the XDG data folder it ran with).
-    data_home = Path(session.display.env()["XDG_DATA_HOME"]) if session.game.build == "export" \
-        else ROOT / ".xdg" / "data"
+    # (the start screen names it: the game's user data, in the player's XDG data folder).
+    data_home = Path(session.display.env()["XDG_DATA_HOME"])
     folders = list(data_home.glob(f"godot/app_userdata/*/study/{participant}"))
     assert folders, f"no study folder for {participant} under {data_home}"
     written = sorted(f.name for f in folders[0].iterdir())

@@ -63,8 +63,9 @@ func is_stalling(peer: int) -> bool:
 	return _stalling.has(peer)
 
 
-## This peer has announced a stall (it loads a match's court): for the next
-## [constant SETTLE_FRAMES] frames it repeats the notice instead of beating. The court's first
+## This peer has announced a stall (it loads a match's court; its partners then allow it
+## [constant PongNetProtocol.LOAD_STALL_TIMEOUT_S]): for the next [constant SETTLE_FRAMES]
+## frames it repeats the notice instead of beating. The court's first
 ## frames compile its shaders and can each take over a second on a slow machine; a beat
 ## between them would end the partners' patience with this peer.
 func settle() -> void:

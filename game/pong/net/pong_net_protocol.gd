@@ -88,6 +88,10 @@ const HEARTBEAT_MISSES: int = 4
 ## four-peer match on two cores several times over; the ceiling is the promise.
 const HEARTBEAT_TIMEOUT_MIN_S: float = 1.0
 const HEARTBEAT_TIMEOUT_MAX_S: float = 3.0
+## Silence allowed a peer that said it stalls to load a match's court: its first frames
+## compile the court's shaders, measured at 3.75 s on a loaded two-core machine without a
+## shader cache; a player there must not lose the match before it starts.
+const LOAD_STALL_TIMEOUT_S: float = 10.0
 ## ENet peer slots of a server. ENet keeps a peer for every CONNECT datagram it answers
 ## until the handshake completes or about 30 s pass, and Godot shows no such half-open peer
 ## to a script (ENetConnection.get_peers() lists a peer only once it has connected), so

@@ -170,8 +170,7 @@ func drop_now(peer: int) -> void:
 		_drops.append(peer)
 
 
-## Tells the peers this one is about to stall (it loads a court): they then wait up to
-## [constant PongNetProtocol.HEARTBEAT_TIMEOUT_MAX_S] until it settles ([PongNetHeartbeat]).
+## Tells the peers this one stalls to load a court (see [method PongNetHeartbeat.settle]).
 func announce_stall() -> void:
 	_heartbeat.settle()
 	if _peer != null and _api() != null:
@@ -234,9 +233,10 @@ func _beat() -> void:
 	elif _heartbeat.due(now):
 		_send_watch(PongNetBeatMessage.new())
 	var limit_of: Callable = func(peer: int) -> float:
-		if _heartbeat.is_stalling(peer) or not peers.has(peer):
-			return PongNetProtocol.HEARTBEAT_TIMEOUT_MAX_S
-		return PongNetEnet.heartbeat_limit(_peer.get_peer(peer))
+		if _heartbeat.is_stalling(peer):
+			return PongNetProtocol.LOAD_STALL_TIMEOUT_S
+		var path: ENetPacketPeer = _peer.get_peer(peer) if peers.has(peer) else null
+		return PongNetEnet.heartbeat_limit(path)
 	for dead: Array in _heartbeat.overdue(now, limit_of):
 		var peer: int = dead[0]
 		var silence: float = dead[1]
