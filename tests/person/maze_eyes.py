@@ -11,7 +11,6 @@ import numpy as np
 from PIL import Image
 from scipy import ndimage
 
-from sub_eyes import sub_at
 
 # The maze's colours as drawn (game/study/levels/maze_walls.gd, study_goal.gd: a person sees
 # them; the test only names them).
@@ -82,10 +81,6 @@ class Way:
         nearest = reachable[np.argmin(np.abs(reachable - (y, x)).sum(axis=1))]
         return (int(nearest[0]), int(nearest[1]))
 
-    def steps_left(self, point: tuple[float, float]) -> int | None:
-        cell = self._cell_of(point)
-        return None if cell is None else int(self.distance[cell])
-
     def path_from(self, point: tuple[float, float]) -> list[tuple[float, float]]:
         """The screen points from `point` down the distances to the goal, one per cell."""
         cell = self._cell_of(point)
@@ -106,9 +101,3 @@ class Way:
         if not path:
             return None
         return path[min(len(path) - 1, int(px / CELL))]
-
-
-def sub_in_maze(pixels: np.ndarray) -> tuple[float, float] | None:
-    """The sub in the maze (the goal's orange is paler than its hull)."""
-    found = sub_at(pixels)
-    return found

@@ -13,9 +13,9 @@ from pathlib import Path
 import numpy as np
 from scipy import ndimage
 
-from maze_eyes import Way, goal_at, pixels_of, sub_in_maze
+from maze_eyes import Way, goal_at, pixels_of
 from person import Person
-from sub_eyes import chord_toward
+from sub_eyes import chord_toward, sub_at
 
 METHODS = 3
 # Generous bounds for a loaded machine: a person takes about 20-40 s through a maze.
@@ -93,7 +93,7 @@ def steer_through_the_maze(person: Person, scratch) -> float:
         while time.monotonic() - started < MAZE_PATIENCE_S:
             pixels = pixels_of(person.grab(scratch / "maze.png"))
             looks += 1
-            sub = sub_in_maze(pixels)
+            sub = sub_at(pixels)
             if sub is not None:
                 ahead = way.ahead(sub, 48.0)
                 if ahead is not None:
