@@ -358,16 +358,3 @@ func test_a_mine_reaches_only_the_territory_it_lies_in_or_next_to() -> void:
 	assert_false(near.call(Vector3(0.0, 0.0, 2.0), 2, 4, reach), "deep in 0: not 2's")
 	assert_true(near.call(Vector3(1.0, 0.0, 1.2), 2, 4, reach), "0.14 m from the diagonal")
 	assert_false(near.call(Vector3(0.0, 0.0, -2.0), 0, 4, reach), "across the court")
-
-
-func test_a_peer_loading_a_court_sends_stall_notices_for_its_first_frames_not_beats() -> void:
-	var beat: PongNetHeartbeat = PongNetHeartbeat.new()
-	assert_false(beat.settling(), "nothing announced: beats as usual")
-	beat.settle()
-	var notices: int = 0
-	for _frame: int in PongNetHeartbeat.SETTLE_FRAMES + 5:
-		notices += 1 if beat.settling() else 0
-	assert_eq(notices, PongNetHeartbeat.SETTLE_FRAMES, "one notice a frame while it settles")
-	beat.settle()
-	beat.clear()
-	assert_false(beat.settling(), "a closed session settles nothing")

@@ -208,3 +208,30 @@ def test_dedicated_server_runs_a_match_between_two_clients() -> None:
         server, *clients = peers
         assert server.report["seat"] == -1
         _check_consistent(clients + [server], NETWORKS["50ms"], min_handoffs=1)
+
+
+@pytest.mark.parametrize("who", ["host", "client"])
+def test_a_slow_court_load_never_costs_a_player_the_seat(who: str) -> None:
+    # A first match on a slow machine compiles the court's shaders (3.75 s measured on a
+    # loaded two-core machine without a shader cache): that player keeps the seat. The slow
+    # one plays 10 s after its court came up and quits first; the other plays on.
+    slow = ("--pong-net-load-stall=5",)
+    patient = ("--pong-net-seconds=25",)
+    with workspace() as work:
+        peers, _ = run_match(work, 2, NETWORKS["lan"], 10,
+                             host_args=slow if who == "host" else patient,
+                             client_args=((slow if who == "client" else patient),))
+        host, client = peers
+        staller = host if who == "host" else client
+        assert host.report["exit_code"] == 0 and client.report["exit_code"] == 0, logs(peers)
+        stall = staller.report["extra"]["load_stall"]
+        assert stall["to_wall_s"] - stall["from_wall_s"] >= 4.9, stall
+        # The slow player played its whole match against the other.
+        assert staller.report["exit"] == "time", (staller.report["exit"], logs(peers))
+        theirs = ["local", "remote"] if who == "host" else ["remote", "local"]
+        kinds = [k if k == "remote" else "local" for k in staller.report["controllers"]]
+        assert kinds == theirs, staller.report["controllers"]
+        # Nobody left the host before the slow player's match was over.
+        over = stall["to_wall_s"] + 10.0 - 1.0
+        early = [p for p in host.report["extra"].get("peers_left", []) if p["wall_s"] < over]
+        assert early == [], (early, stall, logs(peers))

@@ -80,6 +80,12 @@ func settling() -> bool:
 	return true
 
 
+## Whether the connection to [param peer] must bear a stall: the peer said it stalls, or
+## this one still settles after its own.
+func bears_stall(peer: int) -> bool:
+	return _stalling.has(peer) or _settle_frames_left > 0
+
+
 ## Whether our beats are due at [param now_s]; when they are, the next ones are scheduled
 ## (after a stall, one round goes out, not the ones missed).
 func due(now_s: float) -> bool:

@@ -87,11 +87,7 @@ func join(address: String, port: int) -> String:
 		_peer = null
 		return _fail("cannot connect to %s:%d: %s" % [address, port, error_string(error)])
 	is_server = false
-	_peer.get_peer(1).set_timeout(
-		PongNetProtocol.TIMEOUT_LIMIT,
-		PongNetProtocol.CONNECT_TIMEOUT_MIN_MS,
-		PongNetProtocol.CONNECT_TIMEOUT_MAX_MS
-	)
+	PongNetEnet.tune_connect(_peer.get_peer(1))
 	_install()
 	return ""
 
@@ -175,6 +171,7 @@ func announce_stall() -> void:
 	_heartbeat.settle()
 	if _peer != null and _api() != null:
 		_send_watch(PongNetStallMessage.new())
+		PongNetEnet.brace(_peer, _api(), is_server)
 
 
 func _exit_tree() -> void:
@@ -190,7 +187,7 @@ func _process(delta: float) -> void:
 	_retune_in -= delta
 	if _retune_in <= 0.0:
 		_retune_in = 1.0
-		PongNetEnet.retune(_peer, _api(), is_server)
+		PongNetEnet.retune(_peer, _api(), is_server, _heartbeat.bears_stall)
 
 
 func _install() -> void:
@@ -277,6 +274,7 @@ func _on_beat(peer: int, _message: PongNetBeatMessage) -> void:
 
 func _on_stall(peer: int, _message: PongNetStallMessage) -> void:
 	_heartbeat.stalls(peer, _now_s())
+	PongNetEnet.bear_stall(_peer.get_peer(peer))
 
 
 # Why the server refuses us, before it drops us (only the server sends it: the router).

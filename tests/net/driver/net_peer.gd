@@ -18,7 +18,9 @@ extends Node
 ## [code]--pong-net-version=V[/code] (claim another protocol version: refused);
 ## [code]--pong-net-weapon-rate=X[/code] (the computer players fire and place mines X times
 ## as often); [code]--pong-net-realtime[/code] (headless too, run the servo thread at 1 kHz
-## as a windowed game does, instead of stepping it).
+## as a windowed game does, instead of stepping it); [code]--pong-net-load-stall=S[/code]
+## (the frame that loads the match's court takes S seconds more, as a slow machine compiling
+## its shaders for the first time does).
 ## A test tool, out of every export: under tests/ and in a folder Godot does not scan
 ## (.gdignore), as the rogue peer.
 
@@ -104,6 +106,12 @@ func _on_launched(net: PongNet) -> void:
 
 func _on_match_started() -> void:
 	var net: PongNet = cli.net
+	var stall_s: float = option("pong-net-load-stall", "0").to_float()
+	if stall_s > 0.0:
+		var stalled: Dictionary = {"from_wall_s": NetReport.now()}
+		OS.delay_msec(roundi(stall_s * 1000.0))
+		stalled["to_wall_s"] = NetReport.now()
+		report.extra["load_stall"] = stalled
 	_match_clock = 0.0
 	_seat = net.my_seat()
 	report.begin(net.play)

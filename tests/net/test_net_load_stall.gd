@@ -1,0 +1,31 @@
+extends TestSuite
+## A peer loading a match's court (its first frames compile shaders, seconds on a slow
+## machine): what it tells its partners, and how long each end of the connection waits.
+
+
+func test_a_peer_loading_a_court_sends_stall_notices_for_its_first_frames_not_beats() -> void:
+	var beat: PongNetHeartbeat = PongNetHeartbeat.new()
+	assert_false(beat.settling(), "nothing announced: beats as usual")
+	beat.settle()
+	var notices: int = 0
+	for _frame: int in PongNetHeartbeat.SETTLE_FRAMES + 5:
+		notices += 1 if beat.settling() else 0
+	assert_eq(notices, PongNetHeartbeat.SETTLE_FRAMES, "one notice a frame while it settles")
+	beat.settle()
+	beat.clear()
+	assert_false(beat.settling(), "a closed session settles nothing")
+
+
+func test_a_connection_bears_a_stall_while_either_end_loads_a_court() -> void:
+	var beat: PongNetHeartbeat = PongNetHeartbeat.new()
+	beat.watch(7, 0.0)
+	assert_false(beat.bears_stall(7), "nobody loads: the path's own timeout")
+	beat.stalls(7, 1.0)
+	assert_true(beat.bears_stall(7), "the peer said it loads a court")
+	beat.heard(7, 2.0)
+	assert_false(beat.bears_stall(7), "it beat again: loaded")
+	beat.settle()
+	assert_true(beat.bears_stall(7), "this peer loads: its partners wait on it")
+	for _frame: int in PongNetHeartbeat.SETTLE_FRAMES:
+		beat.settling()
+	assert_false(beat.bears_stall(7), "settled")
