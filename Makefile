@@ -150,9 +150,9 @@ test-windowed: import
 ## through the pause menu and Settings, steered with the keys to the goal, the goal screen's
 ## Menu, the window closed (exit 0); Pong against the computer with a clumsy mouse hand (a
 ## serve within 5 s, a rally of six contacts); a network match of two people at two screens
-## through the lobby; the maze study from its start screen to the thank-you (the shipped build
-## only). Fails on any error or X error line; screenshots in .build/person/<test>/
-## (tests/person, about 10 minutes).
+## through the lobby (the host from source, the guest exported); the maze study from its start
+## screen to the thank-you (the shipped build only). Fails on any error or X error line;
+## screenshots in .build/person/<test>/ (tests/person, about 8 minutes).
 test-person: import
 	@tools/analysis/run.sh -m pytest tests/person -q -rsx -p no:cacheprovider -s
 
