@@ -228,6 +228,40 @@ func test_feeding_the_actions_that_move_the_hand_does_not_hold_them_down() -> vo
 	assert_lt(Input.get_action_strength(FED[1]), 0.05, "and the fed action let go")
 
 
+func test_a_key_held_down_survives_the_feed() -> void:
+	# "The stronger wins": the device pushed the same way and back to the centre, or fed
+	# and then switched off, never lets go of a key the player still holds.
+	var key: InputEventKey = InputEventKey.new()
+	key.physical_keycode = KEY_F9
+	InputMap.action_add_event(FED[0], key)
+	Haptics.hand_follows_input = false
+	Haptics.feed_actions = FED
+	var press: InputEventKey = key.duplicate() as InputEventKey
+	press.pressed = true
+	Input.parse_input_event(press)
+	Input.flush_buffered_events()
+	Haptics.device.set_hand_target(Vector2(-1.0, 0.0))
+	await _physics_frames(30)
+	assert_eq(Input.get_action_strength(FED[0]), 1.0, "the key's full strength while fed too")
+	var lowest: float = 1.0
+	Haptics.device.set_hand_target(Vector2.ZERO)
+	for i: int in 60:
+		await get_tree().physics_frame
+		lowest = minf(lowest, Input.get_action_strength(FED[0]))
+	assert_eq(lowest, 1.0, "the hand back at the centre: the key still holds the action")
+	Haptics.device.set_hand_target(Vector2(-1.0, 0.0))
+	await _physics_frames(30)
+	Haptics.control_mode = Haptics.CONTROL_KEYBOARD
+	await _physics_frames(2)
+	assert_true(Input.is_action_pressed(FED[0]), "the feed switched off: the key still holds it")
+	var release: InputEventKey = key.duplicate() as InputEventKey
+	release.pressed = false
+	Input.parse_input_event(release)
+	Input.flush_buffered_events()
+	await _physics_frames(2)
+	assert_false(Input.is_action_pressed(FED[0]), "the key let go: released")
+
+
 func test_telemetry_is_off_until_someone_drains_it() -> void:
 	# A fresh door started as the autoload is (nothing an earlier suite drained or left).
 	var haptics: HapticsTestKit.Door = add_child_autofree(HapticsTestKit.Door.new())

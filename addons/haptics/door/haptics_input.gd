@@ -84,20 +84,31 @@ func feed(input_vector: Vector2, driven: bool = true) -> void:
 		# hand would be a full key press to a game reading is_action_pressed.
 		var deadzone: float = maxf(FEED_THRESHOLD, InputMap.action_get_deadzone(action))
 		if strengths[k] > deadzone:
-			Input.action_press(action, strengths[k])
+			# The stronger wins: a key held down keeps its full strength.
+			Input.action_press(action, maxf(strengths[k], _physical_strength(action)))
 			_fed[action] = true
 		elif _fed.has(action):
-			# Only what this door pressed: a key held down stays pressed.
-			Input.action_release(action)
-			_fed.erase(action)
+			_let_go(action)
 
 
 ## Releases every action [method feed] pressed.
 func release_fed() -> void:
-	for action: String in _fed:
-		if InputMap.has_action(action):
-			Input.action_release(action)
-	_fed.clear()
+	for action: String in _fed.keys():
+		_let_go(action)
+
+
+# Takes back what this door pressed into [param action]. Input.action_release releases the
+# action whatever else holds it, and a key held down sends no second press: the keys, buttons
+# and sticks still holding it press it again at their strength.
+func _let_go(action: String) -> void:
+	_fed.erase(action)
+	if not InputMap.has_action(action):
+		return
+	var held: float = _physical_strength(action)
+	if held > 0.0:
+		Input.action_press(action, held)
+	else:
+		Input.action_release(action)
 
 
 ## Where the user puts the simulated hand (normalised): keyboard/gamepad deflection wins;
