@@ -225,8 +225,9 @@ test-dist: dist
 ## addon: the Godot addon and its Asset Library zip
 ## Assembled from the sources into .build/addon/addons/haptics/ (the scripts, the probe scene,
 ## the materials, the Linux and Windows libraries, the editor plugin), zipped as
-## .build/addon/haptics-addon-<version>.zip.
-addon: import build-release build-windows
+## .build/addon/haptics-addon-<version>.zip; without MinGW-w64, Linux's alone, as
+## haptics-addon-<version>-linux-only.zip (it says so).
+addon: import build-release $(if $(shell command -v x86_64-w64-mingw32-g++),build-windows)
 	@tools/build-addon.sh
 
 ## test-addon: install the addon into a small game the README's way and play it

@@ -24,7 +24,15 @@ WINDOWS_RELEASE_LIB="$ADDON_SRC/bin/libhaptics.windows.template_release.x86_64.d
 WINDOWS_SHIPPED_NAMES=(libhaptics.windows.template_debug.x86_64.dll libhaptics.windows.template_release.x86_64.dll)
 
 [[ -f "$RELEASE_LIB" ]] || { echo "build-addon: $RELEASE_LIB is missing (make build-release)" >&2; exit 1; }
-[[ -f "$WINDOWS_RELEASE_LIB" ]] || { echo "build-addon: $WINDOWS_RELEASE_LIB is missing (make build-windows)" >&2; exit 1; }
+# Without the Windows build (no MinGW-w64 here) the zip is Linux's only, named so, and its
+# .gdextension lists Linux's libraries only: a Windows user gets Godot's "no library for
+# this platform" and the door's own message, not a load error.
+platforms=linux
+if [[ -f "$WINDOWS_RELEASE_LIB" ]]; then
+	platforms="linux windows"
+else
+	echo "build-addon: no $WINDOWS_RELEASE_LIB (make build-windows, which needs MinGW-w64): a Linux-only zip" >&2
+fi
 [[ -n "$VERSION" ]] || { echo "build-addon: no version=\"...\" line in $ADDON_SRC/plugin.cfg" >&2; exit 1; }
 
 STAGE="$(mktemp -d "${TMPDIR:-/tmp}/haptics-addon.XXXXXX")"
@@ -40,17 +48,23 @@ git ls-files --cached --others --exclude-standard -- "$ADDON_SRC" | grep -v "^$A
 for name in "${SHIPPED_NAMES[@]}"; do
 	cp "$RELEASE_LIB" "$STAGE/$ADDON_SRC/bin/$name"
 done
-for name in "${WINDOWS_SHIPPED_NAMES[@]}"; do
-	cp "$WINDOWS_RELEASE_LIB" "$STAGE/$ADDON_SRC/bin/$name"
-done
 # Debug information stays in the build tree.
 command -v strip >/dev/null && strip --strip-debug "$STAGE/$ADDON_SRC"/bin/*.so
-x86_64-w64-mingw32-strip --strip-debug "$STAGE/$ADDON_SRC"/bin/*.dll
+if [[ $platforms == *windows* ]]; then
+	for name in "${WINDOWS_SHIPPED_NAMES[@]}"; do
+		cp "$WINDOWS_RELEASE_LIB" "$STAGE/$ADDON_SRC/bin/$name"
+	done
+	x86_64-w64-mingw32-strip --strip-debug "$STAGE/$ADDON_SRC"/bin/*.dll
+else
+	sed -i '/^windows\./d' "$STAGE/$ADDON_SRC/haptics.gdextension"
+fi
 tools/check-product.sh "$STAGE/$ADDON_SRC" >/dev/null
 
 mkdir -p "$OUT"
-ZIP="$(cd "$OUT" && pwd)/haptics-addon-$VERSION.zip"
-rm -f "$ZIP"
+suffix=""
+[[ $platforms == *windows* ]] || suffix=-linux-only
+ZIP="$(cd "$OUT" && pwd)/haptics-addon-$VERSION$suffix.zip"
+rm -f "$OUT"/haptics-addon-*.zip
 (cd "$STAGE" && python3 - "$ZIP" <<'PY'
 import os, sys, zipfile
 with zipfile.ZipFile(sys.argv[1], "w", zipfile.ZIP_DEFLATED) as z:
@@ -62,4 +76,4 @@ PY
 )
 rm -rf "$OUT/addons"
 python3 -c 'import sys, zipfile; zipfile.ZipFile(sys.argv[1]).extractall(sys.argv[2])' "$ZIP" "$OUT"
-echo "addon: $ZIP ($(du -h "$ZIP" | cut -f1)), unpacked in $OUT/addons/haptics"
+echo "addon: $ZIP ($(du -h "$ZIP" | cut -f1); $platforms), unpacked in $OUT/addons/haptics"

@@ -139,17 +139,28 @@ func _init() -> void:
 		_backend = (load(NATIVE_BACKEND_PATH) as GDScript).new()
 	else:
 		_backend = HapticsBackend.new()
-		push_warning(
-			(
-				"Haptics extension not loaded: playing without force feedback. "
-				+ "Build it with 'make build' (see README)."
-			)
-		)
+		push_warning(_no_extension_message())
 	servo = HapticsServo.new(_backend)
 	servo.default_spin_us = _spin_us_setting()
 	device = HapticsDevice.new(_backend, servo)
 	servo.changed.connect(status_changed.emit)
 	device.changed.connect(status_changed.emit)
+
+
+# Why there is no native server, in words for this platform: the addon ships Linux and
+# Windows x86_64 only; elsewhere the engine's own error names no platform we support.
+static func _no_extension_message() -> String:
+	var platform: String = "%s %s" % [OS.get_name(), Engine.get_architecture_name()]
+	if not OS.get_name() in ["Linux", "Windows"] or Engine.get_architecture_name() != "x86_64":
+		return (
+			"Haptics: %s is not supported (Linux and Windows x86_64 are): " % platform
+			+ "playing without force feedback."
+		)
+	return (
+		"Haptics extension not loaded: playing without force feedback. Its library is missing "
+		+ "from addons/haptics/bin/ or failed to load (see the error above); from the "
+		+ "repository, 'make build' builds it."
+	)
 
 
 func _ready() -> void:

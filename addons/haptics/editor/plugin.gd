@@ -41,6 +41,8 @@ static func list_extension(extension: String) -> bool:
 	if extension in listed:
 		return true
 	listed.append(extension)
+	# A game fresh from its repository has no .godot folder yet.
+	DirAccess.make_dir_recursive_absolute(EXTENSION_LIST.get_base_dir())
 	var file: FileAccess = FileAccess.open(EXTENSION_LIST, FileAccess.WRITE)
 	if file == null:
 		push_error("Haptics: cannot write %s (%s)." % [EXTENSION_LIST, FileAccess.get_open_error()])
