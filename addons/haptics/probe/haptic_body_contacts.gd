@@ -5,7 +5,8 @@ extends RefCounted
 ## [code]normal[/code] (unit, from the surface toward the body), [code]id[/code] (the
 ## collider's instance id), [code]key[/code] (names the touched shape, or the tile of a
 ## [TileMapLayer]: one collider holds every tile), [code]velocity[/code] (the collider's own
-## at the contact, pixels per second) and, on tiles, [code]cell[/code].
+## at the contact, pixels per second) and, on tiles, [code]cell[/code] and [code]tiles[/code]
+## (the [TileMapLayer] holding it: the collider, or the layer of a [TileMap] collider).
 
 const HapticBodyShapes := preload("res://addons/haptics/probe/haptic_body_shapes.gd")
 ## An object above the body rests on it when its surface normal points at least this much
@@ -25,6 +26,8 @@ var _query: PhysicsShapeQueryParameters2D = PhysicsShapeQueryParameters2D.new()
 var _floor_entry: Dictionary = {}
 # The walls and ceilings (every slide contact but the floor) of the last frame.
 var _sides: Array[Dictionary] = []
+# Tile colliders whose touched tile could not be found, warned about once.
+var _unread: Dictionary[int, bool] = {}
 
 
 func _init(p_body: PhysicsBody2D) -> void:
@@ -116,16 +119,42 @@ func entry(
 	var out: Dictionary = {
 		"collider": p_collider, "normal": p_normal, "id": id, "velocity": p_velocity
 	}
-	var tiles: TileMapLayer = p_collider as TileMapLayer
+	# Half a pixel behind the surface lies the touched tile, whichever physics quadrant
+	# (body) holds its shape.
+	var behind: Vector2 = p_point - p_normal * 0.5
+	var tiles: TileMapLayer = _layer_touched(p_collider, behind)
+	if tiles == null and p_collider is TileMap and not _unread.has(id):
+		_unread[id] = true
+		push_warning(
+			(
+				"HapticProbe: no tile of %s found at %s; it feels like the probe's default material."
+				% [(p_collider as Node).name, behind]
+			)
+		)
 	if tiles != null:
-		# Half a pixel behind the surface lies the touched tile, whichever physics quadrant
-		# (body) holds its shape.
-		var cell: Vector2i = tiles.local_to_map(tiles.to_local(p_point - p_normal * 0.5))
+		var cell: Vector2i = tiles.local_to_map(tiles.to_local(behind))
 		out["cell"] = cell
+		out["tiles"] = tiles
 		out["key"] = "%d:%d,%d" % [id, cell.x, cell.y]
 	else:
 		out["key"] = "%d:%d:%d" % [id, p_rid.get_id(), p_shape]
 	return out
+
+
+# The tile layer whose tile lies at [param point]: a [TileMapLayer] collider itself, or
+# the layer of a [TileMap] (Godot 4.0-4.2's node: it keeps its layers as internal
+# TileMapLayer children) that has a tile there; null for any other collider.
+static func _layer_touched(p_collider: Object, p_point: Vector2) -> TileMapLayer:
+	if p_collider is TileMapLayer:
+		return p_collider as TileMapLayer
+	if not p_collider is TileMap:
+		return null
+	for child: Node in (p_collider as TileMap).get_children(true):
+		var layer: TileMapLayer = child as TileMapLayer
+		var here: Vector2 = layer.to_local(p_point) if layer != null else Vector2.ZERO
+		if layer != null and layer.get_cell_tile_data(layer.local_to_map(here)) != null:
+			return layer
+	return null
 
 
 func _aim(solid: Dictionary, exclude: Array[RID]) -> void:

@@ -338,7 +338,7 @@ func _material_of(collision: Dictionary) -> HapticMaterial:
 	var declared: HapticMaterial = HapticMaterial.of(collider)
 	if declared == null and collision.has("cell"):
 		var cell: Vector2i = collision["cell"]
-		declared = HapticMaterial.of_tile(collider as TileMapLayer, cell)
+		declared = HapticMaterial.of_tile(collision["tiles"] as TileMapLayer, cell)
 	elif declared == null and collider is StaticBody2D:
 		declared = _mapped((collider as StaticBody2D).physics_material_override)
 	elif declared == null and collider is RigidBody2D:
