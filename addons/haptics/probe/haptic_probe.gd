@@ -317,11 +317,32 @@ func _report_impact(collision: Dictionary, material: HapticMaterial) -> void:
 		return
 	var collider: Object = collision["collider"]
 	impact.emit(collider, normal, speed)
+	haptics.push_impact(impact_event(normal, speed, material))
+
+
+## Plays a hit on the hand: a push along [param p_direction] (from what hit toward the body)
+## at [param p_speed_m_per_s], ringing like [param p_material] (null: the probe's default).
+## The one line a kill zone, a spike or an enemy's handler needs for what the body's own
+## contacts do not report (an [Area2D] it entered), e.g.
+## [code]body.get_node("HapticProbe").hit(Vector2.UP, 3.0)[/code].
+func hit(p_direction: Vector2, p_speed_m_per_s: float, p_material: HapticMaterial = null) -> void:
+	var direction_ok: bool = p_direction.is_finite() and not p_direction.is_zero_approx()
+	if haptics == null or not direction_ok or not p_speed_m_per_s > 0.0:
+		return
+	var material: HapticMaterial = p_material if p_material != null else default_material
+	haptics.push_impact(impact_event(p_direction.normalized(), p_speed_m_per_s, material))
+
+
+## The impact event for a push along [param p_direction] at [param p_speed_m_per_s] ringing
+## like [param p_material] (null: the servo's default).
+static func impact_event(
+	p_direction: Vector2, p_speed_m_per_s: float, p_material: HapticMaterial
+) -> HapticImpact:
 	var event: HapticImpact = HapticImpact.new()
-	event.direction = normal
-	event.speed_m_per_s = speed
-	event.material = material.impact_material() if material != null else null
-	haptics.push_impact(event)
+	event.direction = p_direction
+	event.speed_m_per_s = p_speed_m_per_s
+	event.material = p_material.impact_material() if p_material != null else null
+	return event
 
 
 static func _load(normal: Vector2, mass_kg: float) -> HapticLoad:

@@ -1,0 +1,109 @@
+extends TestSuite
+## A player that is an [Area2D] (Godot's "Dodge the Creeps" tutorial player) with a
+## [HapticAreaProbe]: a mob that runs into it is a hit felt at the speed they closed in,
+## pushing the hand away from the mob; and the one line a kill zone calls on either probe.
+
+const PX_PER_M := 100.0
+const HARD := preload("res://addons/haptics/materials/hard.tres")
+
+var door: HapticsTestKit.Door = null
+var world: Node2D = null
+var player: Area2D = null
+var probe: HapticAreaProbe = null
+
+
+func before_each() -> void:
+	door = autofree(HapticsTestKit.manual())
+	assert_true(HapticsTestKit.no_ramp(door))
+	world = Node2D.new()
+	player = Area2D.new()
+	player.add_child(_circle(16.0))
+	player.position = Vector2(400.0, 300.0)
+	probe = HapticAreaProbe.new()
+	probe.haptics = door
+	probe.pixels_per_metre = PX_PER_M
+	player.add_child(probe)
+	world.add_child(player)
+	add_child_autofree(world)
+
+
+func _circle(radius: float) -> CollisionShape2D:
+	var shape: CollisionShape2D = CollisionShape2D.new()
+	var circle: CircleShape2D = CircleShape2D.new()
+	circle.radius = radius
+	shape.shape = circle
+	return shape
+
+
+# A mob as the tutorial's: a rigid body without gravity flying at [param velocity] px/s.
+func _mob(at: Vector2, velocity: Vector2) -> RigidBody2D:
+	var mob: RigidBody2D = RigidBody2D.new()
+	mob.gravity_scale = 0.0
+	mob.add_child(_circle(16.0))
+	mob.position = at
+	mob.linear_velocity = velocity
+	mob.set_meta(&"haptic_material", HARD)
+	world.add_child(mob)
+	return mob
+
+
+# The largest impact force over [param frames] physics frames, the servo stepped at 1 kHz.
+func _peak_impact(frames: int) -> Vector2:
+	var peak: Vector2 = Vector2.ZERO
+	for frame: int in frames:
+		await get_tree().physics_frame
+		for tick: int in roundi(1000.0 / Engine.physics_ticks_per_second):
+			HapticsTestKit.run(door, 1)
+			var impact: Vector2 = door.get_forces().impact
+			if impact.length() > peak.length():
+				peak = impact
+	return peak
+
+
+func test_a_mob_running_into_an_area_player_is_a_hit_pushing_away_from_it() -> void:
+	var hits: Array[float] = []
+	probe.impact.connect(func(_c: Object, _d: Vector2, speed: float) -> void: hits.append(speed))
+	_mob(player.position + Vector2(-120.0, 0.0), Vector2(235.0, 0.0))
+	var peak: Vector2 = await _peak_impact(60)
+	assert_eq(hits.size(), 1, "one hit")
+	if hits.size() == 1:
+		assert_almost_eq(hits[0], 2.35, 0.1, "at the speed the mob came in, m/s")
+	assert_gt(peak.length(), 1.0, "felt: over 1 N with hard at 2.35 m/s")
+	assert_gt(peak.x, 0.0, "pushed away from the mob (it came from the left)")
+
+
+func test_a_player_running_into_a_still_mob_is_a_hit_too() -> void:
+	_mob(player.position + Vector2(0.0, -100.0), Vector2.ZERO)
+	var hits: Array[float] = []
+	probe.impact.connect(func(_c: Object, _d: Vector2, speed: float) -> void: hits.append(speed))
+	for frame: int in 40:
+		player.position += Vector2(0.0, -4.0)  # 240 px/s at 60 ticks a second, by position
+		await get_tree().physics_frame
+	assert_eq(hits.size(), 1, "one hit")
+	if hits.size() == 1:
+		assert_almost_eq(hits[0], 4.0 * Engine.physics_ticks_per_second / PX_PER_M, 0.2)
+
+
+func test_a_kill_zone_is_felt_with_one_line_on_either_probe() -> void:
+	probe.hit(Vector2.UP, 3.0, HARD)
+	var peak: Vector2 = await _peak_impact(5)
+	assert_gt(peak.length(), 1.0, "the area probe's hit")
+	assert_lt(peak.y, 0.0, "along the direction given")
+	var body: CharacterBody2D = CharacterBody2D.new()
+	body.add_child(_circle(10.0))
+	var body_probe: HapticProbe = HapticProbe.new()
+	body_probe.haptics = door
+	body_probe.report_scale = false
+	body.add_child(body_probe)
+	world.add_child(body)
+	await get_tree().physics_frame
+	body_probe.hit(Vector2.LEFT, 3.0, HARD)
+	peak = await _peak_impact(5)
+	assert_gt(peak.length(), 1.0, "the body probe's hit")
+	assert_lt(peak.x, 0.0)
+	await _peak_impact(60)  # The hit has rung out.
+	body_probe.hit(Vector2.ZERO, 3.0)
+	body_probe.hit(Vector2(NAN, 0.0), 3.0)
+	body_probe.hit(Vector2.UP, NAN)
+	var after: Vector2 = await _peak_impact(5)
+	assert_lt(after.length(), 1e-3, "nothing from a direction or speed of nothing")
