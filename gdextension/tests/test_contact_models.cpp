@@ -32,16 +32,18 @@ void check_vec(const Vec3 &p_actual, const Vec3 &p_expected, double p_tolerance 
 	CHECK(std::abs(p_actual.z - p_expected.z) <= p_tolerance);
 }
 
-ForceModelConfig model(ContactModel p_model, double p_engage = 0.05) {
+ForceModelConfig model(ContactModel p_model, double p_engage = 0.05, double p_band = 0.04) {
 	ForceModelConfig config;
 	config.contact_model = p_model;
 	config.friction_engage = p_engage;
+	config.friction_band = p_band;
 	config.default_contact = ContactMaterial{ 2.0, 1.0 };
 	return config;
 }
 
-MovementForces forces(const Frame &p_frame, const Vec3 &p_input, ContactModel p_model, double p_engage = 0.05) {
-	return compute_forces(p_frame, p_input, model(p_model, p_engage));
+MovementForces forces(const Frame &p_frame, const Vec3 &p_input, ContactModel p_model, double p_engage = 0.05,
+		double p_band = 0.04) {
+	return compute_forces(p_frame, p_input, model(p_model, p_engage, p_band));
 }
 
 Frame frame_of(std::initializer_list<Contact> p_contacts) {
@@ -67,8 +69,8 @@ TEST_CASE("contact models: one pressed contact gives the paper's forces in both"
 		const double angle = degrees * std::numbers::pi / 180.0;
 		const Vec3 n{ std::cos(angle), std::sin(angle), 0.0 };
 		const Vec3 t{ -n.y, n.x, 0.0 };
-		// Pressing deeper than friction_engage: normal force and friction identical.
-		for (const Vec3 &i : { n * -0.6 + t * 0.3, n * -0.06 - t * 0.7, n * -0.3 + Vec3{ 0.0, 0.0, 0.4 } }) {
+		// Pressing deeper than friction_band + friction_engage: normal force and friction identical.
+		for (const Vec3 &i : { n * -0.6 + t * 0.3, n * -0.1 - t * 0.7, n * -0.3 + Vec3{ 0.0, 0.0, 0.4 } }) {
 			CAPTURE(degrees);
 			const Frame frame = frame_of({ contact(n * 3.0, 2.5, 1.5) }); // Any length.
 			const MovementForces per = forces(frame, i, PER);
@@ -76,9 +78,9 @@ TEST_CASE("contact models: one pressed contact gives the paper's forces in both"
 			check_vec(per.normal, paper.normal, 1e-12);
 			check_vec(per.friction, paper.friction, 1e-12);
 		}
-		// Pressing less: the normal force is still the paper's; friction fades in.
+		// Pressing less: the normal force is still the paper's; friction fades in past the band.
 		const Frame frame = frame_of({ contact(n) });
-		const Vec3 light = n * -0.01 + t * 0.5;
+		const Vec3 light = n * -0.05 + t * 0.5;
 		check_vec(forces(frame, light, PER).normal, forces(frame, light, PAPER).normal, 1e-12);
 		check_vec(forces(frame, light, PER).friction, forces(frame, light, PAPER).friction * 0.2, 1e-12);
 	}
@@ -210,11 +212,30 @@ TEST_CASE("contact models: sliding and friction") {
 		check_vec(forces(floor, { 0.5, 0.0, 0.0 }, PER).friction, {});
 		check_vec(forces(floor, { 0.5, 0.0, 0.0 }, PAPER).friction, { -0.5, 0.0, 0.0 });
 	}
-	SUBCASE("friction fades in over friction_engage, then is the paper's") {
-		check_vec(forces(floor, { 0.5, -0.025, 0.0 }, PER).friction, { -0.25, 0.0, 0.0 });
+	SUBCASE("friction fades in over friction_engage past friction_band, then is the paper's") {
+		check_vec(forces(floor, { 0.5, -0.065, 0.0 }, PER).friction, { -0.25, 0.0, 0.0 });
 		check_vec(forces(floor, { 0.5, -0.1, 0.0 }, PER).friction, { -0.5, 0.0, 0.0 });
-		// friction_engage 0: the paper's -b r at any pressing.
-		check_vec(forces(floor, { 0.5, -1e-9, 0.0 }, PER, 0.0).friction, { -0.5, 0.0, 0.0 });
+		// No band and friction_engage 0: the paper's -b r at any pressing.
+		check_vec(forces(floor, { 0.5, -1e-9, 0.0 }, PER, 0.0, 0.0).friction, { -0.5, 0.0, 0.0 });
+	}
+	SUBCASE("a hand trembling a few per cent about a floor's plane never switches friction") {
+		// The hand 0.42 along the floor, drifting +-3 % across its plane: the friction
+		// stays within 0.1 N (it does not change at all), and the normal force is k p.
+		const Frame hard = frame_of({ contact(FLOOR, 2.0, 2.5) });
+		double lowest = 1e9;
+		double highest = -1e9;
+		for (int s = -30; s <= 30; ++s) {
+			const MovementForces f = forces(hard, { 0.42, s * 0.001, 0.0 }, PER);
+			lowest = std::min(lowest, length(f.friction));
+			highest = std::max(highest, length(f.friction));
+			CHECK(f.normal.y == doctest::Approx(2.0 * std::max(0.0, -s * 0.001)).epsilon(1e-9));
+		}
+		CHECK(highest - lowest < 0.1);
+		// Without the band the same drift took friction from 0 to 0.63 N.
+		const MovementForces banned = forces(hard, { 0.42, -0.03, 0.0 }, PER, 0.05, 0.0);
+		CHECK(length(banned.friction) == doctest::Approx(0.63));
+		// Clearly pressed (band plus engage and beyond): the paper's -b r exactly.
+		check_vec(forces(hard, { 0.42, -0.2, 0.0 }, PER).friction, { -1.05, 0.0, 0.0 });
 	}
 	SUBCASE("standing on a floor by a wall") {
 		const Frame frame = frame_of({ contact(FLOOR, 2.0, 1.0), contact(LEFT_WALL, 2.0, 3.0) });

@@ -6,17 +6,22 @@ extends HapticsValue
 ## The movement renderer's contact law.
 
 ## This layout's id on the wire (docs/values.md): a change of any field changes it.
-const SCHEMA_ID: int = 0x01e44f77
+const SCHEMA_ID: int = 0x6c5a3037
 
 ## "g" of W = m g (n.d) d. Not Earth's 9.81: it is the gain from the game's masses to felt weight,
 ## and 9.81 would saturate a 3.3 N device with a 1 kg crate. Unit: N/kg. Range [0.0, 100.0].
 var gravity_n_per_kg: float = 1.0
 ## How several contacts combine.
 var contact_model: HapticMovementFacts.ContactModel = HapticMovementFacts.ContactModel.PER_CONTACT
-## PER_CONTACT only: a contact's friction fades in linearly while the input presses into the
-## contacts by less than this (input units), and is the paper's -b r from there on. Without it
-## friction would jump from 0 to b |r| as the hand crosses a floor's plane. 0 switches friction
-## fully on at any pressing. Range [0.0, 0.5].
+## PER_CONTACT only: a hand's tremor. A contact pressed by less than this (input units) rubs
+## nothing; friction fades in over friction_engage beyond it. A hand held at a floor's plane drifts
+## a few per cent either way, and without the band friction switched on and off with it (0.37 N and
+## back within ±4 %). Range [0.0, 0.2].
+var friction_band: float = 0.04
+## PER_CONTACT only: beyond friction_band, a contact's friction fades in linearly over this much
+## more pressing (input units), and is the paper's -b r from there on. Without it friction would
+## jump from 0 to b |r| at the band's edge. 0 switches friction fully on past the band. Range [0.0,
+## 0.5].
 var friction_engage: float = 0.05
 ## For contacts without a material.
 var default_contact: HapticContactMaterial = HapticContactMaterial.new()
@@ -43,6 +48,7 @@ static func decode(bytes: PackedByteArray) -> HapticForceModelSettings:
 func write_to(writer: HapticsWireWriter) -> void:
 	writer.f64(gravity_n_per_kg)
 	writer.u8(contact_model)
+	writer.f64(friction_band)
 	writer.f64(friction_engage)
 	default_contact.write_to(writer)
 
@@ -52,6 +58,7 @@ static func read_from(reader: HapticsWireReader) -> HapticForceModelSettings:
 	var value: HapticForceModelSettings = HapticForceModelSettings.new()
 	value.gravity_n_per_kg = reader.f64(&"gravity_n_per_kg", 0.0, 100.0)
 	value.contact_model = reader.enum_index(&"contact_model", 2) as HapticMovementFacts.ContactModel
+	value.friction_band = reader.f64(&"friction_band", 0.0, 0.2)
 	value.friction_engage = reader.f64(&"friction_engage", 0.0, 0.5)
 	reader.enter(&"default_contact")
 	value.default_contact = HapticContactMaterial.read_from(reader)

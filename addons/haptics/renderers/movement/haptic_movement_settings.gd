@@ -6,7 +6,7 @@ extends HapticsValue
 ## The movement renderer's settings (HapticsMovement.of(Haptics).get_settings() / apply_settings()).
 
 ## This layout's id on the wire (docs/values.md): a change of any field changes it.
-const SCHEMA_ID: int = 0xe989661e
+const SCHEMA_ID: int = 0x2ae878be
 
 ## The contact law.
 var force_model: HapticForceModelSettings = HapticForceModelSettings.new()

@@ -31,14 +31,18 @@ void per_contact_forces(const Frame &p_frame, const Vec3 &p_input, const ForceMo
 		Vec3 &r_friction) {
 	UnilateralContacts contacts;
 	resolve_unilateral(p_frame, p_input, p_config.default_contact, contacts);
-	double rubbing = 0.0; // sum_j b_j min(1, lambda_j / e)
+	double rubbing = 0.0; // sum_j b_j clamp((lambda_j - w) / e, 0, 1)
+	const double band = p_config.friction_band;
 	const double engage = p_config.friction_engage;
 	for (uint32_t j = 0; j < contacts.count; ++j) {
 		const double push = contacts.pushes[j];
 		if (push > 0.0) {
 			const ContactMaterial &material = contacts.materials[j];
 			r_normal += contacts.normals[j] * (material.stiffness_n * push);
-			rubbing += material.friction_n * (engage > 0.0 ? std::min(1.0, push / engage) : 1.0);
+			const double past_band = push - band;
+			if (past_band > 0.0) {
+				rubbing += material.friction_n * (engage > 0.0 ? std::min(1.0, past_band / engage) : 1.0);
+			}
 		}
 	}
 	if (rubbing > 0.0) {

@@ -38,10 +38,10 @@
 //   a   = proj_C(i), C = { v : v.n_j >= 0 }    free part: the motion the contacts allow
 //   b   = i - a = -sum_j lambda_j n_j         blocked part, lambda_j >= 0 per contact
 //   F_n = sum_j k_j lambda_j n_j              each contact pushes along its own normal
-//   F_f = -(sum_j b_j min(1, lambda_j / e)) a  friction against the sliding
-// with e = ForceModelConfig::friction_engage. Why this way:
+//   F_f = -(sum_j b_j clamp((lambda_j - w) / e, 0, 1)) a  friction against the sliding
+// with w = ForceModelConfig::friction_band, e = friction_engage. Why this way:
 // - One contact pressed (i.n < 0): lambda = -i.n, a = r, so F_n = -k p and, once
-//   lambda >= e, F_f = -b r: exactly the paper's eqs. 3-4.
+//   lambda >= w + e, F_f = -b r: exactly the paper's eqs. 3-4.
 // - Pulling away (i.n_j >= 0 for all j): a = i, nothing is blocked, no force. No pull into
 //   the wall, and no friction for an input that slides along a floor without pressing it
 //   (the paper's -b r would resist walking along a floor in proportion to the input).
@@ -58,9 +58,11 @@
 // - Duplicates (one surface reported twice) are merged: no doubled force, one material.
 // - Friction: a is the sliding the contacts allow, tangential to every active contact
 //   (a.n_j = 0 when lambda_j > 0); pressed into a corner there is no sliding and no
-//   friction, as in the paper's model. Each contact rubs with its own b, faded in over the
-//   first e of its push so that friction grows continuously from zero as the hand crosses
-//   a surface's plane instead of jumping to b |r|; contacts that push nothing add nothing.
+//   friction, as in the paper's model. Each contact rubs with its own b, and only once it
+//   is pressed past the band w: a hand held at a floor's plane trembles a few per cent
+//   either way, and friction must not switch on and off with it. Past w it fades in over e,
+//   growing continuously from zero instead of jumping to b |r|; contacts that push nothing
+//   add nothing.
 // - Continuity: a and b are continuous in i (a projection); a contact that appears without
 //   being pressed changes nothing, and one that is pressed starts from lambda = 0.
 

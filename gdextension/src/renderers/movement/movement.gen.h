@@ -47,7 +47,7 @@ struct EnumInfo<ContactModel> {
 
 // The movement renderer's contact law.
 struct ForceModelConfig {
-	static constexpr uint32_t SCHEMA_ID = 0x01e44f77u;
+	static constexpr uint32_t SCHEMA_ID = 0x6c5a3037u;
 	static constexpr const char *NAME = "HapticForceModelSettings";
 
 	// "g" of W = m g (n.d) d. Not Earth's 9.81: it is the gain from the game's masses to felt
@@ -56,10 +56,15 @@ struct ForceModelConfig {
 	double gravity_n_per_kg{ 1.0 };
 	// How several contacts combine.
 	ContactModel contact_model{ ContactModel::PER_CONTACT };
-	// PER_CONTACT only: a contact's friction fades in linearly while the input presses into the
-	// contacts by less than this (input units), and is the paper's -b r from there on. Without it
-	// friction would jump from 0 to b |r| as the hand crosses a floor's plane. 0 switches friction
-	// fully on at any pressing. Range [0.0, 0.5].
+	// PER_CONTACT only: a hand's tremor. A contact pressed by less than this (input units) rubs
+	// nothing; friction fades in over friction_engage beyond it. A hand held at a floor's plane
+	// drifts a few per cent either way, and without the band friction switched on and off with it
+	// (0.37 N and back within ±4 %). Range [0.0, 0.2].
+	double friction_band{ 0.04 };
+	// PER_CONTACT only: beyond friction_band, a contact's friction fades in linearly over this
+	// much more pressing (input units), and is the paper's -b r from there on. Without it friction
+	// would jump from 0 to b |r| at the band's edge. 0 switches friction fully on past the band.
+	// Range [0.0, 0.5].
 	double friction_engage{ 0.05 };
 	// For contacts without a material.
 	ContactMaterial default_contact{};
@@ -69,6 +74,7 @@ struct ForceModelConfig {
 	static void visit(Self &r_self, Visitor &&r_visitor) {
 		r_visitor(FieldSpec{ .name = "gravity_n_per_kg", .min = 0.0, .max = 100.0 }, r_self.gravity_n_per_kg);
 		r_visitor(FieldSpec{ .name = "contact_model" }, r_self.contact_model);
+		r_visitor(FieldSpec{ .name = "friction_band", .min = 0.0, .max = 0.2 }, r_self.friction_band);
 		r_visitor(FieldSpec{ .name = "friction_engage", .min = 0.0, .max = 0.5 }, r_self.friction_engage);
 		r_visitor(FieldSpec{ .name = "default_contact" }, r_self.default_contact);
 	}
@@ -98,7 +104,7 @@ static_assert(std::is_trivially_copyable_v<SmoothingConfig>);
 // The movement renderer's settings (HapticsMovement.of(Haptics).get_settings() /
 // apply_settings()).
 struct MovementConfig {
-	static constexpr uint32_t SCHEMA_ID = 0xe989661eu;
+	static constexpr uint32_t SCHEMA_ID = 0x2ae878beu;
 	static constexpr const char *NAME = "HapticMovementSettings";
 
 	// The contact law.
