@@ -12,8 +12,12 @@ extends Node
 const MAIN_SCENE: PackedScene = preload("res://game/main/main.tscn")
 
 
+var _pilot: LevelPilot = null
+
+
 func _ready() -> void:
 	var pilot: LevelPilot = LevelPilot.new()
+	_pilot = pilot
 	for arg: String in OS.get_cmdline_user_args():
 		if arg.begins_with("--autopilot-seconds="):
 			pilot.seconds = arg.get_slice("=", 1).to_float()
@@ -25,5 +29,16 @@ func _ready() -> void:
 	main.start_game(pilot)
 
 
-func _on_finished(_reason: String) -> void:
+func _on_finished(reason: String) -> void:
+	if reason == "time":
+		# Without it the run just stopped, and a newcomer took the game for broken.
+		print(
+			(
+				"Autopilot: stopped after %.0f s of play, as asked "
+				+ "(--autopilot-seconds=N plays N seconds, 0 until the goal)."
+			)
+			% _pilot.seconds
+		)
+	else:
+		print("Autopilot: the goal reached; done.")
 	CleanExit.quit(0)
