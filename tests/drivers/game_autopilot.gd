@@ -11,7 +11,6 @@ extends Node
 
 const MAIN_SCENE: PackedScene = preload("res://game/main/main.tscn")
 
-
 var _pilot: LevelPilot = null
 
 
@@ -34,10 +33,12 @@ func _on_finished(reason: String) -> void:
 		# Without it the run just stopped, and a newcomer took the game for broken.
 		print(
 			(
-				"Autopilot: stopped after %.0f s of play, as asked "
-				+ "(--autopilot-seconds=N plays N seconds, 0 until the goal)."
+				(
+					"Autopilot: stopped after %.0f s of play, as asked "
+					+ "(--autopilot-seconds=N plays N seconds, 0 until the goal)."
+				)
+				% _pilot.seconds
 			)
-			% _pilot.seconds
 		)
 	else:
 		print("Autopilot: the goal reached; done.")
