@@ -235,3 +235,16 @@ def test_a_slow_court_load_never_costs_a_player_the_seat(who: str) -> None:
         over = stall["to_wall_s"] + 10.0 - 1.0
         early = [p for p in host.report["extra"].get("peers_left", []) if p["wall_s"] < over]
         assert early == [], (early, stall, logs(peers))
+
+
+@pytest.mark.parametrize("seed", [1, 3, 5])
+def test_four_players_joining_over_a_lossy_reordering_path_print_no_engine_error(seed: int) -> None:
+    # These seeds of the relay at 25 % loss made a client's beat overtake its resent "auth
+    # complete": the host's engine threw the beat away with an error line (4-51 a run).
+    with workspace() as work:
+        peers, _ = run_match(work, 4, Network(150, 20, 0.25), 3, seed=seed)
+        errors = [f"{p.name}: {line}" for p in peers for line in engine_errors(p)]
+        assert not errors, "\n".join(errors[:5]) + "\n" + logs(peers)
+        assert all(p.report.get("exit_code") == 0 for p in peers), logs(peers)
+        joined = [line for line in peers[0].log().splitlines() if " joined (seat " in line]
+        assert len(joined) == 3, logs(peers)

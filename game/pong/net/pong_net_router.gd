@@ -14,6 +14,11 @@ extends Node
 ## count or type of arguments can reach Godot's RPC layer (docs/networking.md, "Raw packets").
 ## A message of a known layout that nobody handles now (a match's message between matches) is
 ## dropped quietly.
+## [br]Until a peer has been heard from, everything sent to it goes on the handshake's channel,
+## reliable: Godot admits a peer once each side has had the other's "auth complete" (that
+## channel, reliable) and throws away, with an engine error, anything the other side sends
+## before its own has arrived. A beat on another channel overtook a resent "complete" on a
+## lossy path that reorders. A peer's first raw packet shows that it has admitted us.
 
 ## Where bad messages are counted, and whether this peer is the server: the session the
 ## router is a child of.
@@ -21,6 +26,8 @@ var session: PongNetSession = null
 
 var _decoders: Dictionary[int, Callable] = PongNetFacts.message_decoders()
 var _handlers: Dictionary[int, Callable] = {}
+# Peers a raw packet has come from (see the class description).
+var _heard: Dictionary[int, bool] = {}
 
 
 func _enter_tree() -> void:
@@ -45,8 +52,24 @@ func forget(listener: Object) -> void:
 
 ## Sends [param message] to every other peer (a client's goes through the server's relay).
 func send_all(message: PongNetMessage) -> void:
-	if _connected():
+	if not _connected():
+		return
+	var unheard: bool = false
+	for peer: int in multiplayer.get_peers():
+		unheard = unheard or not _heard.has(peer)
+	if not unheard:
 		_send(message, MultiplayerPeer.TARGET_PEER_BROADCAST)
+		return
+	for peer: int in multiplayer.get_peers():
+		_send(message, peer)
+
+
+## Forgets what was heard from [param peer] (gone; 0: every peer, the session closed).
+func forget_peer(peer: int) -> void:
+	if peer == 0:
+		_heard.clear()
+	else:
+		_heard.erase(peer)
 
 
 ## Sends [param message] to [param peer] while it is connected (a peer just gone is no longer
@@ -58,6 +81,7 @@ func send_to(peer: int, message: PongNetMessage) -> void:
 
 ## A raw packet from [param sender] ([signal SceneMultiplayer.peer_packet]).
 func receive(sender: int, packet: PackedByteArray) -> void:
+	_heard[sender] = true
 	if packet.size() < 4:
 		_bad(sender, "message", "%d bytes: no layout id" % packet.size())
 		return
@@ -84,6 +108,14 @@ func receive(sender: int, packet: PackedByteArray) -> void:
 
 func _send(message: PongNetMessage, peer: int) -> void:
 	var api: SceneMultiplayer = multiplayer as SceneMultiplayer
+	if peer != MultiplayerPeer.TARGET_PEER_BROADCAST and not _heard.has(peer):
+		api.send_bytes(
+			message.encode(),
+			peer,
+			MultiplayerPeer.TRANSFER_MODE_RELIABLE,
+			PongNetFacts.NET_CHANNEL_HANDSHAKE
+		)
+		return
 	api.send_bytes(message.encode(), peer, message.transfer_mode(), message.channel())
 
 

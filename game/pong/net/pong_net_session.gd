@@ -111,6 +111,7 @@ func close() -> void:
 	is_server = false
 	_heartbeat.clear()
 	_half_open.clear()
+	router.forget_peer(0)
 
 
 func is_open() -> bool:
@@ -359,6 +360,7 @@ func _on_peer_connected(peer: int) -> void:
 
 func _on_peer_disconnected(peer: int) -> void:
 	_heartbeat.forget(peer)
+	router.forget_peer(peer)
 	_half_open.remove(peer)
 	peer_left.emit(peer)
 
