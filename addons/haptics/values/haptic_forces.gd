@@ -8,7 +8,7 @@ extends HapticsValue
 ## their sum, and what the servo made of it. Newtons.
 
 ## This layout's id on the wire (docs/values.md): a change of any field changes it.
-const SCHEMA_ID: int = 0x0a1fa4e6
+const SCHEMA_ID: int = 0x1bab256e
 
 ## The renderer's components in its force enum's order; parts it does not name are zero. Unit: N. At
 ## most MAX_FORCE_PARTS (5).
@@ -24,6 +24,10 @@ var smoothed: Vector2 = Vector2.ZERO
 var impact: Vector2 = Vector2.ZERO
 ## What was written to the device: ramp and clamp applied. Unit: N.
 var total: Vector2 = Vector2.ZERO
+## The total at its largest over the ticks since the game's frame before last (each window at most
+## 0.1 s): read once a frame, no peak of the 1 kHz force is missed (an impact lasts a few
+## milliseconds, a frame about 17). Unit: N.
+var peak: Vector2 = Vector2.ZERO
 
 
 ## This value's bytes (docs/values.md): what the native library and the network take.
@@ -50,6 +54,7 @@ func write_to(writer: HapticsWireWriter) -> void:
 	writer.vec2(smoothed)
 	writer.vec2(impact)
 	writer.vec2(total)
+	writer.vec2(peak)
 
 
 ## Reads the fields, in order, checking each against the schema.
@@ -63,4 +68,5 @@ static func read_from(reader: HapticsWireReader) -> HapticForces:
 	value.smoothed = reader.vec2(&"smoothed")
 	value.impact = reader.vec2(&"impact")
 	value.total = reader.vec2(&"total")
+	value.peak = reader.vec2(&"peak")
 	return value

@@ -19,7 +19,7 @@ inline constexpr size_t MAX_FORCE_PARTS = 5;
 // HapticMovementFacts.MovementForce, HapticConstraintFacts.ConstraintForce, Pong's PongForce),
 // their sum, and what the servo made of it. Newtons.
 struct ForceComponents {
-	static constexpr uint32_t SCHEMA_ID = 0x0a1fa4e6u;
+	static constexpr uint32_t SCHEMA_ID = 0x1bab256eu;
 	static constexpr const char *NAME = "HapticForces";
 
 	// The renderer's components in its force enum's order; parts it does not name are zero. Unit:
@@ -34,6 +34,10 @@ struct ForceComponents {
 	Vec3 impact{};
 	// What was written to the device: ramp and clamp applied. Unit: N.
 	Vec3 total{};
+	// The total at its largest over the ticks since the game's frame before last (each window at
+	// most 0.1 s): read once a frame, no peak of the 1 kHz force is missed (an impact lasts a few
+	// milliseconds, a frame about 17). Unit: N.
+	Vec3 peak{};
 
 	// Every field with its schema limits, in wire order (core/wire/codec.h walks them).
 	template <typename Self, typename Visitor>
@@ -43,6 +47,7 @@ struct ForceComponents {
 		r_visitor(FieldSpec{ .name = "smoothed", .wire = Wire::GAME_VEC2 }, r_self.smoothed);
 		r_visitor(FieldSpec{ .name = "impact", .wire = Wire::GAME_VEC2 }, r_self.impact);
 		r_visitor(FieldSpec{ .name = "total", .wire = Wire::GAME_VEC2 }, r_self.total);
+		r_visitor(FieldSpec{ .name = "peak", .wire = Wire::GAME_VEC2 }, r_self.peak);
 	}
 };
 static_assert(std::is_trivially_copyable_v<ForceComponents>);

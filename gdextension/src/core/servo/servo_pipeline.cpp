@@ -43,6 +43,7 @@ void ServoPipeline::begin_session(HapticDevice *p_device, double p_dt_s) {
 	}
 	safety_.reset();
 	transients_ = TransientBank{};
+	peak_.reset();
 
 	// The latest frame, even one submitted before this session, is picked up by the first
 	// tick as if it had just arrived; the watchdog takes over if no newer one follows.
@@ -114,6 +115,7 @@ void ServoPipeline::pick_up_inputs(bool p_period_changed) {
 	if (new_frame_ || active().heard_from_game()) {
 		have_heartbeat_ = true;
 		last_heartbeat_s_ = time_s_;
+		peak_.next_window();
 	}
 }
 
@@ -151,6 +153,8 @@ DeviceIo ServoPipeline::tick(double p_dt_s) {
 	forces.smoothed = safety.continuous;
 	forces.impact = impact;
 	forces.total = safety.total;
+	peak_.add(safety.total, p_dt_s);
+	forces.peak = peak_.peak();
 
 	const DeviceIo written = device_->write_force(ForceCommand{ safety.total, safety.impact });
 	if (written != DeviceIo::OK) {

@@ -16,6 +16,7 @@
 #include "core/device/device.h"
 #include "core/render/frame.h"
 #include "core/render/renderer.h"
+#include "core/servo/frame_peak.h"
 #include "core/servo/safety.h"
 #include "core/servo/servo_channels.h"
 #include "core/servo/servo_config.h"
@@ -77,6 +78,7 @@ private:
 	RenderResult rendered_; // The active renderer's result of this tick, written in place.
 	TransientBank transients_;
 	SafetyStage safety_;
+	FramePeak peak_;
 
 	uint64_t telemetry_drops_ = 0;
 	uint64_t clamped_ticks_ = 0;
