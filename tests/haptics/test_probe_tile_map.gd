@@ -53,28 +53,9 @@ func before_each() -> void:
 # A TileMap of two layers (the floor on the second), its one tile soft by the TileSet's
 # custom data.
 func _tile_map() -> TileMap:
-	var tile_set: TileSet = TileSet.new()
-	tile_set.tile_size = Vector2i(TILE, TILE)
-	tile_set.add_physics_layer()
-	tile_set.add_custom_data_layer()
-	tile_set.set_custom_data_layer_name(0, HapticMaterial.TILE_LAYER)
-	tile_set.set_custom_data_layer_type(0, TYPE_OBJECT)
-	var source: TileSetAtlasSource = TileSetAtlasSource.new()
-	source.texture_region_size = Vector2i(TILE, TILE)
-	source.texture = ImageTexture.create_from_image(
-		Image.create(TILE, TILE, false, Image.FORMAT_RGBA8)
-	)
-	tile_set.add_source(source, 0)
-	source.create_tile(Vector2i.ZERO)
-	var data: TileData = source.get_tile_data(Vector2i.ZERO, 0)
-	var half: float = TILE * 0.5
-	data.add_collision_polygon(0)
-	data.set_collision_polygon_points(
-		0,
-		0,
-		[Vector2(-half, -half), Vector2(half, -half), Vector2(half, half), Vector2(-half, half)]
-	)
-	data.set_custom_data(HapticMaterial.TILE_LAYER, soft)
+	var tile_set: TileSet = SquareTileSet.make(TILE, 1)
+	var source: TileSetAtlasSource = tile_set.get_source(0) as TileSetAtlasSource
+	source.get_tile_data(Vector2i.ZERO, 0).set_custom_data(HapticMaterial.TILE_LAYER, soft)
 	var tiles: TileMap = TileMap.new()
 	tiles.tile_set = tile_set
 	tiles.add_layer(-1)

@@ -80,29 +80,8 @@ func after_each() -> void:
 
 # Two tiles: (0, 0) plain, (1, 0) with a haptic material in the custom data layer.
 func _tile_layer() -> TileMapLayer:
-	var tile_set: TileSet = TileSet.new()
-	tile_set.tile_size = Vector2i(TILE, TILE)
-	tile_set.add_physics_layer()
-	tile_set.add_custom_data_layer()
-	tile_set.set_custom_data_layer_name(0, HapticMaterial.TILE_LAYER)
-	tile_set.set_custom_data_layer_type(0, TYPE_OBJECT)
-	var source: TileSetAtlasSource = TileSetAtlasSource.new()
-	source.texture_region_size = Vector2i(TILE, TILE)
-	source.texture = ImageTexture.create_from_image(
-		Image.create(TILE * 2, TILE, false, Image.FORMAT_RGBA8)
-	)
-	tile_set.add_source(source, 0)
-	var half: float = TILE * 0.5
-	var square: PackedVector2Array = [
-		Vector2(-half, -half), Vector2(half, -half), Vector2(half, half), Vector2(-half, half)
-	]
-	for atlas: Vector2i in [Vector2i(0, 0), Vector2i(1, 0)]:
-		source.create_tile(atlas)
-		var data: TileData = source.get_tile_data(atlas, 0)
-		data.add_collision_polygon(0)
-		data.set_collision_polygon_points(0, 0, square)
 	var tiles: TileMapLayer = TileMapLayer.new()
-	tiles.tile_set = tile_set
+	tiles.tile_set = SquareTileSet.make(TILE, 2)
 	return tiles
 
 
