@@ -29,3 +29,19 @@ func test_a_connection_bears_a_stall_while_either_end_loads_a_court() -> void:
 	for _frame: int in PongNetHeartbeat.SETTLE_FRAMES:
 		beat.settling()
 	assert_false(beat.bears_stall(7), "settled")
+
+
+func test_this_peers_own_stall_counts_against_no_one() -> void:
+	var beat: PongNetHeartbeat = PongNetHeartbeat.new()
+	var limit: Callable = func(_peer: int) -> float: return 1.0
+	beat.watch(7, 0.0)
+	beat.heard(7, 1.5)
+	beat.frame(1.5)
+	assert_eq(beat.overdue(1.5, limit), [] as Array[Array])
+	beat.frame(6.6)  # The frame after the one that loaded the court: 5.1 s.
+	assert_eq(beat.overdue(6.6, limit), [] as Array[Array], "5.1 s of our own stall")
+	for frame: int in 50:
+		beat.frame(6.6 + 0.02 * frame)  # Ordinary frames excuse nothing.
+	assert_eq(beat.overdue(7.6, limit), [] as Array[Array], "1.0 s of silence since")
+	beat.frame(7.7)
+	assert_eq(beat.overdue(7.7, limit).size(), 1, "then its silence counts as ever: 1.1 s")

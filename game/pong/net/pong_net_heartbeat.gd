@@ -6,9 +6,12 @@ extends RefCounted
 
 ## Frames of stall notices after [method settle].
 const SETTLE_FRAMES: int = 20
+## A longer gap between two frames is this process's own stall ([method frame]), seconds.
+const LOCAL_STALL_S: float = 0.25
 
 var _last_heard: Dictionary[int, float] = {}
 var _next_beat_s: float = -INF
+var _last_frame_s: float = INF
 # Peers that said they are about to stall, until their next beat.
 var _stalling: Dictionary[int, bool] = {}
 # Frames left in which this peer sends stall notices instead of beats (see settle).
@@ -38,6 +41,7 @@ func clear() -> void:
 	_unheard.clear()
 	_next_beat_s = -INF
 	_settle_frames_left = 0
+	_last_frame_s = INF
 
 
 ## A beat of [param peer] came at [param now_s]; ignored for a peer not watched (one that
@@ -106,6 +110,18 @@ func silence_s(peer: int, now_s: float) -> float:
 ## The peers watched.
 func peers() -> Array[int]:
 	return _last_heard.keys()
+
+
+## A frame of this process at [param now_s]. A longer gap than [constant LOCAL_STALL_S] since
+## the last one is this process's own stall (a court loading, a hitch): nothing could be
+## heard meanwhile, so it counts against no peer. (A host whose court took 5 s to load found
+## its client 5 s silent in that very frame.)
+func frame(now_s: float) -> void:
+	var gap: float = now_s - _last_frame_s
+	_last_frame_s = now_s
+	if gap > LOCAL_STALL_S and is_finite(gap):
+		for peer: int in _last_heard.keys():
+			_last_heard[peer] += gap
 
 
 ## The peers silent at [param now_s] for longer than their limit

@@ -14,11 +14,14 @@ extends Node
 ## count or type of arguments can reach Godot's RPC layer (docs/networking.md, "Raw packets").
 ## A message of a known layout that nobody handles now (a match's message between matches) is
 ## dropped quietly.
-## [br]Until a peer has been heard from, everything sent to it goes on the handshake's channel,
-## reliable: Godot admits a peer once each side has had the other's "auth complete" (that
-## channel, reliable) and throws away, with an engine error, anything the other side sends
-## before its own has arrived. A beat on another channel overtook a resent "complete" on a
-## lossy path that reorders. A peer's first raw packet shows that it has admitted us.
+## [br]Until a peer has been heard from, its reliable messages go on the handshake's channel
+## and its unreliable ones are not sent: Godot admits a peer once each side has had the
+## other's "auth complete" (that channel, reliable) and throws away, with an engine error,
+## anything the other side sends before its own has arrived. A beat on another channel
+## overtook a resent "complete" on a lossy path that reorders. Each side greets a peer that
+## connects with one reliable beat behind the "complete"; a peer's first raw packet shows that
+## it has admitted us. (Unreliable messages sent reliably instead queued behind a lost one
+## for ENet's first resend, over a second: the heartbeat took the server for dead.)
 
 ## Where bad messages are counted, and whether this peer is the server: the session the
 ## router is a child of.
@@ -34,6 +37,13 @@ func _enter_tree() -> void:
 	var parent: PongNetSession = get_parent() as PongNetSession
 	if parent != null:
 		session = parent
+	if not multiplayer.peer_connected.is_connected(_greet):
+		multiplayer.peer_connected.connect(_greet)
+
+
+func _exit_tree() -> void:
+	if multiplayer.peer_connected.is_connected(_greet):
+		multiplayer.peer_connected.disconnect(_greet)
 
 
 ## From now on, messages of layout [param schema_id] go to [param handler], a
@@ -108,15 +118,27 @@ func receive(sender: int, packet: PackedByteArray) -> void:
 
 func _send(message: PongNetMessage, peer: int) -> void:
 	var api: SceneMultiplayer = multiplayer as SceneMultiplayer
-	if peer != MultiplayerPeer.TARGET_PEER_BROADCAST and not _heard.has(peer):
+	if peer == MultiplayerPeer.TARGET_PEER_BROADCAST or _heard.has(peer):
+		api.send_bytes(message.encode(), peer, message.transfer_mode(), message.channel())
+	elif message.transfer_mode() == MultiplayerPeer.TRANSFER_MODE_RELIABLE:
 		api.send_bytes(
 			message.encode(),
 			peer,
 			MultiplayerPeer.TRANSFER_MODE_RELIABLE,
 			PongNetFacts.NET_CHANNEL_HANDSHAKE
 		)
-		return
-	api.send_bytes(message.encode(), peer, message.transfer_mode(), message.channel())
+
+
+# A peer just connected: one reliable beat behind Godot's "auth complete", so that it hears
+# from us even if nothing else is sent to it (see the class description).
+func _greet(peer: int) -> void:
+	if _connected() and multiplayer.get_peers().has(peer):
+		(multiplayer as SceneMultiplayer).send_bytes(
+			PongNetBeatMessage.new().encode(),
+			peer,
+			MultiplayerPeer.TRANSFER_MODE_RELIABLE,
+			PongNetFacts.NET_CHANNEL_HANDSHAKE
+		)
 
 
 func _connected() -> bool:

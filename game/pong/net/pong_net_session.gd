@@ -76,8 +76,7 @@ func host(port: int, max_clients: int, bind_ip: String = "*") -> String:
 	return ""
 
 
-## Joins the server at [param address]:[param port]; "" or the error (the outcome comes as
-## [signal connected] or [signal failed]).
+## Joins [param address]:[param port]; "" or the error (then [signal connected] or [signal failed]).
 func join(address: String, port: int) -> String:
 	close()
 	_reset()
@@ -118,8 +117,7 @@ func is_open() -> bool:
 	return _peer != null
 
 
-## Round trip to [param peer] (a server: to each client; a client: only to the server,
-## id 1), seconds; 0 when unknown or ourselves.
+## Round trip to [param peer] (a client knows only the server's), seconds; 0 when unknown.
 func round_trip_s(peer: int) -> float:
 	if _peer == null or peer == multiplayer.get_unique_id():
 		return 0.0
@@ -175,15 +173,12 @@ func announce_stall() -> void:
 		PongNetEnet.brace(_peer, _api(), is_server)
 
 
-func _exit_tree() -> void:
-	close()
-
-
-# Heartbeats each frame they are due; every second the timeouts follow each path's round trip.
+# Beats when due (our own stalls excused); every second, timeouts from each path's round trip.
 func _process(delta: float) -> void:
 	if _peer == null:
 		return
 	_flush_drops()
+	_heartbeat.frame(_now_s())
 	_beat()
 	_retune_in -= delta
 	if _retune_in <= 0.0:
@@ -293,6 +288,10 @@ func _connections(api: SceneMultiplayer) -> Array[Array]:
 		[api.connection_failed, _on_connection_failed],
 		[api.server_disconnected, _on_server_disconnected],
 	]
+
+
+func _exit_tree() -> void:
+	close()
 
 
 func _api() -> SceneMultiplayer:
