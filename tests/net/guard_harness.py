@@ -212,6 +212,9 @@ def check_taken_over(report: dict, seat: int = 1) -> None:
     assert all(t["master"] == 1 for t in later), later
     assert all(c == "computer" for c in report["controllers"]), report["controllers"]
     assert len(later) >= 3, later
+    # The rally goes on: the ball travels the court (a low hit skims the floor at 0.07-0.28 m
+    # while it crosses from one end to the other, so its height alone does not tell).
     moving = [s for s in report["samples"] if s[0] > left[0]["wall_s"] + 1.0]
-    heights = [s[3] for s in moving]
-    assert moving and max(heights) - min(heights) > 0.3, "the ball still flies"
+    travel = max((max(s[i] for s in moving) - min(s[i] for s in moving) for i in (2, 3, 4)),
+                 default=0.0)
+    assert travel > 1.0, f"the ball stopped: it moved {travel:.2f} m at most along any axis"
