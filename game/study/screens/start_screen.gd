@@ -71,6 +71,9 @@ func set_consent_text(text: String, source: String) -> void:
 		if source.begins_with("res://")
 		else "Shown from %s" % source
 	)
+	# The line is cut to the card's width at 1280x720 and below: the whole of it on hover.
+	_consent_hint.tooltip_text = _consent_hint.text
+	_consent_hint.mouse_filter = Control.MOUSE_FILTER_PASS
 
 
 ## Shows the study folder; a long path wraps after a folder separator, never inside a name
