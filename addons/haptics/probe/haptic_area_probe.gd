@@ -83,13 +83,8 @@ func _physics_process(delta: float) -> void:
 ## default). The one line a kill zone or an enemy's handler needs, e.g.
 ## [code]$Player/HapticAreaProbe.hit(Vector2.UP, 3.0)[/code].
 func hit(p_direction: Vector2, p_speed_m_per_s: float, p_material: HapticMaterial = null) -> void:
-	var direction_ok: bool = p_direction.is_finite() and not p_direction.is_zero_approx()
-	if haptics == null or not direction_ok or not p_speed_m_per_s > 0.0:
-		return
 	var material: HapticMaterial = p_material if p_material != null else default_material
-	haptics.push_impact(
-		HapticProbe.impact_event(p_direction.normalized(), p_speed_m_per_s, material)
-	)
+	HapticProbe.play_hit(haptics, p_direction, p_speed_m_per_s, material)
 
 
 func _on_entered(other: Node2D) -> void:

@@ -326,11 +326,18 @@ func _report_impact(collision: Dictionary, material: HapticMaterial) -> void:
 ## contacts do not report (an [Area2D] it entered), e.g.
 ## [code]body.get_node("HapticProbe").hit(Vector2.UP, 3.0)[/code].
 func hit(p_direction: Vector2, p_speed_m_per_s: float, p_material: HapticMaterial = null) -> void:
-	var direction_ok: bool = p_direction.is_finite() and not p_direction.is_zero_approx()
-	if haptics == null or not direction_ok or not p_speed_m_per_s > 0.0:
-		return
 	var material: HapticMaterial = p_material if p_material != null else default_material
-	haptics.push_impact(impact_event(p_direction.normalized(), p_speed_m_per_s, material))
+	play_hit(haptics, p_direction, p_speed_m_per_s, material)
+
+
+## Pushes the hit of [method hit] to [param door]; nothing for a door of null, a zero or
+## non-finite direction, or a speed that is not positive. Both probes' one way to a hit.
+static func play_hit(
+	door: Haptics, p_direction: Vector2, p_speed_m_per_s: float, p_material: HapticMaterial
+) -> void:
+	var direction_ok: bool = p_direction.is_finite() and not p_direction.is_zero_approx()
+	if door != null and direction_ok and p_speed_m_per_s > 0.0:
+		door.push_impact(impact_event(p_direction.normalized(), p_speed_m_per_s, p_material))
 
 
 ## The impact event for a push along [param p_direction] at [param p_speed_m_per_s] ringing
