@@ -16,19 +16,17 @@ func test_a_peer_loading_a_court_sends_stall_notices_for_its_first_frames_not_be
 	assert_false(beat.settling(), "a closed session settles nothing")
 
 
-func test_a_connection_bears_a_stall_while_either_end_loads_a_court() -> void:
+func test_a_peer_loading_a_court_is_waited_for_by_the_heartbeat_and_by_enet() -> void:
 	var beat: PongNetHeartbeat = PongNetHeartbeat.new()
 	beat.watch(7, 0.0)
-	assert_false(beat.bears_stall(7), "nobody loads: the path's own timeout")
+	assert_false(beat.is_stalling(7), "nobody loads: the path's own limit")
 	beat.stalls(7, 1.0)
-	assert_true(beat.bears_stall(7), "the peer said it loads a court")
+	assert_true(beat.is_stalling(7), "the peer said it loads a court")
 	beat.heard(7, 2.0)
-	assert_false(beat.bears_stall(7), "it beat again: loaded")
-	beat.settle()
-	assert_true(beat.bears_stall(7), "this peer loads: its partners wait on it")
-	for _frame: int in PongNetHeartbeat.SETTLE_FRAMES:
-		beat.settling()
-	assert_false(beat.bears_stall(7), "settled")
+	assert_false(beat.is_stalling(7), "it beat again: loaded")
+	var patience_s: float = PongNetProtocol.ENET_PATIENCE_MS / 1000.0
+	assert_gt(patience_s, PongNetProtocol.LOAD_STALL_TIMEOUT_S, "ENet outwaits a court's load")
+	assert_gt(patience_s, PongNetProtocol.SEAT_GRACE_S, "and a kept seat's grace")
 
 
 func test_this_peers_own_stall_counts_against_no_one() -> void:

@@ -46,10 +46,9 @@ func _session(side: Node) -> PongNetSession:
 
 func _handlers_left(session: PongNetSession, api: SceneMultiplayer) -> int:
 	var left: int = 0
-	for pair: Array in session._connections(api):
-		var sig: Signal = pair[0]
-		var handler: Callable = pair[1]
-		left += 1 if sig.is_connected(handler) else 0
+	for connection: Dictionary in session.get_incoming_connections():
+		var sig: Signal = connection["signal"]
+		left += 1 if sig.get_object() == api else 0
 	return left
 
 

@@ -43,6 +43,9 @@ var session: PongNetSession = null
 var play: PongNetPlay = null
 var screen: PongScreen = null
 
+# Players silent for a while: their seats kept, the trouble shown.
+var _absences: PongNetAbsences = null
+
 
 func _init() -> void:
 	# The winner screen pauses the tree; the connection must not stop for it.
@@ -53,13 +56,14 @@ func _init() -> void:
 	play = PongNetPlay.new()
 	play.name = "Play"
 	play.session = session
-	play.owners_changed.connect(seats_changed)
+	play.seats.changed.connect(seats_changed)
 	add_child(play)
 	session.connected.connect(_on_connected)
 	# Deferred: the session closes right after it fails, and the lobby shows it closed.
 	session.failed.connect(status_changed.emit, CONNECT_DEFERRED)
 	session.peer_left.connect(_on_peer_left)
 	session.server_lost.connect(_on_server_lost)
+	_absences = PongNetAbsences.new(self)
 	var router: PongNetRouter = session.router
 	router.handle(PongNetHelloMessage.SCHEMA_ID, _on_hello)
 	router.handle(PongNetReadyMessage.SCHEMA_ID, _on_ready_message)
@@ -70,6 +74,7 @@ func _init() -> void:
 func _process(delta: float) -> void:
 	if play.is_running():
 		play.frame(delta)
+	_absences.frame()
 
 
 ## Hosts a game on [param port]; a player's host takes seat 0. "" or the error.
@@ -200,7 +205,14 @@ func _after_peer_left(peer: int) -> void:
 		return
 	_broadcast_lobby()
 	if play.is_running():
-		play.take_over(peer)
+		play.seats.take_over(peer)
+
+
+## [param text] on the lobby's status line and, in a match, the screen's.
+func say(text: String) -> void:
+	status_changed.emit(text)
+	if screen != null:
+		screen.hud.flash(text)
 
 
 func _on_server_lost() -> void:
@@ -247,58 +259,12 @@ func _begin(owners: PackedInt64Array, health: int) -> void:
 	match_started.emit()
 
 
-# Who drives [param seat] here: our player (device or computer), the computer for the
-# server's seats, or the network.
+# Who drives [param seat] here (see [method PongNetControllers.assign]).
 func _set_controller(seat: int) -> void:
-	var match_node: PongMatch = play.match_node
-	var seat_owner: int = play.authority.owner_of(seat)
 	var me: int = multiplayer.get_unique_id()
-	var current: PongController = match_node.controllers[seat]
-	var seats_here: PackedInt32Array = play.local_seats
-	if seat_owner != me:
-		if match_node.local_player == seat:
-			match_node.local_player = -1  # No device drives a seat the network moves.
-		if not current is PongNetRemotePlayer:
-			var remote: PongNetRemotePlayer = PongNetRemotePlayer.new(seat)
-			remote.intent = current.intent
-			match_node.controllers[seat] = remote
-		if seats_here.has(seat):
-			seats_here.remove_at(seats_here.find(seat))
-		return
-	if not seats_here.has(seat):
-		seats_here.append(seat)
 	var mine: bool = players.has(me) and players[me]["seat"] == seat
-	if mine and local_controller_factory.is_valid():
-		var made: PongController = local_controller_factory.call(seat, match_node)
-		if made != null:
-			match_node.controllers[seat] = made
-			return
-	if current is PongAi and (autopilot or not mine):
-		return
-	if mine and not autopilot:
-		_seat_person(seat, match_node)
-		return
-	var ai: PongAi = PongAi.new(seat, match_node.court, match_node.reach, seat + 1)
-	ai.intent = current.intent
-	match_node.controllers[seat] = ai
-
-
-# This peer's player drives [param seat] as in a match on this machine: the device scheme,
-# the device's own paddle (felt in the servo) when one is usable, else the mouse's kinematic
-# one.
-func _seat_person(seat: int, match_node: PongMatch) -> void:
-	var device: bool = PongServoLink.new().device_usable()
-	match_node.local_player = seat if device else -1
-	var current: PongController = match_node.controllers[seat]
-	if current is PongHumanPlayer and current.player == seat:
-		current.kinematic = not device
-		return
-	var radius: float = Haptics.device.get_workspace_radius()
-	var human: PongHumanPlayer = PongHumanPlayer.new(
-		seat, PongHumanPlayer.Scheme.DEVICE, match_node.court, match_node.reach, radius
-	)
-	human.kinematic = not device
-	match_node.controllers[seat] = human
+	var factory: Callable = local_controller_factory
+	PongNetControllers.assign(play, seat, me, mine, autopilot, factory)
 
 
 func _on_finished(winner: int) -> void:

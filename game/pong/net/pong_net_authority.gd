@@ -33,6 +33,8 @@ var my_id: int = 0
 var history: Array[Dictionary] = []
 ## Refused messages by reason (for the report and the tests).
 var refusals: Dictionary[String, int] = {}
+## Server: the seats the computer plays for an absent player, seat -> that player's peer.
+var kept: Dictionary[int, int] = {}
 
 var _last_seq: int = -1
 var _relinquished: bool = false
@@ -127,14 +129,42 @@ func territory_at(at_epoch: int) -> int:
 	return -1
 
 
-## The peer left: its seats go to the server (a computer player). Returns the seats.
+## The peer left: its seats go to the server (a computer player), and the seats kept for it
+## are given up. Returns the seats it held.
 func release_peer(peer: int) -> PackedInt32Array:
 	var freed: PackedInt32Array = PackedInt32Array()
 	for seat: int in owners.size():
 		if owners[seat] == peer:
 			owners[seat] = SERVER_ID
 			freed.append(seat)
+	for seat: int in kept.keys():
+		if kept[seat] == peer:
+			kept.erase(seat)
 	return freed
+
+
+## Server: the peer is absent: the server plays its seats, kept for it. Returns the seats.
+func stand_in(peer: int) -> PackedInt32Array:
+	var freed: PackedInt32Array = release_peer(peer)
+	for seat: int in freed:
+		kept[seat] = peer
+	return freed
+
+
+## Server: the absent peer is back: the seats kept for it are its own again. Returns them.
+func give_back(peer: int) -> PackedInt32Array:
+	var back: PackedInt32Array = PackedInt32Array()
+	for seat: int in kept.keys():
+		if kept[seat] == peer:
+			kept.erase(seat)
+			owners[seat] = peer
+			back.append(seat)
+	return back
+
+
+## Server: whether [param seat] is kept for the absent [param peer].
+func keeps(seat: int, peer: int) -> bool:
+	return kept.get(seat, 0) == peer
 
 
 ## Counts a refusal under [param key] (default: the reason's text up to a digit) and

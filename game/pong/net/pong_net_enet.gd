@@ -4,18 +4,13 @@ extends RefCounted
 ## heartbeat's limits, and dropping a peer at once.
 
 
-## Sets [param packet_peer]'s timeouts from its measured round trip (see
-## [constant PongNetProtocol.TIMEOUT_RTOS]) and keeps its throttle open.
+## Gives [param packet_peer] ENet's patience ([constant PongNetProtocol.ENET_PATIENCE_MS]:
+## the heartbeat decides who is gone) and keeps its throttle open.
 static func tune(packet_peer: ENetPacketPeer) -> void:
 	if packet_peer == null:
 		return
-	var rtt: float = packet_peer.get_statistic(ENetPacketPeer.PEER_ROUND_TRIP_TIME)
-	var variance: float = packet_peer.get_statistic(ENetPacketPeer.PEER_ROUND_TRIP_TIME_VARIANCE)
-	packet_peer.set_timeout(
-		PongNetProtocol.TIMEOUT_LIMIT,
-		PongNetProtocol.TIMEOUT_MIN_MS,
-		PongNetProtocol.timeout_max_ms(rtt, variance)
-	)
+	var patience: int = PongNetProtocol.ENET_PATIENCE_MS
+	packet_peer.set_timeout(PongNetProtocol.TIMEOUT_LIMIT, patience, patience)
 	packet_peer.throttle_configure(
 		PongNetProtocol.THROTTLE_INTERVAL_MS,
 		PongNetProtocol.THROTTLE_ACCELERATION,
@@ -33,35 +28,9 @@ static func tune_connect(packet_peer: ENetPacketPeer) -> void:
 	)
 
 
-## Gives [param packet_peer] a load stall's patience ([constant
-## PongNetProtocol.LOAD_STALL_TIMEOUT_S]). ENet drops a peer whose reliable packets stay
-## unacknowledged past its timeout, and a stalled frame answers nothing on either side: at
-## the round trip's timeout (under 1 s on a LAN) a player's slow court load cost the seat.
-static func bear_stall(packet_peer: ENetPacketPeer) -> void:
-	if packet_peer != null:
-		var patience_ms: int = roundi(PongNetProtocol.LOAD_STALL_TIMEOUT_S * 1000.0)
-		packet_peer.set_timeout(PongNetProtocol.TIMEOUT_LIMIT, patience_ms, patience_ms)
-
-
-## Sets the timeouts of every connection of [param enet] from its round trip now: a
-## [param server]'s to each client, a client's to the server once connected; a connection
-## for which [param stalls] (Callable(peer) -> bool) holds bears a stall instead.
-static func retune(
-	enet: ENetMultiplayerPeer, api: SceneMultiplayer, server: bool, stalls: Callable
-) -> void:
-	if enet.get_connection_status() != MultiplayerPeer.CONNECTION_CONNECTED or api == null:
-		return
-	for id: int in api.get_peers() if server else PackedInt32Array([1]):
-		if stalls.call(id):
-			bear_stall(enet.get_peer(id))
-		else:
-			tune(enet.get_peer(id))
-
-
-## Before this peer stalls: every connection bears it, and what is queued (the stall
-## notice, the acknowledgements of what came in) leaves now rather than after the stall.
-static func brace(enet: ENetMultiplayerPeer, api: SceneMultiplayer, server: bool) -> void:
-	retune(enet, api, server, func(_peer: int) -> bool: return true)
+## Before this peer stalls: what is queued (the stall notice, the acknowledgements of what
+## came in) leaves now rather than after the stall.
+static func brace(enet: ENetMultiplayerPeer) -> void:
 	if enet.host != null:
 		enet.host.flush()
 

@@ -1,8 +1,10 @@
 class_name PongNetHeartbeat
 extends RefCounted
 ## When this peer last heard each connected peer's heartbeat, and when to send its own
-## ([constant PongNetProtocol.HEARTBEAT_HZ]). Times are seconds of one monotonic clock the
-## caller passes in, so the rules can be tested without waiting.
+## ([constant PongNetProtocol.HEARTBEAT_HZ]). A peer silent past its limit is overdue; one
+## whose seat is kept through the silence stays watched as absent until it is heard again
+## (it is back) or the grace runs out ([method given_up]). Times are seconds of one monotonic
+## clock the caller passes in, so the rules can be tested without waiting.
 
 ## Frames of stall notices after [method settle].
 const SETTLE_FRAMES: int = 20
@@ -18,6 +20,10 @@ var _stalling: Dictionary[int, bool] = {}
 var _settle_frames_left: int = 0
 # Peers watched and not yet heard ([constant PongNetProtocol.FIRST_BEAT_TIMEOUT_S]).
 var _unheard: Dictionary[int, bool] = {}
+# Peers overdue and still watched (their seats kept), by the time they fell silent.
+var _absent: Dictionary[int, float] = {}
+# Absent peers heard again since the last call of returned(), each [peer, silence].
+var _returned: Array[Array] = []
 
 
 ## Starts watching [param peer] (just connected): it counts as heard at [param now_s], and
@@ -32,6 +38,7 @@ func forget(peer: int) -> void:
 	_last_heard.erase(peer)
 	_stalling.erase(peer)
 	_unheard.erase(peer)
+	_absent.erase(peer)
 
 
 ## Forgets everyone (the session closed).
@@ -39,6 +46,8 @@ func clear() -> void:
 	_last_heard.clear()
 	_stalling.clear()
 	_unheard.clear()
+	_absent.clear()
+	_returned.clear()
 	_next_beat_s = -INF
 	_settle_frames_left = 0
 	_last_frame_s = INF
@@ -48,6 +57,9 @@ func clear() -> void:
 ## has not passed the version check, or was dropped).
 func heard(peer: int, now_s: float) -> void:
 	if _last_heard.has(peer):
+		if _absent.has(peer):
+			_returned.append([peer, now_s - _last_heard[peer]])
+			_absent.erase(peer)
 		_last_heard[peer] = maxf(_last_heard[peer], now_s)
 		_stalling.erase(peer)
 		_unheard.erase(peer)
@@ -82,12 +94,6 @@ func settling() -> bool:
 		return false
 	_settle_frames_left -= 1
 	return true
-
-
-## Whether the connection to [param peer] must bear a stall: the peer said it stalls, or
-## this one still settles after its own.
-func bears_stall(peer: int) -> bool:
-	return _stalling.has(peer) or _settle_frames_left > 0
 
 
 ## Whether our beats are due at [param now_s]; when they are, the next ones are scheduled
@@ -126,15 +132,46 @@ func frame(now_s: float) -> void:
 
 ## The peers silent at [param now_s] for longer than their limit
 ## ([param limit_of]: Callable(peer) -> seconds, once a peer has been heard), each
-## [peer, silence, limit]; they are no longer watched.
-func overdue(now_s: float, limit_of: Callable) -> Array[Array]:
+## [peer, silence, limit]. Those heard once for which [param keeps] (Callable(peer) -> bool)
+## holds stay
+## watched as absent (reported once); the others are no longer watched.
+func overdue(now_s: float, limit_of: Callable, keeps: Callable = Callable()) -> Array[Array]:
 	var dead: Array[Array] = []
 	for peer: int in _last_heard.keys():
+		if _absent.has(peer):
+			continue
 		var silence: float = now_s - _last_heard[peer]
 		var limit: float = (
 			PongNetProtocol.FIRST_BEAT_TIMEOUT_S if _unheard.has(peer) else limit_of.call(peer)
 		)
 		if silence > limit:
-			forget(peer)
+			if not _unheard.has(peer) and keeps.is_valid() and keeps.call(peer):
+				_absent[peer] = _last_heard[peer]
+			else:
+				forget(peer)
 			dead.append([peer, silence, limit])
 	return dead
+
+
+## Whether [param peer] is absent: overdue, its seat kept, not heard since.
+func is_absent(peer: int) -> bool:
+	return _absent.has(peer)
+
+
+## The absent peers silent at [param now_s] for longer than [param grace_s], each
+## [peer, silence]; they are no longer watched.
+func given_up(now_s: float, grace_s: float) -> Array[Array]:
+	var gone: Array[Array] = []
+	for peer: int in _absent.keys():
+		var silence: float = now_s - _last_heard[peer]
+		if silence > grace_s:
+			forget(peer)
+			gone.append([peer, silence])
+	return gone
+
+
+## The absent peers heard again since the last call, each [peer, silence it ended].
+func returned() -> Array[Array]:
+	var back: Array[Array] = _returned
+	_returned = []
+	return back

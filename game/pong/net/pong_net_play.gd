@@ -20,8 +20,6 @@ extends Node
 
 ## Health changed on every peer the same way; the match is over on every peer.
 signal finished(winner: int)
-## The server changed who owns which seat (a player left).
-signal owners_changed
 ## This peer, the master, sent a ball state.
 signal ball_state_sent
 ## A state of the master's ball was taken into the jitter buffer, [param age_s] old.
@@ -31,8 +29,6 @@ signal ball_state_late
 ## A transfer was applied ([param transfer]: epoch, kind, territory, master); the ball here
 ## was [param correction_m] from where the transfer put it.
 signal transferred(transfer: Dictionary, correction_m: float)
-## Server: [param peer] left and the computer took its [param seats].
-signal seats_taken_over(peer: int, seats: PackedInt32Array)
 
 ## Servo seconds after a transfer during which the servo's state is not trusted: the
 ## set_ball of the transfer reaches the servo a tick later (no hand-off request, no
@@ -54,6 +50,8 @@ var poses: PongNetPoses = null
 var floor_hurts: PongNetFloorHurts = null
 ## Our ball in the servo, as the network moves it.
 var ball: PongNetBall = PongNetBall.new()
+## Who plays each seat; on the server, the computer standing in.
+var seats: PongNetSeats = PongNetSeats.new()
 ## Seats this peer drives (its player's, or on the server the computer's).
 var local_seats: PackedInt32Array = PackedInt32Array()
 ## Stepped: the servo is stepped here, paced by the wall clock (headless peers).
@@ -81,10 +79,12 @@ var _master_velocity: Vector3 = Vector3.INF
 
 
 ## Starts following [param p_match] (already started) with [param p_authority].
-func begin(p_match: PongMatch, p_authority: PongNetAuthority, seats: PackedInt32Array) -> void:
+func begin(
+	p_match: PongMatch, p_authority: PongNetAuthority, p_local_seats: PackedInt32Array
+) -> void:
 	match_node = p_match
 	authority = p_authority
-	local_seats = seats
+	local_seats = p_local_seats
 	ball.court = match_node.court
 	_predictor = PongPredictor.new(match_node.court)
 	match_node.event_seen.connect(_on_event)
@@ -96,7 +96,7 @@ func begin(p_match: PongMatch, p_authority: PongNetAuthority, seats: PackedInt32
 	router.handle(PongNetBallMessage.SCHEMA_ID, _on_ball)
 	router.handle(PongNetHandOffMessage.SCHEMA_ID, _on_request)
 	router.handle(PongNetTransferMessage.SCHEMA_ID, _on_transfer)
-	router.handle(PongNetOwnersMessage.SCHEMA_ID, _on_owners)
+	seats.begin(router, match_node, authority, take_ball, _reject)
 	weapons = PongNetWeapons.new(router, match_node, authority, _reject, _age_of)
 	poses = PongNetPoses.new(router, match_node, authority, _reject, _age_of)
 	floor_hurts = PongNetFloorHurts.new(router, match_node, authority, _reject)
@@ -113,7 +113,7 @@ func end() -> void:
 	_running = false
 	if weapons != null:
 		weapons.expire_pending(true)
-	for part: Object in [self, weapons, poses, floor_hurts]:
+	for part: Object in [self, weapons, poses, floor_hurts, seats]:
 		session.router.forget(part)
 	weapons = null
 	poses = null
@@ -190,23 +190,12 @@ func _referee(sim_dt: float) -> void:
 	issue(serving, territory, serve.position, serve.velocity, Vector3.ZERO, 0)
 
 
-## Server: [param peer] left. Its seats go to the computer (driven here), and a ball it was
-## master of, or one whose hand-off is pending while the server owns the territory, is taken
-## over at once from the server's own ball, so the ball is never left without a master.
-func take_over(peer: int) -> void:
-	var was_master: bool = authority.master_peer == peer
-	var freed: PackedInt32Array = authority.release_peer(peer)
-	seats_taken_over.emit(peer, freed)
-	var owners: PongNetOwnersMessage = PongNetOwnersMessage.new()
-	owners.owners = authority.owners
-	session.router.send_all(owners)
-	owners_changed.emit()
-	var pending: bool = authority.master_peer == 0 or not authority.is_master()
-	var ours: bool = authority.owner_of(authority.territory) == PongNetAuthority.SERVER_ID
-	if was_master or (pending and ours):
-		var s: PongState = match_node.snapshot
-		var takeover: PongNetFacts.TransferKind = PongNetFacts.TransferKind.TAKEOVER
-		issue(takeover, s.territory, s.ball_position, s.ball_velocity, s.ball_spin, 0)
+## Server: a takeover from the server's own ball; its master is the owner of the ball's
+## territory.
+func take_ball() -> void:
+	var s: PongState = match_node.snapshot
+	var takeover: PongNetFacts.TransferKind = PongNetFacts.TransferKind.TAKEOVER
+	issue(takeover, s.territory, s.ball_position, s.ball_velocity, s.ball_spin, 0)
 
 
 ## Server: issues the next transfer to everyone, itself included.
@@ -342,15 +331,6 @@ func _on_transfer(sender: int, transfer: PongNetTransferMessage) -> void:
 	var serve: bool = transfer.kind == PongNetFacts.TransferKind.SERVE
 	ball.transfer(serve, [target[0], target[1], transfer.spin], age, PongNetBall.clock_s())
 	_settle_until = match_node.snapshot.time_s + SETTLE_S
-
-
-func _on_owners(sender: int, owners: PongNetOwnersMessage) -> void:
-	if owners.owners.size() != authority.owners.size():
-		var seats: Array[int] = [owners.owners.size(), authority.owners.size()]
-		_reject(sender, PongNetOwnersMessage.LABEL, "%d seats, the match has %d" % seats)
-		return
-	authority.owners = owners.owners
-	owners_changed.emit()
 
 
 func _on_event(event: PongEvent) -> void:

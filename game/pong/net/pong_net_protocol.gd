@@ -31,25 +31,13 @@ const COOLDOWN_SHARE: float = 0.75
 ## How far off the floor a received mine may lie, metres.
 const FLOOR_TOLERANCE_M: float = 0.01
 
-## ENet timeouts on every peer (docs/networking.md, "ENet's timeouts and how a dead peer is
-## noticed"). ENet drops a peer when a reliable packet has been sent
-## log2(limit) + 1 times unacknowledged and the minimum has passed, or, checked only when a
-## try times out, when it has waited the hard cap. It doubles the wait after each try, so
-## the fifth try times out 1 + 2 + 4 + 8 + 16 = 31 retransmission timeouts (RTO, a round
-## trip plus four deviations) after the first send, the sixth 63. Five tries on every path:
-## with four (a limit of 8) a 5 %-loss path (each try fails about 10 % of the time, one leg
-## or the other) lost one packet in ten thousand and a lossy match now and then ended live;
-## with five it is one in 100 000. The limit (ENet's default 32) would allow six, so the cap
-## decides: 16 RTOs is past the fourth timeout (15) and before the fifth (31). A cap growing
-## with the round trip in milliseconds instead let a LAN wait for the sixth timeout
-## (docs/pong-networking.md). Game-time values: the cap also bounds how long a frame may
-## stall (the longest frame of a four-peer match on two cores), hence the floor.
+## ENet drops a peer whose reliable packets stay unanswered past its timeout; the heartbeat,
+## which knows who holds a seat, decides instead (a seat is kept through [constant
+## SEAT_GRACE_S] of silence), so ENet's patience outlasts it. ENet's own timeouts, tuned to
+## the round trip (at most 8 s), had dropped live peers after a lossy burst or a stalled
+## frame and kicked players for a one-second Wi-Fi hiccup (docs/pong-networking.md).
 const TIMEOUT_LIMIT: int = 32
-const TIMEOUT_MIN_MS: int = 500
-## The cap in retransmission timeouts, its floor and ceiling, ms.
-const TIMEOUT_RTOS: float = 16.0
-const TIMEOUT_MAX_MS: int = 900
-const TIMEOUT_CEILING_MS: int = 8000
+const ENET_PATIENCE_MS: int = int((SEAT_GRACE_S + HEARTBEAT_TIMEOUT_MAX_S) * 1000.0)
 ## A client connecting to nobody gives up after a few seconds (docs/networking.md, "ENet's
 ## timeouts and how a dead peer is noticed"); a 3 s cap, so that a lossy path does not fail
 ## the handshake.
@@ -92,6 +80,10 @@ const HEARTBEAT_TIMEOUT_MAX_S: float = 3.0
 ## compile the court's shaders, measured at 3.75 s on a loaded two-core machine without a
 ## shader cache; a player there must not lose the match before it starts.
 const LOAD_STALL_TIMEOUT_S: float = 10.0
+## A player silent in a match keeps the seat this long: from the heartbeat's limit on the
+## computer stands in (the rally goes on), and when packets return the player takes the
+## seat back. After it the seat is given up. ENet's patience is past it.
+const SEAT_GRACE_S: float = 15.0
 ## ENet peer slots of a server. ENet keeps a peer for every CONNECT datagram it answers
 ## until the handshake completes or about 30 s pass, and Godot shows no such half-open peer
 ## to a script (ENetConnection.get_peers() lists a peer only once it has connected), so
@@ -151,13 +143,6 @@ static func check_ball(
 ## Why a seat number [param seat] is not one of a match of [param seats], or "".
 static func check_seat(seat: int, seats: int, what: String = "seat") -> String:
 	return "" if seat < seats else "%s %d of a court of %d" % [what, seat, seats]
-
-
-## ENet's hard cap on an unacknowledged packet for a path of round trip [param rtt_ms]
-## with [param variance_ms] mean deviation, as ENet measures them.
-static func timeout_max_ms(rtt_ms: float, variance_ms: float) -> int:
-	var rto_ms: float = maxf(rtt_ms, 0.0) + 4.0 * maxf(variance_ms, 0.0)
-	return clampi(roundi(TIMEOUT_RTOS * rto_ms), TIMEOUT_MAX_MS, TIMEOUT_CEILING_MS)
 
 
 ## Silence after which a peer is taken for dead, seconds, on a path of round trip

@@ -4,13 +4,14 @@ extends Node
 ## own below it. It hosts (a player's machine or the dedicated server; the server is always
 ## peer 1) or joins, checks the protocol version at connect (auth: each side sends its
 ## [constant PongNetProtocol.VERSION]; a mismatch is refused with a message on both sides)
-## and shortens ENet's timeouts; the cap follows each connection's round trip.
+## and leaves dead peers to the heartbeat.
 ## [br]Every message comes and goes through its [member router] as a raw packet. A heartbeat
-## ([PongNetHeartbeat], a [PongNetBeatMessage] each way) drops a peer silent for
-## [method PongNetProtocol.heartbeat_timeout_s] (1 to 3 s) at once, whatever ENet's
-## retransmissions do. The server takes a few unauthenticated connections per address
-## ([PongNetHalfOpen]), tells a client it refuses why ([method refuse]), and disconnects a
-## peer whose bad messages reach the budget ([method misbehaved], [PongNetBudget]).
+## ([member pulse], a [PongNetBeatMessage] each way) drops a peer silent for
+## [method PongNetProtocol.heartbeat_timeout_s] (1 to 3 s), or, when it holds a seat in a
+## match, keeps it absent for [constant PongNetProtocol.SEAT_GRACE_S] first. The server
+## takes a few unauthenticated connections per address ([PongNetHalfOpen]), tells a client
+## it refuses why ([method refuse]), and disconnects a peer whose bad messages reach the
+## budget ([method misbehaved], [PongNetBudget]).
 
 ## Connected and authenticated (a client: to the server).
 signal connected
@@ -22,8 +23,6 @@ signal peer_joined(peer: int)
 signal peer_left(peer: int)
 ## A client lost its server ([member lost_reason] says how).
 signal server_lost
-## A peer went silent and was dropped after [param silence_s] seconds (the heartbeat).
-signal peer_silent(peer: int, silence_s: float)
 ## [param peer] sent a bad message: a [param what] that [param reason] ([method misbehaved]).
 signal bad_message(peer: int, what: String, reason: String)
 
@@ -41,10 +40,10 @@ var lost_reason: String = ""
 var budget: PongNetBudget = PongNetBudget.new()
 ## Every message of this peer comes and goes through it.
 var router: PongNetRouter = null
+## The heartbeat: who is absent, back or lost.
+var pulse: PongNetPulse = null
 
 var _peer: ENetMultiplayerPeer = null
-var _retune_in: float = 0.0
-var _heartbeat: PongNetHeartbeat = PongNetHeartbeat.new()
 var _half_open: PongNetHalfOpen = PongNetHalfOpen.new()
 # The reason the server sent before it drops us (a client), or "".
 var _refusal: String = ""
@@ -56,8 +55,10 @@ func _init() -> void:
 	router = PongNetRouter.new()
 	router.name = "Router"
 	add_child(router)
-	router.handle(PongNetBeatMessage.SCHEMA_ID, _on_beat)
-	router.handle(PongNetStallMessage.SCHEMA_ID, _on_stall)
+	pulse = PongNetPulse.new(router)
+	pulse.name = "Pulse"
+	add_child(pulse)
+	pulse.peer_lost.connect(_lose)
 	router.handle(PongNetRefusalMessage.SCHEMA_ID, _on_refusal)
 
 
@@ -102,13 +103,9 @@ func close() -> void:
 		closing.close()
 	if api != null:
 		api.multiplayer_peer = OfflineMultiplayerPeer.new()
-		for pair: Array in _connections(api) + [[api.peer_packet, router.receive]]:
-			var sig: Signal = pair[0]
-			var handler: Callable = pair[1]
-			if sig.is_connected(handler):
-				sig.disconnect(handler)
+		_wire(api, false)
 	is_server = false
-	_heartbeat.clear()
+	pulse.heartbeat.clear()
 	_half_open.clear()
 	router.forget_peer(0)
 
@@ -167,34 +164,23 @@ func drop_now(peer: int) -> void:
 
 ## Tells the peers this one stalls to load a court (see [method PongNetHeartbeat.settle]).
 func announce_stall() -> void:
-	_heartbeat.settle()
-	if _peer != null and _api() != null:
-		_send_watch(PongNetStallMessage.new())
-		PongNetEnet.brace(_peer, _api(), is_server)
+	pulse.announce_stall(_peer)
 
 
-# Beats when due (our own stalls excused); every second, timeouts from each path's round trip.
-func _process(delta: float) -> void:
+# The heartbeat, then the peers dropped meanwhile.
+func _process(_delta: float) -> void:
 	if _peer == null:
 		return
 	_flush_drops()
-	_heartbeat.frame(_now_s())
-	_beat()
-	_retune_in -= delta
-	if _retune_in <= 0.0:
-		_retune_in = 1.0
-		PongNetEnet.retune(_peer, _api(), is_server, _heartbeat.bears_stall)
+	pulse.frame(_peer)
+	_flush_drops()
 
 
 func _install() -> void:
 	var api: SceneMultiplayer = _api()
 	api.auth_callback = _on_auth
 	api.auth_timeout = PongNetProtocol.AUTH_TIMEOUT_S
-	for pair: Array in _connections(api) + [[api.peer_packet, router.receive]]:
-		var sig: Signal = pair[0]
-		var handler: Callable = pair[1]
-		if not sig.is_connected(handler):
-			sig.connect(handler)
+	_wire(api, true)
 	api.multiplayer_peer = _peer
 
 
@@ -204,47 +190,20 @@ func _reset() -> void:
 	lost_reason = ""
 	_refusal = ""
 	budget = PongNetBudget.new()
-	_heartbeat.clear()
+	pulse.heartbeat.clear()
 	_half_open.clear()
 
 
-static func _now_s() -> float:
-	return Time.get_ticks_usec() / 1e6
-
-
-# Sends our beats when due, then drops every peer silent for longer than its path allows.
-func _beat() -> void:
-	var api: SceneMultiplayer = _api()
-	if api == null or _peer == null:
-		return
-	if _peer.get_connection_status() != MultiplayerPeer.CONNECTION_CONNECTED:
-		return
-	var now: float = _now_s()
-	var peers: PackedInt32Array = api.get_peers()
-	if _heartbeat.settling():
-		_send_watch(PongNetStallMessage.new())
-	elif _heartbeat.due(now):
-		_send_watch(PongNetBeatMessage.new())
-	var limit_of: Callable = func(peer: int) -> float:
-		if _heartbeat.is_stalling(peer):
-			return PongNetProtocol.LOAD_STALL_TIMEOUT_S
-		var path: ENetPacketPeer = _peer.get_peer(peer) if peers.has(peer) else null
-		return PongNetEnet.heartbeat_limit(path)
-	for dead: Array in _heartbeat.overdue(now, limit_of):
-		var peer: int = dead[0]
-		var silence: float = dead[1]
-		var limit: float = dead[2]
-		printerr(
-			"PongNet: peer %d silent for %.2f s (limit %.2f s): dropped" % [peer, silence, limit]
-		)
-		peer_silent.emit(peer, silence)
-		if is_server:
-			drop_now(peer)
-			_flush_drops()
-		else:
-			lost_reason = "no word from the server for %.1f s" % silence
-			_on_server_disconnected()
-			return
+# [param peer] has been silent for [param silence] seconds (the pulse): a server drops it, a
+# client has lost its server.
+func _lose(peer: int, silence: float) -> void:
+	if is_server:
+		drop_now(peer)
+	else:
+		lost_reason = "no word from the server for %.1f s" % silence
+		if silence > PongNetProtocol.SEAT_GRACE_S:
+			lost_reason += ": your seat was given up"
+		_on_server_disconnected()
 
 
 # Drops the peers queued by drop_now (PongNetEnet.drop: Godot forgets them at once).
@@ -257,29 +216,14 @@ func _flush_drops() -> void:
 	PongNetEnet.drop(api, _peer, dropping)
 
 
-# To the peers that watch our heartbeat: a server's clients, a client's server.
-func _send_watch(message: PongNetMessage) -> void:
-	for peer: int in _api().get_peers():
-		if is_server or peer == PongNetAuthority.SERVER_ID:
-			router.send_to(peer, message)
-
-
-func _on_beat(peer: int, _message: PongNetBeatMessage) -> void:
-	_heartbeat.heard(peer, _now_s())
-
-
-func _on_stall(peer: int, _message: PongNetStallMessage) -> void:
-	_heartbeat.stalls(peer, _now_s())
-	PongNetEnet.bear_stall(_peer.get_peer(peer))
-
-
 # Why the server refuses us, before it drops us (only the server sends it: the router).
 func _on_refusal(_sender: int, refusal: PongNetRefusalMessage) -> void:
 	_refusal = refusal.reason
 
 
-func _connections(api: SceneMultiplayer) -> Array[Array]:
-	return [
+# Connects (or, [param on] false, disconnects) our handlers to [param api]'s signals.
+func _wire(api: SceneMultiplayer, on: bool) -> void:
+	var pairs: Array[Array] = [
 		[api.peer_authenticating, _on_authenticating],
 		[api.peer_authentication_failed, _on_authentication_failed],
 		[api.peer_connected, _on_peer_connected],
@@ -287,7 +231,15 @@ func _connections(api: SceneMultiplayer) -> Array[Array]:
 		[api.connected_to_server, _on_connected],
 		[api.connection_failed, _on_connection_failed],
 		[api.server_disconnected, _on_server_disconnected],
+		[api.peer_packet, router.receive],
 	]
+	for pair: Array in pairs:
+		var sig: Signal = pair[0]
+		var handler: Callable = pair[1]
+		if on and not sig.is_connected(handler):
+			sig.connect(handler)
+		elif not on and sig.is_connected(handler):
+			sig.disconnect(handler)
 
 
 func _exit_tree() -> void:
@@ -299,12 +251,12 @@ func _api() -> SceneMultiplayer:
 
 
 func _on_authenticating(peer: int) -> void:
-	# Somebody answered: from here the cap follows the round trip (the short connect cap
-	# dropped lossy handshakes, and a server's pending peers kept ENet's 30 s).
+	# Somebody answered: from here the heartbeat decides (the short connect cap dropped
+	# lossy handshakes).
 	PongNetEnet.tune(_peer.get_peer(peer))
 	if is_server:
 		var address: String = _peer.get_peer(peer).get_remote_address()
-		for oldest: int in _half_open.add(peer, address, _now_s()):
+		for oldest: int in _half_open.add(peer, address, PongNetPulse.now_s()):
 			printerr(
 				"PongNet: dropped unauthenticated peer %d of %s (too many)" % [oldest, address]
 			)
@@ -353,22 +305,20 @@ func _on_peer_connected(peer: int) -> void:
 	if is_server:
 		PongNetEnet.tune(_peer.get_peer(peer))
 		_half_open.remove(peer)
-		_heartbeat.watch(peer, _now_s())
+		pulse.heartbeat.watch(peer, PongNetPulse.now_s())
 	peer_joined.emit(peer)
 
 
 func _on_peer_disconnected(peer: int) -> void:
-	_heartbeat.forget(peer)
+	pulse.heartbeat.forget(peer)
 	router.forget_peer(peer)
 	_half_open.remove(peer)
 	peer_left.emit(peer)
 
 
 func _on_connected() -> void:
-	# From the round trip ENet assumes before it has measured one (500 ms): a fixed LAN cap
-	# here dropped a live server on a slow lossy path before the first retune.
 	PongNetEnet.tune(_peer.get_peer(1))
-	_heartbeat.watch(PongNetAuthority.SERVER_ID, _now_s())
+	pulse.heartbeat.watch(PongNetAuthority.SERVER_ID, PongNetPulse.now_s())
 	connected.emit()
 
 
@@ -383,9 +333,10 @@ func _on_server_disconnected() -> void:
 		close()
 		return
 	if lost_reason.is_empty():
-		# ENet's own timeout, tuned to the path (PongNetEnet.tune), may fire in the same frame
-		# as the heartbeat's: after two beats of silence the server was lost, it did not leave.
-		var silence: float = _heartbeat.silence_s(PongNetAuthority.SERVER_ID, _now_s())
+		# ENet's own timeout may fire in the same frame as the heartbeat's: after two beats of
+		# silence the server was lost, it did not leave.
+		var now: float = PongNetPulse.now_s()
+		var silence: float = pulse.heartbeat.silence_s(PongNetAuthority.SERVER_ID, now)
 		var lost: bool = silence >= 2.0 / PongNetProtocol.HEARTBEAT_HZ
 		lost_reason = "no word from the server for %.1f s" % silence if lost else "the server left"
 	server_lost.emit()

@@ -21,6 +21,9 @@ const KEYBOARD_CONTROLS: String = (
 	+ "  ·  N mine"
 )
 
+## A line the status line shows for as long as it is set (connection trouble), over flashes.
+var notice: String = ""
+
 var _panels: Array[PongPlayerPanel] = []
 var _message_left: float = 0.0
 var _status_top: float = 0.0
@@ -114,7 +117,9 @@ func refresh(match_node: PongMatch, delta: float) -> void:
 		]
 	)
 	_message_left -= delta
-	if _message_left <= 0.0:
+	if not notice.is_empty():
+		_status.text = notice
+	elif _message_left <= 0.0:
 		var serve_in: float = match_node.referee.time_to_serve()
 		var due: bool = match_node.auto_serve and serve_in > 0.0
 		_status.text = "serve in %.1f s" % serve_in if due else ""

@@ -45,7 +45,8 @@ func watch(play: PongNetPlay) -> void:
 	play.ball_state_taken.connect(_on_state_taken)
 	play.ball_state_late.connect(func() -> void: late += 1)
 	play.transferred.connect(_on_transferred)
-	play.seats_taken_over.connect(_on_seats_taken_over)
+	play.seats.taken_over.connect(_on_seats_taken_over)
+	play.seats.given_back.connect(_on_seats_given_back)
 	play.finished.connect(func(p_winner: int) -> void: winner = p_winner)
 
 
@@ -86,6 +87,11 @@ func _on_transferred(entry: Dictionary, correction_m: float) -> void:
 func _on_seats_taken_over(left_peer: int, seats: PackedInt32Array) -> void:
 	var left: Array = extra.get_or_add("peers_left", [])
 	left.append({"peer": left_peer, "seats": Array(seats), "wall_s": now()})
+
+
+func _on_seats_given_back(back_peer: int, seats: PackedInt32Array) -> void:
+	var back: Array = extra.get_or_add("seats_back", [])
+	back.append({"peer": back_peer, "seats": Array(seats), "wall_s": now()})
 
 
 ## The ball in this peer's servo [param snapshot]; [param master]: whether this peer

@@ -1,0 +1,80 @@
+class_name PongNetAbsences
+extends RefCounted
+## Players silent in a match (a Wi-Fi hiccup, a tunnel): the seat stays theirs for
+## [constant PongNetProtocol.SEAT_GRACE_S]. On the server the computer stands in from the
+## heartbeat's limit on and gives the seat back when the player is heard again; the player
+## sees "connection trouble" while it lasts. Only after the grace is the seat given up, and
+## both sides say so.
+
+var _net: PongNet = null
+# A client: when its server fell silent in a match (pulse clock), -1 while it is heard.
+var _trouble_since_s: float = -1.0
+
+
+func _init(net: PongNet) -> void:
+	_net = net
+	var pulse: PongNetPulse = net.session.pulse
+	pulse.keeps_seat = _keeps_seat
+	pulse.peer_absent.connect(_on_peer_absent)
+	pulse.peer_back.connect(_on_peer_back)
+	pulse.peer_lost.connect(_on_peer_lost)
+
+
+## One frame: the trouble on the screen, with how long the seat is kept.
+func frame() -> void:
+	if _net.screen == null:
+		return
+	var notice: String = ""
+	if _trouble_since_s >= 0.0 and _net.play.is_running():
+		var silence: float = PongNetPulse.now_s() - _trouble_since_s
+		var left: float = maxf(PongNetProtocol.SEAT_GRACE_S - silence, 0.0)
+		notice = (
+			"Connection trouble: no word from the server for %.0f s (your seat is kept %.0f s more)"
+			% [silence, left]
+		)
+	_net.screen.hud.notice = notice
+
+
+# A silent peer keeps its seat while a match runs: a client its server, the server a player.
+func _keeps_seat(peer: int) -> bool:
+	if not _net.play.is_running():
+		return false
+	return not _net.session.is_server or _net.play.authority.owners.has(peer)
+
+
+func _on_peer_absent(peer: int, silence_s: float) -> void:
+	if not _net.session.is_server:
+		_trouble_since_s = PongNetPulse.now_s() - silence_s
+		_net.status_changed.emit(
+			"Connection trouble: no word from the server for %.1f s" % silence_s
+		)
+		return
+	var grace: float = PongNetProtocol.SEAT_GRACE_S
+	_net.say(
+		(
+			"%s has connection trouble: the computer plays for them (their seat is kept %.0f s)"
+			% [_name_of(peer), grace]
+		)
+	)
+	_net.play.seats.stand_in(peer)
+
+
+func _on_peer_back(peer: int, silence_s: float) -> void:
+	if not _net.session.is_server:
+		_trouble_since_s = -1.0
+		_net.say("Connection back after %.1f s" % silence_s)
+		return
+	_net.say("%s is back after %.1f s" % [_name_of(peer), silence_s])
+	if _net.play.is_running():
+		_net.play.seats.give_back(peer)
+
+
+func _on_peer_lost(peer: int, silence_s: float) -> void:
+	_trouble_since_s = -1.0
+	if _net.session.is_server and silence_s > PongNetProtocol.SEAT_GRACE_S:
+		_net.say("No word from %s for %.0f s: their seat is given up" % [_name_of(peer), silence_s])
+
+
+func _name_of(peer: int) -> String:
+	var entry: Dictionary = _net.players.get(peer, {})
+	return entry.get("name", "peer %d" % peer)
