@@ -76,6 +76,36 @@ func _open_play() -> PongNetPlay:
 	return _play
 
 
+## The host's play stepped as in a networked match (the master's word on floor bounces, not
+## this servo's), its opening serve made, then the ball handed to the client lying at a spot
+## of the client's territory (returned); the serves sent are left in the router's record.
+## Null (and a failure) without the Pong renderer.
+func _open_with_the_ball_at_the_client(frame_s: float) -> Variant:
+	if _open_play() == null:
+		return null
+	_play.stepped = true
+	_play.ball.stepped = true
+	var match_node: PongMatch = _play.match_node
+	match_node.rules_from_events = false
+	var court: PongCourt = match_node.court
+	var rest: Vector3 = Vector3(0.3, court.ball_radius, -court.half_length * 0.6)
+	if court.territory_at(rest) != 1:
+		rest.z = -rest.z
+	assert_eq(court.territory_at(rest), 1, "a spot in the client's territory")
+	for frame: int in 240:
+		_play.frame(frame_s)
+		if not _router.sent_of(PongNetTransferMessage.SCHEMA_ID).is_empty():
+			break
+	var handoff: PongNetTransferMessage = PongNetTransferMessage.new()
+	handoff.epoch = _play.authority.epoch + 1
+	handoff.kind = PongNetFacts.TransferKind.HANDOFF
+	handoff.territory = 1
+	handoff.master = CLIENT
+	handoff.position = rest
+	_receive(HOST, handoff)
+	return rest
+
+
 ## [param message] reaches this peer from [param sender]: its bytes, through the router.
 func _receive(sender: int, message: PongNetMessage) -> void:
 	_router.receive(sender, message.encode())

@@ -82,11 +82,14 @@ def test_a_killed_dedicated_server_is_noticed_by_its_clients_within_3_s() -> Non
         notices = []
         for client in clients:
             report = client.report
-            assert report["exit_code"] == 0 and report["exit"] == "server lost", logs(peers)
+            # Each player sees the trouble; the seat is kept past the match's end (the grace:
+            # tests/net/test_net_outage.py).
+            assert report["exit_code"] == 0 and report["exit"] in ("time", "server lost"), (
+                logs(peers))
             _no_engine_errors(client)
-            lost = report["extra"]["server_lost"]
-            assert "no word from the server" in lost["why"], lost
-            notices.append(lost["wall_s"] - killed_at[0])
+            trouble = report["extra"].get("absent", [])
+            assert trouble and trouble[0]["peer"] == 1, (trouble, logs(peers))
+            notices.append(trouble[0]["wall_s"] - killed_at[0])
         print(f"dedicated server killed: clients noticed after "
               f"{', '.join(f'{n:.2f}' for n in notices)} s")
         assert all(0.0 < n < NOTICE_BOUND_S for n in notices), notices

@@ -130,3 +130,48 @@ func test_players_who_keep_the_default_name_get_distinct_ones() -> void:
 	var again: String = PongNetNames.unique(long, _net.players)
 	assert_eq(again.length(), PongNetProtocol.MAX_NAME_LENGTH, again)
 	assert_true(again.ends_with(" 2"), again)
+
+
+func test_a_silent_player_is_played_by_the_computer_and_takes_the_seat_back() -> void:
+	var screen: PongScreen = _start(0)
+	if screen == null:
+		return
+	var match_node: PongMatch = screen.match_node
+	var lines: Array[String] = []
+	_net.status_changed.connect(func(text: String) -> void: lines.append(text))
+	var pulse: PongNetPulse = _net.session.pulse
+	assert_true(pulse.keeps_seat.call(OTHER), "Bob holds a seat in a running match")
+	assert_false(pulse.keeps_seat.call(OTHER + 1), "nobody else does")
+	pulse.peer_absent.emit(OTHER, 1.1)
+	assert_true(match_node.controllers[1] is PongAi, "the computer stands in for Bob")
+	assert_eq(_net.play.authority.owners, PackedInt64Array([1, 1]))
+	assert_true(lines[-1].begins_with("Bob has connection trouble"), lines[-1])
+	assert_true(screen.hud.get_status_text().begins_with("Bob has connection trouble"))
+	_step(0.5)
+	pulse.peer_back.emit(OTHER, 4.0)
+	assert_true(match_node.controllers[1] is PongNetRemotePlayer, "Bob plays his seat again")
+	assert_eq(_net.play.authority.owners, PackedInt64Array([1, OTHER]))
+	assert_eq(lines[-1], "Bob is back after 4.0 s")
+
+
+func test_a_player_whose_server_is_silent_sees_the_trouble_until_it_is_back() -> void:
+	var screen: PongScreen = _start(0)
+	if screen == null:
+		return
+	_net.session.is_server = false  # From here on this peer plays as a server's client.
+	var pulse: PongNetPulse = _net.session.pulse
+	assert_true(pulse.keeps_seat.call(PongNetAuthority.SERVER_ID), "in a match: kept")
+	pulse.peer_absent.emit(PongNetAuthority.SERVER_ID, 1.2)
+	await wait_process_frames(2)
+	var shown: String = screen.hud.get_status_text()
+	var trouble: RegEx = RegEx.create_from_string(
+		"^Connection trouble: no word for (\\d+) s\nYour seat is kept (\\d+) s more$"
+	)
+	var found: RegExMatch = trouble.search(shown)
+	assert_not_null(found, shown)
+	if found != null:
+		var total: int = int(found.get_string(1)) + int(found.get_string(2))
+		assert_almost_eq(float(total), PongNetProtocol.SEAT_GRACE_S, 1.0, "the seconds add up")
+	pulse.peer_back.emit(PongNetAuthority.SERVER_ID, 2.5)
+	await wait_process_frames(2)
+	assert_eq(screen.hud.get_status_text(), "Connection back after 2.5 s")

@@ -9,33 +9,12 @@ const LATE_S: float = 0.15
 
 
 func test_the_server_serves_again_when_its_masters_ball_has_stalled() -> void:
-	if _open_play() == null:
+	var rest: Variant = _open_with_the_ball_at_the_client(FRAME_S)
+	if rest == null:
 		return
-	_play.stepped = true
-	_play.ball.stepped = true
-	var match_node: PongMatch = _play.match_node
-	# As in a networked match: the master's word on floor bounces, not this servo's.
-	match_node.rules_from_events = false
-	var court: PongCourt = match_node.court
-	var rest: Vector3 = Vector3(0.3, court.ball_radius, -court.half_length * 0.6)
-	if court.territory_at(rest) != 1:
-		rest.z = -rest.z
-	assert_eq(court.territory_at(rest), 1, "a spot in the client's territory")
-	# The referee's opening serve first.
-	for frame: int in 240:
-		_play.frame(FRAME_S)
-		if not _serves().is_empty():
-			break
 	assert_eq(_serves().size(), 1, "the opening serve")
-	var epoch: int = _play.authority.epoch + 1
-	var handoff: PongNetTransferMessage = PongNetTransferMessage.new()
-	handoff.epoch = epoch
-	handoff.kind = PongNetFacts.TransferKind.HANDOFF
-	handoff.territory = 1
-	handoff.master = CLIENT
-	handoff.position = rest
-	_receive(HOST, handoff)
 	assert_false(_play.authority.is_master(), "the client masters the ball")
+	var epoch: int = _play.authority.epoch
 	_router.sent.clear()
 	var served: bool = false
 	var seconds: float = PongReferee.STALL_SECONDS + 1.0

@@ -63,28 +63,10 @@ func test_the_authority_keeps_an_absent_players_seats_until_it_is_back_or_gone()
 
 
 func test_the_computer_stands_in_and_hands_seat_and_ball_back_on_the_players_return() -> void:
-	if _open_play() == null:
-		return
-	_play.stepped = true
-	_play.ball.stepped = true
-	var match_node: PongMatch = _play.match_node
-	match_node.rules_from_events = false
-	var court: PongCourt = match_node.court
-	var rest: Vector3 = Vector3(0.3, court.ball_radius, -court.half_length * 0.6)
-	if court.territory_at(rest) != 1:
-		rest.z = -rest.z
-	for frame: int in 240:
-		_play.frame(FRAME_S)
-		if not _router.sent_of(PongNetTransferMessage.SCHEMA_ID).is_empty():
-			break
 	# The client masters a ball lying in its territory when its packets stop.
-	var handoff: PongNetTransferMessage = PongNetTransferMessage.new()
-	handoff.epoch = _play.authority.epoch + 1
-	handoff.kind = PongNetFacts.TransferKind.HANDOFF
-	handoff.territory = 1
-	handoff.master = CLIENT
-	handoff.position = rest
-	_receive(HOST, handoff)
+	if _open_with_the_ball_at_the_client(FRAME_S) == null:
+		return
+	var match_node: PongMatch = _play.match_node
 	for frame: int in 6:
 		_play.frame(FRAME_S)
 	assert_eq(match_node.snapshot.territory, 1, "the ball lies in the client's territory")

@@ -208,9 +208,10 @@ func _after_peer_left(peer: int) -> void:
 		play.seats.take_over(peer)
 
 
-## [param text] on the lobby's status line and, in a match, the screen's.
+## [param text] on the screen's status line in a match, and on the lobby's, its lines
+## joined.
 func say(text: String) -> void:
-	status_changed.emit(text)
+	status_changed.emit(text.replace("\n", ": "))
 	if screen != null:
 		screen.hud.flash(text)
 

@@ -7,8 +7,8 @@ extends RefCounted
 ## both sides say so.
 
 var _net: PongNet = null
-# A client: when its server fell silent in a match (pulse clock), -1 while it is heard.
-var _trouble_since_s: float = -1.0
+# A client: when its server fell silent in a match (pulse clock), INF while it is heard.
+var _trouble_since_s: float = INF
 
 
 func _init(net: PongNet) -> void:
@@ -25,11 +25,12 @@ func frame() -> void:
 	if _net.screen == null:
 		return
 	var notice: String = ""
-	if _trouble_since_s >= 0.0 and _net.play.is_running():
+	if is_finite(_trouble_since_s) and _net.play.is_running():
 		var silence: float = PongNetPulse.now_s() - _trouble_since_s
 		var left: float = maxf(PongNetProtocol.SEAT_GRACE_S - silence, 0.0)
+		# Two short lines: the status line sits between the players' panels.
 		notice = (
-			"Connection trouble: no word from the server for %.0f s (your seat is kept %.0f s more)"
+			"Connection trouble: no word for %.0f s\nYour seat is kept %.0f s more"
 			% [silence, left]
 		)
 	_net.screen.hud.notice = notice
@@ -52,7 +53,7 @@ func _on_peer_absent(peer: int, silence_s: float) -> void:
 	var grace: float = PongNetProtocol.SEAT_GRACE_S
 	_net.say(
 		(
-			"%s has connection trouble: the computer plays for them (their seat is kept %.0f s)"
+			"%s has connection trouble\nthe computer plays for them up to %.0f s"
 			% [_name_of(peer), grace]
 		)
 	)
@@ -61,7 +62,7 @@ func _on_peer_absent(peer: int, silence_s: float) -> void:
 
 func _on_peer_back(peer: int, silence_s: float) -> void:
 	if not _net.session.is_server:
-		_trouble_since_s = -1.0
+		_trouble_since_s = INF
 		_net.say("Connection back after %.1f s" % silence_s)
 		return
 	_net.say("%s is back after %.1f s" % [_name_of(peer), silence_s])
@@ -70,9 +71,9 @@ func _on_peer_back(peer: int, silence_s: float) -> void:
 
 
 func _on_peer_lost(peer: int, silence_s: float) -> void:
-	_trouble_since_s = -1.0
+	_trouble_since_s = INF
 	if _net.session.is_server and silence_s > PongNetProtocol.SEAT_GRACE_S:
-		_net.say("No word from %s for %.0f s: their seat is given up" % [_name_of(peer), silence_s])
+		_net.say("No word from %s for %.0f s\ntheir seat is given up" % [_name_of(peer), silence_s])
 
 
 func _name_of(peer: int) -> String:

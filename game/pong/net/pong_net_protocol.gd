@@ -33,11 +33,13 @@ const FLOOR_TOLERANCE_M: float = 0.01
 
 ## ENet drops a peer whose reliable packets stay unanswered past its timeout; the heartbeat,
 ## which knows who holds a seat, decides instead (a seat is kept through [constant
-## SEAT_GRACE_S] of silence), so ENet's patience outlasts it. ENet's own timeouts, tuned to
-## the round trip (at most 8 s), had dropped live peers after a lossy burst or a stalled
-## frame and kicked players for a one-second Wi-Fi hiccup (docs/pong-networking.md).
+## SEAT_GRACE_S] of silence), so ENet's patience outlasts it: ENet tries a packet (its own
+## ping) again with doubling waits, and one sent as a hiccup began may next be tried up to
+## about twice the hiccup later. ENet's own timeouts, tuned to the round trip (at most 8 s),
+## had dropped live peers after a lossy burst or a stalled frame and kicked players for a
+## one-second Wi-Fi hiccup (docs/pong-networking.md).
 const TIMEOUT_LIMIT: int = 32
-const ENET_PATIENCE_MS: int = int((SEAT_GRACE_S + HEARTBEAT_TIMEOUT_MAX_S) * 1000.0)
+const ENET_PATIENCE_MS: int = int(4.0 * SEAT_GRACE_S * 1000.0)
 ## A client connecting to nobody gives up after a few seconds (docs/networking.md, "ENet's
 ## timeouts and how a dead peer is noticed"); a 3 s cap, so that a lossy path does not fail
 ## the handshake.

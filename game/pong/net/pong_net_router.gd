@@ -22,15 +22,33 @@ extends Node
 ## connects with one reliable beat behind the "complete"; a peer's first raw packet shows that
 ## it has admitted us. (Unreliable messages sent reliably instead queued behind a lost one
 ## for ENet's first resend, over a second: the heartbeat took the server for dead.)
+## [br]Once a peer has been heard from, the reliable channel's messages to it go through
+## [member reliable] ([PongNetReliable]) as unreliable datagrams with resends of our own:
+## ENet's reliable channels stalled for as long as a Wi-Fi hiccup had lasted, or longer.
 
 ## Where bad messages are counted, and whether this peer is the server: the session the
 ## router is a child of.
 var session: PongNetSession = null
 
+## The reliable channel's messages to a peer heard from travel through it
+## ([PongNetReliable]: resends that never wait longer than a quarter of a second).
+var reliable: PongNetReliable = PongNetReliable.new()
+
 var _decoders: Dictionary[int, Callable] = PongNetFacts.message_decoders()
 var _handlers: Dictionary[int, Callable] = {}
 # Peers a raw packet has come from (see the class description).
 var _heard: Dictionary[int, bool] = {}
+
+
+func _init() -> void:
+	reliable.transmit = _transmit
+	reliable.deliver = _dispatch
+	reliable.round_trip_of = _round_trip_s
+
+
+func _process(_delta: float) -> void:
+	if _connected():
+		reliable.poll(_now_s())
 
 
 func _enter_tree() -> void:
@@ -64,10 +82,10 @@ func forget(listener: Object) -> void:
 func send_all(message: PongNetMessage) -> void:
 	if not _connected():
 		return
-	var unheard: bool = false
+	var each: bool = message.channel() == PongNetFacts.NET_CHANNEL_RELIABLE
 	for peer: int in multiplayer.get_peers():
-		unheard = unheard or not _heard.has(peer)
-	if not unheard:
+		each = each or not _heard.has(peer)
+	if not each:
 		_send(message, MultiplayerPeer.TARGET_PEER_BROADCAST)
 		return
 	for peer: int in multiplayer.get_peers():
@@ -76,6 +94,7 @@ func send_all(message: PongNetMessage) -> void:
 
 ## Forgets what was heard from [param peer] (gone; 0: every peer, the session closed).
 func forget_peer(peer: int) -> void:
+	reliable.forget(peer)
 	if peer == 0:
 		_heard.clear()
 	else:
@@ -92,6 +111,16 @@ func send_to(peer: int, message: PongNetMessage) -> void:
 ## A raw packet from [param sender] ([signal SceneMultiplayer.peer_packet]).
 func receive(sender: int, packet: PackedByteArray) -> void:
 	_heard[sender] = true
+	if PongNetReliable.owns(packet):
+		var why: String = reliable.receive(sender, packet, _now_s())
+		if not why.is_empty():
+			_bad(sender, "reliable packet", why)
+		return
+	_dispatch(sender, packet)
+
+
+# A message's bytes from [param sender], decoded, checked and handed to its handler.
+func _dispatch(sender: int, packet: PackedByteArray) -> void:
 	if packet.size() < 4:
 		_bad(sender, "message", "%d bytes: no layout id" % packet.size())
 		return
@@ -118,7 +147,10 @@ func receive(sender: int, packet: PackedByteArray) -> void:
 
 func _send(message: PongNetMessage, peer: int) -> void:
 	var api: SceneMultiplayer = multiplayer as SceneMultiplayer
-	if peer == MultiplayerPeer.TARGET_PEER_BROADCAST or _heard.has(peer):
+	var ours: bool = message.channel() == PongNetFacts.NET_CHANNEL_RELIABLE
+	if ours and _heard.has(peer):
+		reliable.send(peer, message.encode(), _now_s())
+	elif peer == MultiplayerPeer.TARGET_PEER_BROADCAST or _heard.has(peer):
 		api.send_bytes(message.encode(), peer, message.transfer_mode(), message.channel())
 	elif message.transfer_mode() == MultiplayerPeer.TRANSFER_MODE_RELIABLE:
 		api.send_bytes(
@@ -139,6 +171,30 @@ func _greet(peer: int) -> void:
 			MultiplayerPeer.TRANSFER_MODE_RELIABLE,
 			PongNetFacts.NET_CHANNEL_HANDSHAKE
 		)
+
+
+# The round trip to [param peer]: another client is two of the server's legs away.
+func _round_trip_s(peer: int) -> float:
+	if session == null:
+		return 0.0
+	if session.is_server or peer == PongNetAuthority.SERVER_ID:
+		return session.round_trip_s(peer)
+	return 2.0 * session.round_trip_s(PongNetAuthority.SERVER_ID)
+
+
+# One of our reliable packets, unreliably, on the reliable channel.
+func _transmit(peer: int, packet: PackedByteArray) -> void:
+	if _connected() and multiplayer.get_peers().has(peer):
+		(multiplayer as SceneMultiplayer).send_bytes(
+			packet,
+			peer,
+			MultiplayerPeer.TRANSFER_MODE_UNRELIABLE,
+			PongNetFacts.NET_CHANNEL_RELIABLE
+		)
+
+
+static func _now_s() -> float:
+	return Time.get_ticks_usec() / 1e6
 
 
 func _connected() -> bool:

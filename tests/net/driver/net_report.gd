@@ -45,6 +45,9 @@ func watch(play: PongNetPlay) -> void:
 	play.ball_state_taken.connect(_on_state_taken)
 	play.ball_state_late.connect(func() -> void: late += 1)
 	play.transferred.connect(_on_transferred)
+	var pulse: PongNetPulse = play.session.pulse
+	pulse.peer_absent.connect(_on_silence.bind("absent"))
+	pulse.peer_back.connect(_on_silence.bind("back"))
 	play.seats.taken_over.connect(_on_seats_taken_over)
 	play.seats.given_back.connect(_on_seats_given_back)
 	play.finished.connect(func(p_winner: int) -> void: winner = p_winner)
@@ -87,6 +90,12 @@ func _on_transferred(entry: Dictionary, correction_m: float) -> void:
 func _on_seats_taken_over(left_peer: int, seats: PackedInt32Array) -> void:
 	var left: Array = extra.get_or_add("peers_left", [])
 	left.append({"peer": left_peer, "seats": Array(seats), "wall_s": now()})
+
+
+# A peer was found absent, or back, after [param silence_s]: under [param what].
+func _on_silence(silent_peer: int, silence_s: float, what: String) -> void:
+	var entries: Array = extra.get_or_add(what, [])
+	entries.append({"peer": silent_peer, "silence_s": silence_s, "wall_s": now()})
 
 
 func _on_seats_given_back(back_peer: int, seats: PackedInt32Array) -> void:
