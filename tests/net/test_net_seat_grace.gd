@@ -87,6 +87,12 @@ func test_the_computer_stands_in_and_hands_seat_and_ball_back_on_the_players_ret
 	_router.sent.clear()
 	_play.seats.give_back(CLIENT)
 	assert_eq(_play.authority.owners, PackedInt64Array([HOST, CLIENT]), "its seat again")
+	# What it sent while cut off arrives now: refused, not counted against it.
+	pose.seat = 0
+	_receive(CLIENT, pose)
+	assert_eq(_refused("pose"), 1, "a pose for the host's seat, sent before it knew")
+	_receive(HOST + 1000, pose)
+	assert_eq(_refused("pose"), 2, "from anyone else it counts")
 	var owners: Array[PongNetMessage] = _router.sent_of(PongNetOwnersMessage.SCHEMA_ID)
 	assert_eq(owners.size(), 1, "everyone is told")
 	var transfers: Array[PongNetMessage] = _router.sent_of(PongNetTransferMessage.SCHEMA_ID)

@@ -248,7 +248,9 @@ func _age_of(sender: int, sent_at: float, reported_leg_ms: int = -1) -> float:
 
 
 func _reject(sender: int, what: String, reason: String) -> void:
-	session.misbehaved(sender, what, reason)
+	# Refused either way; not counted when it may come from a player's time cut off.
+	if not seats.cut_off_lately(sender):
+		session.misbehaved(sender, what, reason)
 
 
 # --- received, their fields checked (PongNetRouter): the checks against this match ---

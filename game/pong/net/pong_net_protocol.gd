@@ -86,6 +86,10 @@ const LOAD_STALL_TIMEOUT_S: float = 10.0
 ## computer stands in (the rally goes on), and when packets return the player takes the
 ## seat back. After it the seat is given up. ENet's patience is past it.
 const SEAT_GRACE_S: float = 15.0
+## Seconds after a silent player is back during which what it sent while cut off (its shots,
+## claims and hand-off requests, about a seat the computer played meanwhile) is refused but
+## not counted against it: they arrive within a second of its return.
+const RETURN_SETTLE_S: float = 2.0
 ## ENet peer slots of a server. ENet keeps a peer for every CONNECT datagram it answers
 ## until the handshake completes or about 30 s pass, and Godot shows no such half-open peer
 ## to a script (ENetConnection.get_peers() lists a peer only once it has connected), so

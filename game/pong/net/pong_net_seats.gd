@@ -17,6 +17,8 @@ var _match: PongMatch = null
 var _authority: PongNetAuthority = null
 var _reject: Callable = Callable()
 var _take_ball: Callable = Callable()
+# Server: when each player that was absent came back (monotonic seconds).
+var _back_at: Dictionary[int, float] = {}
 
 
 ## Follows a match through [param router]: [param take_ball] (Callable()) has the server take
@@ -58,10 +60,20 @@ func give_back(peer: int) -> void:
 	var back: PackedInt32Array = _authority.give_back(peer)
 	if back.is_empty():
 		return
+	_back_at[peer] = PongNetPulse.now_s()
 	given_back.emit(peer, back)
 	_send_owners()
 	if _authority.is_master() and back.has(_match.snapshot.territory):
 		_take_ball.call()
+
+
+## Server: whether what [param peer] sent may be from a time it was cut off: its seat is kept
+## for it, or it came back within [constant PongNetProtocol.RETURN_SETTLE_S].
+func cut_off_lately(peer: int) -> bool:
+	if _authority != null and _authority.kept.values().has(peer):
+		return true
+	var since: float = PongNetPulse.now_s() - _back_at.get(peer, -INF)
+	return since < PongNetProtocol.RETURN_SETTLE_S
 
 
 # The seats [param freed] of [param peer] went to the computer: everyone learns it, and the
