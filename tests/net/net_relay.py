@@ -35,6 +35,8 @@ class Network:
     burst_loss: float = 0.0
     burst_length: float = 0.0
     duplicate: float = 0.0
+    # Everything the server sends is lost for this long from the first client's first datagram.
+    answers_lost_first_ms: float = 0.0
 
     @property
     def label(self) -> str:
@@ -48,12 +50,14 @@ class Network:
             text += f" {self.burst_loss * 100:g}% lost in bursts of {self.burst_length:g}"
         if self.duplicate > 0:
             text += f" {self.duplicate * 100:g}% twice"
+        if self.answers_lost_first_ms > 0:
+            text += f", the first {self.answers_lost_first_ms:g} ms of answers lost"
         return text
 
     @property
     def impaired(self) -> bool:
         return any(x > 0 for x in (self.delay_ms, self.jitter_ms, self.loss, self.burst_loss,
-                                   self.duplicate))
+                                   self.duplicate, self.answers_lost_first_ms))
 
     @property
     def path_s(self) -> float:
@@ -80,6 +84,8 @@ class Network:
                      "--burst-length", str(self.burst_length)]
         if self.duplicate > 0:
             args += ["--duplicate", str(self.duplicate)]
+        if self.answers_lost_first_ms > 0:
+            args += ["--answers-lost-first-ms", str(self.answers_lost_first_ms)]
         return args
 
 

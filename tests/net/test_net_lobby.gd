@@ -26,17 +26,26 @@ func test_hosting_lists_the_host_and_start_waits_for_a_second_player() -> void:
 	assert_eq(net.players.size(), 0)
 
 
-func test_joining_nobody_fails_with_a_message() -> void:
-	set_timeout(20.0)
+func test_joining_nobody_fails_with_a_message_after_trying_again() -> void:
+	var patience: float = PongNetProtocol.JOIN_PATIENCE_S + 10.0
+	set_timeout(patience + 5.0)
 	var net: PongNet = _lobby.net
 	var failures: Array[String] = []
+	var retries: Array[String] = []
 	net.session.failed.connect(func(reason: String) -> void: failures.append(reason))
+	net.session.retrying.connect(
+		func(_attempt: int) -> void: retries.append(_lobby._status.text), CONNECT_DEFERRED
+	)
 	assert_eq(net.join("127.0.0.1", _port()), "")
 	var waited: float = 0.0
-	while failures.is_empty() and waited < 15.0:
+	while failures.is_empty() and waited < patience:
 		await get_tree().create_timer(0.1).timeout
 		waited += 0.1
-	assert_eq(failures.size(), 1, "connection_failed came")
+	assert_gt(retries.size(), 0, "it tried again")
+	if not retries.is_empty():
+		assert_true(retries[0].contains("trying again"), retries[0])
+	assert_gt(waited, PongNetProtocol.JOIN_PATIENCE_S - 1.0, "for the whole patience")
+	assert_eq(failures.size(), 1, "connection_failed came once, at the end")
 	if failures.size() == 1:
 		assert_true(failures[0].contains("no answer from the server"), failures[0])
 	assert_true(_lobby._status.text.contains("no answer"), _lobby._status.text)

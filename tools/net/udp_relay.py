@@ -22,6 +22,9 @@ With --control it reads commands from stdin, one a line, and answers each with o
 line on stdout: `blackhole CLIENT` drops everything on that client's path from now on, both
 ways, datagrams on their way included (a dead path; the other clients play on), `restore
 CLIENT` lets it through again; CLIENT is its number or its HOST:PORT as the relay sees it.
+--answers-lost-first-ms N drops everything the server sends for N ms from the first datagram
+any client sends (a join through a loss burst: the server's first answers never arrive, and a
+client that tries again from a new port meets the same burst).
 
 When it is listening it prints one JSON line, {"listen_port": N}, and flushes; then one line
 {"client": N, "address": "HOST:PORT"} for each new client. It exits on SIGTERM or SIGINT, or
@@ -31,7 +34,8 @@ writes its counts to --stats as JSON: per direction in total ("up", "down") and 
 
     udp_relay.py --server 127.0.0.1:7000 [--listen-port 0] [--delay-ms 50] [--jitter-ms 10]
                  [--jitter-centred] [--in-order] [--loss 0.05] [--burst-loss 0.1
-                 --burst-length 6.5] [--duplicate 0.01] [--control] [--seed 1]
+                 --burst-length 6.5] [--duplicate 0.01] [--answers-lost-first-ms 3000]
+                 [--control] [--seed 1]
                  [--max-seconds 120] [--stats stats.json]
 """
 
@@ -105,8 +109,12 @@ class _Upstream(asyncio.DatagramProtocol):
 class Relay(asyncio.DatagramProtocol):
     """The relay's front socket, where clients send."""
 
-    def __init__(self, p_server: Address, p_model: PathModel, p_seed: int) -> None:
+    def __init__(self, p_server: Address, p_model: PathModel, p_seed: int,
+                 p_answers_lost_s: float = 0.0) -> None:
         self._server = p_server
+        self._answers_lost_s = p_answers_lost_s
+        # The loop time before which the server's answers are dropped (set by the first client).
+        self._answers_from: float | None = None
         self._model = p_model
         self._seed = p_seed
         self._clients: list[Address] = []
@@ -194,6 +202,8 @@ class Relay(asyncio.DatagramProtocol):
             return
         self._pending[p_client] = [p_first]
         self._clients.append(p_client)
+        if self._answers_from is None:
+            self._answers_from = asyncio.get_running_loop().time() + self._answers_lost_s
         say({"client": len(self._clients) - 1, "address": _text(p_client)})
         upstream = _Upstream(lambda data: self._send_later(p_client, "down", data))
         loop = asyncio.get_running_loop()
@@ -211,6 +221,10 @@ class Relay(asyncio.DatagramProtocol):
     def _send_later(self, p_client: Address, p_direction: str, p_data: bytes) -> None:
         lane = self._lane(p_client, p_direction)
         loop = asyncio.get_running_loop()
+        if p_direction == "down" and loop.time() < (self._answers_from or 0.0):
+            lane.stats.received += 1
+            lane.stats.blackholed += 1
+            return
         for sequence, release_s in lane.admit(loop.time()):
             loop.call_at(release_s, self._deliver, p_client, p_direction, p_data, lane, sequence)
 
@@ -272,6 +286,9 @@ def parse_arguments(p_argv: list[str]) -> argparse.Namespace:
                         help="mean burst length in datagrams, >= 1")
     parser.add_argument("--duplicate", type=_probability, default=0.0,
                         help="probability that a datagram goes twice")
+    parser.add_argument("--answers-lost-first-ms", type=_milliseconds, default=0.0,
+                        help="drop the server's datagrams for this long from the first "
+                             "client's first datagram")
     parser.add_argument("--control", action="store_true",
                         help="read blackhole/restore commands from stdin (a pipe)")
     parser.add_argument("--seed", type=int, default=1)
@@ -308,7 +325,7 @@ async def _read_commands(p_relay: Relay, p_reader: asyncio.StreamReader) -> None
 
 
 async def run(p_args: argparse.Namespace) -> Relay:
-    relay = Relay(p_args.server, p_args.model, p_args.seed)
+    relay = Relay(p_args.server, p_args.model, p_args.seed, p_args.answers_lost_first_ms / 1000.0)
     loop = asyncio.get_running_loop()
     transport, _ = await loop.create_datagram_endpoint(
         lambda: relay, local_addr=(p_args.listen_host, p_args.listen_port)

@@ -63,6 +63,10 @@ func _init() -> void:
 	session.failed.connect(status_changed.emit, CONNECT_DEFERRED)
 	session.peer_left.connect(_on_peer_left)
 	session.server_lost.connect(_on_server_lost)
+	session.retrying.connect(
+		func(attempt: int) -> void:
+			status_changed.emit("No answer from the server yet: trying again (try %d)" % attempt)
+	)
 	_absences = PongNetAbsences.new(self)
 	var router: PongNetRouter = session.router
 	router.handle(PongNetHelloMessage.SCHEMA_ID, _on_hello)

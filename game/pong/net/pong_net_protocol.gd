@@ -45,6 +45,9 @@ const ENET_PATIENCE_MS: int = int(4.0 * SEAT_GRACE_S * 1000.0)
 ## the handshake.
 const CONNECT_TIMEOUT_MIN_MS: int = 500
 const CONNECT_TIMEOUT_MAX_MS: int = 3000
+## A join that gets no answer tries again until this many seconds after it began, telling
+## the player: a loss burst hid the server's first answers and a join gave up at 5 s.
+const JOIN_PATIENCE_S: float = 15.0
 ## ENet's packet throttle drops unreliable packets at the sender whenever a round trip
 ## comes in above the last one by twice its variance, which a jittery path does all the
 ## time: the ball and pose streams (a few kB/s) lost much of their states to it with a little

@@ -23,6 +23,9 @@ signal peer_joined(peer: int)
 signal peer_left(peer: int)
 ## A client lost its server ([member lost_reason] says how).
 signal server_lost
+## A join got no answer yet and tries again ([param attempt]: 2, 3...; see
+## [constant PongNetProtocol.JOIN_PATIENCE_S]).
+signal retrying(attempt: int)
 ## [param peer] sent a bad message: a [param what] that [param reason] ([method misbehaved]).
 signal bad_message(peer: int, what: String, reason: String)
 
@@ -49,6 +52,11 @@ var _half_open: PongNetHalfOpen = PongNetHalfOpen.new()
 var _refusal: String = ""
 # Peers to drop at the next frame (see drop_now).
 var _drops: Array[int] = []
+# A join under way: [address, port], until connected (empty otherwise); its tries, and until
+# when (pulse clock) it tries again.
+var _joining: Array = []
+var _join_tries: int = 0
+var _join_until_s: float = 0.0
 
 
 func _init() -> void:
@@ -81,12 +89,20 @@ func host(port: int, max_clients: int, bind_ip: String = "*") -> String:
 func join(address: String, port: int) -> String:
 	close()
 	_reset()
+	_join_tries = 1
+	_join_until_s = PongNetPulse.now_s() + PongNetProtocol.JOIN_PATIENCE_S
+	return _connect(address, port)
+
+
+# One try of a join.
+func _connect(address: String, port: int) -> String:
 	_peer = ENetMultiplayerPeer.new()
 	var error: Error = _peer.create_client(address, port)
 	if error != OK:
 		_peer = null
 		return _fail("cannot connect to %s:%d: %s" % [address, port, error_string(error)])
 	is_server = false
+	_joining = [address, port]
 	PongNetEnet.tune_connect(_peer.get_peer(1))
 	_install()
 	return ""
@@ -105,6 +121,7 @@ func close() -> void:
 		api.multiplayer_peer = OfflineMultiplayerPeer.new()
 		_wire(api, false)
 	is_server = false
+	_joining = []
 	pulse.heartbeat.clear()
 	_half_open.clear()
 	router.forget_peer(0)
@@ -319,14 +336,24 @@ func _on_peer_disconnected(peer: int) -> void:
 
 
 func _on_connected() -> void:
+	_joining = []
 	PongNetEnet.tune(_peer.get_peer(1))
 	pulse.heartbeat.watch(PongNetAuthority.SERVER_ID, PongNetPulse.now_s())
 	connected.emit()
 
 
 func _on_connection_failed() -> void:
-	_fail(last_error if not last_error.is_empty() else "no answer from the server")
+	var target: Array = _joining
 	close()
+	if not target.is_empty() and PongNetPulse.now_s() < _join_until_s:
+		_join_tries += 1
+		printerr("PongNet: no answer from %s:%d yet: try %d" % [target[0], target[1], _join_tries])
+		retrying.emit(_join_tries)
+		# After this signal is over: a new peer is not to be installed from inside the old one's.
+		_connect.call_deferred(target[0], target[1])
+		return
+	var tries: String = " (%d tries in %.0f s)" % [_join_tries, PongNetProtocol.JOIN_PATIENCE_S]
+	_fail(last_error if not last_error.is_empty() else "no answer from the server" + tries)
 
 
 func _on_server_disconnected() -> void:

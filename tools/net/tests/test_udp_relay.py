@@ -172,3 +172,20 @@ def test_control_needs_a_pipe(echo, tmp_path):
     assert result.returncode == 2
     assert "--control needs stdin to be a pipe" in result.stderr
     assert result.stdout == ""
+
+
+def test_the_servers_first_answers_to_each_client_can_be_lost(echo, tmp_path):
+    relay = RelayProcess(echo.port, tmp_path / "stats.json", "--answers-lost-first-ms", "400")
+    try:
+        sock = client(relay.port)
+        sock.send(b"first")
+        assert collect(sock, 1, 0.2) == [], "an answer within the first 400 ms is lost"
+        time.sleep(0.3)
+        sock.send(b"later")
+        assert collect(sock, 1, 2.0) == [b"later"], "after them the path carries again"
+        sock.close()
+    finally:
+        relay.stop()
+    stats = json.loads((tmp_path / "stats.json").read_text())
+    assert stats["up"]["delivered"] == 2, "what the client sends always goes through"
+    assert stats["down"]["blackholed"] == 1 and stats["down"]["delivered"] == 1, stats["down"]
