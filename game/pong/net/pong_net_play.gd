@@ -135,6 +135,8 @@ func frame(delta: float) -> void:
 		_owe_s = minf(_owe_s - chunks * CHUNK_S, CHUNK_S)
 		if chunks > 0:
 			match_node.run_until(func() -> bool: return false, (chunks - 0.5) * CHUNK_S)
+		if not _running:
+			return  # The match ended in those steps (end() let go of the poses and weapons).
 	# After the stepping: the target is carried to now, where the servo is.
 	if not authority.is_master() and ball.follow(PongNetBall.clock_s(), _predictor, _gravity()):
 		# Only the newest state played becomes a command to the servo (whose queue holds 64).
