@@ -76,3 +76,21 @@ func test_a_match_that_ends_inside_a_frames_steps_ends_that_frame_quietly() -> v
 		_play.frame(FRAME_S)
 	assert_false(_play.is_running(), "the match is over")
 	assert_false(ender.ender.is_valid(), "it ended inside a frame's steps")
+
+
+func test_a_ball_state_stamped_with_a_time_its_clock_cannot_have_made_is_refused() -> void:
+	var rest: Variant = _open_with_the_ball_at_the_client(FRAME_S)
+	if rest == null:
+		return
+	var epoch: int = _play.authority.epoch
+	for seq: int in 12:
+		var state: PongNetBallMessage = PongNetBallMessage.new()
+		state.epoch = epoch
+		state.seq = seq + 1
+		# The issue's forgery, well-formed and inside the field's range, as the seventh.
+		state.time_s = 9.9e6 if seq == 6 else Time.get_ticks_usec() / 1e6
+		state.position = rest
+		_receive(CLIENT, state)
+		_play.frame(FRAME_S)
+	assert_eq(_refused("ball state"), 1, "refused and counted")
+	assert_eq(_report.states, 11, "every honest state taken, before and after it")

@@ -184,3 +184,23 @@ func test_quantiles_and_correction_sizes() -> void:
 func _state(seq: int, sent: float, arrival: float) -> PongNetBallBuffer.State:
 	var ball: Array[Vector3] = [Vector3(0, 1, 0), Vector3.ZERO, Vector3.ZERO]
 	return PongNetBallBuffer.State.new(seq, sent, ball, arrival, arrival - sent)
+
+
+func test_a_forged_stamp_never_becomes_the_clock_every_later_state_is_aged_from() -> void:
+	var clock: PongNetClock = PongNetClock.new()
+	clock.base_latency_s = 0.05
+	for i: int in 10:
+		assert_almost_eq(clock.observe(10.0 + i * 0.016, 110.0 + i * 0.016 - 0.05), 0.05, 1e-6)
+	# The issue's attack: a well-formed state stamped 9.9e6 s.
+	assert_eq(clock.observe(10.2, 9.9e6), PongNetClock.REFUSED, "it would arrive before it left")
+	assert_eq(clock.observe(10.2, INF), PongNetClock.REFUSED, "not a time")
+	assert_almost_eq(clock.observe(10.3, 110.25), 0.05, 1e-6, "the honest ones keep their ages")
+	assert_almost_eq(clock.observe(10.4, 110.3), 0.1, 1e-3, "a late one is older by its delay")
+	# A sender whose first stamp was the forgery: the honest run that follows takes over.
+	clock.reset()
+	assert_almost_eq(clock.observe(20.0, 9.9e6), 0.05, 1e-9, "nothing to judge it by yet")
+	var ages: Array[float] = []
+	for i: int in PongNetClock.RUN + 3:
+		ages.append(clock.observe(20.1 + i * 0.016, 120.05 + i * 0.016))
+	assert_almost_eq(ages[-1], 0.05, 1e-6, "aged rightly again after %d states" % PongNetClock.RUN)
+	assert_almost_eq(ages[PongNetClock.RUN - 1], 0.05, 1e-6)

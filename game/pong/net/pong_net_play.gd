@@ -276,6 +276,13 @@ func _on_ball(sender: int, state: PongNetBallMessage) -> void:
 		return
 	var arrival: float = PongNetBall.clock_s()
 	var age: float = _age_of(sender, state.time_s, state.leg_ms)
+	if age == PongNetClock.REFUSED:
+		_reject(
+			sender,
+			PongNetBallMessage.LABEL,
+			"time %.3f s: its clock cannot have made it" % state.time_s
+		)
+		return
 	var buffered: PongNetBallBuffer.State = PongNetBallBuffer.State.new(
 		state.seq, state.time_s, [state.position, state.velocity, state.spin], arrival, age
 	)

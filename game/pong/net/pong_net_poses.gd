@@ -90,5 +90,5 @@ func on_pose(sender: int, pose: PongNetPoseMessage) -> void:
 	if not controller is PongNetRemotePlayer:
 		return
 	var age: float = _age_of.call(sender, pose.time_s, pose.leg_ms)
-	(controller as PongNetRemotePlayer).set_pose(_match.now, minf(age, 0.5), pose)
+	(controller as PongNetRemotePlayer).set_pose(_match.now, clampf(age, 0.0, 0.5), pose)
 	pose_taken.emit(pose.seat)

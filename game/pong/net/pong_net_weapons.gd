@@ -159,7 +159,7 @@ func on_bullet(sender: int, shot: PongNetBulletMessage) -> void:
 		return  # It has already hit its victim.
 	# Where it is by now: it flew on for the message's age.
 	var measured: float = _age_of.call(sender, shot.time_s)
-	var age: float = minf(measured, 0.5)
+	var age: float = clampf(measured, 0.0, 0.5)  # A stamp that does not fit: as if fresh.
 	var at: Vector3 = shot.origin + shot.direction * PongBullets.SPEED_M_PER_S * age
 	if match_node.court.clamp_inside(at, 0.0) == at:
 		match_node.bullet_fired.emit(match_node.bullets.add(shot.seat, shot.id, at, shot.direction))
