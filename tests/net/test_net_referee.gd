@@ -94,3 +94,33 @@ func test_a_ball_state_stamped_with_a_time_its_clock_cannot_have_made_is_refused
 		_play.frame(FRAME_S)
 	assert_eq(_refused("ball state"), 1, "refused and counted")
 	assert_eq(_report.states, 11, "every honest state taken, before and after it")
+
+
+func test_a_stream_of_stale_states_costs_its_sender_and_a_transfers_leftovers_do_not() -> void:
+	var noise: PongNetNoise = PongNetNoise.new(3)
+	var said: Array[bool] = []
+	for t: float in [10.1, 10.2, 10.3, 10.4, 11.0, 11.1]:
+		said.append(noise.note(7, t))
+	assert_eq(said, [false, false, true, false, false, false], "once, at the third in a second")
+	assert_false(noise.note(8, 11.2), "each peer its own")
+	var rest: Variant = _open_with_the_ball_at_the_client(FRAME_S)
+	if rest == null:
+		return
+	var spot: Vector3 = rest
+	var old_epoch: int = _play.authority.epoch - 1
+	for seq: int in 100:  # What an honest old master still had on its way.
+		_receive(CLIENT, _stale_state(old_epoch, seq, spot))
+	assert_eq(_refused("ball state"), 0, "a transfer's leftovers")
+	for seq: int in 600:
+		_receive(CLIENT, _stale_state(old_epoch, 100 + seq, spot))
+	var counted: int = _refused("ball state")
+	assert_true(counted >= 1 and counted <= 2, "a stream of them: %d" % counted)
+
+
+static func _stale_state(epoch: int, seq: int, position: Vector3) -> PongNetBallMessage:
+	var state: PongNetBallMessage = PongNetBallMessage.new()
+	state.epoch = epoch
+	state.seq = seq + 1
+	state.time_s = Time.get_ticks_usec() / 1e6
+	state.position = position
+	return state

@@ -76,6 +76,8 @@ var _running: bool = false
 ## The ball's velocity as its master last streamed it (Vector3.INF: none since the last
 ## transfer): what the server judges a stall by while it follows.
 var _master_velocity: Vector3 = Vector3.INF
+var _stale_states: PongNetNoise = PongNetNoise.new(PongNetProtocol.STALE_STATES_PER_S)
+var _stale_requests: PongNetNoise = PongNetNoise.new(PongNetProtocol.STALE_REQUESTS_PER_S)
 
 
 ## Starts following [param p_match] (already started) with [param p_authority].
@@ -273,6 +275,8 @@ func _on_ball(sender: int, state: PongNetBallMessage) -> void:
 	var in_stream: bool = state.epoch == authority.epoch and sender == authority.master_peer
 	if not reason.is_empty() and not in_stream:
 		ball_state_late.emit()
+		if _stale_states.note(sender, PongNetBall.clock_s()):
+			_reject(sender, PongNetBallMessage.LABEL, "a stream of stale states")
 		return
 	var arrival: float = PongNetBall.clock_s()
 	var age: float = _age_of(sender, state.time_s, state.leg_ms)
@@ -305,7 +309,11 @@ func _on_request(sender: int, request: PongNetHandOffMessage) -> void:
 		_reject(sender, PongNetHandOffMessage.LABEL, reason)
 		return
 	if not authority.check_request(sender, request.epoch, request.territory).is_empty():
-		return  # A race with a newer transfer (the authority counts it), not a bad message.
+		# A race with a newer transfer (the authority counts it), not a bad message; a stream
+		# of them is.
+		if _stale_requests.note(sender, PongNetBall.clock_s()):
+			_reject(sender, PongNetHandOffMessage.LABEL, "a stream of stale hand-off requests")
+		return
 	var handoff: PongNetFacts.TransferKind = PongNetFacts.TransferKind.HANDOFF
 	var age_ms: int = _latency.leg_ms(sender)
 	issue(handoff, request.territory, request.position, request.velocity, request.spin, age_ms)

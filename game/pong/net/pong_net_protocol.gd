@@ -110,6 +110,11 @@ const HALF_OPEN_PER_ADDRESS: int = MAX_SEATS
 ## is logged, the rest are counted, and the server disconnects a peer that reaches this
 ## many. An honest peer sends none (races of the authority are not counted).
 const MISBEHAVIOUR_BUDGET: int = 16
+## Stale but well-formed messages a peer may send in a second before they count as one bad
+## message ([PongNetNoise]): a master streams at most [constant PongNetPlay.MAX_STREAM_HZ]
+## states a second, and an honest hand-off request is one per transfer.
+const STALE_STATES_PER_S: int = 250
+const STALE_REQUESTS_PER_S: int = 20
 
 
 ## Why [param name] is not a player's name (1 to [constant MAX_NAME_LENGTH] characters, not
