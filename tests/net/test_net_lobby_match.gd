@@ -144,14 +144,19 @@ func test_a_silent_player_is_played_by_the_computer_and_takes_the_seat_back() ->
 	assert_false(pulse.keeps_seat.call(OTHER + 1), "nobody else does")
 	pulse.peer_absent.emit(OTHER, 1.1)
 	assert_true(match_node.controllers[1] is PongAi, "the computer stands in for Bob")
+	assert_eq(screen.player_name(1), "Bob (away)", "everyone sees whose seat it is")
 	assert_eq(_net.play.authority.owners, PackedInt64Array([1, 1]))
 	assert_true(lines[-1].begins_with("Bob has connection trouble"), lines[-1])
 	assert_true(screen.hud.get_status_text().begins_with("Bob has connection trouble"))
 	_step(0.5)
 	pulse.peer_back.emit(OTHER, 4.0)
 	assert_true(match_node.controllers[1] is PongNetRemotePlayer, "Bob plays his seat again")
+	assert_eq(screen.player_name(1), "Bob")
 	assert_eq(_net.play.authority.owners, PackedInt64Array([1, OTHER]))
 	assert_eq(lines[-1], "Bob is back after 4.0 s")
+	pulse.peer_absent.emit(OTHER, 1.1)
+	_net.session.peer_left.emit(OTHER)  # Silent past the grace: the seat is given up.
+	assert_eq(screen.player_name(1), "Computer", "the computer's for good")
 
 
 func test_a_player_whose_server_is_silent_sees_the_trouble_until_it_is_back() -> void:

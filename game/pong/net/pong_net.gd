@@ -195,6 +195,7 @@ func _on_peer_left(peer: int) -> void:
 	var name_left: String = entry.get("name", "peer %d" % peer)
 	players.erase(peer)
 	status_changed.emit("%s left" % name_left)
+	seats_changed()
 	if session.is_server:
 		# At the end of the frame: ENet empties every peer whose goodbye came in the same
 		# poll at once but Godot reports them one by one, so a message to all sent from here
@@ -361,6 +362,7 @@ func _on_lobby(sender: int, lobby: PongNetLobbyMessage) -> void:
 	seats = lobby.seats
 	players = table
 	lobby_changed.emit()
+	seats_changed()  # A player's seat given up in a match: its title says so.
 
 
 func _on_start(sender: int, start: PongNetStartMessage) -> void:

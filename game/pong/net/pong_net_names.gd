@@ -17,6 +17,10 @@ static func seat_title(
 ) -> String:
 	var entry: Dictionary = players.get(seat_owner, {})
 	if entry.get("seat", -1) != seat:
+		# A player still in the lobby on this seat is cut off: the computer plays it meanwhile.
+		for peer: int in players:
+			if peer != seat_owner and players[peer].get("seat", -1) == seat:
+				return "%s (away)" % players[peer]["name"]
 		return computer(seat, seats)
 	var title: String = entry["name"]
 	return "%s (you)" % title if seat_owner == me else title
