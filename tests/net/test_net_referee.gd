@@ -76,6 +76,8 @@ func test_a_match_that_ends_inside_a_frames_steps_ends_that_frame_quietly() -> v
 		_play.frame(FRAME_S)
 	assert_false(_play.is_running(), "the match is over")
 	assert_false(ender.ender.is_valid(), "it ended inside a frame's steps")
+	# The winner screen paused the tree; the suites after this one play on.
+	get_tree().paused = false
 
 
 func test_a_ball_state_stamped_with_a_time_its_clock_cannot_have_made_is_refused() -> void:

@@ -14,4 +14,7 @@ func _free_pong() -> void:
 	if _pong != null and is_instance_valid(_pong):
 		_pong.queue_free()
 	_pong = null
+	# A winner screen freed while it showed leaves the tree paused: no later suite's input
+	# would reach its match.
+	get_tree().paused = false
 	await wait_process_frames(2)
