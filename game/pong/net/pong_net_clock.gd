@@ -15,9 +15,11 @@ extends RefCounted
 
 ## [method observe]'s answer for a stamp that does not fit.
 const REFUSED: float = -1.0
-## How much faster than the fastest path seen a state may arrive, seconds: a route that got
-## faster, or the sender's clock running slower, moves the minimum by far less.
-const LEEWAY_S: float = 0.5
+## How much faster than the fastest path seen a state may arrive, seconds. An honest
+## sender's servo clock can jump by seconds (it starts over with a match, or catches up
+## after a stall): with 0.5 s a guest's honest states were refused until it was
+## disconnected (the person suite's network match). A forged stamp is far further off.
+const LEEWAY_S: float = 60.0
 ## States in a row that must all read older than [constant STALE_S] before the minimum is
 ## taken for a bad one.
 const RUN: int = 5
