@@ -162,11 +162,6 @@ func give_back(peer: int) -> PackedInt32Array:
 	return back
 
 
-## Server: whether [param seat] is kept for the absent [param peer].
-func keeps(seat: int, peer: int) -> bool:
-	return kept.get(seat, 0) == peer
-
-
 ## Counts a refusal under [param key] (default: the reason's text up to a digit) and
 ## returns [param reason].
 func _refuse(reason: String, key: String = "") -> String:

@@ -20,8 +20,8 @@ var _stalling: Dictionary[int, bool] = {}
 var _settle_frames_left: int = 0
 # Peers watched and not yet heard ([constant PongNetProtocol.FIRST_BEAT_TIMEOUT_S]).
 var _unheard: Dictionary[int, bool] = {}
-# Peers overdue and still watched (their seats kept), by the time they fell silent.
-var _absent: Dictionary[int, float] = {}
+# Peers overdue and still watched (their seats kept).
+var _absent: Dictionary[int, bool] = {}
 # Absent peers heard again since the last call of returned(), each [peer, silence].
 var _returned: Array[Array] = []
 
@@ -146,7 +146,7 @@ func overdue(now_s: float, limit_of: Callable, keeps: Callable = Callable()) -> 
 		)
 		if silence > limit:
 			if not _unheard.has(peer) and keeps.is_valid() and keeps.call(peer):
-				_absent[peer] = _last_heard[peer]
+				_absent[peer] = true
 			else:
 				forget(peer)
 			dead.append([peer, silence, limit])

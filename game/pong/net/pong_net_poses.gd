@@ -78,10 +78,6 @@ func on_pose(sender: int, pose: PongNetPoseMessage) -> void:
 	# poses can overtake the reliable message that says so.
 	var seat_owner: int = _authority.owner_of(pose.seat)
 	if reason.is_empty() and seat_owner != sender and sender != PongNetAuthority.SERVER_ID:
-		# Its seat kept while it was silent: its poses may come before the beat that gives the
-		# seat back.
-		if _authority.keeps(pose.seat, sender):
-			return
 		reason = "seat %d is not theirs" % pose.seat
 	if not reason.is_empty():
 		_reject.call(sender, PongNetPoseMessage.LABEL, reason)

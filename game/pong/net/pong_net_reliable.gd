@@ -71,13 +71,13 @@ static func owns(packet: PackedByteArray) -> bool:
 	return packet.size() >= 4 and packet.decode_u32(0) in [DATA_ID, ACK_ID]
 
 
-## A packet of ours from [param peer] at [param now_s]: "" when taken, else why it is bad.
-func receive(peer: int, packet: PackedByteArray, now_s: float) -> String:
+## A packet of ours from [param peer]: "" when taken, else why it is bad.
+func receive(peer: int, packet: PackedByteArray) -> String:
 	if packet.size() < 8:
 		return "%d bytes: no sequence number" % packet.size()
 	var number: int = packet.decode_u32(4)
 	if packet.decode_u32(0) == ACK_ID:
-		return _acknowledged(peer, number, now_s) if packet.size() == 8 else "a long ack"
+		return _acknowledged(peer, number) if packet.size() == 8 else "a long ack"
 	var expected: int = _expected.get(peer, 0)
 	_ack_due[peer] = true
 	var why: String = ""
@@ -153,7 +153,7 @@ func _try(peer: int, outgoing: Outgoing, now_s: float) -> void:
 	transmit.call(peer, outgoing.packet)
 
 
-func _acknowledged(peer: int, next: int, _now_s: float) -> String:
+func _acknowledged(peer: int, next: int) -> String:
 	if next > _next.get(peer, 0):
 		return "an ack of packet %d, never sent" % (next - 1)
 	var unacked: Dictionary = _unacked.get(peer, {})

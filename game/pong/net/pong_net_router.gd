@@ -112,7 +112,7 @@ func send_to(peer: int, message: PongNetMessage) -> void:
 func receive(sender: int, packet: PackedByteArray) -> void:
 	_heard[sender] = true
 	if PongNetReliable.owns(packet):
-		var why: String = reliable.receive(sender, packet, _now_s())
+		var why: String = reliable.receive(sender, packet)
 		if not why.is_empty():
 			_bad(sender, "reliable packet", why)
 		return
