@@ -76,6 +76,14 @@ def paddle_follows(person: Person, colour: str, scratch) -> tuple[float, float]:
     return seen[0], seen[1]
 
 
+def bad_lines(session) -> list[str]:
+    """What a game's log says it refused from the other, or a script error: none between two
+    honest players."""
+    return [line for line in session.game.output().splitlines()
+            if "sent a bad" in line or "disconnecting peer" in line
+            or line.startswith("SCRIPT ERROR")]
+
+
 def test_two_people_play_a_network_match(two) -> None:
     host, guest = two
     port = str(free_udp_port())
@@ -117,7 +125,8 @@ def test_two_people_play_a_network_match(two) -> None:
         print(f"person: {s.shots.name}: paddle at x {left:.0f} with the mouse left, "
               f"{right:.0f} with it right")
         assert right - left > 60, (f"{s.shots.name}: the paddle did not follow the mouse "
-                                   f"(x {left:.0f} then {right:.0f}; {s.shots})")
+                                   f"(x {left:.0f} then {right:.0f}; {s.shots}); "
+                                   f"bad messages: {bad_lines(host)[:2]} {bad_lines(guest)[:2]}")
     lap("paddles moved")
     # One match: both windows show the same health (read a few times: a goal may fall
     # between the two looks).
@@ -147,4 +156,9 @@ def test_two_people_play_a_network_match(two) -> None:
     took = second.person.close_and_see_it_exit(second.game)
     print(f"person: {second.shots.name}'s game ended {took:.1f} s after its window closed")
     lap("closed")
+    # Two honest players: neither game took the other's messages for bad ones (a guest's
+    # honest ball states refused until the host disconnected it showed only as a paddle
+    # that stopped following the mouse).
+    for s in (host, guest):
+        assert not bad_lines(s), f"{s.shots.name}: {bad_lines(s)[:3]}"
     print("person: timings " + ", ".join(f"{k} {v:.1f} s" for k, v in timings.items()))
