@@ -318,12 +318,17 @@ TEST_CASE("servo thread: the automatic spin follows what the thread was granted"
 	CHECK(effective_spin_ns(options, root) == ServoOptions::DEFAULT_SPIN_NS);
 	CHECK(effective_spin_ns(options, user) == ServoOptions::UNHELD_SPIN_NS);
 	CHECK(effective_spin_ns(options, normal) == 0);
+	// Only the user's real time without the hold learns its spin (wake_ahead.h), from there.
+	CHECK(learns_spin(options, user));
+	CHECK_FALSE(learns_spin(options, root));
+	CHECK_FALSE(learns_spin(options, normal));
 	options.rate_hz = 4000.0; // Never more than half a period (125 us).
 	CHECK(effective_spin_ns(options, user) == std::min(ServoOptions::UNHELD_SPIN_NS, max_spin_ns(4000.0)));
 	options.rate_hz = 1000.0;
 	options.spin_ns = 120'000; // Asked for: kept, real time or not.
 	CHECK(effective_spin_ns(options, normal) == 120'000);
 	CHECK(effective_spin_ns(options, user) == 120'000);
+	CHECK_FALSE(learns_spin(options, user)); // A spin asked for is not learned.
 	options.scheduling = LoopScheduling::NAIVE_SLEEP;
 	CHECK(effective_spin_ns(options, root) == 0);
 
@@ -339,4 +344,25 @@ TEST_CASE("servo thread: the automatic spin follows what the thread was granted"
 	system.stop();
 	CHECK(stats.scheduler == SchedulerKind::NORMAL);
 	CHECK(stats.spin_s == 0.0);
+}
+
+TEST_CASE("servo thread: with real time but no latency hold it learns its spin, within its bounds") {
+	HapticsSystem system;
+	REQUIRE(system.open_simulated_device());
+	ServoOptions options;
+	options.realtime.priority = 20; // As RealtimeKit grants a user.
+	options.realtime.hold_cpu_latency = false;
+	REQUIRE(system.start(options));
+	wait_for_ticks(system, 10);
+	const ServoStats stats = system.stats();
+	system.stop();
+	if (!stats.realtime) {
+		MESSAGE("no real time here: the learning is tested against a scripted clock (test_wake_ahead.cpp)");
+		CHECK_FALSE(stats.spin_learned);
+		return;
+	}
+	CHECK(stats.spin_learned);
+	CHECK_FALSE(stats.cpu_latency_held);
+	CHECK(stats.spin_s >= static_cast<double>(WAKE_AHEAD_MIN_NS) * 1e-9);
+	CHECK(stats.spin_s <= static_cast<double>(WAKE_AHEAD_MAX_NS) * 1e-9);
 }

@@ -18,8 +18,22 @@ const DEFAULT_RATE_HZ: float = 1000.0
 ## (docs/servo-timing.md).
 const DEFAULT_SPIN_NS: int = 50000
 
-## Busy-wait with real time but no latency hold: an idle core sleeps deeper and wakes later, ns.
+## Busy-wait with real time but no latency hold until the wake-ahead has learned this machine's
+## wake-ups (a full window), ns.
 const UNHELD_SPIN_NS: int = 100000
+
+## The learned wake-ahead's least, ns: what is left for the clock read and the loop's own start.
+const WAKE_AHEAD_MIN_NS: int = 25000
+
+## The learned wake-ahead's most, ns (also never over half a period, nor half of RLIMIT_RTTIME).
+const WAKE_AHEAD_MAX_NS: int = 500000
+
+## The share of recent wake-ups the learned wake-ahead covers: it wakes this quantile of their
+## lateness early.
+const WAKE_AHEAD_QUANTILE: float = 0.999
+
+## Wake-ups the wake-ahead learns from: the most recent this many (4 s at 1 kHz).
+const WAKE_AHEAD_WINDOW: int = 4096
 
 ## Telemetry samples the servo keeps for the game to drain (4 s at 1 kHz).
 const TELEMETRY_QUEUE_CAPACITY: int = 4096

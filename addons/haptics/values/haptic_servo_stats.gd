@@ -7,7 +7,7 @@ extends HapticsValue
 ## may come from neighbouring ticks).
 
 ## This layout's id on the wire (docs/values.md): a change of any field changes it.
-const SCHEMA_ID: int = 0x6e629f84
+const SCHEMA_ID: int = 0x5a926792
 
 ## Whether the servo thread runs.
 var running: bool = false
@@ -29,8 +29,11 @@ var stack_prefaulted_kb: int = 0
 var timer_slack_minimised: bool = false
 ## Asked when SCHED_FIFO was refused.
 var realtime_kit: HapticRealtimeKitGrant = HapticRealtimeKitGrant.new()
-## Busy-wait before each deadline. Unit: s.
+## Busy-wait before each deadline (while it learns: the current one). Unit: s.
 var spin_s: float = 0.0
+## The spin is learned from how late this machine's wake-ups come (real time without the latency
+## hold).
+var spin_learned: bool = false
 ## Share of one CPU the servo thread used since its first tick (sleeping costs nothing; the spin and
 ## the tick do).
 var thread_cpu_fraction: float = 0.0
@@ -129,6 +132,7 @@ func write_to(writer: HapticsWireWriter) -> void:
 	writer.boolean(timer_slack_minimised)
 	realtime_kit.write_to(writer)
 	writer.f64(spin_s)
+	writer.boolean(spin_learned)
 	writer.f64(thread_cpu_fraction)
 	writer.f64(nominal_rate_hz)
 	writer.f64(achieved_rate_hz)
@@ -180,6 +184,7 @@ static func read_from(reader: HapticsWireReader) -> HapticServoStats:
 	value.realtime_kit = HapticRealtimeKitGrant.read_from(reader)
 	reader.leave()
 	value.spin_s = reader.f64(&"spin_s")
+	value.spin_learned = reader.boolean(&"spin_learned")
 	value.thread_cpu_fraction = reader.f64(&"thread_cpu_fraction")
 	value.nominal_rate_hz = reader.f64(&"nominal_rate_hz")
 	value.achieved_rate_hz = reader.f64(&"achieved_rate_hz")

@@ -301,6 +301,7 @@ ServoStats HapticsSystem::stats() const {
 	stats.frames_received = output.frames_received;
 	stats.frames_rejected = impl_->frames_rejected;
 	stats.frame_age_s = output.frame_age_s;
+		stats.spin_learned = impl_->loop.spin_learned();
 	stats.watchdog_tripped = (output.flags & TELEMETRY_FLAG_WATCHDOG) != 0;
 	stats.transient_drops = output.bank_drops + impl_->channels.queue_drops.load(std::memory_order_relaxed);
 	stats.telemetry_drops = output.telemetry_drops;

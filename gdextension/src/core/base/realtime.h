@@ -42,8 +42,9 @@ void sleep_until_ns(int64_t p_deadline_ns);
 
 // Sleeps until p_spin_ns before p_deadline_ns, then busy-waits (a pause instruction per
 // spin) until the deadline: the wake-up's lateness is absorbed by the spin, at the cost of up
-// to p_spin_ns of CPU per call. p_spin_ns <= 0 is sleep_until_ns.
-void sleep_then_spin_until_ns(int64_t p_deadline_ns, int64_t p_spin_ns);
+// to p_spin_ns of CPU per call. p_spin_ns <= 0 is sleep_until_ns. Returns when the sleep
+// ended (before the spin): how late the wake-up itself was, for the wake-ahead that learns it.
+int64_t sleep_then_spin_until_ns(int64_t p_deadline_ns, int64_t p_spin_ns);
 
 // Relative sleep, for the naive baseline loop of the benchmark only.
 void sleep_for_ns(int64_t p_duration_ns);

@@ -38,15 +38,17 @@ __attribute__((noinline)) void touch_stack(size_t p_bytes) {
 
 } // namespace
 
-void sleep_then_spin_until_ns(int64_t p_deadline_ns, int64_t p_spin_ns) {
+int64_t sleep_then_spin_until_ns(int64_t p_deadline_ns, int64_t p_spin_ns) {
 	if (p_spin_ns <= 0) {
 		sleep_until_ns(p_deadline_ns);
-		return;
+		return monotonic_now_ns();
 	}
 	sleep_until_ns(p_deadline_ns - p_spin_ns);
-	while (monotonic_now_ns() < p_deadline_ns) {
+	const int64_t woke_ns = monotonic_now_ns();
+	for (int64_t now_ns = woke_ns; now_ns < p_deadline_ns; now_ns = monotonic_now_ns()) {
 		cpu_relax();
 	}
+	return woke_ns;
 }
 
 int32_t prefault_stack_above(uintptr_t p_stack_low, int32_t p_kb) {

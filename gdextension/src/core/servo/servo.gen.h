@@ -22,8 +22,22 @@ inline constexpr double DEFAULT_RATE_HZ = 1000.0;
 // ns (docs/servo-timing.md).
 inline constexpr int64_t DEFAULT_SPIN_NS = 50000;
 
-// Busy-wait with real time but no latency hold: an idle core sleeps deeper and wakes later, ns.
+// Busy-wait with real time but no latency hold until the wake-ahead has learned this machine's
+// wake-ups (a full window), ns.
 inline constexpr int64_t UNHELD_SPIN_NS = 100000;
+
+// The learned wake-ahead's least, ns: what is left for the clock read and the loop's own start.
+inline constexpr int64_t WAKE_AHEAD_MIN_NS = 25000;
+
+// The learned wake-ahead's most, ns (also never over half a period, nor half of RLIMIT_RTTIME).
+inline constexpr int64_t WAKE_AHEAD_MAX_NS = 500000;
+
+// The share of recent wake-ups the learned wake-ahead covers: it wakes this quantile of their
+// lateness early.
+inline constexpr double WAKE_AHEAD_QUANTILE = 0.999;
+
+// Wake-ups the wake-ahead learns from: the most recent this many (4 s at 1 kHz).
+inline constexpr size_t WAKE_AHEAD_WINDOW = 4096;
 
 // Telemetry samples the servo keeps for the game to drain (4 s at 1 kHz).
 inline constexpr size_t TELEMETRY_QUEUE_CAPACITY = 4096;

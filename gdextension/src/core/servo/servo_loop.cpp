@@ -39,19 +39,30 @@ RealtimeGrants ServoLoop::grants() const {
 
 int64_t ServoLoop::spin_ns() const {
 	// Before the thread has its grants, an explicit spin is already known; SPIN_AUTO is not.
-	return grants_published_.load(std::memory_order_acquire) ? spin_ns_ : effective_spin_ns(options_, RealtimeGrants{});
+	return grants_published_.load(std::memory_order_acquire) ? spin_ns_.load(std::memory_order_relaxed)
+															 : effective_spin_ns(options_, RealtimeGrants{});
+}
+
+bool ServoLoop::spin_learned() const {
+	return grants_published_.load(std::memory_order_acquire) && learns_spin_;
+}
+
+bool learns_spin(const ServoOptions &p_options, const RealtimeGrants &p_grants) {
+	return p_options.scheduling == LoopScheduling::DEADLINE && p_options.spin_ns == ServoOptions::SPIN_AUTO &&
+			is_realtime_kind(p_grants.kind) && !p_grants.cpu_latency_held;
 }
 
 int64_t effective_spin_ns(const ServoOptions &p_options, const RealtimeGrants &p_grants) {
 	if (p_options.scheduling == LoopScheduling::NAIVE_SLEEP) {
 		return 0;
 	}
+	if (learns_spin(p_options, p_grants)) {
+		return std::min(ServoOptions::UNHELD_SPIN_NS,
+				wake_ahead_cap_ns(p_options.rate_hz, p_grants.realtime_kit.rttime_usec));
+	}
 	int64_t spin_ns = p_options.spin_ns;
 	if (spin_ns == ServoOptions::SPIN_AUTO) {
-		const bool realtime = is_realtime_kind(p_grants.kind);
-		spin_ns = !realtime					? 0
-				: p_grants.cpu_latency_held ? ServoOptions::DEFAULT_SPIN_NS
-											: ServoOptions::UNHELD_SPIN_NS;
+		spin_ns = is_realtime_kind(p_grants.kind) ? ServoOptions::DEFAULT_SPIN_NS : 0;
 	}
 	return std::clamp<int64_t>(spin_ns, 0, max_spin_ns(p_options.rate_hz));
 }
@@ -104,15 +115,18 @@ void ServoLoop::run() {
 	// The name top, ps -L and /proc/<pid>/task/*/comm show (15 characters at most).
 	set_current_thread_name(SERVO_THREAD_NAME);
 	grants_ = apply_realtime_request(options_.realtime);
-	spin_ns_ = effective_spin_ns(options_, grants_);
+	int64_t spin_ns = effective_spin_ns(options_, grants_);
+	learns_spin_ = learns_spin(options_, grants_);
+	wake_ahead_.reset(spin_ns, wake_ahead_cap_ns(options_.rate_hz, grants_.realtime_kit.rttime_usec));
+	spin_ns_.store(spin_ns, std::memory_order_relaxed);
 	grants_published_.store(true, std::memory_order_release);
 
 	const int64_t period_ns = std::llround(1e9 / options_.rate_hz);
 	const double dt_s = static_cast<double>(period_ns) * S_PER_NS;
 	const bool naive = options_.scheduling == LoopScheduling::NAIVE_SLEEP;
-	const int64_t spin_ns = spin_ns_;
 	int64_t deadline_ns = monotonic_now_ns() + period_ns;
 	int64_t previous_wake_ns = -1;
+	int64_t slept_at_ns = monotonic_now_ns();
 	uint64_t tick_index = 0;
 	DeviceIo io = DeviceIo::OK;
 
@@ -120,7 +134,11 @@ void ServoLoop::run() {
 		if (naive) {
 			sleep_for_ns(period_ns);
 		} else {
-			sleep_then_spin_until_ns(deadline_ns, spin_ns);
+			const int64_t slept_until_ns = sleep_then_spin_until_ns(deadline_ns, spin_ns);
+			if (learns_spin_ && wake_ahead_.observe(slept_at_ns, deadline_ns - spin_ns, slept_until_ns)) {
+				spin_ns = wake_ahead_.ahead_ns();
+				spin_ns_.store(spin_ns, std::memory_order_relaxed);
+			}
 		}
 		const int64_t wake_ns = monotonic_now_ns();
 		if (tick_index++ % CPU_SAMPLE_TICKS == 0) {
@@ -129,6 +147,7 @@ void ServoLoop::run() {
 		}
 		io = pipeline_.tick(dt_s);
 		const int64_t end_ns = monotonic_now_ns();
+		slept_at_ns = end_ns;
 
 		// The naive loop has no deadline; its lateness is how much longer than a period
 		// this tick came after the previous one.

@@ -13,7 +13,8 @@
 // falling back quietly when refused; stats say what was granted. The process-wide holds are
 // released when the thread ends. With a spin (ServoOptions::spin_ns) it sleeps until that
 // long before each deadline and busy-waits the rest, absorbing the wake-up's lateness at a CPU cost
-// (ServoStats::thread_cpu_fraction).
+// (ServoStats::thread_cpu_fraction); with real time but no latency hold the spin is learned
+// from the thread's own wake-ups (wake_ahead.h).
 //
 // Stopping: stop() raises a flag, the thread finishes its tick, writes ZERO force to the
 // device itself, and only then exits; stop() joins it. So the last thing the device receives
@@ -25,6 +26,7 @@
 #include "core/base/status.h"
 #include "core/device/device.h"
 #include "core/servo/servo_pipeline.h"
+#include "core/servo/wake_ahead.h"
 
 #include <atomic>
 #include <cstdint>
@@ -55,9 +57,9 @@ struct ServoOptions {
 	// measurement (docs/servo-timing.md):
 	//   - real time with /dev/cpu_dma_latency held (root): DEFAULT_SPIN_NS, a lower p99 wake
 	//     latency idle, under CPU and under rendering load for about 1 % of a core.
-	//   - real time without the hold (an ordinary user's SCHED_RR from RealtimeKit):
-	//     UNHELD_SPIN_NS. An idle core may sleep deeper and wake later; the longer spin
-	//     absorbs it, for about twice the CPU of the shorter one.
+	//   - real time without the hold (an ordinary user's SCHED_RR from RealtimeKit, without
+	//     the udev rule): learned (wake_ahead.h), from UNHELD_SPIN_NS. An idle core may sleep
+	//     deeper and wake later, by how much depends on the machine.
 	//   - SCHED_OTHER: none. A thread that is not real-time is preempted mid-spin by the
 	//     load it competes with, which made its p99 under CPU load several times worse.
 	int64_t spin_ns = SPIN_AUTO;
@@ -67,8 +69,11 @@ struct ServoOptions {
 	static constexpr int64_t UNHELD_SPIN_NS = haptics::UNHELD_SPIN_NS;
 };
 
-// The spin a servo with p_options spins once granted p_grants (SPIN_AUTO resolved).
+// The spin a servo with p_options spins once granted p_grants (SPIN_AUTO resolved); where it
+// learns the spin, the one it starts from.
 int64_t effective_spin_ns(const ServoOptions &p_options, const RealtimeGrants &p_grants);
+// Whether that servo learns its spin: SPIN_AUTO, real time, no latency hold.
+bool learns_spin(const ServoOptions &p_options, const RealtimeGrants &p_grants);
 
 // The longest spin_ns a servo at p_rate_hz (a valid rate) accepts: half its period, so a tick
 // always has the other half to run in.
@@ -97,9 +102,11 @@ public:
 	RealtimeResult scheduler() const;
 	// What the thread was granted (all false / -1 / 0 until it has started).
 	RealtimeGrants grants() const;
-	// The spin the thread uses (effective_spin_ns; until it has its grants, the spin asked
-	// for, or 0 for SPIN_AUTO).
+	// The spin the thread uses now (effective_spin_ns, then what it learns; until it has its
+	// grants, the spin asked for, or 0 for SPIN_AUTO).
 	int64_t spin_ns() const;
+	// Whether the thread learns its spin (learns_spin; false until it has its grants).
+	bool spin_learned() const;
 	const ServoOptions &options() const { return options_; }
 
 private:
@@ -115,8 +122,10 @@ private:
 	std::atomic<DeviceIo> fault_{ DeviceIo::OK };
 	// Written by the thread once at start, then published; read by the game thread.
 	RealtimeGrants grants_;
-	int64_t spin_ns_ = 0;
+	bool learns_spin_ = false;
 	std::atomic<bool> grants_published_{ false };
+	std::atomic<int64_t> spin_ns_{ 0 }; // Written by the thread as it learns.
+	WakeAhead wake_ahead_; // The thread's alone.
 };
 
 } // namespace haptics

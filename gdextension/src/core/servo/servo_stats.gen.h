@@ -13,7 +13,7 @@ namespace haptics {
 // The servo loop's statistics since it last started (exact after it stopped; while it runs,
 // bins may come from neighbouring ticks).
 struct ServoStats {
-	static constexpr uint32_t SCHEMA_ID = 0x6e629f84u;
+	static constexpr uint32_t SCHEMA_ID = 0x5a926792u;
 	static constexpr const char *NAME = "HapticServoStats";
 
 	// Whether the servo thread runs.
@@ -36,8 +36,11 @@ struct ServoStats {
 	bool timer_slack_minimised{};
 	// Asked when SCHED_FIFO was refused.
 	RtkitGrant realtime_kit{};
-	// Busy-wait before each deadline. Unit: s.
+	// Busy-wait before each deadline (while it learns: the current one). Unit: s.
 	double spin_s{};
+	// The spin is learned from how late this machine's wake-ups come (real time without the
+	// latency hold).
+	bool spin_learned{};
 	// Share of one CPU the servo thread used since its first tick (sleeping costs nothing; the
 	// spin and the tick do).
 	double thread_cpu_fraction{};
@@ -122,6 +125,7 @@ struct ServoStats {
 		r_visitor(FieldSpec{ .name = "timer_slack_minimised" }, r_self.timer_slack_minimised);
 		r_visitor(FieldSpec{ .name = "realtime_kit" }, r_self.realtime_kit);
 		r_visitor(FieldSpec{ .name = "spin_s" }, r_self.spin_s);
+		r_visitor(FieldSpec{ .name = "spin_learned" }, r_self.spin_learned);
 		r_visitor(FieldSpec{ .name = "thread_cpu_fraction" }, r_self.thread_cpu_fraction);
 		r_visitor(FieldSpec{ .name = "nominal_rate_hz" }, r_self.nominal_rate_hz);
 		r_visitor(FieldSpec{ .name = "achieved_rate_hz" }, r_self.achieved_rate_hz);
