@@ -257,7 +257,9 @@ test-kernel: build
 ## test-rt: the servo as an ordinary user gets it (RealtimeKit)
 ## A private system bus, polkitd and RealtimeKit started for the test, the servo run as
 ## 'nobody', the kernel's view of its thread checked against its stats (SCHED_RR from
-## RealtimeKit; a nice level; nothing) (tools/rt/test-rtkit.sh).
+## RealtimeKit, its spin learned; with /dev/cpu_dma_latency given as the udev rule gives it,
+## the hold taken while it runs and released when it stops; a nice level; nothing)
+## (tools/rt/test-rtkit.sh).
 test-rt: build
 	@tools/rt/test-rtkit.sh $(BUILD)/debug/haptics_rt_probe
 

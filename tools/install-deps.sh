@@ -7,6 +7,8 @@ packages=(build-essential cmake ninja-build pkg-config libhidapi-dev libusb-1.0-
   doctest-dev clang-format python3 python3-venv debian-archive-keyring ca-certificates
   rt-tests xvfb openbox patchelf qemu-system-x86 busybox-static kmod libdbus-1-dev rtkit dbus
   polkitd util-linux debootstrap
+  # make test-rt and make bench give the user /dev/cpu_dma_latency as the udev rule does (an ACL).
+  acl
   # The scripted person (tests/person/): input events, screenshots and OCR of the screen, and
   # a desktop's sound server (with a null sink: this machine has no sound card).
   xdotool imagemagick tesseract-ocr tesseract-ocr-eng pulseaudio

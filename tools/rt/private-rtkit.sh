@@ -11,13 +11,19 @@
 #   rtkit_start_daemon             rtkit-daemon (no canary: short runs)
 #   rtkit_stop_last                stops the most recently started one
 #   rtkit_as_user COMMAND...       runs COMMAND as USER, without capabilities, on the bus
-#   rtkit_cleanup                  stops everything (also on exit)
+#   rtkit_grant_latency / rtkit_revoke_latency
+#                                  give USER /dev/cpu_dma_latency as the project's udev rule
+#                                  gives the logged-in user (an ACL entry, rw), and take it back
+#   rtkit_latency_holders          the PIDs holding /dev/cpu_dma_latency open
+#   rtkit_cleanup                  stops everything and restores the file's ACL (also on exit)
 rtkit_user=""
 rtkit_work=""
 rtkit_pids=()
 rtkit_started=() # Every PID started, for the callers that check none is left.
 rtkit_daemon=/usr/libexec/rtkit-daemon
 rtkit_polkitd=/usr/lib/polkit-1/polkitd
+rtkit_latency_file=/dev/cpu_dma_latency
+rtkit_latency_acl="" # The file's ACL as found, restored by rtkit_cleanup.
 
 rtkit_die() { echo "rtkit: $*" >&2; exit 1; }
 
@@ -34,7 +40,28 @@ rtkit_cleanup() {
     kill -9 "$pid" 2>/dev/null || true
   done
   rtkit_pids=()
+  if [[ -n $rtkit_latency_acl ]]; then
+    setfacl --set-file=- "$rtkit_latency_file" <<<"$rtkit_latency_acl" ||
+      echo "rtkit: could not restore the ACL of $rtkit_latency_file" >&2
+  fi
   [[ -z $rtkit_work ]] || rm -rf "$rtkit_work"
+}
+
+rtkit_grant_latency() {
+  setfacl -m "u:$rtkit_user:rw" "$rtkit_latency_file"
+}
+
+rtkit_revoke_latency() {
+  setfacl -x "u:$rtkit_user" "$rtkit_latency_file"
+}
+
+rtkit_latency_holders() {
+  local fd
+  for fd in /proc/[0-9]*/fd/*; do
+    if [[ $(readlink "$fd" 2>/dev/null) == "$rtkit_latency_file" ]]; then
+      echo "${fd%/fd/*}" | cut -d/ -f3
+    fi
+  done | sort -u
 }
 
 rtkit_has_owner() {
@@ -54,7 +81,7 @@ rtkit_setup() {
   rtkit_user=${1:?}
   [[ $(id -u) -eq 0 ]] || rtkit_die "needs root, to start a private system bus and rtkit-daemon"
   local tool
-  for tool in dbus-daemon dbus-send unshare setpriv; do
+  for tool in dbus-daemon dbus-send unshare setpriv getfacl setfacl; do
     command -v "$tool" >/dev/null || rtkit_die "$tool missing (make deps installs it)"
   done
   [[ -x $rtkit_daemon ]] || rtkit_die "$rtkit_daemon missing (package rtkit; make deps installs it)"
@@ -62,6 +89,9 @@ rtkit_setup() {
   id "$rtkit_user" >/dev/null 2>&1 || rtkit_die "no user '$rtkit_user'"
   rtkit_work=$(mktemp -d "${TMPDIR:-/tmp}/haptics-rtkit.XXXXXX")
   chmod 755 "$rtkit_work"
+  if [[ -e $rtkit_latency_file ]]; then
+    rtkit_latency_acl=$(getfacl -cp "$rtkit_latency_file")
+  fi
   trap rtkit_cleanup EXIT
   local socket=$rtkit_work/system_bus_socket
   sed -e "s|<listen>.*</listen>|<listen>unix:path=$socket</listen>|" \

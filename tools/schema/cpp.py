@@ -201,6 +201,9 @@ def header(schema_set, sf):
             out.append(comment(v.doc))
         lines = [f"struct {v.name} {{"]
         lines.append(f"\tstatic constexpr uint32_t SCHEMA_ID = 0x{v.schema_id:08x}u;")
+        if v.twin is not None:
+            lines.append(f"\t// Its 3D form's ({v.twin.gd}): game vectors as Godot 3D view vectors (codec.h).")
+            lines.append(f"\tstatic constexpr uint32_t SCHEMA_ID_3D = 0x{v.twin.schema_id:08x}u;")
         lines.append(f'\tstatic constexpr const char *NAME = "{v.gd}";\n')
         for f in v.fields:
             doc = field_doc(f)

@@ -28,6 +28,7 @@ little-endian:
 | `vec2`, `vec3` | 2 or 3 × binary64 |
 | `vec2f`, `vec3f` | 2 or 3 × binary32 |
 | `game_vec2` | 2 × binary64, a 2D game vector (x right, y down); C++ holds it in device axes (y up) |
+| `game_vec3` | 3 × binary64, a 3D game vector in Godot's 3D view axes (x right, y up, z toward the viewer): device axes, as they are |
 | `string` | `u16` byte count, then UTF-8 (at most `max_length` bytes) |
 | an enum | `u8`, the value's index |
 | a value | its fields, inline (no id) |
@@ -38,6 +39,12 @@ Decoding checks every limit the schema gives (ranges, finiteness, non-zero direc
 counts, lengths, valid UTF-8, enum indices, trailing bytes) and names the first field that
 breaks one, e.g. `HapticFrame.contacts[2].normal: zero length: a direction is needed`; a
 value that fails is refused whole.
+
+A value marked with a 3D form (a `gd3` class, e.g. `HapticFrame3D`) has a second layout:
+the same fields with each `game_vec2` a `game_vec3`, under its own id. C++ reads either
+into the same struct and knows from the id which the game sent: a 3D game's frame turns
+off the plane hold of 3-DOF devices and maps a 2-axis stick onto the ground plane
+(docs/probe-3d.md).
 """
 
 
@@ -86,8 +93,10 @@ def page(schema_set):
             out.append(f"- enum `{e.name}`: " + ", ".join(f"`{v}`" for v in e.values) + (f". {e.doc}" if e.doc else ""))
         if sf.constants or sf.enums:
             out.append("")
-        for v in sf.values:
+        for v in [form for value in sf.values for form in (value, value.twin) if form is not None]:
             title = f"### {v.gd}" + (f" (C++ `{v.name}`)" if sf.cpp and v.name != v.gd else "")
+            if v.twin_of is not None:
+                title = f"### {v.gd} (the 3D form of {v.twin_of.gd}; C++ `{v.twin_of.name}`)"
             out.append(f"{title}\n\n{v.doc}\n\nLayout id `0x{v.schema_id:08x}`.\n")
             if v.message is not None:
                 out.append(message_line(v) + "\n")

@@ -98,7 +98,7 @@ def gd_default(f):
         return SCALARS[t.name][2]
     if t.name in ("vec2", "vec2f", "game_vec2"):
         return "Vector2(%s, %s)" % tuple(number(float(c)) for c in f.default)
-    if t.name in ("vec3", "vec3f"):
+    if t.name in ("vec3", "vec3f", "game_vec3"):
         return "Vector3(%s, %s, %s)" % tuple(number(float(c)) for c in f.default)
     if t.name == "string":
         return '"' + f.default.replace('"', '\\"') + '"'
@@ -129,7 +129,7 @@ def write_scalar(f, expr):
     return {
         "float": "writer.f64({})", "float32": "writer.f32({})", "vec2": "writer.vec2({})",
         "game_vec2": "writer.vec2({})", "vec2f": "writer.vec2f({})", "vec3": "writer.vec3({})",
-        "vec3f": "writer.vec3f({})", "string": "writer.text({})",
+        "vec3f": "writer.vec3f({})", "game_vec3": "writer.vec3({})", "string": "writer.text({})",
     }[t.name].format(expr)
 
 
@@ -161,7 +161,7 @@ def read_scalar(schema_set, f, name):
     if t.name == "string":
         return f"reader.text({name}, {f.max_length})"
     method = {"float": "f64", "float32": "f32", "vec2": "vec2", "game_vec2": "vec2", "vec2f": "vec2f",
-              "vec3": "vec3", "vec3f": "vec3f"}[t.name]
+              "vec3": "vec3", "vec3f": "vec3f", "game_vec3": "vec3"}[t.name]
     args = [name]
     if t.name in ("float", "float32"):
         if lo is not None or hi is not None or not f.finite or f.zero_means:
@@ -412,7 +412,8 @@ def files(schema_set, sf):
     out = {}
     if not sf.gdscript:
         return out
-    classes = [(v.gd, value_class(schema_set, v)) for v in sf.values]
+    forms = [form for v in sf.values for form in (v, v.twin) if form is not None]
+    classes = [(v.gd, value_class(schema_set, v)) for v in forms]
     if sf.gd_constants:
         classes.append((sf.gd_constants, constants_class(sf)))
     for gd_name, text in classes:

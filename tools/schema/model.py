@@ -26,7 +26,7 @@ The wire format and the types are described in docs/values.md (written from here
 import os
 import re
 import tomllib
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 # Scalar types: C++ type, GDScript type, GDScript zero, wire kind.
 SCALARS = {
@@ -46,6 +46,9 @@ SCALARS = {
     # A 2D game vector (x right, y down): Vector2 in GDScript, a device-space Vec3 (x right,
     # y up, z 0) in C++; the C++ codec flips y (core/base/coordinates.h).
     "game_vec2": ("Vec3", "Vector2", "Vector2.ZERO"),
+    # The same vector in a value's 3D form (a value with gd3): Vector3 in Godot's 3D view axes
+    # (x right, y up, z toward the viewer), which are device space's; no flip.
+    "game_vec3": ("Vec3", "Vector3", "Vector3.ZERO"),
     "string": ("std::string", "String", '""'),
 }
 # The Packed*Array GDScript uses for an array of a scalar.
@@ -61,12 +64,13 @@ PACKED = {
     "vec2": "PackedVector2Array",
     "vec2f": "PackedVector2Array",
     "game_vec2": "PackedVector2Array",
+    "game_vec3": "PackedVector3Array",
     "vec3": "PackedVector3Array",
     "vec3f": "PackedVector3Array",
     "string": "PackedStringArray",
 }
 INTEGER_BITS = {"int": 32, "int64": 64, "uint8": 8, "uint16": 16, "uint32": 32, "uint64": 64}
-VECTORS = {"vec2", "vec3", "vec2f", "vec3f", "game_vec2"}
+VECTORS = {"vec2", "vec3", "vec2f", "vec3f", "game_vec2", "game_vec3"}
 TRANSFERS = ("reliable", "unreliable", "unreliable_ordered")
 PEERS = ("any", "server")
 FIELD_KEYS = {
@@ -152,6 +156,10 @@ class Value:
     file: object = None
     settings: bool = False  # a renderer's or the servo's settings
     message: object = None  # a network message's Message, None for other values
+    # gd3: the value's 3D form (its game vectors as Vector3), a GDScript class of its own that
+    # C++ reads into the same struct; twin_of: on that form, the value it is the form of.
+    twin: object = None
+    twin_of: object = None
     _canonical: str = None
 
     def canonical(self):
@@ -277,7 +285,41 @@ def load(root):
                 value.fields.append(_field(schema_set, sf.path, value, field_name, fspec))
             if not value.fields and value.message is None:
                 raise SchemaError(f"{sf.path}: {value.name} has no fields")
+    for sf in schema_set.files:
+        for value in sf.values:
+            _twin(value, raw)
     return schema_set
+
+
+def _has_game_vec(value):
+    return any(f.type.name == "game_vec2" or (f.type.kind == "value" and _has_game_vec(f.type.ref))
+               for f in value.fields)
+
+
+def _twin(value, raw):
+    """value's 3D form (value.twin) when its schema names one (gd3), with each game_vec2 as a
+    game_vec3 and each nested value as that value's own 3D form, made first."""
+    gd3 = raw[(value.file.path, value.name)].get("gd3")
+    if value.twin is not None or not gd3:
+        return
+    where = f"{value.file.path}: {value.name}"
+    if not _has_game_vec(value):
+        raise SchemaError(f"{where}: a 3D form (gd3) is for a value with game vectors")
+    if not value.file.cpp or value.message is not None:
+        raise SchemaError(f"{where}: only a value C++ reads has a 3D form (gd3)")
+    fields = []
+    for f in value.fields:
+        t = f.type
+        if t.kind == "value" and _has_game_vec(t.ref):
+            _twin(t.ref, raw)
+            if t.ref.twin is None:
+                raise SchemaError(f"{where}.{f.name}: {t.ref.name} needs a 3D form (gd3) too")
+            t = Type("value", t.ref.twin.name, t.container, t.ref.twin)
+        elif t.name == "game_vec2":
+            t = Type("scalar", "game_vec3", t.container)
+        fields.append(replace(f, type=t))
+    doc = value.doc + " Its 3D form: game vectors in Godot's 3D view axes (docs/values.md)."
+    value.twin = Value(value.name + "3D", gd3, doc, value.realtime, fields, value.file, twin_of=value)
 
 
 MESSAGE_KEYS = ("channel", "transfer", "label", "sender", "receiver")
@@ -374,4 +416,6 @@ def _field(schema_set, path, value, name, spec):
 
 
 def snake(name):
+    """HapticFrame -> haptic_frame; HapticFrame3D -> haptic_frame_3d (as Godot names node_3d)."""
+    name = re.sub(r"(\d)D$", r"_\1d", name)
     return re.sub(r"(?<!^)(?=[A-Z])", "_", name).lower()

@@ -25,6 +25,11 @@ gd::Vector2 to_game(const Vec3 &p_device) {
 	return { static_cast<float>(game.x), static_cast<float>(game.y) };
 }
 
+// Device space to a 3D game's view axes: the same axes (core/base/coordinates.h).
+gd::Vector3 to_space(const Vec3 &p_device) {
+	return { static_cast<float>(p_device.x), static_cast<float>(p_device.y), static_cast<float>(p_device.z) };
+}
+
 } // namespace
 
 void SystemObject::bind_methods(gd::ClassBinder<SystemObject> &r_binder) {
@@ -52,6 +57,9 @@ void SystemObject::bind_methods(gd::ClassBinder<SystemObject> &r_binder) {
 	r_binder.bind_method("get_input_vector", &S::get_input_vector);
 	r_binder.bind_method("get_device_position", &S::get_device_position);
 	r_binder.bind_method("get_forces", &S::get_forces);
+	r_binder.bind_method("get_input_vector_3d", &S::get_input_vector_3d);
+	r_binder.bind_method("get_device_position_3d", &S::get_device_position_3d);
+	r_binder.bind_method("get_forces_3d", &S::get_forces_3d);
 	r_binder.bind_method("get_stats", &S::get_stats);
 	r_binder.bind_method("drain_telemetry", &S::drain_telemetry, { "max_samples" },
 			{ gd::Variant(static_cast<int64_t>(TELEMETRY_QUEUE_CAPACITY)) });
@@ -115,11 +123,12 @@ std::string SystemObject::get_servo_status() const {
 
 bool SystemObject::submit_frame(const gd::PackedByteArray &p_frame) {
 	Frame frame;
-	if (!decode_argument("submit_frame", p_frame, frame)) {
+	GameSpace space = GameSpace::PLANE;
+	if (!decode_argument("submit_frame", p_frame, frame, &space)) {
 		system_.count_rejected_frame();
 		return false;
 	}
-	return report("submit_frame", system_.submit_frame(frame));
+	return report("submit_frame", system_.submit_frame(frame, space));
 }
 
 bool SystemObject::push_impact(const gd::PackedByteArray &p_impact) {
@@ -137,6 +146,18 @@ gd::Vector2 SystemObject::get_device_position() const {
 
 gd::PackedByteArray SystemObject::get_forces() const {
 	return encode_result(system_.forces());
+}
+
+gd::Vector3 SystemObject::get_input_vector_3d() const {
+	return to_space(system_.input_vector());
+}
+
+gd::Vector3 SystemObject::get_device_position_3d() const {
+	return to_space(system_.device_position());
+}
+
+gd::PackedByteArray SystemObject::get_forces_3d() const {
+	return encode_result(system_.forces(), GameSpace::SPACE);
 }
 
 gd::PackedByteArray SystemObject::get_stats() const {

@@ -60,7 +60,8 @@ public:
 	// "" while rendering is healthy, else why it stopped (e.g. the device was unplugged).
 	std::string get_servo_status() const;
 
-	// --- Game -> servo --- (each a HapticFrame's or HapticImpact's encode())
+	// --- Game -> servo --- (each a HapticFrame's or HapticImpact's encode(), or their 3D
+	// forms': a 3D frame tells the servo the game is 3D)
 	bool submit_frame(const gd::PackedByteArray &p_frame);
 	bool push_impact(const gd::PackedByteArray &p_impact);
 
@@ -70,6 +71,11 @@ public:
 	// A HapticForces: the active renderer's components (its force enum names them), then
 	// continuous, smoothed, impact, total; game axes, N.
 	gd::PackedByteArray get_forces() const;
+	// The same three in a 3D game's view axes (x right, y up, z toward the viewer); the forces
+	// as a HapticForces3D.
+	gd::Vector3 get_input_vector_3d() const;
+	gd::Vector3 get_device_position_3d() const;
+	gd::PackedByteArray get_forces_3d() const;
 	// A HapticServoStats.
 	gd::PackedByteArray get_stats() const;
 	// Up to p_max_samples samples of get_telemetry_stride() floats each, oldest first, in

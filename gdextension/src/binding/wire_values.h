@@ -21,9 +21,11 @@ inline std::span<const uint8_t> bytes_of(const gd::PackedByteArray &p_bytes) {
 gd::PackedByteArray to_packed(const std::vector<uint8_t> &p_bytes);
 
 // False (reported as "<method>: <why>") when p_bytes hold no valid T; r_value is untouched then.
+// r_space (when given) says which form a value with a 3D form came in.
 template <SchemaValue T>
-bool decode_argument(const char *p_method, const gd::PackedByteArray &p_bytes, T &r_value) {
-	const Status status = decode(bytes_of(p_bytes), r_value);
+bool decode_argument(const char *p_method, const gd::PackedByteArray &p_bytes, T &r_value,
+		GameSpace *r_space = nullptr) {
+	const Status status = decode(bytes_of(p_bytes), r_value, r_space);
 	if (!status) {
 		gd::print_error(std::string(p_method) + ": " + status.message(), p_method, __FILE__, __LINE__);
 	}
@@ -31,8 +33,8 @@ bool decode_argument(const char *p_method, const gd::PackedByteArray &p_bytes, T
 }
 
 template <SchemaValue T>
-gd::PackedByteArray encode_result(const T &p_value) {
-	return to_packed(encode(p_value));
+gd::PackedByteArray encode_result(const T &p_value, GameSpace p_space = GameSpace::PLANE) {
+	return to_packed(encode(p_value, p_space));
 }
 
 } // namespace haptics::binding

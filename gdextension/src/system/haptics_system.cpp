@@ -229,13 +229,13 @@ DeviceCapabilities HapticsSystem::device_capabilities() const {
 	return impl_->device ? impl_->device->capabilities() : DeviceCapabilities{};
 }
 
-Status HapticsSystem::submit_frame(const Frame &p_frame) {
+Status HapticsSystem::submit_frame(const Frame &p_frame, GameSpace p_space) {
 	const Status valid = check_fields(p_frame);
 	if (!valid) {
 		++impl_->frames_rejected;
 		return valid;
 	}
-	impl_->channels.frame.store(p_frame);
+	impl_->channels.frame.store(GameFrame{ p_frame, p_space });
 	// At 50 Hz: frees what the servo has replaced (walls), so the next swap is never held up.
 	impl_->collect();
 	return Status::success();
@@ -279,6 +279,10 @@ ServoOutput HapticsSystem::output() const {
 	return impl_->channels.output.load();
 }
 
+size_t HapticsSystem::latency_bins(uint32_t *r_bins, size_t p_capacity) const {
+	return impl_->channels.stats.latency_bins(r_bins, p_capacity);
+}
+
 ServoStats HapticsSystem::stats() const {
 	ServoStats stats;
 	impl_->channels.stats.fill(stats);
@@ -297,11 +301,11 @@ ServoStats HapticsSystem::stats() const {
 		stats.timer_slack_minimised = grants.timer_slack_minimised;
 		stats.realtime_kit = grants.realtime_kit;
 		stats.spin_s = static_cast<double>(impl_->loop.spin_ns()) * 1e-9;
+		stats.spin_learned = impl_->loop.spin_learned();
 	}
 	stats.frames_received = output.frames_received;
 	stats.frames_rejected = impl_->frames_rejected;
 	stats.frame_age_s = output.frame_age_s;
-		stats.spin_learned = impl_->loop.spin_learned();
 	stats.watchdog_tripped = (output.flags & TELEMETRY_FLAG_WATCHDOG) != 0;
 	stats.transient_drops = output.bank_drops + impl_->channels.queue_drops.load(std::memory_order_relaxed);
 	stats.telemetry_drops = output.telemetry_drops;

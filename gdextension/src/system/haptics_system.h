@@ -91,7 +91,8 @@ public:
 	// --- Game -> servo -------------------------------------------------------------------
 	// The latest frame; validated, then published lock-free. Rejected frames are counted in
 	// stats().frames_rejected and the previous frame stays in force.
-	Status submit_frame(const Frame &p_frame);
+	// p_space: the game it comes from (a 3D game's values come in their 3D form: coordinates.h).
+	Status submit_frame(const Frame &p_frame, GameSpace p_space = GameSpace::PLANE);
 	// A frame refused before it was one (bytes that did not decode): counted with the rest.
 	void count_rejected_frame();
 	// Queues an impact transient. A full queue is not an error: the drop is counted in
@@ -106,6 +107,10 @@ public:
 	ForceComponents forces() const;
 	ServoOutput output() const; // Everything above plus gains, flags and counters.
 	ServoStats stats() const;
+	// The wake-up latency's histogram since the servo started (1 us bins from 0, the last
+	// holding everything beyond) into r_bins, up to p_capacity bins; returns how many it has.
+	// For a benchmark that pools the ticks of several runs.
+	size_t latency_bins(uint32_t *r_bins, size_t p_capacity) const;
 	// Pops up to p_max_samples telemetry samples into r_out, which must hold
 	// p_max_samples * TELEMETRY_STRIDE floats (layout in telemetry.h); returns how many.
 	size_t drain_telemetry(float *r_out, size_t p_max_samples);

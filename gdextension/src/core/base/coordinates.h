@@ -13,9 +13,19 @@
 
 #include "core/base/vec3.h"
 
+#include <cstdint>
+
 namespace haptics {
 
 inline constexpr Vec3 DEVICE_DOWN{ 0.0, -1.0, 0.0 };
+
+// The game a value came from. A 2D game's vectors are (x right, y down) and lose depth; a 3D
+// game's are in Godot's 3D view axes (x right, y up, z toward the viewer), which are device
+// axes as they are. A value's 3D form (its schema's gd3) says SPACE.
+enum class GameSpace : uint8_t {
+	PLANE,
+	SPACE,
+};
 
 // Direction-like game vectors (contact normals, impact directions): no scale, since the
 // force model normalises them anyway.
@@ -27,6 +37,15 @@ constexpr Vec3 game_to_device_direction(double p_game_x, double p_game_y) {
 // so a velocity in px/s becomes m/s.
 constexpr Vec3 game_to_device_scaled(double p_game_x, double p_game_y, double p_pixels_per_metre) {
 	return { p_game_x / p_pixels_per_metre, -p_game_y / p_pixels_per_metre, 0.0 };
+}
+
+// A 2-axis stick in a 3D game works the ground plane: pushed forward (device +y) it points
+// into the screen (-z), and of a 3D force it renders the ground plane's part.
+constexpr Vec3 stick_to_ground(const Vec3 &p_stick) {
+	return { p_stick.x, 0.0, -p_stick.y };
+}
+constexpr Vec3 ground_to_stick(const Vec3 &p_space) {
+	return { p_space.x, -p_space.z, 0.0 };
 }
 
 struct GameVec2 {

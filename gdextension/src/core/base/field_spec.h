@@ -14,7 +14,9 @@ namespace haptics {
 enum class Wire : uint8_t {
 	PLAIN, // The member's own width: doubles as f64, Vec2/Vec3 as f64 components.
 	F32, // Floats and vectors as f32 (network messages; C++ keeps doubles).
-	GAME_VEC2, // A device-space Vec3 that travels as a 2D game vector: (x, -y), z dropped.
+	// A device-space Vec3 that travels as a 2D game vector, (x, -y) with z dropped, or in its
+	// value's 3D form as (x, y, z) (GameSpace, core/base/coordinates.h).
+	GAME_VEC2,
 };
 
 struct FieldSpec {

@@ -90,7 +90,8 @@ bool minimise_current_timer_slack();
 bool acquire_memory_lock();
 void release_memory_lock();
 // Holds /dev/cpu_dma_latency at 0 us (the kernel's PM QoS request: idle CPUs poll instead of
-// entering sleep states they wake from late). Needs write access to the file (root).
+// entering sleep states they wake from late). Needs write access to the file: root, or the
+// logged-in user where the project's udev rule grants it (tools/udev/70-haptics.rules).
 bool acquire_cpu_latency_hold();
 void release_cpu_latency_hold();
 
@@ -113,8 +114,9 @@ void release_cpu_latency_hold();
 // As an ordinary user (haptics_rt_bench --user nobody --user-techniques, the user's rows
 // beside root's in the same rounds): SCHED_FIFO, mlockall and cpu_dma_latency need root (or
 // CAP_SYS_NICE / an rtprio limit, CAP_IPC_LOCK / an unlimited memlock limit, write access to
-// the file); RealtimeKit's SCHED_RR 20 stands in for the first, and root's servo configured
-// like that grant (FIFO 20, no latency hold) was within the noise of root's as shipped.
+// the file, which the project's udev rule gives the logged-in user); RealtimeKit's SCHED_RR 20
+// stands in for the first, and root's servo configured like that grant (FIFO 20, no latency
+// hold) was within the noise of root's as shipped.
 // Pinning, the timer slack, the spin and RLIMIT_RTTIME need nothing; pinning gained nothing
 // for the user either, and the spin is worth it only to a real-time thread (ServoOptions).
 struct RealtimeRequest {

@@ -20,6 +20,8 @@ inline constexpr size_t MAX_FORCE_PARTS = 5;
 // their sum, and what the servo made of it. Newtons.
 struct ForceComponents {
 	static constexpr uint32_t SCHEMA_ID = 0x1bab256eu;
+	// Its 3D form's (HapticForces3D): game vectors as Godot 3D view vectors (codec.h).
+	static constexpr uint32_t SCHEMA_ID_3D = 0xedee39f9u;
 	static constexpr const char *NAME = "HapticForces";
 
 	// The renderer's components in its force enum's order; parts it does not name are zero. Unit:

@@ -86,6 +86,8 @@ static_assert(std::is_trivially_copyable_v<ImpactMaterial>);
 // One surface the body touches in a frame.
 struct Contact {
 	static constexpr uint32_t SCHEMA_ID = 0x60d76c52u;
+	// Its 3D form's (HapticContact3D): game vectors as Godot 3D view vectors (codec.h).
+	static constexpr uint32_t SCHEMA_ID_3D = 0xac43db38u;
 	static constexpr const char *NAME = "HapticContact";
 
 	// From the touched surface toward the body (KinematicCollision2D.get_normal()); any finite
@@ -107,6 +109,8 @@ static_assert(std::is_trivially_copyable_v<Contact>);
 // so a crate on top pushes down and one the player stands on does not.
 struct RestingObject {
 	static constexpr uint32_t SCHEMA_ID = 0x4efaace9u;
+	// Its 3D form's (HapticLoad3D): game vectors as Godot 3D view vectors (codec.h).
+	static constexpr uint32_t SCHEMA_ID_3D = 0x7be02b6fu;
 	static constexpr const char *NAME = "HapticLoad";
 
 	// From the object toward the player. Range [-inf, 1000000.0].
@@ -128,6 +132,8 @@ static_assert(std::is_trivially_copyable_v<RestingObject>);
 // heartbeat that keeps the servo's watchdog fed.
 struct Frame {
 	static constexpr uint32_t SCHEMA_ID = 0xb97173e3u;
+	// Its 3D form's (HapticFrame3D): game vectors as Godot 3D view vectors (codec.h).
+	static constexpr uint32_t SCHEMA_ID_3D = 0x9d5fa0ddu;
 	static constexpr const char *NAME = "HapticFrame";
 
 	// The game's own frame counter (telemetry, debugging).
@@ -167,6 +173,8 @@ static_assert(std::is_trivially_copyable_v<Frame>);
 // force).
 struct ImpactEvent {
 	static constexpr uint32_t SCHEMA_ID = 0x5d3bfe83u;
+	// Its 3D form's (HapticImpact3D): game vectors as Godot 3D view vectors (codec.h).
+	static constexpr uint32_t SCHEMA_ID_3D = 0xba4643abu;
 	static constexpr const char *NAME = "HapticImpact";
 
 	// The felt push, usually the contact normal (from the surface toward the body). Range [-inf,

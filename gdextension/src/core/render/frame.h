@@ -9,12 +9,21 @@
 // All vectors are in DEVICE space (coordinates.h: x right, y up, z toward the user); the
 // codec turns the game's 2D vectors into it.
 
+#include "core/base/coordinates.h"
 #include "core/base/vec3.h"
 #include "core/render/frame.gen.h"
 
 namespace haptics {
 
 // Convenience for tests and benches; false (and nothing added) when the frame is full.
+// A frame as the servo takes it, with the game it came from: a 3D game's frame turns off the
+// plane hold of 3-DOF devices and puts a 2-axis stick on the ground plane (coordinates.h).
+struct GameFrame {
+	Frame frame;
+	GameSpace space = GameSpace::PLANE;
+};
+static_assert(std::is_trivially_copyable_v<GameFrame>);
+
 inline bool add_contact(Frame &r_frame, const Vec3 &p_normal) {
 	return r_frame.contacts.push_back(Contact{ p_normal, std::nullopt });
 }

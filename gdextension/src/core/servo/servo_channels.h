@@ -24,7 +24,7 @@ inline constexpr size_t IMPACT_QUEUE_CAPACITY = 64;
 // TELEMETRY_QUEUE_CAPACITY: servo.schema.toml.
 
 struct ServoChannels {
-	Seqlock<Frame> frame; // Game -> servo, written by submit_frame only.
+	Seqlock<GameFrame> frame; // Game -> servo, written by submit_frame only.
 	// Game -> servo. Also the renderers' settings' generation: the game stores it after
 	// storing any renderer's settings (RendererChannels), so the servo looks at theirs only
 	// when this changed.

@@ -47,7 +47,7 @@ void ServoPipeline::begin_session(HapticDevice *p_device, double p_dt_s) {
 
 	// The latest frame, even one submitted before this session, is picked up by the first
 	// tick as if it had just arrived; the watchdog takes over if no newer one follows.
-	frame_ = Frame{};
+	submitted_ = GameFrame{};
 	frame_version_ = UNTOUCHED_VERSION;
 	have_heartbeat_ = false;
 	last_heartbeat_s_ = 0.0;
@@ -97,7 +97,7 @@ void ServoPipeline::pick_up_inputs(bool p_period_changed) {
 	new_frame_ = false;
 	if (channels_.frame.version() != frame_version_) {
 		uint64_t version = 0;
-		if (channels_.frame.try_load(frame_, &version)) {
+		if (channels_.frame.try_load(submitted_, &version)) {
 			frame_version_ = version;
 			new_frame_ = true;
 			++frames_received_;
@@ -131,9 +131,15 @@ DeviceIo ServoPipeline::tick(double p_dt_s) {
 	++tick_;
 	time_s_ += p_dt_s;
 	pick_up_inputs(period_changed);
+	const bool game_3d = submitted_.space == GameSpace::SPACE;
+	const bool on_ground = game_3d && capabilities_.input_dof == 2;
+	if (on_ground) {
+		state.position_m = stick_to_ground(state.position_m);
+		state.velocity_m_per_s = stick_to_ground(state.velocity_m_per_s);
+	}
 
 	const Vec3 input = input_vector(state.position_m, input_radius_m_, config_.input.dead_zone);
-	const RenderInput render_input{ state, input, frame_, new_frame_, p_dt_s, limits_.workspace_radius_m,
+	const RenderInput render_input{ state, input, submitted_.frame, new_frame_, p_dt_s, limits_.workspace_radius_m,
 		capabilities_.has_orientation };
 	active().render(render_input, rendered_);
 	const double scale = config_.safety.force_scale;
@@ -144,7 +150,7 @@ DeviceIo ServoPipeline::tick(double p_dt_s) {
 	ForceComponents &forces = rendered_.forces;
 	const Vec3 impact = transients_.advance(p_dt_s);
 	Vec3 continuous = scale != 1.0 ? rendered_.continuous * scale : rendered_.continuous;
-	if (capabilities_.input_dof >= 3 && active().planar() && config_.plane_hold.stiffness_n_per_m > 0.0) {
+	if (!game_3d && capabilities_.input_dof >= 3 && active().planar() && config_.plane_hold.stiffness_n_per_m > 0.0) {
 		continuous.z += -config_.plane_hold.stiffness_n_per_m * state.position_m.z -
 				config_.plane_hold.damping_n_s_per_m * state.velocity_m_per_s.z;
 	}
@@ -156,7 +162,9 @@ DeviceIo ServoPipeline::tick(double p_dt_s) {
 	peak_.add(safety.total, p_dt_s);
 	forces.peak = peak_.peak();
 
-	const DeviceIo written = device_->write_force(ForceCommand{ safety.total, safety.impact });
+	const DeviceIo written = device_->write_force(on_ground ? ForceCommand{ ground_to_stick(safety.total),
+																	  ground_to_stick(safety.impact) }
+															: ForceCommand{ safety.total, safety.impact });
 	if (written != DeviceIo::OK) {
 		return written;
 	}
@@ -169,8 +177,8 @@ DeviceIo ServoPipeline::tick(double p_dt_s) {
 void ServoPipeline::publish(const DeviceState &p_state, const Vec3 &p_input, const ForceComponents &p_forces,
 		const SafetyResult &p_safety, uint32_t p_renderer_flags) {
 	uint32_t flags = p_renderer_flags;
-	flags |= !frame_.contacts.empty() ? TELEMETRY_FLAG_CONTACT : 0u;
-	flags |= frame_.in_water ? TELEMETRY_FLAG_IN_WATER : 0u;
+	flags |= !submitted_.frame.contacts.empty() ? TELEMETRY_FLAG_CONTACT : 0u;
+	flags |= submitted_.frame.in_water ? TELEMETRY_FLAG_IN_WATER : 0u;
 	flags |= p_safety.watchdog_tripped ? TELEMETRY_FLAG_WATCHDOG : 0u;
 	flags |= p_safety.clamped ? TELEMETRY_FLAG_CLAMPED : 0u;
 	flags |= p_safety.ramp_gain < 1.0 ? TELEMETRY_FLAG_RAMPING : 0u;

@@ -65,7 +65,7 @@ private:
 	DeviceCapabilities capabilities_;
 	double input_radius_m_ = 0.1;
 
-	Frame frame_;
+	GameFrame submitted_;
 	uint64_t frame_version_ = 0;
 	bool new_frame_ = false;
 	// The game's latest sign of life for the watchdog: a frame, or the active renderer's own

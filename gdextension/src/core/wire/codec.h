@@ -32,6 +32,11 @@ concept SchemaValue = requires {
 	T::NAME;
 };
 
+// A value with a 3D form (its schema's gd3): the same fields under SCHEMA_ID_3D, its game
+// vectors as a 3D game's (GameSpace::SPACE).
+template <typename T>
+concept HasSpaceForm = SchemaValue<T> && requires { T::SCHEMA_ID_3D; };
+
 namespace wire_detail {
 
 template <typename T>
@@ -94,9 +99,13 @@ void write(WireWriter &r_writer, const FieldSpec &p_spec, const T &p_value) {
 		write(r_writer, p_spec, p_value.x);
 		write(r_writer, p_spec, p_value.y);
 	} else if constexpr (std::is_same_v<T, Vec3>) {
-		if (p_spec.wire == Wire::GAME_VEC2) {
+		if (p_spec.wire == Wire::GAME_VEC2 && r_writer.space == GameSpace::PLANE) {
 			r_writer.f64(p_value.x);
 			r_writer.f64(-p_value.y);
+		} else if (p_spec.wire == Wire::GAME_VEC2) {
+			r_writer.f64(p_value.x);
+			r_writer.f64(p_value.y);
+			r_writer.f64(p_value.z);
 		} else {
 			write(r_writer, p_spec, p_value.x);
 			write(r_writer, p_spec, p_value.y);
@@ -164,10 +173,14 @@ void read(WireReader &r_reader, const FieldSpec &p_spec, T &r_value) {
 		r_value.y = f32 ? double(r_reader.f32()) : r_reader.f64();
 		check_vector(r_reader, p_spec, Vec3(r_value.x, r_value.y, 0.0));
 	} else if constexpr (std::is_same_v<T, Vec3>) {
-		if (p_spec.wire == Wire::GAME_VEC2) {
+		if (p_spec.wire == Wire::GAME_VEC2 && r_reader.space == GameSpace::PLANE) {
 			const double x = r_reader.f64();
 			const double y = r_reader.f64();
 			r_value = Vec3(x, -y, 0.0);
+		} else if (p_spec.wire == Wire::GAME_VEC2) {
+			r_value.x = r_reader.f64();
+			r_value.y = r_reader.f64();
+			r_value.z = r_reader.f64();
 		} else {
 			const bool f32 = p_spec.wire == Wire::F32;
 			r_value.x = f32 ? double(r_reader.f32()) : r_reader.f64();
@@ -222,25 +235,36 @@ void read(WireReader &r_reader, const FieldSpec &p_spec, T &r_value) {
 
 } // namespace wire_detail
 
+// In r_writer.space's form: a value without a 3D form is written in its only one.
 template <SchemaValue T>
 void encode_into(WireWriter &r_writer, const T &p_value) {
-	r_writer.u32(T::SCHEMA_ID);
+	if constexpr (HasSpaceForm<T>) {
+		r_writer.u32(r_writer.space == GameSpace::SPACE ? T::SCHEMA_ID_3D : T::SCHEMA_ID);
+	} else {
+		r_writer.space = GameSpace::PLANE;
+		r_writer.u32(T::SCHEMA_ID);
+	}
 	wire_detail::write(r_writer, FieldSpec{}, p_value);
 }
 
 template <SchemaValue T>
-std::vector<uint8_t> encode(const T &p_value) {
+std::vector<uint8_t> encode(const T &p_value, GameSpace p_space = GameSpace::PLANE) {
 	WireWriter writer;
+	writer.space = p_space;
 	encode_into(writer, p_value);
 	return writer.take();
 }
 
-// r_value is written only when the whole value decodes: a refused value changes nothing.
+// Either form of a value that has two; r_space (when given) says which it was. r_value and
+// r_space are written only when the whole value decodes: a refused value changes nothing.
 template <SchemaValue T>
-Status decode(std::span<const uint8_t> p_bytes, T &r_value) {
+Status decode(std::span<const uint8_t> p_bytes, T &r_value, GameSpace *r_space = nullptr) {
 	WireReader reader(p_bytes, T::NAME);
 	const uint32_t id = reader.u32();
-	if (reader.ok() && id != T::SCHEMA_ID) {
+	if constexpr (HasSpaceForm<T>) {
+		reader.space = id == T::SCHEMA_ID_3D ? GameSpace::SPACE : GameSpace::PLANE;
+	}
+	if (reader.ok() && id != T::SCHEMA_ID && reader.space == GameSpace::PLANE) {
 		reader.fail(StatusCode::INVALID_ARGUMENT,
 				"got layout %08x, not this value's (%08x): another value, or scripts and library out of step", unsigned(id),
 				unsigned(T::SCHEMA_ID));
@@ -250,15 +274,19 @@ Status decode(std::span<const uint8_t> p_bytes, T &r_value) {
 	const Status status = reader.finish();
 	if (status) {
 		r_value = value;
+		if (r_space != nullptr) {
+			*r_space = reader.space;
+		}
 	}
 	return status;
 }
 
 // The limits of p_value's schema, checked as a decode would (for values made in C++).
+// A value with a 3D form is checked in it, depth included.
 template <SchemaValue T>
 Status check_fields(const T &p_value) {
 	T copy{};
-	return decode(encode(p_value), copy);
+	return decode(encode(p_value, HasSpaceForm<T> ? GameSpace::SPACE : GameSpace::PLANE), copy);
 }
 
 } // namespace haptics

@@ -6,6 +6,7 @@
 // first failure sticks, naming the field by its path ("HapticFrame.contacts[2].normal").
 // Game thread only: both may allocate.
 
+#include "core/base/coordinates.h"
 #include "core/base/status.h"
 
 #include <cstddef>
@@ -28,6 +29,9 @@ public:
 
 	const std::vector<uint8_t> &bytes() const { return bytes_; }
 	std::vector<uint8_t> take() { return std::move(bytes_); }
+
+	// How game vectors are written: as a 2D game's or a 3D game's (coordinates.h).
+	GameSpace space = GameSpace::PLANE;
 
 private:
 	void put(uint64_t p_value, int p_size);
@@ -59,6 +63,9 @@ public:
 	void enter(const char *p_name);
 	void enter_item(size_t p_index);
 	void leave();
+	// How game vectors are read: as a 2D game's or a 3D game's (coordinates.h).
+	GameSpace space = GameSpace::PLANE;
+
 	// Fails with p_code and "<path>: <message>" unless already failed.
 	void fail(StatusCode p_code, const char *p_format, ...) __attribute__((format(HAPTICS_PRINTF, 3, 4)));
 
