@@ -58,7 +58,6 @@ expect "so the spin is learned" "$(field spin_learned "$latency")" 1
 expect "from the unheld spin (us)" "$(field spin_us "$stats")" "$(field unheld_spin_us "$stats")"
 
 echo "test-rt: 2. RealtimeKit, and /dev/cpu_dma_latency given to the user as the udev rule gives it"
-target_before=$(od -An -td4 -N4 "$rtkit_latency_file" | tr -d ' ')
 rtkit_grant_latency
 probe_lines
 rtkit_revoke_latency
@@ -69,13 +68,18 @@ expect "the file is closed once the servo stopped" "$(field stopped_open "$laten
 expect "a servo with the hold spins the held spin (us)" "$(field spin_us "$stats")" "$(field held_spin_us "$stats")"
 expect "and does not learn it" "$(field spin_learned "$latency")" 0
 expect "the kernel runs the servo thread at" "$(field policy "$kernel")" SCHED_RR
-# The target is the least of every open request: another process's would hide ours.
-others=$(rtkit_latency_holders | tr '\n' ' ')
+# The target is the least of every open request: another process's (a benchmark or test
+# beside this one) would hide ours going, so it is read between two looks for other holders.
+others=$(rtkit_latency_holders)
+target_after=$(od -An -td4 -N4 "$rtkit_latency_file" | tr -d ' ')
+others+=$(rtkit_latency_holders)
 if [[ -z $others ]]; then
-  expect "the kernel's target after the probe exited (us)" "$(od -An -td4 -N4 "$rtkit_latency_file" | tr -d ' ')" "$target_before"
-  expect "and after the servo stopped, as the probe read it (us)" "$(field stopped_us "$latency")" "$target_before"
+  released() { if [[ $1 -ne 0 ]]; then echo "released ($1)"; else echo "still 0"; fi; }
+  expect "the kernel's target after the probe exited" "$(released "$target_after")" "released ($target_after)"
+  expect "and once the servo stopped, as the probe read it" "$(released "$(field stopped_us "$latency")")" \
+    "released ($(field stopped_us "$latency"))"
 else
-  echo "test-rt: NOTE the target after exit is not compared: other processes hold the file ($others)"
+  echo "test-rt: NOTE the target after exit is not read: other processes hold the file ($(tr '\n' ' ' <<<"$others"))"
 fi
 expect "the file's ACL gives the user nothing once taken back" "$(getfacl -cp "$rtkit_latency_file" | grep -c "^user:nobody:" || true)" 0
 rtkit_stop_last
@@ -106,8 +110,9 @@ for pid in "${rtkit_started[@]}"; do
 done
 expect "daemons left running of the ${#rtkit_started[@]} started" "$left" 0
 expect "processes of nobody left running" "$(pgrep -c -u nobody || true)" 0
-expect "the ACL of $rtkit_latency_file as found" "$(getfacl -cp "$rtkit_latency_file" | tr '\n' ' ')" \
-  "$(tr '\n' ' ' <<<"$rtkit_latency_acl")"
+acl_line() { grep -v '^$' | tr '\n' ' '; }
+expect "the ACL of $rtkit_latency_file as found" "$(getfacl -cp "$rtkit_latency_file" | acl_line)" \
+  "$(acl_line <<<"$rtkit_latency_acl")"
 
 ((failures == 0)) || rtkit_die "$failures check(s) failed"
 echo "test-rt: all checks passed"
