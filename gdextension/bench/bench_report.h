@@ -16,6 +16,7 @@ namespace haptics::bench {
 struct LoopResult {
 	std::string name; // "deadline" or "naive"
 	ServoStats stats;
+	std::vector<uint32_t> latency_bins; // The wake latency's histogram (HapticsSystem::latency_bins).
 	double duration_s = 0.0;
 	uint64_t frames_submitted = 0;
 	uint64_t impacts_pushed = 0;

@@ -68,6 +68,8 @@ LoopResult run_servo_workload(const char *p_name, const ServoOptions &p_options,
 	producer.join();
 	system.stop();
 	result.stats = system.stats();
+	result.latency_bins.resize(ServoStatsRecorder::LATENCY_BINS);
+	system.latency_bins(result.latency_bins.data(), result.latency_bins.size());
 	return result;
 }
 

@@ -3,8 +3,11 @@
 # as root (as shipped: SCHED_FIFO, /dev/cpu_dma_latency) and, in the same rounds under the
 # same loads, measures the servo as the ordinary user nobody without RealtimeKit and with it
 # (tools/rt/private-rtkit.sh: a private system bus, polkitd allowing nobody real time as a
-# desktop session would, Debian's rtkit-daemon). Without root it runs the benchmark alone, as
-# whoever runs it.
+# desktop session would, Debian's rtkit-daemon), with the spin it learns, the fixed spin, and
+# /dev/cpu_dma_latency given to nobody as the udev rule gives the player (an ACL entry the
+# benchmark adds for those rows and takes back; the file's ACL as found is restored on exit
+# whatever happens). Every tick of every round is pooled per row. Without root it runs the
+# benchmark alone, as whoever runs it.
 #   tools/rt/bench-users.sh BENCH PROJECT JSON [haptics_rt_bench options...]
 set -euo pipefail
 bench=${1:?usage: tools/rt/bench-users.sh BENCH PROJECT JSON [options]}

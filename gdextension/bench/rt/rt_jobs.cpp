@@ -25,7 +25,7 @@ ServoOptions baseline_options() {
 void add_techniques(std::vector<Job> &r_jobs) {
 	const ServoOptions base = baseline_options();
 	const auto add = [&](const std::string &p_label, const ServoOptions &p_options) {
-		r_jobs.push_back({ p_label, JobKind::SERVO, p_options, false });
+		r_jobs.push_back({ p_label, JobKind::SERVO, p_options, false, false });
 	};
 	add("before: SCHED_FIFO 50 only", base);
 	ServoOptions o = base;
@@ -62,22 +62,23 @@ void add_root_as_user(std::vector<Job> &r_jobs, bool p_more) {
 	o.realtime.priority = RTKIT_DEFAULT_MAX_PRIORITY;
 	o.realtime.hold_cpu_latency = false;
 	const std::string priority = std::to_string(RTKIT_DEFAULT_MAX_PRIORITY);
-	r_jobs.push_back({ "root, FIFO " + priority + ", no cpu_dma_latency", JobKind::SERVO, o, false });
+	r_jobs.push_back({ "root, FIFO " + priority + ", no cpu_dma_latency", JobKind::SERVO, o, false, false });
 	if (!p_more) {
 		return;
 	}
 	o.realtime.hold_cpu_latency = true;
-	r_jobs.push_back({ "root, FIFO " + priority + " + cpu_dma_latency", JobKind::SERVO, o, false });
+	r_jobs.push_back({ "root, FIFO " + priority + " + cpu_dma_latency", JobKind::SERVO, o, false, false });
 	o = ServoOptions();
 	o.realtime.hold_cpu_latency = false;
 	r_jobs.push_back({ "root, FIFO " + std::to_string(o.realtime.priority) + ", no cpu_dma_latency", JobKind::SERVO, o,
-			false });
+			false, false });
 }
 
 void add_user(std::vector<Job> &r_jobs, const JobPlan &p_plan) {
 	const std::string as = "as " + p_plan.user;
-	const auto add = [&](const std::string &p_label, const ServoOptions &p_options, bool p_rtkit) {
-		r_jobs.push_back({ as + ", " + p_label, JobKind::USER_SERVO, p_options, p_rtkit });
+	const auto add = [&](const std::string &p_label, const ServoOptions &p_options, bool p_rtkit,
+							 bool p_latency_access = false) {
+		r_jobs.push_back({ as + ", " + p_label, JobKind::USER_SERVO, p_options, p_rtkit, p_latency_access });
 	};
 	add("no RealtimeKit", ServoOptions(), false);
 	if (p_plan.user_techniques) {
@@ -91,11 +92,15 @@ void add_user(std::vector<Job> &r_jobs, const JobPlan &p_plan) {
 	if (!p_plan.rtkit) {
 		return;
 	}
-	add("RealtimeKit", ServoOptions(), true);
+	add("RealtimeKit, spin learned", ServoOptions(), true);
+	ServoOptions fixed;
+	fixed.spin_ns = ServoOptions::UNHELD_SPIN_NS; // The fixed spin the learned one replaced.
+	add("RealtimeKit, spin " + std::to_string(fixed.spin_ns / 1000) + " us fixed", fixed, true);
+	add("RealtimeKit + cpu_dma_latency (udev rule)", ServoOptions(), true, true);
 	if (!p_plan.user_techniques) {
 		return;
 	}
-	for (int64_t spin_us : { 0, 100, 200 }) {
+	for (int64_t spin_us : { 0, 200 }) {
 		ServoOptions o;
 		o.spin_ns = spin_us * 1000;
 		add("RealtimeKit, spin " + std::to_string(spin_us) + " us", o, true);
@@ -108,8 +113,8 @@ void add_user(std::vector<Job> &r_jobs, const JobPlan &p_plan) {
 } // namespace
 
 std::vector<Job> plan_jobs(const JobPlan &p_plan) {
-	std::vector<Job> jobs = { { "servo", JobKind::SERVO, ServoOptions(), false },
-		{ "cyclictest", JobKind::CYCLICTEST, ServoOptions(), false } };
+	std::vector<Job> jobs = { { "servo", JobKind::SERVO, ServoOptions(), false, false },
+		{ "cyclictest", JobKind::CYCLICTEST, ServoOptions(), false, false } };
 	if (p_plan.techniques) {
 		add_techniques(jobs);
 	}

@@ -4,10 +4,12 @@
 // order rotates from round to round): the servo as shipped, cyclictest, then each optional
 // measurement, each a Job.
 //
-// With --user the servo is measured again as that ordinary user (rt_users.h), without
-// RealtimeKit and with it, and as root configured like the user's grant (SCHED_FIFO at
-// RealtimeKit's maximum priority, no /dev/cpu_dma_latency), which separates what the
-// priority and the latency hold are each worth. With --user-techniques, also what else an
+// With --user the servo is measured again as that ordinary user (rt_users.h): without
+// RealtimeKit; with it (the spin learned, wake_ahead.h); with it and the fixed spin the learned
+// one replaced (UNHELD_SPIN_NS); with it and /dev/cpu_dma_latency given as the project's udev
+// rule gives it; and as root configured like the user's grant (SCHED_FIFO at RealtimeKit's
+// maximum priority, no /dev/cpu_dma_latency), which separates what the priority and the
+// latency hold are each worth. With --user-techniques, also what else an
 // ordinary user can set for themselves: the spin before each deadline, pinning, the timer
 // slack; and root at FIFO 80 without the latency hold and at RealtimeKit's priority with it.
 
@@ -34,6 +36,7 @@ struct Job {
 	JobKind kind = JobKind::SERVO;
 	ServoOptions options; // USER_SERVO: only what a user_child_arguments() carries.
 	bool rtkit = false; // USER_SERVO: with the RealtimeKit bus (else none).
+	bool latency_access = false; // USER_SERVO: the user may open /dev/cpu_dma_latency meanwhile.
 };
 
 struct JobPlan {

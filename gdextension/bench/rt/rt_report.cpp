@@ -29,7 +29,9 @@ void print_distribution_row(const char *p_label, const Distribution &p_servo, co
 void write_distribution(std::ofstream &r_out, const Distribution &p_distribution) {
 	r_out << "{\"measured\": " << (p_distribution.measured ? "true" : "false") << ", \"p50\": " << p_distribution.p50 * US
 		  << ", \"p99\": " << p_distribution.p99 * US << ", \"p999\": " << p_distribution.p999 * US
-		  << ", \"max\": " << p_distribution.max * US << ", \"count\": " << p_distribution.count << "}";
+		  << ", \"max\": " << p_distribution.max * US << ", \"count\": " << p_distribution.count
+		  << ", \"pooled\": " << (p_distribution.pooled ? "true" : "false") << ", \"p999_low\": " << p_distribution.p999_low * US
+		  << ", \"p999_high\": " << p_distribution.p999_high * US << "}";
 }
 
 void write_tool(std::ofstream &r_out, const ToolResult &p_tool) {
@@ -46,6 +48,7 @@ void write_tool(std::ofstream &r_out, const ToolResult &p_tool) {
 		  << ", \"memory_locked\": " << (s.memory_locked ? "true" : "false")
 		  << ", \"cpu_latency_held\": " << (s.cpu_latency_held ? "true" : "false") << ", \"pinned_cpu\": " << s.pinned_cpu
 		  << ", \"stack_prefaulted_kb\": " << s.stack_prefaulted_kb << ", \"spin_us\": " << s.spin_s * US
+		  << ", \"spin_learned\": " << (s.spin_learned ? "true" : "false")
 		  << ", \"late_ticks\": " << s.late_ticks << ", \"missed_deadlines\": " << s.missed_deadlines << "}";
 }
 
@@ -78,6 +81,13 @@ void print_condition(const ConditionResult &p_result) {
 	std::printf("  %-14s       %7s %7s %7s %8s |            %7s %7s %7s %8s   (us)\n", "", "p50", "p99", "p99.9", "max", "p50",
 			"p99", "p99.9", "max");
 	print_distribution_row("wake latency", p_result.servo.latency, p_result.cyclictest.latency);
+	const Distribution &servo = p_result.servo.latency;
+	const Distribution &cyclic = p_result.cyclictest.latency;
+	if (servo.pooled) {
+		std::printf("  %-14s servo %llu ticks pooled, p99.9's 95 %% interval [%.1f-%.1f] | cyclictest %llu, [%.1f-%.1f]\n",
+				"", static_cast<unsigned long long>(servo.count), servo.p999_low * US, servo.p999_high * US,
+				static_cast<unsigned long long>(cyclic.count), cyclic.p999_low * US, cyclic.p999_high * US);
+	}
 	print_distribution_row("period jitter", p_result.servo.jitter, p_result.cyclictest.jitter);
 }
 

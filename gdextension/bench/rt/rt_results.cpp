@@ -98,6 +98,17 @@ ToolResult combine(const std::vector<ToolResult> &p_rounds) {
 	combined.measured = true;
 	combined.rounds = static_cast<int>(latency.size());
 	combined.latency = combine_distributions(latency);
+	std::vector<const RoundBins *> bins;
+	for (const ToolResult &round : p_rounds) {
+		if (round.measured && !round.latency_bins.bins.empty()) {
+			bins.push_back(&round.latency_bins);
+		}
+	}
+	if (bins.size() == latency.size()) {
+		const PooledLatency pooled = pool_rounds(bins);
+		combined.latency = { true, pooled.p50, pooled.p99, pooled.p999, pooled.max, pooled.count, true, pooled.p999_low,
+			pooled.p999_high };
+	}
 	combined.jitter = combine_distributions(jitter);
 	combined.rate_error_percent = median(rate_error);
 	combined.cpu_fraction = median(cpu);

@@ -3,6 +3,8 @@
 #include "rt_jobs.h"
 #include "rt_processes.h"
 
+#include "core/servo/wake_ahead.h"
+
 #include <pwd.h>
 #include <unistd.h>
 
@@ -18,12 +20,28 @@ namespace {
 // Parent and child are the same binary: the record is its memory, behind a tag that catches a
 // child that printed anything else.
 constexpr char TAG[8] = { 'H', 'R', 'T', 'C', 'H', 'I', 'L', 'D' };
+constexpr const char *LATENCY_FILE = "/dev/cpu_dma_latency";
 static_assert(std::is_trivially_copyable_v<ServoChildReport>, "the child's report is copied as bytes");
 
 std::string self_path() {
 	char path[4096];
 	const ssize_t length = ::readlink("/proc/self/exe", path, sizeof(path) - 1);
 	return length > 0 ? std::string(path, static_cast<size_t>(length)) : std::string();
+}
+
+// Gives p_user read and write access to /dev/cpu_dma_latency, or takes it back, with an ACL
+// entry: what the udev rule's uaccess tag gives the logged-in user.
+bool set_latency_access(const std::string &p_user, bool p_grant, std::string &r_error) {
+	const std::vector<std::string> argv = p_grant
+			? std::vector<std::string>{ "setfacl", "-m", "u:" + p_user + ":rw", LATENCY_FILE }
+			: std::vector<std::string>{ "setfacl", "-x", "u:" + p_user, LATENCY_FILE };
+	std::string ignored;
+	if (!run_and_capture(argv, 10.0, ignored, r_error)) {
+		r_error = std::string(p_grant ? "could not give " : "could not take back from ") + p_user + " " + LATENCY_FILE +
+				": " + r_error;
+		return false;
+	}
+	return true;
 }
 
 } // namespace
@@ -34,7 +52,7 @@ bool write_child_report(const ServoChildReport &p_report) {
 }
 
 bool run_servo_child(const std::string &p_user, const std::string &p_bus, const ServoOptions &p_options,
-		double p_seconds, ServoChildReport &r_report, std::string &r_error) {
+		bool p_latency_access, double p_seconds, ServoChildReport &r_report, std::string &r_error) {
 	const std::string self = self_path();
 	if (self.empty()) {
 		r_error = "cannot find this program's own path";
@@ -52,7 +70,16 @@ bool run_servo_child(const std::string &p_user, const std::string &p_bus, const 
 	const std::vector<std::string> options = user_child_arguments(p_options);
 	argv.insert(argv.end(), options.begin(), options.end());
 	std::string output;
-	if (!run_and_capture(argv, p_seconds * 3.0 + 30.0, output, r_error)) {
+	if (p_latency_access && !set_latency_access(p_user, true, r_error)) {
+		return false;
+	}
+	const bool ran = run_and_capture(argv, p_seconds * 3.0 + 30.0, output, r_error);
+	std::string revoke_error;
+	if (p_latency_access && !set_latency_access(p_user, false, revoke_error) && ran) {
+		r_error = revoke_error;
+		return false;
+	}
+	if (!ran) {
 		r_error = "as " + p_user + ": " + r_error;
 		return false;
 	}
@@ -74,26 +101,33 @@ void print_user_comparison(const ConditionResult &p_result) {
 		}
 		if (!header) {
 			std::printf("\n  The servo as an ordinary user [%s] against root's (SCHED_%s %d) in the same rounds: wake latency "
-						"p99 / p99.9 in us\n",
+						"p99 / p99.9 [95 %% interval] in us, %s over %llu ticks of root's; ratios to root's\n",
 					p_result.name.c_str(), p_result.servo.stats.scheduler == SchedulerKind::REALTIME_FIFO ? "FIFO" : "OTHER",
-					p_result.servo.stats.realtime_priority);
-			std::printf("  %-46s %8.1f %8.1f            CPU %4.1f %%\n", "root (as shipped)", root.p99 * US, root.p999 * US,
-					100.0 * p_result.servo.cpu_fraction);
+					p_result.servo.stats.realtime_priority, root.pooled ? "pooled" : "medians of rounds",
+					static_cast<unsigned long long>(root.count));
+			std::printf("  %-46s %8.1f %8.1f [%6.1f-%6.1f]               spin %3.0f us  CPU %4.1f %%\n", "root (as shipped)",
+					root.p99 * US, root.p999 * US, root.p999_low * US, root.p999_high * US,
+					p_result.servo.stats.spin_s * US, 100.0 * p_result.servo.cpu_fraction);
 			header = true;
 		}
 		const double r99 = root.p99 > 0.0 ? r.latency.p99 / root.p99 : 0.0;
 		const double r999 = root.p999 > 0.0 ? r.latency.p999 / root.p999 : 0.0;
-		std::printf("  %-46s %8.1f %8.1f  x%.2f x%.2f  CPU %4.1f %%  (%s %d%s, RealtimeKit: %s)\n", label.c_str(),
-				r.latency.p99 * US, r.latency.p999 * US, r99, r999, 100.0 * r.cpu_fraction,
-				scheduler_kind_name(r.stats.scheduler), r.stats.realtime_priority,
-				r.stats.cpu_latency_held ? ", cpu_dma_latency held" : "", rtkit_outcome_name(r.stats.realtime_kit.outcome));
-		if (r.stats.realtime_kit.rttime_usec > 0) {
+		const ServoStats &s = r.stats;
+		std::printf("  %-46s %8.1f %8.1f [%6.1f-%6.1f]  x%5.2f x%5.2f  spin %3.0f us%s  CPU %4.1f %%  (%s %d%s, "
+					"RealtimeKit: %s)\n",
+				label.c_str(), r.latency.p99 * US, r.latency.p999 * US, r.latency.p999_low * US, r.latency.p999_high * US, r99,
+				r999, s.spin_s * US, s.spin_learned ? " learned, last" : "", 100.0 * r.cpu_fraction,
+				scheduler_kind_name(s.scheduler), s.realtime_priority, s.cpu_latency_held ? ", cpu_dma_latency held" : "",
+				rtkit_outcome_name(s.realtime_kit.outcome));
+		if (s.realtime_kit.rttime_usec > 0) {
 			// RLIMIT_RTTIME counts CPU time between sleeps: the spin and the tick.
-			const double run_us = (r.stats.spin_s + r.stats.tick_cost_max_s) * US;
-			std::printf("  %-46s longest run without sleeping <= %.0f us (spin + slowest tick) of RLIMIT_RTTIME %.0f ms: "
-						"x%.0f headroom\n",
-					"", run_us, static_cast<double>(r.stats.realtime_kit.rttime_usec) / 1000.0,
-					static_cast<double>(r.stats.realtime_kit.rttime_usec) / run_us);
+			const double run_us = (static_cast<double>(wake_ahead_cap_ns(s.nominal_rate_hz, s.realtime_kit.rttime_usec)) /
+										   1000.0 +
+					s.tick_cost_max_s * US);
+			std::printf("  %-46s longest run without sleeping <= %.0f us (the most the spin may grow to + slowest tick) of "
+						"RLIMIT_RTTIME %.0f ms: x%.0f headroom\n",
+					"", run_us, static_cast<double>(s.realtime_kit.rttime_usec) / 1000.0,
+					static_cast<double>(s.realtime_kit.rttime_usec) / run_us);
 		}
 	}
 }

@@ -65,6 +65,14 @@ double Histogram<BINS>::percentile(double p_quantile) const {
 	return max();
 }
 
+template <size_t BINS>
+size_t Histogram<BINS>::copy_bins(uint32_t *r_bins, size_t p_capacity) const {
+	for (size_t b = 0; b < BINS && b < p_capacity; ++b) {
+		r_bins[b] = bins_[b].load(std::memory_order_relaxed);
+	}
+	return BINS;
+}
+
 template class Histogram<20000>;
 template class Histogram<10000>;
 

@@ -32,6 +32,8 @@ public:
 	// p_quantile in [0, 1]: the centre of the bin holding that rank, capped at max(); 0
 	// when empty.
 	double percentile(double p_quantile) const;
+	// Copies up to p_capacity bins' counts into r_bins; returns BINS.
+	size_t copy_bins(uint32_t *r_bins, size_t p_capacity) const;
 
 private:
 	const double bin_width_s_;
@@ -46,6 +48,8 @@ extern template class Histogram<10000>;
 
 class ServoStatsRecorder {
 public:
+	static constexpr size_t LATENCY_BINS = 20000; // 1 us each: 0-20 ms.
+
 	ServoStatsRecorder();
 
 	// Not concurrent with record_tick (call before the thread starts).
@@ -59,6 +63,8 @@ public:
 
 	// Fills the loop-timing fields of r_stats (rate, period, jitter, late, cost, ticks).
 	void fill(ServoStats &r_stats) const;
+	// The wake-up latency histogram's bins (1 us each), as Histogram::copy_bins.
+	size_t latency_bins(uint32_t *r_bins, size_t p_capacity) const { return latency_.copy_bins(r_bins, p_capacity); }
 
 private:
 	static constexpr double PERIOD_BIN_S = 1e-6;
@@ -72,7 +78,7 @@ private:
 	std::atomic<uint64_t> missed_{ 0 };
 	Histogram<20000> period_{ PERIOD_BIN_S }; // 0-20 ms
 	Histogram<20000> jitter_{ PERIOD_BIN_S }; // 0-20 ms
-	Histogram<20000> latency_{ PERIOD_BIN_S }; // 0-20 ms
+	Histogram<LATENCY_BINS> latency_{ PERIOD_BIN_S };
 	std::atomic<double> cpu_first_now_s_{ -1.0 };
 	std::atomic<double> cpu_first_s_{ 0.0 };
 	std::atomic<double> cpu_last_now_s_{ 0.0 };
