@@ -104,6 +104,9 @@ var control_mode: StringName = CONTROL_DEVICE:
 ## When true (the default), the mouse, keyboard and gamepad move the simulated device's
 ## hand; an autopilot or a test turns it off and moves the hand itself.
 var hand_follows_input: bool = true
+## Whether the game is 3D, as its last frame was ([method submit_frame_3d]): the keys then move
+## the simulated hand, and the device feeds the actions, on the ground plane.
+var game_3d: bool = false
 ## The actions (left, right, up, down) that move the simulated hand (from
 ## [constant SETTING_HAND_ACTIONS]); empty: none. An action the project does not define
 ## counts as released.
@@ -220,9 +223,10 @@ func _physics_process(_delta: float) -> void:
 func _follow_user_input_and_feed() -> void:
 	_follow_user_input()
 	if not feed_actions.is_empty():
-		_user_input.feed(
-			get_input_vector(), control_mode == CONTROL_DEVICE and _backend.is_native()
-		)
+		# A 3D game's actions move on the ground: forward (-z) is the "up" action.
+		var ground: Vector3 = get_input_vector_3d()
+		var push: Vector2 = Vector2(ground.x, ground.z) if game_3d else get_input_vector()
+		_user_input.feed(push, control_mode == CONTROL_DEVICE and _backend.is_native())
 
 
 ## Lists the project settings this door reads in the Project Settings dialog, with their
@@ -272,12 +276,36 @@ func get_forces() -> HapticForces:
 ## Hands the servo this physics tick's frame (a [HapticProbe] does, every tick); one the
 ## servo refuses is reported, naming the field, and the previous frame stays in force.
 func submit_frame(frame: HapticFrame) -> bool:
+	game_3d = false
 	return _backend.submit_frame(frame)
 
 
 ## Rings an impact on the hand (a [HapticProbe] does when a touch begins).
 func push_impact(impact: HapticImpact) -> bool:
 	return _backend.push_impact(impact)
+
+
+## A 3D game's [method submit_frame] (a [HapticProbe3D] does, every tick): the game is 3D from
+## then on ([member game_3d]).
+func submit_frame_3d(frame: HapticFrame3D) -> bool:
+	game_3d = true
+	return _backend.submit_frame_3d(frame)
+
+
+## A 3D game's [method push_impact].
+func push_impact_3d(impact: HapticImpact3D) -> bool:
+	return _backend.push_impact_3d(impact)
+
+
+## The device's input vector in a 3D game's view axes (x right, y up, z toward the viewer;
+## length ≤ 1): a 3-DOF stylus as it is, a 2-axis stick on the ground plane (forward is -z).
+func get_input_vector_3d() -> Vector3:
+	return _backend.input_vector_3d()
+
+
+## [method get_forces] in a 3D game's view axes, depth included.
+func get_forces_3d() -> HapticForces3D:
+	return _backend.forces_3d()
 
 
 ## Makes [param mode] the servo's renderer: [code]&"movement"[/code] (acceleration control,
@@ -361,4 +389,9 @@ func _spin_us_setting() -> float:
 
 func _follow_user_input() -> void:
 	if hand_follows_input and control_mode == CONTROL_DEVICE and device.is_simulated():
-		device.set_hand_target(_user_input.hand_target(get_viewport()))
+		var target: Vector2 = _user_input.hand_target(get_viewport())
+		if game_3d:  # On the ground plane: up pushes the hand forward, into the screen.
+			var reach: float = device.get_workspace_radius()
+			device.set_hand_target_3d(Vector3(target.x, 0.0, target.y).limit_length(1.0) * reach)
+		else:
+			device.set_hand_target(target)

@@ -96,6 +96,14 @@ func push_impact(_impact: HapticImpact) -> bool:
 	return false
 
 
+func submit_frame_3d(_frame: HapticFrame3D) -> bool:
+	return false
+
+
+func push_impact_3d(_impact: HapticImpact3D) -> bool:
+	return false
+
+
 ## Game axes, length at most 1.
 func input_vector() -> Vector2:
 	return Vector2.ZERO
@@ -108,6 +116,15 @@ func device_position() -> Vector2:
 
 func forces() -> HapticForces:
 	return HapticForces.new()
+
+
+## A 3D game's view axes (x right, y up, z toward the viewer), length at most 1.
+func input_vector_3d() -> Vector3:
+	return Vector3.ZERO
+
+
+func forces_3d() -> HapticForces3D:
+	return HapticForces3D.new()
 
 
 func stats() -> HapticServoStats:

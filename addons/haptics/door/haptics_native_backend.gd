@@ -109,6 +109,14 @@ func push_impact(impact: HapticImpact) -> bool:
 	return _native.push_impact(impact.encode())
 
 
+func submit_frame_3d(frame: HapticFrame3D) -> bool:
+	return _native.submit_frame(frame.encode())
+
+
+func push_impact_3d(impact: HapticImpact3D) -> bool:
+	return _native.push_impact(impact.encode())
+
+
 func input_vector() -> Vector2:
 	return _native.get_input_vector()
 
@@ -122,6 +130,18 @@ func forces() -> HapticForces:
 	if value == null:
 		_out_of_step()
 		value = HapticForces.new()
+	return value
+
+
+func input_vector_3d() -> Vector3:
+	return _native.get_input_vector_3d()
+
+
+func forces_3d() -> HapticForces3D:
+	var value: HapticForces3D = HapticForces3D.decode(_native.get_forces_3d())
+	if value == null:
+		_out_of_step()
+		value = HapticForces3D.new()
 	return value
 
 

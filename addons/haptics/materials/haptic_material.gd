@@ -8,13 +8,17 @@ extends Resource
 ## bodies such as crates) or a [code]haptic_material[/code] metadata entry (any body, set
 ## in the inspector). A [TileMapLayer]'s tiles take theirs from the TileSet's custom data
 ## layer named [code]haptic_material[/code] (type Object), per tile; an alternative tile
-## (flipped, rotated) left without one takes its base tile's. A body or tile without
-## one but with a [PhysicsMaterial] feels like [method from_physics_material] of it; anything
-## else feels like the probe's default material.
+## (flipped, rotated) left without one takes its base tile's. A [GridMap]'s cells take theirs
+## by item ([method of_grid_cell]). A body, tile or cell without one but with a
+## [PhysicsMaterial] feels like [method from_physics_material] of it; anything else feels
+## like the probe's default material.
 
 ## The custom data layer a TileSet's tiles name their material in.
 const TILE_LAYER := &"haptic_material"
 
+## The metadata a [GridMap] names its cells' materials in: a [Dictionary] from a MeshLibrary
+## item's name (or its id) to a HapticMaterial.
+const GRID_META := &"haptic_materials"
 ## The largest stiffness, friction and impact gain a material takes.
 const MAX_GAIN := HapticFrameLimits.MAX_GAIN
 
@@ -104,6 +108,21 @@ static func of_tile(tiles: TileMapLayer, cell: Vector2i) -> HapticMaterial:
 		if physics != null and data.get_collision_polygons_count(layer) > 0:
 			return from_physics_material(physics)
 	return null
+
+
+## The material of [param grid]'s cell [param cell]: its item's entry in the grid's
+## [constant GRID_META] metadata (by the item's name, else its id), else the grid's physics
+## material (mapped), else [code]null[/code].
+static func of_grid_cell(grid: GridMap, cell: Vector3i) -> HapticMaterial:
+	var item: int = grid.get_cell_item(cell)
+	var table: Variant = grid.get_meta(GRID_META, {})
+	if item != GridMap.INVALID_CELL_ITEM and table is Dictionary:
+		var by_item: Dictionary = table
+		var item_name: String = grid.mesh_library.get_item_name(item) if grid.mesh_library else ""
+		var found: Variant = by_item.get(item_name, by_item.get(item))
+		if found is HapticMaterial:
+			return found
+	return from_physics_material(grid.physics_material) if grid.physics_material != null else null
 
 
 ## A haptic material standing in for a [PhysicsMaterial] (the one mapping, documented in the

@@ -36,6 +36,7 @@ const SAME_FACE_COS := 0.999
 const Haptics := preload("res://addons/haptics/door/haptics.gd")
 const HapticBodyContacts := preload("res://addons/haptics/probe/haptic_body_contacts.gd")
 const HapticBodyShapes := preload("res://addons/haptics/probe/haptic_body_shapes.gd")
+const HapticTouches := preload("res://addons/haptics/probe/haptic_touches.gd")
 
 ## World scale: how many pixels make one metre. The rule: the gravity your body falls with
 ## (px/s²) divided by 9.81 ([method pixels_per_metre_for_gravity]), so that a fall lasting a
@@ -78,9 +79,7 @@ var _body: PhysicsBody2D = null
 var _contacts: HapticBodyContacts = null
 var _sequence: int = 0
 var _velocity_before: Vector2 = Vector2.ZERO
-# The shapes touched (keys as HapticBodyContacts names them), each with the physics frame it
-# was last touched on; kept for touch_release_s after the last touch.
-var _touching: Dictionary[String, int] = {}
+var _touches: HapticTouches = HapticTouches.new()
 var _query: PhysicsPointQueryParameters2D = PhysicsPointQueryParameters2D.new()
 
 
@@ -178,10 +177,9 @@ func build_frame() -> HapticFrame:
 			contacts.append(contact)
 		if normal.dot(Vector2.UP) > floor_normal.dot(Vector2.UP):
 			floor_normal = normal
-		if not _touching.has(key):
+		if _touches.touch(key, now):
 			_report_impact(collision, material)
-		_touching[key] = now
-	_release_touches(now)
+	_touches.release(now, touch_release_s)
 	_sequence += 1
 	var resting: Array[HapticLoad] = frame.resting
 	var room: int = HapticFrameLimits.MAX_RESTING_OBJECTS
@@ -286,15 +284,6 @@ func _new_face(faces: Array[Dictionary], collision: Dictionary) -> bool:
 			return false
 	faces.append({"id": id, "normal": normal})
 	return true
-
-
-# Forgets the shapes not touched for longer than touch_release_s: touching them again is a
-# new impact.
-func _release_touches(now: int) -> void:
-	var hold_frames: int = ceili(touch_release_s * Engine.physics_ticks_per_second)
-	for key: String in _touching.keys():
-		if now - _touching[key] > hold_frames:
-			_touching.erase(key)
 
 
 # The water volume the body is in, or null.

@@ -50,7 +50,7 @@ func buoyancy_of(body: RigidBody2D) -> float:
 	if density <= 0.0 or box.size.y <= 0.0:
 		return 0.0
 	var submerged: float = clampf((box.end.y - get_surface_y()) / box.size.y, 0.0, 1.0)
-	return submerged * density / _density_of(body)
+	return submerged * density / density_of(body)
 
 
 func _physics_process(_delta: float) -> void:
@@ -87,7 +87,8 @@ static func _bounds(body: RigidBody2D) -> Rect2:
 	return Rect2()
 
 
-static func _density_of(body: Object) -> float:
+## The density [param body] declares (a [code]density[/code] property, else metadata), else 1.
+static func density_of(body: Object) -> float:
 	var declared: Variant = body.get(&"density")
 	if declared is float and declared > 0.0:
 		return declared
