@@ -4,8 +4,8 @@ extends CharacterBody3D
 ## vector's ground part sets its acceleration, a low top speed keeps the feel close to
 ## velocity control, and pushing the stylus up (or the jump action) jumps from a floor.
 ##
-## The vector comes from the keyboard here (the arrows, relative to the camera's heading),
-## or from whoever sets [member input_vector] with [member use_keyboard] off: a
+## The vector comes from the keyboard here (the move_* actions, relative to the camera's
+## heading), or from whoever sets [member input_vector] with [member use_keyboard] off: a
 ## [HapticProbe3D] (in world space), an autopilot, a test.
 
 ## Upward input beyond this jumps from a floor.
@@ -19,7 +19,8 @@ const JUMP_INPUT := 0.6
 @export var braking: float = 10.0
 ## Take-off speed of a jump, m/s.
 @export var jump_speed: float = 4.0
-## Read the ui_* actions each tick; turn off to drive [member input_vector].
+## Read the move_* actions (and ui_accept to jump) each tick; turn off to drive
+## [member input_vector].
 @export var use_keyboard: bool = true
 ## Force with which it shoves a rigid body it walks into, newtons at full input.
 @export var push_force: float = 30.0
@@ -51,7 +52,7 @@ func _physics_process(delta: float) -> void:
 
 # The arrows on the ground, forward being away from the camera.
 func _keyboard_vector() -> Vector3:
-	var keys: Vector2 = Input.get_vector(&"ui_left", &"ui_right", &"ui_up", &"ui_down")
+	var keys: Vector2 = Input.get_vector(&"move_left", &"move_right", &"move_up", &"move_down")
 	var heading: Basis = HapticProbe3D.heading(get_viewport().get_camera_3d())
 	return heading * Vector3(keys.x, 0.0, keys.y)
 

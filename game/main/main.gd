@@ -1,7 +1,7 @@
 class_name Main
 extends Node
-## Entry scene: the main menu and the screens it leads to (Play, Haptic Battle Pong, Maze
-## study, Settings).
+## Entry scene: the main menu and the screens it leads to (Play, the 3D room, Haptic Battle
+## Pong, Maze study, Settings).
 ##
 ## After [code]--[/code] on the command line: [code]--system-check[/code] prints
 ## [method system_line] (what this installation found: the extension, the devices), shows the
@@ -15,6 +15,8 @@ const SETTINGS_SCENE: PackedScene = preload("res://game/common/ui/settings_scree
 const STUDY_SCENE: PackedScene = preload("res://game/study/session/study.tscn")
 ## One run of a level.
 const GAME_SCENE: PackedScene = preload("res://game/main/game.tscn")
+## The 3D level.
+const ROOM_3D_SCENE: PackedScene = preload("res://game/level3d/room_3d.tscn")
 ## Haptic Battle Pong.
 const PONG_SCENE: PackedScene = preload("res://game/pong/ui/pong.tscn")
 ## Networked Pong's lobby, over the Pong setup.
@@ -78,6 +80,7 @@ func get_screen() -> Node:
 func show_menu() -> void:
 	var menu: MainMenu = _switch_to(MENU_SCENE) as MainMenu
 	menu.play_requested.connect(start_game)
+	menu.room_3d_requested.connect(start_room_3d)
 	menu.pong_requested.connect(show_pong)
 	menu.maze_requested.connect(show_maze)
 	menu.settings_requested.connect(show_settings)
@@ -111,6 +114,15 @@ func start_game(pilot: GamePilot = null) -> void:
 	_switch_to_node(game)
 
 
+## Starts a run of the 3D room, steered by [param pilot] instead of the person when given.
+func start_room_3d(pilot: Room3DPilot = null) -> void:
+	var room: Room3D = ROOM_3D_SCENE.instantiate() as Room3D
+	room.pilot = pilot
+	room.menu_requested.connect(show_menu)
+	room.restart_requested.connect(start_room_3d.bind(pilot))
+	_switch_to_node(room)
+
+
 func _switch_to(scene: PackedScene) -> Node:
 	var node: Node = scene.instantiate()
 	_switch_to_node(node)
@@ -123,7 +135,7 @@ func _switch_to_node(node: Node) -> void:
 		remove_child(_screen)
 		_screen.queue_free()
 	_screen = node
-	_background.visible = not (node is Game or node is PongScreen)
+	_background.visible = not (node is Game or node is PongScreen or node is Room3D)
 	add_child(node)
 
 

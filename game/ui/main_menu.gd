@@ -1,10 +1,11 @@
 class_name MainMenu
 extends Control
-## The title screen: Play, Haptic Battle Pong, Maze study, Settings, Quit. Navigable with
-## keyboard or gamepad (the first button takes focus) and clickable with the mouse. It only
-## emits signals; the main scene decides what each one does.
+## The title screen: Play, the 3D room, Haptic Battle Pong, Maze study, Settings, Quit.
+## Navigable with keyboard or gamepad (the first button takes focus) and clickable with the
+## mouse. It only emits signals; the main scene decides what each one does.
 
 signal play_requested
+signal room_3d_requested
 signal pong_requested
 signal maze_requested
 signal settings_requested
@@ -13,6 +14,7 @@ signal quit_requested
 var _status_timer: float = 0.0
 
 @onready var play_button: Button = %PlayButton
+@onready var room_3d_button: Button = %Room3DButton
 @onready var pong_button: Button = %PongButton
 @onready var maze_button: Button = %MazeButton
 @onready var settings_button: Button = %SettingsButton
@@ -22,6 +24,7 @@ var _status_timer: float = 0.0
 
 func _ready() -> void:
 	play_button.pressed.connect(play_requested.emit)
+	room_3d_button.pressed.connect(room_3d_requested.emit)
 	pong_button.pressed.connect(pong_requested.emit)
 	maze_button.pressed.connect(maze_requested.emit)
 	settings_button.pressed.connect(settings_requested.emit)

@@ -25,6 +25,7 @@ func test_the_title_screen_comes_first_with_play_focused() -> void:
 	if not assert_not_null(menu, "the first screen is the main menu"):
 		return
 	assert_eq(menu.play_button.text, "Play")
+	assert_eq(menu.room_3d_button.text, "3D room")
 	assert_eq(menu.pong_button.text, "Haptic Battle Pong")
 	assert_eq(menu.maze_button.text, "Maze study")
 	assert_eq(menu.settings_button.text, "Settings")
@@ -35,6 +36,8 @@ func test_the_title_screen_comes_first_with_play_focused() -> void:
 
 func test_the_arrow_keys_move_the_focus_through_the_buttons() -> void:
 	var menu: MainMenu = _main.get_screen() as MainMenu
+	_press_key(KEY_DOWN)
+	assert_true(menu.room_3d_button.has_focus())
 	_press_key(KEY_DOWN)
 	assert_true(menu.pong_button.has_focus())
 	_press_key(KEY_DOWN)
