@@ -96,7 +96,7 @@ void add_user(std::vector<Job> &r_jobs, const JobPlan &p_plan) {
 	ServoOptions fixed;
 	fixed.spin_ns = ServoOptions::UNHELD_SPIN_NS; // The fixed spin the learned one replaced.
 	add("RealtimeKit, spin " + std::to_string(fixed.spin_ns / 1000) + " us fixed", fixed, true);
-	add("RealtimeKit + cpu_dma_latency (udev rule)", ServoOptions(), true, true);
+	add("RealtimeKit + cpu_dma_latency", ServoOptions(), true, true); // As the udev rule gives it.
 	if (!p_plan.user_techniques) {
 		return;
 	}

@@ -8,6 +8,7 @@
 #include <pwd.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <type_traits>
@@ -120,13 +121,15 @@ void print_user_comparison(const ConditionResult &p_result) {
 				scheduler_kind_name(s.scheduler), s.realtime_priority, s.cpu_latency_held ? ", cpu_dma_latency held" : "",
 				rtkit_outcome_name(s.realtime_kit.outcome));
 		if (s.realtime_kit.rttime_usec > 0) {
-			// RLIMIT_RTTIME counts CPU time between sleeps: the spin and the tick.
-			const double run_us = (static_cast<double>(wake_ahead_cap_ns(s.nominal_rate_hz, s.realtime_kit.rttime_usec)) /
-										   1000.0 +
-					s.tick_cost_max_s * US);
-			std::printf("  %-46s longest run without sleeping <= %.0f us (the most the spin may grow to + slowest tick) of "
-						"RLIMIT_RTTIME %.0f ms: x%.0f headroom\n",
-					"", run_us, static_cast<double>(s.realtime_kit.rttime_usec) / 1000.0,
+			// RLIMIT_RTTIME counts CPU time between sleeps: the spin (at most its cap, when
+			// learned) and the tick.
+			const int64_t spin_ns = s.spin_learned ? wake_ahead_cap_ns(s.nominal_rate_hz, s.realtime_kit.rttime_usec)
+												   : std::llround(s.spin_s * 1e9);
+			const double run_us = static_cast<double>(spin_ns) / 1000.0 + s.tick_cost_max_s * US;
+			std::printf("  %-46s longest run without sleeping <= %.0f us (%s + slowest tick) of RLIMIT_RTTIME %.0f ms: "
+						"x%.0f headroom\n",
+					"", run_us, s.spin_learned ? "the most the learned spin may grow to" : "the spin",
+					static_cast<double>(s.realtime_kit.rttime_usec) / 1000.0,
 					static_cast<double>(s.realtime_kit.rttime_usec) / run_us);
 		}
 	}
