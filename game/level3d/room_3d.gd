@@ -29,7 +29,7 @@ const PATH: Array[Vector3] = [
 	Vector3(5.0, 0.0, -4.0),
 ]
 ## The camera's place behind and above the explorer.
-const CAMERA_OFFSET := Vector3(0.0, 4.5, 6.5)
+const CAMERA_OFFSET := Vector3(0.0, 6.0, 5.0)
 
 ## The avatar.
 var explorer: Explorer = null

@@ -34,7 +34,8 @@ Frame wall_in_front() {
 // A 2-axis stick: the simulated device's x and y, its force as last written.
 class Stick final : public HapticDevice {
 public:
-	explicit Stick(const SimulatedDeviceConfig &p_config) : inner_(p_config) {}
+	explicit Stick(const SimulatedDeviceConfig &p_config) :
+			inner_(p_config) {}
 
 	Status open() override { return inner_.open(); }
 	void close() override { inner_.close(); }

@@ -35,7 +35,9 @@ concept SchemaValue = requires {
 // A value with a 3D form (its schema's gd3): the same fields under SCHEMA_ID_3D, its game
 // vectors as a 3D game's (GameSpace::SPACE).
 template <typename T>
-concept HasSpaceForm = SchemaValue<T> && requires { T::SCHEMA_ID_3D; };
+concept HasSpaceForm = SchemaValue<T> && requires {
+	T::SCHEMA_ID_3D;
+};
 
 namespace wire_detail {
 
