@@ -36,6 +36,8 @@ func _ready() -> void:
 
 func _notification(what: int) -> void:
 	if what == NOTIFICATION_WM_CLOSE_REQUEST:
+		# One line in the log: whether a close that seemed to do nothing ever reached the game.
+		print("CleanExit: the window manager asked the game to close")
 		quit(0)
 	elif what == NOTIFICATION_WM_WINDOW_FOCUS_OUT or what == NOTIFICATION_WM_MOUSE_EXIT:
 		_gone_checks_left = GONE_CHECK_FRAMES

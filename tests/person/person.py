@@ -33,6 +33,8 @@ SCREEN = (1280, 720)
 START_PATIENCE_S = 90.0
 FIND_PATIENCE_S = 30.0
 EXIT_PATIENCE_S = 30.0
+# A window that takes no notice of Alt+F4 for this long gets a second press, as from a player.
+NOTICE_S = 10.0
 # What fails every run when the game prints it: an engine or script error, or an X error.
 ERROR_LINE = re.compile(r"^(ERROR|SCRIPT ERROR)|BadWindow|BadDrawable|X Error")
 
@@ -269,18 +271,31 @@ class Person:
                 self._x("keydown", key)
         self._held = set(keys)
 
-    def close_window(self) -> None:
+    def close_window(self, game: "Game") -> None:
         """Closes the game's window as a player does on this desktop: the window manager's
-        close shortcut (Alt+F4 in openbox), which asks the game to close (WM_DELETE_WINDOW)."""
+        close shortcut (Alt+F4 in openbox), which asks the game to close (WM_DELETE_WINDOW).
+        Like a player, it first brings the game's window to the front when another has the
+        keyboard (said on the output: it should not happen)."""
+        windows = game.windows()
+        if windows and self._focused() not in windows:
+            print(f"person: the game's window had no keyboard focus ({self._focused()}): clicked it")
+            self._x("windowactivate", "--sync", windows[0])
         self.press("alt+F4")
 
     def close_and_see_it_exit(self, game: "Game") -> float:
         """Closes the game's window and waits for the game to end by itself, with exit code 0;
-        returns how long that took. A failure says whether the window was still there (the
-        close never reached the game) or gone (the game hung while quitting)."""
+        returns how long that took. A window that takes no notice in NOTICE_S gets a second
+        Alt+F4, as a player would give it (said on the output). A failure says whether the
+        window was still there (the close never reached the game) or gone (the game hung while
+        quitting)."""
         closing = time.monotonic()
-        self.close_window()
-        code = game.wait_exit()
+        self.close_window(game)
+        code = game.wait_exit(NOTICE_S)
+        if code is None and game.has_window():
+            print(f"person: the window was still up {NOTICE_S:.0f} s after Alt+F4: pressed it again")
+            self.close_window(game)
+        if code is None:
+            code = game.wait_exit(EXIT_PATIENCE_S - NOTICE_S)
         took = time.monotonic() - closing
         if code is None:
             shot = self.screenshot("still-running")
@@ -289,6 +304,11 @@ class Person:
                                  f"{where} (last screen: {shot})")
         assert code == 0, f"the game exited with {code} after its window closed"
         return took
+
+    def _focused(self) -> str:
+        found = subprocess.run(["xdotool", "getwindowfocus"], env=self.display.env(),
+                               capture_output=True, text=True, timeout=30)
+        return found.stdout.strip()
 
 
 class Game:
@@ -321,7 +341,7 @@ class Game:
     def error_lines(self) -> list[str]:
         return [line for line in self.output().splitlines() if ERROR_LINE.search(line)]
 
-    def _windows(self) -> list[str]:
+    def windows(self) -> list[str]:
         assert self.proc is not None
         found = subprocess.run(["xdotool", "search", "--onlyvisible", "--pid", str(self.proc.pid)],
                                env=self.display.env(), capture_output=True, text=True, timeout=30)
@@ -330,13 +350,13 @@ class Game:
     def has_window(self) -> bool:
         """Whether a window of the game's process is on the display (asked of X, as a window
         list would)."""
-        return bool(self._windows())
+        return bool(self.windows())
 
     def window_titles(self) -> list[str]:
         """The titles of the game's windows, as the title bar and the task list show them."""
         return [subprocess.run(["xdotool", "getwindowname", w], env=self.display.env(),
                                capture_output=True, text=True, timeout=30).stdout.strip()
-                for w in self._windows()]
+                for w in self.windows()]
 
     def running(self) -> bool:
         return self.proc is not None and self.proc.poll() is None
