@@ -55,11 +55,19 @@ func platform(at: Vector3) -> AnimatableBody3D:
 	return body
 
 
-## An [Explorer] (a CharacterBody3D, keyboard off) with a probe on [param door], at [param at].
-func walker(door: HapticsTestKit.Door, at: Vector3) -> Explorer:
+## An [Explorer] (a CharacterBody3D, keyboard off) with a probe on [param door], at [param at]:
+## a sphere, or with [param capsule] a capsule 1 m tall, as most 3D games' players are.
+func walker(door: HapticsTestKit.Door, at: Vector3, capsule: bool = false) -> Explorer:
 	var body: Explorer = Explorer.new()
 	body.use_keyboard = false
-	_sphere_on(body)
+	if capsule:
+		var shape: CollisionShape3D = CollisionShape3D.new()
+		shape.shape = CapsuleShape3D.new()
+		(shape.shape as CapsuleShape3D).radius = RADIUS
+		(shape.shape as CapsuleShape3D).height = 1.0
+		body.add_child(shape)
+	else:
+		_sphere_on(body)
 	body.position = at
 	_probe_on(body, door)
 	add_child(body)

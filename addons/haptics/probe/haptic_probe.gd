@@ -177,7 +177,8 @@ func build_frame() -> HapticFrame:
 			contacts.append(contact)
 		if normal.dot(Vector2.UP) > floor_normal.dot(Vector2.UP):
 			floor_normal = normal
-		if _touches.touch(key, now):
+		var id: int = collision["id"]
+		if _touches.touch(key, now, id, Vector3(normal.x, normal.y, 0.0)):
 			_report_impact(collision, material)
 	_touches.release(now, touch_release_s)
 	_sequence += 1

@@ -179,7 +179,7 @@ func build_frame() -> HapticFrame3D:
 			frame.contacts.append(contact)
 		if normal.dot(Vector3.UP) > floor_normal.dot(Vector3.UP):
 			floor_normal = normal
-		if _touches.touch(key, now):
+		if _touches.touch(key, now, collision["id"], normal):
 			_report_impact(collision, material, to_view)
 	_touches.release(now, touch_release_s)
 	var room: int = HapticFrameLimits.MAX_RESTING_OBJECTS
