@@ -41,17 +41,23 @@ bool WakeAhead::observe(int64_t p_slept_at_ns, int64_t p_target_ns, int64_t p_wo
 }
 
 bool WakeAhead::update() {
-	// The smallest bin at or below which WAKE_AHEAD_QUANTILE of the window lies, found from the
-	// top: the tail is short, so the scan stops early.
-	const auto rank = static_cast<uint32_t>(std::ceil(WAKE_AHEAD_QUANTILE * static_cast<double>(WAKE_AHEAD_WINDOW)));
-	uint32_t above = 0;
-	size_t bin = BINS - 1;
-	while (bin > 0 && WAKE_AHEAD_WINDOW - above - counts_[bin] >= rank) {
-		above += counts_[bin];
-		--bin;
+	// Wake-ups later than the largest wake-ahead (the last bin) are stalls no spin covers:
+	// spinning for them costs a core and saves nothing, so the quantile is of the others.
+	const uint32_t coverable = static_cast<uint32_t>(WAKE_AHEAD_WINDOW) - counts_[BINS - 1];
+	int64_t wanted = floor_ns_;
+	if (coverable > 0) {
+		// The smallest bin at or below which WAKE_AHEAD_QUANTILE of them lies, found from the
+		// top: the tail is short, so the scan stops early.
+		const auto rank = static_cast<uint32_t>(std::ceil(WAKE_AHEAD_QUANTILE * static_cast<double>(coverable)));
+		uint32_t above = 0;
+		size_t bin = BINS - 2;
+		while (bin > 0 && coverable - above - counts_[bin] >= rank) {
+			above += counts_[bin];
+			--bin;
+		}
+		// The bin's upper edge: every wake-up in it is covered.
+		wanted = std::clamp<int64_t>((static_cast<int64_t>(bin) + 1) * BIN_NS, floor_ns_, cap_ns_);
 	}
-	// The bin's upper edge: every wake-up in it is covered.
-	const int64_t wanted = std::clamp<int64_t>((static_cast<int64_t>(bin) + 1) * BIN_NS, floor_ns_, cap_ns_);
 	const bool changed = wanted != ahead_ns_;
 	ahead_ns_ = wanted;
 	return changed;

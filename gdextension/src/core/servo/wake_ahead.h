@@ -6,7 +6,8 @@
 // own recent wake-ups cost (WAKE_AHEAD_QUANTILE of their lateness over the last
 // WAKE_AHEAD_WINDOW sleeps) and spins the rest of the way to its deadline. An idle machine, whose
 // wake-ups are slow, is also one whose CPU is free to spin; under load the wake-ups come
-// promptly and the spin shrinks to WAKE_AHEAD_MIN_NS.
+// promptly and the spin shrinks to WAKE_AHEAD_MIN_NS. Wake-ups later than WAKE_AHEAD_MAX_NS are
+// stalls no spin covers (a loaded machine's): they are left out of the quantile.
 //
 // Pure logic: the loop tells it when each sleep began, what it asked for and when it woke.
 // Fixed-size (a ring of the window's bins and a histogram of 1 us bins): no allocation, and
