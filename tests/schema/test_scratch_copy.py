@@ -149,6 +149,9 @@ def test_the_generator_wrote_only_what_the_changes_ask_for(scratch):
         "gdextension/src/core/render/frame.gen.h",
         "addons/haptics/values/haptic_contact.gd",
         "addons/haptics/values/haptic_frame.gd",  # its layout id: it holds contacts
+        # And their 3D forms (gd3), the same fields as 3D game vectors.
+        "addons/haptics/values/haptic_contact_3d.gd",
+        "addons/haptics/values/haptic_frame_3d.gd",
         "gdextension/src/renderers/spring/spring.gen.h",
         "game/spring/spring_settings.gd", "game/spring/spring_settings.gd.uid",
         "game/spring/spring_facts.gd", "game/spring/spring_facts.gd.uid",
