@@ -10,11 +10,13 @@
 
 #include "dev_tools/gadget/hid_gadget.h"
 #include "dev_tools/uhid/pid_uhid.h"
+#include "devices/evdev/evdev_ff.h"
 #include "rig.h"
 #include "scenarios.h"
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <numbers>
 #include <thread>
@@ -78,6 +80,33 @@ bool press_into_floor(Report &r_report, pid::ScriptedPidJoystick &p_joystick, Ha
 	return same_force(r_report, servo, pid_wire_n(p_joystick, r_max_force_n), 0.03 * r_max_force_n, p_when);
 }
 
+// On the kernel's path: the force held past one effect's length is still what the firmware
+// renders, and the Duration it was given is finite. hid-pidff before 6.15 passes ff.rst's
+// "infinite" length 0 on as Duration 0, which AJ's firmware ends at once (issue 38, item 4).
+void held_past_one_length(Report &r_report, pid::ScriptedPidJoystick &p_joystick, HapticsSystem &r_system,
+		double p_max_force_n, const std::string &p_when) {
+	stand_on_floor(r_system, 2.0 * evdev::CONSTANT_EFFECT_LENGTH_MS / 1000.0);
+	uint16_t duration = 0;
+	bool infinite = false;
+	for (uint8_t block = 1; block <= pid::ScriptedPidJoystick::MAX_EFFECTS; ++block) {
+		const pid::ScriptedEffect effect = p_joystick.effect(block);
+		if (effect.allocated && effect.playing) {
+			duration = effect.duration;
+			infinite = effect.duration_infinite;
+		}
+	}
+	r_report.info(p_when + ": the playing effect's Duration is " + std::to_string(duration) + (infinite ? " (infinite)" : " ms"));
+	r_report.check(duration != 0 || infinite, p_when + ": the Duration the firmware got is not 0");
+	const pid::ScriptedForce held = p_joystick.rendered_force();
+	const Vec3 servo = r_system.forces().total;
+	char text[160];
+	std::snprintf(text, sizeof(text), "%s: after %.1f s the firmware renders (%.3f, %.3f) of full force, the servo (%.3f, %.3f) N",
+			p_when.c_str(), 2.0 * evdev::CONSTANT_EFFECT_LENGTH_MS / 1000.0, held.x, held.y, servo.x, servo.y);
+	r_report.info(text);
+	r_report.check(held.playing_effects > 0 && std::hypot(held.x, held.y) * p_max_force_n > 0.5 * length(servo),
+			p_when + ": the held force is still rendered past one effect's length");
+}
+
 // The stick swept in a circle for p_seconds, the servo's force changing every tick, then
 // held: the force on the wire must be the servo's last.
 void burst(Report &r_report, pid::ScriptedPidJoystick &p_joystick, HapticsSystem &r_system, double p_max_force_n,
@@ -127,6 +156,7 @@ void run_stick(Report &r_report, pid::ScriptedFirmware p_firmware, bool p_kernel
 	double max_force_n = 0.0;
 	if (choose(r_report, p_kernel_owns, info, p_label) &&
 			press_into_floor(r_report, *joystick, system, info, max_force_n, p_label) && p_kernel_owns) {
+		held_past_one_length(r_report, *joystick, system, max_force_n, p_label + ", held");
 		burst(r_report, *joystick, system, max_force_n, p_label + ", burst");
 	}
 	(void)stick.unplug();

@@ -18,7 +18,7 @@ using namespace haptics::evdev;
 // struct ff_effect for FF_CONSTANT: type 0x52 @0, id @2, direction @4, replay.length @10,
 // level @16; everything else zero (docs/devices/evdev.md).
 inline std::vector<uint8_t> expected_constant_effect(int16_t p_id, uint16_t p_direction, int16_t p_level,
-		uint16_t p_length_ms = 0) {
+		uint16_t p_length_ms = CONSTANT_EFFECT_LENGTH_MS) {
 	std::vector<uint8_t> bytes(48, 0);
 	bytes[0] = 0x52;
 	bytes[2] = static_cast<uint8_t>(static_cast<uint16_t>(p_id) & 0xff);

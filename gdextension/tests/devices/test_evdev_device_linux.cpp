@@ -97,6 +97,34 @@ TEST_CASE("evdev device: a servo force reaches the firmware model - the stick re
 	CHECK(state.ready);
 }
 
+TEST_CASE("evdev device: a held force is a finite effect played again before it ends") {
+	// hid-pidff before 6.15 hands a length of 0 to the device's Duration, which firmwares read
+	// as over at once: the effect lasts CONSTANT_EFFECT_LENGTH_MS and is renewed in time.
+	auto kernel = std::make_shared<ScriptedEvdevKernel>();
+	auto device = make_scripted_device(kernel);
+	REQUIRE(device->open().ok());
+	REQUIRE(device->write_force({ Vec3(1.0, 0.0, 0.0), {} }) == DeviceIo::OK);
+	REQUIRE(evdev_test::wait_until([&] { return kernel->rendered().axis_x > 0.19; }));
+	kernel->clear_calls();
+	const auto plays = [&] {
+		size_t count = 0;
+		for (const ScriptedEvdevCall &call : evdev_test::ff_calls(kernel->calls())) {
+			// A play: {EV_FF, the effect's id, 1}.
+			const bool play = call.kind == Kind::WRITE && call.bytes == evdev_test::expected_event(EVDEV_EV_FF, call.bytes[18], 1);
+			count += play ? 1 : 0;
+		}
+		return count;
+	};
+	// Three renewals take 0.75 s of the device's clock; a loaded machine gets 5 s.
+	CHECK(evdev_test::wait_until([&] { return plays() >= 3; }, 5.0));
+	for (const ScriptedEvdevCall &call : kernel->calls()) {
+		if (call.kind == Kind::IOCTL && call.request == EVDEV_EVIOCSFF) {
+			CHECK(call.bytes[10] + 256 * call.bytes[11] == CONSTANT_EFFECT_LENGTH_MS);
+		}
+	}
+	device->close();
+}
+
 TEST_CASE("evdev device: the stick's position at open comes from EVIOCGABS (no event needed)") {
 	auto kernel = std::make_shared<ScriptedEvdevKernel>();
 	kernel->set_stick_axes(1.0, -1.0); // Before anyone opened: only EVIOCGABS knows.

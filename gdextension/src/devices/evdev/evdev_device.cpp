@@ -93,6 +93,7 @@ Status EvdevDevice::open() {
 	exchange_.reset(state_from_input());
 	report_interval_s_ = output_report_interval_s(config_.path, config_.sysfs_root);
 	since_update_s_ = 0.0;
+	since_play_s_ = 0.0;
 	hold_s_ = 0.0;
 	DeviceIoThreadOptions options;
 	options.rate_hz = config_.rate_hz;
@@ -272,6 +273,14 @@ DeviceIo EvdevDevice::io_cycle(DeviceExchange &r_exchange, double p_dt_s) {
 			}
 			hold_s_ = update_hold_s(before, wanted, report_interval_s_);
 			since_update_s_ = 0.0;
+		}
+		since_play_s_ += p_dt_s;
+		if (since_play_s_ >= CONSTANT_EFFECT_RENEW_S) {
+			const int renewed = effect_.renew();
+			if (renewed < 0) {
+				return fail(r_exchange, renewed, "renewing the force");
+			}
+			since_play_s_ = 0.0;
 		}
 	}
 	const int result = drain_input_events(*sys_, fd_, input_, read_buffer_);

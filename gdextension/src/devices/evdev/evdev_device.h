@@ -117,6 +117,7 @@ private:
 	double report_interval_s_ = 0.0; // Of the interrupt OUT endpoint, read at open.
 	double since_update_s_ = 0.0;
 	double hold_s_ = 0.0; // Until the device has drained the last update.
+	double since_play_s_ = 0.0; // Since the constant force was last played (renewed).
 	EvdevRumble rumble_;
 	EvdevInputDecoder input_;
 	uint8_t read_buffer_[INPUT_READ_BUFFER_SIZE] = {};

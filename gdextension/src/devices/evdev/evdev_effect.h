@@ -5,11 +5,13 @@
 //
 //   start:  write {EV_FF, FF_GAIN, 0xFFFF}        if the driver offers FF_GAIN
 //           write {EV_FF, FF_AUTOCENTER, 0}        if it offers FF_AUTOCENTER
-//           EVIOCSFF {FF_CONSTANT, id -1, level 0, length 0 = infinite} -> the kernel's id
+//           EVIOCSFF {FF_CONSTANT, id -1, level 0, length CONSTANT_EFFECT_LENGTH_MS}
 //           write {EV_FF, id, 1}                   play (value = repeat count)
 //   update: EVIOCSFF with the SAME id, only when the quantised (direction, level) changed;
 //           a playing effect is updated in place ("normally not stopped and restarted"),
 //           so an update is one ioctl and no re-play.
+//   renew:  write {EV_FF, id, 1} every CONSTANT_EFFECT_RENEW_S, so the finite effect never
+//           reaches its end (evdev_ff.h says why it is finite).
 //   stop:   EVIOCSFF level 0, write {EV_FF, id, 0}, EVIOCRMFF id.
 //
 // Why gain 0xFFFF: gain is device-wide and scales every level, and our level is computed
@@ -74,6 +76,9 @@ public:
 	// One EVIOCSFF with the started id when p_force differs from what the device renders;
 	// 0, or -errno (the device keeps the previous force).
 	int update(const FfConstantForce &p_force);
+	// Plays the effect again before its finite length ends (CONSTANT_EFFECT_RENEW_S): 0 or
+	// -errno.
+	int renew() { return slot_.replay(); }
 	// Best effort, idempotent: zero, stop, erase; returns the first error (0 if none).
 	int stop_and_erase();
 

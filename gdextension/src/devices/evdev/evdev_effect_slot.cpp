@@ -46,6 +46,10 @@ int EvdevEffectSlot::upload() {
 	return started_ ? send_upload() : -EBADF;
 }
 
+int EvdevEffectSlot::replay() {
+	return started_ ? write_event(static_cast<uint16_t>(id_), 1) : -EBADF;
+}
+
 int EvdevEffectSlot::send_upload() {
 	put_u16(bytes_.data(), FF_EFFECT_ID_OFFSET, static_cast<uint16_t>(id_));
 	const int result = sys_->ioctl(fd_, EVDEV_EVIOCSFF, bytes_.data());

@@ -28,6 +28,8 @@ public:
 			const char *p_what, const char *p_path);
 	// EVIOCSFF of bytes() with the started id: 0 or -errno.
 	int upload();
+	// Plays the started effect again from its start (its length counts anew): 0 or -errno.
+	int replay();
 	// Best effort, idempotent: stop, erase; returns p_first_error if it is one, else the
 	// first error of these (0 if none). The caller zeroes its effect first.
 	int stop_and_erase(int p_first_error = 0);

@@ -29,11 +29,18 @@
 
 namespace haptics::evdev {
 
+// How long an uploaded constant force lasts, and how often it is played again before it ends.
+// Not 0 (ff.rst's "infinite"): hid-pidff before Linux 6.15 hands 0 to the device's Duration,
+// which PID firmwares read as "ends at once" (docs/devices/evdev.md, "Finite effects"); a
+// finite effect renewed in time works on every kernel, and one left behind stops by itself.
+inline constexpr uint16_t CONSTANT_EFFECT_LENGTH_MS = 1000;
+inline constexpr double CONSTANT_EFFECT_RENEW_S = 0.25;
+
 struct FfConstantEffect {
 	int16_t id = -1; // -1: the kernel allocates one at upload and writes it back.
 	uint16_t direction = 0;
 	int16_t level = 0;
-	uint16_t replay_length_ms = 0; // 0 = infinite (ff.rst).
+	uint16_t replay_length_ms = CONSTANT_EFFECT_LENGTH_MS; // 0 would be infinite (ff.rst).
 	uint16_t replay_delay_ms = 0;
 };
 
