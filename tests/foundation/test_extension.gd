@@ -101,3 +101,16 @@ func test_enumeration_warnings_are_sentences() -> void:
 		return
 	for warning: String in list.warnings:
 		assert_ne(warning, "", "a warning says something")
+
+
+func test_device_open_options_cross_typed_and_a_bad_value_is_refused() -> void:
+	var server: HapticsSystem = HapticsSystem.new()
+	var options: HapticDeviceOpenOptions = HapticDeviceOpenOptions.new()
+	assert_false(options.take_gain, "the player's gain is left alone by default")
+	assert_true(options.spring_off, "the centring spring is turned off by default")
+	options.take_gain = true
+	assert_true(server.set_device_open_options(options.encode()))
+	var other: PackedByteArray = HapticDeviceCapabilities.new().encode()
+	expect_error("set_device_open_options")
+	assert_false(server.set_device_open_options(other), "another value's bytes")
+	assert_true(server.open_device("simulated"), "the options stay usable")

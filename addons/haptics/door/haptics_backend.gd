@@ -27,7 +27,8 @@ func simulated_device_id() -> String:
 	return ""
 
 
-func open_device(_id: String) -> bool:
+## [param _options]: what the open may change on the device (its gain, its centring spring).
+func open_device(_id: String, _options: HapticDeviceOpenOptions) -> bool:
 	return false
 
 

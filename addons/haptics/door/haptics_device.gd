@@ -43,12 +43,16 @@ func get_simulated_id() -> String:
 
 
 ## Opens the device with this id and keeps rendering if the servo was. On failure the
-## current device stays open.
-func open(id: String) -> bool:
+## current device stays open. [param options] says what the open may change on the device
+## (null: the defaults: the player's gain left alone, the centring spring turned off).
+func open(id: String, options: HapticDeviceOpenOptions = null) -> bool:
 	if not _backend.is_native():
 		return false
 	var was_running: bool = _servo.is_running()
-	var opened: bool = _backend.open_device(id)
+	var asked: HapticDeviceOpenOptions = (
+		options if options != null else HapticDeviceOpenOptions.new()
+	)
+	var opened: bool = _backend.open_device(id, asked)
 	if opened and was_running:
 		_servo.start()
 	changed.emit()

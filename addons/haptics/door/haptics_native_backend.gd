@@ -31,8 +31,8 @@ func simulated_device_id() -> String:
 	return _native.get_simulated_device_id()
 
 
-func open_device(id: String) -> bool:
-	return _native.open_device(id)
+func open_device(id: String, options: HapticDeviceOpenOptions) -> bool:
+	return _native.set_device_open_options(options.encode()) and _native.open_device(id)
 
 
 func close_device() -> void:

@@ -37,6 +37,7 @@ void SystemObject::bind_methods(gd::ClassBinder<SystemObject> &r_binder) {
 	r_binder.bind_method("list_devices", &S::list_devices);
 	r_binder.bind_method("get_simulated_device_id", &S::get_simulated_device_id);
 	r_binder.bind_method("open_device", &S::open_device, { "id" });
+	r_binder.bind_method("set_device_open_options", &S::set_device_open_options, { "options" });
 	r_binder.bind_method("close_device", &S::close_device);
 	r_binder.bind_method("get_device_id", &S::get_device_id);
 	r_binder.bind_method("get_device_name", &S::get_device_name);

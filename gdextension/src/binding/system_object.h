@@ -14,6 +14,7 @@
 
 #include "binding/class_db.h"
 #include "binding/containers.h"
+#include "system/device_open.gen.h"
 #include "system/haptics_system.h"
 
 namespace haptics::binding {
@@ -32,6 +33,9 @@ public:
 	// Opens a device by id (get_simulated_device_id(), or an id from list_devices()). On
 	// failure the current device stays open and rendering is untouched.
 	bool open_device(const std::string &p_id);
+	// A HapticDeviceOpenOptions: what the next open_device may change on the device. A refused
+	// one is reported and leaves the options as they were.
+	bool set_device_open_options(const gd::PackedByteArray &p_options);
 	void close_device();
 	std::string get_device_id() const;
 	std::string get_device_name() const;
@@ -116,6 +120,7 @@ private:
 	HapticsSystem system_;
 	std::string device_id_;
 	gd::Vector3 hand_target_;
+	DeviceOpenOptions open_options_;
 };
 
 } // namespace haptics::binding

@@ -32,7 +32,7 @@ bool SystemObject::open_device(const std::string &p_id) {
 			continue;
 		}
 		std::unique_ptr<HapticDevice> opened;
-		const Status status = open_listed_device(device, DeviceOpenOptions{}, opened);
+		const Status status = open_listed_device(device, open_options_, opened);
 		if (!status) {
 			HAPTICS_ERROR("open_device: " + std::string(status.message()) + "; the current device stays open.");
 			return false;
@@ -46,6 +46,10 @@ bool SystemObject::open_device(const std::string &p_id) {
 	}
 	HAPTICS_ERROR("open_device: no device with id '" + p_id + "'; the current device stays open.");
 	return false;
+}
+
+bool SystemObject::set_device_open_options(const gd::PackedByteArray &p_options) {
+	return decode_argument("set_device_open_options", p_options, open_options_);
 }
 
 void SystemObject::close_device() {

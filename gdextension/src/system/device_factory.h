@@ -13,6 +13,7 @@
 #include "core/device/device.h"
 #include "devices/device_enumeration.h"
 #include "devices/device_info.h"
+#include "system/device_open.gen.h"
 
 #include <memory>
 #include <span>
@@ -21,12 +22,6 @@
 #include <vector>
 
 namespace haptics {
-
-// Settings the player gives for devices that need something from their own install.
-struct DeviceOpenOptions {
-	// Novint's firmware image for the Falcon (not ours to ship); "" = $HAPTICS_FALCON_FIRMWARE.
-	std::string falcon_firmware_path;
-};
 
 // Devices the factory's own backends do not find on a bus: their own backend name
 // (DeviceInfo::backend), what they offer now, and how each is probed and opened.

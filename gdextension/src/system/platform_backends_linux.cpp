@@ -2,13 +2,14 @@
 
 #include "devices/evdev/evdev_backend.h"
 #include "devices/evdev/evdev_enumeration.h"
+#include "system/device_open.gen.h"
 
 namespace haptics {
 
 namespace {
 
-Status open_evdev(const DeviceInfo &p_info, const DeviceOpenOptions &, std::unique_ptr<HapticDevice> &r_device) {
-	return evdev::open_device(p_info, r_device);
+Status open_evdev(const DeviceInfo &p_info, const DeviceOpenOptions &p_options, std::unique_ptr<HapticDevice> &r_device) {
+	return evdev::open_device(p_info, r_device, evdev::EvdevTakeover{ p_options.take_gain, p_options.spring_off });
 }
 
 // When the kernel's PID driver is bound to a HID stick the hid-pid row says so, and this

@@ -27,14 +27,15 @@ struct Started {
 
 // Opens the script's node, reads its features and starts the effect; the record is then
 // cleared so each test sees only what it caused.
-void start(Started &r_started, ScriptedEvdevScript p_script = scripted_joystick_script()) {
+void start(Started &r_started, ScriptedEvdevScript p_script = scripted_joystick_script(),
+		const EvdevTakeover &p_takeover = {}) {
 	r_started.kernel = std::make_shared<ScriptedEvdevKernel>(std::move(p_script));
 	ScriptedEvdevKernel &kernel = *r_started.kernel;
 	r_started.fd = kernel.open_device(kernel.script().path.c_str());
 	REQUIRE(r_started.fd >= 0);
 	REQUIRE(query_ff_features(kernel, r_started.fd, "/dev/input/event7", r_started.features).ok());
 	kernel.clear_calls();
-	const Status status = r_started.effect.start(kernel, r_started.fd, r_started.features, "/dev/input/event7");
+	const Status status = r_started.effect.start(kernel, r_started.fd, r_started.features, "/dev/input/event7", p_takeover);
 	REQUIRE_MESSAGE(status.ok(), status.message());
 }
 
@@ -62,14 +63,25 @@ TEST_CASE("evdev sequence: features of the PID joystick (constant, gain, no auto
 	CHECK(s.features.max_effects == 10);
 }
 
-TEST_CASE("evdev sequence: start = gain 0xFFFF, upload id -1 level 0, play id 1 (no autocentre offered)") {
+TEST_CASE("evdev sequence: start = upload id -1 level 0, play id 1; the player's gain is left alone") {
 	Started s;
 	start(s);
+	const auto calls = evdev_test::ff_calls(s.kernel->calls());
+	REQUIRE(calls.size() == 2);
+	check_upload(calls[0], -1, 0, 0);
+	check_write(calls[1], 0, 1); // The kernel gave id 0.
+	CHECK(s.effect.id() == 0);
+	CHECK(s.kernel->autocenter() == -1);
+}
+
+TEST_CASE("evdev sequence: a game that takes the gain sets it to 0xFFFF first (no autocentre offered)") {
+	Started s;
+	start(s, scripted_joystick_script(), EvdevTakeover{ true, true });
 	const auto calls = evdev_test::ff_calls(s.kernel->calls());
 	REQUIRE(calls.size() == 3);
 	check_write(calls[0], 0x60, 0xffff);
 	check_upload(calls[1], -1, 0, 0);
-	check_write(calls[2], 0, 1); // The kernel gave id 0.
+	check_write(calls[2], 0, 1);
 	CHECK(s.effect.id() == 0);
 	CHECK(s.kernel->effects_in_use() == 1);
 	CHECK(s.kernel->rendered().playing == 1);
@@ -81,12 +93,20 @@ TEST_CASE("evdev sequence: a wheel offering FF_AUTOCENTER gets autocentre 0 befo
 	Started s;
 	start(s, scripted_wheel_script());
 	const auto calls = evdev_test::ff_calls(s.kernel->calls());
-	REQUIRE(calls.size() == 4);
-	check_write(calls[0], 0x60, 0xffff);
-	check_write(calls[1], 0x61, 0);
-	check_upload(calls[2], -1, 0, 0);
-	check_write(calls[3], 0, 1);
+	REQUIRE(calls.size() == 3);
+	check_write(calls[0], 0x61, 0);
+	check_upload(calls[1], -1, 0, 0);
+	check_write(calls[2], 0, 1);
 	CHECK(s.kernel->autocenter() == 0);
+}
+
+TEST_CASE("evdev sequence: a game that keeps the centring spring leaves the wheel's autocentre alone") {
+	Started s;
+	start(s, scripted_wheel_script(), EvdevTakeover{ false, false });
+	const auto calls = evdev_test::ff_calls(s.kernel->calls());
+	REQUIRE(calls.size() == 2);
+	check_upload(calls[0], -1, 0, 0);
+	CHECK(s.kernel->autocenter() == -1);
 }
 
 TEST_CASE("evdev sequence: the id the kernel writes back is used for play, updates and erase") {
@@ -108,13 +128,13 @@ TEST_CASE("evdev sequence: the id the kernel writes back is used for play, updat
 	REQUIRE(s.effect.update({ 0x4000, 0x1000 }) == 0);
 	REQUIRE(s.effect.stop_and_erase() == 0);
 	const auto calls = evdev_test::ff_calls(s.kernel->calls());
-	REQUIRE(calls.size() == 7);
-	check_write(calls[2], 2, 1);
-	check_upload(calls[3], 2, 0x4000, 0x1000);
-	check_upload(calls[4], 2, 0, 0);
-	check_write(calls[5], 2, 0);
-	CHECK(calls[6].request == 0x40044581u);
-	CHECK(calls[6].bytes == evdev_test::int_bytes(2));
+	REQUIRE(calls.size() == 6);
+	check_write(calls[1], 2, 1);
+	check_upload(calls[2], 2, 0x4000, 0x1000);
+	check_upload(calls[3], 2, 0, 0);
+	check_write(calls[4], 2, 0);
+	CHECK(calls[5].request == 0x40044581u);
+	CHECK(calls[5].bytes == evdev_test::int_bytes(2));
 	CHECK(s.kernel->effects_in_use() == 2); // The other client's stay.
 }
 

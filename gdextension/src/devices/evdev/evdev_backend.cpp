@@ -45,12 +45,14 @@ EvdevDeviceConfig device_config_for(const DeviceInfo &p_info) {
 }
 
 Status open_device(const DeviceInfo &p_info, const std::shared_ptr<EvdevSyscalls> &p_sys,
-		std::unique_ptr<HapticDevice> &r_device) {
+		std::unique_ptr<HapticDevice> &r_device, const EvdevTakeover &p_takeover) {
 	if (p_info.backend != BACKEND_EVDEV) {
 		return Status::error(StatusCode::INVALID_ARGUMENT, "device '%s' belongs to backend '%s', not evdev",
 				p_info.id.c_str(), p_info.backend.c_str());
 	}
-	auto device = std::make_unique<EvdevDevice>(p_sys, device_config_for(p_info));
+	EvdevDeviceConfig config = device_config_for(p_info);
+	config.takeover = p_takeover;
+	auto device = std::make_unique<EvdevDevice>(p_sys, config);
 	const Status opened = device->open();
 	if (!opened) {
 		return opened;
@@ -59,8 +61,8 @@ Status open_device(const DeviceInfo &p_info, const std::shared_ptr<EvdevSyscalls
 	return Status::success();
 }
 
-Status open_device(const DeviceInfo &p_info, std::unique_ptr<HapticDevice> &r_device) {
-	return open_device(p_info, linux_evdev_syscalls(), r_device);
+Status open_device(const DeviceInfo &p_info, std::unique_ptr<HapticDevice> &r_device, const EvdevTakeover &p_takeover) {
+	return open_device(p_info, linux_evdev_syscalls(), r_device, p_takeover);
 }
 
 } // namespace haptics::evdev

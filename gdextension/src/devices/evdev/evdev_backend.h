@@ -27,8 +27,9 @@ EvdevDeviceConfig device_config_for(const DeviceInfo &p_info);
 
 // Makes the device and opens it (EvdevDevice::open() is idempotent, so handing it to
 // HapticsSystem::open_device afterwards is fine). r_device is untouched on failure.
-Status open_device(const DeviceInfo &p_info, std::unique_ptr<HapticDevice> &r_device);
+Status open_device(const DeviceInfo &p_info, std::unique_ptr<HapticDevice> &r_device,
+		const EvdevTakeover &p_takeover = {});
 Status open_device(const DeviceInfo &p_info, const std::shared_ptr<EvdevSyscalls> &p_sys,
-		std::unique_ptr<HapticDevice> &r_device);
+		std::unique_ptr<HapticDevice> &r_device, const EvdevTakeover &p_takeover = {});
 
 } // namespace haptics::evdev

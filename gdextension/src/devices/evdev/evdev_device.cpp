@@ -133,9 +133,9 @@ Status EvdevDevice::open_node() {
 	input_.configure(layout);
 	mapping_ = FfForceMapping{ config_.max_force_n, mapping_.shape, config_.invert_force_x, config_.invert_force_y };
 	if (output_ == EvdevOutput::RUMBLE) {
-		return rumble_.start(*sys_, fd_, features_, path);
+		return rumble_.start(*sys_, fd_, features_, path, config_.takeover.gain);
 	}
-	return effect_.start(*sys_, fd_, features_, path);
+	return effect_.start(*sys_, fd_, features_, path, config_.takeover);
 }
 
 Status EvdevDevice::read_layout(EvdevInputLayout &r_layout) {

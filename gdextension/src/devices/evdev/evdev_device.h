@@ -61,6 +61,8 @@ struct EvdevDeviceConfig {
 	// evdev_ff.h); these flip the force, never the input.
 	bool invert_force_x = false;
 	bool invert_force_y = false;
+	// What the game lets the start change on the device (its gain, its centring spring).
+	EvdevTakeover takeover;
 	std::string sysfs_root = "/sys"; // Where the endpoint's interval is read; tests fake it.
 };
 

@@ -79,11 +79,12 @@ Status require_constant_force(const EvdevFfFeatures &p_features, const char *p_p
 	return Status::success();
 }
 
-Status EvdevConstantForce::start(EvdevSyscalls &r_sys, int p_fd, const EvdevFfFeatures &p_features, const char *p_path) {
+Status EvdevConstantForce::start(EvdevSyscalls &r_sys, int p_fd, const EvdevFfFeatures &p_features, const char *p_path,
+		const EvdevTakeover &p_takeover) {
 	stop_and_erase();
 	FfConstantEffect effect; // id -1, level 0: nothing felt until the first update.
 	encode_constant_effect(effect, slot_.bytes());
-	const Status started = slot_.start(r_sys, p_fd, p_features, true, "the constant force", p_path);
+	const Status started = slot_.start(r_sys, p_fd, p_features, p_takeover, "the constant force", p_path);
 	effect_ = effect;
 	effect_.id = slot_.id();
 	return started;

@@ -3,8 +3,8 @@
 // One FF_CONSTANT effect driven through evdev, in the order ff.rst prescribes
 // (docs/devices/evdev.md, "Using an effect"):
 //
-//   start:  write {EV_FF, FF_GAIN, 0xFFFF}        if the driver offers FF_GAIN
-//           write {EV_FF, FF_AUTOCENTER, 0}        if it offers FF_AUTOCENTER
+//   start:  write {EV_FF, FF_GAIN, 0xFFFF}        if the game asks and the driver offers it
+//           write {EV_FF, FF_AUTOCENTER, 0}        likewise (the game's default: asked)
 //           EVIOCSFF {FF_CONSTANT, id -1, level 0, length CONSTANT_EFFECT_LENGTH_MS}
 //           write {EV_FF, id, 1}                   play (value = repeat count)
 //   update: EVIOCSFF with the SAME id, only when the quantised (direction, level) changed;
@@ -14,12 +14,12 @@
 //           reaches its end (evdev_ff.h says why it is finite).
 //   stop:   EVIOCSFF level 0, write {EV_FF, id, 0}, EVIOCRMFF id.
 //
-// Why gain 0xFFFF: gain is device-wide and scales every level, and our level is computed
-// as a fraction of the device's full force; a gain left low by another program would make
-// every newton weaker than promised. Why autocentre 0: wheels and some sticks run a
-// spring toward centre in the driver/firmware, which would add to (and fight) the game's
-// own forces. Neither is restored on stop: evdev cannot read the previous value; the
-// driver's default returns when the device is plugged in again.
+// Why the gain is left alone unless the game asks: it is the player's, set in a wheel's
+// control panel or Oversteer, and scales every effect (a game that promises newtons can take
+// it to full, HapticDeviceOpenOptions.take_gain). Why autocentre is turned off unless the game
+// says not to: wheels and some sticks run a spring toward centre in the driver/firmware,
+// which adds to (and fights) the game's own forces. Neither is restored on stop: evdev cannot
+// read the previous value; the driver's default returns when the device is plugged in again.
 //
 // update() runs on the device's I/O thread: no allocation, no lock, no formatting; errors
 // come back as -errno for the caller to report.
@@ -70,9 +70,10 @@ Status require_constant_force(const EvdevFfFeatures &p_features, const char *p_p
 
 class EvdevConstantForce {
 public:
-	// Gain, autocentre, upload, play (the header's sequence). On failure nothing stays
-	// uploaded. p_path only names the device in messages.
-	Status start(EvdevSyscalls &r_sys, int p_fd, const EvdevFfFeatures &p_features, const char *p_path);
+	// Gain and autocentre as p_takeover allows, upload, play (the header's sequence). On
+	// failure nothing stays uploaded. p_path only names the device in messages.
+	Status start(EvdevSyscalls &r_sys, int p_fd, const EvdevFfFeatures &p_features, const char *p_path,
+			const EvdevTakeover &p_takeover = {});
 	// One EVIOCSFF with the started id when p_force differs from what the device renders;
 	// 0, or -errno (the device keeps the previous force).
 	int update(const FfConstantForce &p_force);

@@ -7,8 +7,8 @@
 
 namespace haptics::evdev {
 
-Status EvdevEffectSlot::start(EvdevSyscalls &r_sys, int p_fd, const EvdevFfFeatures &p_features, bool p_autocenter_off,
-		const char *p_what, const char *p_path) {
+Status EvdevEffectSlot::start(EvdevSyscalls &r_sys, int p_fd, const EvdevFfFeatures &p_features,
+		const EvdevTakeover &p_takeover, const char *p_what, const char *p_path) {
 	stop_and_erase();
 	sys_ = &r_sys;
 	fd_ = p_fd;
@@ -23,10 +23,10 @@ Status EvdevEffectSlot::start(EvdevSyscalls &r_sys, int p_fd, const EvdevFfFeatu
 				"%s: %s failed: %s (%s)", p_path, step, errno_text(p_error), errno_name(p_error));
 	};
 	int result = 0;
-	if (p_features.gain && (result = write_event(EVDEV_FF_GAIN, 0xffff)) < 0) {
+	if (p_takeover.gain && p_features.gain && (result = write_event(EVDEV_FF_GAIN, 0xffff)) < 0) {
 		return failed(result, "setting the gain (FF_GAIN)");
 	}
-	if (p_autocenter_off && p_features.autocenter && (result = write_event(EVDEV_FF_AUTOCENTER, 0)) < 0) {
+	if (p_takeover.spring && p_features.autocenter && (result = write_event(EVDEV_FF_AUTOCENTER, 0)) < 0) {
 		return failed(result, "turning autocentre off (FF_AUTOCENTER)");
 	}
 	if ((result = send_upload()) < 0) {

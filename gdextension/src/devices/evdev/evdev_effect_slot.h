@@ -1,7 +1,7 @@
 #pragma once
 
 // One force-feedback effect's life on an evdev node, whatever its type, in ff.rst's order
-// (docs/devices/evdev.md, "Using an effect"): start = gain 0xFFFF where offered (and autocentre off, for forces), upload with
+// (docs/devices/evdev.md, "Using an effect"): start = gain 0xFFFF and autocentre off where the game allows (EvdevTakeover), upload with
 // id -1 (the kernel answers with the id), play; an update is one EVIOCSFF with that id; stop
 // = stop, erase. The effect types (evdev_effect.h's constant force, evdev_rumble.h's rumble)
 // encode their struct into bytes() and keep what the device plays.
@@ -19,12 +19,20 @@ namespace haptics::evdev {
 
 struct EvdevFfFeatures;
 
+// What the game lets an effect's start change on the device: its gain (to full) and its
+// centring spring (off). Both are the player's settings otherwise, and evdev cannot read them
+// back, so nothing is put back on close (HapticDeviceOpenOptions says so to the game).
+struct EvdevTakeover {
+	bool gain = false;
+	bool spring = true;
+};
+
 class EvdevEffectSlot {
 public:
-	// Gain, autocentre off when p_autocenter_off and offered, upload of bytes() (id -1),
-	// play. On failure nothing stays uploaded. p_what names the effect and p_path the device
-	// in messages.
-	Status start(EvdevSyscalls &r_sys, int p_fd, const EvdevFfFeatures &p_features, bool p_autocenter_off,
+	// Gain to full and autocentre off where p_takeover allows and the driver offers them,
+	// upload of bytes() (id -1), play. On failure nothing stays uploaded. p_what names the
+	// effect and p_path the device in messages.
+	Status start(EvdevSyscalls &r_sys, int p_fd, const EvdevFfFeatures &p_features, const EvdevTakeover &p_takeover,
 			const char *p_what, const char *p_path);
 	// EVIOCSFF of bytes() with the started id: 0 or -errno.
 	int upload();

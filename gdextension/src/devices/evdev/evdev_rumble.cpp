@@ -29,13 +29,14 @@ FfRumbleLevels RumbleEnvelope::update(double p_peak_n, double p_dt_s, const Rumb
 	return levels;
 }
 
-Status EvdevRumble::start(EvdevSyscalls &r_sys, int p_fd, const EvdevFfFeatures &p_features, const char *p_path) {
+Status EvdevRumble::start(EvdevSyscalls &r_sys, int p_fd, const EvdevFfFeatures &p_features, const char *p_path,
+		bool p_take_gain) {
 	stop_and_erase();
 	envelope_.reset();
 	peak_n_.store(0.0, std::memory_order_relaxed);
 	FfRumbleEffect effect; // id -1, both motors off, infinite.
 	encode_rumble_effect(effect, slot_.bytes());
-	const Status started = slot_.start(r_sys, p_fd, p_features, false, "the rumble", p_path);
+	const Status started = slot_.start(r_sys, p_fd, p_features, EvdevTakeover{ p_take_gain, false }, "the rumble", p_path);
 	effect_ = effect;
 	effect_.id = slot_.id();
 	return started;

@@ -53,8 +53,10 @@ private:
 
 class EvdevRumble {
 public:
-	// Gain, upload, play. On failure nothing stays uploaded; p_path only names the device.
-	Status start(EvdevSyscalls &r_sys, int p_fd, const EvdevFfFeatures &p_features, const char *p_path);
+	// The gain where the game asks (p_take_gain), upload, play. On failure nothing stays
+	// uploaded; p_path only names the device.
+	Status start(EvdevSyscalls &r_sys, int p_fd, const EvdevFfFeatures &p_features, const char *p_path,
+			bool p_take_gain = false);
 	// The servo's thread, each tick (an atomic max; never blocks).
 	void offer_impact(const Vec3 &p_impact_n);
 	// One I/O cycle: takes the peak offered since the last one and updates the effect.
