@@ -63,7 +63,7 @@ TEST_CASE("evdev sequence: features of the PID joystick (constant, gain, no auto
 	CHECK(s.features.max_effects == 10);
 }
 
-TEST_CASE("evdev sequence: start = upload id -1 level 0, play id 1; the player's gain is left alone") {
+TEST_CASE("evdev sequence: start = upload id -1 level 0, play id 1, and the player's gain is left alone") {
 	Started s;
 	start(s);
 	const auto calls = evdev_test::ff_calls(s.kernel->calls());
