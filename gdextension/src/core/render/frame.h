@@ -7,7 +7,7 @@
 // check_fields (core/wire/codec.h) accepts it.
 //
 // All vectors are in DEVICE space (coordinates.h: x right, y up, z toward the user); the
-// codec turns the game's 2D vectors into it.
+// codec turns the game's vectors into it (a 2D game's flipped, a 3D game's as they are).
 
 #include "core/base/coordinates.h"
 #include "core/base/vec3.h"
