@@ -213,6 +213,28 @@ func test_a_turn_high_in_the_air_is_no_bounce() -> void:
 	assert_eq(judge.bounces().size(), 1)
 
 
+func test_the_masters_own_states_show_a_bounce_our_blended_copy_flew_over() -> void:
+	var judge: PongNetHurtJudge = _judge()
+	# CI's refused honest claim: our copy fell 1.48 -> 0.63 m onto the state played after
+	# the master's bounce, and turned up there, far above the floor.
+	judge.observe(1.00, Vector3(0.3, 1.48, -1.3), Vector3(0.0, -15.0, -1.0))
+	judge.observe(1.01, Vector3(0.3, 0.63, -1.4), Vector3(0.0, 0.3, -1.0))
+	assert_eq(judge.bounces(), [], "no turn near the floor in our copy")
+	# The master's states, 10 ms apart, either side of its bounce.
+	judge.observe_master(0.95, Vector3(0.3, 0.11, -1.3), Vector3(0.0, -3.6, -1.0))
+	judge.observe_master(0.96, Vector3(0.3, 0.098, -1.35), Vector3(0.0, 2.9, -1.0))
+	assert_eq(judge.bounces().size(), 1, "a turn the ball could fall and rise in")
+	assert_eq(judge.judge(1.1, 1.05, 1, 1)[0], PongNetHurtJudge.Verdict.ACCEPT)
+	# A paddle lifting a falling ball 0.5 m up, between states 10 ms apart: no bounce.
+	judge.observe_master(2.00, Vector3(0.3, 0.5, -1.3), Vector3(0.0, -3.0, -1.0))
+	judge.observe_master(2.01, Vector3(0.3, 0.5, -1.3), Vector3(0.0, 4.0, 1.0))
+	assert_eq(judge.bounces().size(), 1, "too high to have touched the floor")
+	# Two states 0.3 s apart (the ones between lost) may hold a bounce lower than the fall.
+	judge.observe_master(3.0, Vector3(0.3, 0.6, -1.3), Vector3(0.0, -1.5, -1.0))
+	judge.observe_master(3.3, Vector3(0.3, 0.4, -1.6), Vector3(0.0, 1.2, -1.0))
+	assert_eq(judge.bounces().size(), 2, "0.6 m is within 0.3 s of fall at 1.5 m/s")
+
+
 func test_a_bounce_counts_only_within_the_claimants_epoch() -> void:
 	var judge: PongNetHurtJudge = _judge()
 	judge.observe_floor(4.0, NEAR)

@@ -69,6 +69,9 @@ class State:
 var delay_s: float = 0.0
 ## The newest state played (null before the first of this stream).
 var played: State = null
+## The states the last [method advance] played, oldest first (the server judges floor claims
+## by each of them, not only by the newest).
+var just_played: Array[State] = []
 ## States taken in (neither duplicates nor late), played, late, duplicates.
 var received: int = 0
 var used: int = 0
@@ -95,6 +98,7 @@ func restart() -> void:
 	_seen.clear()
 	_newest_seq = -1
 	played = null
+	just_played.clear()
 	_clock.reset()
 	_fastest_offset = INF
 
@@ -123,6 +127,7 @@ func push(state: State) -> Taken:
 func advance(now_s: float, agrees: Callable = Callable()) -> bool:
 	var moved: bool = false
 	var give_up: bool = false
+	just_played.clear()
 	if played != null and _newest_seq > played.seq and agrees.is_valid():
 		give_up = not agrees.call(played, _pending[_newest_seq])
 	while not _pending.is_empty():
@@ -136,6 +141,7 @@ func advance(now_s: float, agrees: Callable = Callable()) -> bool:
 			skipped += 1
 		_pending.erase(next_seq)
 		played = next
+		just_played.append(next)
 		used += 1
 		moved = true
 	if moved:

@@ -74,6 +74,15 @@ func observe(snapshot: PongState) -> void:
 	_settle()
 
 
+## Server, following a client master: [param states] of its stream were played here at
+## [param now_s] ([method PongNetBall.clock_s]); each was its ball that long ago.
+func observe_master(states: Array[PongNetBallBuffer.State], now_s: float) -> void:
+	if not _is_server():
+		return
+	for state: PongNetBallBuffer.State in states:
+		judge.observe_master(_match.now - state.age_at(now_s), state.position, state.velocity)
+
+
 ## Server: [param sender] claims that a floor bounce at its epoch cost its victim a point.
 func on_claim(sender: int, claim: PongNetFloorClaimMessage) -> void:
 	if not _is_server():

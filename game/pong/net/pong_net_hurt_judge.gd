@@ -9,6 +9,10 @@ extends RefCounted
 ## peer follows another's ball, its state each frame, where a vertical velocity that turns
 ## from down to up near the floor is a bounce too (a follower's ball takes the master's
 ## velocity with each state it receives, so it may turn before touching the floor itself).
+## A follower's copy is blended onto the master's, and may be lifted clear of the floor by
+## the state after a bounce before it ever gets low (a CI match's honest claim was refused
+## so): the master's own states, as they are played here, are a third source, where a turn
+## counts as a bounce when the ball could have reached the floor between the two states.
 ## While this peer is the master its servo's events are the whole truth. Times are match
 ## seconds.
 ## [br]A claim of the territory the ball was in at the claim's epoch may match a bounce up to
@@ -35,6 +39,9 @@ const SAME_BOUNCE_S: float = 0.15
 ## few centimetres up, metres.
 const LOW_M: float = 0.35
 const TERRITORY_MARGIN_M: float = 1.0
+## How far above what a ball could fall or rise between two of the master's states a turn
+## may lie and still be a bounce: the states are the master's exact ball, metres.
+const MASTER_LOW_M: float = 0.05
 ## Floor hurts a victim may take in a burst; the rate is [member rate_per_s].
 const BURST: float = 2.0
 
@@ -49,6 +56,8 @@ var rate_per_s: float = 4.0
 var _bounces: Array[Array] = []
 # The last state observed: [time, position, velocity], or empty.
 var _last: Array = []
+# The last of the master's states played here: [time, position, velocity], or empty.
+var _last_master: Array = []
 var _tokens: PackedFloat64Array = PackedFloat64Array()
 var _tokens_at: PackedFloat64Array = PackedFloat64Array()
 
@@ -77,6 +86,25 @@ func observe(t: float, position: Vector3, velocity: Vector3, master: bool = fals
 		if v0.y < 0.0 and velocity.y > 0.0 and minf(p0.y, position.y) <= low:
 			_record(t, (p0 + position) * 0.5, false)
 	_last = [t, position, velocity]
+	_forget_before(t - 2.0 * LOOKBACK_S)
+
+
+## The master's ball was at [param position] with [param velocity] at [param t] (a state of
+## its stream, played here): between two states, a ball that turned from falling to rising
+## and could have touched the floor in the time between bounced.
+func observe_master(t: float, position: Vector3, velocity: Vector3) -> void:
+	if not _last_master.is_empty():
+		var t0: float = _last_master[0]
+		var p0: Vector3 = _last_master[1]
+		var v0: Vector3 = _last_master[2]
+		var dt: float = t - t0
+		var reach: float = 0.5 * court.gravity * dt * dt + court.ball_radius + MASTER_LOW_M
+		var fell: bool = p0.y <= absf(v0.y) * dt + reach
+		var rose: bool = position.y <= absf(velocity.y) * dt + reach
+		if dt > 0.0 and dt <= LOOKBACK_S and v0.y < 0.0 and velocity.y > 0.0 and fell and rose:
+			_record(t0 + 0.5 * dt, (p0 + position) * 0.5, false)
+	if _last_master.is_empty() or t > _last_master[0]:
+		_last_master = [t, position, velocity]
 	_forget_before(t - 2.0 * LOOKBACK_S)
 
 

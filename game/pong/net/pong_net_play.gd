@@ -143,6 +143,7 @@ func frame(delta: float) -> void:
 	if not authority.is_master() and ball.follow(PongNetBall.clock_s(), _predictor, _gravity()):
 		# Only the newest state played becomes a command to the servo (whose queue holds 64).
 		_master_velocity = ball.buffer.played.velocity
+		floor_hurts.observe_master(ball.buffer.just_played, PongNetBall.clock_s())
 	var snapshot: PongState = match_node.snapshot
 	var sim_dt: float = match_node.now - _last_now
 	_last_now = match_node.now
