@@ -1,6 +1,7 @@
 class_name GameSettings
 extends Node
-## Keeps the player's settings in [code]user://settings.cfg[/code]: the chosen device, the
+## Keeps the player's settings in [code]user://settings.cfg[/code]: the chosen device and what
+## the game may change on it (its own gain and centring spring), the
 ## [code]Haptics[/code] autoload's force scale, smoothing and control mode, and the
 ## display's: volume, fullscreen and the HUD's lab view; and the player's movement keys
 ## ([KeyBindings]).
@@ -40,6 +41,20 @@ var path: String = DEFAULT_PATH
 ## empty means the simulated device.
 var device_id: String = "":
 	set = set_device_id
+## Whether opening the device sets its own gain to full
+## ([member HapticDeviceOpenOptions.take_gain]); off, the player's gain scales what is felt.
+var device_gain_full: bool = false:
+	set(value):
+		if value != device_gain_full:
+			device_gain_full = value
+			changed.emit()
+## Whether opening the device turns its own centring spring off
+## ([member HapticDeviceOpenOptions.spring_off]).
+var device_spring_off: bool = true:
+	set(value):
+		if value != device_spring_off:
+			device_spring_off = value
+			changed.emit()
 ## [code]Haptics.force_scale[/code].
 var force_scale: float:
 	get:
@@ -90,6 +105,11 @@ var last_warning: String = ""
 ## off before adding an instance to the tree).
 var load_on_ready: bool = true
 
+# The device this instance opened and the options it opened it with (their bytes): options
+# changed since are applied by opening it again.
+var _opened_id: String = ""
+var _opened_options: PackedByteArray = PackedByteArray()
+
 
 func _init() -> void:
 	device_id = Haptics.device.get_simulated_id()
@@ -131,6 +151,9 @@ func set_device_id(value: String) -> void:
 ## Restores every value to its default (does not save).
 func reset_to_defaults() -> void:
 	device_id = Haptics.device.get_simulated_id()
+	var options: HapticDeviceOpenOptions = HapticDeviceOpenOptions.new()
+	device_gain_full = options.take_gain
+	device_spring_off = options.spring_off
 	volume = 1.0
 	fullscreen = false
 	lab_view = false
@@ -157,6 +180,8 @@ func load_settings() -> Error:
 	device_id = _read(file, "device", TYPE_STRING, device_id)
 	force_scale = _read(file, "force_scale", TYPE_FLOAT, force_scale)
 	smoothing_enabled = _read(file, "smoothing", TYPE_BOOL, smoothing_enabled)
+	device_gain_full = _read(file, "device_gain_full", TYPE_BOOL, device_gain_full)
+	device_spring_off = _read(file, "device_spring_off", TYPE_BOOL, device_spring_off)
 	var mode: String = _read(file, "control_mode", TYPE_STRING, String(control_mode))
 	control_mode = StringName(mode)
 	volume = _read(file, "volume", TYPE_FLOAT, volume, DISPLAY_SECTION)
@@ -176,6 +201,8 @@ func save_settings() -> Error:
 	file.set_value(SECTION, "device", device_id)
 	file.set_value(SECTION, "force_scale", force_scale)
 	file.set_value(SECTION, "smoothing", smoothing_enabled)
+	file.set_value(SECTION, "device_gain_full", device_gain_full)
+	file.set_value(SECTION, "device_spring_off", device_spring_off)
 	file.set_value(SECTION, "control_mode", String(control_mode))
 	file.set_value(DISPLAY_SECTION, "volume", volume)
 	file.set_value(DISPLAY_SECTION, "fullscreen", fullscreen)
@@ -187,12 +214,19 @@ func save_settings() -> Error:
 	return err
 
 
-## Opens [member device_id] unless it is already open, falling back to the simulated
-## device with a warning when it is gone or fails to open. Does nothing without the native
-## extension.
+## Opens [member device_id] with [method open_options] unless it is already open so,
+## falling back to the simulated device with a warning when it is gone or fails to open.
+## Does nothing without the native extension.
 func apply() -> void:
-	if not Haptics.is_available() or Haptics.device.get_id() == device_id:
+	if not Haptics.is_available():
 		return
+	var options: HapticDeviceOpenOptions = open_options()
+	var open_id: String = Haptics.device.get_id()
+	if open_id == device_id:
+		if open_id != _opened_id or options.encode() == _opened_options:
+			return  # Opened elsewhere, or so already: nothing of ours to change.
+		# A device is not opened twice at once (a Falcon's USB interface is claimed once).
+		Haptics.device.close()
 	var listed: HapticDeviceInfo = _listed(device_id)
 	if listed == null:
 		_warn("Haptic device '%s' is gone: using the simulated device." % device_id)
@@ -205,9 +239,20 @@ func apply() -> void:
 			)
 		)
 		_open_simulated()
-	elif not Haptics.device.open(device_id):
+	elif not Haptics.device.open(device_id, options):
 		_warn("Haptic device '%s' did not open: using the simulated device." % device_id)
 		_open_simulated()
+	else:
+		_opened_id = device_id
+		_opened_options = options.encode()
+
+
+## What opening the device may change on it, as the player chose.
+func open_options() -> HapticDeviceOpenOptions:
+	var options: HapticDeviceOpenOptions = HapticDeviceOpenOptions.new()
+	options.take_gain = device_gain_full
+	options.spring_off = device_spring_off
+	return options
 
 
 ## Moves [param action] (one of [constant KeyBindings.ACTIONS]) to the key at
@@ -255,7 +300,7 @@ func _open_simulated() -> void:
 	var simulated: String = Haptics.device.get_simulated_id()
 	device_id = simulated
 	if Haptics.device.get_id() != simulated:
-		Haptics.device.open(simulated)
+		Haptics.device.open(simulated, open_options())
 
 
 func _listed(id: String) -> HapticDeviceInfo:

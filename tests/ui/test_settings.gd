@@ -33,6 +33,8 @@ func test_values_survive_a_save_and_a_reload() -> void:
 	written.force_scale = 0.65
 	written.smoothing_enabled = false
 	written.control_mode = Haptics.CONTROL_KEYBOARD
+	written.device_gain_full = true
+	written.device_spring_off = false
 	assert_eq(written.save_settings(), OK)
 	var read: GameSettings = _make()
 	assert_eq(read.load_settings(), OK)
@@ -40,6 +42,7 @@ func test_values_survive_a_save_and_a_reload() -> void:
 	assert_almost_eq(read.force_scale, 0.65, 1e-6)
 	assert_false(read.smoothing_enabled)
 	assert_eq(read.control_mode, Haptics.CONTROL_KEYBOARD)
+	assert_eq([read.device_gain_full, read.device_spring_off], [true, false])
 	assert_eq(read.last_warning, "")
 
 
@@ -77,6 +80,8 @@ func test_wrong_types_and_out_of_range_values_fall_back() -> void:
 	assert_eq(settings.force_scale, Haptics.get_force_scale_range().y, "clamped to 2")
 	assert_true(settings.smoothing_enabled)
 	assert_eq(settings.control_mode, Haptics.CONTROL_DEVICE)
+	assert_false(settings.device_gain_full, "the player's own gain is left alone")
+	assert_true(settings.device_spring_off, "the device's centring spring is turned off")
 
 
 func test_setters_emit_changed_only_on_a_real_change() -> void:
@@ -115,6 +120,30 @@ func test_apply_sets_the_haptics_properties() -> void:
 	assert_almost_eq(float(Haptics.force_scale), 0.4, 1e-6)
 	assert_false(Haptics.smoothing_enabled)
 	assert_eq(Haptics.control_mode, &"keyboard")
+
+
+func test_a_changed_choice_opens_the_device_again_with_it_and_only_then() -> void:
+	if not Haptics.is_available():
+		skip("needs the haptics extension")
+		return
+	OS.set_environment("HAPTICS_SCRIPTED_DEVICES", "1")
+	var opens: Array[int] = [0]
+	var count: Callable = func() -> void: opens[0] += 1
+	Haptics.device.changed.connect(count)
+	var settings: GameSettings = _make()
+	settings.device_id = "scripted:evdev"
+	settings.apply()
+	assert_eq(Haptics.device.get_id(), "scripted:evdev", settings.last_warning)
+	var first: int = opens[0]
+	settings.apply()
+	assert_eq(opens[0], first, "the same choice: the device is left open as it is")
+	settings.device_gain_full = true
+	settings.apply()
+	assert_eq(opens[0], first + 2, "closed, then opened with the new choice")
+	assert_eq(Haptics.device.get_id(), "scripted:evdev", settings.last_warning)
+	assert_eq(settings.last_warning, "")
+	Haptics.device.changed.disconnect(count)
+	OS.unset_environment("HAPTICS_SCRIPTED_DEVICES")
 
 
 func _make() -> GameSettings:

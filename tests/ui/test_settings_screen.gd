@@ -82,6 +82,21 @@ func test_smoothing_and_control_mode() -> void:
 	assert_eq(_settings.control_mode, Haptics.CONTROL_DEVICE)
 
 
+func test_the_device_rows_checks_choose_what_the_game_may_change_on_it() -> void:
+	assert_false(_screen.gain_check.button_pressed, "the player's gain, by default")
+	assert_true(_screen.spring_check.button_pressed, "the centring spring off, by default")
+	if Haptics.is_available():
+		assert_false(_screen.gain_check.is_visible_in_tree(), "the simulated device has neither")
+	_screen.gain_check.button_pressed = true
+	_screen.spring_check.button_pressed = false
+	var options: HapticDeviceOpenOptions = _settings.open_options()
+	assert_eq([options.take_gain, options.spring_off], [true, false])
+	_screen.defaults_button.pressed.emit()
+	assert_eq(
+		[_screen.gain_check.button_pressed, _screen.spring_check.button_pressed], [false, true]
+	)
+
+
 func test_back_saves_the_changes_and_closes() -> void:
 	var closed: Array[bool] = [false]
 	_screen.closed.connect(func() -> void: closed[0] = true)
@@ -103,7 +118,9 @@ func test_back_without_changes_writes_nothing() -> void:
 func test_defaults_restores_every_value_on_screen() -> void:
 	_screen.force_slider.value = 0.2
 	_screen.smoothing_check.button_pressed = false
+	_screen.gain_check.button_pressed = true
 	_screen.defaults_button.pressed.emit()
+	assert_false(_settings.device_gain_full)
 	assert_eq(_settings.force_scale, 1.0)
 	assert_true(_settings.smoothing_enabled)
 	assert_eq(_screen.force_slider.value, 1.0)

@@ -15,6 +15,8 @@ const HapticsBackend := preload("res://addons/haptics/door/haptics_backend.gd")
 var _backend: HapticsBackend = null
 var _servo: HapticsServo = null
 var _reconnect_countdown: float = 0.0
+# The options of the last open: a replugged device is opened again with them.
+var _options: HapticDeviceOpenOptions = null
 var _warnings: PackedStringArray = PackedStringArray()
 
 
@@ -53,6 +55,8 @@ func open(id: String, options: HapticDeviceOpenOptions = null) -> bool:
 		options if options != null else HapticDeviceOpenOptions.new()
 	)
 	var opened: bool = _backend.open_device(id, asked)
+	if opened:
+		_options = asked
 	if opened and was_running:
 		_servo.start()
 	changed.emit()
@@ -110,7 +114,7 @@ func poll_reconnect(delta: float) -> void:
 	var id: String = get_id()
 	for present: HapticDeviceInfo in list_present():
 		if present.id == id and present.openable:
-			if open(id):
+			if open(id, _options):
 				_servo.start()
 			return
 

@@ -1,7 +1,8 @@
 class_name SettingsScreen
 extends Control
 ## Edits a [GameSettings] (the [code]Settings[/code] autoload unless [member settings] is
-## set before the screen enters the tree): device, force scale, smoothing, control mode,
+## set before the screen enters the tree): device and what the game may change on it, force
+## scale, smoothing, control mode,
 ## volume, fullscreen, the HUD's lab view and the movement keys.
 ## Changes apply to the haptics at once; [b]Back[/b] (or [code]ui_cancel[/code]) saves
 ## them when anything changed and emits [signal closed].
@@ -24,6 +25,8 @@ var _refreshing: bool = false
 var _keys: KeyBindingRow = KeyBindingRow.new()
 
 @onready var device_option: OptionButton = %DeviceOption
+@onready var gain_check: CheckButton = %GainCheck
+@onready var spring_check: CheckButton = %SpringCheck
 @onready var force_slider: HSlider = %ForceSlider
 @onready var smoothing_check: CheckButton = %SmoothingCheck
 ## Control mode: index 0 device, 1 keyboard.
@@ -35,6 +38,7 @@ var _keys: KeyBindingRow = KeyBindingRow.new()
 ## Saves and closes.
 @onready var back_button: Button = %BackButton
 @onready var _device_info: Label = %DeviceInfo
+@onready var _device_own_row: HBoxContainer = %DeviceOwnRow
 @onready var _force_value: Label = %ForceValue
 @onready var _volume_value: Label = %VolumeValue
 @onready var _warning: Label = %Warning
@@ -61,6 +65,8 @@ func _ready() -> void:
 	_add_keys_row()
 	refresh()
 	device_option.item_selected.connect(_on_device_selected)
+	gain_check.toggled.connect(_on_gain_toggled)
+	spring_check.toggled.connect(_on_spring_toggled)
 	force_slider.value_changed.connect(_on_force_changed)
 	smoothing_check.toggled.connect(_on_smoothing_toggled)
 	control_option.item_selected.connect(_on_control_selected)
@@ -92,6 +98,8 @@ func refresh() -> void:
 	var index: int = _device_ids.find(settings.device_id)
 	if index >= 0:
 		device_option.select(index)
+	gain_check.button_pressed = settings.device_gain_full
+	spring_check.button_pressed = settings.device_spring_off
 	force_slider.value = settings.force_scale
 	_force_value.text = "%.2f×" % settings.force_scale
 	smoothing_check.button_pressed = settings.smoothing_enabled
@@ -133,6 +141,9 @@ func _populate_devices() -> void:
 
 func _show_device_info() -> void:
 	var index: int = device_option.selected
+	# Only a device of its own has a gain and a centring spring.
+	var own: bool = index >= 0 and index < _devices.size()
+	_device_own_row.visible = (own and _devices[index].id != Haptics.device.get_simulated_id())
 	if index < 0 or index >= _devices.size():
 		_device_info.text = "Force feedback needs the native extension (make build)."
 		return
@@ -187,6 +198,18 @@ func _on_device_selected(index: int) -> void:
 	settings.device_id = _device_ids[index]
 	_changed()
 	refresh()
+
+
+func _on_gain_toggled(on: bool) -> void:
+	if not _refreshing:
+		settings.device_gain_full = on
+		_changed()
+
+
+func _on_spring_toggled(on: bool) -> void:
+	if not _refreshing:
+		settings.device_spring_off = on
+		_changed()
 
 
 func _on_force_changed(value: float) -> void:
