@@ -190,6 +190,24 @@ static func realtime_missing_text(stats: HapticServoStats) -> String:
 
 
 ## The HUD's servo line when the servo is not running: why, and what happens now.
+## What the player is told while the device takes no output ("" while it does): the servo
+## runs, but the device holds the last force it took.
+static func device_stuck_text(device_status: HapticDeviceStatus) -> String:
+	if device_status.output_stuck_s <= 0.0:
+		return ""
+	return (
+		"device not taking force for %.1f s: it holds the last one" % device_status.output_stuck_s
+	)
+
+
+## The hint line, always on screen: how to switch views, and in the compact view a device
+## that takes no force ([method device_stuck_text]).
+static func view_hint_text(lab: bool, stuck: String) -> String:
+	if lab:
+		return "H: hide the lab view"
+	return "H: lab view (forces, device)" if stuck.is_empty() else "%s  ·  H: more" % stuck
+
+
 static func servo_stopped_text(servo_status: String, device_status: HapticDeviceStatus) -> String:
 	if servo_status.is_empty():
 		return "servo off"
@@ -206,7 +224,7 @@ func _show_view() -> void:
 	var lab: bool = view == View.LAB
 	_forces_panel.visible = lab
 	_right_column.visible = lab
-	_view_hint.text = "H: hide the lab view" if lab else "H: lab view (forces, device)"
+	_view_hint.text = view_hint_text(lab, "")
 	# Top centre in the compact view; bottom centre under the lab view's two top panels.
 	var height: float = _run_panel.offset_bottom - _run_panel.offset_top
 	var top: float = 16.0 if not lab else -16.0 - height
@@ -234,10 +252,14 @@ func _refresh_labels() -> void:
 		device = "No device open"
 	_device_name.text = device
 	var rate: float = Haptics.servo.get_rate_hz()
+	var status: HapticDeviceStatus = Haptics.device.get_status()
+	var stuck: String = device_stuck_text(status)
 	if rate > 0.0:
 		_servo.text = servo_running_text(rate, Haptics.servo.get_stats())
+		_servo.text = stuck if not stuck.is_empty() else _servo.text
 	else:
-		_servo.text = servo_stopped_text(Haptics.servo.get_status(), Haptics.device.get_status())
+		_servo.text = servo_stopped_text(Haptics.servo.get_status(), status)
+	_view_hint.text = view_hint_text(view == View.LAB, stuck)
 
 
 func _build_legend() -> void:

@@ -4,7 +4,8 @@
 // (AJ's on Linux 6.1: no Start Delay), our PID backend drives hidraw; when hid-pidff took it
 // (AJ with a Start Delay), hidraw is the kernel's and our evdev backend drives the event node,
 // so the bytes on the wire are the kernel's hid-pidff's. Each renders the servo's force, is
-// unplugged (the gadget unbound) and plugged back. On the kernel's path a burst of changing
+// unplugged (the gadget unbound) and plugged back, then stops taking output for a while and
+// for good (pid_outage.cpp). On the kernel's path a burst of changing
 // forces must still leave the last one on the wire: hid-pidff drops updates that outrun the
 // interrupt endpoint without telling anyone.
 
@@ -166,8 +167,10 @@ void run_stick(Report &r_report, pid::ScriptedFirmware p_firmware, bool p_kernel
 	joystick->set_plugged(true);
 	const Status replugged = stick.plug();
 	if (r_report.check(replugged.ok(), p_label + ": replugged " + replugged.message()) &&
-			choose(r_report, p_kernel_owns, info, p_label + ", replugged")) {
-		press_into_floor(r_report, *joystick, system, info, max_force_n, p_label + ", replugged");
+			choose(r_report, p_kernel_owns, info, p_label + ", replugged") &&
+			press_into_floor(r_report, *joystick, system, info, max_force_n, p_label + ", replugged")) {
+		// Last: a STALL lasts until the host clears it, which nothing here does.
+		check_outages(r_report, stick, *joystick, system, max_force_n, p_kernel_owns, p_label);
 	}
 	const gadget::HidGadgetCounts counts = stick.counts();
 	r_report.info(p_label + ": the gadget moved " + std::to_string(counts.inputs) + " input and " +

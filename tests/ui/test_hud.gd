@@ -208,6 +208,19 @@ func test_the_servo_line_says_what_realtimekit_gave_a_normal_user() -> void:
 	assert_eq(Hud.realtime_missing_text(_stats_p99_1_ms()), "", "not asked: nothing to say")
 
 
+func test_a_device_that_takes_no_force_is_told_in_both_views() -> void:
+	var moving: HapticDeviceStatus = HapticDeviceStatus.new()
+	assert_eq(Hud.device_stuck_text(moving), "", "the wire moves: nothing to say")
+	var stuck: HapticDeviceStatus = HapticDeviceStatus.new()
+	stuck.output_stuck_s = 1.46
+	stuck.reason = "the device has taken no output for 1.46 s"
+	var text: String = Hud.device_stuck_text(stuck)
+	assert_eq(text, "device not taking force for 1.5 s: it holds the last one")
+	assert_eq(Hud.view_hint_text(false, text), text + "  ·  H: more", "the compact view")
+	assert_eq(Hud.view_hint_text(false, ""), "H: lab view (forces, device)")
+	assert_eq(Hud.view_hint_text(true, text), "H: hide the lab view", "the lab view's servo line")
+
+
 func test_the_stopped_servo_line_says_why() -> void:
 	var ok: HapticDeviceStatus = HapticDeviceStatus.new()
 	assert_eq(Hud.servo_stopped_text("", ok), "servo off")

@@ -13,6 +13,10 @@ enum ForceOutput { NONE, DIRECTIONAL, VIBRATION }
 ## The device's health.
 enum DeviceIo { OK, DISCONNECTED, FAILED }
 
+## How long one transfer to the device may take before its status says the wire is not taking
+## output, s: a report goes out in 1-8 ms when the wire moves, and a 1 kHz force held 50 ms is felt.
+const OUTPUT_STALL_S: float = 0.05
+
 ## The names of [enum ForceOutput]'s values, in order.
 const FORCE_OUTPUT_NAMES: PackedStringArray = ["none", "directional", "vibration"]
 

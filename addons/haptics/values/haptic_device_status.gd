@@ -6,12 +6,16 @@ extends HapticsValue
 ## The device's own account of its health.
 
 ## This layout's id on the wire (docs/values.md): a change of any field changes it.
-const SCHEMA_ID: int = 0xf63100aa
+const SCHEMA_ID: int = 0xe944c60c
 
 ## Its health.
 var io: HapticDeviceKinds.DeviceIo = HapticDeviceKinds.DeviceIo.OK
-## Empty when ok, else one sentence for the player ("USB transfer failed: LIBUSB_ERROR_NO_DEVICE").
+## Empty when ok and the wire moves, else one sentence for the player ("USB transfer failed:
+## LIBUSB_ERROR_NO_DEVICE").
 var reason: String = ""
+## How long the transfer under way has taken, once past OUTPUT_STALL_S (0 otherwise): the device is
+## not taking output, and holds the last force it took. It clears when the transfer ends. Unit: s.
+var output_stuck_s: float = 0.0
 
 
 ## This value's bytes (docs/values.md): what the native library and the network take.
@@ -33,6 +37,7 @@ static func decode(bytes: PackedByteArray) -> HapticDeviceStatus:
 func write_to(writer: HapticsWireWriter) -> void:
 	writer.u8(io)
 	writer.text(reason)
+	writer.f64(output_stuck_s)
 
 
 ## Reads the fields, in order, checking each against the schema.
@@ -40,4 +45,5 @@ static func read_from(reader: HapticsWireReader) -> HapticDeviceStatus:
 	var value: HapticDeviceStatus = HapticDeviceStatus.new()
 	value.io = reader.enum_index(&"io", 3) as HapticDeviceKinds.DeviceIo
 	value.reason = reader.text(&"reason", 159)
+	value.output_stuck_s = reader.f64(&"output_stuck_s")
 	return value

@@ -69,6 +69,7 @@ void DeviceExchange::reset(const DeviceState &p_initial) {
 	last_state_ = p_initial;
 	status_.store(DeviceStatus{});
 	io_.store(DeviceIo::OK, std::memory_order_release);
+	transfer_began_ns_.store(0, std::memory_order_release);
 	cycles_.store(0, std::memory_order_relaxed);
 	commands_sent_.store(0, std::memory_order_relaxed);
 	age_sum_s_.store(0.0, std::memory_order_relaxed);
@@ -76,8 +77,20 @@ void DeviceExchange::reset(const DeviceState &p_initial) {
 	cycle_cost_max_s_.store(0.0, std::memory_order_relaxed);
 }
 
-DeviceStatus DeviceExchange::status() const {
-	return status_.load();
+DeviceStatus DeviceExchange::status(int64_t p_now_ns) const {
+	DeviceStatus status = status_.load();
+	const int64_t began_ns = transfer_began_ns_.load(std::memory_order_acquire);
+	if (status.io != DeviceIo::OK || began_ns == 0) {
+		return status;
+	}
+	const double stuck_s = static_cast<double>(p_now_ns - began_ns) * 1e-9;
+	if (stuck_s > OUTPUT_STALL_S) {
+		status.output_stuck_s = stuck_s;
+		std::snprintf(status.reason, DEVICE_REASON_CAPACITY,
+				"the device has taken no output for %.2f s (its endpoint is busy or stalled): it holds the last force it took",
+				stuck_s);
+	}
+	return status;
 }
 
 DeviceIoStats DeviceExchange::stats() const {

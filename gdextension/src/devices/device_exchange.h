@@ -48,10 +48,16 @@ public:
 	// Records what went wrong; the servo stops at its next read. The reason is one sentence.
 	void fail(DeviceIo p_io, const char *p_format, ...) __attribute__((format(HAPTICS_PRINTF, 3, 4)));
 	void record_cycle(double p_cycle_cost_s);
+	// Around each transfer: a transfer under way longer than OUTPUT_STALL_S shows in status()
+	// (a NAKing endpoint blocks a write for as long as it NAKs), and clears when it ends.
+	void begin_transfer(int64_t p_now_ns) { transfer_began_ns_.store(p_now_ns, std::memory_order_release); }
+	void end_transfer() { transfer_began_ns_.store(0, std::memory_order_release); }
 
 	// --- Game side (open/close only, while no servo runs) -----------------------------------
 	void reset(const DeviceState &p_initial = {});
-	DeviceStatus status() const;
+	// Any time: the fault, or a transfer stuck past OUTPUT_STALL_S at p_now_ns.
+	DeviceStatus status(int64_t p_now_ns) const;
+	DeviceStatus status() const { return status(monotonic_now_ns()); }
 	DeviceIoStats stats() const;
 
 private:
@@ -59,6 +65,7 @@ private:
 	Seqlock<DeviceState> state_;
 	Seqlock<DeviceStatus> status_;
 	std::atomic<DeviceIo> io_{ DeviceIo::OK };
+	std::atomic<int64_t> transfer_began_ns_{ 0 }; // 0: no transfer under way.
 	// I/O-thread statistics, read by the game.
 	std::atomic<uint64_t> cycles_{ 0 };
 	std::atomic<uint64_t> commands_sent_{ 0 };

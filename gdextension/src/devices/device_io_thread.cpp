@@ -42,7 +42,9 @@ void DeviceIoThread::run() {
 	bool failed = false;
 	while (!stop_requested_.load(std::memory_order_acquire)) {
 		const int64_t begin_ns = monotonic_now_ns();
+		exchange_->begin_transfer(begin_ns);
 		const DeviceIo io = worker_->io_cycle(*exchange_, dt_s);
+		exchange_->end_transfer();
 		const int64_t end_ns = monotonic_now_ns();
 		if (io != DeviceIo::OK) {
 			if (exchange_->status().io == DeviceIo::OK) {

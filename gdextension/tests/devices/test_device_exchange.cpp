@@ -9,7 +9,9 @@
 #include <doctest/doctest.h>
 
 #include <atomic>
+#include <chrono>
 #include <cstring>
+#include <thread>
 
 namespace haptics {
 
@@ -123,6 +125,64 @@ TEST_CASE("device exchange: a fault on the I/O side stops the servo side with it
 	exchange.reset(); // A reopen starts healthy.
 	CHECK(exchange.read_state(state) == DeviceIo::OK);
 	CHECK(exchange.status().reason[0] == '\0');
+}
+
+TEST_CASE("device exchange: a transfer stuck past OUTPUT_STALL_S shows in the status until it ends") {
+	DeviceExchange exchange;
+	exchange.reset();
+	const int64_t began_ns = 5'000'000'000;
+	const int64_t stall_ns = static_cast<int64_t>(OUTPUT_STALL_S * 1e9);
+	exchange.begin_transfer(began_ns);
+	DeviceStatus status = exchange.status(began_ns + stall_ns - 1'000'000);
+	CHECK(status.output_stuck_s == 0.0); // A slow transfer is not yet an outage.
+	CHECK(status.reason[0] == '\0');
+	status = exchange.status(began_ns + 1'500'000'000); // A 1.5 s NAK.
+	CHECK(status.io == DeviceIo::OK); // The servo goes on: the device holds its last force.
+	CHECK(status.output_stuck_s == doctest::Approx(1.5));
+	CHECK(std::strstr(status.reason, "no output for 1.50 s") != nullptr);
+	exchange.end_transfer();
+	status = exchange.status(began_ns + 1'600'000'000);
+	CHECK(status.output_stuck_s == 0.0); // The wire moves again: clear.
+	CHECK(status.reason[0] == '\0');
+	exchange.begin_transfer(began_ns);
+	exchange.fail(DeviceIo::FAILED, "write failed: EPIPE");
+	status = exchange.status(began_ns + 1'000'000'000);
+	CHECK(status.output_stuck_s == 0.0); // A fault says its own reason.
+	CHECK(std::strcmp(status.reason, "write failed: EPIPE") == 0);
+}
+
+TEST_CASE("device io thread: a write that blocks is reported while it blocks, and the report clears") {
+	DeviceExchange exchange;
+	exchange.reset();
+	DeviceIoThread thread;
+	struct Worker final : DeviceIoWorker {
+		std::atomic<bool> block{ false };
+		std::atomic<bool> blocking{ false };
+		DeviceIo io_cycle(DeviceExchange &, double) override {
+			while (block.load()) {
+				blocking.store(true);
+				std::this_thread::sleep_for(std::chrono::milliseconds(1));
+			}
+			blocking.store(false);
+			return DeviceIo::OK;
+		}
+	} worker;
+	REQUIRE(thread.start(worker, exchange, DeviceIoThreadOptions{ 1000.0, 0 }));
+	worker.block.store(true);
+	// Generous bounds: a loaded machine may take long to schedule the thread.
+	const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+	while (exchange.status().output_stuck_s == 0.0 && std::chrono::steady_clock::now() < deadline) {
+		std::this_thread::sleep_for(std::chrono::milliseconds(2));
+	}
+	CHECK(worker.blocking.load());
+	CHECK(exchange.status().output_stuck_s > OUTPUT_STALL_S);
+	worker.block.store(false);
+	while (worker.blocking.load() && std::chrono::steady_clock::now() < deadline) {
+		std::this_thread::sleep_for(std::chrono::milliseconds(2));
+	}
+	std::this_thread::sleep_for(std::chrono::milliseconds(20)); // Past the end of that cycle.
+	CHECK(exchange.status().output_stuck_s == 0.0);
+	thread.stop();
 }
 
 TEST_CASE("device io thread: rejects a bad rate and runs the worker until stopped, then io_stop") {

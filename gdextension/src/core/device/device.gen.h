@@ -11,6 +11,11 @@
 
 namespace haptics {
 
+// How long one transfer to the device may take before its status says the wire is not taking
+// output, s: a report goes out in 1-8 ms when the wire moves, and a 1 kHz force held 50 ms is
+// felt.
+inline constexpr double OUTPUT_STALL_S = 0.05;
+
 // What the device renders: directional devices push the hand; vibration-only devices (a
 // gamepad) render impacts as rumble and the continuous force's size as something they can (the
 // DualSense's trigger resistance).
@@ -108,20 +113,25 @@ static_assert(std::is_trivially_copyable_v<DeviceCapabilities>);
 
 // The device's own account of its health.
 struct DeviceStatus {
-	static constexpr uint32_t SCHEMA_ID = 0xf63100aau;
+	static constexpr uint32_t SCHEMA_ID = 0xe944c60cu;
 	static constexpr const char *NAME = "HapticDeviceStatus";
 
 	// Its health.
 	DeviceIo io{ DeviceIo::OK };
-	// Empty when ok, else one sentence for the player ("USB transfer failed:
+	// Empty when ok and the wire moves, else one sentence for the player ("USB transfer failed:
 	// LIBUSB_ERROR_NO_DEVICE").
 	FixedString<159> reason{};
+	// How long the transfer under way has taken, once past OUTPUT_STALL_S (0 otherwise): the
+	// device is not taking output, and holds the last force it took. It clears when the transfer
+	// ends. Unit: s.
+	double output_stuck_s{};
 
 	// Every field with its schema limits, in wire order (core/wire/codec.h walks them).
 	template <typename Self, typename Visitor>
 	static void visit(Self &r_self, Visitor &&r_visitor) {
 		r_visitor(FieldSpec{ .name = "io" }, r_self.io);
 		r_visitor(FieldSpec{ .name = "reason", .max_count = 159 }, r_self.reason);
+		r_visitor(FieldSpec{ .name = "output_stuck_s" }, r_self.output_stuck_s);
 	}
 };
 static_assert(std::is_trivially_copyable_v<DeviceStatus>);

@@ -2,7 +2,9 @@
 
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
+#include <cstring>
 
 namespace haptics::gadget {
 
@@ -140,9 +142,30 @@ void HidGadget::pump_inputs() {
 	}
 }
 
+Status HidGadget::stall_outputs(double p_wait_s) {
+	hold_outputs_ = true;
+	const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(p_wait_s);
+	while (!out_idle_ && std::chrono::steady_clock::now() < deadline) {
+		std::this_thread::sleep_for(IDLE_WAIT);
+	}
+	if (!out_idle_) {
+		return Status::error(StatusCode::DEVICE_ERROR, "gadget: the OUT endpoint's read did not end within %.1f s", p_wait_s);
+	}
+	const uint8_t byte = 0;
+	if (::write(gadget_.endpoint(OUT_FILE), &byte, 1) >= 0 || errno != EBADMSG) {
+		return Status::error(StatusCode::DEVICE_ERROR, "gadget: writing the OUT endpoint did not halt it (%s)", std::strerror(errno));
+	}
+	return Status::success();
+}
+
 void HidGadget::drain_outputs() {
 	uint8_t report[MAX_PACKET];
 	while (running_) {
+		out_idle_ = hold_outputs_.load();
+		if (out_idle_) {
+			std::this_thread::sleep_for(IDLE_WAIT);
+			continue;
+		}
 		const ssize_t got = gadget_.enabled() ? ::read(gadget_.endpoint(OUT_FILE), report, sizeof(report)) : -1;
 		if (got <= 0) {
 			std::this_thread::sleep_for(IDLE_WAIT);

@@ -46,6 +46,15 @@ public:
 
 	HidGadgetCounts counts() const;
 
+	// A device that stops taking output (issue 38, item 5). Held, the OUT endpoint NAKs every
+	// report after the one already under way (no read is waiting for it), as a busy firmware
+	// does; released, it takes them again.
+	void hold_outputs(bool p_hold) { hold_outputs_ = p_hold; }
+	// Halts the OUT endpoint (FunctionFS halts an endpoint used in the wrong direction): each
+	// later report ends in STALL until the host clears the halt. Holds the outputs first, and
+	// waits up to p_wait_s for the report under way to end.
+	Status stall_outputs(double p_wait_s = 2.0);
+
 	bool on_setup(const usb_ctrlrequest &p_request, std::span<const uint8_t> p_data, std::vector<uint8_t> &r_reply) override;
 
 private:
@@ -57,6 +66,8 @@ private:
 	UsbGadget gadget_;
 	std::vector<uint8_t> descriptor_;
 	std::atomic<bool> running_{ false };
+	std::atomic<bool> hold_outputs_{ false };
+	std::atomic<bool> out_idle_{ false }; // The drain thread is held, not in a read.
 	std::thread in_thread_;
 	std::thread out_thread_;
 	std::atomic<uint64_t> outputs_{ 0 };
