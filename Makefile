@@ -317,9 +317,9 @@ export-study:
 test-analysis:
 	@tools/analysis/run.sh -m pytest tools/analysis/tests -q
 
-## test-schema: a newcomer's change in a scratch copy: a schema field, a fourth renderer
+## test-schema: a newcomer's change in a scratch copy: a schema field, a new renderer
 ## In a copy of the working tree, one field added to one schema entry must reach C++ (built) and
-## GDScript typed and documented, and a fourth renderer must register by one row and render
+## GDScript typed and documented, and a new renderer must register by one row and render
 ## (tests/schema, about a minute).
 test-schema: engine
 	@tools/analysis/run.sh -m pytest tests/schema -q -p no:cacheprovider

@@ -30,6 +30,7 @@ TEST_CASE("renderer table: a row per render mode, named as GDScript's constants"
 	CHECK(std::string(rows[RenderMode::MOVEMENT].name) == "movement");
 	CHECK(std::string(rows[RenderMode::CONSTRAINT].name) == "constraint");
 	CHECK(std::string(rows[RenderMode::PONG].name) == "pong");
+	CHECK(std::string(rows[RenderMode::VEHICLE].name) == "vehicle");
 }
 
 TEST_CASE("renderer table: each renderer names its own force components") {
@@ -38,6 +39,8 @@ TEST_CASE("renderer table: each renderer names its own force components") {
 	CHECK(names_of(rows[RenderMode::MOVEMENT].info->force_names) == movement);
 	CHECK(names_of(rows[RenderMode::CONSTRAINT].info->force_names) == std::vector<std::string>{ "wall" });
 	CHECK(names_of(rows[RenderMode::PONG].info->force_names) == std::vector<std::string>{ "contact", "spin", "effects" });
+	CHECK(names_of(rows[RenderMode::VEHICLE].info->force_names) ==
+			std::vector<std::string>{ "aligning", "damping", "texture" });
 	for (const RegisteredRenderer &row : rows) {
 		CAPTURE(row.name);
 		CHECK(!row.info->force_names.empty());
@@ -73,4 +76,5 @@ TEST_CASE("renderer table: each renderer's settings are its own value in the con
 	CHECK(std::string(PongConfig::NAME) == "PongSettings");
 	CHECK(std::string(MovementConfig::NAME) == "HapticMovementSettings");
 	CHECK(std::string(ConstraintConfig::NAME) == "HapticConstraintSettings");
+	CHECK(std::string(VehicleConfig::NAME) == "HapticVehicleSettings");
 }

@@ -4,6 +4,7 @@
 // which bring their own allocator.
 
 #include "renderers/pong/pong_port.h"
+#include "renderers/vehicle/vehicle_port.h"
 #include "system/haptics_system.h"
 #include "system_config.h"
 
@@ -129,6 +130,46 @@ TEST_CASE("a pong tick allocates nothing: contacts, bounces, effects, commands a
 		contacts = pong.state().paddle_contacts;
 	}
 	CHECK(contacts >= 4); // The ticks watched did the work: the ball met the paddle.
+	CHECK(allocations == 0);
+#else
+	MESSAGE("allocation counting is off under sanitizers");
+#endif
+}
+
+TEST_CASE("a vehicle tick allocates nothing: tyres, kerbs, roughness, the damper") {
+#ifdef HAPTICS_COUNT_ALLOCATIONS
+	HapticsSystem system;
+	REQUIRE(system.open_simulated_device());
+	REQUIRE(reconfigure(system, [](RenderConfig &r_config) { r_config.servo.render_mode = RenderMode::VEHICLE; }));
+	VehiclePort vehicle(system.renderers().vehicle.channels);
+	VehicleFrame frame;
+	frame.steer_angle_rad = 0.1;
+	for (int w = 0; w < 2; ++w) {
+		TyreContact contact;
+		contact.in_contact = true;
+		contact.load_n = 4000.0;
+		contact.slip_angle_rad = 0.03 + 0.2 * w;
+		contact.speed_m_per_s = 12.0;
+		contact.roughness_n = 0.2;
+		contact.ripple_n = 0.5;
+		contact.ripple_spacing_m = 0.3;
+		REQUIRE(frame.wheels.push_back(contact));
+	}
+	unsigned long allocations = 0;
+	for (int k = 0; k < 2000; ++k) {
+		if (k % 16 == 0) {
+			REQUIRE(vehicle.set_frame(frame));
+			REQUIRE(system.set_hand_target({ 0.02 * ((k / 16) % 5 - 2), 0.0, 0.0 }));
+		}
+		t_allocations = 0;
+		t_watching = true;
+		const Status status = system.step(0.001);
+		t_watching = false;
+		allocations += t_allocations;
+		REQUIRE(status);
+	}
+	CHECK(vehicle.state().frames > 100); // The ticks watched did the work.
+	CHECK(vehicle.state().ripple_hz > 0.0);
 	CHECK(allocations == 0);
 #else
 	MESSAGE("allocation counting is off under sanitizers");

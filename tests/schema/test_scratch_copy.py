@@ -3,7 +3,7 @@
 1. one field added to one schema entry (a contact's grip) reaches the C++ struct, its codec
    and its checks, the GDScript class (typed, documented) and docs/values.md; a script that
    misspells it does not parse; and bytes GDScript writes decode in C++ and back;
-2. a fourth renderer (a spring to the workspace centre) is its folder plus one row in
+2. a new renderer (a spring to the workspace centre, the fifth) is its folder plus one row in
    system/renderer_table.h: the system lists it, renders it, takes and checks its settings.
 
 The copy is the working tree's files (tracked and untracked, not ignored); the C++ is built
@@ -138,9 +138,9 @@ def _add_a_spring_renderer(root):
         '''))
     table = root / "gdextension/src/system/renderer_table.h"
     text = table.read_text()
-    last = "\tX(PONG, pong, PongRenderer)\n"
+    last = "\tX(VEHICLE, vehicle, VehicleRenderer)\n"
     assert last in text
-    table.write_text(text.replace(last, "\tX(PONG, pong, PongRenderer) \\\n\tX(SPRING, spring, SpringRenderer)\n"))
+    table.write_text(text.replace(last, "\tX(VEHICLE, vehicle, VehicleRenderer) \\\n\tX(SPRING, spring, SpringRenderer)\n"))
 
 
 def test_the_generator_wrote_only_what_the_changes_ask_for(scratch):
@@ -253,11 +253,11 @@ int main(int argc, char **argv) {
 '''
 
 
-def test_the_field_and_the_fourth_renderer_work_in_cpp(built):
+def test_the_field_and_the_new_renderer_work_in_cpp(built):
     out = run([built], built.parent).stdout
     assert "out of range: HapticFrame.contacts[0].grip_n: 7 is outside [0, 5]" in out, out
     names = re.findall(r"^renderer (\w+)$", out, re.M)
-    assert names == ["movement", "constraint", "pong", "spring"], out
+    assert names == ["movement", "constraint", "pong", "vehicle", "spring"], out
     pull, position = map(float, re.search(r"spring pull (\S+) at (\S+) m", out).groups())
     assert position > 0.005, out
     assert pull == pytest.approx(-100.0 * position, rel=0.05), out

@@ -16,4 +16,5 @@
 #define HAPTICS_RENDERERS(X) \
 	X(MOVEMENT, movement, MovementRenderer) \
 	X(CONSTRAINT, constraint, ConstraintRenderer) \
-	X(PONG, pong, PongRenderer)
+	X(PONG, pong, PongRenderer) \
+	X(VEHICLE, vehicle, VehicleRenderer)
