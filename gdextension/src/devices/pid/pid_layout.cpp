@@ -256,6 +256,9 @@ Status find_control_reports(PidLayout &r_layout) {
 Status PidLayout::build(hid::ReportDescriptor &&p_descriptor, PidLayout &r_layout) {
 	r_layout = PidLayout{};
 	r_layout.descriptor = std::move(p_descriptor);
+	if (restore_reversed_selector_arrays(r_layout.descriptor) > 0) {
+		r_layout.quirks |= QUIRK_REVERSED_ARRAY_RANGES;
+	}
 	std::array<int32_t, REPORT_USAGES.size()> slots;
 	find_reports(r_layout.descriptor, slots);
 	struct Wanted {

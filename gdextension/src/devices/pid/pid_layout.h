@@ -12,7 +12,8 @@
 //  - value fields only in fields whose usage count equals the report count (Linux maxusage).
 // Device-specific behaviour the descriptor reveals is recorded as quirks: Start Delay
 // missing (K-new MISSING_DELAY), Device Control as a bitmask (Variable) rather than an array,
-// a device-control field without logical minimum 1 (K-new PERMISSIVE_CONTROL).
+// a device-control field without logical minimum 1 (K-new PERMISSIVE_CONTROL), selector
+// arrays whose logical range a Windows rebuild of the descriptor gave as "maximum..0".
 
 #include "core/base/status.h"
 #include "devices/hid/report_descriptor.h"
@@ -34,6 +35,7 @@ enum PidQuirk : uint32_t {
 	QUIRK_PERMISSIVE_CONTROL = 1u << 2,
 	QUIRK_DEVICE_CONTROL_BITMASK = 1u << 16, // Ours: not a kernel quirk bit, a branch.
 	QUIRK_AJ_FIRMWARE = 1u << 17, // Looks like AJ's descriptor (infinite = 0x7FFF).
+	QUIRK_REVERSED_ARRAY_RANGES = 1u << 18, // Ours: selector arrays read back from N..0.
 };
 
 // What "infinite duration" is written as (docs/devices/hid-pid.md, "Infinite duration"). Linux writes all ones,
@@ -111,6 +113,11 @@ struct PidLayout {
 // report and usage, e.g. "PID layout: Set Effect report 1: Gain (0x52) has logical range
 // 0..1000, which 8 unsigned bits cannot hold (descriptor byte 240)".
 Status check_field_ranges(const PidLayout &p_layout);
+
+// Reads the selector arrays (0x25, 0x78, 0x8B, 0x96) a descriptor rebuilt on Windows gives as
+// N..0 as the 1..N they were (docs/devices/hid.md, "Windows: the descriptor rebuilt from parsed
+// data"); returns how many. PidLayout::build runs it first; other reversed ranges stay refused.
+uint32_t restore_reversed_selector_arrays(hid::ReportDescriptor &r_descriptor);
 
 inline constexpr uint32_t PID_EFFECTS_MAX = 64; // K-old/K-new PID_EFFECTS_MAX.
 inline constexpr uint32_t PID_MAX_REPORT_BYTES = 64; // Our fixed buffers: a full-speed packet.

@@ -5,6 +5,29 @@
 
 namespace haptics::pid {
 
+// Windows' parsed data keeps an array's maximum where a value keeps its minimum, so a descriptor
+// hidapi rebuilds from it (windows/hidapi_descriptor_reconstruct.c) can say N..0 (a SideWinder FF2
+// did, issue 38). The minimum is lost; PID selectors count from 1 (hid-pidff requires it).
+uint32_t restore_reversed_selector_arrays(hid::ReportDescriptor &r_descriptor) {
+	uint32_t restored = 0;
+	for (hid::Field &field : r_descriptor.fields) {
+		const uint32_t collection = field.logical_usage;
+		const bool selector = collection == pid_usage(EFFECT_TYPE) || collection == pid_usage(EFFECT_OPERATION) ||
+				collection == pid_usage(BLOCK_LOAD_STATUS) || collection == pid_usage(DEVICE_CONTROL);
+		if (!selector || field.is_variable() || field.logical_max != 0 || field.logical_min <= 0) {
+			continue;
+		}
+		if (field.physical_min == field.logical_min && field.physical_max == field.logical_max) {
+			field.physical_min = 1; // The parser copied the reversed range (no physical one was given).
+			field.physical_max = field.logical_min;
+		}
+		field.logical_max = field.logical_min;
+		field.logical_min = 1;
+		++restored;
+	}
+	return restored;
+}
+
 // The encoders write values inside each field's logical range (scaled and clamped, or keys
 // and indexes the descriptor itself defines), so a field whose bits hold that range never
 // fails an encoder, and one whose bits do not would fail the first effect, long after the
