@@ -51,8 +51,8 @@ FLOORS = [
     ["pong/net/messages"],
     ["pong/net"],
     ["pong/net/ui"],
-    # The 3D room: its avatar, its builder and the room.
-    ["level3d"],
+    # The 3D room: its avatar, its builder and the room; the driving scene beside it.
+    ["level3d", "level3d/drive"],
     # The side-scroller's HUD and goal screen, the main menu; then the main scene (the
     # menu and one run of a level): the top.
     ["ui"],

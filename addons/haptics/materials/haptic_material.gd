@@ -12,6 +12,9 @@ extends Resource
 ## by item ([method of_grid_cell]). A body, tile or cell without one but with a
 ## [PhysicsMaterial] feels like [method from_physics_material] of it; anything else feels
 ## like the probe's default material.
+## [br][br]
+## Under a car's wheel ([HapticVehicle3D]) the Road group counts instead: the grip the tyres
+## get and the texture the steering wheel feels (a kerb's ripple, a rough surface).
 
 ## The custom data layer a TileSet's tiles name their material in.
 const TILE_LAYER := &"haptic_material"
@@ -21,6 +24,10 @@ const TILE_LAYER := &"haptic_material"
 const GRID_META := &"haptic_materials"
 ## The largest stiffness, friction and impact gain a material takes.
 const MAX_GAIN := HapticFrameLimits.MAX_GAIN
+## The largest grip a road surface gives.
+const MAX_GRIP := HapticVehicleFacts.MAX_GRIP
+## The largest roughness or ripple a road surface has, newtons at the rim.
+const MAX_TEXTURE_N := HapticVehicleFacts.MAX_TEXTURE_N
 
 ## Normal-force gain k, in newtons per unit input: pushing the device to the edge of its
 ## workspace straight into the surface is resisted with this force.
@@ -33,6 +40,23 @@ const MAX_GAIN := HapticFrameLimits.MAX_GAIN
 @export_range(1.0, 1000.0, 1.0, "suffix:Hz") var impact_frequency: float = 150.0
 ## Decay time constant of the impact transient.
 @export_range(0.001, 1.0, 0.001, "suffix:s") var impact_decay: float = 0.03
+
+@export_group("Road")
+## The tyres' friction coefficient on this surface, as a factor on each wheel's own
+## ([member VehicleWheel3D.wheel_friction_slip]): 1 dry asphalt, about 0.6 gravel or a wet
+## road, 0.1 ice. It changes what the steering feels, not how the car drives: a game whose
+## surfaces change the wheels' friction itself leaves this at 1.
+@export_range(0.0, MAX_GRIP, 0.01) var grip: float = 1.0
+## How rough the surface feels through a steering wheel: the RMS of a noise at the rim, at
+## full strength from [member HapticVehicleSettings.roughness_speed_m_per_s] up; 0 smooth.
+@export_range(0.0, MAX_TEXTURE_N, 0.01, "suffix:N") var roughness: float = 0.0
+## A ripple's amplitude at the rim (a kerb's ridges, a rumble strip); felt only with a
+## [member ripple_spacing].
+@export_range(0.0, MAX_TEXTURE_N, 0.01, "suffix:N") var ripple: float = 0.0
+## The distance between the ripple's ridges: a wheel rolling at v feels it at v / spacing Hz;
+## 0, no ripple.
+@export_range(0.0, HapticTyreContact.RIPPLE_SPACING_M_MAX, 0.01, "suffix:m")
+var ripple_spacing: float = 0.0
 
 
 # A material saved before 0.3.0 names its friction "damping", which 0.4.0 no longer reads:
@@ -63,6 +87,17 @@ func impact_material() -> HapticImpactMaterial:
 	out.frequency_hz = impact_frequency
 	out.decay_s = impact_decay
 	return out
+
+
+## Writes this material's road into [param contact] (a steered wheel's frame entry): its
+## grip as a factor on [param wheel_grip], its roughness and ripple.
+func write_road(contact: HapticTyreContact, wheel_grip: float) -> void:
+	contact.grip = clampf(wheel_grip * grip, 0.0, MAX_GRIP)
+	contact.roughness_n = roughness
+	contact.ripple_n = ripple if ripple_spacing >= HapticTyreContact.RIPPLE_SPACING_M_MIN else 0.0
+	contact.ripple_spacing_m = (
+		ripple_spacing if ripple_spacing >= HapticTyreContact.RIPPLE_SPACING_M_MIN else 0.0
+	)
 
 
 ## The material a body declares (property first, then metadata), or [code]null[/code].

@@ -8,6 +8,10 @@ extends HapticsValue
 
 ## This layout's id on the wire (docs/values.md): a change of any field changes it.
 const SCHEMA_ID: int = 0x96079db6
+## The least [member ripple_spacing_m] takes.
+const RIPPLE_SPACING_M_MIN: float = 0.01
+## The most [member ripple_spacing_m] takes.
+const RIPPLE_SPACING_M_MAX: float = 100.0
 
 ## The wheel touches the ground; a wheel in the air gives no torque and no texture.
 var in_contact: bool = false

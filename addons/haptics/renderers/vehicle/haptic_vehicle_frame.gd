@@ -9,6 +9,14 @@ extends HapticsValue
 
 ## This layout's id on the wire (docs/values.md): a change of any field changes it.
 const SCHEMA_ID: int = 0xe8b16c08
+## The least [member steer_lock_rad] takes.
+const STEER_LOCK_RAD_MIN: float = 0.01
+## The most [member steer_lock_rad] takes.
+const STEER_LOCK_RAD_MAX: float = HapticVehicleFacts.MAX_STEER_ANGLE_RAD
+## The least [member reference_load_n] takes.
+const REFERENCE_LOAD_N_MIN: float = 0.001
+## The most [member reference_load_n] takes.
+const REFERENCE_LOAD_N_MAX: float = HapticVehicleFacts.MAX_TYRE_LOAD_N
 
 ## delta: the steered wheels' angle when the slip angles were measured (VehicleBody3D.steering:
 ## positive turns left). Unit: rad. Range [-1.5, 1.5].

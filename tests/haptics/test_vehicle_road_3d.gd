@@ -1,0 +1,149 @@
+extends TestSuite
+## The road and the crashes through [HapticVehicle3D] on the drive scene's car, real physics,
+## the door of the test's own stepped at 1 kHz of device time ([DriveRig]): a kerb's ripple at
+## the speed over its spacing, with its amplitude; one impact for one crash into the wall; a
+## refused frame; the renderer taken and given back.
+
+## Runs scenes for seconds: make check (--quick) leaves it out.
+const SLOW := true
+const KERB := preload("res://addons/haptics/materials/kerb.tres")
+## A ripple is counted where it crosses these (N), both ways: the kerb's light roughness
+## near zero makes no extra cycle.
+const HYSTERESIS_N := 0.2
+
+var door: HapticsTestKit.Door = null
+var rig: DriveRig = null
+var _texture: PackedFloat64Array = PackedFloat64Array()
+var _impact_peak: float = 0.0
+
+
+func before_each() -> void:
+	set_timeout(120.0)
+	door = autofree(HapticsTestKit.manual())
+	assert_true(HapticsTestKit.instant(door) and HapticsTestKit.no_dead_zone(door))
+	_texture = PackedFloat64Array()
+	_impact_peak = 0.0
+
+
+func after_each() -> void:
+	if rig != null and is_instance_valid(rig.scene):
+		rig.scene.free()
+	rig = null
+
+
+func test_a_kerb_ripples_at_the_speed_over_its_spacing() -> void:
+	# Straight down the middle at 10 m/s: the left wheels run over the first kerb.
+	rig = DriveRig.new(self, door, DriveScene.START, 0.0, false)
+	rig.target_speed = 10.0
+	await rig.drive(150)  # Up to speed before the kerb.
+	var speeds: PackedFloat64Array = PackedFloat64Array()
+	rig.on_tick = _record_texture_on_kerb
+	for frame_index: int in 150:
+		await rig.drive(1)
+		for wheel: HapticTyreContact in rig.car.haptics.last_frame.wheels:
+			if wheel.ripple_n > 0.0:
+				speeds.append(wheel.speed_m_per_s)
+	rig.on_tick = Callable()
+	if not assert_gt(_texture.size(), 300, "a third of a second on the kerb at least"):
+		return
+	var mean_speed: float = 0.0
+	for speed: float in speeds:
+		mean_speed += speed / speeds.size()
+	var expected_hz: float = mean_speed / KERB.ripple_spacing
+	var measured_hz: float = _cycles(_texture) / (_texture.size() * HapticsTestKit.DT)
+	var largest: float = 0.0
+	for x: float in _texture:
+		largest = maxf(largest, absf(x))
+	print(
+		(
+			(
+				"kerb at %.2f m/s over %.2f m ridges: %.1f Hz felt (expected %.1f Hz), peak %.2f N "
+				+ "(ripple %.2f N) over %d ticks"
+			)
+			% [
+				mean_speed,
+				KERB.ripple_spacing,
+				measured_hz,
+				expected_hz,
+				largest,
+				KERB.ripple,
+				_texture.size()
+			]
+		)
+	)
+	assert_almost_eq(mean_speed, 10.0, 0.6, "at speed")
+	assert_almost_eq(measured_hz, expected_hz, expected_hz * 0.08, "speed / spacing")
+	assert_almost_eq(largest, KERB.ripple, KERB.ripple * 0.3, "the kerb's amplitude")
+	assert_gt(rig.state().frames, 250, "a frame every physics tick")
+
+
+func test_hitting_the_wall_rings_one_impact() -> void:
+	rig = DriveRig.new(self, door, Vector3(0.0, 0.6, DriveScene.WALL_AT.y - 25.0), 0.0, false)
+	rig.target_speed = 9.0
+	var crashes: Array[float] = []
+	rig.car.haptics.crashed.connect(
+		func(_collider: Object, speed: float) -> void: crashes.append(speed)
+	)
+	rig.on_tick = _record_impact
+	for frame_index: int in 300:
+		await rig.drive(1)
+		if not crashes.is_empty():
+			rig.cruise = false  # Off the throttle once it has hit.
+			rig.car.throttle = 0.0
+	print("crash into the wall: %s m/s, impact peak %.2f N on the wheel" % [crashes, _impact_peak])
+	assert_eq(crashes.size(), 1, "one crash")
+	assert_eq(rig.car.haptics.crashes_played, 1)
+	if crashes.size() == 1:
+		assert_gt(crashes[0], 5.0, "sized by the change of velocity: it was doing about 9 m/s")
+	assert_gt(_impact_peak, 0.5, "the wheel was kicked")
+
+
+func test_a_refused_frame_names_its_field_and_the_last_good_one_stays() -> void:
+	rig = DriveRig.new(self, door, DriveScene.START, 0.0, false)
+	await rig.drive(60)
+	var vehicle: HapticsVehicle = rig.car.haptics.renderer()
+	var frames: int = rig.state().frames
+	var bad: HapticVehicleFrame = rig.car.haptics.build_frame()
+	bad.wheels[0].load_n = NAN
+	expect_error("wheels[0].load_n: not finite")
+	assert_false(vehicle.send_frame(bad))
+	bad = rig.car.haptics.build_frame()
+	bad.wheels[1].slip_angle_rad = 2.0
+	expect_error("wheels[1].slip_angle_rad")
+	assert_false(vehicle.send_frame(bad))
+	for tick: int in 20:
+		door.servo.step(HapticsTestKit.DT)
+	assert_eq(rig.state().frames, frames, "nothing taken")
+	assert_true(is_finite(door.get_forces_3d().total.x))
+
+
+func test_the_node_takes_the_renderer_and_gives_it_back() -> void:
+	assert_eq(door.get_render_mode(), &"movement")
+	rig = DriveRig.new(self, door, DriveScene.START, 0.0, false)
+	assert_eq(door.get_render_mode(), HapticsVehicle.NAME)
+	rig.scene.free()
+	assert_eq(door.get_render_mode(), &"movement", "given back when it leaves")
+
+
+func _record_texture_on_kerb(on: DriveRig) -> void:
+	for wheel: HapticTyreContact in on.car.haptics.last_frame.wheels:
+		if wheel.ripple_n > 0.0:
+			_texture.append(on.part(DriveRig.TEXTURE))
+			return
+
+
+func _record_impact(on: DriveRig) -> void:
+	_impact_peak = maxf(_impact_peak, absf(on.door.get_forces_3d().impact.x))
+
+
+# Full cycles through +HYSTERESIS_N and back below -HYSTERESIS_N.
+func _cycles(samples: PackedFloat64Array) -> int:
+	var count: int = 0
+	var high: bool = false
+	for x: float in samples:
+		if not high and x > HYSTERESIS_N:
+			high = true
+			count += 1
+		elif high and x < -HYSTERESIS_N:
+			high = false
+	return count
