@@ -5,7 +5,7 @@ extends VehicleBody3D
 ## It steers with the device (its x is the wheel: the arrow keys move the simulated one), or
 ## with the arrow keys when there is no device to steer with; Up and Down drive and brake.
 ## [br][br]
-## Its dimensions are a small car's: 2.5 m between the axles, 1.5 m between the wheels,
+## Its dimensions are a small car's: 2.5 m between the axles, 1.6 m between the wheels,
 ## wheels 0.31 m in radius, the suspension settling 6 cm under the car's weight (Godot's
 ## stiffness is per unit of the car's mass: compression = g / (4 × stiffness)).
 
@@ -16,7 +16,7 @@ const KEY_STEER_SPEED := 1.2
 ## Front and rear axles' distance from the centre, metres (front is +z).
 const AXLE_Z := 1.25
 ## The wheels' distance from the centre line, metres.
-const WHEEL_X := 0.75
+const WHEEL_X := 0.8
 const WHEEL_RADIUS := 0.31
 
 ## The engine's force at full throttle, N (about 0.35 g).
@@ -39,9 +39,9 @@ func _init() -> void:
 	center_of_mass = Vector3(0.0, 0.25, 0.0)
 	var body_shape: CollisionShape3D = CollisionShape3D.new()
 	var box: BoxShape3D = BoxShape3D.new()
-	box.size = Vector3(1.7, 0.6, 3.9)
+	box.size = Vector3(1.5, 0.5, 3.9)
 	body_shape.shape = box
-	body_shape.position = Vector3(0.0, 0.55, 0.0)
+	body_shape.position = Vector3(0.0, 0.7, 0.0)
 	add_child(body_shape)
 	add_child(_body_mesh())
 	for front: bool in [true, false]:
@@ -108,16 +108,16 @@ func _body_mesh() -> Node3D:
 	var shell: Node3D = Node3D.new()
 	var lower: MeshInstance3D = MeshInstance3D.new()
 	var lower_box: BoxMesh = BoxMesh.new()
-	lower_box.size = Vector3(1.7, 0.5, 3.9)
+	lower_box.size = Vector3(1.5, 0.5, 3.9)
 	lower.mesh = lower_box
-	lower.position = Vector3(0.0, 0.55, 0.0)
+	lower.position = Vector3(0.0, 0.7, 0.0)
 	lower.material_override = _paint(Color(0.13, 0.42, 0.78))
 	shell.add_child(lower)
 	var cabin: MeshInstance3D = MeshInstance3D.new()
 	var cabin_box: BoxMesh = BoxMesh.new()
-	cabin_box.size = Vector3(1.5, 0.5, 2.0)
+	cabin_box.size = Vector3(1.35, 0.5, 2.0)
 	cabin.mesh = cabin_box
-	cabin.position = Vector3(0.0, 1.05, -0.3)
+	cabin.position = Vector3(0.0, 1.2, -0.3)
 	cabin.material_override = _paint(Color(0.7, 0.82, 0.92))
 	shell.add_child(cabin)
 	return shell
