@@ -118,11 +118,16 @@ func test_a_refused_frame_names_its_field_and_the_last_good_one_stays() -> void:
 
 
 func test_the_node_takes_the_renderer_and_gives_it_back() -> void:
+	var settings: HapticServoSettings = door.servo.get_settings()
+	settings.input.dead_zone = 0.1
+	assert_true(door.servo.apply_settings(settings))
 	assert_eq(door.get_render_mode(), &"movement")
 	rig = DriveRig.new(self, door, DriveScene.START, 0.0, false)
 	assert_eq(door.get_render_mode(), HapticsVehicle.NAME)
+	assert_eq(door.servo.get_settings().input.dead_zone, 0.0, "a wheel's centre has no play")
 	rig.scene.free()
 	assert_eq(door.get_render_mode(), &"movement", "given back when it leaves")
+	assert_almost_eq(door.servo.get_settings().input.dead_zone, 0.1, 1e-9, "and the dead zone")
 
 
 func _record_texture_on_kerb(on: DriveRig) -> void:

@@ -43,7 +43,9 @@ var steer_lock: float = 0.5
 ## tyres' slip with the wheel at every tick. Off for a game steered by keys or a pilot.
 @export var steers_with_device: bool = true
 ## Make the vehicle renderer the servo's when this node is ready, and give the previous one
-## back when it leaves the tree.
+## back when it leaves the tree. It also turns the servo's input dead zone off meanwhile
+## ([member HapticInputSettings.dead_zone]): a steering wheel's centre has no play, and a dead
+## band there would steer nothing for the first degrees.
 @export var take_renderer: bool = true
 ## The road under a wheel whose ground declares no [HapticMaterial] (a [CSGShape3D] or
 ## [GridMap] ground has none to give); null: grip 1, smooth.
@@ -71,6 +73,7 @@ var _renderer: HapticsVehicle = null
 var _gauges: Array[HapticTyreGauge] = []
 var _crashes: HapticCrashGauge = null
 var _previous_mode: StringName = &""
+var _previous_dead_zone: float = -1.0
 
 
 func _ready() -> void:
@@ -109,11 +112,25 @@ func _ready() -> void:
 	if take_renderer and _renderer.is_available():
 		_previous_mode = haptics.get_render_mode()
 		_renderer.activate()
+		_previous_dead_zone = _set_dead_zone(0.0)
 
 
 func _exit_tree() -> void:
 	if _renderer != null and _previous_mode != &"" and _renderer.is_active():
 		haptics.set_render_mode(_previous_mode)
+		_previous_mode = &""
+	if _previous_dead_zone >= 0.0:
+		_set_dead_zone(_previous_dead_zone)
+		_previous_dead_zone = -1.0
+
+
+# Sets the servo's input dead zone; returns the one it had.
+func _set_dead_zone(dead_zone: float) -> float:
+	var settings: HapticServoSettings = haptics.servo.get_settings()
+	var before: float = settings.input.dead_zone
+	settings.input.dead_zone = dead_zone
+	haptics.servo.apply_settings(settings)
+	return before
 
 
 func _physics_process(_delta: float) -> void:
