@@ -180,3 +180,29 @@ func test_a_player_whose_server_is_silent_sees_the_trouble_until_it_is_back() ->
 	pulse.peer_back.emit(PongNetAuthority.SERVER_ID, 2.5)
 	await wait_process_frames(2)
 	assert_eq(screen.hud.get_status_text(), "Connection back after 2.5 s")
+
+
+func test_a_guest_silent_in_the_lobby_keeps_its_seat_and_no_match_starts_without_it() -> void:
+	# CI's person suite: a joining guest busy loading was silent 1.58 s and dropped.
+	_net = PongNet.new()
+	add_child(_net)
+	_net.session.is_server = true
+	_net.players[1] = {"name": "Ada", "seat": 0, "ready": true}
+	_net.players[OTHER] = {"name": "Bo", "seat": 1, "ready": true}
+	var lines: Array[String] = []
+	_net.status_changed.connect(func(text: String) -> void: lines.append(text))
+	var pulse: PongNetPulse = _net.session.pulse
+	assert_true(pulse.keeps_seat.call(OTHER), "a lobby player keeps its seat while silent")
+	assert_false(pulse.keeps_seat.call(OTHER + 1), "a stranger does not")
+	var beat: PongNetHeartbeat = pulse.heartbeat
+	beat.watch(OTHER, 0.0)
+	beat.heard(OTHER, 1.0)
+	beat.overdue(2.6, func(_p: int) -> float: return 1.5, pulse.keeps_seat)
+	assert_true(beat.is_absent(OTHER), "absent, not gone")
+	pulse.peer_absent.emit(OTHER, 1.6)
+	assert_true(lines[-1].begins_with("Bo has connection trouble"), lines[-1])
+	assert_eq(_net.players[OTHER]["seat"], 1, "the lobby still lists Bo in seat 2")
+	assert_false(_net.can_start(), "no match starts while Bo is not heard")
+	beat.heard(OTHER, 3.0)
+	beat.returned()
+	assert_true(_net.can_start(), "heard again: the match may start")

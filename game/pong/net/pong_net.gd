@@ -123,12 +123,13 @@ func set_ready(is_ready: bool) -> void:
 		session.router.send_to(PongNetAuthority.SERVER_ID, message)
 
 
-## Server: whether a match may start now (two players or more, all ready, none running).
+## Server: whether a match may start now (two players or more, all ready and heard, none
+## running).
 func can_start() -> bool:
 	if not session.is_server or play.is_running() or players.size() < 2:
 		return false
-	for entry: Dictionary in players.values():
-		if not entry.get("ready", false):
+	for peer: int in players:
+		if not players[peer].get("ready", false) or session.pulse.heartbeat.is_absent(peer):
 			return false
 	return true
 

@@ -1,8 +1,9 @@
 class_name PongNetAbsences
 extends RefCounted
-## Players silent in a match (a Wi-Fi hiccup, a tunnel): the seat stays theirs for
-## [constant PongNetProtocol.SEAT_GRACE_S]. On the server the computer stands in from the
-## heartbeat's limit on and gives the seat back when the player is heard again; the player
+## Players silent in a match or in the lobby (a Wi-Fi hiccup, a tunnel, a machine busy
+## loading): the seat stays theirs for [constant PongNetProtocol.SEAT_GRACE_S]. In a match,
+## on the server the computer stands in from the heartbeat's limit on and gives the seat back
+## when the player is heard again (in the lobby no match starts without them); the player
 ## sees "connection trouble" while it lasts. Only after the grace is the seat given up, and
 ## both sides say so.
 
@@ -36,11 +37,14 @@ func frame() -> void:
 	_net.screen.hud.notice = notice
 
 
-# A silent peer keeps its seat while a match runs: a client its server, the server a player.
+# A silent peer keeps its seat: a client its server; the server a player of the match, or
+# of the lobby (a joining guest's machine busy loading was dropped after 1.6 s in CI).
 func _keeps_seat(peer: int) -> bool:
-	if not _net.play.is_running():
-		return false
-	return not _net.session.is_server or _net.play.authority.owners.has(peer)
+	if not _net.session.is_server:
+		return true
+	if _net.play.is_running():
+		return _net.play.authority.owners.has(peer)
+	return _net.players.has(peer)
 
 
 func _on_peer_absent(peer: int, silence_s: float) -> void:
@@ -51,6 +55,11 @@ func _on_peer_absent(peer: int, silence_s: float) -> void:
 		)
 		return
 	var grace: float = PongNetProtocol.SEAT_GRACE_S
+	if not _net.play.is_running():
+		_net.say(
+			"%s has connection trouble\ntheir seat is kept up to %.0f s" % [_name_of(peer), grace]
+		)
+		return
 	_net.say(
 		(
 			"%s has connection trouble\nthe computer plays for them up to %.0f s"
