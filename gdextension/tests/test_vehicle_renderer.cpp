@@ -139,7 +139,7 @@ TEST_CASE("vehicle renderer: the steering goes light as the front lets go") {
 	CHECK(flagged_past_peak);
 }
 
-TEST_CASE("vehicle renderer: standing still there is no aligning torque; it fades in with speed") {
+TEST_CASE("vehicle renderer: standing still there is no aligning torque, it fades in with speed") {
 	const VehicleConfig config; // low_speed_m_per_s 2
 	VehicleRig rig(config);
 	VehicleFrame frame = one_wheel(degrees(2.0));
@@ -192,7 +192,7 @@ TEST_CASE("vehicle renderer: the damper brakes the wheel's motion") {
 	CHECK(std::abs(rig.part(DAMPING_FORCE)) < 1e-3);
 }
 
-TEST_CASE("vehicle renderer: nothing before the game's first frame; its frames feed the watchdog") {
+TEST_CASE("vehicle renderer: nothing before the game's first frame, and its frames feed the watchdog") {
 	VehicleRig rig;
 	rig.wheel->angle = -0.3;
 	for (int t = 0; t < 200; ++t) {

@@ -157,7 +157,7 @@ TEST_CASE("vehicle road: a crash's impact rings on the wheel over the steering, 
 	CHECK(peak > 0.9);
 }
 
-TEST_CASE("vehicle road: a frame with NaN or out of range is refused by name; the renderer goes on") {
+TEST_CASE("vehicle road: a frame with NaN or out of range is refused by name and the renderer goes on") {
 	VehicleRig rig;
 	VehicleFrame frame = rolling(10.0, 0.0, 0.0, 0.0);
 	frame.wheels[0].slip_angle_rad = 0.05;
