@@ -24,12 +24,21 @@ if ! command -v dpkg-query >/dev/null || ! command -v apt-get >/dev/null; then
   exit 0
 fi
 
+# SDL 3's headers for the SDL backend, from Debian testing (Debian 12 has none): two packages
+# unpacked into .build/deps/sdl3, not installed (tools/provision-sdl3.sh, pinned there). Without
+# them the build leaves the backend out and says so. After the packages (it needs the keyring).
+provision_sdl3() {
+  "$(dirname "$0")/provision-sdl3.sh" >/dev/null ||
+    echo "install-deps: SDL 3 could not be provisioned; the SDL backend will not be built" >&2
+}
+
 missing=()
 for p in "${packages[@]}"; do
   status=$(dpkg-query -W -f='${db:Status-Status}' "$p" 2>/dev/null || true)
   [[ $status == installed ]] || missing+=("$p")
 done
 if ((${#missing[@]} == 0)); then
+  provision_sdl3
   exit 0
 fi
 
@@ -45,3 +54,4 @@ echo "install-deps: installing ${missing[*]}"
 export DEBIAN_FRONTEND=noninteractive
 "${sudo[@]}" apt-get update -qq
 "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+provision_sdl3

@@ -69,6 +69,7 @@ if(HAPTICS_BUILD_TESTS)
     # The program the kernel tests boot a VM for (tools/kernel/run.sh): our device stack against
     # the VM's real drivers, the device models speaking through uhid, uinput and gadgets.
     file(GLOB HAPTICS_VM_TEST_SOURCES CONFIGURE_DEPENDS vm_tests/*.cpp)
+    haptics_platform_filter(HAPTICS_VM_TEST_SOURCES)
     add_executable(haptics_vm_tests ${HAPTICS_VM_TEST_SOURCES})
     target_link_libraries(haptics_vm_tests PRIVATE haptics_system haptics_scripted)
 
