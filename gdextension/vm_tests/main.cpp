@@ -27,6 +27,9 @@ constexpr Scenario SCENARIOS[] = {
 	{ "falcon-usb", haptics::vm::run_falcon_usb },
 	{ "dualsense", haptics::vm::run_dualsense },
 	{ "evdev-uinput", haptics::vm::run_evdev_uinput },
+#if HAPTICS_SDL3
+	{ "sdl", haptics::vm::run_sdl },
+#endif
 };
 
 // A scenario that hangs (a transfer nobody completes) must still leave the kernel's log and

@@ -29,6 +29,8 @@ int run_pid_usb();
 int run_falcon_usb();
 int run_dualsense();
 int run_evdev_uinput();
+// SDL 3's haptics over the kernel's drivers (sdl.cpp; built with HAPTICS_SDL3).
+int run_sdl();
 
 // The DualSense scenario's evdev part (dualsense_evdev.cpp), on the plugged pad.
 void run_dualsense_evdev(Report &r_report, uhid::DualSenseUhidPad &p_pad);

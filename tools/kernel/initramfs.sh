@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Packs the VM's initramfs: busybox (static, from the busybox-static package), the drivers the
 # tests use with the modules they depend on (in load order), the test program with the shared
-# libraries it links (from this machine) and tools/kernel/init.
+# libraries it links (from this machine; with Debian testing's C library and libSDL3 when the
+# program has the SDL backend) and tools/kernel/init.
 #   tools/kernel/initramfs.sh KERNEL_DIR VERSION TEST_PROGRAM OUT.cpio.gz
 set -euo pipefail
 project=$(cd "$(dirname "$0")/../.." && pwd)
@@ -48,11 +49,37 @@ for module in "${modules[@]}"; do
 done
 
 cp "$program" "$stage/tests/haptics_vm_tests"
-# The program's shared libraries, and the loader, from this machine.
-while read -r lib; do
-  cp -L "$lib" "$stage/lib/x86_64-linux-gnu/"
-done < <(ldd "$program" | sed -nE 's/.*=> (\/[^ ]+) .*/\1/p')
-cp -L /lib64/ld-linux-x86-64.so.2 "$stage/lib64/"
+# A program built with the SDL backend loads libSDL3.so.0 at run time (its scenario, sdl):
+# Debian testing's, which needs testing's C library. Then the program's libraries, SDL's and
+# the loader come from the engine's root (Debian testing, tools/provision-engine.sh), which
+# holds the very libSDL3.so.0 the exported game ships, resolved as that loader resolves them
+# (the engine's root first, then this machine's); libudev.so.1, which SDL's haptics load, is
+# among the program's own.
+sdl_root=""
+if grep -q "libSDL3.so.0" "$program"; then
+  sdl_root=${KERNEL_TEST_SDL_ROOT:-$project/.engine/root}
+  [[ -e $sdl_root/usr/lib/x86_64-linux-gnu/libSDL3.so.0 ]] ||
+    die "$program loads libSDL3.so.0, and $sdl_root has none (make engine provisions it; or set KERNEL_TEST_SDL_ROOT)"
+fi
+if [[ -n $sdl_root ]]; then
+  loader=$sdl_root/usr/lib64/ld-linux-x86-64.so.2
+  [[ -e $loader ]] || loader=$sdl_root/lib64/ld-linux-x86-64.so.2
+  libpath=$sdl_root/usr/lib/x86_64-linux-gnu:$sdl_root/usr/lib/x86_64-linux-gnu/pulseaudio
+  sdl=$sdl_root/usr/lib/x86_64-linux-gnu/libSDL3.so.0
+  while read -r lib; do
+    cp -L "$lib" "$stage/lib/x86_64-linux-gnu/"
+  done < <(for elf in "$program" "$sdl"; do
+    "$loader" --library-path "$libpath" --list "$elf" || die "cannot list the libraries of $elf"
+  done | sed -nE 's/.*=> (\/[^ ]+) .*/\1/p' | sort -u)
+  cp -L "$sdl" "$stage/lib/x86_64-linux-gnu/"
+  cp -L "$loader" "$stage/lib64/ld-linux-x86-64.so.2"
+else
+  # The program's shared libraries, and the loader, from this machine.
+  while read -r lib; do
+    cp -L "$lib" "$stage/lib/x86_64-linux-gnu/"
+  done < <(ldd "$program" | sed -nE 's/.*=> (\/[^ ]+) .*/\1/p')
+  cp -L /lib64/ld-linux-x86-64.so.2 "$stage/lib64/"
+fi
 
 (cd "$stage" && find . | busybox cpio -o -H newc 2>/dev/null) | gzip -1 >"$out"
 echo "kernel/initramfs: $(wc -l <"$stage/modules/order") modules, $(du -h "$out" | cut -f1)"

@@ -17,6 +17,8 @@ inline constexpr std::string_view BACKEND_LIBUSB = "libusb";
 inline constexpr std::string_view BACKEND_EVDEV = "evdev"; // Linux input event nodes.
 // The user's OpenHaptics runtime (devices by configuration name, not by bus).
 inline constexpr std::string_view BACKEND_OPENHAPTICS = "openhaptics";
+// SDL 3's haptics (devices/sdl, where built: HAPTICS_SDL3).
+inline constexpr std::string_view BACKEND_SDL = "sdl";
 
 // Driver names (DeviceInfo::driver): which code renders a device.
 inline constexpr std::string_view DRIVER_SIMULATED = "simulated";
@@ -25,6 +27,7 @@ inline constexpr std::string_view DRIVER_EVDEV = "evdev";
 inline constexpr std::string_view DRIVER_FALCON = "falcon";
 inline constexpr std::string_view DRIVER_OPENHAPTICS = "openhaptics";
 inline constexpr std::string_view DRIVER_DUALSENSE = "dualsense";
+inline constexpr std::string_view DRIVER_SDL = "sdl";
 
 inline constexpr std::string_view SIMULATED_DEVICE_ID = "simulated";
 inline constexpr std::string_view SIMULATED_DEVICE_MODEL = "Simulated 3-DOF device (Omni-like)";

@@ -4,6 +4,9 @@
 #include "devices/falcon/falcon_backend.h"
 #include "devices/openhaptics/openhaptics_backend.h"
 #include "devices/pid/pid_backend.h"
+#if HAPTICS_SDL3
+#include "devices/sdl/sdl_backend.h"
+#endif
 #include "system/platform_backends.h"
 
 #include <cstdlib>
@@ -36,6 +39,13 @@ Status open_dualsense(const DeviceInfo &p_info, const DeviceOpenOptions &, std::
 	return dualsense::open_device(p_info, r_device);
 }
 
+#if HAPTICS_SDL3
+// SDL takes the gain itself when it opens a haptic (sdl_device.h): only the spring is asked.
+Status open_sdl(const DeviceInfo &p_info, const DeviceOpenOptions &p_options, std::unique_ptr<HapticDevice> &r_device) {
+	return sdl::open_device(p_info, !p_options.spring_off, r_device);
+}
+#endif
+
 // The first row whose probe handles a device drives it; order matters only where two
 // backends could claim one device.
 constexpr BackendRow BACKENDS[] = {
@@ -46,6 +56,11 @@ constexpr BackendRow BACKENDS[] = {
 	// driver is bound it says so, and a platform row (platform_backends.h) drives the stick.
 	{ DRIVER_HID_PID, pid::probe, open_hid_pid },
 	{ DRIVER_OPENHAPTICS, openhaptics::probe, open_openhaptics },
+#if HAPTICS_SDL3
+	// Only SDL's own entries (backend "sdl"); which backend wins a device both reach:
+	// devices/sdl/sdl_backend.h.
+	{ DRIVER_SDL, sdl::probe, open_sdl },
+#endif
 };
 
 // The first row, common then this platform's, for which p_matches is true; null if none.
@@ -128,6 +143,9 @@ DeviceList list_all_devices() {
 	if (openhaptics_entry.openable || std::getenv(openhaptics::HD_LIBRARY_ENV) != nullptr) {
 		list.devices.push_back(openhaptics_entry);
 	}
+#if HAPTICS_SDL3
+	sdl::append_sdl_devices(list.devices, list.warnings);
+#endif
 	for (const DeviceSource &source : sources()) {
 		source.append(list.devices);
 	}

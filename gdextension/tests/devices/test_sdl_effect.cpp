@@ -1,0 +1,135 @@
+// The SDL backend's effects (devices/sdl/sdl_effect.h): a stick's force as SDL's polar angle and
+// level, which SDL's Linux driver turns into the very evdev direction our evdev backend sends; a
+// wheel's on the steering axis; finite values within full scale whatever comes in; the rumble
+// envelope's two motors.
+
+#include "devices/sdl/sdl_effect.h"
+#if HAPTICS_EVDEV
+#include "devices/evdev/evdev_ff.h"
+#endif
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <limits>
+
+using namespace haptics;
+using namespace haptics::sdl;
+
+namespace {
+
+// SDL's Linux driver: polar hundredths of a degree -> ff_effect direction
+// (SDL_SYS_ToDirection, src/haptic/linux/SDL_syshaptic.c).
+uint16_t linux_direction(int32_t p_polar) {
+	return static_cast<uint16_t>(((static_cast<uint32_t>(p_polar) % 36000) * 0x8000) / 18000);
+}
+
+} // namespace
+
+TEST_CASE("sdl effect: a stick's force as a polar angle clockwise from device +y and a level of full scale") {
+	const SdlForceMapping mapping{ 5.0, false, false, false };
+	const struct {
+		Vec3 force;
+		int32_t direction;
+		int16_t level;
+	} cases[] = {
+		{ Vec3(1.0, 0.0, 0.0), 9000, 6553 }, // 1 N of 5: 0.2 * 32767 = 6553.4
+		{ Vec3(0.0, -2.5, 0.0), 18000, 16384 },
+		{ Vec3(-5.0, 0.0, 0.0), 27000, 32767 },
+		{ Vec3(0.0, 1.0, 0.0), 0, 6553 },
+		{ Vec3(1.0, 1.0, 0.0), 4500, 9268 }, // |F| = sqrt 2
+		{ Vec3(0.0, 0.0, 3.0), 0, 0 }, // z is not rendered
+	};
+	for (const auto &c : cases) {
+		CAPTURE(c.direction);
+		const SdlConstantForce force = map_force_to_sdl(c.force, mapping);
+		CHECK(force.direction_type == SDL_HAPTIC_POLAR);
+		CHECK(force.direction == c.direction);
+		CHECK(force.level == c.level);
+	}
+}
+
+#if HAPTICS_EVDEV
+TEST_CASE("sdl effect: on Linux SDL hands the kernel the evdev backend's own direction for every force") {
+	const SdlForceMapping sdl_mapping{ 5.0, false, false, false };
+	const evdev::FfForceMapping evdev_mapping{ 5.0, evdev::EvdevShape::JOYSTICK, false, false };
+	for (int i = 0; i < 360; i += 7) {
+		const double angle = i * 3.14159265358979 / 180.0;
+		const Vec3 force(2.0 * std::sin(angle), 2.0 * std::cos(angle), 0.0);
+		CAPTURE(i);
+		const SdlConstantForce sdl_force = map_force_to_sdl(force, sdl_mapping);
+		const evdev::FfConstantForce evdev_force = evdev::map_force_to_constant(force, evdev_mapping);
+		const int difference = static_cast<int>(linux_direction(sdl_force.direction)) - evdev_force.direction;
+		// SDL's hundredths of a degree are coarser than evdev's 1/65536 of a turn: 2 steps at most.
+		CHECK(std::abs(difference) <= 2);
+		CHECK(sdl_force.level == evdev_force.level);
+	}
+}
+#endif
+
+TEST_CASE("sdl effect: NaN and infinities count as zero, huge forces are full scale, never beyond") {
+	const SdlForceMapping mapping{ 5.0, false, false, false };
+	const double nan = std::numeric_limits<double>::quiet_NaN();
+	const double inf = std::numeric_limits<double>::infinity();
+	CHECK(map_force_to_sdl(Vec3(nan, nan, 0.0), mapping) == SdlConstantForce{});
+	CHECK(map_force_to_sdl(Vec3(inf, 0.0, 0.0), mapping) == SdlConstantForce{});
+	const SdlConstantForce huge = map_force_to_sdl(Vec3(0.0, -1e9, 0.0), mapping);
+	CHECK(huge.level == SDL_LEVEL_MAX);
+	CHECK(huge.direction == 18000);
+	const Vec3 rendered = constant_effect_force_n(constant_effect(huge), 5.0);
+	CHECK(length(rendered) == doctest::Approx(5.0));
+	SdlForceMapping wheel = mapping;
+	wheel.steering = true;
+	CHECK(map_force_to_sdl(Vec3(-1e9, 0.0, 0.0), wheel).level == -SDL_LEVEL_MAX);
+	CHECK(map_force_to_sdl(Vec3(nan, 3.0, 0.0), wheel).level == 0);
+}
+
+TEST_CASE("sdl effect: a wheel renders x on the steering axis with a signed level; y is not felt") {
+	const SdlForceMapping wheel{ 4.0, true, false, false };
+	const SdlConstantForce right = map_force_to_sdl(Vec3(1.0, 3.0, 0.0), wheel);
+	CHECK(right.direction_type == SDL_HAPTIC_STEERING_AXIS);
+	CHECK(right.direction == 0);
+	CHECK(right.level == 8192); // 0.25 * 32767 = 8191.75
+	CHECK(map_force_to_sdl(Vec3(-1.0, 0.0, 0.0), wheel).level == -8192);
+	SdlForceMapping inverted = wheel;
+	inverted.invert_x = true;
+	CHECK(map_force_to_sdl(Vec3(-1.0, 0.0, 0.0), inverted).level == 8192);
+	CHECK(constant_effect_force_n(constant_effect(right), 4.0).x == doctest::Approx(1.0).epsilon(1e-4));
+}
+
+TEST_CASE("sdl effect: the constant effect is finite and renewed well before it ends; the inverse recovers the force") {
+	CHECK(SDL_EFFECT_LENGTH_MS != SDL_HAPTIC_INFINITY);
+	CHECK(SDL_EFFECT_LENGTH_MS <= 0x7fff); // SDL's Linux driver clamps lengths to 32767 ms.
+	CHECK(SDL_EFFECT_RENEW_S * 1000.0 * 3.0 <= SDL_EFFECT_LENGTH_MS);
+	const SDL_HapticEffect effect = constant_effect(SdlConstantForce{ SDL_HAPTIC_POLAR, 13500, 20000 });
+	CHECK(effect.type == SDL_HAPTIC_CONSTANT);
+	CHECK(effect.constant.length == SDL_EFFECT_LENGTH_MS);
+	CHECK(effect.constant.direction.type == SDL_HAPTIC_POLAR);
+	CHECK(effect.constant.direction.dir[0] == 13500);
+	CHECK(effect.constant.level == 20000);
+	const SdlForceMapping mapping{ 5.0, false, false, false };
+	const Vec3 force(1.3, -0.7, 0.0);
+	const Vec3 back = constant_effect_force_n(constant_effect(map_force_to_sdl(force, mapping)), 5.0);
+	CHECK(back.x == doctest::Approx(1.3).epsilon(1e-3));
+	CHECK(back.y == doctest::Approx(-0.7).epsilon(1e-3));
+}
+
+TEST_CASE("sdl rumble envelope: small motor always, large above the knee, release and floor, 0x7FFF full") {
+	const SdlRumbleMapping mapping;
+	SdlRumbleEnvelope envelope;
+	SdlRumbleLevels levels = envelope.update(1.5, 0.004, mapping);
+	CHECK(levels.small == 16384);
+	CHECK(levels.large == 0);
+	levels = envelope.update(9.0, 0.004, mapping);
+	CHECK(levels == SdlRumbleLevels{ 0x7fff, 0x7fff });
+	levels = envelope.update(0.0, mapping.release_s, mapping);
+	CHECK(envelope.level() == doctest::Approx(std::exp(-1.0)));
+	CHECK(levels.large == 0);
+	CHECK(envelope.update(0.0, 10 * mapping.release_s, mapping) == SdlRumbleLevels{});
+	CHECK(envelope.update(std::nan(""), 0.004, mapping) == SdlRumbleLevels{});
+	const SDL_HapticEffect effect = leftright_effect(SdlRumbleLevels{ 100, 200 });
+	CHECK(effect.type == SDL_HAPTIC_LEFTRIGHT);
+	CHECK(effect.leftright.large_magnitude == 100);
+	CHECK(effect.leftright.small_magnitude == 200);
+	CHECK(effect.leftright.length == SDL_EFFECT_LENGTH_MS);
+}
