@@ -9,6 +9,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -193,7 +194,10 @@ TEST_CASE("wire: text is UTF-8 within its length, both checked") {
 	CHECK(back.reason.view() == "USB transfer failed: é");
 
 	std::vector<uint8_t> bytes = encode(status);
-	bytes.back() = 0xFF; // The é's last byte: no longer UTF-8.
+	const uint8_t e_acute[] = { 0xC3, 0xA9 };
+	const auto e_at = std::search(bytes.begin(), bytes.end(), std::begin(e_acute), std::end(e_acute));
+	REQUIRE(e_at != bytes.end());
+	*(e_at + 1) = 0xFF; // The é's last byte: no longer UTF-8.
 	CHECK(mentions(decode_bytes(bytes, back), "HapticDeviceStatus.reason: not UTF-8 text"));
 
 	std::vector<uint8_t> long_text = { bytes.begin(), bytes.begin() + 5 }; // id and io.

@@ -2,7 +2,9 @@
 // probe chose: its interrupt OUT endpoint NAKs for 1.5 s (a busy firmware), then STALLs
 // (halted). Through hidraw our own write waits while the endpoint NAKs, and the device
 // status must say so at once and clear when the wire moves again; a STALL fails the write,
-// and the status says why. Through the kernel's hid-pidff (evdev) the updates go into
+// and the status says why; our backend then resets the USB device (the only means that
+// reaches a halt usbhid owns), and opening it again renders the servo's force. Through the
+// kernel's hid-pidff (evdev) the updates go into
 // usbhid's queue and the kernel drops what overflows without telling user space: measured
 // and reported here, not checked, since no status can see it.
 
@@ -77,11 +79,15 @@ void nak(Report &r_report, gadget::HidGadget &r_stick, pid::ScriptedPidJoystick 
 			p_when + ": after the NAK the wire holds the servo's force again");
 }
 
-void stall(Report &r_report, gadget::HidGadget &r_stick, HapticsSystem &r_system, bool p_kernel_owns, const std::string &p_when) {
+void stall(Report &r_report, gadget::HidGadget &r_stick, pid::ScriptedPidJoystick &r_joystick, HapticsSystem &r_system,
+		const DeviceInfo &p_info, bool p_kernel_owns, const std::string &p_when) {
 	const int irq_errors_before = kernel_log_count("output irq status -32");
 	std::thread frames([&] { stand_on_floor(r_system, 0.5); });
 	const Status halted = r_stick.stall_outputs();
 	frames.join();
+	// The halt answers every report with STALL whether or not a read waits; the reads must
+	// wait again for when the host clears it (a reset does).
+	r_stick.hold_outputs(false);
 	if (!r_report.check(halted.ok(), p_when + ": the gadget halted its OUT endpoint " + halted.message())) {
 		return;
 	}
@@ -101,15 +107,28 @@ void stall(Report &r_report, gadget::HidGadget &r_stick, HapticsSystem &r_system
 	if (!p_kernel_owns) {
 		r_report.check(failed_s >= 0.0 && status.reason[0] != '\0', p_when + ": the status says the device failed, and why");
 		r_report.check(servo_stops(r_system, 2.0), p_when + ": the servo stops (zero force)");
+		r_report.check(std::strstr(status.reason, "reset it") != nullptr, p_when + ": the backend reset the device");
+		// What the game's reconnect does: list it again, open it, render.
+		r_system.close_device();
+		DeviceInfo again;
+		double max_force_n = 0.0;
+		if (r_report.check(find_listed(p_info.vendor_id, p_info.product_id, p_info.backend, again), p_when + ": listed after the reset") &&
+				open_and_run(r_report, again, r_system, max_force_n, p_when + ", reopened")) {
+			r_joystick.set_stick(0.0, 0.8);
+			stand_on_floor(r_system, 1.0);
+			same_force(r_report, r_system.forces().total, pid_wire_n(r_joystick, max_force_n), 0.03 * max_force_n,
+					p_when + ": after the reset the wire holds the servo's force again");
+		}
 	}
 }
 
 } // namespace
 
 void check_outages(Report &r_report, gadget::HidGadget &r_stick, pid::ScriptedPidJoystick &r_joystick,
-		HapticsSystem &r_system, double p_max_force_n, bool p_kernel_owns, const std::string &p_label) {
+		HapticsSystem &r_system, const DeviceInfo &p_info, double p_max_force_n, bool p_kernel_owns,
+		const std::string &p_label) {
 	nak(r_report, r_stick, r_joystick, r_system, p_max_force_n, p_kernel_owns, p_label + ", NAK");
-	stall(r_report, r_stick, r_system, p_kernel_owns, p_label + ", STALL");
+	stall(r_report, r_stick, r_joystick, r_system, p_info, p_kernel_owns, p_label + ", STALL");
 	r_stick.hold_outputs(false);
 }
 

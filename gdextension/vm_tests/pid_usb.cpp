@@ -170,7 +170,7 @@ void run_stick(Report &r_report, pid::ScriptedFirmware p_firmware, bool p_kernel
 			choose(r_report, p_kernel_owns, info, p_label + ", replugged") &&
 			press_into_floor(r_report, *joystick, system, info, max_force_n, p_label + ", replugged")) {
 		// Last: a STALL lasts until the host clears it, which nothing here does.
-		check_outages(r_report, stick, *joystick, system, max_force_n, p_kernel_owns, p_label);
+		check_outages(r_report, stick, *joystick, system, info, max_force_n, p_kernel_owns, p_label);
 	}
 	const gadget::HidGadgetCounts counts = stick.counts();
 	r_report.info(p_label + ": the gadget moved " + std::to_string(counts.inputs) + " input and " +

@@ -8,7 +8,8 @@
 
 namespace haptics {
 class HapticsSystem;
-}
+struct DeviceInfo;
+} // namespace haptics
 namespace haptics::gadget {
 class HidGadget;
 }
@@ -38,9 +39,11 @@ void run_dualsense_evdev(Report &r_report, uhid::DualSenseUhidPad &p_pad);
 // (kernel_facts.cpp), on the created stick.
 void check_kernel_facts(Report &r_report, uinput::UinputFfDevice &p_stick);
 // The PID scenario's outages (pid_outage.cpp): the stick's OUT endpoint NAKs for 1.5 s, then
-// STALLs; p_kernel_owns: hid-pidff drives it (evdev), else our backend (hidraw). Leaves the
-// stick's outputs released (a STALL stays until the host clears it).
+// STALLs; p_info: the entry opened; p_kernel_owns: hid-pidff drives it (evdev), else our
+// backend (hidraw). Leaves the stick's outputs released (a STALL stays until the host clears
+// it).
 void check_outages(Report &r_report, gadget::HidGadget &r_stick, pid::ScriptedPidJoystick &r_joystick,
-		HapticsSystem &r_system, double p_max_force_n, bool p_kernel_owns, const std::string &p_label);
+		HapticsSystem &r_system, const DeviceInfo &p_info, double p_max_force_n, bool p_kernel_owns,
+		const std::string &p_label);
 
 } // namespace haptics::vm

@@ -4,7 +4,7 @@
 # reads what it prints on the serial console and fails on any failed check, a missing end, or
 # the timeout.
 #   tools/kernel/run.sh PROGRAM [SUITE [SCENARIO,...]]   SUITE: bookworm (default) or testing
-# The console log is .build/kernel/<suite>.log.
+# The console log is .build/kernel/<suite>.log (or $HAPTICS_KERNEL_OUT/<suite>.log).
 set -euo pipefail
 project=$(cd "$(dirname "$0")/../.." && pwd)
 program=${1:?usage: tools/kernel/run.sh PROGRAM [SUITE [SCENARIO,...]]}
@@ -27,7 +27,7 @@ qemu=$(command -v qemu-system-x86_64) || die "qemu-system-x86_64 missing (packag
 version=$("$project/tools/kernel/fetch.sh" "$suite" | tail -n 1) || die "could not fetch the '$suite' kernel"
 kernel_dir=$project/.kernel/$suite/root
 image=$project/.kernel/$suite/vmlinuz
-out=$project/.build/kernel
+out=${HAPTICS_KERNEL_OUT:-$project/.build/kernel} # Its own folder lets two runs go side by side.
 mkdir -p "$out"
 "$project/tools/kernel/initramfs.sh" "$kernel_dir" "$version" "$program" "$out/$suite.cpio.gz" >/dev/null ||
   die "could not pack the initramfs"

@@ -321,6 +321,6 @@ TEST_CASE("pong system: the pong config section validates its joint limits by na
 	const RenderConfig before = system.config();
 	CHECK_FALSE(reconfigure(system, [](RenderConfig &r_config) { r_config.pong.beginner_height_m = 2.45; }));
 	CHECK(std::memcmp(&system.config(), &before, sizeof(RenderConfig)) == 0);
-	CHECK(RENDER_MODE_COUNT == 3);
+	CHECK(RENDER_MODE_COUNT == 4); // movement, constraint, pong, vehicle.
 	CHECK(static_cast<size_t>(RenderMode::PONG) == 2);
 }

@@ -48,6 +48,15 @@ Status HidapiTransport::report_descriptor(std::vector<uint8_t> &r_bytes) {
 DeviceIo HidapiTransport::failed(const char *p_call, int p_errno) {
 	char message[128];
 	narrow_hid_text(device_ ? hid_error(device_) : nullptr, std::strerror(p_errno), message, sizeof(message));
+	if (p_errno == EPIPE) {
+		// A STALLed endpoint stays halted until someone clears it, and only a reset reaches
+		// it from here (hidraw_sysfs.h). The device starts over, so the game's reconnect opens
+		// it again, effects and all.
+		const Status reset = reset_usb_device_of(path_);
+		std::snprintf(error_, sizeof(error_), "%.24s on %.32s: endpoint stalled (%.32s); %.64s", p_call,
+				path_.c_str(), message, reset ? "reset it, reopening" : reset.message());
+		return DeviceIo::FAILED;
+	}
 	std::snprintf(error_, sizeof(error_), "%s on %s: %s", p_call, path_.c_str(), message);
 	return hid_device_lost(p_errno, path_, message) ? DeviceIo::DISCONNECTED : DeviceIo::FAILED;
 }

@@ -42,6 +42,13 @@ bool is_hidraw_node(const std::string &p_path, std::string *r_reason = nullptr, 
 // reports through hidraw would fight its bookkeeping: use the evdev path instead.
 bool kernel_ff_bound(const std::string &p_hidraw_path, const std::string &p_sysfs_root = "/sys");
 
+// Resets the USB device behind a hidraw node (USBDEVFS_RESET on /dev/bus/usb/BBB/DDD): the
+// one means a program has to clear a halted (STALLed) endpoint that usbhid owns, since
+// clearing the halt alone needs the interface usbhid holds. The device starts over: its
+// effects are gone, and the node must be opened again. Needs write access to the USB node
+// (the udev rule grants it for the sticks it knows). Windows: UNSUPPORTED.
+Status reset_usb_device_of(const std::string &p_hidraw_path, const std::string &p_sysfs_root = "/sys");
+
 // Whether the device node at p_path is still there (a removed device's node goes away).
 bool hid_node_exists(const std::string &p_path);
 

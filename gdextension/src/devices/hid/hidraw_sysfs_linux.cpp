@@ -6,10 +6,13 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <linux/usbdevice_fs.h>
 #include <memory>
+#include <sys/ioctl.h>
 #include <sys/stat.h>
 #include <sys/sysmacros.h>
 #include <unistd.h>
@@ -129,6 +132,34 @@ bool kernel_ff_bound(const std::string &p_hidraw_path, const std::string &p_sysf
 		}
 	}
 	return false;
+}
+
+Status reset_usb_device_of(const std::string &p_hidraw_path, const std::string &p_sysfs_root) {
+	std::filesystem::path dir = hidraw_hid_device_sysfs_dir(p_hidraw_path, p_sysfs_root);
+	// The HID device sits under its USB interface, under the USB device with busnum/devnum.
+	for (; !dir.empty() && dir != dir.root_path(); dir = dir.parent_path()) {
+		std::ifstream bus_file(dir / "busnum");
+		std::ifstream dev_file(dir / "devnum");
+		int bus = 0;
+		int dev = 0;
+		if (!(bus_file >> bus) || !(dev_file >> dev)) {
+			continue;
+		}
+		char node[40];
+		std::snprintf(node, sizeof(node), "/dev/bus/usb/%03d/%03d", bus, dev);
+		const int fd = ::open(node, O_WRONLY | O_CLOEXEC);
+		if (fd < 0) {
+			return Status::error(StatusCode::DEVICE_ERROR, "cannot reset %s: %s", node, std::strerror(errno));
+		}
+		const int reset = ::ioctl(fd, USBDEVFS_RESET, 0);
+		const int reset_errno = errno;
+		::close(fd);
+		if (reset != 0) {
+			return Status::error(StatusCode::DEVICE_ERROR, "USB reset of %s failed: %s", node, std::strerror(reset_errno));
+		}
+		return Status::success();
+	}
+	return Status::error(StatusCode::NO_DEVICE, "%s is not a USB device", p_hidraw_path.c_str());
 }
 
 bool hid_node_exists(const std::string &p_path) {

@@ -46,6 +46,11 @@ bool kernel_ff_bound(const std::string &, const std::string &) {
 	return false;
 }
 
+// Windows gives an application no reset of a USB device its HID driver owns.
+Status reset_usb_device_of(const std::string &, const std::string &) {
+	return Status::error(StatusCode::UNSUPPORTED, "Windows offers no USB reset of a HID device to a program");
+}
+
 // A removed device's interface name cannot be checked without opening it: hidapi's open and
 // its reads say so.
 bool hid_node_exists(const std::string &) {
