@@ -1,7 +1,7 @@
 class_name Main
 extends Node
-## Entry scene: the main menu and the screens it leads to (Play, the 3D room, Haptic Battle
-## Pong, Maze study, Settings).
+## Entry scene: the main menu and the screens it leads to (Play, the 3D room, the drive,
+## Haptic Battle Pong, Maze study, Settings).
 ##
 ## After [code]--[/code] on the command line: [code]--system-check[/code] prints
 ## [method system_line] (what this installation found: the extension, the devices), shows the
@@ -17,6 +17,8 @@ const STUDY_SCENE: PackedScene = preload("res://game/study/session/study.tscn")
 const GAME_SCENE: PackedScene = preload("res://game/main/game.tscn")
 ## The 3D level.
 const ROOM_3D_SCENE: PackedScene = preload("res://game/level3d/room_3d.tscn")
+## The drive (the vehicle renderer's scene).
+const DRIVE_SCENE: PackedScene = preload("res://game/level3d/drive/drive.tscn")
 ## Haptic Battle Pong.
 const PONG_SCENE: PackedScene = preload("res://game/pong/ui/pong.tscn")
 ## Networked Pong's lobby, over the Pong setup.
@@ -81,6 +83,7 @@ func show_menu() -> void:
 	var menu: MainMenu = _switch_to(MENU_SCENE) as MainMenu
 	menu.play_requested.connect(start_game)
 	menu.room_3d_requested.connect(start_room_3d)
+	menu.drive_requested.connect(start_drive)
 	menu.pong_requested.connect(show_pong)
 	menu.maze_requested.connect(show_maze)
 	menu.settings_requested.connect(show_settings)
@@ -123,6 +126,13 @@ func start_room_3d(pilot: Room3DPilot = null) -> void:
 	_switch_to_node(room)
 
 
+## Starts the drive; Esc returns to the title screen.
+func start_drive() -> void:
+	var drive: DriveScene = DRIVE_SCENE.instantiate() as DriveScene
+	drive.menu_requested.connect(show_menu)
+	_switch_to_node(drive)
+
+
 func _switch_to(scene: PackedScene) -> Node:
 	var node: Node = scene.instantiate()
 	_switch_to_node(node)
@@ -135,7 +145,7 @@ func _switch_to_node(node: Node) -> void:
 		remove_child(_screen)
 		_screen.queue_free()
 	_screen = node
-	_background.visible = not (node is Game or node is PongScreen or node is Room3D)
+	_background.visible = not (node is Game or node is PongScreen or node is Node3D)
 	add_child(node)
 
 

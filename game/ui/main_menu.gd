@@ -1,11 +1,13 @@
 class_name MainMenu
 extends Control
-## The title screen: Play, the 3D room, Haptic Battle Pong, Maze study, Settings, Quit.
+## The title screen: Play, the 3D room and the drive (one row), Haptic Battle Pong, Maze
+## study, Settings, Quit.
 ## Navigable with keyboard or gamepad (the first button takes focus) and clickable with the
 ## mouse. It only emits signals; the main scene decides what each one does.
 
 signal play_requested
 signal room_3d_requested
+signal drive_requested
 signal pong_requested
 signal maze_requested
 signal settings_requested
@@ -15,6 +17,7 @@ var _status_timer: float = 0.0
 
 @onready var play_button: Button = %PlayButton
 @onready var room_3d_button: Button = %Room3DButton
+@onready var drive_button: Button = %DriveButton
 @onready var pong_button: Button = %PongButton
 @onready var maze_button: Button = %MazeButton
 @onready var settings_button: Button = %SettingsButton
@@ -25,6 +28,7 @@ var _status_timer: float = 0.0
 func _ready() -> void:
 	play_button.pressed.connect(play_requested.emit)
 	room_3d_button.pressed.connect(room_3d_requested.emit)
+	drive_button.pressed.connect(drive_requested.emit)
 	pong_button.pressed.connect(pong_requested.emit)
 	maze_button.pressed.connect(maze_requested.emit)
 	settings_button.pressed.connect(settings_requested.emit)

@@ -26,6 +26,7 @@ func test_the_title_screen_comes_first_with_play_focused() -> void:
 		return
 	assert_eq(menu.play_button.text, "Play")
 	assert_eq(menu.room_3d_button.text, "3D room")
+	assert_eq(menu.drive_button.text, "Drive")
 	assert_eq(menu.pong_button.text, "Haptic Battle Pong")
 	assert_eq(menu.maze_button.text, "Maze study")
 	assert_eq(menu.settings_button.text, "Settings")
@@ -38,6 +39,8 @@ func test_the_arrow_keys_move_the_focus_through_the_buttons() -> void:
 	var menu: MainMenu = _main.get_screen() as MainMenu
 	_press_key(KEY_DOWN)
 	assert_true(menu.room_3d_button.has_focus())
+	_press_key(KEY_RIGHT)
+	assert_true(menu.drive_button.has_focus(), "the drive sits beside the 3D room")
 	_press_key(KEY_DOWN)
 	assert_true(menu.pong_button.has_focus())
 	_press_key(KEY_DOWN)
@@ -48,6 +51,18 @@ func test_the_arrow_keys_move_the_focus_through_the_buttons() -> void:
 	assert_true(menu.quit_button.has_focus())
 	_press_key(KEY_UP)
 	assert_true(menu.settings_button.has_focus())
+
+
+func test_drive_opens_the_drive_and_escape_returns_to_the_menu() -> void:
+	(_main.get_screen() as MainMenu).drive_button.pressed.emit()
+	await wait_process_frames(2)
+	var drive: DriveScene = _main.get_screen() as DriveScene
+	if not assert_not_null(drive, "Drive shows the drive"):
+		return
+	assert_false((_main.get_node(^"Background") as CanvasItem).visible, "the 3D scene shows")
+	_push_action(&"ui_cancel")
+	await wait_process_frames(1)
+	assert_true(_main.get_screen() is MainMenu, "Esc returns to the menu")
 
 
 func test_settings_opens_and_back_returns_to_the_menu() -> void:
