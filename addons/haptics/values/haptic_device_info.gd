@@ -11,7 +11,7 @@ const SCHEMA_ID: int = 0x42bd9166
 ## What Haptics.device.open takes: stable while the device stays plugged in the same place, unique
 ## within one enumeration ("simulated", "hid:<path>", "usb:<bus>-<ports>").
 var id: String = ""
-## How it was found: simulated, hidapi, libusb, evdev or openhaptics.
+## How it was found: simulated, hidapi, libusb, evdev, openhaptics or sdl.
 var backend: String = ""
 ## USB vendor id (0 when not on USB).
 var vendor_id: int = 0
@@ -33,8 +33,8 @@ var usage: int = 0
 var known_haptic: bool = false
 ## Its catalog name ("Novint Falcon"); empty when not in the catalog.
 var model: String = ""
-## Which driver would render it (hid-pid, evdev, falcon, openhaptics, dualsense, simulated); empty
-## when none does.
+## Which driver would render it (hid-pid, evdev, falcon, openhaptics, dualsense, sdl, simulated);
+## empty when none does.
 var driver: String = ""
 ## Whether it can be opened now.
 var openable: bool = false

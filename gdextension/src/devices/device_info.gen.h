@@ -25,7 +25,7 @@ struct DeviceInfo {
 	// What Haptics.device.open takes: stable while the device stays plugged in the same place,
 	// unique within one enumeration ("simulated", "hid:<path>", "usb:<bus>-<ports>").
 	std::string id{};
-	// How it was found: simulated, hidapi, libusb, evdev or openhaptics.
+	// How it was found: simulated, hidapi, libusb, evdev, openhaptics or sdl.
 	std::string backend{};
 	// USB vendor id (0 when not on USB).
 	uint16_t vendor_id{};
@@ -47,8 +47,8 @@ struct DeviceInfo {
 	bool known_haptic{};
 	// Its catalog name ("Novint Falcon"); empty when not in the catalog.
 	std::string model{};
-	// Which driver would render it (hid-pid, evdev, falcon, openhaptics, dualsense, simulated);
-	// empty when none does.
+	// Which driver would render it (hid-pid, evdev, falcon, openhaptics, dualsense, sdl,
+	// simulated); empty when none does.
 	std::string driver{};
 	// Whether it can be opened now.
 	bool openable{};

@@ -19,11 +19,13 @@ struct DeviceOpenOptions {
 
 	// Set the device's own force gain to full (evdev FF_GAIN 0xFFFF), so every newton is as
 	// promised. Off (the default), the gain the player set scales what is felt. Not put back on
-	// close: evdev cannot read it.
+	// close: evdev cannot read it. The sdl driver always takes it: SDL sets it to full when it
+	// opens a device.
 	bool take_gain{ false };
 	// Turn the device's own centring spring off (evdev FF_AUTOCENTER 0): it pulls toward the
 	// centre, against the game's forces. Not put back on close: evdev cannot read what it was (the
-	// driver's own returns when the device is plugged in again).
+	// driver's own returns when the device is plugged in again). SDL turns it off when it opens a
+	// device; the sdl driver turns it back to full when this is false.
 	bool spring_off{ true };
 	// Novint's firmware image for the Falcon (not ours to ship); empty: $HAPTICS_FALCON_FIRMWARE.
 	std::string falcon_firmware_path{};

@@ -56,7 +56,7 @@ TEST_CASE("sdl backend: where evdev drives SDL's haptics they are listed as such
 	CHECK(count(sdl.calls(), Kind::OPEN) == 0);
 }
 
-TEST_CASE("sdl backend: where SDL drives, each haptic says what it offers; one with neither force nor rumble says so") {
+TEST_CASE("sdl backend: where SDL drives, each haptic says what it offers, and one with neither force nor rumble says so") {
 	ScriptedHaptic bare = scripted_sdl_stick();
 	bare.name = "Gain only";
 	bare.features = SDL_HAPTIC_GAIN | SDL_HAPTIC_AUTOCENTER;

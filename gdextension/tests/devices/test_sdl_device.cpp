@@ -197,7 +197,7 @@ TEST_CASE("sdl device: close leaves zero, stopped, destroyed and the haptic clos
 	CHECK(rig.sdl.calls().size() == calls.size());
 }
 
-TEST_CASE("sdl device: a device that disappears mid-session is DISCONNECTED with SDL's text; another failure FAILED") {
+TEST_CASE("sdl device: a device that disappears mid-session is DISCONNECTED with SDL's text, another failure is FAILED") {
 	Rig rig({ scripted_sdl_stick() });
 	SdlHapticDevice device(rig.runtime, config_for(rig.entries.at(0).key));
 	REQUIRE(device.open().ok());

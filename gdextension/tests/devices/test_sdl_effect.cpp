@@ -84,7 +84,7 @@ TEST_CASE("sdl effect: NaN and infinities count as zero, huge forces are full sc
 	CHECK(map_force_to_sdl(Vec3(nan, 3.0, 0.0), wheel).level == 0);
 }
 
-TEST_CASE("sdl effect: a wheel renders x on the steering axis with a signed level; y is not felt") {
+TEST_CASE("sdl effect: a wheel renders x on the steering axis with a signed level, y is not felt") {
 	const SdlForceMapping wheel{ 4.0, true, false, false };
 	const SdlConstantForce right = map_force_to_sdl(Vec3(1.0, 3.0, 0.0), wheel);
 	CHECK(right.direction_type == SDL_HAPTIC_STEERING_AXIS);
@@ -97,7 +97,7 @@ TEST_CASE("sdl effect: a wheel renders x on the steering axis with a signed leve
 	CHECK(constant_effect_force_n(constant_effect(right), 4.0).x == doctest::Approx(1.0).epsilon(1e-4));
 }
 
-TEST_CASE("sdl effect: the constant effect is finite and renewed well before it ends; the inverse recovers the force") {
+TEST_CASE("sdl effect: the constant effect is finite and renewed well before it ends, and the inverse recovers the force") {
 	CHECK(SDL_EFFECT_LENGTH_MS != SDL_HAPTIC_INFINITY);
 	CHECK(SDL_EFFECT_LENGTH_MS <= 0x7fff); // SDL's Linux driver clamps lengths to 32767 ms.
 	CHECK(SDL_EFFECT_RENEW_S * 1000.0 * 3.0 <= SDL_EFFECT_LENGTH_MS);
