@@ -1,7 +1,8 @@
 // The SDL backend's effects (devices/sdl/sdl_effect.h): a stick's force as SDL's polar angle and
 // level, which SDL's Linux driver turns into the very evdev direction our evdev backend sends; a
 // wheel's on the steering axis; finite values within full scale whatever comes in; the rumble
-// envelope's two motors.
+// envelope's two motors. The SDL tests are *_linux.cpp while only Linux builds SDL (the Windows
+// suite counts what it leaves out by that name, tools/windows/test.sh).
 
 #include "devices/sdl/sdl_effect.h"
 #if HAPTICS_EVDEV
