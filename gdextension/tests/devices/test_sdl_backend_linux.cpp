@@ -6,6 +6,7 @@
 #include "devices/sdl/sdl_backend.h"
 #include "scoped_variable.h"
 #include "sdl_test_support.h"
+#include "system/device_factory.h"
 
 #include <doctest/doctest.h>
 
@@ -151,4 +152,23 @@ TEST_CASE("sdl library: a missing libSDL3 is 'not found', a library without SDL'
 	CHECK(missing_sdl_function(api) == nullptr);
 	api.PlayHapticRumble = nullptr;
 	CHECK(std::strcmp(missing_sdl_function(api), "SDL_PlayHapticRumble") == 0);
+}
+
+TEST_CASE("sdl backend: the device factory routes sdl entries to the SDL row, which refuses cleanly when it cannot open") {
+	const testing::ScopedVariable unset(SDL_ON_LINUX_ENV, nullptr);
+	std::vector<DeviceInfo> devices(1);
+	devices[0].id = "sdl:Nothing here#0";
+	devices[0].backend = BACKEND_SDL;
+	devices[0].path = "Nothing here#0";
+	probe_devices(devices);
+	CHECK(devices[0].driver == DRIVER_SDL);
+	CHECK_FALSE(devices[0].openable);
+	// Without libSDL3 (this machine's Debian 12 has none): "SDL 3 not found"; with one: SDL's
+	// haptics are the evdev backend's here, or this one is not listed.
+	CHECK_FALSE(devices[0].unavailable_reason.empty());
+	CHECK(devices[0].unavailable_reason.find("no force-feedback driver") == std::string::npos);
+	std::unique_ptr<HapticDevice> device;
+	const Status opened = open_listed_device(devices[0], DeviceOpenOptions{}, device);
+	CHECK_FALSE(opened.ok());
+	CHECK(device == nullptr);
 }
