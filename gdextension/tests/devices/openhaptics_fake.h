@@ -8,7 +8,7 @@
 
 #include "fake_hd/fake_hd_control.h"
 
-#include "devices/openhaptics/hd_library.h"
+#include "devices/dynamic_library.h"
 
 #include <chrono>
 #include <cstdio>
@@ -61,7 +61,7 @@ struct FakeHd {
 
 template <typename F>
 void fake_hd_resolve(void *p_handle, const char *p_name, F &r_function) {
-	void *symbol = openhaptics::library_symbol(p_handle, p_name);
+	void *symbol = dynamic_library_symbol(p_handle, p_name);
 	if (symbol == nullptr) {
 		std::fprintf(stderr, "fake HD: %s missing\n", p_name);
 		std::abort();
@@ -78,7 +78,7 @@ inline FakeHd &fake_hd() {
 	static FakeHd fake = [] {
 		char error[256];
 		bool missing = false;
-		void *handle = openhaptics::open_library(HAPTICS_FAKE_HD_PATH, missing, error, sizeof(error));
+		void *handle = open_dynamic_library(HAPTICS_FAKE_HD_PATH, missing, error, sizeof(error));
 		if (handle == nullptr) {
 			std::fprintf(stderr, "cannot load the fake HD library: %s\n", error);
 			std::abort();

@@ -1,10 +1,10 @@
 // The OpenHaptics runtime loader and the backend's entry points: a missing library, a
 // broken one, a missing function, the search order, probe/open_device, and hdGetError's
 // struct returned by value (docs/devices/openhaptics.md), all through the system's real loader (dlopen,
-// LoadLibrary under Wine: hd_library.h).
+// LoadLibrary under Wine: dynamic_library.h).
 
+#include "devices/dynamic_library.h"
 #include "devices/openhaptics/hd_api.h"
-#include "devices/openhaptics/hd_library.h"
 #include "devices/openhaptics/hd_runtime.h"
 #include "devices/openhaptics/openhaptics_backend.h"
 #include "openhaptics_fake.h"
@@ -99,12 +99,12 @@ TEST_CASE("openhaptics: a runtime without hdScheduleAsynchronous is refused, nam
 	CHECK_FALSE(device->is_open());
 	char error[256];
 	bool missing = false;
-	void *handle = open_library(HAPTICS_FAKE_HD_NO_ASYNC_PATH, missing, error, sizeof(error));
+	void *handle = open_dynamic_library(HAPTICS_FAKE_HD_NO_ASYNC_PATH, missing, error, sizeof(error));
 	REQUIRE(handle != nullptr);
 	size_t (*call_count)() = nullptr;
 	haptics::test::fake_hd_resolve(handle, "fake_hd_call_count", call_count);
 	CHECK(call_count() == 0);
-	close_library(handle);
+	close_dynamic_library(handle);
 }
 
 TEST_CASE("openhaptics: every function we use resolves in the fake, and unload forgets them") {

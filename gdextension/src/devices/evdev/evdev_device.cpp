@@ -1,5 +1,7 @@
 #include "devices/evdev/evdev_device.h"
 
+#include "devices/device_config_limits.h"
+
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -8,14 +10,6 @@
 namespace haptics::evdev {
 
 namespace {
-
-Status check_range(const char *p_name, double p_value, double p_max) {
-	if (!std::isfinite(p_value) || !(p_value > 0.0) || !(p_value <= p_max)) {
-		return Status::error(std::isfinite(p_value) ? StatusCode::OUT_OF_RANGE : StatusCode::INVALID_ARGUMENT,
-				"evdev_device.%s must be in (0, %g] (got %g)", p_name, p_max, p_value);
-	}
-	return Status::success();
-}
 
 void copy_name(char *r_name, size_t p_capacity, const char *p_text) {
 	std::snprintf(r_name, p_capacity, "%s", p_text);
@@ -27,24 +21,7 @@ Status validate_evdev_device_config(const EvdevDeviceConfig &p_config) {
 	if (p_config.path.empty()) {
 		return Status::error(StatusCode::INVALID_ARGUMENT, "evdev_device.path is empty (expected /dev/input/eventN)");
 	}
-	const struct {
-		const char *name;
-		double value;
-		double max;
-	} fields[] = {
-		{ "max_force_n", p_config.max_force_n, 100.0 },
-		{ "max_continuous_force_n", p_config.max_continuous_force_n, p_config.max_force_n },
-		{ "max_stiffness_n_per_m", p_config.max_stiffness_n_per_m, 1e5 },
-		{ "workspace_radius_m", p_config.workspace_radius_m, 1.0 },
-		{ "rate_hz", p_config.rate_hz, 1000.0 },
-	};
-	for (const auto &field : fields) {
-		const Status status = check_range(field.name, field.value, field.max);
-		if (!status) {
-			return status;
-		}
-	}
-	return Status::success();
+	return check_device_config_limits("evdev_device", { p_config.max_force_n, p_config.max_continuous_force_n, p_config.max_stiffness_n_per_m, p_config.workspace_radius_m, p_config.rate_hz });
 }
 
 Status evdev_open_error(int p_error, const char *p_path) {

@@ -1,6 +1,6 @@
 #include "devices/openhaptics/hd_api.h"
 
-#include "devices/openhaptics/hd_library.h"
+#include "devices/dynamic_library.h"
 
 #include <cstdio>
 #include <cstring>
@@ -42,7 +42,7 @@ constexpr ErrorName ERROR_NAMES[] = {
 
 template <typename F>
 bool resolve(void *p_handle, const char *p_name, F &r_function) {
-	void *symbol = library_symbol(p_handle, p_name);
+	void *symbol = dynamic_library_symbol(p_handle, p_name);
 	if (symbol == nullptr) {
 		return false;
 	}
@@ -85,7 +85,7 @@ Status HdLibrary::load(const char *p_path) {
 	}
 	char error[256];
 	bool missing = false;
-	void *handle = open_library(p_path, missing, error, sizeof(error));
+	void *handle = open_dynamic_library(p_path, missing, error, sizeof(error));
 	if (handle == nullptr) {
 		return Status::error(missing ? StatusCode::NO_DEVICE : StatusCode::DEVICE_ERROR,
 				"cannot load the OpenHaptics runtime '%s': %s", p_path, error);
@@ -119,7 +119,7 @@ Status HdLibrary::load(const char *p_path) {
 	};
 	for (const Required &symbol : required) {
 		if (!symbol.found) {
-			close_library(handle);
+			close_dynamic_library(handle);
 			return Status::error(StatusCode::DEVICE_ERROR,
 					"the OpenHaptics runtime '%s' lacks the function %s (an unsupported OpenHaptics version?)", p_path,
 					symbol.name);
@@ -136,7 +136,7 @@ Status HdLibrary::load(const char *p_path) {
 
 void HdLibrary::unload() {
 	if (handle_ != nullptr) {
-		close_library(handle_);
+		close_dynamic_library(handle_);
 		handle_ = nullptr;
 	}
 	api_ = HdApi{};

@@ -152,7 +152,7 @@ const char *hd_error_name(HDerror p_code);
 // use it.
 void format_hd_error(const HdApi *p_api, const HDErrorInfo &p_error, char *r_buffer, size_t p_capacity);
 
-// A loaded HD runtime (hd_library.h: dlopen, LoadLibrary) and its resolved functions. Loading resolves EVERY required
+// A loaded HD runtime (dynamic_library.h: dlopen, LoadLibrary) and its resolved functions. Loading resolves EVERY required
 // symbol up front, so a runtime too old or a wrong library fails here with the missing name,
 // not later inside the servo. Game thread only; the functions may then be called from any
 // thread the runtime allows.
@@ -163,7 +163,7 @@ public:
 	HdLibrary(const HdLibrary &) = delete;
 	HdLibrary &operator=(const HdLibrary &) = delete;
 
-	// open_library(p_path) (hd_library.h), then each function. p_path is a file path or a
+	// open_dynamic_library(p_path) (dynamic_library.h), then each function. p_path is a file path or a
 	// bare name the system's loader searches for. Errors (the message has the loader's
 	// text): NO_DEVICE when there is no such file, DEVICE_ERROR when it is there but cannot be
 	// loaded (a missing dependency, not a library) or lacks a function (named).

@@ -3,7 +3,7 @@
 // Where the user's OpenHaptics runtime is, the same rule on every platform
 // (docs/devices/openhaptics.md, "Finding the library"): the
 // path in the environment variable HAPTICS_OPENHAPTICS_LIBRARY, then the names its
-// installers create, found by the system's loader (hd_library.h):
+// installers create, found by the system's loader (dynamic_library.h):
 //   Linux    "libHD.so", "libHD.so.3.4", "libHD.so.3.0" (ld.so.cache, LD_LIBRARY_PATH)
 //   Windows  "hd.dll" (the installer puts OpenHaptics' bin folder on PATH; LoadLibrary's
 //            search order: the game's folder, the system folders, PATH)

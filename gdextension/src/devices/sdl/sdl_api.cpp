@@ -1,6 +1,6 @@
 #include "devices/sdl/sdl_api.h"
 
-#include "devices/sdl/sdl_library.h"
+#include "devices/dynamic_library.h"
 
 #include <cstdlib>
 #include <type_traits>
@@ -56,7 +56,8 @@ Status load_sdl_library(const std::string &p_path, SdlLibrary &r_library) {
 	}
 	char error[512] = {};
 	bool missing = false;
-	void *handle = open_sdl_library(path.c_str(), missing, error, sizeof(error));
+	// In the exported game Godot has already loaded the same libSDL3.so.0: this is that copy.
+	void *handle = open_dynamic_library(path.c_str(), missing, error, sizeof(error));
 	if (handle == nullptr) {
 		return Status::error(missing ? StatusCode::NO_DEVICE : StatusCode::DEVICE_ERROR, "SDL 3 %s (%s): %s",
 				missing ? "not found" : "cannot be loaded", path.c_str(), error);
@@ -66,7 +67,7 @@ Status load_sdl_library(const std::string &p_path, SdlLibrary &r_library) {
 	library.path = path;
 	visit_functions(library.api, [&](const char *p_name, auto &r_function) {
 		// POSIX and Windows both guarantee a symbol's address converts to a function pointer.
-		r_function = reinterpret_cast<std::remove_reference_t<decltype(r_function)>>(sdl_library_symbol(handle, p_name));
+		r_function = reinterpret_cast<std::remove_reference_t<decltype(r_function)>>(dynamic_library_symbol(handle, p_name));
 	});
 	if (const char *absent = missing_sdl_function(library.api)) {
 		return Status::error(StatusCode::DEVICE_ERROR, "%s is not SDL 3 or too old: it has no %s", path.c_str(), absent);

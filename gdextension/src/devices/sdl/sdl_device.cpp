@@ -1,5 +1,7 @@
 #include "devices/sdl/sdl_device.h"
 
+#include "devices/device_config_limits.h"
+
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -8,14 +10,6 @@
 namespace haptics::sdl {
 
 namespace {
-
-Status check_range(const char *p_name, double p_value, double p_max) {
-	if (!std::isfinite(p_value) || !(p_value > 0.0) || !(p_value <= p_max)) {
-		return Status::error(std::isfinite(p_value) ? StatusCode::OUT_OF_RANGE : StatusCode::INVALID_ARGUMENT,
-				"sdl_device.%s must be in (0, %g] (got %g)", p_name, p_max, p_value);
-	}
-	return Status::success();
-}
 
 // SDL reports failures as text only; its Linux driver appends strerror(errno), so an unplugged
 // device's calls end in strerror(ENODEV).
@@ -43,24 +37,7 @@ Status validate_sdl_device_config(const SdlDeviceConfig &p_config) {
 	if (p_config.key.empty()) {
 		return Status::error(StatusCode::INVALID_ARGUMENT, "sdl_device.key is empty (expected '<name>#<k>' from a listing)");
 	}
-	const struct {
-		const char *name;
-		double value;
-		double max;
-	} fields[] = {
-		{ "max_force_n", p_config.max_force_n, 100.0 },
-		{ "max_continuous_force_n", p_config.max_continuous_force_n, p_config.max_force_n },
-		{ "max_stiffness_n_per_m", p_config.max_stiffness_n_per_m, 1e5 },
-		{ "workspace_radius_m", p_config.workspace_radius_m, 1.0 },
-		{ "rate_hz", p_config.rate_hz, 1000.0 },
-	};
-	for (const auto &field : fields) {
-		const Status status = check_range(field.name, field.value, field.max);
-		if (!status) {
-			return status;
-		}
-	}
-	return Status::success();
+	return check_device_config_limits("sdl_device", { p_config.max_force_n, p_config.max_continuous_force_n, p_config.max_stiffness_n_per_m, p_config.workspace_radius_m, p_config.rate_hz });
 }
 
 SdlHapticDevice::SdlHapticDevice(SdlRuntime &r_runtime, SdlDeviceConfig p_config) :

@@ -1,11 +1,11 @@
-#include "devices/openhaptics/hd_library.h"
+#include "devices/dynamic_library.h"
 
 #include <cstdio>
 #include <string>
 
 #include <windows.h>
 
-namespace haptics::openhaptics {
+namespace haptics {
 
 namespace {
 
@@ -28,7 +28,7 @@ bool file_found(const std::wstring &p_path) {
 
 } // namespace
 
-void *open_library(const char *p_path, bool &r_missing, char *r_error, size_t p_capacity) {
+void *open_dynamic_library(const char *p_path, bool &r_missing, char *r_error, size_t p_capacity) {
 	const std::wstring path = widen(p_path);
 	// No error dialog box for a missing dependency: the error comes back to us instead.
 	const UINT previous_mode = SetErrorMode(SEM_FAILCRITICALERRORS | SEM_NOOPENFILEERRORBOX);
@@ -51,12 +51,12 @@ void *open_library(const char *p_path, bool &r_missing, char *r_error, size_t p_
 	return nullptr;
 }
 
-void *library_symbol(void *p_handle, const char *p_name) {
+void *dynamic_library_symbol(void *p_handle, const char *p_name) {
 	return reinterpret_cast<void *>(GetProcAddress(static_cast<HMODULE>(p_handle), p_name));
 }
 
-void close_library(void *p_handle) {
+void close_dynamic_library(void *p_handle) {
 	FreeLibrary(static_cast<HMODULE>(p_handle));
 }
 
-} // namespace haptics::openhaptics
+} // namespace haptics

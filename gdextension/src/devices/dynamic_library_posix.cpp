@@ -1,14 +1,14 @@
-#include "devices/openhaptics/hd_library.h"
+#include "devices/dynamic_library.h"
 
 #include <cstdio>
 #include <cstring>
 #include <dlfcn.h>
 
-namespace haptics::openhaptics {
+namespace haptics {
 
-void *open_library(const char *p_path, bool &r_missing, char *r_error, size_t p_capacity) {
-	// RTLD_NOW: a runtime with unresolvable dependencies fails here, not in the servo.
-	// RTLD_LOCAL: HD's symbols stay out of the global namespace (no clash with another copy).
+void *open_dynamic_library(const char *p_path, bool &r_missing, char *r_error, size_t p_capacity) {
+	// RTLD_NOW: a library with unresolvable dependencies fails here, not in the servo.
+	// RTLD_LOCAL: its symbols stay out of the global namespace (no clash with another copy).
 	void *handle = dlopen(p_path, RTLD_NOW | RTLD_LOCAL);
 	if (handle != nullptr) {
 		return handle;
@@ -27,12 +27,12 @@ void *open_library(const char *p_path, bool &r_missing, char *r_error, size_t p_
 }
 
 // POSIX guarantees a dlsym result converts to a function pointer.
-void *library_symbol(void *p_handle, const char *p_name) {
+void *dynamic_library_symbol(void *p_handle, const char *p_name) {
 	return dlsym(p_handle, p_name);
 }
 
-void close_library(void *p_handle) {
+void close_dynamic_library(void *p_handle) {
 	dlclose(p_handle);
 }
 
-} // namespace haptics::openhaptics
+} // namespace haptics
