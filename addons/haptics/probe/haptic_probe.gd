@@ -34,6 +34,7 @@ const SAME_FACE_COS := 0.999
 # has registered the autoload (naming it then failed to parse, and the node could not be
 # created until the editor was restarted).
 const Haptics := preload("res://addons/haptics/door/haptics.gd")
+const HapticsLookup := preload("res://addons/haptics/door/haptics_lookup.gd")
 const HapticBodyContacts := preload("res://addons/haptics/probe/haptic_body_contacts.gd")
 const HapticBodyShapes := preload("res://addons/haptics/probe/haptic_body_shapes.gd")
 const HapticTouches := preload("res://addons/haptics/probe/haptic_touches.gd")
@@ -90,14 +91,8 @@ func _ready() -> void:
 		set_physics_process(false)
 		return
 	if haptics == null:
-		haptics = get_node_or_null(^"/root/Haptics") as Haptics
+		haptics = HapticsLookup.autoload_for(self, "HapticProbe")
 	if haptics == null:
-		push_error(
-			(
-				"HapticProbe: no Haptics autoload; enable the Haptics plugin (Project Settings ▸ "
-				+ "Plugins) or add it under [autoload] in project.godot (addon README)."
-			)
-		)
 		set_physics_process(false)
 		return
 	if _body is RigidBody2D:

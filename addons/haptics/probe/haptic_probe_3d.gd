@@ -29,6 +29,7 @@ signal impact(collider: Object, normal: Vector3, speed: float)
 ## Contact normals of one collider closer than this (cosine) are one face.
 const SAME_FACE_COS := 0.999
 const Haptics := preload("res://addons/haptics/door/haptics.gd")
+const HapticsLookup := preload("res://addons/haptics/door/haptics_lookup.gd")
 const HapticBodyContacts3D := preload("res://addons/haptics/probe/haptic_body_contacts_3d.gd")
 const HapticTouches := preload("res://addons/haptics/probe/haptic_touches.gd")
 
@@ -74,14 +75,8 @@ func _ready() -> void:
 		set_physics_process(false)
 		return
 	if haptics == null:
-		haptics = get_node_or_null(^"/root/Haptics") as Haptics
+		haptics = HapticsLookup.autoload_for(self, "HapticProbe3D")
 	if haptics == null:
-		push_error(
-			(
-				"HapticProbe3D: no Haptics autoload; enable the Haptics plugin (Project Settings ▸ "
-				+ "Plugins) or add it under [autoload] in project.godot (addon README)."
-			)
-		)
 		set_physics_process(false)
 		return
 	if _body is RigidBody3D:

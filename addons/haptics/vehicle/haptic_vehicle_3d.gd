@@ -27,6 +27,7 @@ signal frame_sent(frame: HapticVehicleFrame)
 signal crashed(collider: Object, speed: float)
 
 const Haptics := preload("res://addons/haptics/door/haptics.gd")
+const HapticsLookup := preload("res://addons/haptics/door/haptics_lookup.gd")
 const HapticTyreGauge := preload("res://addons/haptics/vehicle/haptic_tyre_gauge.gd")
 const HapticCrashGauge := preload("res://addons/haptics/vehicle/haptic_crash_gauge.gd")
 
@@ -83,14 +84,8 @@ func _ready() -> void:
 		set_physics_process(false)
 		return
 	if haptics == null:
-		haptics = get_node_or_null(^"/root/Haptics") as Haptics
+		haptics = HapticsLookup.autoload_for(self, "HapticVehicle3D")
 	if haptics == null:
-		push_error(
-			(
-				"HapticVehicle3D: no Haptics autoload; enable the Haptics plugin (Project Settings ▸ "
-				+ "Plugins) or add it under [autoload] in project.godot (addon README)."
-			)
-		)
 		set_physics_process(false)
 		return
 	for child: Node in _body.get_children():
