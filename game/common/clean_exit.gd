@@ -43,6 +43,17 @@ func _notification(what: int) -> void:
 		_gone_checks_left = GONE_CHECK_FRAMES
 
 
+# Alt+F4 is the desktop's close shortcut, which the window manager takes before the game
+# sees it. When it reaches the game as keys, no window manager took it (the person suite saw
+# a first press that never became a close request): the game closes, and says why.
+func _input(event: InputEvent) -> void:
+	var key: InputEventKey = event as InputEventKey
+	if key != null and key.pressed and not key.echo and key.keycode == KEY_F4 and key.alt_pressed:
+		print("CleanExit: Alt+F4 reached the game as keys (no window manager took it): closing")
+		get_viewport().set_input_as_handled()
+		quit(0)
+
+
 # A window destroyed under the game (xdotool windowclose: no close request comes) left it
 # running, each frame drawing into nothing with X errors, until the driver crashed: the
 # focus and pointer leave it then, so a few frames after either ask X whether it is still

@@ -74,6 +74,20 @@ func test_the_close_button_quits_through_the_same_path() -> void:
 	assert_eq(_exit_codes, [0])
 
 
+func test_alt_f4_that_reaches_the_game_as_keys_closes_it_and_f4_alone_does_not() -> void:
+	var exit: GameExit = _exit_under_test()
+	var f4: InputEventKey = InputEventKey.new()
+	f4.keycode = KEY_F4
+	f4.pressed = true
+	exit._input(f4)
+	assert_false(exit.is_quitting(), "F4 alone is the game's")
+	f4.alt_pressed = true
+	exit._input(f4)
+	assert_true(exit.is_quitting(), "Alt+F4 no window manager took")
+	assert_true(await wait_until(func() -> bool: return not _exit_codes.is_empty(), 5.0))
+	assert_eq(_exit_codes, [0])
+
+
 func test_the_wait_gives_up_after_its_limit() -> void:
 	var exit: GameExit = _exit_under_test()
 	# Asking for more mixes than can happen in 50 ms: it returns false, it does not hang.
