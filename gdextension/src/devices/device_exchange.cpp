@@ -93,6 +93,18 @@ DeviceStatus DeviceExchange::status(int64_t p_now_ns) const {
 	return status;
 }
 
+Status DeviceExchange::ready_status(bool p_open, const char *p_name) const {
+	if (!p_open) {
+		return Status::error(StatusCode::NO_DEVICE, "cannot calibrate '%s': device not open", p_name);
+	}
+	const DeviceStatus current = status();
+	if (current.io != DeviceIo::OK) {
+		return Status::error(current.io == DeviceIo::DISCONNECTED ? StatusCode::DEVICE_DISCONNECTED : StatusCode::DEVICE_ERROR,
+				"cannot calibrate '%s': %s", p_name, current.reason.c_str());
+	}
+	return Status::success();
+}
+
 DeviceIoStats DeviceExchange::stats() const {
 	DeviceIoStats stats;
 	stats.cycles = cycles_.load(std::memory_order_relaxed);

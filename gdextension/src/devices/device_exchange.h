@@ -59,6 +59,9 @@ public:
 	DeviceStatus status(int64_t p_now_ns) const;
 	DeviceStatus status() const { return status(monotonic_now_ns()); }
 	DeviceIoStats stats() const;
+	// What calibrate() says for a device whose I/O runs through this exchange: ready while the
+	// device p_name is open and its I/O has not failed.
+	Status ready_status(bool p_open, const char *p_name) const;
 
 private:
 	Seqlock<StampedCommand> command_;

@@ -184,15 +184,7 @@ void EvdevDevice::close() {
 }
 
 Status EvdevDevice::calibrate() {
-	if (!open_) {
-		return Status::error(StatusCode::NO_DEVICE, "cannot calibrate '%s': device not open", name_);
-	}
-	const DeviceStatus status = exchange_.status();
-	if (status.io != DeviceIo::OK) {
-		return Status::error(status.io == DeviceIo::DISCONNECTED ? StatusCode::DEVICE_DISCONNECTED : StatusCode::DEVICE_ERROR,
-				"cannot calibrate '%s': %s", name_, status.reason.c_str());
-	}
-	return Status::success();
+	return exchange_.ready_status(open_, name_);
 }
 
 DeviceCapabilities EvdevDevice::capabilities() const {
