@@ -164,6 +164,7 @@ func test_riding_a_lift_down_is_at_most_one_impact() -> void:
 	var was_on: bool = true
 	for frame: int in int(RigidStage.LIFT_RIDE_S * TICKS_PER_SECOND):
 		await run_frames(1)
+		stage.advance_lift(1.0 / TICKS_PER_SECOND)
 		if was_on and not player.found_floor:
 			lost += 1
 		was_on = player.found_floor

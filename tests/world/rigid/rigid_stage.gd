@@ -1,8 +1,10 @@
 extends Node2D
 ## The traps of Godot's demo [code]2d/physics_platformer[/code] for a rigid-body player, in one
 ## stage of our own (nothing downloaded): a floor, a wall to run into, a seesaw plank pinned
-## on a pillar, a lift that an [AnimationPlayer] moves down (by position, in the idle frame,
-## as the demo's platforms move) and enemies that can be dropped on the player's head. The
+## on a pillar, a lift that an [AnimationPlayer] moves down (by position, outside the physics
+## step, as the demo's platforms move; the test advances it once a tick, since in the idle
+## frame a loaded machine's uneven frames moved it in jumps the player fell onto) and
+## enemies that can be dropped on the player's head. The
 ## player is [code]rigid_player.tscn[/code] with its own [HapticProbe], scaled by the
 ## addon's rule from the player's gravity.
 
@@ -82,9 +84,14 @@ func spawn_enemy_above() -> RigidBody2D:
 	return enemy
 
 
-## Starts the lift's ride down from [constant LIFT_TOP].
+## Starts the lift's ride down from [constant LIFT_TOP]; [method advance_lift] moves it.
 func start_lift() -> void:
 	_lift_animation.play(&"down")
+
+
+## Moves the lift on by [param delta] seconds of its ride.
+func advance_lift(delta: float) -> void:
+	_lift_animation.advance(delta)
 
 
 ## Where the player stands on the lift at the top of its ride.
@@ -149,5 +156,6 @@ func _add_lift() -> void:
 	var library: AnimationLibrary = AnimationLibrary.new()
 	library.add_animation(&"down", animation)
 	_lift_animation = AnimationPlayer.new()
+	_lift_animation.callback_mode_process = AnimationMixer.ANIMATION_CALLBACK_MODE_PROCESS_MANUAL
 	_lift_animation.add_animation_library(&"", library)
 	add_child(_lift_animation)
