@@ -14,6 +14,13 @@
 - The lobby: a crafted connect flood (the issue's 12 datagrams locked every slot for 30 s)
   and connections that complete ENet's handshake and then say nothing do not keep a player
   out; a refused client is told why.
+- Floods (issue 36): 200 crafted CONNECTs a second from fresh source ports for 30 s, in a
+  network namespace of the test's own: from another address, against a dedicated server
+  behind the kernel's guard (tools/net/flood-guard.sh), and from the player's own address
+  against a player's host that nobody has joined yet, with nothing but the game's defences.
+  A player joins at 5, 15 and 25 s into it (at 25 s a server without a defence has been
+  full for 4.5 s), each within 5 s, and the server logs the flood once (before, joins failed
+  from 5 s in and the server said nothing).
 Every bound is generous for a loaded 2-core machine; the measured figures are printed.
 """
 
@@ -23,6 +30,7 @@ import time
 
 import pytest
 
+from flood_harness import flood_joins, missing_tools
 from guard_harness import (CONNECT_BYTES, HIT_MARK, ROGUE_SCENE, LogWatch, check_taken_over,
                            flood_connects, half_open_clients, kill_on_line, start_peer)
 from net_harness import (ROUGH, START_PATIENCE_S, Network, Peer, Relay, check_health, detection_s,
@@ -36,6 +44,16 @@ JOIN_BOUND_S = 3.0
 # PongNetProtocol.MISBEHAVIOUR_BUDGET and HALF_OPEN_PER_ADDRESS.
 BUDGET = 16
 HALF_OPEN_PER_ADDRESS = 4
+# The sustained flood: its rate and length, the moments into it a player joins at, and the
+# promise (issue 36: within 5 s). A join's time runs from the player's "Connecting to" to its
+# "Connected;" (its log is read every 20 ms).
+FLOOD_RATE = 200
+FLOOD_S = 30.0
+FLOOD_JOINS_AT_S = (5.0, 15.0, 25.0)
+FLOOD_JOIN_BOUND_S = 5.0
+# PongNetFlood.START_LINE and OVER_LINE.
+FLOOD_LINE = "PongNet: a flood of connection requests"
+FLOOD_OVER_LINE = "PongNet: the flood of connection requests is over"
 NETWORKS = {
     "lan": Network(0, 0, 0.0),
     "150ms": Network(150, 20, 0.05),
@@ -245,3 +263,47 @@ def test_a_connect_flood_and_silent_connections_do_not_keep_a_player_out() -> No
                 holder.close()
             for peer in started:
                 peer.kill()
+
+
+def _check_flood(label: str, result: dict) -> None:
+    """The person's outcome under the sustained flood, and the server's word on it."""
+    server, *clients = result["peers"]
+    flood = result["flood"]
+    joins = result["joins"]
+    print(f"{label}: flood {flood}; guard {result['counters'] or 'none'}")
+    print(f"{label}: joins " + ", ".join(
+        f"at {j['at_s']:.1f} s in {j['join_s']:.2f} s" if j["join_s"] is not None
+        else f"at {j['at_s']} s: never" for j in joins)
+        + f"; the server logged the flood {result['logged_s']} s in")
+    # The flood held its rate from fresh ports until after the last join.
+    assert flood["rate"] >= 0.9 * FLOOD_RATE and flood["sent"] >= 0.9 * FLOOD_RATE * FLOOD_S, flood
+    assert flood["source_ports"] >= 0.5 * flood["sent"], flood
+    for join, client in zip(joins, clients):
+        assert join["join_s"] is not None, f"{client.name} never joined:\n{client.log()}"
+        assert join["join_s"] < FLOOD_JOIN_BOUND_S, (join, client.log())
+        assert join["at_s"] < flood["stopped_s"], "it joined while the flood went on"
+        assert client.report.get("exit") == "deadline", client.log()
+        _no_engine_errors(client)
+    log = server.log()
+    assert log.count(FLOOD_LINE) == 1, log
+    assert log.count(FLOOD_OVER_LINE) <= 1, log
+    _no_engine_errors(server)
+
+
+@pytest.mark.skipif(bool(missing_tools(True)), reason=missing_tools(True) or "-")
+def test_a_sustained_connect_flood_from_another_address_lets_players_into_a_guarded_server(
+) -> None:
+    with workspace() as work:
+        result = flood_joins(work, ["--server", "--pong-net-peers=4"], True, FLOOD_JOINS_AT_S,
+                             FLOOD_RATE, FLOOD_S, "127.0.0.2", FLOOD_LINE)
+        _check_flood("dedicated server, kernel guard, flood from 127.0.0.2", result)
+
+
+@pytest.mark.skipif(bool(missing_tools(False)), reason=missing_tools(False) or "-")
+def test_a_sustained_connect_flood_from_the_players_address_lets_them_into_a_waiting_host(
+) -> None:
+    with workspace() as work:
+        result = flood_joins(work, ["--pong-net=host", "--name=host", "--pong-net-peers=4"],
+                             False, FLOOD_JOINS_AT_S, FLOOD_RATE, FLOOD_S, "127.0.0.1",
+                             FLOOD_LINE)
+        _check_flood("player's host, no guard, flood from 127.0.0.1", result)

@@ -93,14 +93,16 @@ const SEAT_GRACE_S: float = 15.0
 ## claims and hand-off requests, about a seat the computer played meanwhile) is refused but
 ## not counted against it: they arrive within a second of its return.
 const RETURN_SETTLE_S: float = 2.0
-## ENet peer slots of a server. ENet keeps a peer for every CONNECT datagram it answers
-## until the handshake completes or about 30 s pass, and Godot shows no such half-open peer
-## to a script (ENetConnection.get_peers() lists a peer only once it has connected), so
-## slots are what a flood of crafted CONNECTs uses up: six slots let 12 datagrams lock the
-## players out for 30 s. With 1024 a flood must keep up 34 datagrams a second. An empty slot
-## costs a few hundred bytes and next to nothing per frame (docs/pong-networking.md, "The
-## lobby").
-const ENET_SLOTS: int = 1024
+## ENet peer slots of a server: ENet's most (its peer id has 12 bits). ENet keeps a peer for
+## every CONNECT datagram it answers until the handshake completes or about 31.5 s pass, and
+## Godot shows no such half-open peer to a script (ENetConnection.get_peers() lists a peer only
+## once it has connected), so slots are what a flood of crafted CONNECTs uses up: six slots
+## let 12 datagrams lock the players out for 30 s, 1024 a flood of 34 a second. 4095 hold
+## one of 130 a second; above that a server nobody is connected to opens a new ENet host
+## ([PongNetFlood]) and the kernel's guard keeps them (tools/net/flood-guard.sh,
+## docs/pong-networking.md, "Floods"). An empty slot costs a few hundred bytes and next to
+## nothing per frame.
+const ENET_SLOTS: int = 4095
 ## Connections from one address that have connected at ENet's level but not passed the
 ## version check: more are not taken (the oldest is dropped), so one address cannot hold
 ## the lobby's attention. A household behind one NAT joins with up to a seat each.

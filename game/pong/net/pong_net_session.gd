@@ -9,9 +9,10 @@ extends Node
 ## ([member pulse], a [PongNetBeatMessage] each way) drops a peer silent for
 ## [method PongNetProtocol.heartbeat_timeout_s] (1 to 3 s), or, when it holds a seat in a
 ## match, keeps it absent for [constant PongNetProtocol.SEAT_GRACE_S] first. The server
-## takes a few unauthenticated connections per address ([PongNetHalfOpen]), tells a client
-## it refuses why ([method refuse]), and disconnects a peer whose bad messages reach the
-## budget ([method misbehaved], [PongNetBudget]).
+## takes a few unauthenticated connections per address ([PongNetHalfOpen]), watches its
+## ENet slots for floods of connection requests ([PongNetFlood]), tells a client it refuses
+## why ([method refuse]), and disconnects a peer whose bad messages reach the budget
+## ([method misbehaved], [PongNetBudget]).
 
 ## Connected and authenticated (a client: to the server).
 signal connected
@@ -48,6 +49,8 @@ var pulse: PongNetPulse = null
 
 var _peer: ENetMultiplayerPeer = null
 var _half_open: PongNetHalfOpen = PongNetHalfOpen.new()
+# A server's watch for floods of connection requests (null on a client).
+var _flood: PongNetFlood = null
 # The reason the server sent before it drops us (a client), or "".
 var _refusal: String = ""
 # Peers to drop at the next frame (see drop_now).
@@ -81,6 +84,7 @@ func host(port: int, max_clients: int, bind_ip: String = "*") -> String:
 		_peer = null
 		return _fail("cannot host on port %d: %s" % [port, error_string(error)])
 	is_server = true
+	_flood = PongNetFlood.new(bind_ip, port, max_clients)
 	_install()
 	return ""
 
@@ -121,6 +125,9 @@ func close() -> void:
 		api.multiplayer_peer = OfflineMultiplayerPeer.new()
 		_wire(api, false)
 	is_server = false
+	if _flood != null:
+		_flood.close()
+		_flood = null
 	_joining = []
 	pulse.heartbeat.clear()
 	_half_open.clear()
@@ -193,6 +200,11 @@ func _process(_delta: float) -> void:
 	_flush_drops()
 	pulse.frame(_peer)
 	_flush_drops()
+	if _flood != null:
+		_peer = _flood.frame(_peer, _api())
+		if _peer == null:
+			_fail("cannot host on port %d again after a flood" % _flood.port)
+			close()
 
 
 func _install() -> void:
