@@ -53,8 +53,9 @@ var _renew: bool = false
 var _next_probe_s: float = 0.0
 var _since_s: float = 0.0
 var _unanswered: int = 0
-# [time (s), slots held by strangers] of the last QUIET_S.
-var _readings: Array[Vector2] = []
+# The looks of the last QUIET_S: when (s), and the slots strangers held.
+var _times: PackedFloat64Array = PackedFloat64Array()
+var _held: PackedInt32Array = PackedInt32Array()
 
 
 ## Watches the server on [param port] with [param slots] ENet slots, bound to [param bind_ip]
@@ -99,9 +100,11 @@ func frame(enet: ENetMultiplayerPeer, api: SceneMultiplayer) -> ENetMultiplayerP
 ## ([param full]: ENet gave the probe no slot); returns the line to log, or "".
 func note(now_s: float, strangers: int, full: bool = false) -> String:
 	strangers = clampi(strangers, 0, _slots)
-	_readings.append(Vector2(now_s, strangers))
-	while not _readings.is_empty() and _readings[0].x < now_s - QUIET_S:
-		_readings.pop_front()
+	_times.append(now_s)
+	_held.append(strangers)
+	while _times[0] < now_s - QUIET_S:
+		_times.remove_at(0)
+		_held.remove_at(0)
 	if not flooding:
 		if strangers < FLOOD_SLOTS:
 			return ""
@@ -119,8 +122,8 @@ func note(now_s: float, strangers: int, full: bool = false) -> String:
 	peak = maxi(peak, strangers)
 	if now_s - _since_s < QUIET_S:
 		return ""
-	for reading: Vector2 in _readings:
-		if reading.y > QUIET_SLOTS:
+	for held: int in _held:
+		if held > QUIET_SLOTS:
 			return ""
 	flooding = false
 	var line: String = (
@@ -144,6 +147,7 @@ func _renewed(enet: ENetMultiplayerPeer, api: SceneMultiplayer) -> ENetMultiplay
 		return null
 	api.multiplayer_peer = fresh
 	renewals += 1
-	_readings.clear()
+	_times.clear()
+	_held.clear()
 	_probe.close()  # Its request went to the old host.
 	return fresh
