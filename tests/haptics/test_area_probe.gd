@@ -1,18 +1,21 @@
 extends TestSuite
 ## A player that is an [Area2D] (Godot's "Dodge the Creeps" tutorial player) with a
 ## [HapticAreaProbe]: a mob that runs into it is a hit felt at the speed they closed in,
-## pushing the hand away from the mob; and the one line a kill zone calls on either probe.
+## pushing the hand away from the mob, also when the player moves in _process at a frame rate
+## other than the tick rate; and the one line a kill zone calls on either probe.
 
 const PX_PER_M := 100.0
 const HARD := preload("res://addons/haptics/materials/hard.tres")
 
 var door: HapticsTestKit.Door = null
+var max_fps_before: int = 0
 var world: Node2D = null
 var player: Area2D = null
 var probe: HapticAreaProbe = null
 
 
 func before_each() -> void:
+	max_fps_before = Engine.max_fps
 	door = autofree(HapticsTestKit.manual())
 	assert_true(HapticsTestKit.no_ramp(door))
 	world = Node2D.new()
@@ -25,6 +28,10 @@ func before_each() -> void:
 	player.add_child(probe)
 	world.add_child(player)
 	add_child_autofree(world)
+
+
+func after_each() -> void:
+	Engine.max_fps = max_fps_before
 
 
 func _circle(radius: float) -> CollisionShape2D:
@@ -107,3 +114,35 @@ func test_a_kill_zone_is_felt_with_one_line_on_either_probe() -> void:
 	body_probe.hit(Vector2.UP, NAN)
 	var after: Vector2 = await _peak_impact(5)
 	assert_lt(after.length(), 1e-3, "nothing from a direction or speed of nothing")
+
+
+func test_a_player_moved_in_process_is_hit_at_its_speed_whatever_the_frame_rate() -> void:
+	# Dodge the Creeps moves its player in _process. At 1.5 frames a tick the player moves one
+	# or two frames' way between two ticks: measured per tick that was 2/3 or 4/3 of its speed.
+	Engine.max_fps = roundi(Engine.physics_ticks_per_second * 1.5)
+	var mover: ProcessMover = ProcessMover.new()
+	mover.target = player
+	mover.velocity = Vector2(0.0, -400.0)
+	world.add_child(mover)
+	world.move_child(mover, 0)
+	_mob(player.position + Vector2(0.0, -120.0), Vector2.ZERO)
+	var hits: Array[float] = []
+	probe.impact.connect(func(_c: Object, _d: Vector2, speed: float) -> void: hits.append(speed))
+	await wait_until(func() -> bool: return not hits.is_empty(), 3.0)
+	mover.velocity = Vector2.ZERO
+	await wait_process_frames(2)
+	assert_eq(hits.size(), 1, "one hit")
+	if hits.size() == 1:
+		assert_almost_eq(hits[0], 4.0, 0.2, "at the 400 px/s the player came in, m/s")
+	assert_almost_eq(probe.velocity_px().length(), 0.0, 1.0, "still once it stops")
+
+
+## Moves [member target] in [method Node._process] at [member velocity] px/s, as the tutorial's
+## player moves itself.
+class ProcessMover:
+	extends Node
+	var target: Node2D = null
+	var velocity: Vector2 = Vector2.ZERO
+
+	func _process(delta: float) -> void:
+		target.position += velocity * delta

@@ -16,6 +16,8 @@ extends Node
 signal impact(collider: Object, direction: Vector2, speed: float)
 
 const Haptics := preload("res://addons/haptics/door/haptics.gd")
+## The probe's process and physics priority: after the game's nodes (default 0).
+const AFTER_THE_GAME := 1000
 
 ## World scale: pixels per metre (see [member HapticProbe.pixels_per_metre]).
 @export_range(1.0, 10000.0, 0.1, "suffix:px/m") var pixels_per_metre: float = 100.0
@@ -31,11 +33,16 @@ var haptics: Haptics = null
 var last_frame: HapticFrame = HapticFrame.new()
 
 var _area: Area2D = null
-# Where the player and each overlapping node were at the last physics tick, for the
-# velocity of what moves by position.
+# Where the player was when last seen (in either callback), and each overlapping node at the
+# last physics tick, for the velocity of what moves by position.
 var _last_position: Vector2 = Vector2.ZERO
 var _seen_at: Dictionary[int, Vector2] = {}
-var _velocity_px: Vector2 = Vector2.ZERO
+# The player's velocity in px/s, from how far it moved in each phase of the main loop, each
+# against its own phase's time: a player moved in _process (the tutorial's) moves between
+# frames, one moved in _physics_process between ticks, and a frame rate other than the tick
+# rate puts two or three frames' movement (at 144 fps and 60 ticks) between two ticks.
+var _velocity_from_process: Vector2 = Vector2.ZERO
+var _velocity_from_physics: Vector2 = Vector2.ZERO
 var _sequence: int = 0
 
 
@@ -45,24 +52,32 @@ func _ready() -> void:
 		push_error(
 			"HapticAreaProbe must be a child of an Area2D (a body player takes a HapticProbe)."
 		)
+		set_process(false)
 		set_physics_process(false)
 		return
 	if haptics == null:
 		haptics = get_node_or_null(^"/root/Haptics") as Haptics
 	if haptics == null:
 		push_error("HapticAreaProbe: no Haptics autoload; enable the Haptics plugin.")
+		set_process(false)
 		set_physics_process(false)
 		return
+	# After the game's own nodes in both phases: what moved the player this frame or tick
+	# has moved it when this probe looks.
+	process_priority = AFTER_THE_GAME
+	process_physics_priority = AFTER_THE_GAME
 	_area.monitoring = true
 	_area.body_entered.connect(_on_entered)
 	_area.area_entered.connect(_on_entered)
 	_last_position = _area.global_position
 
 
+func _process(delta: float) -> void:
+	_velocity_from_process = _moved() / maxf(delta, 1e-6)
+
+
 func _physics_process(delta: float) -> void:
-	var here: Vector2 = _area.global_position
-	_velocity_px = (here - _last_position) / maxf(delta, 1e-6)
-	_last_position = here
+	_velocity_from_physics = _moved() / maxf(delta, 1e-6)
 	var frame: HapticFrame = HapticFrame.new()
 	for other: Node2D in _area.get_overlapping_bodies() + _area.get_overlapping_areas():
 		_seen_at[other.get_instance_id()] = other.global_position
@@ -70,12 +85,20 @@ func _physics_process(delta: float) -> void:
 			frame.in_water = true
 			frame.water_drag_n_s_per_m = other.get(&"drag_coefficient")
 			frame.water_inertia_n = other.get(&"inertia_force")
-	frame.velocity_m_per_s = _velocity_px / pixels_per_metre
+	frame.velocity_m_per_s = velocity_px() / pixels_per_metre
 	_sequence += 1
 	frame.sequence = _sequence
 	frame.time_s = Time.get_ticks_msec() / 1000.0
 	haptics.submit_frame(frame)
 	last_frame = frame
+
+
+## The player's velocity in pixels per second: how far it moved since it was last seen, over
+## the time of the phase it moved in (between frames for a player moved in
+## [code]_process[/code], between physics ticks for one moved in
+## [code]_physics_process[/code]), so a frame rate other than the tick rate does not change it.
+func velocity_px() -> Vector2:
+	return _velocity_from_process + _velocity_from_physics
 
 
 ## Plays a hit on the hand: a push along [param p_direction] (from what hit toward the
@@ -92,9 +115,9 @@ func _on_entered(other: Node2D) -> void:
 		return  # Water is felt as drag, not as a hit.
 	var away: Vector2 = _area.global_position - other.global_position
 	if away.is_zero_approx():
-		away = -_velocity_px
+		away = -velocity_px()
 	var direction: Vector2 = away.normalized()
-	var closing: float = (_velocity_of(other) - _velocity_px).dot(direction)
+	var closing: float = (_velocity_of(other) - velocity_px()).dot(direction)
 	var speed: float = closing / pixels_per_metre
 	if speed < min_impact_speed or direction.is_zero_approx():
 		return
@@ -116,3 +139,11 @@ func _velocity_of(other: Node2D) -> Vector2:
 	var id: int = other.get_instance_id()
 	var before: Vector2 = _seen_at.get(id, other.global_position)
 	return (other.global_position - before) * Engine.physics_ticks_per_second
+
+
+# How far the player moved since this probe last looked (in either callback).
+func _moved() -> Vector2:
+	var here: Vector2 = _area.global_position
+	var moved: Vector2 = here - _last_position
+	_last_position = here
+	return moved
