@@ -1,7 +1,8 @@
 extends TestSuite
 ## The 3D probe's mapping and surfaces: vectors reach the device in the camera's heading (a
 ## wall in front of a turned camera still pushes back toward the player), a GridMap cell feels
-## like its item's material, a PhysicsMaterial stands in for a missing haptic one, and
+## like its item's material, a PhysicsMaterial stands in for a missing haptic one, a rigid
+## player driven by the README's line rolls the way the camera faces, and
 ## [method HapticProbe3D.hit] plays a world-space hit in view axes.
 
 ## Runs scenes for seconds: make check (--quick) leaves it out.
@@ -46,6 +47,26 @@ func test_a_turned_camera_turns_the_world_into_the_players_view() -> void:
 		normals.append(contact.normal)
 	assert_true(normals.any(func(n: Vector3) -> bool: return n.distance_to(Vector3.BACK) < 0.02))
 	assert_gt(door.get_forces_3d().parts[NORMAL].z, 0.8, "pushed back toward the player")
+
+
+func test_a_rigid_player_rolls_away_from_a_turned_camera_as_the_readme_pushes_it() -> void:
+	# The README's line for a RigidBody3D ([Roller3D]):
+	# apply_central_force(Vector3(input_vector.x, 0.0, input_vector.z) * push_n) in
+	# _physics_process. The camera looks along -x; the stylus pushed forward and lifted.
+	var camera: Camera3D = Camera3D.new()
+	camera.rotation_degrees = Vector3(-30.0, 90.0, 0.0)
+	camera.position = Vector3(4.0, 3.0, 0.0)
+	stage.add_child(camera)
+	camera.make_current()
+	var roller: Roller3D = stage.roller(door, Vector3(0.0, Stage3D.RADIUS, 0.0))
+	assert_true(door.device.set_hand_target_3d(Vector3(0.0, 0.03, -0.05)))
+	await _run_frames(60)
+	assert_lt(roller.input_vector.x, -0.3, "forward is the camera's heading, the world's -x")
+	assert_almost_eq(roller.input_vector.z, 0.0, 0.02, "nothing sideways")
+	assert_gt(roller.input_vector.y, 0.1, "the stylus's height is the input's y")
+	assert_lt(roller.position.x, -0.3, "rolled away from the camera")
+	assert_almost_eq(roller.position.z, 0.0, 0.02)
+	assert_almost_eq(roller.position.y, Stage3D.RADIUS, 0.02, "on the floor: the y left out")
 
 
 func test_a_grid_map_cell_feels_like_its_items_material() -> void:
