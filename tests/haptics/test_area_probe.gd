@@ -2,7 +2,8 @@ extends TestSuite
 ## A player that is an [Area2D] (Godot's "Dodge the Creeps" tutorial player) with a
 ## [HapticAreaProbe]: a mob that runs into it is a hit felt at the speed they closed in,
 ## pushing the hand away from the mob, also when the player moves in _process at a frame rate
-## other than the tick rate; and the one line a kill zone calls on either probe.
+## other than the tick rate, and when what hits it is an area moved by position; and the one
+## line a kill zone calls on either probe.
 
 const PX_PER_M := 100.0
 const HARD := preload("res://addons/haptics/materials/hard.tres")
@@ -137,12 +138,48 @@ func test_a_player_moved_in_process_is_hit_at_its_speed_whatever_the_frame_rate(
 	assert_almost_eq(probe.velocity_px().length(), 0.0, 1.0, "still once it stops")
 
 
-## Moves [member target] in [method Node._process] at [member velocity] px/s, as the tutorial's
-## player moves itself.
+func test_an_area_moved_by_position_into_a_still_player_is_a_hit_at_its_speed() -> void:
+	# A bullet that is an Area2D moved by its position, in _process or in _physics_process: its
+	# speed is known only from how it moves (it was 0 on entering: no hit).
+	Engine.max_fps = roundi(Engine.physics_ticks_per_second * 1.5)
+	for in_physics: bool in [false, true]:
+		var bullet: Area2D = Area2D.new()
+		bullet.add_child(_circle(4.0))
+		bullet.position = player.position + Vector2(-100.0, 0.0)
+		world.add_child(bullet)
+		var mover: ProcessMover = ProcessMover.new()
+		mover.target = bullet
+		mover.velocity = Vector2(300.0, 0.0)
+		mover.in_physics = in_physics
+		world.add_child(mover)
+		var hits: Array[Vector2] = []
+		var record: Callable = func(_c: Object, direction: Vector2, speed: float) -> void:
+			hits.append(direction * speed)
+		probe.impact.connect(record)
+		await wait_until(func() -> bool: return not hits.is_empty(), 3.0)
+		probe.impact.disconnect(record)
+		var moved: String = "moved in _physics_process" if in_physics else "moved in _process"
+		assert_eq(hits.size(), 1, "one hit, %s" % moved)
+		if hits.size() == 1:
+			assert_almost_eq(hits[0], Vector2(3.0, 0.0), 0.15, "its 3 m/s, pushed away, %s" % moved)
+		mover.free()
+		bullet.free()
+		await wait_physics_frames(2)
+
+
+## Moves [member target] at [member velocity] px/s by its position, in
+## [method Node._process] (as the tutorial's player moves itself) or, with
+## [member in_physics], in [method Node._physics_process].
 class ProcessMover:
 	extends Node
 	var target: Node2D = null
 	var velocity: Vector2 = Vector2.ZERO
+	var in_physics: bool = false
 
 	func _process(delta: float) -> void:
-		target.position += velocity * delta
+		if not in_physics:
+			target.position += velocity * delta
+
+	func _physics_process(delta: float) -> void:
+		if in_physics:
+			target.position += velocity * delta

@@ -5,9 +5,12 @@ extends Node
 ## tutorial: it moves by setting its position and learns of hits only as overlaps. Add this
 ## node as a child of the area. Every body or area that starts to overlap the player is a hit:
 ## an impact pushing the hand away from it, at the speed the two closed in on each other
-## (each one's velocity: a rigid body's, a character's, else how far it moved since the last
-## physics tick). Water (an area with [code]drag_coefficient[/code] and
-## [code]inertia_force[/code], such as [HapticWater]) drags while the player is inside.
+## (each one's velocity: a rigid body's, a character's, else how far it moved by position: a
+## node that began to overlap is watched until it is seen moving, or still, within the same
+## frame). Both the player and what hits it may move in [code]_process[/code] or
+## [code]_physics_process[/code], at any frame rate. Water (an area with
+## [code]drag_coefficient[/code] and [code]inertia_force[/code], such as [HapticWater]) drags
+## while the player is inside.
 ## [br][br]
 ## An area does not stop at what it touches, so there is no lasting push, only the hit; a
 ## player that is a [CharacterBody2D] or [RigidBody2D] takes a [HapticProbe] instead.
@@ -33,16 +36,11 @@ var haptics: Haptics = null
 var last_frame: HapticFrame = HapticFrame.new()
 
 var _area: Area2D = null
-# Where the player was when last seen (in either callback), and each overlapping node at the
-# last physics tick, for the velocity of what moves by position.
-var _last_position: Vector2 = Vector2.ZERO
-var _seen_at: Dictionary[int, Vector2] = {}
-# The player's velocity in px/s, from how far it moved in each phase of the main loop, each
-# against its own phase's time: a player moved in _process (the tutorial's) moves between
-# frames, one moved in _physics_process between ticks, and a frame rate other than the tick
-# rate puts two or three frames' movement (at 144 fps and 60 ticks) between two ticks.
-var _velocity_from_process: Vector2 = Vector2.ZERO
-var _velocity_from_physics: Vector2 = Vector2.ZERO
+# How the player moves, and each overlapping node that moves by position (by instance id).
+var _motion: Motion = null
+var _others: Dictionary[int, Motion] = {}
+# The nodes that began to overlap whose hit waits for their velocity (by instance id).
+var _pending: Dictionary[int, bool] = {}
 var _sequence: int = 0
 
 
@@ -69,22 +67,28 @@ func _ready() -> void:
 	_area.monitoring = true
 	_area.body_entered.connect(_on_entered)
 	_area.area_entered.connect(_on_entered)
-	_last_position = _area.global_position
+	_motion = Motion.new(_area)
 
 
 func _process(delta: float) -> void:
-	_velocity_from_process = _moved() / maxf(delta, 1e-6)
+	_look(delta, false)
 
 
 func _physics_process(delta: float) -> void:
-	_velocity_from_physics = _moved() / maxf(delta, 1e-6)
+	_look(delta, true)
 	var frame: HapticFrame = HapticFrame.new()
-	for other: Node2D in _area.get_overlapping_bodies() + _area.get_overlapping_areas():
-		_seen_at[other.get_instance_id()] = other.global_position
+	var overlapping: Array[Node2D] = _area.get_overlapping_bodies()
+	overlapping.append_array(_area.get_overlapping_areas())
+	var still_there: Dictionary[int, bool] = {}
+	for other: Node2D in overlapping:
+		still_there[other.get_instance_id()] = true
 		if &"drag_coefficient" in other and &"inertia_force" in other and not frame.in_water:
 			frame.in_water = true
 			frame.water_drag_n_s_per_m = other.get(&"drag_coefficient")
 			frame.water_inertia_n = other.get(&"inertia_force")
+	for id: int in _others.keys():
+		if not still_there.has(id) and not _pending.has(id):
+			_others.erase(id)
 	frame.velocity_m_per_s = velocity_px() / pixels_per_metre
 	_sequence += 1
 	frame.sequence = _sequence
@@ -98,7 +102,7 @@ func _physics_process(delta: float) -> void:
 ## [code]_process[/code], between physics ticks for one moved in
 ## [code]_physics_process[/code]), so a frame rate other than the tick rate does not change it.
 func velocity_px() -> Vector2:
-	return _velocity_from_process + _velocity_from_physics
+	return _motion.velocity() if _motion != null else Vector2.ZERO
 
 
 ## Plays a hit on the hand: a push along [param p_direction] (from what hit toward the
@@ -113,15 +117,48 @@ func hit(p_direction: Vector2, p_speed_m_per_s: float, p_material: HapticMateria
 func _on_entered(other: Node2D) -> void:
 	if &"drag_coefficient" in other and &"inertia_force" in other:
 		return  # Water is felt as drag, not as a hit.
-	var away: Vector2 = _area.global_position - other.global_position
+	if other is RigidBody2D:
+		_play(other, other.global_position, (other as RigidBody2D).linear_velocity)
+	elif other is CharacterBody2D:
+		_play(other, other.global_position, (other as CharacterBody2D).velocity)
+	else:
+		# Moved by position: how fast is known once it has been looked at again, later in
+		# this same frame ([method _look]).
+		var id: int = other.get_instance_id()
+		_others[id] = Motion.new(other)
+		_pending[id] = true
+
+
+# Looks at how the player and the nodes moving by position moved in this phase of the main
+# loop, and plays the hits that waited for a velocity now known (or for a node freed since:
+# as if it stood still where it was last seen).
+func _look(delta: float, in_physics: bool) -> void:
+	_motion.look(delta, in_physics)
+	for id: int in _others.keys():
+		var motion: Motion = _others[id]
+		var alive: bool = is_instance_valid(motion.node)
+		if alive:
+			motion.look(delta, in_physics)
+		if _pending.has(id) and (not alive or motion.known()):
+			_pending.erase(id)
+			var other: Node2D = motion.node if alive else null
+			_play(other, motion.last, motion.velocity() if alive else Vector2.ZERO)
+		if not alive:
+			_others.erase(id)
+
+
+# The hit of [param other] (null once freed), at [param at] moving at [param velocity] px/s,
+# as it starts to overlap the player.
+func _play(other: Node2D, at: Vector2, velocity: Vector2) -> void:
+	var away: Vector2 = _area.global_position - at
 	if away.is_zero_approx():
 		away = -velocity_px()
 	var direction: Vector2 = away.normalized()
-	var closing: float = (_velocity_of(other) - velocity_px()).dot(direction)
+	var closing: float = (velocity - velocity_px()).dot(direction)
 	var speed: float = closing / pixels_per_metre
 	if speed < min_impact_speed or direction.is_zero_approx():
 		return
-	var material: HapticMaterial = HapticMaterial.of(other)
+	var material: HapticMaterial = HapticMaterial.of(other) if other != null else null
 	if material == null and other is RigidBody2D:
 		var physics: PhysicsMaterial = (other as RigidBody2D).physics_material_override
 		material = HapticMaterial.from_physics_material(physics) if physics != null else null
@@ -129,21 +166,44 @@ func _on_entered(other: Node2D) -> void:
 	hit(direction, speed, material)
 
 
-# A node's velocity in pixels per second: a rigid body's or a character's own, else how far
-# it moved since the last physics tick this probe saw it (0 the first time).
-func _velocity_of(other: Node2D) -> Vector2:
-	if other is RigidBody2D:
-		return (other as RigidBody2D).linear_velocity
-	if other is CharacterBody2D:
-		return (other as CharacterBody2D).velocity
-	var id: int = other.get_instance_id()
-	var before: Vector2 = _seen_at.get(id, other.global_position)
-	return (other.global_position - before) * Engine.physics_ticks_per_second
+## How a node moves: how far it moved since last looked at, in each phase of the main loop,
+## over that phase's time (frames for what moves in [code]_process[/code], ticks for what moves
+## in [code]_physics_process[/code]), so a frame rate other than the tick rate does not change
+## its velocity (at 144 fps and 60 ticks two or three frames' way lies between two ticks).
+class Motion:
+	extends RefCounted
+	## The node watched.
+	var node: Node2D = null
+	## Where it was when last looked at.
+	var last: Vector2 = Vector2.ZERO
+	var _from_process: Vector2 = Vector2.ZERO
+	var _from_physics: Vector2 = Vector2.ZERO
+	var _moved: bool = false
+	var _seen_in_process: bool = false
+	var _seen_in_physics: bool = false
 
+	func _init(p_node: Node2D) -> void:
+		node = p_node
+		last = p_node.global_position
 
-# How far the player moved since this probe last looked (in either callback).
-func _moved() -> Vector2:
-	var here: Vector2 = _area.global_position
-	var moved: Vector2 = here - _last_position
-	_last_position = here
-	return moved
+	## Takes note of how far it moved in the phase now ending [param delta] seconds after
+	## the same phase's last look.
+	func look(delta: float, in_physics: bool) -> void:
+		var here: Vector2 = node.global_position
+		var velocity: Vector2 = (here - last) / maxf(delta, 1e-6)
+		_moved = _moved or here != last
+		last = here
+		if in_physics:
+			_from_physics = velocity
+			_seen_in_physics = true
+		else:
+			_from_process = velocity
+			_seen_in_process = true
+
+	## Its velocity in px/s.
+	func velocity() -> Vector2:
+		return _from_process + _from_physics
+
+	## Whether [method velocity] is known: seen moving, or still through both phases.
+	func known() -> bool:
+		return _moved or (_seen_in_process and _seen_in_physics)
