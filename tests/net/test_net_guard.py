@@ -141,6 +141,35 @@ def test_a_master_forging_floor_hurts_costs_the_host_nothing_and_is_disconnected
               f"{report['health']} of {report['start_health']}")
 
 
+def test_a_master_forging_the_ball_gains_nothing_and_is_disconnected() -> None:
+    """The issue's cheat: once master, the rogue stopped its real stream and sent a ball of
+    its own bouncing in the host's territory, claiming each bounce (61 claims accepted then,
+    the opponent 99 -> 32). The server checks each state against its own simulation."""
+    with workspace() as work:
+        peers, _ = run_match(work, 2, NETWORKS["lan"], 14,
+                             client_args=(("--rogue=forge-ball",),), client_scenes=(ROGUE_SCENE,))
+        host, rogue = peers
+        report = host.report
+        assert report["exit_code"] == 0, logs(peers)
+        _no_engine_errors(host)
+        forged = [line for line in rogue.log().splitlines() if "forged ball states sent" in line]
+        assert forged, "the rogue never was the master:\n" + logs(peers)
+        left = report["extra"].get("peers_left", [])
+        assert len(left) == 1 and left[0]["seats"] == [1], (left, logs(peers))
+        cheat = left[0]["peer"]
+        assert host.log().count(f"disconnecting peer {cheat}: {BUDGET} bad messages") == 1
+        checked = report["extra"]["ball_check"]["verdicts"]
+        assert checked.get("unreachable", 0) >= 1, checked
+        assert report["refused"].get("ball state", 0) >= 1, report["refused"]
+        # No hurt of the host's seat was charged at an epoch the cheat was master of.
+        master_of = {t["epoch"]: t["master"] for t in report["transfers"]}
+        own = [h for h in report["hurts"] if h[1] == 0]
+        assert all(master_of.get(h[0]) == 1 for h in own), (own, master_of)
+        check_health([report])
+        print(f"{forged[-1]}; host's check {checked}; refused {report['refused']}; host health "
+              f"{report['health']} of {report['start_health']}")
+
+
 def test_bad_messages_are_logged_once_and_the_sender_disconnected_at_the_budget() -> None:
     with workspace() as work:
         peers, _ = run_match(work, 2, NETWORKS["lan"], 8, client_scenes=(ROGUE_SCENE,))

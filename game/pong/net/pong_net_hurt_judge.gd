@@ -13,8 +13,10 @@ extends RefCounted
 ## the state after a bounce before it ever gets low (a CI match's honest claim was refused
 ## so): the master's own states, as they are played here, are a third source, where a turn
 ## counts as a bounce when the ball could have reached the floor between the two states.
-## While this peer is the master its servo's events are the whole truth. Times are match
-## seconds.
+## The fourth, and the surest: the bounces of the server's own simulation of the master's
+## ball from the states it accepted ([PongNetBallCheck]); a forged state is refused before it
+## reaches any of the others. While this peer is the master its servo's events are the whole
+## truth. Times are match seconds.
 ## [br]A claim of the territory the ball was in at the claim's epoch may match a bounce up to
 ## [constant TERRITORY_MARGIN_M] outside it (our copy of the ball follows the master's a
 ## little late and blended); a claim of any other territory (the master's ball crossed and
@@ -106,6 +108,12 @@ func observe_master(t: float, position: Vector3, velocity: Vector3) -> void:
 	if _last_master.is_empty() or t > _last_master[0]:
 		_last_master = [t, position, velocity]
 	_forget_before(t - 2.0 * LOOKBACK_S)
+
+
+## The server's own simulation of the master's ball ([PongNetBallCheck]) bounced it on the
+## floor at [param t], [param position].
+func observe_witness(t: float, position: Vector3) -> void:
+	_record(t, position, false)
 
 
 ## The servo bounced the ball on the floor at [param t], [param position]; [param charged]:

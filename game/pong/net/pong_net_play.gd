@@ -50,6 +50,8 @@ var poses: PongNetPoses = null
 var floor_hurts: PongNetFloorHurts = null
 ## Our ball in the servo, as the network moves it.
 var ball: PongNetBall = PongNetBall.new()
+## Server: the check of the master's ball against its own simulation (null on a client).
+var ball_check: PongNetBallCheck = null
 ## Who plays each seat; on the server, the computer standing in.
 var seats: PongNetSeats = PongNetSeats.new()
 ## Seats this peer drives (its player's, or on the server the computer's).
@@ -102,6 +104,8 @@ func begin(
 	weapons = PongNetWeapons.new(router, match_node, authority, _reject, _age_of)
 	poses = PongNetPoses.new(router, match_node, authority, _reject, _age_of)
 	floor_hurts = PongNetFloorHurts.new(router, match_node, authority, _reject)
+	if authority.my_id == PongNetAuthority.SERVER_ID:
+		ball_check = PongNetBallCheck.new(match_node.court, floor_hurts.judge)
 	# The servo's clock may have started over with the match.
 	_last_sent_time = -INF
 	_last_pose_time = -INF
@@ -149,6 +153,7 @@ func frame(delta: float) -> void:
 	_last_now = match_node.now
 	if authority.my_id == PongNetAuthority.SERVER_ID:
 		_referee(sim_dt)
+		_hand_over_left_ball()
 	if authority.is_master() and snapshot.time_s > _settle_until:
 		if snapshot.territory != authority.territory:
 			_hand_off(snapshot)
@@ -226,6 +231,16 @@ func issue(
 	_on_transfer(authority.my_id, transfer)
 
 
+# Server: a ball the master's states left in another territory is handed over.
+func _hand_over_left_ball() -> void:
+	if authority.is_master() or authority.master_peer == 0:
+		return
+	var owed: PongNetBallCheck.Owed = ball_check.left_behind(authority.territory, match_node.now)
+	if owed != null:
+		var kind: PongNetFacts.TransferKind = PongNetFacts.TransferKind.HANDOFF
+		issue(kind, owed.territory, owed.position, owed.velocity, owed.spin, owed.age_ms)
+
+
 # The master's ball crossed into another territory: it asks the server for the hand-off,
 # with the ball as it gives it (the corrected one: a hand-off's correction may still be
 # gliding in).
@@ -288,6 +303,12 @@ func _on_ball(sender: int, state: PongNetBallMessage) -> void:
 			"time %.3f s: its clock cannot have made it" % state.time_s
 		)
 		return
+	if ball_check != null:
+		var outcome: PongNetBallCheck.Outcome = ball_check.admit(state, age, match_node.now)
+		if outcome == PongNetBallCheck.Outcome.REFUSE:
+			_reject(sender, PongNetBallMessage.LABEL, ball_check.reason)
+		if outcome != PongNetBallCheck.Outcome.PLAY:
+			return
 	var buffered: PongNetBallBuffer.State = PongNetBallBuffer.State.new(
 		state.seq, state.time_s, [state.position, state.velocity, state.spin], arrival, age
 	)
@@ -342,6 +363,8 @@ func _on_transfer(sender: int, transfer: PongNetTransferMessage) -> void:
 		_reject(sender, PongNetTransferMessage.LABEL, reason)
 		return
 	ball.restart()
+	if ball_check != null:
+		ball_check.restart()
 	_master_velocity = Vector3.INF
 	var age: float = (transfer.age_ms + _latency.my_leg_ms()) / 1000.0
 	var target: Array[Vector3] = PongNetSmoother.extrapolate(

@@ -166,6 +166,14 @@ func get_state() -> PongState:
 	return state if state != null else PongState.new()
 
 
+## The server's check of a state of its master's ball against its own simulation of the
+## ball: the verdict, or null without the extension.
+func check_ball(check: PongWitnessCheck) -> PongWitnessVerdict:
+	if not _renderer.send(check):
+		return null
+	return PongWitnessVerdict.decode(_renderer.read(PongWitnessVerdict.SCHEMA_ID))
+
+
 ## The events since the last call, oldest first.
 func drain_events() -> Array[PongEvent]:
 	var batch: PongEventBatch = PongEventBatch.decode(_renderer.read(PongEventBatch.SCHEMA_ID))

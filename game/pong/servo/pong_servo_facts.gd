@@ -21,6 +21,13 @@ enum PongEffectKind { NONE, RECOIL, HIT, SLOW, HEAVY, REMOTE }
 ## jump while it flies on.
 enum PongCommandType { SET_BALL, EFFECT, CLEAR_EFFECTS, CORRECT_BALL }
 
+## The server's verdict on one state of a master's ball (ball_witness.h). anchor: the first of its
+## epoch, taken as it is; flown: where free flight from the state before it leads; struck: not, but
+## a paddle was near the ball's path then and the state lies within the ball's reach from there;
+## unreachable: neither (refused); old: no state of its epoch before it to check it from (not
+## judged, not played).
+enum WitnessVerdict { ANCHOR, FLOWN, STRUCK, UNREACHABLE, OLD }
+
 ## floor: a bounce at or above min_bounce_speed_m_per_s (slower is rolling); wall: a wall or ceiling
 ## bounce; paddle: a paddle starts touching the ball; release: and stops; territory: the ball
 ## entered another player's territory (networking hands the simulation over on it).
@@ -43,6 +50,10 @@ const PONG_MAX_ACTIVE_EFFECTS: int = 5
 ## Events the servo keeps until the game drains them; more are dropped and counted.
 const PONG_EVENT_QUEUE_CAPACITY: int = 256
 
+## Floor bounces one verdict of the ball check reports: a ball bounces again no sooner than about
+## 0.27 s, and a gap between checked states is shorter than a second.
+const PONG_WITNESS_MAX_BOUNCES: int = 4
+
 ## Telemetry flag: the Pong renderer is the active one.
 const TELEMETRY_FLAG_PONG_MODE: int = 512
 
@@ -61,6 +72,9 @@ const PONG_EFFECT_KIND_NAMES: PackedStringArray = [
 const PONG_COMMAND_TYPE_NAMES: PackedStringArray = [
 	"set_ball", "effect", "clear_effects", "correct_ball"
 ]
+
+## The names of [enum WitnessVerdict]'s values, in order.
+const WITNESS_VERDICT_NAMES: PackedStringArray = ["anchor", "flown", "struck", "unreachable", "old"]
 
 ## The names of [enum PongEventType]'s values, in order.
 const PONG_EVENT_TYPE_NAMES: PackedStringArray = ["floor", "wall", "paddle", "release", "territory"]

@@ -126,6 +126,8 @@ func to_dict() -> Dictionary:
 	var smoother: PongNetSmoother = _play.ball.smoother
 	var authority: PongNetAuthority = _play.authority
 	extra["ball_stream"] = _play.ball.to_dict()
+	if _play.ball_check != null:
+		extra["ball_check"] = _play.ball_check.to_dict()
 	var intervals: Array = _intervals.duplicate()
 	if _master_since >= 0.0:
 		intervals.append(PackedFloat64Array([_master_since, now()]))

@@ -12,6 +12,11 @@ extends "res://tests/net/driver/net_peer.gd"
 ## [br]- [code]forge[/code]: the issue's cheat: while it is the ball's master it claims
 ## [constant FORGED] floor bounces that cost the host's seat a point (and tells every peer so
 ## directly). None may cost the host anything.
+## [br]- [code]forge-ball[/code]: the issue's second cheat: once the ball's master, it stops
+## its real stream and streams a ball of its own making instead, bouncing in the host's
+## territory every [constant FORGED_BOUNCE_S] (states consistent among themselves, newer than
+## the real stream's), and claims each bounce. The server's check of the ball must refuse
+## every state and claim and disconnect it at the budget.
 ## [br]- [code]mark[/code]: plays honestly and prints [constant HIT_MARK] each time its own
 ## paddle hits the ball while it is the master, once the match is past its loading stall:
 ## the test kills it right then.
@@ -27,6 +32,9 @@ const EVERY_S: float = 0.5
 ## Forged floor claims in all, and at most this many a frame.
 const FORGED: int = 120
 const FORGED_PER_FRAME: int = 10
+## The forged ball's bounce period, s, and where it bounces (the host's territory).
+const FORGED_BOUNCE_S: float = 0.6
+const FORGED_SPOT: Vector3 = Vector3(0.4, 0.0, 1.5)
 const HIT_MARK: String = "PongNet rogue: my paddle hit the ball, I am the master"
 ## Match seconds before a hit is marked: past the court's loading stall, and its first beat.
 const MARK_AFTER_S: float = 3.0
@@ -38,6 +46,10 @@ var _mode: String = "bad"
 var _rogue_clock: float = -1.0
 var _rounds: int = 0
 var _forged: int = 0
+# forge-ball: seconds since it began, and the forged states sent.
+var _forging_s: float = -1.0
+var _forged_states: int = 0
+var _forged_time: float = -INF
 
 
 func _ready() -> void:
@@ -59,6 +71,8 @@ func _process(delta: float) -> void:
 	_rogue_clock += delta
 	if _mode == "forge":
 		_forge(cli.net.play)
+	elif _mode == "forge-ball":
+		_forge_ball(cli.net.play, delta)
 	elif _mode == "bad" and _rounds < ROUNDS and _rogue_clock > FIRST_S + EVERY_S * _rounds:
 		_rounds += 1
 		attack(cli.net.play)
@@ -88,6 +102,40 @@ func _forge(play: PongNetPlay) -> void:
 		play.session.router.send_all(hurt)
 		_forged += 1
 	print("PongNet rogue: %d forged floor hurts sent" % _forged)
+
+
+# While master: its real stream stopped, a forged ball bouncing in the host's territory,
+# each bounce claimed.
+func _forge_ball(play: PongNetPlay, delta: float) -> void:
+	if not play.authority.is_master():
+		return
+	# A private member of the play, on purpose: the cheat's own build would not stream.
+	play._last_sent_time = INF
+	# One state per servo step, as an honest stream sends them.
+	if play.match_node.snapshot.time_s <= _forged_time:
+		return
+	_forged_time = play.match_node.snapshot.time_s
+	var before: float = _forging_s
+	_forging_s = maxf(_forging_s, 0.0) + delta
+	var g: float = play.match_node.court.gravity
+	var radius: float = play.match_node.court.ball_radius
+	var up: float = 0.5 * g * FORGED_BOUNCE_S
+	var since: float = fmod(_forging_s, FORGED_BOUNCE_S)
+	var state: PongNetBallMessage = PongNetBallMessage.new()
+	state.epoch = play.authority.epoch
+	_forged_states += 1
+	state.seq = (1 << 24) + _forged_states
+	state.time_s = play.match_node.snapshot.time_s
+	state.position = FORGED_SPOT + Vector3(0.0, radius + up * since - 0.5 * g * since * since, 0.0)
+	state.velocity = Vector3(0.0, up - g * since, 0.0)
+	play.session.router.send_all(state)
+	if before >= 0.0 and floori(_forging_s / FORGED_BOUNCE_S) > floori(before / FORGED_BOUNCE_S):
+		var claim: PongNetFloorClaimMessage = PongNetFloorClaimMessage.new()
+		claim.epoch = play.authority.epoch
+		claim.victim = 0
+		play.session.router.send_to(PongNetAuthority.SERVER_ID, claim)
+	if _forged_states % 25 == 1:
+		print("PongNet rogue: %d forged ball states sent" % _forged_states)
 
 
 ## Sends the bad messages from [param play]'s peer to the server, as raw packets.

@@ -21,6 +21,10 @@ inline constexpr size_t PONG_MAX_ACTIVE_EFFECTS = 5;
 // Events the servo keeps until the game drains them; more are dropped and counted.
 inline constexpr size_t PONG_EVENT_QUEUE_CAPACITY = 256;
 
+// Floor bounces one verdict of the ball check reports: a ball bounces again no sooner than
+// about 0.27 s, and a gap between checked states is shorter than a second.
+inline constexpr size_t PONG_WITNESS_MAX_BOUNCES = 4;
+
 // Telemetry flag: the Pong renderer is the active one.
 inline constexpr uint32_t TELEMETRY_FLAG_PONG_MODE = 512u;
 
@@ -74,6 +78,25 @@ template <>
 struct EnumInfo<PongCommandType> {
 	static constexpr uint32_t COUNT = 4;
 	static constexpr const char *const *NAMES = PONG_COMMAND_TYPE_NAMES;
+};
+
+// The server's verdict on one state of a master's ball (ball_witness.h). anchor: the first of
+// its epoch, taken as it is; flown: where free flight from the state before it leads; struck:
+// not, but a paddle was near the ball's path then and the state lies within the ball's reach
+// from there; unreachable: neither (refused); old: no state of its epoch before it to check it
+// from (not judged, not played).
+enum class WitnessVerdict : int32_t {
+	ANCHOR = 0,
+	FLOWN = 1,
+	STRUCK = 2,
+	UNREACHABLE = 3,
+	OLD = 4,
+};
+inline constexpr const char *WITNESS_VERDICT_NAMES[] = { "anchor", "flown", "struck", "unreachable", "old" };
+template <>
+struct EnumInfo<WitnessVerdict> {
+	static constexpr uint32_t COUNT = 5;
+	static constexpr const char *const *NAMES = WITNESS_VERDICT_NAMES;
 };
 
 // floor: a bounce at or above min_bounce_speed_m_per_s (slower is rolling); wall: a wall or

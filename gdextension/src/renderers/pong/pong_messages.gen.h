@@ -136,4 +136,41 @@ struct PongCommand {
 };
 static_assert(std::is_trivially_copyable_v<PongCommand>);
 
+// One state of a master's ball stream, for the server's check against its own simulation of the
+// ball (ball_witness.h): the state as the master sent it, and how old it was when it arrived
+// here.
+struct PongWitnessCheck {
+	static constexpr uint32_t SCHEMA_ID = 0xfcaa2997u;
+	static constexpr const char *NAME = "PongWitnessCheck";
+
+	// The transfer that made the sender master: a new one starts the check afresh. Range [0,
+	// 1073741824].
+	int32_t epoch{};
+	// The master's servo time of the state. Unit: s. Range [0.0, 10000000.0].
+	double time_s{};
+	// The ball's centre, world. Unit: m. Range [-inf, 1000.0].
+	Vec3 position{};
+	// Its velocity. Unit: m/s. Range [-inf, 1000.0].
+	Vec3 velocity{};
+	// Its spin. Unit: rad/s. Range [-inf, 100000.0].
+	Vec3 spin{};
+	// Its age when it arrived: it places the state in this servo's time, where the paddles were.
+	// Unit: s. Range [0.0, 10.0].
+	double age_s{};
+	// The first check of a match: the states of the last one are forgotten (epochs start over).
+	bool new_match{};
+
+	// Every field with its schema limits, in wire order (core/wire/codec.h walks them).
+	template <typename Self, typename Visitor>
+	static void visit(Self &r_self, Visitor &&r_visitor) {
+		r_visitor(FieldSpec{ .name = "epoch", .min = 0.0, .max = 1073741824.0 }, r_self.epoch);
+		r_visitor(FieldSpec{ .name = "time_s", .min = 0.0, .max = 10000000.0 }, r_self.time_s);
+		r_visitor(FieldSpec{ .name = "position", .max = 1000.0 }, r_self.position);
+		r_visitor(FieldSpec{ .name = "velocity", .max = MAX_SPEED_M_PER_S }, r_self.velocity);
+		r_visitor(FieldSpec{ .name = "spin", .max = 100000.0 }, r_self.spin);
+		r_visitor(FieldSpec{ .name = "age_s", .min = 0.0, .max = 10.0 }, r_self.age_s);
+		r_visitor(FieldSpec{ .name = "new_match" }, r_self.new_match);
+	}
+};
+
 } // namespace haptics

@@ -19,6 +19,7 @@ Status PongPort::set_input(const PongInput &p_input) {
 			}
 		}
 		channels_.input.store(input);
+		witness_.note_paddles(channels_.state.load());
 	}
 	return valid;
 }
@@ -38,11 +39,15 @@ Status PongPort::push_command(const PongCommand &p_command) {
 }
 
 Status PongPort::receive(std::span<const uint8_t> p_message) {
-	return receive_one_of<PongInput, PongCommand>(p_message, [&](const auto &p_value) {
-		if constexpr (std::is_same_v<std::decay_t<decltype(p_value)>, PongInput>) {
+	return receive_one_of<PongInput, PongCommand, PongWitnessCheck>(p_message, [&](const auto &p_value) {
+		using Value = std::decay_t<decltype(p_value)>;
+		if constexpr (std::is_same_v<Value, PongInput>) {
 			return set_input(p_value);
-		} else {
+		} else if constexpr (std::is_same_v<Value, PongCommand>) {
 			return push_command(p_value);
+		} else {
+			check_ball(p_value);
+			return Status::success();
 		}
 	});
 }
@@ -62,8 +67,19 @@ Status PongPort::give(uint32_t p_value_id, std::vector<uint8_t> &r_bytes) {
 		r_bytes = encode(batch);
 		return Status::success();
 	}
-	return Status::error(StatusCode::INVALID_ARGUMENT, "the Pong renderer gives PongState and PongEventBatch, not layout %08x",
+	if (p_value_id == PongWitnessVerdict::SCHEMA_ID) {
+		r_bytes = encode(verdict_);
+		return Status::success();
+	}
+	return Status::error(StatusCode::INVALID_ARGUMENT,
+			"the Pong renderer gives PongState, PongEventBatch and PongWitnessVerdict, not layout %08x",
 			unsigned(p_value_id));
+}
+
+const PongWitnessVerdict &PongPort::check_ball(const PongWitnessCheck &p_check) {
+	const PongState latest = channels_.state.load();
+	verdict_ = witness_.check(p_check, latest.time_s, channels_.settings.load(), channels_.input.load().beginner);
+	return verdict_;
 }
 
 PongState PongPort::state() const {

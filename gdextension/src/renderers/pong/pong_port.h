@@ -8,9 +8,13 @@
 //   each frame:   port.state(), port.drain_events(...)
 // The same through RendererPort, as the game sends them (pong.schema.toml): it takes
 // PongInput and PongCommand, and gives PongState and PongEventBatch (the drained events).
+// A networked match's server also checks its master's ball here (ball_witness.h): it sends a
+// PongWitnessCheck per state and reads the PongWitnessVerdict; set_input feeds the check the
+// servo's paddles every frame.
 
 #include "core/base/status.h"
 #include "core/render/renderer_port.h"
+#include "renderers/pong/ball_witness.h"
 #include "renderers/pong/pong_channels.h"
 
 #include <cstddef>
@@ -35,9 +39,13 @@ public:
 	PongState state() const;
 	// Pops up to p_max events, oldest first, into r_out; returns how many.
 	size_t drain_events(PongEvent *r_out, size_t p_max);
+	// Checks a state of the master's ball (ball_witness.h) at the servo's latest time.
+	const PongWitnessVerdict &check_ball(const PongWitnessCheck &p_check);
 
 private:
 	PongChannels &channels_;
+	BallWitness witness_;
+	PongWitnessVerdict verdict_;
 };
 
 } // namespace haptics

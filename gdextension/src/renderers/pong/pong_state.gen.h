@@ -205,4 +205,53 @@ struct PongState {
 };
 static_assert(std::is_trivially_copyable_v<PongState>);
 
+// A floor bounce the server's own simulation of the master's ball saw.
+struct PongWitnessBounce {
+	static constexpr uint32_t SCHEMA_ID = 0xeba73fb9u;
+	static constexpr const char *NAME = "PongWitnessBounce";
+
+	// The ball's centre, world. Unit: m.
+	Vec3 position{};
+	// How long before the check it was, in this servo's time. Unit: s.
+	double ago_s{};
+
+	// Every field with its schema limits, in wire order (core/wire/codec.h walks them).
+	template <typename Self, typename Visitor>
+	static void visit(Self &r_self, Visitor &&r_visitor) {
+		r_visitor(FieldSpec{ .name = "position" }, r_self.position);
+		r_visitor(FieldSpec{ .name = "ago_s" }, r_self.ago_s);
+	}
+};
+
+// The server's verdict on the latest PongWitnessCheck (ball_witness.h).
+struct PongWitnessVerdict {
+	static constexpr uint32_t SCHEMA_ID = 0xa8960e14u;
+	static constexpr const char *NAME = "PongWitnessVerdict";
+
+	// What the check found.
+	WitnessVerdict verdict{};
+	// flown, struck, unreachable: master time from the state it was checked from. Unit: s.
+	double gap_s{};
+	// flown, struck, unreachable: how far the state lies from where free flight leads. Unit: m.
+	double miss_m{};
+	// The same for its velocity. Unit: m/s.
+	double miss_m_per_s{};
+	// The position's tolerance over this gap. Unit: m.
+	double allowed_m{};
+	// flown: the floor bounces (at or above min_bounce_speed_m_per_s) of the flight; struck: those
+	// before the paddle came near.
+	std::vector<PongWitnessBounce> bounces{};
+
+	// Every field with its schema limits, in wire order (core/wire/codec.h walks them).
+	template <typename Self, typename Visitor>
+	static void visit(Self &r_self, Visitor &&r_visitor) {
+		r_visitor(FieldSpec{ .name = "verdict" }, r_self.verdict);
+		r_visitor(FieldSpec{ .name = "gap_s" }, r_self.gap_s);
+		r_visitor(FieldSpec{ .name = "miss_m" }, r_self.miss_m);
+		r_visitor(FieldSpec{ .name = "miss_m_per_s" }, r_self.miss_m_per_s);
+		r_visitor(FieldSpec{ .name = "allowed_m" }, r_self.allowed_m);
+		r_visitor(FieldSpec{ .name = "bounces", .max_count = static_cast<uint32_t>(PONG_WITNESS_MAX_BOUNCES) }, r_self.bounces);
+	}
+};
+
 } // namespace haptics

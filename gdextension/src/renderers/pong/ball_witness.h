@@ -1,0 +1,101 @@
+#pragma once
+
+// The server's check of a master's ball (issue 36: a master that streamed a forged ball took
+// points at will). Every state of the master's stream is checked against this machine's own
+// simulation of the ball, the servo's ball laws (ball.h), flown from the start of the ball's
+// current flight (by the master's servo time, so the path's delay and jitter do not enter):
+//   flown        free flight and court bounces from the flight's start lead to it, within
+//                WITNESS_POSITION_M and WITNESS_VELOCITY_M_PER_S (the same laws in the same
+//                steps: an honest master's ball, a correction gliding in included, is there to
+//                a micrometre); the floor bounces since the previous state are ones this
+//                machine saw, reported for the floor claims. A flown state WITNESS_FLIGHT_S
+//                after the flight's start starts the next (so a long flight is not flown anew
+//                for every state, and the tolerance cannot be spent again and again to bend
+//                the ball, as checking each state from the one before it would let it);
+//   struck       not, but some paddle was within its radius, the ball's and WITNESS_REACH_M
+//                of the flight since the previous state within WITNESS_WINDOW_S of the time it
+//                passed there (the paddles as this servo had them, the state placed in its
+//                time by its age), and the state lies within what the ball can fly at
+//                max_ball_speed from there: it starts a new flight;
+//   unreachable  neither, or a second state of a moment already kept that is not the same:
+//                the state is refused and not kept;
+//   anchor       the first of an epoch (the new master's ball is its follower copy, which on a
+//                rough path is metres from ours), or the first after WITNESS_MAX_GAP_S in which
+//                the master sent nothing: taken as it is, a flight's start;
+//   old          no state of its epoch before it, or a copy of one kept: not judged.
+// Game thread only; the paddle history is fed once a frame (note_paddles).
+
+#include "core/base/vec3.h"
+#include "renderers/pong/ball.h"
+#include "renderers/pong/pong_config.h"
+#include "renderers/pong/pong_messages.gen.h"
+#include "renderers/pong/pong_state.gen.h"
+
+#include <array>
+#include <cstddef>
+
+namespace haptics {
+
+// The servo's period: the master's ball moves in such steps.
+inline constexpr double WITNESS_STEP_S = 0.001;
+// What an honest master's stream may differ from free flight by: the wire's 32-bit floats,
+// and a court bounce of the ball while a correction glides in (ball_correction.h), which
+// bounces the ball, not the corrected one.
+inline constexpr double WITNESS_POSITION_M = 0.05;
+inline constexpr double WITNESS_VELOCITY_M_PER_S = 0.5;
+// How long one flight is flown before a state on it starts the next.
+inline constexpr double WITNESS_FLIGHT_S = 0.5;
+// How near a paddle's centre the ball must pass, beyond the two radii, to count as struck:
+// our copy of a remote paddle is its pose carried on by its velocity.
+inline constexpr double WITNESS_REACH_M = 0.25;
+// How far apart in time a paddle sample and the flight may be: the state's age is an estimate
+// (each leg taken as half the round trip) and our paddles were posed a leg late.
+inline constexpr double WITNESS_WINDOW_S = 0.35;
+// States kept per epoch to check later ones (and reordered ones) from: a second of a stream
+// at its fastest (125 Hz), so a flight's start is always among them.
+inline constexpr size_t WITNESS_STATES = 128;
+// Paddle samples kept, one a frame: several seconds at 60-125 Hz.
+inline constexpr size_t WITNESS_PADDLE_SAMPLES = 512;
+// A master silent longer than this starts afresh: its heartbeat has then been silent for most
+// of the 3 s after which the computer takes its seat.
+inline constexpr double WITNESS_MAX_GAP_S = 2.0;
+
+class BallWitness {
+public:
+	// A new match: no states, no paddles.
+	void reset();
+	// The servo's state after a frame (this machine's servo time, every seat's paddle).
+	void note_paddles(const PongState &p_state);
+	// Checks p_check, at this servo's time p_now_s, in a court of p_config (p_beginner: the
+	// ball holds its height), and keeps it unless refused.
+	PongWitnessVerdict check(const PongWitnessCheck &p_check, double p_now_s, const PongConfig &p_config,
+			bool p_beginner);
+
+private:
+	struct Kept {
+		double time_s = 0.0; // The master's servo time.
+		BallState ball;
+		bool starts_flight = true;
+	};
+	struct PaddleSample {
+		double time_s = 0.0; // This servo's time.
+		int players = 0;
+		std::array<Vec3, PONG_MAX_PLAYERS> centers{};
+	};
+
+	// The kept state latest before p_time_s (p_flight_start: that starts a flight), or null.
+	const Kept *before(double p_time_s, bool p_flight_start) const;
+	void keep(const Kept &p_state);
+	// Whether a paddle was near p_ball's centre at this servo's time p_time_s.
+	bool paddle_near(const Vec3 &p_ball, double p_time_s, double p_reach_m) const;
+
+	int epoch_ = -1;
+	double latest_seen_s_ = -1.0; // The newest state of the epoch checked, kept or not.
+	std::array<Kept, WITNESS_STATES> kept_{};
+	size_t kept_count_ = 0; // Sorted by time, oldest first.
+	std::array<PaddleSample, WITNESS_PADDLE_SAMPLES> paddles_{};
+	size_t paddle_next_ = 0;
+	size_t paddle_count_ = 0;
+};
+
+} // namespace haptics
