@@ -152,7 +152,8 @@ func get_legend_value(component: String) -> Label:
 ## The HUD's servo line while the servo runs: its rate, period p99 and which real-time
 ## techniques it was granted ([method HapticsServo.get_stats]): the real-time priority (from
 ## RealtimeKit for a normal user) or what the servo has without one, locked memory, the CPU
-## latency held, the pinned CPU, the spin before each deadline.
+## latency held, the pinned CPU, the spin before each deadline ("learned" when it is this
+## machine's wake-up lateness, without the latency hold).
 static func servo_running_text(rate_hz: float, stats: HapticServoStats) -> String:
 	var p99_ms: float = stats.period_p99_s * 1e3
 	var parts: PackedStringArray = ["servo %d Hz" % roundi(rate_hz), "p99 %.2f ms" % p99_ms]
@@ -171,7 +172,8 @@ static func servo_running_text(rate_hz: float, stats: HapticServoStats) -> Strin
 		parts.append("CPU %d" % stats.pinned_cpu)
 	var spin_us: float = stats.spin_s * 1e6
 	if spin_us > 0.0:
-		parts.append("spin %d µs" % roundi(spin_us))
+		var learned: String = " (learned)" if stats.spin_learned else ""
+		parts.append("spin %d µs%s" % [roundi(spin_us), learned])
 	return "  ·  ".join(parts)
 
 

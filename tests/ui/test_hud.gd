@@ -175,6 +175,19 @@ func test_the_servo_line_names_the_techniques_granted() -> void:
 	refused.scheduler = HapticRealtime.SchedulerKind.NORMAL
 	refused.pinned_cpu = -1
 	assert_eq(Hud.servo_running_text(1000.0, refused), "servo 1000 Hz  ·  p99 1.20 ms")
+	# Without the hold the spin is the machine's learned wake-up lateness, and says so.
+	var learned: HapticServoStats = HapticServoStats.new()
+	learned.period_p99_s = 1.0e-3
+	learned.scheduler = HapticRealtime.SchedulerKind.REALTIME_RR
+	learned.realtime = true
+	learned.realtime_priority = 20
+	learned.pinned_cpu = -1
+	learned.spin_s = 197e-6
+	learned.spin_learned = true
+	assert_eq(
+		Hud.servo_running_text(1000.0, learned),
+		"servo 1000 Hz  ·  p99 1.00 ms  ·  RT 20 (RealtimeKit)  ·  spin 197 µs (learned)"
+	)
 
 
 func test_the_servo_line_says_what_realtimekit_gave_a_normal_user() -> void:
