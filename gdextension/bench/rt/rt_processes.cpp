@@ -205,7 +205,8 @@ bool RenderLoad::spawn_game(std::string &r_why_not) {
 		args = { "unshare", "--mount", "--", "sh", "-c", "mount --bind /dev/null /dev/cpu_dma_latency && exec \"$@\"", "sh",
 			"setpriv", "--bounding-set=-sys_nice", "--inh-caps=-sys_nice", "--" };
 	}
-	args.insert(args.end(), { godot, "--path", project_, "--rendering-driver", "opengl3", "--audio-driver", "Dummy", "--", "--autopilot", "--autopilot-seconds=0" });
+	// Level 1 under the test driver's autopilot (the product has no autopilot of its own).
+	args.insert(args.end(), { godot, "--path", project_, "--rendering-driver", "opengl3", "--audio-driver", "Dummy", "res://tests/drivers/game_autopilot.tscn", "--", "--autopilot-seconds=0" });
 	std::vector<std::string> environment;
 	for (char **entry = environ; *entry; ++entry) {
 		if (std::strncmp(*entry, "DISPLAY=", 8) != 0 && std::strncmp(*entry, "DBUS_SYSTEM_BUS_ADDRESS=", 24) != 0) {
