@@ -28,8 +28,10 @@ haptics_library(haptics_renderers renderers haptics_core)
 # ${CMAKE_DL_LIBS}: the OpenHaptics backend dlopens the user's libHD at run time.
 haptics_library(haptics_devices devices haptics_core ${HAPTICS_HIDAPI} ${HAPTICS_LIBUSB} ${CMAKE_DL_LIBS})
 if(HAPTICS_SDL3)
-  # SDL's headers only: the SDL backend loads libSDL3 at run time (devices/sdl/sdl_api.h).
+  # SDL's headers; on Linux only them (the backend loads libSDL3 at run time), on Windows the
+  # static SDL too (devices/sdl/sdl_api.h).
   target_include_directories(haptics_devices SYSTEM PUBLIC ${HAPTICS_SDL3_INCLUDES})
+  target_link_libraries(haptics_devices PUBLIC ${HAPTICS_SDL3_LIBRARY})
 endif()
 haptics_library(haptics_storage storage haptics_core)
 haptics_library(haptics_system system haptics_core haptics_renderers haptics_devices)

@@ -1,8 +1,8 @@
-# The Windows build (cross-compiled with MinGW-w64, cmake/mingw-w64.cmake): hidapi and libusb
-# from Debian 12's source packages, built static by tools/windows/build-deps.sh into one
+# The Windows build (cross-compiled with MinGW-w64, cmake/mingw-w64.cmake): hidapi, libusb and
+# SDL 3 from Debian's source packages, built static by tools/windows/build-deps.sh into one
 # install prefix, and the C++ and C runtimes linked in, so that the DLL needs nothing beside
 # Windows' own DLLs (tools/windows/check-imports.sh checks its import table).
-set(HAPTICS_WINDOWS_DEPS "" CACHE PATH "Prefix holding the static hidapi and libusb for Windows")
+set(HAPTICS_WINDOWS_DEPS "" CACHE PATH "Prefix holding the static hidapi, libusb and SDL 3 for Windows")
 foreach(library IN ITEMS hidapi usb-1.0)
   if(NOT EXISTS "${HAPTICS_WINDOWS_DEPS}/lib/lib${library}.a")
     message(FATAL_ERROR "No ${HAPTICS_WINDOWS_DEPS}/lib/lib${library}.a: configure with "
@@ -17,6 +17,16 @@ add_library(haptics_windows_libusb STATIC IMPORTED)
 set_target_properties(haptics_windows_libusb PROPERTIES
   IMPORTED_LOCATION "${HAPTICS_WINDOWS_DEPS}/lib/libusb-1.0.a"
   INTERFACE_INCLUDE_DIRECTORIES "${HAPTICS_WINDOWS_DEPS}/include/libusb-1.0")
+# SDL 3 (the SDL backend, devices/sdl: linked in here, sdl_library_windows.cpp), when the
+# prefix has it; the Windows libraries its static archive needs are Windows' own (SDL's
+# sdl3.pc lists them; dinput8's import library also holds DirectInput's data formats).
+if(EXISTS "${HAPTICS_WINDOWS_DEPS}/lib/libSDL3.a")
+  add_library(haptics_windows_sdl3 STATIC IMPORTED)
+  set_target_properties(haptics_windows_sdl3 PROPERTIES
+    IMPORTED_LOCATION "${HAPTICS_WINDOWS_DEPS}/lib/libSDL3.a"
+    INTERFACE_LINK_LIBRARIES "kernel32;user32;gdi32;winmm;imm32;ole32;oleaut32;version;uuid;advapi32;setupapi;shell32;dinput8")
+  set(HAPTICS_WINDOWS_SDL3_INCLUDES "${HAPTICS_WINDOWS_DEPS}/include")
+endif()
 set(HAPTICS_HIDAPI haptics_windows_hidapi)
 set(HAPTICS_LIBUSB haptics_windows_libusb)
 # The servo thread's timer and scheduling (realtime_windows.cpp): avrt for the multimedia

@@ -5,12 +5,16 @@
 # listed from the Linux build's suite (make build), and the counts must add up: every Linux
 # test ran under Wine or is Linux-only, plus the Windows-only ones (*_windows.cpp).
 # Then each Windows library is loaded by a minimal host under Wine, and its imports checked.
-# Wine's prefix is .build/wine (ignored), made on first use.
+# Wine's prefix is .build/wine (ignored), made on first use. HAPTICS_WINDOWS_BUILD,
+# HAPTICS_WINDOWS_ADDON (tools/windows/build.sh), HAPTICS_LINUX_BUILD (the Linux build folder,
+# default .build/debug) and HAPTICS_WINEPREFIX point it at a second build in the same tree.
 set -euo pipefail
 project=$(cd "$(dirname "$0")/../.." && pwd)
 cd "$project"
-exe=.build/windows-debug/haptics_tests.exe
-linux_tests=.build/debug/haptics_tests
+build=${HAPTICS_WINDOWS_BUILD:-.build/windows}
+addon=${HAPTICS_WINDOWS_ADDON:-addons/haptics}
+exe=$build-debug/haptics_tests.exe
+linux_tests=${HAPTICS_LINUX_BUILD:-.build/debug}/haptics_tests
 # Bounds: the first boot of a prefix, and the whole suite (about a minute natively).
 BOOT_SECONDS=${WINE_BOOT_SECONDS:-300}
 SUITE_SECONDS=${WINE_SUITE_SECONDS:-900}
@@ -21,7 +25,7 @@ die() { echo "test-windows: $*" >&2; exit 1; }
 wine=$(command -v wine64 || command -v wine || echo /usr/lib/wine/wine64)
 [[ -x $wine ]] || die "no wine (package wine64; make deps installs it)"
 
-export WINEPREFIX=$project/.build/wine WINEDEBUG=-all WINEARCH=win64
+export WINEPREFIX=${HAPTICS_WINEPREFIX:-$project/.build/wine} WINEDEBUG=-all WINEARCH=win64
 # No Mono or Gecko installer dialogs: the suite needs neither.
 export WINEDLLOVERRIDES="mscoree,mshtml="
 if [[ ! -f $WINEPREFIX/system.reg ]]; then
@@ -39,7 +43,7 @@ linux_total=$("$linux_tests" --list-test-cases --no-colors | count_listed)
 windows_only=$(timeout 120 "$wine" "$exe" --list-test-cases --source-file='*_windows.cpp' --no-colors 2>/dev/null |
   tr -d '\r' | count_listed)
 
-log=.build/windows-debug/wine-tests.log
+log=$build-debug/wine-tests.log
 start=$(date +%s)
 status=0
 timeout "$SUITE_SECONDS" "$wine" "$exe" --no-colors --duration=false >"$log" 2>&1 || status=$?
@@ -59,12 +63,17 @@ names_listed <<<"$linux_only_list" | sed 's/^/  /'
 expected=$((linux_total - linux_only + windows_only))
 ((ran == expected)) || die "$ran ran under Wine, expected $expected ($linux_total - $linux_only Linux-only + $windows_only Windows-only): a test is missing from one build"
 ((ran == passed)) || die "$((ran - passed)) test cases did not pass under Wine"
+# What SDL (linked into the DLL) finds under Wine: its subsystems and the devices Wine offers it
+# (tests/devices/test_sdl_library_windows.cpp; -s prints a passing case's messages).
+# None when the build has no SDL backend (HAPTICS_SDL3=OFF).
+timeout 120 "$wine" "$exe" --no-colors -s -tc='sdl under windows*' 2>/dev/null | tr -d '\r' |
+  sed -nE 's/^.*: MESSAGE: sdl under windows: (.*)$/test-windows: SDL under Wine: \1/p' || true
 # Each library loads on Windows' loader (Wine's), and its GDExtension entry point initialises
 # and registers its classes against a minimal host (tests_support/load_host).
 for flavour in debug release; do
-  dll=addons/haptics/bin/libhaptics.windows.template_$flavour.x86_64.dll
+  dll=$addon/bin/libhaptics.windows.template_$flavour.x86_64.dll
   tools/windows/check-imports.sh "$dll"
-  out=$(timeout 120 "$wine" .build/windows-debug/haptics_load_host.exe "$dll" 2>&1 | tr -d '\r') ||
+  out=$(timeout 120 "$wine" "$build-debug/haptics_load_host.exe" "$dll" 2>&1 | tr -d '\r') ||
     { echo "$out" >&2; die "the $flavour library did not load and register under Wine"; }
   # Each class registers as many methods and constants as its class reference documents
   # (doc_classes/, which tests/foundation/test_doc_classes.gd holds to the Linux library as the

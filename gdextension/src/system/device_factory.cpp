@@ -143,13 +143,17 @@ DeviceList list_all_devices() {
 	if (openhaptics_entry.openable || std::getenv(openhaptics::HD_LIBRARY_ENV) != nullptr) {
 		list.devices.push_back(openhaptics_entry);
 	}
-#if HAPTICS_SDL3
-	sdl::append_sdl_devices(list.devices, list.warnings);
-#endif
 	for (const DeviceSource &source : sources()) {
 		source.append(list.devices);
 	}
 	probe_devices(list.devices);
+#if HAPTICS_SDL3
+	// After the others' verdicts: a device a specialised backend can open is theirs, and SDL
+	// does not even open it (devices/sdl/sdl_backend.h). SDL's entries come with their verdicts.
+	std::vector<DeviceInfo> sdl_devices;
+	sdl::append_sdl_devices(list.devices, sdl_devices, list.warnings);
+	list.devices.insert(list.devices.end(), sdl_devices.begin(), sdl_devices.end());
+#endif
 	return list;
 }
 

@@ -16,10 +16,19 @@ namespace haptics::sdl_test {
 using namespace haptics::sdl;
 using Kind = ScriptedSdlCall::Kind;
 
+// Where SDL drives, with its joysticks listed (as on Windows).
+inline SdlListOptions driving() {
+	SdlListOptions options;
+	options.read = true;
+	options.joysticks = true;
+	return options;
+}
+
 struct Rig {
-	explicit Rig(std::vector<ScriptedHaptic> p_haptics) :
-			sdl(std::move(p_haptics)), runtime(ScriptedSdl::api()) {
-		(void)runtime.list(true, entries);
+	explicit Rig(std::vector<ScriptedHaptic> p_haptics, std::vector<ScriptedJoystick> p_joysticks = {}) :
+			sdl(std::move(p_haptics), std::move(p_joysticks)), runtime(ScriptedSdl::api()) {
+		std::string warning;
+		(void)runtime.list(driving(), entries, warning);
 		sdl.clear_calls();
 	}
 	ScriptedSdl sdl;

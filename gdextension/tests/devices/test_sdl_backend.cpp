@@ -1,6 +1,7 @@
 // The SDL backend's listing and choice (devices/sdl/sdl_backend.h) over a scripted SDL: which
 // haptics are offered and why not, that on Linux SDL is not even asked to open what the evdev
-// backend drives, the keys that survive a rescan, and loading SDL itself.
+// backend drives, the keys that survive a rescan, and the table's one list of functions.
+// Joysticks and the rule against the specialised backends: test_sdl_joystick.cpp.
 
 #include "devices/sdl/sdl_api.h"
 #include "devices/sdl/sdl_backend.h"
@@ -22,7 +23,9 @@ namespace {
 std::vector<DeviceInfo> listed(SdlRuntime &r_runtime, bool p_drives) {
 	std::vector<DeviceInfo> devices;
 	std::vector<std::string> warnings;
-	append_sdl_devices(r_runtime, p_drives, devices, warnings);
+	SdlListOptions options;
+	options.read = p_drives;
+	append_sdl_devices(r_runtime, options, devices, warnings);
 	CHECK(warnings.empty());
 	return devices;
 }
@@ -135,23 +138,14 @@ TEST_CASE("sdl backend: SDL's haptics are driven by SDL on Linux only when HAPTI
 #endif
 }
 
-TEST_CASE("sdl library: a missing libSDL3 is 'not found', a library without SDL's functions names the first missing") {
-	SdlLibrary library;
-	Status loaded = load_sdl_library("/nonexistent/libSDL3.so.0", library);
-	CHECK(loaded.code() == StatusCode::NO_DEVICE);
-	CHECK(std::strstr(loaded.message(), "SDL 3 not found (/nonexistent/libSDL3.so.0)") != nullptr);
-	loaded = load_sdl_library(HAPTICS_FAKE_HD_PATH, library); // A real library, but not SDL.
-	CHECK(loaded.code() == StatusCode::DEVICE_ERROR);
-	CHECK(std::strstr(loaded.message(), "is not SDL 3 or too old: it has no SDL_GetVersion") != nullptr);
-	CHECK(library.handle == nullptr);
-	{
-		const testing::ScopedVariable path(SDL_LIBRARY_ENV, "/nonexistent/elsewhere.so");
-		CHECK(std::strstr(load_sdl_library("", library).message(), "/nonexistent/elsewhere.so") != nullptr);
-	}
+TEST_CASE("sdl api: the scripted table is complete, and a missing function is named") {
 	SdlApi api = ScriptedSdl::api();
 	CHECK(missing_sdl_function(api) == nullptr);
 	api.PlayHapticRumble = nullptr;
 	CHECK(std::strcmp(missing_sdl_function(api), "SDL_PlayHapticRumble") == 0);
+	api = ScriptedSdl::api();
+	api.RumbleJoystick = nullptr;
+	CHECK(std::strcmp(missing_sdl_function(api), "SDL_RumbleJoystick") == 0);
 }
 
 TEST_CASE("sdl backend: the device factory routes sdl entries to the SDL row, which refuses cleanly when it cannot open") {

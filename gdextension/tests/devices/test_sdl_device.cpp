@@ -218,7 +218,8 @@ TEST_CASE("sdl device: a device that disappears mid-session is DISCONNECTED with
 
 	rig.sdl.set_plugged(0, true);
 	std::vector<SdlHapticEntry> entries;
-	REQUIRE(rig.runtime.list(true, entries).ok());
+	std::string warning;
+	REQUIRE(rig.runtime.list(driving(), entries, warning).ok());
 	SdlHapticDevice again(rig.runtime, config_for(entries.at(0).key));
 	REQUIRE(again.open().ok());
 	rig.sdl.fail_next(Kind::UPDATE, "Haptic: Error updating the effect: Input/output error");

@@ -1,13 +1,8 @@
 // The SDL backend's effects (devices/sdl/sdl_effect.h): a stick's force as SDL's polar angle and
-// level, which SDL's Linux driver turns into the very evdev direction our evdev backend sends; a
-// wheel's on the steering axis; finite values within full scale whatever comes in; the rumble
-// envelope's two motors. The SDL tests are *_linux.cpp while only Linux builds SDL (the Windows
-// suite counts what it leaves out by that name, tools/windows/test.sh).
+// level; a wheel's on the steering axis; finite values within full scale whatever comes in; the
+// rumble envelope's two motors. Against the evdev backend's directions: test_sdl_effect_linux.cpp.
 
 #include "devices/sdl/sdl_effect.h"
-#if HAPTICS_EVDEV
-#include "devices/evdev/evdev_ff.h"
-#endif
 
 #include <doctest/doctest.h>
 
@@ -16,16 +11,6 @@
 
 using namespace haptics;
 using namespace haptics::sdl;
-
-namespace {
-
-// SDL's Linux driver: polar hundredths of a degree -> ff_effect direction
-// (SDL_SYS_ToDirection, src/haptic/linux/SDL_syshaptic.c).
-uint16_t linux_direction(int32_t p_polar) {
-	return static_cast<uint16_t>(((static_cast<uint32_t>(p_polar) % 36000) * 0x8000) / 18000);
-}
-
-} // namespace
 
 TEST_CASE("sdl effect: a stick's force as a polar angle clockwise from device +y and a level of full scale") {
 	const SdlForceMapping mapping{ 5.0, false, false, false };
@@ -49,24 +34,6 @@ TEST_CASE("sdl effect: a stick's force as a polar angle clockwise from device +y
 		CHECK(force.level == c.level);
 	}
 }
-
-#if HAPTICS_EVDEV
-TEST_CASE("sdl effect: on Linux SDL hands the kernel the evdev backend's own direction for every force") {
-	const SdlForceMapping sdl_mapping{ 5.0, false, false, false };
-	const evdev::FfForceMapping evdev_mapping{ 5.0, evdev::EvdevShape::JOYSTICK, false, false };
-	for (int i = 0; i < 360; i += 7) {
-		const double angle = i * 3.14159265358979 / 180.0;
-		const Vec3 force(2.0 * std::sin(angle), 2.0 * std::cos(angle), 0.0);
-		CAPTURE(i);
-		const SdlConstantForce sdl_force = map_force_to_sdl(force, sdl_mapping);
-		const evdev::FfConstantForce evdev_force = evdev::map_force_to_constant(force, evdev_mapping);
-		const int difference = static_cast<int>(linux_direction(sdl_force.direction)) - evdev_force.direction;
-		// SDL's hundredths of a degree are coarser than evdev's 1/65536 of a turn: 2 steps at most.
-		CHECK(std::abs(difference) <= 2);
-		CHECK(sdl_force.level == evdev_force.level);
-	}
-}
-#endif
 
 TEST_CASE("sdl effect: NaN and infinities count as zero, huge forces are full scale, never beyond") {
 	const SdlForceMapping mapping{ 5.0, false, false, false };

@@ -15,8 +15,7 @@ namespace {
 thread_local std::string error_text;
 
 bool set_error(const std::string &p_text) {
-	error_text = p_text;
-	return false;
+	return scripted_sdl_set_error(p_text);
 }
 
 // SDL's Linux driver appends strerror(errno) to its messages.
@@ -35,32 +34,12 @@ uint32_t feature_of(const SDL_HapticEffect &p_effect) {
 	}
 }
 
-// Calls with one argument recorded (the rest default).
-ScriptedSdlCall with_value(int p_value) {
-	ScriptedSdlCall call;
-	call.value = p_value;
-	return call;
-}
-
-ScriptedSdlCall with_data(const SDL_HapticEffect &p_data) {
-	ScriptedSdlCall call;
-	call.data = p_data;
-	return call;
-}
-
-ScriptedSdlCall with_effect(SDL_HapticEffectID p_effect) {
-	ScriptedSdlCall call;
-	call.effect = p_effect;
-	return call;
-}
-
-ScriptedSdlCall with_ok(bool p_ok) {
-	ScriptedSdlCall call;
-	call.ok = p_ok;
-	return call;
-}
-
 } // namespace
+
+bool scripted_sdl_set_error(const std::string &p_text) {
+	error_text = p_text;
+	return false;
+}
 
 struct ScriptedSdlAccess {
 	using Device = ScriptedSdl::Device;
@@ -111,28 +90,44 @@ struct ScriptedSdlAccess {
 
 	static bool SDLCALL InitSubSystem(SDL_InitFlags p_flags) {
 		auto held = lock();
-		if ((p_flags & SDL_INIT_HAPTIC) != 0 && scripted_sdl_current->subsystem_++ == 0) {
-			for (Device &device : scripted_sdl_current->devices_) {
-				device.id = device.plugged ? scripted_sdl_current->next_id_++ : 0;
+		record(Kind::INIT, nullptr, ScriptedSdlCall::with_value(static_cast<int>(p_flags)));
+		if (scripted_failure(Kind::INIT)) {
+			return false;
+		}
+		ScriptedSdl &sdl = *scripted_sdl_current;
+		if ((p_flags & SDL_INIT_HAPTIC) != 0 && sdl.subsystem_++ == 0) {
+			for (Device &device : sdl.devices_) {
+				device.id = device.plugged ? sdl.next_id_++ : 0;
 			}
 		}
-		record(Kind::INIT, nullptr);
-		return !scripted_failure(Kind::INIT);
+		if ((p_flags & SDL_INIT_JOYSTICK) != 0 && sdl.joystick_subsystem_++ == 0) {
+			for (ScriptedSdl::Joystick &joystick : sdl.joysticks_) {
+				const bool plugged = joystick.haptic >= 0 ? sdl.devices_[joystick.haptic].plugged : joystick.plugged;
+				joystick.id = plugged ? sdl.next_id_++ : 0;
+			}
+		}
+		return true;
 	}
 
 	static void SDLCALL QuitSubSystem(SDL_InitFlags p_flags) {
 		auto held = lock();
-		if ((p_flags & SDL_INIT_HAPTIC) != 0 && scripted_sdl_current->subsystem_ > 0 && --scripted_sdl_current->subsystem_ == 0) {
-			for (Device &device : scripted_sdl_current->devices_) {
+		ScriptedSdl &sdl = *scripted_sdl_current;
+		if ((p_flags & SDL_INIT_HAPTIC) != 0 && sdl.subsystem_ > 0 && --sdl.subsystem_ == 0) {
+			for (Device &device : sdl.devices_) {
 				device.id = 0;
 			}
 		}
-		record(Kind::QUIT, nullptr);
+		if ((p_flags & SDL_INIT_JOYSTICK) != 0 && sdl.joystick_subsystem_ > 0 && --sdl.joystick_subsystem_ == 0) {
+			for (ScriptedSdl::Joystick &joystick : sdl.joysticks_) {
+				joystick.id = 0;
+			}
+		}
+		record(Kind::QUIT, nullptr, ScriptedSdlCall::with_value(static_cast<int>(p_flags)));
 	}
 
 	static const char *SDLCALL GetError() { return error_text.c_str(); }
 
-	static void SDLCALL Free(void *p_memory) { std::free(p_memory); }
+	static void SDLCALL free(void *p_memory) { std::free(p_memory); }
 
 	static SDL_HapticID *SDLCALL GetHaptics(int *r_count) {
 		auto held = lock();
@@ -169,7 +164,7 @@ struct ScriptedSdlAccess {
 			} else if (!device->script.open_error.empty()) {
 				set_error(device->script.open_error);
 			}
-			record(Kind::OPEN, device, with_ok(false));
+			record(Kind::OPEN, device, ScriptedSdlCall::with_ok(false));
 			return nullptr;
 		}
 		device->references = 1;
@@ -179,11 +174,11 @@ struct ScriptedSdlAccess {
 		// SDL_OpenHaptic: "Disable autocenter and set gain to max."
 		if ((device->script.features & SDL_HAPTIC_GAIN) != 0) {
 			device->gain = 100;
-			record(Kind::GAIN, device, with_value(100));
+			record(Kind::GAIN, device, ScriptedSdlCall::with_value(100));
 		}
 		if ((device->script.features & SDL_HAPTIC_AUTOCENTER) != 0) {
 			device->autocenter = 0;
-			record(Kind::AUTOCENTER, device, with_value(0));
+			record(Kind::AUTOCENTER, device, ScriptedSdlCall::with_value(0));
 		}
 		return reinterpret_cast<SDL_Haptic *>(device);
 	}
@@ -217,7 +212,7 @@ struct ScriptedSdlAccess {
 	}
 
 	// The effect p_id of p_device when it is in use; null with SDL's error otherwise.
-	static ScriptedSdl::Effect *slot(Device *p_device, SDL_HapticEffectID p_id) {
+	static ScriptedSdl::Effect *slot(Device *p_device, SdlEffectId p_id) {
 		if (p_id < 0 || p_id >= static_cast<int>(p_device->effects.size()) || !p_device->effects[p_id].in_use) {
 			set_error("Haptic: Invalid effect identifier.");
 			return nullptr;
@@ -225,13 +220,13 @@ struct ScriptedSdlAccess {
 		return &p_device->effects[p_id];
 	}
 
-	static SDL_HapticEffectID SDLCALL CreateHapticEffect(SDL_Haptic *p_haptic, const SDL_HapticEffect *p_effect) {
+	static SdlEffectId SDLCALL CreateHapticEffect(SDL_Haptic *p_haptic, const SDL_HapticEffect *p_effect) {
 		auto held = lock();
 		Device *device = ScriptedSdlAccess::device(p_haptic);
 		if (device == nullptr) {
 			return -1;
 		}
-		ScriptedSdlCall call = with_data(*p_effect);
+		ScriptedSdlCall call = ScriptedSdlCall::with_data(*p_effect);
 		bool ok = true;
 		if ((device->script.features & feature_of(*p_effect)) == 0) {
 			ok = set_error("Haptic: Effect not supported by haptic device.");
@@ -243,7 +238,7 @@ struct ScriptedSdlAccess {
 		for (size_t i = 0; ok && i < device->effects.size(); ++i) {
 			if (!device->effects[i].in_use) {
 				device->effects[i] = ScriptedSdl::Effect{ true, false, *p_effect };
-				call.effect = static_cast<SDL_HapticEffectID>(i);
+				call.effect = static_cast<SdlEffectId>(i);
 				record(Kind::CREATE, device, call);
 				return call.effect;
 			}
@@ -257,7 +252,7 @@ struct ScriptedSdlAccess {
 	}
 
 	// UPDATE, RUN, STOP: the effect's checks and the unplugged device's failure.
-	static ScriptedSdl::Effect *effect_call(Kind p_kind, SDL_Haptic *p_haptic, SDL_HapticEffectID p_id, const char *p_what,
+	static ScriptedSdl::Effect *effect_call(Kind p_kind, SDL_Haptic *p_haptic, SdlEffectId p_id, const char *p_what,
 			ScriptedSdlCall p_call, Device *&r_device) {
 		r_device = ScriptedSdlAccess::device(p_haptic);
 		if (r_device == nullptr) {
@@ -276,11 +271,11 @@ struct ScriptedSdlAccess {
 		return effect;
 	}
 
-	static bool SDLCALL UpdateHapticEffect(SDL_Haptic *p_haptic, SDL_HapticEffectID p_id, const SDL_HapticEffect *p_data) {
+	static bool SDLCALL UpdateHapticEffect(SDL_Haptic *p_haptic, SdlEffectId p_id, const SDL_HapticEffect *p_data) {
 		auto held = lock();
 		Device *device = nullptr;
 		ScriptedSdl::Effect *effect = effect_call(Kind::UPDATE, p_haptic, p_id, "Haptic: Error updating the effect",
-				with_data(*p_data), device);
+				ScriptedSdlCall::with_data(*p_data), device);
 		if (effect == nullptr) {
 			return false;
 		}
@@ -291,18 +286,18 @@ struct ScriptedSdlAccess {
 		return true;
 	}
 
-	static bool SDLCALL RunHapticEffect(SDL_Haptic *p_haptic, SDL_HapticEffectID p_id, Uint32 p_iterations) {
+	static bool SDLCALL RunHapticEffect(SDL_Haptic *p_haptic, SdlEffectId p_id, Uint32 p_iterations) {
 		auto held = lock();
 		Device *device = nullptr;
 		ScriptedSdl::Effect *effect = effect_call(Kind::RUN, p_haptic, p_id, "Haptic: Unable to run the effect",
-				with_value(static_cast<int>(p_iterations)), device);
+				ScriptedSdlCall::with_value(static_cast<int>(p_iterations)), device);
 		if (effect != nullptr) {
 			effect->playing = p_iterations > 0;
 		}
 		return effect != nullptr;
 	}
 
-	static bool SDLCALL StopHapticEffect(SDL_Haptic *p_haptic, SDL_HapticEffectID p_id) {
+	static bool SDLCALL StopHapticEffect(SDL_Haptic *p_haptic, SdlEffectId p_id) {
 		auto held = lock();
 		Device *device = nullptr;
 		ScriptedSdl::Effect *effect = effect_call(Kind::STOP, p_haptic, p_id, "Haptic: Unable to stop the effect", ScriptedSdlCall(), device);
@@ -312,7 +307,7 @@ struct ScriptedSdlAccess {
 		return effect != nullptr;
 	}
 
-	static void SDLCALL DestroyHapticEffect(SDL_Haptic *p_haptic, SDL_HapticEffectID p_id) {
+	static void SDLCALL DestroyHapticEffect(SDL_Haptic *p_haptic, SdlEffectId p_id) {
 		auto held = lock();
 		Device *device = ScriptedSdlAccess::device(p_haptic);
 		if (device == nullptr) {
@@ -320,7 +315,7 @@ struct ScriptedSdlAccess {
 		}
 		if (ScriptedSdl::Effect *effect = slot(device, p_id)) {
 			*effect = ScriptedSdl::Effect{};
-			record(Kind::DESTROY, device, with_effect(p_id));
+			record(Kind::DESTROY, device, ScriptedSdlCall::with_effect(p_id));
 		}
 	}
 
@@ -334,7 +329,7 @@ struct ScriptedSdlAccess {
 			return set_error("Haptic: Device does not support setting autocenter.");
 		}
 		device->autocenter = p_autocenter;
-		record(Kind::AUTOCENTER, device, with_value(p_autocenter));
+		record(Kind::AUTOCENTER, device, ScriptedSdlCall::with_value(p_autocenter));
 		return true;
 	}
 
@@ -359,7 +354,7 @@ struct ScriptedSdlAccess {
 			return device != nullptr && set_error("Haptic: Rumble effect not initialized on haptic device");
 		}
 		const bool ok = device->plugged || set_error(enodev("Haptic: Error updating the effect"));
-		ScriptedSdlCall call = with_ok(ok);
+		ScriptedSdlCall call = ScriptedSdlCall::with_ok(ok);
 		call.strength = p_strength;
 		call.length_ms = p_length;
 		record(Kind::RUMBLE_PLAY, device, call);
@@ -373,17 +368,18 @@ struct ScriptedSdlAccess {
 			return false;
 		}
 		const bool ok = device->plugged || set_error(enodev("Haptic: Unable to stop the effect"));
-		record(Kind::RUMBLE_STOP, device, with_ok(ok));
+		record(Kind::RUMBLE_STOP, device, ScriptedSdlCall::with_ok(ok));
 		return ok;
 	}
 };
 
 SdlApi ScriptedSdl::api() {
-	using A = ScriptedSdlAccess;
-	return SdlApi{ A::GetVersion, A::InitSubSystem, A::QuitSubSystem, A::GetError, A::Free, A::GetHaptics,
-		A::GetHapticNameForID, A::OpenHaptic, A::CloseHaptic, A::GetHapticFeatures, A::GetNumHapticAxes,
-		A::GetMaxHapticEffects, A::CreateHapticEffect, A::UpdateHapticEffect, A::RunHapticEffect, A::StopHapticEffect,
-		A::DestroyHapticEffect, A::SetHapticAutocenter, A::InitHapticRumble, A::PlayHapticRumble, A::StopHapticRumble };
+	SdlApi api;
+#define HAPTICS_SCRIPTED_SDL(p_name) api.p_name = ScriptedSdlAccess::p_name;
+	HAPTICS_SDL_HAPTIC_FUNCTIONS(HAPTICS_SCRIPTED_SDL)
+#undef HAPTICS_SCRIPTED_SDL
+	fill_scripted_joystick_api(api);
+	return api;
 }
 
 } // namespace haptics::sdl

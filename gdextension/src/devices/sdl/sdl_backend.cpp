@@ -17,8 +17,17 @@ DeviceAvailability verdict(const SdlHapticEntry &p_entry, bool p_drives) {
 		availability.reason = DRIVEN_BY_EVDEV;
 		return availability;
 	}
+	if (!p_entry.claimed_by.empty()) {
+		availability.reason = p_entry.claimed_by;
+		return availability;
+	}
 	if (!p_entry.features_read) {
 		availability.reason = "SDL cannot open it: " + p_entry.error;
+		return availability;
+	}
+	if (p_entry.kind == SdlEntryKind::JOYSTICK) {
+		availability.openable = p_entry.rumble;
+		availability.reason = p_entry.rumble ? std::string() : "SDL offers neither force feedback nor rumble on this joystick";
 		return availability;
 	}
 	SdlOutput output = SdlOutput::CONSTANT;
@@ -26,6 +35,15 @@ DeviceAvailability verdict(const SdlHapticEntry &p_entry, bool p_drives) {
 	availability.openable = chosen.ok();
 	availability.reason = chosen.ok() ? std::string() : chosen.message();
 	return availability;
+}
+
+// The entries that win a device they can open over SDL (sdl_backend.h): the specialised
+// backends' on a bus, where the USB ids are the device's own (the development tools' scripted
+// models carry the ids of what they model, and claim nothing).
+bool wins_over_sdl(const DeviceInfo &p_info) {
+	const bool bus = p_info.backend == BACKEND_HIDAPI || p_info.backend == BACKEND_LIBUSB;
+	const bool specialised = p_info.driver == DRIVER_HID_PID || p_info.driver == DRIVER_DUALSENSE || p_info.driver == DRIVER_FALCON;
+	return bus && specialised && p_info.openable && p_info.vendor_id != 0;
 }
 
 std::string key_of(const DeviceInfo &p_info) {
@@ -43,6 +61,30 @@ bool sdl_drives_here() {
 #endif
 }
 
+bool sdl_lists_joysticks_here() {
+#ifdef _WIN32
+	return true;
+#else
+	return false;
+#endif
+}
+
+std::vector<SdlClaim> sdl_claims(std::span<const DeviceInfo> p_others) {
+	std::vector<SdlClaim> claims;
+	for (const DeviceInfo &other : p_others) {
+		if (!wins_over_sdl(other)) {
+			continue;
+		}
+		SdlClaim claim;
+		claim.vendor_id = other.vendor_id;
+		claim.product_id = other.product_id;
+		claim.reason = "driven by the " + other.driver + " backend here: choose its entry (" + other.id +
+				"), which wins a device both reach";
+		claims.push_back(claim);
+	}
+	return claims;
+}
+
 DeviceInfo sdl_device_info(const SdlHapticEntry &p_entry, bool p_drives) {
 	DeviceInfo info;
 	info.id = std::string(SDL_ID_PREFIX) + p_entry.key;
@@ -50,6 +92,8 @@ DeviceInfo sdl_device_info(const SdlHapticEntry &p_entry, bool p_drives) {
 	info.driver = DRIVER_SDL;
 	info.path = p_entry.key;
 	info.product = p_entry.name;
+	info.vendor_id = p_entry.vendor_id;
+	info.product_id = p_entry.product_id;
 	info.known_haptic = true;
 	const DeviceAvailability availability = verdict(p_entry, p_drives);
 	info.openable = availability.openable;
@@ -57,20 +101,25 @@ DeviceInfo sdl_device_info(const SdlHapticEntry &p_entry, bool p_drives) {
 	return info;
 }
 
-void append_sdl_devices(SdlRuntime &r_runtime, bool p_drives, std::vector<DeviceInfo> &r_devices,
+void append_sdl_devices(SdlRuntime &r_runtime, const SdlListOptions &p_options, std::vector<DeviceInfo> &r_devices,
 		std::vector<std::string> &r_warnings) {
 	std::vector<SdlHapticEntry> entries;
-	const Status listed = r_runtime.list(p_drives, entries);
+	std::string warning;
+	const Status listed = r_runtime.list(p_options, entries, warning);
+	if (!warning.empty()) {
+		r_warnings.emplace_back("sdl: " + warning);
+	}
 	if (!listed) {
 		r_warnings.emplace_back(std::string("sdl: ") + listed.message());
 		return;
 	}
 	for (const SdlHapticEntry &entry : entries) {
-		r_devices.push_back(sdl_device_info(entry, p_drives));
+		r_devices.push_back(sdl_device_info(entry, p_options.read));
 	}
 }
 
-void append_sdl_devices(std::vector<DeviceInfo> &r_devices, std::vector<std::string> &r_warnings) {
+void append_sdl_devices(std::span<const DeviceInfo> p_others, std::vector<DeviceInfo> &r_devices,
+		std::vector<std::string> &r_warnings) {
 	const bool drives = sdl_drives_here();
 	std::string reason;
 	SdlRuntime *runtime = SdlRuntime::shared(reason);
@@ -81,7 +130,11 @@ void append_sdl_devices(std::vector<DeviceInfo> &r_devices, std::vector<std::str
 		}
 		return;
 	}
-	append_sdl_devices(*runtime, drives, r_devices, r_warnings);
+	SdlListOptions options;
+	options.read = drives;
+	options.joysticks = drives && sdl_lists_joysticks_here();
+	options.claims = sdl_claims(p_others);
+	append_sdl_devices(*runtime, options, r_devices, r_warnings);
 }
 
 DeviceAvailability probe(SdlRuntime &r_runtime, bool p_drives, const DeviceInfo &p_info) {

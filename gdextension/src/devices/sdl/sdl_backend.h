@@ -10,12 +10,20 @@
 //    backend leaves to the game's HapticDeviceOpenOptions. So the evdev backend drives them:
 //    SDL's entries are listed, not openable, "driven by the evdev backend here", and SDL is not
 //    asked to open them (not even to read their features: that alone would set the gain).
-//    HAPTICS_SDL_ON_LINUX=1 hands them to SDL instead (the kernel VM tests do).
-//  - The specialised backends (Falcon, Touch, raw HID PID, DualSense) drive what they know by
-//    their own ids; on Linux the DualSense's event node is listed under evdev (and, with the
-//    variable, SDL) as a rumble pad beside the dualsense entry, which adds its triggers.
+//    HAPTICS_SDL_ON_LINUX=1 hands them to SDL instead (the kernel VM tests do). SDL's joysticks
+//    are not listed: every Linux pad with rumble is an event node, so a haptic already.
+//  - Windows: SDL drives its DirectInput haptics and rumbles the pads SDL 3 has no haptic for
+//    (XInput, and the pads SDL's HIDAPI drivers know) through SDL_RumbleJoystick.
+//  - Everywhere, the specialised backends on a bus (raw HID PID, DualSense, Falcon) win a device
+//    they can open now: an SDL entry whose USB ids are those of such an entry is listed, not
+//    openable, "driven by the <driver> backend here (<its id>)", and SDL does not open it (see
+//    sdl_runtime.h). A stick both our hid-pid (hidapi) and SDL's DirectInput reach is hid-pid's:
+//    it paces its reports to the endpoint, honours the game's gain and spring, and reads the
+//    stick's position; when hid-pid cannot open it (its reports are not usable, another program
+//    holds it), SDL's entry is offered instead.
 // Each entry: backend and driver "sdl", id "sdl:<key>" and path "<key>" (sdl_runtime.h: SDL's
-// name and its rank among the haptics of that name), product SDL's name.
+// name and its rank among the entries of that name), product SDL's name, the USB ids where
+// SDL's joystick gives them.
 
 #include "core/base/status.h"
 #include "core/device/device.h"
@@ -24,6 +32,7 @@
 #include "devices/sdl/sdl_runtime.h"
 
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -32,16 +41,25 @@ namespace haptics::sdl {
 inline constexpr char SDL_ON_LINUX_ENV[] = "HAPTICS_SDL_ON_LINUX";
 inline constexpr char SDL_ID_PREFIX[] = "sdl:";
 
-// Whether SDL drives the haptics it lists here (see above): on Linux only with
+// Whether SDL drives the devices it lists here (see above): on Linux only with
 // HAPTICS_SDL_ON_LINUX=1.
 bool sdl_drives_here();
+// Whether SDL's joysticks are listed here: Windows only (see above).
+bool sdl_lists_joysticks_here();
+
+// The claims p_others make (see above): one per openable hidapi or libusb entry of a
+// specialised backend, its reason naming the driver and the entry. Two devices with the same
+// USB ids are one to this rule: a claim covers both.
+std::vector<SdlClaim> sdl_claims(std::span<const DeviceInfo> p_others);
 
 // p_entry as a DeviceInfo, with its verdict: p_drives false -> "driven by the evdev backend".
 DeviceInfo sdl_device_info(const SdlHapticEntry &p_entry, bool p_drives);
 
-// Appends SDL's haptics (none, and a warning when SDL is wanted but missing). Game thread.
-void append_sdl_devices(std::vector<DeviceInfo> &r_devices, std::vector<std::string> &r_warnings);
-void append_sdl_devices(SdlRuntime &r_runtime, bool p_drives, std::vector<DeviceInfo> &r_devices,
+// Appends SDL's devices after p_others' verdicts (their claims); none, and a warning when SDL
+// is wanted but missing. Game thread.
+void append_sdl_devices(std::span<const DeviceInfo> p_others, std::vector<DeviceInfo> &r_devices,
+		std::vector<std::string> &r_warnings);
+void append_sdl_devices(SdlRuntime &r_runtime, const SdlListOptions &p_options, std::vector<DeviceInfo> &r_devices,
 		std::vector<std::string> &r_warnings);
 
 // handled when p_info.backend is "sdl": the verdict of the last listing for its key.

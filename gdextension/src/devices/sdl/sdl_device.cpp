@@ -2,6 +2,7 @@
 
 #include "devices/device_config_limits.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -11,10 +12,10 @@ namespace haptics::sdl {
 
 namespace {
 
-// SDL reports failures as text only; its Linux driver appends strerror(errno), so an unplugged
-// device's calls end in strerror(ENODEV).
-bool means_unplugged(const char *p_text) {
-	return std::strstr(p_text, std::strerror(ENODEV)) != nullptr;
+// The two motors' 0..0x7FFF as SDL_RumbleJoystick's 0..0xFFFF, doubled as SDL's Linux haptic
+// driver doubles them for FF_RUMBLE, so a level means the same strength on both paths.
+Uint16 joystick_motor(uint16_t p_level) {
+	return static_cast<Uint16>(std::min<uint32_t>(p_level * 2u, 0xffffu));
 }
 
 } // namespace
@@ -61,14 +62,12 @@ Status SdlHapticDevice::open() {
 	{
 		std::lock_guard lock(runtime_.mutex());
 		std::string error;
-		haptic_ = runtime_.open_haptic(config_.key, error);
-		if (haptic_ == nullptr) {
+		if (!runtime_.open(config_.key, opened_, error)) {
 			return Status::error(StatusCode::NO_DEVICE, "SDL cannot open '%s': %s", config_.key.c_str(), error.c_str());
 		}
 		const Status started = start_effect();
 		if (!started) {
-			runtime_.close_haptic(haptic_);
-			haptic_ = nullptr;
+			runtime_.close(opened_);
 			return started;
 		}
 	}
@@ -90,42 +89,48 @@ Status SdlHapticDevice::open() {
 // With the runtime's mutex held.
 Status SdlHapticDevice::start_effect() {
 	const SdlApi &api = runtime_.api();
-	features_ = api.GetHapticFeatures(haptic_);
-	axes_ = api.GetNumHapticAxes(haptic_);
+	rumble_ = SdlRumbleLevels{};
+	strength_ = 0.0;
+	if (opened_.joystick != nullptr) {
+		output_ = SdlOutput::JOYSTICK_RUMBLE;
+		features_ = 0;
+		axes_ = 0;
+		return Status::success();
+	}
+	features_ = api.GetHapticFeatures(opened_.haptic);
+	axes_ = api.GetNumHapticAxes(opened_.haptic);
 	SdlHapticEntry described;
 	described.features_read = true;
 	described.features = features_;
 	described.axes = axes_;
-	described.max_effects = api.GetMaxHapticEffects(haptic_);
+	described.max_effects = api.GetMaxHapticEffects(opened_.haptic);
 	const Status chosen = choose_sdl_output(features_, describe_sdl_features(described), output_);
 	if (!chosen) {
 		return chosen;
 	}
-	if (config_.keep_spring && (features_ & SDL_HAPTIC_AUTOCENTER) != 0 && !api.SetHapticAutocenter(haptic_, 100)) {
+	if (config_.keep_spring && (features_ & SDL_HAPTIC_AUTOCENTER) != 0 && !api.SetHapticAutocenter(opened_.haptic, 100)) {
 		return Status::error(StatusCode::DEVICE_ERROR, "SDL could not keep the centring spring of '%s': %s", name_,
 				runtime_.error_text());
 	}
 	mapping_ = SdlForceMapping{ config_.max_force_n, axes_ == 1, config_.invert_force_x, config_.invert_force_y };
 	constant_ = SdlConstantForce{};
 	constant_.direction_type = mapping_.steering ? SDL_HAPTIC_STEERING_AXIS : SDL_HAPTIC_POLAR;
-	rumble_ = SdlRumbleLevels{};
-	strength_ = 0.0;
 	if (output_ == SdlOutput::SIMPLE_RUMBLE) {
-		if (!api.InitHapticRumble(haptic_)) {
+		if (!api.InitHapticRumble(opened_.haptic)) {
 			return Status::error(StatusCode::DEVICE_ERROR, "SDL could not start the rumble of '%s': %s", name_, runtime_.error_text());
 		}
 		return Status::success();
 	}
 	const SDL_HapticEffect effect = output_ == SdlOutput::CONSTANT ? constant_effect(constant_) : leftright_effect(rumble_);
-	effect_id_ = api.CreateHapticEffect(haptic_, &effect);
+	effect_id_ = api.CreateHapticEffect(opened_.haptic, &effect);
 	if (effect_id_ < 0) {
 		return Status::error(StatusCode::DEVICE_ERROR, "SDL could not upload the %s effect to '%s': %s",
 				output_ == SdlOutput::CONSTANT ? "constant-force" : "rumble", name_, runtime_.error_text());
 	}
-	if (!api.RunHapticEffect(haptic_, effect_id_, 1)) {
+	if (!api.RunHapticEffect(opened_.haptic, effect_id_, 1)) {
 		const Status failed = Status::error(StatusCode::DEVICE_ERROR, "SDL could not play the effect on '%s': %s", name_,
 				runtime_.error_text());
-		api.DestroyHapticEffect(haptic_, effect_id_);
+		api.DestroyHapticEffect(opened_.haptic, effect_id_);
 		effect_id_ = -1;
 		return failed;
 	}
@@ -134,7 +139,7 @@ Status SdlHapticDevice::start_effect() {
 
 bool SdlHapticDevice::send_constant(const SdlConstantForce &p_force) {
 	const SDL_HapticEffect effect = constant_effect(p_force);
-	if (!runtime_.api().UpdateHapticEffect(haptic_, effect_id_, &effect)) {
+	if (!runtime_.api().UpdateHapticEffect(opened_.haptic, effect_id_, &effect)) {
 		return false;
 	}
 	constant_ = p_force;
@@ -143,26 +148,43 @@ bool SdlHapticDevice::send_constant(const SdlConstantForce &p_force) {
 
 bool SdlHapticDevice::send_rumble(const SdlRumbleLevels &p_levels, double p_strength) {
 	const SdlApi &api = runtime_.api();
+	if (output_ == SdlOutput::JOYSTICK_RUMBLE) {
+		if (!api.RumbleJoystick(opened_.joystick, joystick_motor(p_levels.large), joystick_motor(p_levels.small),
+					SDL_EFFECT_LENGTH_MS)) {
+			return false;
+		}
+		rumble_ = p_levels;
+		return true;
+	}
 	if (output_ == SdlOutput::LEFTRIGHT) {
 		const SDL_HapticEffect effect = leftright_effect(p_levels);
-		if (!api.UpdateHapticEffect(haptic_, effect_id_, &effect)) {
+		if (!api.UpdateHapticEffect(opened_.haptic, effect_id_, &effect)) {
 			return false;
 		}
 		rumble_ = p_levels;
 		return true;
 	}
 	const bool sent = p_strength > 0.0
-			? api.PlayHapticRumble(haptic_, static_cast<float>(p_strength), SDL_EFFECT_LENGTH_MS)
-			: api.StopHapticRumble(haptic_);
+			? api.PlayHapticRumble(opened_.haptic, static_cast<float>(p_strength), SDL_EFFECT_LENGTH_MS)
+			: api.StopHapticRumble(opened_.haptic);
 	if (sent) {
 		strength_ = p_strength;
 	}
 	return sent;
 }
 
+// SDL reports failures as text only; its Linux driver appends strerror(errno), so an unplugged
+// device's calls end in strerror(ENODEV). A joystick SDL has seen go is no longer connected.
+bool SdlHapticDevice::unplugged(const char *p_text) const {
+	if (opened_.joystick != nullptr && !runtime_.api().JoystickConnected(opened_.joystick)) {
+		return true;
+	}
+	return std::strstr(p_text, std::strerror(ENODEV)) != nullptr;
+}
+
 DeviceIo SdlHapticDevice::fail(DeviceExchange &r_exchange, const char *p_doing) {
 	const char *text = runtime_.error_text();
-	if (means_unplugged(text)) {
+	if (unplugged(text)) {
 		r_exchange.fail(DeviceIo::DISCONNECTED, "%s was unplugged (SDL, while %s: %s)", name_, p_doing, text);
 		return DeviceIo::DISCONNECTED;
 	}
@@ -184,15 +206,23 @@ DeviceIo SdlHapticDevice::io_cycle(DeviceExchange &r_exchange, double p_dt_s) {
 		const double peak = peak_n_.exchange(0.0, std::memory_order_relaxed);
 		const SdlRumbleLevels levels = envelope_.update(peak, p_dt_s, rumble_mapping_);
 		const double strength = envelope_.level();
-		const bool changed = output_ == SdlOutput::LEFTRIGHT ? !(levels == rumble_) : strength != strength_;
-		// The simple rumble has no effect of ours to run again: playing it again renews it.
-		const bool replay = output_ == SdlOutput::SIMPLE_RUMBLE && renew && strength > 0.0;
+		const bool changed = output_ == SdlOutput::SIMPLE_RUMBLE ? strength != strength_ : !(levels == rumble_);
+		// The simple rumble and a joystick's have no effect of ours to run again: sending them
+		// again renews them.
+		const bool replay = output_ != SdlOutput::LEFTRIGHT && renew && strength > 0.0;
 		if ((changed || replay) && !send_rumble(levels, strength)) {
 			return fail(r_exchange, "updating the rumble");
 		}
 	}
+	if (renew && opened_.joystick != nullptr) {
+		// SDL notices a joystick gone, and ends a rumble past its length, when it updates them.
+		runtime_.api().UpdateJoysticks();
+		if (!runtime_.api().JoystickConnected(opened_.joystick)) {
+			return fail(r_exchange, "renewing the rumble");
+		}
+	}
 	if (renew) {
-		if (effect_id_ >= 0 && !runtime_.api().RunHapticEffect(haptic_, effect_id_, 1)) {
+		if (effect_id_ >= 0 && !runtime_.api().RunHapticEffect(opened_.haptic, effect_id_, 1)) {
 			return fail(r_exchange, "renewing the effect");
 		}
 		since_run_s_ = 0.0;
@@ -213,18 +243,19 @@ void SdlHapticDevice::io_stop() {
 void SdlHapticDevice::release() {
 	io_thread_.stop(); // Runs io_stop() (zero) unless the thread failed.
 	std::lock_guard lock(runtime_.mutex());
-	if (haptic_ != nullptr) {
-		const SdlApi &api = runtime_.api();
-		// Errors ignored: an unplugged device has nothing left to stop.
+	const SdlApi &api = runtime_.api();
+	// Errors ignored: an unplugged device has nothing left to stop.
+	if (opened_.haptic != nullptr) {
 		if (effect_id_ >= 0) {
-			(void)api.StopHapticEffect(haptic_, effect_id_);
-			api.DestroyHapticEffect(haptic_, effect_id_);
+			(void)api.StopHapticEffect(opened_.haptic, effect_id_);
+			api.DestroyHapticEffect(opened_.haptic, effect_id_);
 		} else if (output_ == SdlOutput::SIMPLE_RUMBLE) {
-			(void)api.StopHapticRumble(haptic_);
+			(void)api.StopHapticRumble(opened_.haptic);
 		}
-		runtime_.close_haptic(haptic_);
-		haptic_ = nullptr;
+	} else if (opened_.joystick != nullptr) {
+		(void)api.RumbleJoystick(opened_.joystick, 0, 0, 0);
 	}
+	runtime_.close(opened_);
 	effect_id_ = -1;
 	open_ = false;
 }

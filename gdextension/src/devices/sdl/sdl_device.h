@@ -2,8 +2,9 @@
 
 // A force-feedback device driven through SDL 3's haptic API (docs/devices/sdl.md): a stick or
 // wheel whose driver SDL reaches (Linux: the kernel's evdev node; Windows: DirectInput) renders
-// the servo's force as one constant effect (sdl_effect.h); a pad with rumble only (XInput,
-// Linux FF_RUMBLE) renders the servo's impacts on its motors.
+// the servo's force as one constant effect (sdl_effect.h); a pad with rumble only (Linux
+// FF_RUMBLE, a haptic; on Windows an XInput or HIDAPI pad, a joystick SDL 3 rumbles through
+// SDL_RumbleJoystick) renders the servo's impacts on its motors.
 //
 // Device space: x right, y up (away from the user), newtons. SDL's haptic API has no input, so
 // this device reports no position (input_dof 0): the game reads the stick as a joypad. Limits
@@ -17,6 +18,10 @@
 // as text: one whose text says the device is gone (on Linux strerror(ENODEV), "No such
 // device") makes the device DISCONNECTED, any other FAILED, each with SDL's text. close() and
 // errors leave the device at zero force with its effect stopped and destroyed where it can.
+// A joystick's rumble has no effect to renew: SDL_RumbleJoystick is sent when the levels change
+// and again every SDL_EFFECT_RENEW_S with SDL_EFFECT_LENGTH_MS (SDL stops it after that length
+// when its joysticks are updated, which the I/O thread does at the same renewal); a joystick
+// SDL no longer has connected makes the device DISCONNECTED.
 //
 // Gain and autocentre: SDL_OpenHaptic sets the gain to 100 and the autocentre to 0 itself
 // (SDL_haptic.c), so through SDL the game always takes the gain, whatever
@@ -41,6 +46,7 @@ enum class SdlOutput : int32_t {
 	CONSTANT = 0, // SDL_HAPTIC_CONSTANT: the force.
 	LEFTRIGHT = 1, // SDL_HAPTIC_LEFTRIGHT: two motors for the impacts.
 	SIMPLE_RUMBLE = 2, // SDL_InitHapticRumble / SDL_PlayHapticRumble: one strength.
+	JOYSTICK_RUMBLE = 3, // SDL_RumbleJoystick: a joystick's two motors, no haptic.
 };
 
 // CONSTANT when SDL offers a constant force, else LEFTRIGHT, else the simple rumble where SDL
@@ -70,8 +76,8 @@ public:
 	SdlHapticDevice(SdlRuntime &r_runtime, SdlDeviceConfig p_config);
 	~SdlHapticDevice() override;
 
-	// Opens the haptic the runtime's last listing named config().key, creates and runs the
-	// effect, starts the I/O thread. Idempotent while healthy; after a failure opens afresh.
+	// Opens what the runtime's last listing named config().key (a haptic or a joystick), creates
+	// and runs the effect, starts the I/O thread. Idempotent while healthy; after a failure opens afresh.
 	Status open() override;
 	void close() override;
 	Status calibrate() override;
@@ -92,18 +98,19 @@ private:
 	Status start_effect();
 	bool send_constant(const SdlConstantForce &p_force);
 	bool send_rumble(const SdlRumbleLevels &p_levels, double p_strength);
+	bool unplugged(const char *p_text) const;
 	DeviceIo fail(DeviceExchange &r_exchange, const char *p_doing);
 	void release();
 
 	SdlRuntime &runtime_;
 	SdlDeviceConfig config_;
 	char name_[128] = "SDL haptic device";
-	SDL_Haptic *haptic_ = nullptr;
+	SdlOpened opened_; // Its haptic, or its joystick (JOYSTICK_RUMBLE).
 	uint32_t features_ = 0;
 	int32_t axes_ = 0;
 	SdlOutput output_ = SdlOutput::CONSTANT;
 	SdlForceMapping mapping_;
-	SDL_HapticEffectID effect_id_ = -1;
+	SdlEffectId effect_id_ = -1;
 	SdlConstantForce constant_;
 	SdlRumbleLevels rumble_;
 	double strength_ = 0.0; // The simple rumble's.

@@ -8,6 +8,9 @@ std::string describe_sdl_features(const SdlHapticEntry &p_entry) {
 	if (!p_entry.features_read) {
 		return "features not read";
 	}
+	if (p_entry.kind == SdlEntryKind::JOYSTICK) {
+		return p_entry.rumble ? "a joystick with rumble" : "a joystick without rumble";
+	}
 	static constexpr struct {
 		uint32_t bit;
 		const char *name;
@@ -45,18 +48,24 @@ std::string describe_sdl_features(const SdlHapticEntry &p_entry) {
 
 SdlRuntime::~SdlRuntime() {
 	std::lock_guard lock(mutex_);
-	if (started_ && api_.QuitSubSystem != nullptr) {
-		api_.QuitSubSystem(SDL_INIT_HAPTIC);
+	if (api_.QuitSubSystem != nullptr) {
+		// The haptics first: SDL's haptic code uses its joysticks (SDL_haptic.c).
+		if ((started_ & SDL_INIT_HAPTIC) != 0) {
+			api_.QuitSubSystem(SDL_INIT_HAPTIC);
+		}
+		if ((started_ & SDL_INIT_JOYSTICK) != 0) {
+			api_.QuitSubSystem(SDL_INIT_JOYSTICK);
+		}
 	}
 }
 
 SdlRuntime *SdlRuntime::shared(std::string &r_reason) {
-	// Loaded once, kept for the process (a static: initialised once, thread-safe).
+	// Opened once, kept for the process (a static: initialised once, thread-safe).
 	static SdlLibrary library;
-	static const Status loaded = load_sdl_library("", library);
-	static SdlRuntime *runtime = loaded ? new SdlRuntime(library.api) : nullptr;
+	static const Status opened = open_process_sdl(library);
+	static SdlRuntime *runtime = opened ? new SdlRuntime(library.api) : nullptr;
 	if (runtime == nullptr) {
-		r_reason = loaded.message();
+		r_reason = opened.message();
 	}
 	return runtime;
 }
@@ -66,24 +75,56 @@ const char *SdlRuntime::error_text() const {
 	return text != nullptr && text[0] != '\0' ? text : "SDL gave no reason";
 }
 
-Status SdlRuntime::start_locked() {
-	if (started_ && open_count_ == 0) {
-		api_.QuitSubSystem(SDL_INIT_HAPTIC); // A fresh scan: see the header.
-		started_ = false;
+Status SdlRuntime::start_locked(bool p_joysticks, std::string &r_warning) {
+	if (started_ != 0 && open_count_ == 0) {
+		// A fresh scan: see the header. Haptics before joysticks, as in the destructor.
+		if ((started_ & SDL_INIT_HAPTIC) != 0) {
+			api_.QuitSubSystem(SDL_INIT_HAPTIC);
+		}
+		if ((started_ & SDL_INIT_JOYSTICK) != 0) {
+			api_.QuitSubSystem(SDL_INIT_JOYSTICK);
+		}
+		started_ = 0;
 	}
-	if (!started_) {
+	if (p_joysticks && (started_ & SDL_INIT_JOYSTICK) == 0) {
+		// No RawInput: Windows keeps one raw-input registration per device class for the whole
+		// process, so ours would take the game pads' from the engine (its own SDL), and quitting
+		// would remove it. XInput, DirectInput and SDL's HIDAPI reach the same pads.
+		api_.SetHint(SDL_HINT_JOYSTICK_RAWINPUT, "0");
+		if (api_.InitSubSystem(SDL_INIT_JOYSTICK)) {
+			started_ |= SDL_INIT_JOYSTICK;
+			// Nothing pumps this SDL's event queue: its joystick events would only fill it.
+			api_.SetJoystickEventsEnabled(false);
+		} else {
+			r_warning = std::string("SDL's joystick subsystem did not start (no rumble pads listed): ") + error_text();
+		}
+	}
+	if ((started_ & SDL_INIT_HAPTIC) == 0) {
 		if (!api_.InitSubSystem(SDL_INIT_HAPTIC)) {
 			return Status::error(StatusCode::DEVICE_ERROR, "SDL's haptic subsystem did not start: %s", error_text());
 		}
-		started_ = true;
+		started_ |= SDL_INIT_HAPTIC;
 	}
 	return Status::success();
 }
 
-Status SdlRuntime::list(bool p_read_features, std::vector<SdlHapticEntry> &r_entries) {
+void SdlRuntime::read_haptic_locked(SdlHapticEntry &r_entry) {
+	SDL_Haptic *haptic = api_.OpenHaptic(r_entry.id);
+	if (haptic == nullptr) {
+		r_entry.error = error_text();
+		return;
+	}
+	r_entry.features_read = true;
+	r_entry.features = api_.GetHapticFeatures(haptic);
+	r_entry.axes = api_.GetNumHapticAxes(haptic);
+	r_entry.max_effects = api_.GetMaxHapticEffects(haptic);
+	api_.CloseHaptic(haptic);
+}
+
+Status SdlRuntime::list(const SdlListOptions &p_options, std::vector<SdlHapticEntry> &r_entries, std::string &r_warning) {
 	std::lock_guard lock(mutex_);
 	entries_.clear();
-	const Status started = start_locked();
+	const Status started = start_locked(p_options.joysticks, r_warning);
 	if (!started) {
 		return started;
 	}
@@ -97,26 +138,23 @@ Status SdlRuntime::list(bool p_read_features, std::vector<SdlHapticEntry> &r_ent
 		entry.id = ids[i];
 		const char *name = api_.GetHapticNameForID(ids[i]);
 		entry.name = name != nullptr ? name : "unnamed haptic";
-		int same = 0;
-		for (const SdlHapticEntry &earlier : entries_) {
-			same += earlier.name == entry.name ? 1 : 0;
-		}
-		entry.key = entry.name + "#" + std::to_string(same);
-		if (p_read_features) {
-			SDL_Haptic *haptic = api_.OpenHaptic(entry.id);
-			if (haptic == nullptr) {
-				entry.error = error_text();
-			} else {
-				entry.features_read = true;
-				entry.features = api_.GetHapticFeatures(haptic);
-				entry.axes = api_.GetNumHapticAxes(haptic);
-				entry.max_effects = api_.GetMaxHapticEffects(haptic);
-				api_.CloseHaptic(haptic);
-			}
-		}
 		entries_.push_back(entry);
 	}
-	api_.Free(ids);
+	api_.free(ids);
+	if ((started_ & SDL_INIT_JOYSTICK) != 0) {
+		list_joysticks_locked(p_options);
+	}
+	for (size_t i = 0; i < entries_.size(); ++i) {
+		SdlHapticEntry &entry = entries_[i];
+		int same = 0;
+		for (size_t j = 0; j < i; ++j) {
+			same += entries_[j].name == entry.name ? 1 : 0;
+		}
+		entry.key = entry.name + "#" + std::to_string(same);
+		if (p_options.read && entry.kind == SdlEntryKind::HAPTIC && entry.claimed_by.empty()) {
+			read_haptic_locked(entry);
+		}
+	}
 	r_entries = entries_;
 	return Status::success();
 }
@@ -132,32 +170,44 @@ bool SdlRuntime::entry(const std::string &p_key, SdlHapticEntry &r_entry) {
 	return false;
 }
 
-SDL_Haptic *SdlRuntime::open_haptic(const std::string &p_key, std::string &r_error) {
-	if (!started_) {
-		r_error = "SDL's haptic subsystem is not started (list the devices first)";
-		return nullptr;
+bool SdlRuntime::open(const std::string &p_key, SdlOpened &r_opened, std::string &r_error) {
+	if (started_ == 0) {
+		r_error = "SDL is not started (list the devices first)";
+		return false;
 	}
 	for (const SdlHapticEntry &entry : entries_) {
 		if (entry.key != p_key) {
 			continue;
 		}
-		SDL_Haptic *haptic = api_.OpenHaptic(entry.id);
-		if (haptic == nullptr) {
+		SdlOpened opened;
+		if (entry.kind == SdlEntryKind::JOYSTICK) {
+			opened.joystick = api_.OpenJoystick(entry.joystick);
+		} else {
+			opened.haptic = api_.OpenHaptic(entry.id);
+		}
+		if (opened.haptic == nullptr && opened.joystick == nullptr) {
 			r_error = error_text();
-			return nullptr;
+			return false;
 		}
 		++open_count_;
-		return haptic;
+		r_opened = opened;
+		return true;
 	}
 	r_error = "SDL no longer lists '" + p_key + "' (unplugged?)";
-	return nullptr;
+	return false;
 }
 
-void SdlRuntime::close_haptic(SDL_Haptic *p_haptic) {
-	if (p_haptic == nullptr) {
+void SdlRuntime::close(SdlOpened &r_opened) {
+	if (r_opened.haptic == nullptr && r_opened.joystick == nullptr) {
 		return;
 	}
-	api_.CloseHaptic(p_haptic);
+	if (r_opened.haptic != nullptr) {
+		api_.CloseHaptic(r_opened.haptic);
+	}
+	if (r_opened.joystick != nullptr) {
+		api_.CloseJoystick(r_opened.joystick);
+	}
+	r_opened = SdlOpened{};
 	--open_count_;
 }
 
