@@ -10,6 +10,8 @@ and 1 % duplicates, each client's path on its own generator.
 - A path that dies: the relay cuts the client's path both ways right after its paddle hit
   (the peer lives on, its datagrams vanish): the host notices within 3 s, takes the ball over
   and plays on; the client shows its player the connection trouble within 3 s.
+- Honest play is never refused: the host's check of the client's ball (its own simulation)
+  refuses no state and the host no floor claim.
 Every bound is the issue's; the measured figures are printed.
 """
 
@@ -67,7 +69,17 @@ def test_a_match_on_the_rough_network_uses_the_states_that_arrive_and_never_jump
             assert reached >= REACHED_MIN, lines[-1]
             assert share >= USED_SHARE_MIN, lines[-1]
             assert 0.0 < step <= TICK_MOVE_MAX_M, lines[-1]
+        # Honest play is never refused: no ball state the host's simulation could not reach,
+        # no floor claim without its bounce (issue 36: a refused claim cost a real point).
+        host = reports[0]
+        refused = {k: v for k, v in host["refused"].items() if not k.startswith("authority:")}
+        check = host["extra"].get("ball_check", {})
+        lines.append(f"host's check of the client's ball {check.get('verdicts')}, worst miss "
+                     f"when flown {1000 * check.get('worst_miss_m', 0.0):.2f} mm, refused "
+                     f"{refused}")
         print("rough network: " + "; ".join(lines))
+        assert check.get("verdicts", {}).get("flown", 0) > 0, lines[-1]
+        assert refused == {}, lines[-1]
 
 
 def test_a_path_cut_after_the_masters_hit_is_noticed_within_3_s_on_both_sides():
