@@ -9,6 +9,9 @@ packages=(build-essential cmake ninja-build pkg-config libhidapi-dev libusb-1.0-
   polkitd util-linux debootstrap
   # make test-rt and make bench give the user /dev/cpu_dma_latency as the udev rule does (an ACL).
   acl
+  # The net suite's connect floods run in a network namespace, the server behind the kernel
+  # guard tools/net/flood-guard.sh installs (tests/net/flood_harness.py).
+  iproute2 nftables
   # The scripted person (tests/person/): input events, screenshots and OCR of the screen, and
   # a desktop's sound server (with a null sink: this machine has no sound card).
   xdotool imagemagick tesseract-ocr tesseract-ocr-eng pulseaudio
