@@ -72,7 +72,7 @@ TEST_CASE("renderer ports: a value a renderer does not take or give is refused b
 	RendererPort &pong = *system.renderers().all_ports[RenderMode::PONG];
 	const Status status = sent(pong, ProxyState{});
 	CHECK(status.code() == StatusCode::INVALID_ARGUMENT);
-	CHECK(mentions(status, "none of the values this renderer takes (PongInput, PongCommand, PongWitnessCheck)"));
+	CHECK(mentions(status, "none of the values this renderer takes (PongInput, PongCommand, PongWitnessCheck, PongWitnessPose)"));
 	std::vector<uint8_t> bytes;
 	CHECK(mentions(pong.give(ProxyState::SCHEMA_ID, bytes), "gives PongState, PongEventBatch and PongWitnessVerdict"));
 	CHECK(bytes.empty());

@@ -118,7 +118,8 @@ def engine_errors(peer: "Peer") -> list[str]:
 def workspace():
     """A scratch folder for one match's logs and reports, removed afterwards; when the test
     fails it is moved to .build/net-failures/ instead, since a failure seen once in several
-    runs can only be understood from the peers' own logs."""
+    runs can only be understood from the peers' own logs. With NET_KEEP set, a passing
+    match's folder is copied there too (as kept-<name>), to compare with a failing one."""
     path = Path(tempfile.mkdtemp(prefix="pong-net-"))
     try:
         yield path
@@ -129,6 +130,8 @@ def workspace():
         print(f"the failed match's logs and reports: {kept}", file=sys.stderr)
         raise
     finally:
+        if os.environ.get("NET_KEEP"):
+            shutil.copytree(path, FAILURES / ("kept-" + path.name), dirs_exist_ok=True)
         shutil.rmtree(path, ignore_errors=True)
 
 

@@ -39,6 +39,7 @@ var worst_miss_m: float = 0.0
 
 var _court: PongCourt = null
 var _judge: PongNetHurtJudge = null
+var _authority: PongNetAuthority = null
 # The newest state played (null: none this epoch), when it arrived (match s) and its age then.
 var _newest: PongNetBallMessage = null
 var _newest_arrival: float = 0.0
@@ -48,9 +49,22 @@ var _newest_age_s: float = 0.0
 var _out_since: float = INF
 
 
-func _init(court: PongCourt, judge: PongNetHurtJudge) -> void:
+func _init(court: PongCourt, judge: PongNetHurtJudge, authority: PongNetAuthority) -> void:
 	_court = court
 	_judge = judge
+	_authority = authority
+
+
+## A pose [param sender] sent: the master's own paddle, stamped with the clock its ball
+## states carry, places a touch on the ball's flight exactly.
+func note_pose(sender: int, pose: PongNetPoseMessage) -> void:
+	if sender != _authority.master_peer or _authority.epoch < 1:
+		return
+	var witnessed: PongWitnessPose = PongWitnessPose.new()
+	witnessed.epoch = _authority.epoch
+	witnessed.time_s = pose.time_s
+	witnessed.center = pose.avatar + pose.offset
+	PongServo.shared().note_master_pose(witnessed)
 
 
 ## Checks [param state] of the master's stream, [param age_s] old on arrival at
@@ -65,6 +79,7 @@ func admit(state: PongNetBallMessage, age_s: float, now: float) -> Outcome:
 	check.spin = state.spin
 	check.age_s = clampf(age_s, 0.0, 10.0)
 	check.new_match = verdicts.is_empty()
+	check.territory = clampi(_authority.territory, 0, 3)
 	var verdict: PongWitnessVerdict = PongServo.shared().check_ball(check)
 	if verdict == null:
 		return Outcome.PLAY  # No extension: nothing to check with.

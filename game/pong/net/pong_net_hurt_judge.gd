@@ -17,6 +17,8 @@ extends RefCounted
 ## ball from the states it accepted ([PongNetBallCheck]); a forged state is refused before it
 ## reaches any of the others. While this peer is the master its servo's events are the whole
 ## truth. Times are match seconds.
+## [br]The rate is counted by the bounces' times: one bounce per claim, however the claims
+## bunch on the way.
 ## [br]A claim of the territory the ball was in at the claim's epoch may match a bounce up to
 ## [constant TERRITORY_MARGIN_M] outside it (our copy of the ball follows the master's a
 ## little late and blended); a claim of any other territory (the master's ball crossed and
@@ -149,7 +151,8 @@ func judge(
 		if bounce[2]:
 			charged_match = true
 			continue
-		if _take_token(victim, now) < 1.0:
+		if _take_token(victim, t) < 1.0:
+			bounce[2] = true  # Claimed, and refused: no later claim takes it.
 			return [
 				Verdict.REFUSE,
 				"seat %d would lose more than %.1f floor points a second" % [victim, rate_per_s]
@@ -186,11 +189,13 @@ func _forget_before(t: float) -> void:
 		_bounces.pop_front()
 
 
-# Refills [param victim]'s tokens to [param now] and takes one if there is one; returns the
-# tokens there were.
-func _take_token(victim: int, now: float) -> float:
-	var since: float = now - _tokens_at[victim]
+# Refills [param victim]'s tokens to the bounce's time [param at] and takes one if there is
+# one; returns the tokens there were. By the bounces' own times, not the claims': claims that
+# a hiccup held back arrive together, their bounces did not happen together (such honest
+# claims were refused after a hiccup).
+func _take_token(victim: int, at: float) -> float:
+	var since: float = maxf(at - _tokens_at[victim], 0.0)
 	var tokens: float = minf(BURST, _tokens[victim] + since * rate_per_s)
-	_tokens_at[victim] = now
+	_tokens_at[victim] = maxf(_tokens_at[victim], at)
 	_tokens[victim] = tokens - 1.0 if tokens >= 1.0 else tokens
 	return tokens

@@ -3,20 +3,19 @@ extends Node
 ## One networked match on this peer: the private haptic space. Every peer runs the servo
 ## and simulates the ball; the owner of the territory the ball is in is its master
 ## ([PongNetAuthority]): it sends the ball state on every new servo state (>= 60 Hz,
-## unreliable, its own channel) and its contact with the ball stays in its own
-## servo at 1 kHz whatever the latency (contact is never sent). Followers play the
-## received states out in order from a jitter buffer, carry each forward to now, and the
-## servo blends their ball onto it ([PongNetBall]). Each
-## peer sends the poses of the paddles it drives; other peers' paddles are kinematic
-## inputs of the local servo ([PongNetPoses], [PongNetRemotePlayer]). Health changes come
-## as reliable messages: floor bounces from the server, which judges the master's claims
-## against the ball's path ([PongNetFloorHurts]), weapon hurts from the victim's peer
-## ([PongNetWeapons]). Each message is a [PongNetMessage] that comes and goes through the
-## session's [PongNetRouter], which has checked its fields; the node that owns its state
-## checks it against the match (this one: the ball's, the transfers' and the owners'), and a
-## bad one is dropped and counted against its sender ([method PongNetSession.misbehaved]).
-## Messages are aged by [PongNetLatency]. The play node lives as long as the session; its
-## handlers and those of the match's parts are registered for each match.
+## unreliable, its own channel), and its contact with the ball stays in its own servo at
+## 1 kHz whatever the latency. Followers play the received states out in order from a
+## jitter buffer, carry each forward to now, and the servo blends their ball onto it
+## ([PongNetBall]); the server first checks each against its own simulation
+## ([PongNetBallCheck]). Each peer sends the poses of the paddles it drives; other peers'
+## paddles are kinematic inputs of the local servo ([PongNetPoses]). Health changes come as
+## reliable messages: floor bounces from the server, which judges the master's claims
+## ([PongNetFloorHurts]), weapon hurts from the victim's peer ([PongNetWeapons]). Every
+## message comes and goes through the session's [PongNetRouter], which has checked its
+## fields; the node that owns its state checks it against the match, and a bad one is
+## dropped and counted against its sender ([method PongNetSession.misbehaved]). Messages are
+## aged by [PongNetLatency]. The node lives as long as the session; its handlers and those
+## of the match's parts are registered for each match.
 
 ## Health changed on every peer the same way; the match is over on every peer.
 signal finished(winner: int)
@@ -105,7 +104,8 @@ func begin(
 	poses = PongNetPoses.new(router, match_node, authority, _reject, _age_of)
 	floor_hurts = PongNetFloorHurts.new(router, match_node, authority, _reject)
 	if authority.my_id == PongNetAuthority.SERVER_ID:
-		ball_check = PongNetBallCheck.new(match_node.court, floor_hurts.judge)
+		ball_check = PongNetBallCheck.new(match_node.court, floor_hurts.judge, authority)
+		poses.pose_received.connect(ball_check.note_pose)
 	# The servo's clock may have started over with the match.
 	_last_sent_time = -INF
 	_last_pose_time = -INF

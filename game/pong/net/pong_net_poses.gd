@@ -8,6 +8,9 @@ extends RefCounted
 
 ## A pose of [param seat] moved its remote player here.
 signal pose_taken(seat: int)
+## [param sender]'s [param pose], checked, was taken (the server's ball check reads the
+## master's).
+signal pose_received(sender: int, pose: PongNetPoseMessage)
 
 ## Paddle speeds sent are capped here (a teleported avatar is not a swing), m/s.
 const MAX_SENT_PADDLE_SPEED_M_PER_S: float = 20.0
@@ -88,3 +91,4 @@ func on_pose(sender: int, pose: PongNetPoseMessage) -> void:
 	var age: float = _age_of.call(sender, pose.time_s, pose.leg_ms)
 	(controller as PongNetRemotePlayer).set_pose(_match.now, clampf(age, 0.0, 0.5), pose)
 	pose_taken.emit(pose.seat)
+	pose_received.emit(sender, pose)

@@ -174,6 +174,11 @@ func check_ball(check: PongWitnessCheck) -> PongWitnessVerdict:
 	return PongWitnessVerdict.decode(_renderer.read(PongWitnessVerdict.SCHEMA_ID))
 
 
+## A pose of a paddle the master of the ball drives, for [method check_ball].
+func note_master_pose(pose: PongWitnessPose) -> bool:
+	return _renderer.send(pose)
+
+
 ## The events since the last call, oldest first.
 func drain_events() -> Array[PongEvent]:
 	var batch: PongEventBatch = PongEventBatch.decode(_renderer.read(PongEventBatch.SCHEMA_ID))

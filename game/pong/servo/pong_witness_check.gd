@@ -7,7 +7,7 @@ extends HapticsValue
 ## ball (ball_witness.h): the state as the master sent it, and how old it was when it arrived here.
 
 ## This layout's id on the wire (docs/values.md): a change of any field changes it.
-const SCHEMA_ID: int = 0xfcaa2997
+const SCHEMA_ID: int = 0xc666278c
 
 ## The transfer that made the sender master: a new one starts the check afresh. Range [0,
 ## 1073741824].
@@ -25,6 +25,8 @@ var spin: Vector3 = Vector3.ZERO
 var age_s: float = 0.0
 ## The first check of a match: the states of the last one are forgotten (epochs start over).
 var new_match: bool = false
+## The territory the transfer that made the sender master put the ball in. Range [0, 3].
+var territory: int = 0
 
 
 ## This value's bytes (docs/values.md): what the native library and the network take.
@@ -51,6 +53,7 @@ func write_to(writer: HapticsWireWriter) -> void:
 	writer.vec3(spin)
 	writer.f64(age_s)
 	writer.boolean(new_match)
+	writer.integer(territory, 4)
 
 
 ## Reads the fields, in order, checking each against the schema.
@@ -63,4 +66,5 @@ static func read_from(reader: HapticsWireReader) -> PongWitnessCheck:
 	value.spin = reader.vec3(&"spin", false, 100000.0)
 	value.age_s = reader.f64(&"age_s", 0.0, 10.0)
 	value.new_match = reader.boolean(&"new_match")
+	value.territory = reader.integer(&"territory", 4, true, 0, 3)
 	return value

@@ -140,26 +140,46 @@ TEST_CASE("ball witness: a new master's ball with a correction still gliding in 
 	CHECK(worst_miss(verdicts) < WITNESS_POSITION_M);
 }
 
-TEST_CASE("ball witness: a paddle's hit is struck only where the server had a paddle near the ball") {
+TEST_CASE("ball witness: a paddle's hit is struck only where a paddle was near the ball, ours or the master's own pose") {
 	PongConfig config;
+	config.air_linear_decel_m_per_s2 = 0.0;
 	Master master;
 	master.sim.configure(config);
 	PongInput input = idle_input();
-	input.players[1] = game_paddle({ 0.0, 1.0, -2.0 }, { 0.0, 0.3, 1.0 }, { 0.0, 0.0, 1.0 });
+	input.beginner = true; // A level flight, past the settling second, straight into the paddle.
+	input.players[1] = game_paddle({ 0.0, config.beginner_height_m, -2.5 }, { 0.0, 0.0, 1.0 });
 	master.sim.set_input(input);
-	master.sim.apply(set_ball({ 0.0, 1.1, -0.6 }, { 0.0, 0.6, -3.0 }));
-	master.run(1200);
+	master.sim.apply(set_ball({ 0.0, config.beginner_height_m, 1.0 }, { 0.0, 0.0, -2.0 }));
+	master.run(2500);
 	PongState last;
 	master.sim.fill_state(last);
-	REQUIRE(last.paddle_contacts >= 1);
+	REQUIRE(last.paddle_contacts == 1);
+	REQUIRE(master.sent.front().time_s + WITNESS_SETTLE_S < 1.6); // The hit comes after it.
 	BallWitness with_paddles;
-	const std::vector<PongWitnessVerdict> fair = judge(with_paddles, master, config);
+	const std::vector<PongWitnessVerdict> fair = judge(with_paddles, master, config, true, true);
 	CHECK(count(fair, WitnessVerdict::UNREACHABLE) == 0);
 	CHECK(count(fair, WitnessVerdict::STRUCK) >= 1);
 	// The same stream to a server that knew of no paddle: the hit cannot be explained.
 	BallWitness blind;
-	const std::vector<PongWitnessVerdict> unexplained = judge(blind, master, config, false);
+	const std::vector<PongWitnessVerdict> unexplained = judge(blind, master, config, false, true);
 	CHECK(count(unexplained, WitnessVerdict::UNREACHABLE) >= 1);
+	// Its own paddle's poses, stamped with its clock, explain it without our copy of it.
+	BallWitness told;
+	size_t refused = 0;
+	size_t struck = 0;
+	for (size_t i = 0; i < master.sent.size(); ++i) {
+		PongWitnessPose pose;
+		pose.epoch = master.sent[i].epoch;
+		pose.time_s = master.states[i].time_s;
+		pose.center = master.states[i].paddle_centers[1];
+		told.note_pose(pose);
+		const WitnessVerdict verdict =
+				told.check(master.sent[i], master.sent[i].time_s + AGE_S, config, true).verdict;
+		refused += verdict == WitnessVerdict::UNREACHABLE ? 1 : 0;
+		struck += verdict == WitnessVerdict::STRUCK ? 1 : 0;
+	}
+	CHECK(refused == 0);
+	CHECK(struck >= 1);
 }
 
 TEST_CASE("ball witness: a teleport is refused and the states after it are checked from the last one kept") {
@@ -183,6 +203,35 @@ TEST_CASE("ball witness: a teleport is refused and the states after it are check
 		CHECK(witness.check(master.sent[i], master.sent[i].time_s + AGE_S, config, false).verdict ==
 				WitnessVerdict::FLOWN);
 	}
+}
+
+TEST_CASE("ball witness: while a new master's ball settles a jump in its own territory starts the flight anew") {
+	PongConfig config;
+	Master master;
+	master.sim.configure(config);
+	master.sim.set_input(idle_input());
+	master.sim.apply(set_ball({ -0.5, 1.5, 1.0 }, { 0.3, 0.5, 0.5 }));
+	master.run(2000); // Two seconds in territory 0, the master's.
+	BallWitness witness;
+	for (size_t i = 0; i < 20; ++i) {
+		witness.check(master.sent[i], master.sent[i].time_s + AGE_S, config, false);
+	}
+	PongWitnessCheck glide = master.sent[20];
+	glide.position.x += 0.4; // Still territory 0.
+	CHECK(witness.check(glide, glide.time_s + AGE_S, config, false).verdict == WitnessVerdict::ANCHOR);
+	PongWitnessCheck across = master.sent[21];
+	across.position.z = -1.5; // Territory 1, past the margin: never taken so.
+	CHECK(witness.check(across, across.time_s + AGE_S, config, false).verdict == WitnessVerdict::UNREACHABLE);
+	// Past the settling second the same jump in its own territory is refused.
+	const size_t late = size_t(1.2 / (STREAM_TICKS * PONG_DT));
+	for (size_t i = 22; i < late; ++i) {
+		PongWitnessCheck check = master.sent[i];
+		check.position.x += 0.4; // On the glide's flight.
+		witness.check(check, check.time_s + AGE_S, config, false);
+	}
+	PongWitnessCheck jump = master.sent[late];
+	jump.position.x -= 0.4; // Back where the master's own ball is: a jump of 0.4 m.
+	CHECK(witness.check(jump, jump.time_s + AGE_S, config, false).verdict == WitnessVerdict::UNREACHABLE);
 }
 
 TEST_CASE("ball witness: the issue's forged ball bouncing in the opponent's territory is refused, bounces and all") {

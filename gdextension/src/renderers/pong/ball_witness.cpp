@@ -1,6 +1,7 @@
 #include "renderers/pong/ball_witness.h"
 
 #include "renderers/pong/court.h"
+#include "renderers/pong/pong_input.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,6 +14,20 @@ namespace {
 // and the ball flies at most 45 mm in five steps.
 constexpr int PADDLE_CHECK_STEPS = 5;
 
+// Whether p_position lies in p_territory or within WITNESS_SETTLE_MARGIN_M of it: a hand-off
+// happens at the border, and the new master's corrected ball may still be across it.
+bool near_territory(const Vec3 &p_position, int p_territory, int p_players) {
+	const double m = WITNESS_SETTLE_MARGIN_M;
+	const Vec3 around[] = { p_position, p_position + Vec3{ m, 0.0, 0.0 }, p_position - Vec3{ m, 0.0, 0.0 },
+		p_position + Vec3{ 0.0, 0.0, m }, p_position - Vec3{ 0.0, 0.0, m } };
+	for (const Vec3 &point : around) {
+		if (territory_of(point, p_players) == p_territory) {
+			return true;
+		}
+	}
+	return false;
+}
+
 } // namespace
 
 void BallWitness::reset() {
@@ -21,6 +36,14 @@ void BallWitness::reset() {
 	kept_count_ = 0;
 	paddle_next_ = 0;
 	paddle_count_ = 0;
+	pose_next_ = 0;
+	pose_count_ = 0;
+}
+
+void BallWitness::note_pose(const PongWitnessPose &p_pose) {
+	poses_[pose_next_] = p_pose;
+	pose_next_ = (pose_next_ + 1) % WITNESS_POSES;
+	pose_count_ = std::min(pose_count_ + 1, WITNESS_POSES);
 }
 
 void BallWitness::note_paddles(const PongState &p_state) {
@@ -35,6 +58,7 @@ void BallWitness::note_paddles(const PongState &p_state) {
 	sample.players = std::clamp(int(p_state.player_count), 0, PONG_MAX_PLAYERS);
 	for (int p = 0; p < sample.players; ++p) {
 		sample.centers[p] = p_state.paddle_centers[p];
+		sample.speeds[p] = length(p_state.paddle_velocities[p]);
 	}
 	paddle_next_ = (paddle_next_ + 1) % WITNESS_PADDLE_SAMPLES;
 	paddle_count_ = std::min(paddle_count_ + 1, WITNESS_PADDLE_SAMPLES);
@@ -68,15 +92,23 @@ void BallWitness::keep(const Kept &p_state) {
 	++kept_count_;
 }
 
-bool BallWitness::paddle_near(const Vec3 &p_ball, double p_time_s, double p_reach_m) const {
+bool BallWitness::paddle_near(const Vec3 &p_ball, double p_time_s, double p_master_time_s, double p_reach_m) const {
 	const double reach_squared = p_reach_m * p_reach_m;
+	for (size_t i = 0; i < pose_count_; ++i) {
+		const PongWitnessPose &pose = poses_[i];
+		if (pose.epoch == epoch_ && std::abs(pose.time_s - p_master_time_s) <= WITNESS_POSE_WINDOW_S &&
+				length_squared(pose.center - p_ball) <= reach_squared) {
+			return true;
+		}
+	}
 	for (size_t i = 0; i < paddle_count_; ++i) {
 		const PaddleSample &sample = paddles_[i];
 		if (std::abs(sample.time_s - p_time_s) > WITNESS_WINDOW_S) {
 			continue;
 		}
 		for (int p = 0; p < sample.players; ++p) {
-			if (length_squared(sample.centers[p] - p_ball) <= reach_squared) {
+			const double reach = p_reach_m + sample.speeds[p] * PONG_MAX_POSE_EXTRAPOLATION_S;
+			if (length_squared(sample.centers[p] - p_ball) <= reach * reach) {
 				return true;
 			}
 		}
@@ -105,6 +137,9 @@ PongWitnessVerdict BallWitness::check(const PongWitnessCheck &p_check, double p_
 	const double seen = std::max(latest_seen_s_, previous ? previous->time_s : -1.0);
 	latest_seen_s_ = std::max(latest_seen_s_, p_check.time_s);
 	if (kept_count_ == 0 || (previous != nullptr && p_check.time_s - seen > WITNESS_MAX_GAP_S)) {
+		if (kept_count_ == 0) {
+			epoch_start_s_ = p_check.time_s;
+		}
 		keep(state);
 		verdict.verdict = WitnessVerdict::ANCHOR;
 		return verdict;
@@ -153,7 +188,7 @@ PongWitnessVerdict BallWitness::check(const PongWitnessCheck &p_check, double p_
 			}
 		}
 		const bool compare = step % PADDLE_CHECK_STEPS == 0 || t >= flight - 1e-9;
-		if (news && !struck && compare && paddle_near(ball.position, sent_here - (flight - t), reach)) {
+		if (news && !struck && compare && paddle_near(ball.position, sent_here - (flight - t), from->time_s + t, reach)) {
 			struck = true;
 			struck_at = ball.position;
 			struck_t = t;
@@ -170,6 +205,10 @@ PongWitnessVerdict BallWitness::check(const PongWitnessCheck &p_check, double p_
 		state.starts_flight = flight >= WITNESS_FLIGHT_S;
 	} else if (reachable) {
 		verdict.verdict = WitnessVerdict::STRUCK;
+	} else if (p_check.time_s - epoch_start_s_ <= WITNESS_SETTLE_S &&
+			near_territory(p_check.position, p_check.territory, p_config.players)) {
+		verdict.verdict = WitnessVerdict::ANCHOR;
+		verdict.bounces.clear();
 	} else {
 		verdict.verdict = WitnessVerdict::UNREACHABLE;
 		verdict.bounces.clear();

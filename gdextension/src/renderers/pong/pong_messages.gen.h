@@ -140,7 +140,7 @@ static_assert(std::is_trivially_copyable_v<PongCommand>);
 // ball (ball_witness.h): the state as the master sent it, and how old it was when it arrived
 // here.
 struct PongWitnessCheck {
-	static constexpr uint32_t SCHEMA_ID = 0xfcaa2997u;
+	static constexpr uint32_t SCHEMA_ID = 0xc666278cu;
 	static constexpr const char *NAME = "PongWitnessCheck";
 
 	// The transfer that made the sender master: a new one starts the check afresh. Range [0,
@@ -159,6 +159,8 @@ struct PongWitnessCheck {
 	double age_s{};
 	// The first check of a match: the states of the last one are forgotten (epochs start over).
 	bool new_match{};
+	// The territory the transfer that made the sender master put the ball in. Range [0, 3].
+	int32_t territory{};
 
 	// Every field with its schema limits, in wire order (core/wire/codec.h walks them).
 	template <typename Self, typename Visitor>
@@ -170,6 +172,31 @@ struct PongWitnessCheck {
 		r_visitor(FieldSpec{ .name = "spin", .max = 100000.0 }, r_self.spin);
 		r_visitor(FieldSpec{ .name = "age_s", .min = 0.0, .max = 10.0 }, r_self.age_s);
 		r_visitor(FieldSpec{ .name = "new_match" }, r_self.new_match);
+		r_visitor(FieldSpec{ .name = "territory", .min = 0.0, .max = 3.0 }, r_self.territory);
+	}
+};
+
+// A pose of a paddle the master drives, as the master sent it: stamped with the master's servo
+// clock, the one its ball states carry, so the check places it on the ball's flight exactly
+// (ball_witness.h).
+struct PongWitnessPose {
+	static constexpr uint32_t SCHEMA_ID = 0x82d22856u;
+	static constexpr const char *NAME = "PongWitnessPose";
+
+	// The epoch it arrived in: only the current epoch's master's poses count. Range [0,
+	// 1073741824].
+	int32_t epoch{};
+	// The master's servo time of the pose. Unit: s. Range [0.0, 10000000.0].
+	double time_s{};
+	// The paddle's centre, world. Unit: m. Range [-inf, 1000.0].
+	Vec3 center{};
+
+	// Every field with its schema limits, in wire order (core/wire/codec.h walks them).
+	template <typename Self, typename Visitor>
+	static void visit(Self &r_self, Visitor &&r_visitor) {
+		r_visitor(FieldSpec{ .name = "epoch", .min = 0.0, .max = 1073741824.0 }, r_self.epoch);
+		r_visitor(FieldSpec{ .name = "time_s", .min = 0.0, .max = 10000000.0 }, r_self.time_s);
+		r_visitor(FieldSpec{ .name = "center", .max = 1000.0 }, r_self.center);
 	}
 };
 

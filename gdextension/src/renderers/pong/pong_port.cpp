@@ -39,14 +39,17 @@ Status PongPort::push_command(const PongCommand &p_command) {
 }
 
 Status PongPort::receive(std::span<const uint8_t> p_message) {
-	return receive_one_of<PongInput, PongCommand, PongWitnessCheck>(p_message, [&](const auto &p_value) {
+	return receive_one_of<PongInput, PongCommand, PongWitnessCheck, PongWitnessPose>(p_message, [&](const auto &p_value) {
 		using Value = std::decay_t<decltype(p_value)>;
 		if constexpr (std::is_same_v<Value, PongInput>) {
 			return set_input(p_value);
 		} else if constexpr (std::is_same_v<Value, PongCommand>) {
 			return push_command(p_value);
-		} else {
+		} else if constexpr (std::is_same_v<Value, PongWitnessCheck>) {
 			check_ball(p_value);
+			return Status::success();
+		} else {
+			witness_.note_pose(p_value);
 			return Status::success();
 		}
 	});

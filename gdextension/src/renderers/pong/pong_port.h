@@ -9,8 +9,8 @@
 // The same through RendererPort, as the game sends them (pong.schema.toml): it takes
 // PongInput and PongCommand, and gives PongState and PongEventBatch (the drained events).
 // A networked match's server also checks its master's ball here (ball_witness.h): it sends a
-// PongWitnessCheck per state and reads the PongWitnessVerdict; set_input feeds the check the
-// servo's paddles every frame.
+// PongWitnessCheck per state and reads the PongWitnessVerdict, and sends the master's own
+// poses as PongWitnessPose; set_input feeds the check the servo's paddles every frame.
 
 #include "core/base/status.h"
 #include "core/render/renderer_port.h"
