@@ -113,31 +113,37 @@ def test_a_killed_dedicated_server_is_noticed_by_its_clients_within_3_s() -> Non
         assert all(0.0 < n < NOTICE_BOUND_S for n in notices), notices
 
 
+def _cheat_match(work, mode: str, mark: str) -> tuple[Peer, dict, int, str]:
+    """A 14 s match on the LAN against the rogue client in [mode]: the host, its report, the
+    cheat's peer id and the rogue's last [mark] line. The cheat must have been master, been
+    disconnected at the budget, and cost the host no hurt at an epoch it was master of (the
+    host's health is what its own hurts say)."""
+    peers, _ = run_match(work, 2, NETWORKS["lan"], 14,
+                         client_args=((f"--rogue={mode}",),), client_scenes=(ROGUE_SCENE,))
+    host, rogue = peers
+    report = host.report
+    assert report["exit_code"] == 0, logs(peers)
+    _no_engine_errors(host)
+    marks = [line for line in rogue.log().splitlines() if mark in line]
+    assert marks, "the rogue never was the master:\n" + logs(peers)
+    left = report["extra"].get("peers_left", [])
+    assert len(left) == 1 and left[0]["seats"] == [1], (left, logs(peers))
+    cheat = left[0]["peer"]
+    assert host.log().count(f"disconnecting peer {cheat}: {BUDGET} bad messages") == 1
+    master_of = {t["epoch"]: t["master"] for t in report["transfers"]}
+    own = [h for h in report["hurts"] if h[1] == 0]
+    assert all(master_of.get(h[0]) == 1 for h in own), (own, master_of)
+    check_health([report])
+    return host, report, cheat, marks[-1]
+
+
 def test_a_master_forging_floor_hurts_costs_the_host_nothing_and_is_disconnected() -> None:
     with workspace() as work:
-        peers, _ = run_match(work, 2, NETWORKS["lan"], 14,
-                             client_args=(("--rogue=forge",),), client_scenes=(ROGUE_SCENE,))
-        host, rogue = peers
-        report = host.report
-        assert report["exit_code"] == 0, logs(peers)
-        _no_engine_errors(host)
-        forged = [line for line in rogue.log().splitlines() if "forged floor hurts sent" in line]
-        assert forged, "the rogue never was the master:\n" + logs(peers)
-        left = report["extra"].get("peers_left", [])
-        assert len(left) == 1 and left[0]["seats"] == [1], (left, logs(peers))
-        cheat = left[0]["peer"]
-        log = host.log()
-        assert log.count(f"peer {cheat} sent a bad") == 1, "warned once"
-        assert log.count(f"disconnecting peer {cheat}: {BUDGET} bad messages") == 1
+        host, report, cheat, forged = _cheat_match(work, "forge", "forged floor hurts sent")
+        assert host.log().count(f"peer {cheat} sent a bad") == 1, "warned once"
         refused = report["refused"].get("floor claim", 0) + report["refused"].get("hurt", 0)
         assert refused >= BUDGET, report["refused"]
-        # No hurt of the host's seat was charged at an epoch the cheat was master of, and the
-        # host's health is what its own hurts say.
-        master_of = {t["epoch"]: t["master"] for t in report["transfers"]}
-        own = [h for h in report["hurts"] if h[1] == 0]
-        assert all(master_of.get(h[0]) == 1 for h in own), (own, master_of)
-        check_health([report])
-        print(f"{forged[-1]}; host refused {report['refused']}; host health "
+        print(f"{forged}; host refused {report['refused']}; host health "
               f"{report['health']} of {report['start_health']}")
 
 
@@ -146,27 +152,11 @@ def test_a_master_forging_the_ball_gains_nothing_and_is_disconnected() -> None:
     its own bouncing in the host's territory, claiming each bounce (61 claims accepted then,
     the opponent 99 -> 32). The server checks each state against its own simulation."""
     with workspace() as work:
-        peers, _ = run_match(work, 2, NETWORKS["lan"], 14,
-                             client_args=(("--rogue=forge-ball",),), client_scenes=(ROGUE_SCENE,))
-        host, rogue = peers
-        report = host.report
-        assert report["exit_code"] == 0, logs(peers)
-        _no_engine_errors(host)
-        forged = [line for line in rogue.log().splitlines() if "forged ball states sent" in line]
-        assert forged, "the rogue never was the master:\n" + logs(peers)
-        left = report["extra"].get("peers_left", [])
-        assert len(left) == 1 and left[0]["seats"] == [1], (left, logs(peers))
-        cheat = left[0]["peer"]
-        assert host.log().count(f"disconnecting peer {cheat}: {BUDGET} bad messages") == 1
+        _, report, _, forged = _cheat_match(work, "forge-ball", "forged ball states sent")
         checked = report["extra"]["ball_check"]["verdicts"]
         assert checked.get("unreachable", 0) >= 1, checked
         assert report["refused"].get("ball state", 0) >= 1, report["refused"]
-        # No hurt of the host's seat was charged at an epoch the cheat was master of.
-        master_of = {t["epoch"]: t["master"] for t in report["transfers"]}
-        own = [h for h in report["hurts"] if h[1] == 0]
-        assert all(master_of.get(h[0]) == 1 for h in own), (own, master_of)
-        check_health([report])
-        print(f"{forged[-1]}; host's check {checked}; refused {report['refused']}; host health "
+        print(f"{forged}; host's check {checked}; refused {report['refused']}; host health "
               f"{report['health']} of {report['start_health']}")
 
 
