@@ -54,6 +54,11 @@ const PONG_EVENT_QUEUE_CAPACITY: int = 256
 ## 0.27 s, and a gap between checked states is shorter than a second.
 const PONG_WITNESS_MAX_BOUNCES: int = 4
 
+## Seconds after an epoch's first state in which the server's ball check lets the new master's ball
+## settle: a state neither flown nor struck, in or near the master's territory, starts the flight
+## anew (ball_witness.h).
+const PONG_WITNESS_SETTLE_S: float = 1.0
+
 ## Telemetry flag: the Pong renderer is the active one.
 const TELEMETRY_FLAG_PONG_MODE: int = 512
 

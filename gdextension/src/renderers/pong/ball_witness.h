@@ -69,7 +69,7 @@ inline constexpr size_t WITNESS_POSES = 256;
 // hand-off's correction glides into it, blended more slowly near its paddle (ball_correction.h),
 // so its stream need not fly freely yet. An unexplained state then starts the flight anew,
 // in or near the master's own territory only.
-inline constexpr double WITNESS_SETTLE_S = 1.0;
+inline constexpr double WITNESS_SETTLE_S = PONG_WITNESS_SETTLE_S;
 inline constexpr double WITNESS_SETTLE_MARGIN_M = 1.0;
 // States kept per epoch to check later ones (and reordered ones) from: a second of a stream
 // at its fastest (125 Hz), so a flight's start is always among them.

@@ -25,6 +25,11 @@ inline constexpr size_t PONG_EVENT_QUEUE_CAPACITY = 256;
 // about 0.27 s, and a gap between checked states is shorter than a second.
 inline constexpr size_t PONG_WITNESS_MAX_BOUNCES = 4;
 
+// Seconds after an epoch's first state in which the server's ball check lets the new master's
+// ball settle: a state neither flown nor struck, in or near the master's territory, starts the
+// flight anew (ball_witness.h).
+inline constexpr double PONG_WITNESS_SETTLE_S = 1.0;
+
 // Telemetry flag: the Pong renderer is the active one.
 inline constexpr uint32_t TELEMETRY_FLAG_PONG_MODE = 512u;
 
