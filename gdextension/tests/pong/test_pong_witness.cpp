@@ -222,9 +222,33 @@ TEST_CASE("ball witness: while a new master's ball settles a jump in its own ter
 	PongWitnessCheck across = master.sent[21];
 	across.position.z = -1.5; // Territory 1, past the margin: never taken so.
 	CHECK(witness.check(across, across.time_s + AGE_S, config, false).verdict == WitnessVerdict::UNREACHABLE);
+	// A settling stream whose ball turns up in mid-air bounced: in its own territory that is a
+	// floor bounce there; across the border (within the margin) it is not reported.
+	PongWitnessCheck falling = master.sent[22];
+	falling.velocity = { 0.0, -3.0, 0.0 };
+	falling.position = { 0.2, 1.0, 0.5 };
+	witness.check(falling, falling.time_s + AGE_S, config, false);
+	PongWitnessCheck turned = master.sent[23];
+	turned.position = { 0.2, 0.98, 0.5 };
+	turned.velocity = { 0.0, 2.5, 0.0 };
+	const PongWitnessVerdict bounced = witness.check(turned, turned.time_s + AGE_S, config, false);
+	CHECK(bounced.verdict == WitnessVerdict::ANCHOR);
+	REQUIRE(bounced.bounces.size() == 1);
+	CHECK(bounced.bounces[0].position.y == doctest::Approx(config.ball_radius_m));
+	CHECK(bounced.bounces[0].position.z == doctest::Approx(0.5));
+	PongWitnessCheck falling_across = master.sent[24];
+	falling_across.velocity = { 0.0, -3.0, 0.0 };
+	falling_across.position = { 0.2, 1.0, -0.5 };
+	witness.check(falling_across, falling_across.time_s + AGE_S, config, false);
+	PongWitnessCheck turned_across = master.sent[25];
+	turned_across.position = { 0.2, 0.98, -0.5 };
+	turned_across.velocity = { 0.0, 2.5, 0.0 };
+	const PongWitnessVerdict across_bounce = witness.check(turned_across, turned_across.time_s + AGE_S, config, false);
+	CHECK(across_bounce.verdict == WitnessVerdict::ANCHOR);
+	CHECK(across_bounce.bounces.empty());
 	// Past the settling second the same jump in its own territory is refused.
 	const size_t late = size_t(1.2 / (STREAM_TICKS * PONG_DT));
-	for (size_t i = 22; i < late; ++i) {
+	for (size_t i = 26; i < late; ++i) {
 		PongWitnessCheck check = master.sent[i];
 		check.position.x += 0.4; // On the glide's flight.
 		witness.check(check, check.time_s + AGE_S, config, false);

@@ -209,6 +209,14 @@ PongWitnessVerdict BallWitness::check(const PongWitnessCheck &p_check, double p_
 			near_territory(p_check.position, p_check.territory, p_config.players)) {
 		verdict.verdict = WitnessVerdict::ANCHOR;
 		verdict.bounces.clear();
+		// A settling ball's floor bounce shows in its stream as its vertical velocity turning
+		// up in mid-air: the master's ball bounced, the corrected ball it streams is lifted by
+		// what is left to blend in. Counted in the master's own territory only.
+		const bool turned_up = -ball.velocity.y >= p_config.min_bounce_speed_m_per_s && p_check.velocity.y > 0.0;
+		if (turned_up && territory_of(p_check.position, p_config.players) == p_check.territory) {
+			const Vec3 floor{ p_check.position.x, p_config.ball_radius_m, p_check.position.z };
+			verdict.bounces.push_back({ floor, p_check.age_s });
+		}
 	} else {
 		verdict.verdict = WitnessVerdict::UNREACHABLE;
 		verdict.bounces.clear();

@@ -26,7 +26,10 @@
 //                rough path is metres from ours), the first after WITNESS_MAX_GAP_S in which
 //                the master sent nothing, or within WITNESS_SETTLE_S of the epoch's first a
 //                state neither flown nor struck that lies in the master's own territory or
-//                within WITNESS_SETTLE_MARGIN_M of it:
+//                within WITNESS_SETTLE_MARGIN_M of it (one whose vertical velocity turned up
+//                against a falling flight, in the master's own territory, is reported as a
+//                floor bounce there: the corrected ball it streams is lifted by what is left
+//                to blend in, and never reaches the floor itself):
 //                taken as it is, a flight's start;
 //   old          no state of its epoch before it, or a copy of one kept: not judged.
 // Game thread only; the paddle history is fed once a frame (note_paddles).
