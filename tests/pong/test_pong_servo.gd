@@ -243,7 +243,8 @@ func test_bad_commands_are_refused_by_field_and_queue_nothing() -> void:
 	expect_error("PongCommand.player must be 0..1 on this court (got 2)")
 	assert_false(_send(_effect_command(2, KIND.HEAVY)))
 	var layout: String = "layout %08x" % PongState.SCHEMA_ID
-	expect_error(layout + " is none of the values this renderer takes (PongInput, PongCommand)")
+	var takes: String = "PongInput, PongCommand, PongWitnessCheck, PongWitnessPose"
+	expect_error(layout + " is none of the values this renderer takes (%s)" % takes)
 	assert_false(_send(PongState.new()))
 	assert_true(door.servo.step(PongServo.TICK_S))
 	assert_eq(pong.get_state().effects.size(), 0, "nothing was queued")
