@@ -97,10 +97,12 @@ pong-demo: import
 	@$(GODOT) --headless --path . res://tests/drivers/pong_demo.tscn -- $(ARGS)
 
 ## test: every suite: what CI runs (about 40 minutes)
-## Any failure fails the target.
-test: import test-native test-godot lint test-schema test-analysis test-net test-export \
+## Any failure fails the target; each suite's seconds are printed at the end (tools/ci/run-suites.sh).
+TEST_SUITES := test-native test-godot lint test-schema test-analysis test-net test-export \
 	test-export-server test-dist test-windowed test-person test-addon test-editor test-kernel \
 	test-rt test-bare test-windows
+test: import
+	@tools/ci/run-suites.sh $(TEST_SUITES)
 	@echo "make test: all suites passed"
 
 ## check: the quick loop: build, doctests, the GDScript unit suites, lint (under 5 minutes)
