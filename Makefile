@@ -156,7 +156,7 @@ test-windowed: import
 ## screen to the thank-you (the shipped build only). Fails on any error or X error line;
 ## screenshots in .build/person/<test>/ (tests/person, about 8 minutes).
 test-person: import
-	@tools/analysis/run.sh -m pytest tests/person -q -rsx -p no:cacheprovider -s
+	@tools/analysis/run.sh -m pytest tests/person -q -rsx -p no:cacheprovider -s --durations=0
 
 ## lint: the schemas current, include layers, the typed boundary, gdlint, gdformat, clang-format
 ## the C++ layers' include directions and the 400-line limit (tools/check-includes.py),
@@ -330,7 +330,7 @@ test-schema: engine
 ## The UDP relay that gives loopback latency, jitter and loss, then networked Pong with headless
 ## peers through it (tests/net, a few minutes).
 test-net: import
-	@tools/analysis/run.sh -m pytest tools/net/tests tests/net -q -p no:cacheprovider \
+	@tools/analysis/run.sh -m pytest tools/net/tests tests/net -q -p no:cacheprovider --durations=15 \
 		--ignore=tests/net/test_exported_server.py
 
 ## bench-net: networked Pong's numbers for each network setting

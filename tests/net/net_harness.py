@@ -300,18 +300,20 @@ def _interpolate(samples: list[list[float]], times: list[float], t: float):
     return [a[k] + u * (b[k] - a[k]) for k in (2, 3, 4)]
 
 
-def divergences(reports: list[dict], after_serve_s: float = 0.0) -> list[float]:
+def divergences(reports: list[dict], after_serve_s: float = 0.0,
+                followers: tuple[dict, ...] = ()) -> list[float]:
     """|ball(follower) - ball(master)| at the follower's samples, whoever is master then,
-    on the shared wall clock of this machine (metres). A serve puts the ball back in the
-    middle: no follower can know it before the message arrives, so the [after_serve_s]
-    after each serve (one path delay and a frame) are left out (served_windows counts them)."""
+    on the shared wall clock of this machine (metres); [followers]: only at theirs. A serve
+    puts the ball back in the middle: no follower can know it before the message arrives, so
+    the [after_serve_s] after each serve (one path delay and a frame) are left out
+    (served_windows counts them)."""
     out = []
     serves = [t["wall_s"] for r in reports for t in r["transfers"] if t["kind"] == 0]
     for master in reports:
         m_samples = master["samples"]
         m_times = [s[0] for s in m_samples]
         for follower in reports:
-            if follower is master:
+            if follower is master or (followers and follower not in followers):
                 continue
             for s0, s1 in master["master_intervals"]:
                 for s in follower["samples"]:

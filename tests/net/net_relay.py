@@ -37,11 +37,22 @@ class Network:
     duplicate: float = 0.0
     # Everything the server sends is lost for this long from the first client's first datagram.
     answers_lost_first_ms: float = 0.0
+    # An asymmetric path: the delay towards the server (up) and towards the client (down),
+    # each instead of delay_ms.
+    up_delay_ms: float | None = None
+    down_delay_ms: float | None = None
+
+    @property
+    def legs_ms(self) -> tuple[float, float]:
+        """The delay up (client to server) and down, ms."""
+        return (self.delay_ms if self.up_delay_ms is None else self.up_delay_ms,
+                self.delay_ms if self.down_delay_ms is None else self.down_delay_ms)
 
     @property
     def label(self) -> str:
         jitter = f"±{self.jitter_ms:g}" if self.centred else f"+{self.jitter_ms:g}j"
-        text = f"{self.delay_ms:g}ms{jitter}"
+        up, down = self.legs_ms
+        text = f"{self.delay_ms:g}ms{jitter}" if up == down else f"{up:g}/{down:g}ms{jitter}"
         if self.loss > 0 or self.burst_loss == 0:
             text += f"/{self.loss * 100:g}%"
         if not self.reorder:
@@ -56,7 +67,7 @@ class Network:
 
     @property
     def impaired(self) -> bool:
-        return any(x > 0 for x in (self.delay_ms, self.jitter_ms, self.loss, self.burst_loss,
+        return any(x > 0 for x in (*self.legs_ms, self.jitter_ms, self.loss, self.burst_loss,
                                    self.duplicate, self.answers_lost_first_ms))
 
     @property
@@ -64,17 +75,20 @@ class Network:
         """Worst one-way delay between two players through the relay (two legs when both
         are clients; an in-order leg still releases each datagram within its own draw's
         reach)."""
-        return 2.0 * (self.delay_ms + self.jitter_ms) / 1000.0
+        return (sum(self.legs_ms) + 2.0 * self.jitter_ms) / 1000.0
 
     @property
     def round_trip_s(self) -> float:
         """Worst client-to-client round trip through the relay (two legs each way)."""
-        return 4.0 * (self.delay_ms + self.jitter_ms) / 1000.0
+        return 2.0 * (sum(self.legs_ms) + 2.0 * self.jitter_ms) / 1000.0
 
     def relay_args(self) -> list[str]:
         """udp_relay.py's options for these conditions."""
         args = ["--delay-ms", str(self.delay_ms), "--jitter-ms", str(self.jitter_ms),
                 "--loss", str(self.loss)]
+        for direction, delay_ms in zip(("up", "down"), (self.up_delay_ms, self.down_delay_ms)):
+            if delay_ms is not None:
+                args += [f"--{direction}-delay-ms", str(delay_ms)]
         if self.centred:
             args.append("--jitter-centred")
         if not self.reorder:

@@ -13,7 +13,8 @@ Each direction of each client's path decides every datagram's fate (path_model.p
 with probability --loss, and/or in Gilbert-Elliott bursts (--burst-loss L --burst-length B:
 the two-state chain that loses L of the datagrams in bursts of B on average); otherwise
 delivered after --delay-ms plus a uniform 0..--jitter-ms (or, with --jitter-centred, delay
-+- jitter), drawn per datagram and released at its own time, so a jitter larger than the
++- jitter; --up-delay-ms and --down-delay-ms set one direction's delay apart, an asymmetric
+path), drawn per datagram and released at its own time, so a jitter larger than the
 gap between datagrams reorders them as on a real path (--in-order: each waits for the one
 before it instead); with probability --duplicate a second copy goes too, with its own delay.
 Every lane has its own generator seeded from --seed: a run's fates are reproducible.
@@ -33,6 +34,7 @@ writes its counts to --stats as JSON: per direction in total ("up", "down") and 
 ("paths"), the fields of path_model.DirectionStats.
 
     udp_relay.py --server 127.0.0.1:7000 [--listen-port 0] [--delay-ms 50] [--jitter-ms 10]
+                 [--up-delay-ms 50 --down-delay-ms 250]
                  [--jitter-centred] [--in-order] [--loss 0.05] [--burst-loss 0.1
                  --burst-length 6.5] [--duplicate 0.01] [--answers-lost-first-ms 3000]
                  [--control] [--seed 1]
@@ -109,13 +111,14 @@ class _Upstream(asyncio.DatagramProtocol):
 class Relay(asyncio.DatagramProtocol):
     """The relay's front socket, where clients send."""
 
-    def __init__(self, p_server: Address, p_model: PathModel, p_seed: int,
+    def __init__(self, p_server: Address, p_models: dict[str, PathModel], p_seed: int,
                  p_answers_lost_s: float = 0.0) -> None:
         self._server = p_server
         self._answers_lost_s = p_answers_lost_s
         # The loop time before which the server's answers are dropped (set by the first client).
         self._answers_from: float | None = None
-        self._model = p_model
+        # Each direction's path (DIRECTIONS), the same one unless the path is asymmetric.
+        self._models = p_models
         self._seed = p_seed
         self._clients: list[Address] = []
         self._front: asyncio.DatagramTransport | None = None
@@ -193,7 +196,7 @@ class Relay(asyncio.DatagramProtocol):
             # not on how the two directions happened to interleave, so a seed reproduces a run.
             number = self._clients.index(p_client)
             rng = random.Random(f"{self._seed}/{number}/{p_direction}")
-            self._lanes[key] = Lane(self._model, rng)
+            self._lanes[key] = Lane(self._models[p_direction], rng)
         return self._lanes[key]
 
     def _open_upstream(self, p_client: Address, p_first: bytes) -> None:
@@ -267,12 +270,15 @@ def _milliseconds(p_text: str) -> float:
 
 
 def parse_arguments(p_argv: list[str]) -> argparse.Namespace:
-    """The options, and in .model the path they describe (an impossible one is refused)."""
+    """The options, and in .models each direction's path (an impossible one is refused)."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--server", type=_address, required=True, help="HOST:PORT to relay to")
     parser.add_argument("--listen-host", default="127.0.0.1")
     parser.add_argument("--listen-port", type=int, default=0, help="0 picks a free port")
     parser.add_argument("--delay-ms", type=_milliseconds, default=0.0, help="each way")
+    for direction, towards in zip(DIRECTIONS, ("server", "client")):
+        parser.add_argument(f"--{direction}-delay-ms", type=_milliseconds, default=None,
+                            help=f"towards the {towards} only, instead of --delay-ms")
     parser.add_argument("--jitter-ms", type=_milliseconds, default=0.0,
                         help="uniform extra 0..J per datagram (+-J with --jitter-centred)")
     parser.add_argument("--jitter-centred", action="store_true",
@@ -300,11 +306,15 @@ def parse_arguments(p_argv: list[str]) -> argparse.Namespace:
     try:
         bursts = (BurstLoss.from_mean(args.burst_loss, args.burst_length)
                   if args.burst_loss > 0.0 else None)
-        args.model = PathModel(
-            delay_s=args.delay_ms / 1000.0, jitter_s=args.jitter_ms / 1000.0,
-            centred=args.jitter_centred, reorder=not args.in_order, loss=args.loss,
-            bursts=bursts, duplicate=args.duplicate,
-        )
+        args.models = {}
+        for direction in DIRECTIONS:
+            delay_ms = getattr(args, f"{direction}_delay_ms")
+            args.models[direction] = PathModel(
+                delay_s=(args.delay_ms if delay_ms is None else delay_ms) / 1000.0,
+                jitter_s=args.jitter_ms / 1000.0, centred=args.jitter_centred,
+                reorder=not args.in_order, loss=args.loss, bursts=bursts,
+                duplicate=args.duplicate,
+            )
     except ValueError as error:
         parser.error(str(error))
     return args
@@ -325,7 +335,7 @@ async def _read_commands(p_relay: Relay, p_reader: asyncio.StreamReader) -> None
 
 
 async def run(p_args: argparse.Namespace) -> Relay:
-    relay = Relay(p_args.server, p_args.model, p_args.seed, p_args.answers_lost_first_ms / 1000.0)
+    relay = Relay(p_args.server, p_args.models, p_args.seed, p_args.answers_lost_first_ms / 1000.0)
     loop = asyncio.get_running_loop()
     transport, _ = await loop.create_datagram_endpoint(
         lambda: relay, local_addr=(p_args.listen_host, p_args.listen_port)

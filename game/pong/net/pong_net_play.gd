@@ -169,12 +169,12 @@ func frame(delta: float) -> void:
 		state.position = snapshot.ball_position + snapshot.ball_correction
 		state.velocity = snapshot.ball_velocity
 		state.spin = snapshot.ball_spin
-		state.leg_ms = _latency.my_leg_ms()
+		state.leg_ms = _latency.up_ms()
 		session.router.send_all(state)
 		ball_state_sent.emit()
 	if snapshot.time_s - _last_pose_time >= 1.0 / MAX_STREAM_HZ:
 		_last_pose_time = snapshot.time_s
-		poses.send(snapshot, local_seats, _latency.my_leg_ms())
+		poses.send(snapshot, local_seats, _latency.up_ms())
 	floor_hurts.observe(snapshot)
 
 
@@ -337,7 +337,7 @@ func _on_request(sender: int, request: PongNetHandOffMessage) -> void:
 			_reject(sender, PongNetHandOffMessage.LABEL, "a stream of stale hand-off requests")
 		return
 	var handoff: PongNetFacts.TransferKind = PongNetFacts.TransferKind.HANDOFF
-	var age_ms: int = _latency.leg_ms(sender)
+	var age_ms: int = _latency.from_ms(sender)
 	issue(handoff, request.territory, request.position, request.velocity, request.spin, age_ms)
 
 
@@ -366,7 +366,7 @@ func _on_transfer(sender: int, transfer: PongNetTransferMessage) -> void:
 	if ball_check != null:
 		ball_check.restart()
 	_master_velocity = Vector3.INF
-	var age: float = (transfer.age_ms + _latency.my_leg_ms()) / 1000.0
+	var age: float = (transfer.age_ms + _latency.down_ms()) / 1000.0
 	var target: Array[Vector3] = PongNetSmoother.extrapolate(
 		_predictor, transfer.position, transfer.velocity, _gravity(), age
 	)

@@ -19,6 +19,8 @@ signal peer_lost(peer: int, silence_s: float)
 ## by the match; unset, a silent peer is lost at its limit.
 var keeps_seat: Callable = Callable()
 var heartbeat: PongNetHeartbeat = PongNetHeartbeat.new()
+## Each direction's delay to the peers whose beats this one hears.
+var legs: PongNetLegs = PongNetLegs.new()
 
 var _router: PongNetRouter = null
 var _enet: ENetMultiplayerPeer = null
@@ -41,7 +43,7 @@ func frame(enet: ENetMultiplayerPeer) -> void:
 	if heartbeat.settling():
 		_send_watch(PongNetStallMessage.new())
 	elif heartbeat.due(now):
-		_send_watch(PongNetBeatMessage.new())
+		_send_beats()
 	for back: Array in heartbeat.returned():
 		printerr("PongNet: peer %d back after %.2f s of silence" % back)
 		peer_back.emit(back[0], back[1])
@@ -89,13 +91,35 @@ func _limit_of(peer: int) -> float:
 
 # To the peers that watch our heartbeat: a server's clients, a client's server.
 func _send_watch(message: PongNetMessage) -> void:
+	for peer: int in _watching():
+		_router.send_to(peer, message)
+
+
+func _watching() -> Array[int]:
+	var peers: Array[int] = []
 	for peer: int in multiplayer.get_peers():
 		if _is_server() or peer == PongNetAuthority.SERVER_ID:
-			_router.send_to(peer, message)
+			peers.append(peer)
+	return peers
 
 
-func _on_beat(peer: int, _message: PongNetBeatMessage) -> void:
+# A beat to each watching peer, with what we measured of its beats.
+func _send_beats() -> void:
+	for peer: int in _watching():
+		var beat: PongNetBeatMessage = PongNetBeatMessage.new()
+		beat.wall_s = PongNetLegs.wall_s()
+		var heard_ms: float = legs.inbound_ms(peer)
+		beat.heard = is_finite(heard_ms)
+		if beat.heard:
+			var most: float = PongNetFacts.NET_MAX_LEG_MS
+			beat.heard_ms = clampf(heard_ms, -most, most)
+		_router.send_to(peer, beat)
+
+
+func _on_beat(peer: int, message: PongNetBeatMessage) -> void:
 	heartbeat.heard(peer, now_s())
+	var heard_ms: float = message.heard_ms if message.heard else NAN
+	legs.heard(peer, PongNetLegs.wall_s(), message.wall_s, heard_ms)
 
 
 func _on_stall(peer: int, _message: PongNetStallMessage) -> void:

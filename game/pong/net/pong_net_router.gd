@@ -165,8 +165,10 @@ func _send(message: PongNetMessage, peer: int) -> void:
 # from us even if nothing else is sent to it (see the class description).
 func _greet(peer: int) -> void:
 	if _connected() and multiplayer.get_peers().has(peer):
+		var beat: PongNetBeatMessage = PongNetBeatMessage.new()
+		beat.wall_s = PongNetLegs.wall_s()
 		(multiplayer as SceneMultiplayer).send_bytes(
-			PongNetBeatMessage.new().encode(),
+			beat.encode(),
 			peer,
 			MultiplayerPeer.TRANSFER_MODE_RELIABLE,
 			PongNetFacts.NET_CHANNEL_HANDSHAKE

@@ -342,6 +342,7 @@ func _on_peer_connected(peer: int) -> void:
 
 func _on_peer_disconnected(peer: int) -> void:
 	pulse.heartbeat.forget(peer)
+	pulse.legs.forget(peer)
 	router.forget_peer(peer)
 	_half_open.remove(peer)
 	peer_left.emit(peer)

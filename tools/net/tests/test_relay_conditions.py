@@ -4,6 +4,8 @@ machine's timing varies, and the assertions bound it generously (timers are only
 
 from __future__ import annotations
 
+import time
+
 import pytest
 from relay_fixtures import (EchoServer, RelayProcess, address_of, balanced, client, collect,
                             send_numbered, stats_of)
@@ -94,6 +96,28 @@ def test_in_order_keeps_the_jitter_and_the_order(sink, tmp_path):
     assert stats["up"]["reordered"] == stats["up"]["overtaking"] == 0
     one_way = [t - sent_at[int(data[-5:])] for t, _, data in sink.arrivals]
     assert min(one_way) >= 0.139 and max(one_way) >= 0.248
+
+
+def test_an_asymmetric_path_delays_each_direction_by_its_own_delay(echo, tmp_path):
+    relay = RelayProcess(echo.port, tmp_path / "stats.json", "--delay-ms", "500",
+                         "--up-delay-ms", "50", "--down-delay-ms", "250")
+    sock = client(relay.port)
+    try:
+        sent_at = send_numbered(sock, 20, 0.05)
+        got = collect(sock, 20, 3.0)
+        back_at = time.monotonic()
+    finally:
+        sock.close()
+        assert relay.stop() == 0
+    assert sorted(numbers(got)) == list(range(20))
+    # Timers are only late: up no earlier than 50 ms, the whole trip no earlier than 300 ms;
+    # the server heard every datagram long before the down leg's 250 ms could have passed
+    # (the --delay-ms both directions override would have made it 500).
+    up = [t - sent_at[int(data[-5:])] for t, _, data in echo.arrivals]
+    assert min(up) >= 0.049 and sorted(up)[len(up) // 2] < 0.2, up
+    assert back_at - sent_at[0] >= 0.299
+    stats = stats_of(tmp_path / "stats.json")
+    assert stats["up"]["delivered"] == stats["down"]["delivered"] == 20
 
 
 def test_bursts_lose_about_the_asked_share_in_bursts_of_about_the_asked_length(sink, tmp_path):

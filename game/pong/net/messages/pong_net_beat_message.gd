@@ -4,10 +4,10 @@
 class_name PongNetBeatMessage
 extends PongNetMessage
 ## The heartbeat: every connected pair sends each other one at 5 Hz; a peer silent for too long is
-## dropped (PongNetHeartbeat).
+## dropped (PongNetHeartbeat). It also measures each direction's delay (PongNetLegs).
 
 ## This layout's id on the wire (docs/values.md): a change of any field changes it.
-const SCHEMA_ID: int = 0xa49d8361
+const SCHEMA_ID: int = 0xcd16db3a
 ## Words for people: what this message is (log lines, counts).
 const LABEL: String = "heartbeat"
 ## The channel it travels on ([method SceneMultiplayer.send_bytes]).
@@ -18,6 +18,15 @@ const TRANSFER_MODE: MultiplayerPeer.TransferMode = MultiplayerPeer.TRANSFER_MOD
 const FROM_SERVER: bool = false
 ## Only the server takes it: on any other peer it is a bad message.
 const TO_SERVER: bool = false
+
+## The sender's system clock when it sent the beat (seconds since 1970). Unit: s. Range [0.0,
+## 100000000000.0].
+var wall_s: float = 0.0
+## Whether the sender has heard the receiver's beats yet (heard_ms means something).
+var heard: bool = false
+## The fastest recent beat of the receiver's to the sender: the sender's clock at arrival minus the
+## beat's stamp. Unit: ms. Range [-10000, 10000].
+var heard_ms: float = 0.0
 
 
 ## This value's bytes (docs/values.md): what the native library and the network take.
@@ -56,11 +65,18 @@ func to_server() -> bool:
 
 
 ## Writes the fields, in order (also as part of a value that holds this one).
-func write_to(_writer: HapticsWireWriter) -> void:
-	pass
+func write_to(writer: HapticsWireWriter) -> void:
+	writer.f64(wall_s)
+	writer.boolean(heard)
+	writer.f64(heard_ms)
 
 
 ## Reads the fields, in order, checking each against the schema.
-static func read_from(_reader: HapticsWireReader) -> PongNetBeatMessage:
+static func read_from(reader: HapticsWireReader) -> PongNetBeatMessage:
 	var value: PongNetBeatMessage = PongNetBeatMessage.new()
+	value.wall_s = reader.f64(&"wall_s", 0.0, PongNetFacts.NET_MAX_WALL_S)
+	value.heard = reader.boolean(&"heard")
+	value.heard_ms = reader.f64(
+		&"heard_ms", -PongNetFacts.NET_MAX_LEG_MS, PongNetFacts.NET_MAX_LEG_MS
+	)
 	return value

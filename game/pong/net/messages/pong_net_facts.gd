@@ -50,6 +50,9 @@ const NET_MAX_SERVO_TIME_S: float = 10000000.0
 ## Longest one-way delay a message may report, ms.
 const NET_MAX_LEG_MS: int = 10000
 
+## Latest system clock a heartbeat may carry, s since 1970 (the year 5138).
+const NET_MAX_WALL_S: float = 100000000000.0
+
 ## Farthest a position may lie from the court's centre, m: the largest court's corner (PongSettings'
 ## limits) is 58 m away. Each match checks its own court's box too.
 const NET_MAX_POSITION_M: float = 100.0
@@ -102,7 +105,7 @@ const MESSAGE_LABELS: Dictionary[int, String] = {
 	0xd0f4a95d: "ready",
 	0x3a3a0abd: "lobby",
 	0x374a522a: "start",
-	0xa49d8361: "heartbeat",
+	0xcd16db3a: "heartbeat",
 	0xfd7e4897: "stall notice",
 	0x93590218: "refusal",
 }
