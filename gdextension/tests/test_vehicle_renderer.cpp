@@ -1,7 +1,7 @@
 // The vehicle renderer on a wheel (renderers/vehicle/vehicle_renderer.h), in the system, stepped:
 // on a scripted skid-pad the rim force has the model's sign and size, it follows the hand at
-// every tick, it goes light as the front lets go, it fades out at standstill, the damper brakes
-// the wheel, and nothing is rendered before the game's first frame.
+// every tick, it goes light as the front lets go, it fades out at standstill, a landing's load is
+// capped, the damper brakes the wheel, and nothing is rendered before the game's first frame.
 
 #include "vehicle_test_rig.h"
 
@@ -155,6 +155,64 @@ TEST_CASE("vehicle renderer: standing still there is no aligning torque, it fade
 	frame.wheels[0].in_contact = false;
 	rig.run(500, frame);
 	CHECK(std::abs(rig.part(ALIGNING_FORCE)) < 1e-3);
+}
+
+TEST_CASE("vehicle renderer: a landing's load is capped at max_load_ratio times the reference load") {
+	// One tyre at 2 degrees, reference load 4000 N, max_load_ratio 2: the model takes at most
+	// 8000 N. The brush torque is proportional to the load at a fixed slip, so 8000 N gives
+	// twice the 4000 N figures: M_kp = 2 x -62.51 = -125.02 N m, rim force 2 x 1.4257 = 2.8514 N.
+	const VehicleConfig config; // max_load_ratio 2
+	REQUIRE(config.max_load_ratio == 2.0);
+	VehicleFrame landing = one_wheel(degrees(2.0));
+	landing.wheels[0].load_n = 12000.0; // 3x standing: a landing after a hill.
+	VehicleRig rig(config);
+	rig.run(300, landing);
+	const VehicleState capped = rig.port().state();
+	MESSAGE("12000 N landing load (3x): torque " << capped.aligning_torque_nm << " N m, rim force "
+												 << rig.part(ALIGNING_FORCE) << " N (uncapped: 4.2771 N)");
+	CHECK(capped.aligning_torque_nm == doctest::Approx(-125.02).epsilon(0.001));
+	CHECK(capped.lateral_force_n == doctest::Approx(2.0 * 1750.70).epsilon(0.001));
+	CHECK(rig.part(ALIGNING_FORCE) == doctest::Approx(2.8514).epsilon(0.002));
+	CHECK(rig.part(ALIGNING_FORCE) == doctest::Approx(expected_rim_force(config, landing, 0.0)).epsilon(0.001));
+
+	// Below the cap a load is the model's as it is: 6000 N (1.5x) gives 1.5 x the 4000 N figures.
+	VehicleFrame cornering = one_wheel(degrees(2.0));
+	cornering.wheels[0].load_n = 6000.0;
+	rig.run(300, cornering);
+	MESSAGE("6000 N load (1.5x): torque " << rig.port().state().aligning_torque_nm << " N m, rim force "
+										  << rig.part(ALIGNING_FORCE) << " N");
+	CHECK(rig.port().state().aligning_torque_nm == doctest::Approx(-93.765).epsilon(0.001));
+	CHECK(rig.part(ALIGNING_FORCE) == doctest::Approx(2.1386).epsilon(0.002));
+
+	// The setting moves the cap: at 3 the same landing is taken whole, 3 x 1.4257 = 4.2771 N.
+	VehicleConfig loose = config;
+	loose.max_load_ratio = 3.0;
+	VehicleRig uncapped(loose);
+	uncapped.run(300, landing);
+	CHECK(uncapped.port().state().aligning_torque_nm == doctest::Approx(-187.53).epsilon(0.001));
+	CHECK(uncapped.part(ALIGNING_FORCE) == doctest::Approx(4.2771).epsilon(0.002));
+}
+
+TEST_CASE("vehicle renderer: a landing's moment of 3x load pulls no harder than the cap") {
+	// Rolling at 4000 N, the load jumps to 12000 N for three 60 Hz frames and back: the rim
+	// force rises toward the capped 2.8514 N and no further, where uncapped it would near 4.28 N.
+	VehicleRig rig;
+	const VehicleFrame standing = one_wheel(degrees(2.0));
+	VehicleFrame landing = standing;
+	landing.wheels[0].load_n = 12000.0;
+	rig.run(300, standing);
+	double peak = 0.0;
+	for (int t = 0; t < 48 + 200; ++t) {
+		if (t % 16 == 0) {
+			REQUIRE(rig.port().set_frame(t < 48 ? landing : standing));
+		}
+		REQUIRE(rig.system.step(VEHICLE_DT));
+		peak = std::max(peak, rig.part(ALIGNING_FORCE));
+	}
+	MESSAGE("a 48 ms landing at 3x load: peak rim force " << peak << " N (capped 2.8514 N)");
+	CHECK(peak > 2.5); // The cap's force is reached within the 48 ms (20 Hz filter).
+	CHECK(peak <= 2.8514 * 1.002);
+	CHECK(rig.part(ALIGNING_FORCE) == doctest::Approx(1.4257).epsilon(0.002)); // Back to standing.
 }
 
 TEST_CASE("vehicle renderer: the frame's steps are filtered, the first frame is taken as it is") {

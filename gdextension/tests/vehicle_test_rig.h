@@ -13,6 +13,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -146,17 +147,19 @@ struct SkidPad {
 };
 
 // The rim force the renderer should give for p_frame with the steered wheels at p_steer_rad:
-// -peak_force / (n F_ref |M_kp|max per load) x sum M_kp, straight from the model.
+// -peak_force / (n F_ref |M_kp|max per load) x sum M_kp, straight from the model, each load
+// capped at max_load_ratio F_ref.
 inline double expected_rim_force(const VehicleConfig &p_config, const VehicleFrame &p_frame, double p_steer_rad) {
 	const BrushTyre tyre{ p_config.cornering_coefficient_per_rad, p_config.contact_half_length_m,
 		p_config.mechanical_trail_m };
+	const double max_load = p_config.max_load_ratio * p_frame.reference_load_n;
 	double torque = 0.0;
 	for (const TyreContact &contact : p_frame.wheels) {
 		const double psi = p_frame.steer_angle_rad - contact.slip_angle_rad;
 		const double fade = std::min(1.0, contact.speed_m_per_s / p_config.low_speed_m_per_s);
+		const double load = contact.in_contact ? std::min(contact.load_n, max_load) : 0.0;
 		torque += fade *
-				brush_tyre_forces(tyre, contact.in_contact ? contact.load_n : 0.0, p_steer_rad - psi, contact.grip,
-						contact.rolling_backward)
+				brush_tyre_forces(tyre, load, p_steer_rad - psi, contact.grip, contact.rolling_backward)
 						.kingpin_torque_nm;
 	}
 	const double peak = static_cast<double>(p_frame.wheels.size()) * p_frame.reference_load_n *

@@ -1,15 +1,21 @@
 extends TestSuite
 ## The road and the crashes through [HapticVehicle3D] on the drive scene's car, real physics,
 ## the door of the test's own stepped at 1 kHz of device time ([DriveRig]): a kerb's ripple at
-## the speed over its spacing, with its amplitude; one impact for one crash into the wall; a
-## refused frame; the renderer taken and given back.
+## the speed over its spacing, with its amplitude; one impact for one crash into the wall, none
+## for the chassis striking the ground on a landing; a refused frame; the renderer taken and
+## given back.
 
 ## Runs scenes for seconds: make check (--quick) leaves it out.
 const SLOW := true
 const KERB := preload("res://addons/haptics/materials/kerb.tres")
+const HapticCrashGauge := preload("res://addons/haptics/vehicle/haptic_crash_gauge.gd")
 ## A ripple is counted where it crosses these (N), both ways: the kerb's light roughness
 ## near zero makes no extra cycle.
 const HYSTERESIS_N := 0.2
+## Where the drop happens: open pad, far from the kerbs, the gravel and the wall.
+const PAD_START := Vector3(-80.0, 0.6, -20.0)
+## The car is dropped from this high over its standing place (m).
+const DROP_HEIGHT := 3.0
 
 var door: HapticsTestKit.Door = null
 var rig: DriveRig = null
@@ -96,6 +102,66 @@ func test_hitting_the_wall_rings_one_impact() -> void:
 	if crashes.size() == 1:
 		assert_gt(crashes[0], 5.0, "sized by the change of velocity: it was doing about 9 m/s")
 	assert_gt(_impact_peak, 0.5, "the wheel was kicked")
+
+
+func test_a_drop_onto_the_ground_is_no_crash() -> void:
+	# Dropped flat from DROP_HEIGHT, the car lands at 7.7 m/s: its suspensions bottom out
+	# and the chassis strikes the pad, which the driver feels in the seat, not in the wheel.
+	rig = DriveRig.new(self, door, PAD_START + Vector3.UP * DROP_HEIGHT, 0.0, false)
+	rig.cruise = false
+	var crashes: Array[float] = []
+	rig.car.haptics.crashed.connect(
+		func(_collider: Object, speed: float) -> void: crashes.append(speed)
+	)
+	rig.on_tick = _record_impact
+	var velocity_before: Vector3 = rig.car.linear_velocity
+	var touch_change: float = -1.0  # The change of velocity over the tick the chassis touched.
+	var touch_normal: Vector3 = Vector3.ZERO
+	var peak_load_ratio: float = 0.0
+	for frame_index: int in 120:
+		await rig.drive(1)
+		var change: float = (rig.car.linear_velocity - velocity_before).length()
+		velocity_before = rig.car.linear_velocity
+		var frame: HapticVehicleFrame = rig.car.haptics.last_frame
+		for wheel: HapticTyreContact in frame.wheels:
+			peak_load_ratio = maxf(peak_load_ratio, wheel.load_n / frame.reference_load_n)
+		var state: PhysicsDirectBodyState3D = PhysicsServer3D.body_get_direct_state(
+			rig.car.get_rid()
+		)
+		if touch_change < 0.0 and state.get_contact_count() > 0:
+			touch_change = change
+			touch_normal = state.get_contact_local_normal(0)
+	print(
+		(
+			(
+				"drop from %.1f m: the chassis struck the pad with %.2f m/s of change (normal %s), "
+				+ "the front loads peaked at %.2f x the reference; crashes %s, impact peak %.2f N"
+			)
+			% [DROP_HEIGHT, touch_change, touch_normal, peak_load_ratio, crashes, _impact_peak]
+		)
+	)
+	# The old rule (any new touch changing the velocity by crash_min_speed) made it a crash.
+	assert_gt(touch_change, rig.car.haptics.crash_min_speed, "struck hard enough to count")
+	assert_gt(touch_normal.y, cos(rig.car.haptics.crash_ground_angle), "from below: ground")
+	assert_true(crashes.is_empty(), "the ground is no crash")
+	assert_eq(rig.car.haptics.crashes_played, 0)
+	assert_almost_eq(_impact_peak, 0.0, 1e-9, "no impact on the wheel")
+
+
+func test_a_touch_within_45_degrees_of_up_is_ground() -> void:
+	var body: RigidBody3D = autofree(RigidBody3D.new())
+	var gauge: HapticCrashGauge = HapticCrashGauge.new(body)
+	assert_almost_eq(gauge.ground_angle_rad, deg_to_rad(45.0), 1e-9, "the default")
+	var ground: Array[bool] = []
+	for degrees: float in [0.0, 30.0, 44.0, 46.0, 60.0, 90.0, 180.0]:
+		var normal: Vector3 = Vector3.UP.rotated(Vector3.RIGHT, deg_to_rad(degrees))
+		ground.append(gauge.is_ground(normal, Vector3.UP))
+	# Flat ground, a 30 degree ramp, a steep bank are ground; a 60 degree face, a wall, a
+	# touch from above are not.
+	assert_eq(ground, [true, true, true, false, false, false, false] as Array[bool])
+	# Up is against the car's gravity: where an area turns it to +z, a floor facing +y is a wall.
+	assert_true(gauge.is_ground(Vector3.BACK, Vector3.BACK))
+	assert_false(gauge.is_ground(Vector3.UP, Vector3.BACK))
 
 
 func test_a_refused_frame_names_its_field_and_the_last_good_one_stays() -> void:

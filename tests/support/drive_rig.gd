@@ -63,7 +63,8 @@ func state() -> HapticVehicleState:
 
 
 ## The rim force the model gives for [param frame] (its wheels at their own slip angles)
-## with [param settings]: -peak_force / (n F_ref |M_kp|max per load) × sum fade × M_kp.
+## with [param settings]: -peak_force / (n F_ref |M_kp|max per load) × sum fade × M_kp, each
+## load capped at max_load_ratio × F_ref.
 static func model_rim_force(frame: HapticVehicleFrame, settings: HapticVehicleSettings) -> float:
 	var a: float = settings.contact_half_length_m
 	var trail: float = settings.mechanical_trail_m
@@ -73,10 +74,11 @@ static func model_rim_force(frame: HapticVehicleFrame, settings: HapticVehicleSe
 		a * peak_slide * rest * rest * rest
 		+ 3.0 * trail * peak_slide * (1.0 - peak_slide + peak_slide * peak_slide / 3.0)
 	)
+	var max_load: float = settings.max_load_ratio * frame.reference_load_n
 	var torque: float = 0.0
 	for wheel: HapticTyreContact in frame.wheels:
 		var fade: float = minf(1.0, wheel.speed_m_per_s / settings.low_speed_m_per_s)
-		var wheel_load: float = wheel.load_n if wheel.in_contact else 0.0
+		var wheel_load: float = minf(wheel.load_n, max_load) if wheel.in_contact else 0.0
 		torque += fade * kingpin_torque(settings, wheel_load, wheel.slip_angle_rad, wheel.grip)
 	var peak: float = frame.wheels.size() * frame.reference_load_n * peak_per_load
 	return -settings.peak_force_n / peak * torque

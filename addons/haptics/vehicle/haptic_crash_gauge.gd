@@ -7,11 +7,17 @@ extends RefCounted
 ## driver). A wheel renders that push's x, so the x is never less than half of it: a crash
 ## straight ahead yanks the wheel toward the side of the car it struck.
 ## A collider touched again within the release time is the same crash.
+## [br][br]
+## A touch whose normal lies within [member ground_angle_rad] of up (against gravity) is the
+## ground the car drives on, not a crash: the chassis bottoming out on a landing is felt in the
+## seat, not through the steering rack. A wall's or another car's side is steeper and still is.
 
 ## Below this change of velocity (m/s), a new touch is no crash (a kerb's edge, a scrape).
 var min_speed_m_per_s: float = 1.0
 ## A collider lost for less than this (s) and touched again is the same crash.
 var release_s: float = 0.3
+## A touch whose normal is within this angle of up (rad) is ground, no crash.
+var ground_angle_rad: float = deg_to_rad(45.0)
 
 var _body: RigidBody3D = null
 var _velocity_before: Vector3 = Vector3.ZERO
@@ -39,8 +45,13 @@ func crashes() -> Array[Dictionary]:
 	var state: PhysicsDirectBodyState3D = PhysicsServer3D.body_get_direct_state(_body.get_rid())
 	if state == null:
 		return out
+	var up: Vector3 = up_of(state)
 	var reported: Dictionary[int, bool] = {}
 	for i: int in state.get_contact_count():
+		# Ground touches are left out altogether, so a ground and a wall of one body (one
+		# collider) still crash on the wall however long the chassis scraped the ground.
+		if is_ground(state.get_contact_local_normal(i), up):
+			continue
 		var collider: Object = state.get_contact_collider_object(i)
 		var id: int = state.get_contact_collider_id(i)
 		if reported.has(id):
@@ -65,6 +76,18 @@ func crashes() -> Array[Dictionary]:
 		if now - _touching[id] > hold:
 			_touching.erase(id)
 	return out
+
+
+## Whether a touch along [param normal] (world, from what was touched toward the car) is the
+## ground: within [member ground_angle_rad] of [param up].
+func is_ground(normal: Vector3, up: Vector3) -> bool:
+	return normal.normalized().dot(up) >= cos(ground_angle_rad)
+
+
+## Up where the car is: against its gravity (an [Area3D] may turn it), world up when it has none.
+static func up_of(state: PhysicsDirectBodyState3D) -> Vector3:
+	var gravity: Vector3 = state.total_gravity
+	return -gravity.normalized() if not gravity.is_zero_approx() else Vector3.UP
 
 
 ## The push of a hit along [param normal] (world, from what was hit toward the car) at

@@ -11,7 +11,8 @@ extends Node
 ## servo turns them at 1 kHz into the tyres' aligning torque at the rim, which returns the
 ## wheel toward the way the car goes and goes light as the front lets go, plus the road's
 ## texture. A collider the chassis starts to touch rings an impact sized by the change of
-## velocity.
+## velocity, unless the touch comes from below (the ground, as when the car bottoms out on a
+## landing: [member crash_ground_angle]).
 ## [br][br]
 ## The game steers with [method get_steering_angle] (or [method get_steering] times its own
 ## steer limit, which must then be [member steer_lock]):
@@ -58,6 +59,10 @@ var steer_lock: float = 0.5
 @export_range(0.0, 20.0, 0.1, "suffix:m/s") var crash_min_speed: float = 1.0
 ## A collider lost for less than this and touched again is the same crash.
 @export_range(0.0, 2.0, 0.01, "suffix:s") var crash_release_s: float = 0.3
+## A touch of the chassis whose normal lies within this angle of up is the ground it drives on
+## (bottoming out on a landing), felt in the seat, not through the steering: no crash. A wall,
+## or another car's side, is steeper.
+@export_range(0.0, 90.0, 1.0, "radians_as_degrees") var crash_ground_angle: float = deg_to_rad(45.0)
 
 ## The door this node talks to: the [code]Haptics[/code] autoload unless set before it enters
 ## the tree.
@@ -209,6 +214,7 @@ func _surface_under(wheel: VehicleWheel3D) -> HapticMaterial:
 func _play_crashes() -> void:
 	_crashes.min_speed_m_per_s = crash_min_speed
 	_crashes.release_s = crash_release_s
+	_crashes.ground_angle_rad = crash_ground_angle
 	for crash: Dictionary in _crashes.crashes():
 		var collider: Object = crash["collider"]
 		var material: HapticMaterial = HapticMaterial.of(collider)

@@ -7,7 +7,7 @@ extends HapticsValue
 ## their torque is felt, the steering damper.
 
 ## This layout's id on the wire (docs/values.md): a change of any field changes it.
-const SCHEMA_ID: int = 0xda704c62
+const SCHEMA_ID: int = 0x1c7d4275
 
 ## C_F_alpha / F_z: the tyre's cornering stiffness per newton of load (a passenger car's tyre:
 ## 10-20). With grip 1 the aligning torque peaks near 3 degrees of slip and the tyre slides fully at
@@ -32,6 +32,12 @@ var low_speed_m_per_s: float = 2.0
 ## A surface's roughness is felt at full strength from this speed up, fading to none at standstill.
 ## Unit: m/s. Range [0.01, 100.0].
 var roughness_speed_m_per_s: float = 5.0
+## The most load the tyre model takes, as a multiple of the frame's reference_load_n (the car's
+## weight over its wheels): a landing that presses a suspension to three times that for a moment
+## pulls the wheel no harder than this many. 2 leaves a hard corner's load transfer and a
+## front-heavy car's standing loads untouched; 1 is the least, the average standing load. Range
+## [1.0, 20.0].
+var max_load_ratio: float = 2.0
 ## The frame's measurements (loads, the contacts' velocity directions, grip, speeds) reach the
 ## torque through a first-order low-pass at this cutoff, so the frame rate's steps are not felt; the
 ## device's own angle is not filtered. Unit: Hz. Range [1.0, 200.0].
@@ -62,6 +68,7 @@ func write_to(writer: HapticsWireWriter) -> void:
 	writer.f64(damping_n_s)
 	writer.f64(low_speed_m_per_s)
 	writer.f64(roughness_speed_m_per_s)
+	writer.f64(max_load_ratio)
 	writer.f64(input_filter_hz)
 
 
@@ -75,5 +82,6 @@ static func read_from(reader: HapticsWireReader) -> HapticVehicleSettings:
 	value.damping_n_s = reader.f64(&"damping_n_s", 0.0, 10.0)
 	value.low_speed_m_per_s = reader.f64(&"low_speed_m_per_s", 0.01, 100.0)
 	value.roughness_speed_m_per_s = reader.f64(&"roughness_speed_m_per_s", 0.01, 100.0)
+	value.max_load_ratio = reader.f64(&"max_load_ratio", 1.0, 20.0)
 	value.input_filter_hz = reader.f64(&"input_filter_hz", 1.0, 200.0)
 	return value

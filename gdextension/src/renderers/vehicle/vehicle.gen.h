@@ -203,7 +203,7 @@ static_assert(std::is_trivially_copyable_v<VehicleState>);
 // The vehicle renderer's settings: the steered tyres (the brush model's parameters), how
 // strongly their torque is felt, the steering damper.
 struct VehicleConfig {
-	static constexpr uint32_t SCHEMA_ID = 0xda704c62u;
+	static constexpr uint32_t SCHEMA_ID = 0x1c7d4275u;
 	static constexpr const char *NAME = "HapticVehicleSettings";
 
 	// C_F_alpha / F_z: the tyre's cornering stiffness per newton of load (a passenger car's tyre:
@@ -229,6 +229,12 @@ struct VehicleConfig {
 	// A surface's roughness is felt at full strength from this speed up, fading to none at
 	// standstill. Unit: m/s. Range [0.01, 100.0].
 	double roughness_speed_m_per_s{ 5.0 };
+	// The most load the tyre model takes, as a multiple of the frame's reference_load_n (the car's
+	// weight over its wheels): a landing that presses a suspension to three times that for a
+	// moment pulls the wheel no harder than this many. 2 leaves a hard corner's load transfer and
+	// a front-heavy car's standing loads untouched; 1 is the least, the average standing load.
+	// Range [1.0, 20.0].
+	double max_load_ratio{ 2.0 };
 	// The frame's measurements (loads, the contacts' velocity directions, grip, speeds) reach the
 	// torque through a first-order low-pass at this cutoff, so the frame rate's steps are not
 	// felt; the device's own angle is not filtered. Unit: Hz. Range [1.0, 200.0].
@@ -244,6 +250,7 @@ struct VehicleConfig {
 		r_visitor(FieldSpec{ .name = "damping_n_s", .min = 0.0, .max = 10.0 }, r_self.damping_n_s);
 		r_visitor(FieldSpec{ .name = "low_speed_m_per_s", .min = 0.01, .max = 100.0 }, r_self.low_speed_m_per_s);
 		r_visitor(FieldSpec{ .name = "roughness_speed_m_per_s", .min = 0.01, .max = 100.0 }, r_self.roughness_speed_m_per_s);
+		r_visitor(FieldSpec{ .name = "max_load_ratio", .min = 1.0, .max = 20.0 }, r_self.max_load_ratio);
 		r_visitor(FieldSpec{ .name = "input_filter_hz", .min = 1.0, .max = 200.0 }, r_self.input_filter_hz);
 	}
 };

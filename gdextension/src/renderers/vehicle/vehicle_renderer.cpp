@@ -77,11 +77,15 @@ void VehicleRenderer::follow_frame(double p_dt_s) {
 	const double k = filters_primed_ ? low_pass_step(config_.input_filter_hz, p_dt_s) : 1.0;
 	filters_primed_ = true;
 	steer_angle_rad_ += k * (frame_.steer_angle_rad - steer_angle_rad_);
+	// A landing presses a suspension to several times its standing load for a moment; the
+	// rack would pass that to the hand as a spike to the device's limit. Capped before the
+	// filter, so the filtered load never exceeds the cap either.
+	const double max_load = config_.max_load_ratio * frame_.reference_load_n;
 	for (size_t w = 0; w < frame_.wheels.size(); ++w) {
 		const TyreContact &contact = frame_.wheels[w];
 		Filtered &wheel = wheels_[w];
 		// A wheel in the air carries no load: it fades out and back in through the filter.
-		const double load = contact.in_contact ? contact.load_n : 0.0;
+		const double load = contact.in_contact ? std::min(contact.load_n, max_load) : 0.0;
 		wheel.velocity_angle_rad += k * ((frame_.steer_angle_rad - contact.slip_angle_rad) - wheel.velocity_angle_rad);
 		wheel.load_n += k * (load - wheel.load_n);
 		wheel.grip += k * (contact.grip - wheel.grip);

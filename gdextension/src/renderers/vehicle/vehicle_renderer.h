@@ -20,6 +20,8 @@
 // would be a spring delayed by a frame, which a stiff wheel turns into a buzz. The frame's
 // own measurements (psi, load, grip, speed) step at the frame rate and reach the model
 // through a first-order low-pass (input_filter_hz), which adds no lag to the hand's loop.
+// The load is capped first at max_load_ratio times the frame's reference load (the car's
+// weight over its wheels), so a landing's moment of three times that is no spike.
 //
 // Sign: M_kp > 0 turns the wheels left (VehicleBody3D.steering's sense), the device's +x is
 // right, so the rim force is -g M_kp: in a left turn the tyres pull the rim back to the right,
