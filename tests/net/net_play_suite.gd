@@ -16,9 +16,14 @@ class RecordingRouter:
 	extends PongNetRouter
 
 	var sent: Array[PongNetMessage] = []
+	## What the server forwarded: [origin, message] each.
+	var forwards: Array[Array] = []
 
 	func send_all(message: PongNetMessage) -> void:
 		sent.append(message)
+
+	func forward(origin: int, message: PongNetMessage) -> void:
+		forwards.append([origin, message])
 
 	func send_to(_peer: int, message: PongNetMessage) -> void:
 		sent.append(message)

@@ -1,8 +1,9 @@
 extends "res://tests/net/net_play_suite.gd"
 ## The host's check of its client master's ball ([PongNetBallCheck], issue 36 item 2), on a
 ## real stepped match with the real extension: a ball the master's states leave in another
-## territory is handed over by the host; a state its simulation cannot reach is refused,
-## counted and never played.
+## territory is handed over by the host; a state its simulation cannot reach, the new
+## master's first included (checked from the ball the host handed over), is refused, counted
+## and never played.
 
 const FRAME_S: float = 1.0 / 60.0
 ## The client's servo clock at its first state (any clock: only differences count).
@@ -15,9 +16,10 @@ func test_a_ball_the_master_leaves_in_another_territory_is_handed_over_by_the_ho
 		return
 	var epoch: int = _play.authority.epoch
 	assert_eq(_play.authority.master_peer, CLIENT, "the client is the master")
-	# The client's ball lies still in the host's territory and it asks for no hand-off.
+	# The client's ball lies still just across the border, in the host's territory (where a
+	# new master's ball may settle), and it asks for no hand-off.
 	var there: Vector3 = rest
-	there.z = -there.z
+	there.z = -signf(there.z) * 0.3
 	assert_eq(_play.match_node.court.territory_at(there), 0, "the host's territory")
 	var before: int = _router.sent_of(PongNetTransferMessage.SCHEMA_ID).size()
 	var handed_at: int = -1
@@ -63,6 +65,27 @@ func test_a_state_the_hosts_simulation_cannot_reach_is_refused_and_never_played(
 	_receive(CLIENT, _state(epoch, settled + 1, at, Vector3.ZERO))
 	assert_eq(_refused("ball state"), 1)
 	assert_eq(_play.ball.buffer.to_dict()["received"], taken + 1)
+
+
+func test_a_new_masters_ball_far_from_the_one_handed_over_is_refused_from_its_first_state() -> void:
+	var rest: Variant = _open_with_the_ball_at_the_client(FRAME_S)
+	if rest == null:
+		return
+	var epoch: int = _play.authority.epoch
+	var handed: Vector3 = rest
+	# Handed over at rest in its territory, the client streams a still ball deep in the host's
+	# (the issue's forger, as the first state of a new epoch used to be taken as it was).
+	var there: Vector3 = handed
+	there.z = -there.z
+	for frame: int in 20:
+		_receive(CLIENT, _state(epoch, frame, there, Vector3.ZERO))
+		_play.frame(FRAME_S)
+	assert_eq(_refused("ball state"), 20, "every state refused and counted")
+	assert_eq(_play.ball.buffer.to_dict()["received"], 0, "none played")
+	# Its honest ball where it was handed over is taken.
+	_receive(CLIENT, _state(epoch, 20, handed, Vector3.ZERO))
+	assert_eq(_refused("ball state"), 20)
+	assert_eq(_play.ball.buffer.to_dict()["received"], 1)
 
 
 # The client's ball state number [param index] of [param epoch], a frame apart on its clock.

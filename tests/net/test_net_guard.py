@@ -33,8 +33,9 @@ import pytest
 from flood_harness import flood_joins, missing_tools
 from guard_harness import (CONNECT_BYTES, HIT_MARK, ROGUE_SCENE, LogWatch, check_taken_over,
                            flood_connects, half_open_clients, kill_on_line, start_peer)
-from net_harness import (ROUGH, START_PATIENCE_S, Network, Peer, Relay, check_health, detection_s,
-                         engine_errors, free_udp_port, killer, logs, run_match, workspace)
+from net_harness import (DRIVER_SCENE, ROUGH, START_PATIENCE_S, Network, Peer, Relay, check_health,
+                         detection_s, engine_errors, free_udp_port, killer, logs, run_match,
+                         workspace)
 
 # The promise (docs/pong-networking.md): a dead peer is noticed within this, on any path.
 NOTICE_BOUND_S = 3.0
@@ -158,6 +159,30 @@ def test_a_master_forging_the_ball_gains_nothing_and_is_disconnected() -> None:
         assert report["refused"].get("ball state", 0) >= 1, report["refused"]
         print(f"{forged}; host's check {checked}; refused {report['refused']}; host health "
               f"{report['health']} of {report['start_health']}")
+
+
+def test_the_server_forwards_to_the_other_client_only_what_it_accepted() -> None:
+    """Clients reach each other only through the server, which forwards what it accepted:
+    the forged ball it refused never reaches the other player (Godot's own relay passed on
+    everything; in the issue 21,392 stale states in about 7 s)."""
+    with workspace() as work:
+        peers, _ = run_match(work, 2, NETWORKS["lan"], 14, dedicated=True,
+                             client_args=((), ("--rogue=forge-ball",)),
+                             client_scenes=(DRIVER_SCENE, ROGUE_SCENE))
+        server, honest, rogue = (p.report for p in peers)
+        assert "forged ball states sent" in peers[2].log(), logs(peers)
+        assert server["refused"].get("ball state", 0) >= 1, server["refused"]
+        cheat = rogue["peer"]
+        forwarded = server["forwarded"].get(f"{cheat} ball state", 0)
+        taken = honest["states_from"].get(str(cheat), 0)
+        # Of the cheat's states the honest client took only what the server forwarded (its
+        # honest ones, if it streamed any before forging), while the honest client's own
+        # states reached the cheat through the server.
+        assert taken <= forwarded, (taken, forwarded, server["forwarded"])
+        assert rogue["states_from"].get(str(honest["peer"]), 0) > 0, rogue["states_from"]
+        _no_engine_errors(peers[1])
+        print(f"server forwarded {server['forwarded']}; refused {server['refused']}; the honest "
+              f"client took {taken} of the cheat's states")
 
 
 def test_bad_messages_are_logged_once_and_the_sender_disconnected_at_the_budget() -> None:

@@ -52,7 +52,14 @@ func test_every_message_decodes_what_it_encodes_and_names_its_channel() -> void:
 	var decoders: Dictionary[int, Callable] = PongNetFacts.message_decoders()
 	assert_eq(decoders.size(), PongNetFacts.MESSAGE_LABELS.size())
 	var beat: PongNetBeatMessage = PongNetBeatMessage.new()
-	assert_eq(beat.encode().size(), 4, "a beat is its layout id")
+	beat.wall_s = 1.8e9 + 0.123456
+	var beat_back: PongNetBeatMessage = decoders[PongNetBeatMessage.SCHEMA_ID].call(beat.encode())
+	assert_eq(
+		beat_back.wall_s if beat_back != null else 0.0, beat.wall_s, "a beat's stamp, to 1 us"
+	)
+	assert_false(decoders.has(PongNetForward.ID), "a forward's id is no message's")
+	for id: int in [PongNetReliable.DATA_ID, PongNetReliable.ACK_ID]:
+		assert_false(decoders.has(id) or id == PongNetForward.ID, "%08x is taken once" % id)
 	var pose: PongNetPoseMessage = PongNetPoseMessage.new()
 	pose.seat = 1
 	pose.normal = Vector3.BACK
@@ -93,3 +100,38 @@ func test_a_flood_of_bad_packets_is_counted_not_logged_one_by_one() -> void:
 		_router.receive(CLIENT, PackedByteArray([i & 0xFF, 0xBE, 0xAD, 0xDE, 0]))
 	assert_eq(play.session.budget.count_of(CLIENT), 1000)
 	assert_eq(_refused("message"), 1000)
+
+
+func test_the_server_forwards_what_it_accepted_and_a_client_takes_forwards_from_it_only() -> void:
+	var play: PongNetPlay = _open_play()
+	if play == null:
+		return
+	var pose: PongNetPoseMessage = PongNetPoseMessage.new()
+	pose.seat = 1
+	pose.normal = Vector3.BACK
+	pose.avatar = play.match_node.avatar_of(1)
+	_router.receive(CLIENT, pose.encode())
+	assert_eq(_router.forwards.size(), 1, "the client's pose of its own seat goes on")
+	if _router.forwards.size() == 1:
+		assert_eq(_router.forwards[0][0], CLIENT, "as the client's")
+	pose.seat = 0
+	_router.receive(CLIENT, pose.encode())
+	assert_eq(_refused("pose"), 1, "a pose of the host's seat is refused")
+	assert_eq(_router.forwards.size(), 1, "and never forwarded")
+	# A client: a forward from its server is its origin's message (a pose of a seat that is
+	# not the origin's is that origin's bad message, not the server's).
+	play.session.is_server = false
+	pose.seat = 1
+	_router.receive(HOST, PongNetForward.wrap(77, pose.encode()))
+	assert_eq(play.session.budget.count_of(77), 1, "judged as peer 77's")
+	assert_eq(play.session.budget.count_of(HOST), 0, "not the server's")
+	for what: String in ["from a client", "from the server itself", "a forward in a forward"]:
+		var sender: int = CLIENT if what == "from a client" else HOST
+		var origin: int = HOST if what == "from the server itself" else 77
+		var inner: PackedByteArray = pose.encode()
+		if what == "a forward in a forward":
+			inner = PongNetForward.wrap(78, inner)
+		var before: int = play.session.budget.count_of(sender)
+		_router.receive(sender, PongNetForward.wrap(origin, inner))
+		assert_eq(play.session.budget.count_of(sender), before + 1, what)
+	assert_eq(_refused("forward"), 3, str(_report.refused))

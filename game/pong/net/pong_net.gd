@@ -361,6 +361,9 @@ func _on_lobby(sender: int, lobby: PongNetLobbyMessage) -> void:
 		session.misbehaved(sender, PongNetLobbyMessage.LABEL, reason)
 		return
 	seats = lobby.seats
+	for peer: int in players:
+		if not table.has(peer):  # Another client: the server's lobby is all we hear of it.
+			status_changed.emit("%s left" % players[peer].get("name", "peer %d" % peer))
 	players = table
 	lobby_changed.emit()
 	seats_changed()  # A player's seat given up in a match: its title says so.

@@ -47,6 +47,11 @@ var _newest_age_s: float = 0.0
 # Since when (match seconds) the played states have shown the ball outside the master's
 # territory (INF: they do not).
 var _out_since: float = INF
+# The ball the server handed over at the epoch's start ([position, velocity, spin]) and
+# when (match seconds); empty once it anchored the epoch's flight.
+var _handed: Array[Vector3] = []
+var _handed_at: float = 0.0
+var _new_match: bool = true
 
 
 func _init(court: PongCourt, judge: PongNetHurtJudge, authority: PongNetAuthority) -> void:
@@ -71,16 +76,15 @@ func note_pose(sender: int, pose: PongNetPoseMessage) -> void:
 ## [param now] (match seconds): PLAY it, REFUSE it ([member reason] says why) or DROP it
 ## (older than every state of its epoch here: not judged).
 func admit(state: PongNetBallMessage, age_s: float, now: float) -> Outcome:
-	var check: PongWitnessCheck = PongWitnessCheck.new()
-	check.epoch = state.epoch
-	check.time_s = state.time_s
-	check.position = state.position
-	check.velocity = state.velocity
-	check.spin = state.spin
-	check.age_s = clampf(age_s, 0.0, 10.0)
-	check.new_match = verdicts.is_empty()
-	check.territory = clampi(_authority.territory, 0, 3)
-	var verdict: PongWitnessVerdict = PongServo.shared().check_ball(check)
+	var age: float = clampf(age_s, 0.0, 10.0)
+	if not _handed.is_empty():
+		# The epoch's flight starts from the ball handed over, placed in the master's time
+		# by this state's age; the new master's first state is checked from there.
+		var since: float = maxf((now - age) - _handed_at, 0.001)
+		_check(state.epoch, state.time_s - since, _handed, age + since)
+		_handed = []
+	var ball: Array[Vector3] = [state.position, state.velocity, state.spin]
+	var verdict: PongWitnessVerdict = _check(state.epoch, state.time_s, ball, age)
 	if verdict == null:
 		return Outcome.PLAY  # No extension: nothing to check with.
 	var name: String = PongServoFacts.WITNESS_VERDICT_NAMES[verdict.verdict]
@@ -105,10 +109,37 @@ func admit(state: PongNetBallMessage, age_s: float, now: float) -> Outcome:
 	return Outcome.PLAY
 
 
-## A new epoch: nothing of the old master's stream counts toward a hand-off.
-func restart() -> void:
+## A new epoch, its ball [param handed] ([position, velocity, spin]) as the server handed
+## it over at [param now] (match seconds): nothing of the old master's stream counts toward
+## a hand-off, and the new master's states are checked from that ball.
+func restart(handed: Array[Vector3], now: float) -> void:
 	_newest = null
 	_out_since = INF
+	_handed = handed.duplicate()
+	_handed_at = now
+
+
+# The server's simulation's verdict on [param ball] of [param epoch] at the master's
+# [param time_s], [param age_s] old here (null without the extension).
+func _check(epoch: int, time_s: float, ball: Array[Vector3], age_s: float) -> PongWitnessVerdict:
+	var check: PongWitnessCheck = PongWitnessCheck.new()
+	check.epoch = epoch
+	check.time_s = maxf(time_s, 0.0)
+	check.position = ball[0]
+	check.velocity = ball[1]
+	check.spin = ball[2]
+	check.age_s = clampf(age_s, 0.0, 10.0)
+	check.new_match = _new_match
+	_new_match = false
+	check.territory = clampi(_authority.territory, 0, 3)
+	return PongServo.shared().check_ball(check)
+
+
+## Server: the hand-off it owes (see [method left_behind]) while a client is master, or null.
+func owed_hand_off(authority: PongNetAuthority, now: float) -> Owed:
+	if authority.is_master() or authority.master_peer == 0:
+		return null
+	return left_behind(authority.territory, now)
 
 
 ## Server, following a master of [param territory]: the hand-off the server owes, when the

@@ -19,17 +19,17 @@ func _init(session: PongNetSession) -> void:
 
 ## The delay from this peer to the server, ms (0 on the server).
 func up_ms() -> int:
-	return roundi(_legs(PongNetAuthority.SERVER_ID).x * 1000.0)
+	return roundi(_split(PongNetAuthority.SERVER_ID).x * 1000.0)
 
 
 ## The delay from the server to this peer, ms (0 on the server).
 func down_ms() -> int:
-	return roundi(_legs(PongNetAuthority.SERVER_ID).y * 1000.0)
+	return roundi(_split(PongNetAuthority.SERVER_ID).y * 1000.0)
 
 
 ## On the server: the delay from [param peer] to it, ms.
 func from_ms(peer: int) -> int:
-	return roundi(_legs(peer).y * 1000.0)
+	return roundi(_split(peer).y * 1000.0)
 
 
 ## How old a message of [param sender] stamped with its servo time [param sent_at] is, s,
@@ -51,5 +51,5 @@ func age_of(on_server: bool, sender: int, sent_at: float, reported_leg_ms: int =
 
 
 # The round trip to [param peer] split into the delay towards it (x) and from it (y), s.
-func _legs(peer: int) -> Vector2:
+func _split(peer: int) -> Vector2:
 	return _session.pulse.legs.split(peer, _session.round_trip_s(peer))

@@ -22,7 +22,7 @@ signal finished(winner: int)
 ## This peer, the master, sent a ball state.
 signal ball_state_sent
 ## A state of the master's ball was taken into the jitter buffer, [param age_s] old.
-signal ball_state_taken(age_s: float)
+signal ball_state_taken(sender: int, age_s: float)
 ## A state of the master's ball came too late to play (an old epoch or one the play passed).
 signal ball_state_late
 ## A transfer was applied ([param transfer]: epoch, kind, territory, master); the ball here
@@ -153,7 +153,10 @@ func frame(delta: float) -> void:
 	_last_now = match_node.now
 	if authority.my_id == PongNetAuthority.SERVER_ID:
 		_referee(sim_dt)
-		_hand_over_left_ball()
+		var owed: PongNetBallCheck.Owed = ball_check.owed_hand_off(authority, match_node.now)
+		if owed != null:
+			var handoff: PongNetFacts.TransferKind = PongNetFacts.TransferKind.HANDOFF
+			issue(handoff, owed.territory, owed.position, owed.velocity, owed.spin, owed.age_ms)
 	if authority.is_master() and snapshot.time_s > _settle_until:
 		if snapshot.territory != authority.territory:
 			_hand_off(snapshot)
@@ -231,16 +234,6 @@ func issue(
 	_on_transfer(authority.my_id, transfer)
 
 
-# Server: a ball the master's states left in another territory is handed over.
-func _hand_over_left_ball() -> void:
-	if authority.is_master() or authority.master_peer == 0:
-		return
-	var owed: PongNetBallCheck.Owed = ball_check.left_behind(authority.territory, match_node.now)
-	if owed != null:
-		var kind: PongNetFacts.TransferKind = PongNetFacts.TransferKind.HANDOFF
-		issue(kind, owed.territory, owed.position, owed.velocity, owed.spin, owed.age_ms)
-
-
 # The master's ball crossed into another territory: it asks the server for the hand-off,
 # with the ball as it gives it (the corrected one: a hand-off's correction may still be
 # gliding in).
@@ -309,6 +302,7 @@ func _on_ball(sender: int, state: PongNetBallMessage) -> void:
 			_reject(sender, PongNetBallMessage.LABEL, ball_check.reason)
 		if outcome != PongNetBallCheck.Outcome.PLAY:
 			return
+	session.router.forward(sender, state)
 	var buffered: PongNetBallBuffer.State = PongNetBallBuffer.State.new(
 		state.seq, state.time_s, [state.position, state.velocity, state.spin], arrival, age
 	)
@@ -316,7 +310,7 @@ func _on_ball(sender: int, state: PongNetBallMessage) -> void:
 	if taken == PongNetBallBuffer.Taken.DUPLICATE or taken == PongNetBallBuffer.Taken.LATE:
 		ball_state_late.emit()
 		return
-	ball_state_taken.emit(age)
+	ball_state_taken.emit(sender, age)
 
 
 func _on_request(sender: int, request: PongNetHandOffMessage) -> void:
@@ -363,13 +357,13 @@ func _on_transfer(sender: int, transfer: PongNetTransferMessage) -> void:
 		_reject(sender, PongNetTransferMessage.LABEL, reason)
 		return
 	ball.restart()
-	if ball_check != null:
-		ball_check.restart()
 	_master_velocity = Vector3.INF
 	var age: float = (transfer.age_ms + _latency.down_ms()) / 1000.0
 	var target: Array[Vector3] = PongNetSmoother.extrapolate(
 		_predictor, transfer.position, transfer.velocity, _gravity(), age
 	)
+	if ball_check != null:
+		ball_check.restart([target[0], target[1], transfer.spin], match_node.now)
 	transferred.emit(authority.history[-1], (target[0] - ball.local()[0]).length())
 	var serve: bool = transfer.kind == PongNetFacts.TransferKind.SERVE
 	ball.transfer(serve, [target[0], target[1], transfer.spin], age, PongNetBall.clock_s())

@@ -85,6 +85,7 @@ func on_pose(sender: int, pose: PongNetPoseMessage) -> void:
 	if not reason.is_empty():
 		_reject.call(sender, PongNetPoseMessage.LABEL, reason)
 		return
+	_router.forward(sender, pose)
 	var controller: PongController = _match.controllers[pose.seat]
 	if not controller is PongNetRemotePlayer:
 		return

@@ -25,6 +25,9 @@ extends Node
 ## [br]Once a peer has been heard from, the reliable channel's messages to it go through
 ## [member reliable] ([PongNetReliable]) as unreliable datagrams with resends of our own:
 ## ENet's reliable channels stalled for as long as a Wi-Fi hiccup had lasted, or longer.
+## [br]A client's message to every peer reaches the server only; the node that accepts it
+## there forwards it to the other clients ([method forward], [PongNetForward]), so what the
+## server refused never reaches them.
 
 ## Where bad messages are counted, and whether this peer is the server: the session the
 ## router is a child of.
@@ -33,6 +36,8 @@ var session: PongNetSession = null
 ## The reliable channel's messages to a peer heard from travel through it
 ## ([PongNetReliable]: resends that never wait longer than a quarter of a second).
 var reliable: PongNetReliable = PongNetReliable.new()
+## Server: the messages forwarded, per origin and kind ("ORIGIN LABEL"), for a test's report.
+var forwarded: Dictionary[String, int] = {}
 
 var _decoders: Dictionary[int, Callable] = PongNetFacts.message_decoders()
 var _handlers: Dictionary[int, Callable] = {}
@@ -78,7 +83,7 @@ func forget(listener: Object) -> void:
 			_handlers.erase(schema_id)
 
 
-## Sends [param message] to every other peer (a client's goes through the server's relay).
+## Sends [param message] to every other peer (a client's to the server, which forwards it).
 func send_all(message: PongNetMessage) -> void:
 	if not _connected():
 		return
@@ -108,6 +113,19 @@ func send_to(peer: int, message: PongNetMessage) -> void:
 		_send(message, peer)
 
 
+## Server: sends [param message], which the client [param origin] sent to every peer and the
+## node that owns its state accepted, on to the other clients, on its own channel.
+func forward(origin: int, message: PongNetMessage) -> void:
+	if not _connected() or not session.is_server or origin == PongNetAuthority.SERVER_ID:
+		return
+	var packet: PackedByteArray = PongNetForward.wrap(origin, message.encode())
+	var key: String = "%d %s" % [origin, message.label()]
+	forwarded[key] = forwarded.get(key, 0) + 1
+	for peer: int in multiplayer.get_peers():
+		if peer != origin:
+			_send_packet(packet, peer, message.channel(), message.transfer_mode())
+
+
 ## A raw packet from [param sender] ([signal SceneMultiplayer.peer_packet]).
 func receive(sender: int, packet: PackedByteArray) -> void:
 	_heard[sender] = true
@@ -121,6 +139,9 @@ func receive(sender: int, packet: PackedByteArray) -> void:
 
 # A message's bytes from [param sender], decoded, checked and handed to its handler.
 func _dispatch(sender: int, packet: PackedByteArray) -> void:
+	if PongNetForward.owns(packet):
+		_unwrap(sender, packet)
+		return
 	if packet.size() < 4:
 		_bad(sender, "message", "%d bytes: no layout id" % packet.size())
 		return
@@ -145,19 +166,36 @@ func _dispatch(sender: int, packet: PackedByteArray) -> void:
 		handler.call(sender, message)
 
 
+# A forward from [param sender]: its message, dispatched as its origin's.
+func _unwrap(sender: int, packet: PackedByteArray) -> void:
+	var origin: int = PongNetForward.origin_of(packet)
+	var inner: PackedByteArray = PongNetForward.inner(packet)
+	var why: String = ""
+	if session.is_server or sender != PongNetAuthority.SERVER_ID:
+		why = "only the server forwards messages"
+	elif origin <= PongNetAuthority.SERVER_ID or origin == multiplayer.get_unique_id():
+		why = "forwarded from peer %d" % origin
+	elif PongNetForward.owns(inner):
+		why = "a forward inside a forward"
+	if not why.is_empty():
+		_bad(sender, "forward", why)
+		return
+	_dispatch(origin, inner)
+
+
 func _send(message: PongNetMessage, peer: int) -> void:
+	_send_packet(message.encode(), peer, message.channel(), message.transfer_mode())
+
+
+func _send_packet(packet: PackedByteArray, peer: int, channel: int, mode: int) -> void:
 	var api: SceneMultiplayer = multiplayer as SceneMultiplayer
-	var ours: bool = message.channel() == PongNetFacts.NET_CHANNEL_RELIABLE
-	if ours and _heard.has(peer):
-		reliable.send(peer, message.encode(), _now_s())
+	if channel == PongNetFacts.NET_CHANNEL_RELIABLE and _heard.has(peer):
+		reliable.send(peer, packet, _now_s())
 	elif peer == MultiplayerPeer.TARGET_PEER_BROADCAST or _heard.has(peer):
-		api.send_bytes(message.encode(), peer, message.transfer_mode(), message.channel())
-	elif message.transfer_mode() == MultiplayerPeer.TRANSFER_MODE_RELIABLE:
+		api.send_bytes(packet, peer, mode, channel)
+	elif mode == MultiplayerPeer.TRANSFER_MODE_RELIABLE:
 		api.send_bytes(
-			message.encode(),
-			peer,
-			MultiplayerPeer.TRANSFER_MODE_RELIABLE,
-			PongNetFacts.NET_CHANNEL_HANDSHAKE
+			packet, peer, MultiplayerPeer.TRANSFER_MODE_RELIABLE, PongNetFacts.NET_CHANNEL_HANDSHAKE
 		)
 
 
@@ -175,13 +213,9 @@ func _greet(peer: int) -> void:
 		)
 
 
-# The round trip to [param peer]: another client is two of the server's legs away.
+# The round trip to [param peer] (a client reaches only its server).
 func _round_trip_s(peer: int) -> float:
-	if session == null:
-		return 0.0
-	if session.is_server or peer == PongNetAuthority.SERVER_ID:
-		return session.round_trip_s(peer)
-	return 2.0 * session.round_trip_s(PongNetAuthority.SERVER_ID)
+	return session.round_trip_s(peer) if session != null else 0.0
 
 
 # One of our reliable packets, unreliably, on the reliable channel.

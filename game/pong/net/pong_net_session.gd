@@ -211,6 +211,8 @@ func _install() -> void:
 	var api: SceneMultiplayer = _api()
 	api.auth_callback = _on_auth
 	api.auth_timeout = PongNetProtocol.AUTH_TIMEOUT_S
+	# Clients reach each other through the router's forwards only (PongNetForward).
+	api.server_relay = false
 	_wire(api, true)
 	api.multiplayer_peer = _peer
 

@@ -155,6 +155,7 @@ func on_bullet(sender: int, shot: PongNetBulletMessage) -> void:
 		_reject.call(sender, PongNetBulletMessage.LABEL, reason)
 		return
 	_take_shot(shot)
+	router.forward(sender, shot)
 	if _resolve_pending(_key(PongNetFacts.WeaponCause.BULLET, shot.seat, shot.id)):
 		return  # It has already hit its victim.
 	# Where it is by now: it flew on for the message's age.
@@ -194,6 +195,7 @@ func on_mine(sender: int, placed: PongNetMineMessage) -> void:
 		_reject.call(sender, PongNetMineMessage.LABEL, reason)
 		return
 	_take_mine(mine)
+	router.forward(sender, placed)
 	match_node.mine_placed.emit(mine)
 	_resolve_pending(_key(PongNetFacts.WeaponCause.MINE, placed.seat, placed.id))
 
@@ -242,6 +244,7 @@ func on_hurt(sender: int, hurt_message: PongNetWeaponHurtMessage) -> void:
 		_reject.call(sender, PongNetWeaponHurtMessage.LABEL, reason)
 		return
 	_spent[key] = true
+	router.forward(sender, hurt_message)
 	var bullet: bool = hurt_message.cause == PongNetFacts.WeaponCause.BULLET
 	match_node.rules.hurt(hurt_seat, PongRules.CAUSE_BULLET if bullet else PongRules.CAUSE_MINE)
 	hurts.append([hurt_seat, what, weapon_seat, weapon_id])

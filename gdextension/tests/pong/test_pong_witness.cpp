@@ -289,6 +289,37 @@ TEST_CASE("ball witness: the issue's forged ball bouncing in the opponent's terr
 	CHECK(forged.floors.size() >= 2);
 }
 
+TEST_CASE("ball witness: a master back from a silence with the ball far from its territory is not anchored there") {
+	PongConfig config;
+	Master honest;
+	honest.sim.configure(config);
+	honest.sim.set_input(idle_input());
+	honest.sim.apply(set_ball({ 0.2, 1.0, 1.2 }, { 0.0, 0.0, 0.5 }));
+	honest.run(200);
+	// Silent past WITNESS_MAX_GAP_S, then a ball of its own making in territory 1: each state
+	// is old (not played, no anchor to forge from), however long it goes on.
+	Master forged;
+	forged.sim.configure(config);
+	forged.sim.set_input(idle_input());
+	forged.sim.apply(set_ball({ 0.4, 1.2, -2.0 }, { 0.0, 0.0, 0.0 }));
+	forged.run(1000);
+	BallWitness witness;
+	judge(witness, honest, config);
+	const double shift = honest.sent.back().time_s + WITNESS_MAX_GAP_S + 0.5 - forged.sent.front().time_s;
+	size_t old = 0;
+	for (PongWitnessCheck check : forged.sent) {
+		check.time_s += shift;
+		check.territory = 0;
+		old += witness.check(check, check.time_s + AGE_S, config, false).verdict == WitnessVerdict::OLD ? 1 : 0;
+	}
+	CHECK(old == forged.sent.size());
+	// The same silence with the ball back in its own territory starts a flight there.
+	PongWitnessCheck back = forged.sent.back();
+	back.time_s += shift + 0.008;
+	back.position = { 0.4, 1.0, 1.5 };
+	CHECK(witness.check(back, back.time_s + AGE_S, config, false).verdict == WitnessVerdict::ANCHOR);
+}
+
 TEST_CASE("ball witness: reordered states are checked from the state before them, old ones are not judged") {
 	PongConfig config;
 	Master master;

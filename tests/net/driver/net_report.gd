@@ -13,6 +13,8 @@ var winner: int = -1
 ## Ball states sent (as master), taken, stale ones dropped, poses taken.
 var sent: int = 0
 var states: int = 0
+## States taken, per sender.
+var states_from: Dictionary[int, int] = {}
 var late: int = 0
 var poses: int = 0
 ## Age estimate of each state taken, seconds.
@@ -75,8 +77,9 @@ func _on_bad_message(_peer: int, what: String, _reason: String) -> void:
 	refused[what] = refused.get(what, 0) + 1
 
 
-func _on_state_taken(age_s: float) -> void:
+func _on_state_taken(sender: int, age_s: float) -> void:
 	states += 1
+	states_from[sender] = states_from.get(sender, 0) + 1
 	ages.append(age_s)
 
 
@@ -141,6 +144,8 @@ func to_dict() -> Dictionary:
 		"winner": winner,
 		"sent": sent,
 		"states": states,
+		"states_from": states_from,
+		"forwarded": _play.session.router.forwarded,
 		"late": late,
 		"poses": poses,
 		"age_p50_s": PongNetSmoother.quantile(ages, 0.5),

@@ -13,7 +13,7 @@ extends "res://tests/net/driver/net_peer.gd"
 ## [constant FORGED] floor bounces that cost the host's seat a point (and tells every peer so
 ## directly). None may cost the host anything.
 ## [br]- [code]forge-ball[/code]: the issue's second cheat: once the ball's master, it stops
-## its real stream and streams a ball of its own making instead, bouncing in the host's
+## its real stream and streams a ball of its own making instead, bouncing in the other seat's
 ## territory every [constant FORGED_BOUNCE_S] (states consistent among themselves, newer than
 ## the real stream's), and claims each bounce. The server's check of the ball must refuse
 ## every state and claim and disconnect it at the budget.
@@ -32,7 +32,8 @@ const EVERY_S: float = 0.5
 ## Forged floor claims in all, and at most this many a frame.
 const FORGED: int = 120
 const FORGED_PER_FRAME: int = 10
-## The forged ball's bounce period, s, and where it bounces (the host's territory).
+## The forged ball's bounce period, s, and where it bounces (in seat 0's territory; mirrored into
+## seat 1's when the rogue drives seat 0).
 const FORGED_BOUNCE_S: float = 0.6
 const FORGED_SPOT: Vector3 = Vector3(0.4, 0.0, 1.5)
 const HIT_MARK: String = "PongNet rogue: my paddle hit the ball, I am the master"
@@ -104,8 +105,8 @@ func _forge(play: PongNetPlay) -> void:
 	print("PongNet rogue: %d forged floor hurts sent" % _forged)
 
 
-# While master: its real stream stopped, a forged ball bouncing in the host's territory,
-# each bounce claimed.
+# While master: its real stream stopped, a forged ball bouncing in the other seat's
+# territory, each bounce claimed.
 func _forge_ball(play: PongNetPlay, delta: float) -> void:
 	if not play.authority.is_master():
 		return
@@ -126,13 +127,15 @@ func _forge_ball(play: PongNetPlay, delta: float) -> void:
 	_forged_states += 1
 	state.seq = (1 << 24) + _forged_states
 	state.time_s = play.match_node.snapshot.time_s
-	state.position = FORGED_SPOT + Vector3(0.0, radius + up * since - 0.5 * g * since * since, 0.0)
+	var victim: int = 1 - _mine(play)
+	var spot: Vector3 = FORGED_SPOT * Vector3(1.0, 1.0, 1.0 if victim == 0 else -1.0)
+	state.position = spot + Vector3(0.0, radius + up * since - 0.5 * g * since * since, 0.0)
 	state.velocity = Vector3(0.0, up - g * since, 0.0)
 	play.session.router.send_all(state)
 	if before >= 0.0 and floori(_forging_s / FORGED_BOUNCE_S) > floori(before / FORGED_BOUNCE_S):
 		var claim: PongNetFloorClaimMessage = PongNetFloorClaimMessage.new()
 		claim.epoch = play.authority.epoch
-		claim.victim = 0
+		claim.victim = victim
 		play.session.router.send_to(PongNetAuthority.SERVER_ID, claim)
 	if _forged_states % 25 == 1:
 		print("PongNet rogue: %d forged ball states sent" % _forged_states)

@@ -135,8 +135,15 @@ PongWitnessVerdict BallWitness::check(const PongWitnessCheck &p_check, double p_
 	const Kept *previous = before(p_check.time_s, false);
 	const Kept *from = before(p_check.time_s, true);
 	const double seen = std::max(latest_seen_s_, previous ? previous->time_s : -1.0);
+	const bool after_gap = previous != nullptr && p_check.time_s - seen > WITNESS_MAX_GAP_S;
+	if (after_gap && !near_territory(p_check.position, p_check.territory, p_config.players)) {
+		// Back from a silence with the ball far from its own territory: nothing to check it
+		// from, and no anchor (a forger's way in); an honest master's hand-off is on its way.
+		verdict.verdict = WitnessVerdict::OLD;
+		return verdict;
+	}
 	latest_seen_s_ = std::max(latest_seen_s_, p_check.time_s);
-	if (kept_count_ == 0 || (previous != nullptr && p_check.time_s - seen > WITNESS_MAX_GAP_S)) {
+	if (kept_count_ == 0 || after_gap) {
 		if (kept_count_ == 0) {
 			epoch_start_s_ = p_check.time_s;
 		}

@@ -22,16 +22,19 @@
 //                within what the ball can fly at max_ball_speed from there: a new flight;
 //   unreachable  neither, or a second state of a moment already kept that is not the same:
 //                the state is refused and not kept;
-//   anchor       the first of an epoch (the new master's ball is its follower copy, which on a
-//                rough path is metres from ours), the first after WITNESS_MAX_GAP_S in which
-//                the master sent nothing, or within WITNESS_SETTLE_S of the epoch's first a
+//   anchor       the first of an epoch (the server gives it the ball it handed over, placed
+//                in the master's time by the first state's age: the new master's own states
+//                are then checked from there), the first after WITNESS_MAX_GAP_S in which
+//                the master sent nothing if it lies in or near the master's own territory
+//                (else old: a forger's way in), or within WITNESS_SETTLE_S of the epoch's first a
 //                state neither flown nor struck that lies in the master's own territory or
 //                within WITNESS_SETTLE_MARGIN_M of it (one whose vertical velocity turned up
 //                against a falling flight, in the master's own territory, is reported as a
 //                floor bounce there: the corrected ball it streams is lifted by what is left
 //                to blend in, and never reaches the floor itself):
 //                taken as it is, a flight's start;
-//   old          no state of its epoch before it, or a copy of one kept: not judged.
+//   old          no state of its epoch before it, a copy of one kept, or one back from a
+//                silence far from the master's territory: not judged, not played.
 // Game thread only; the paddle history is fed once a frame (note_paddles).
 
 #include "core/base/vec3.h"
