@@ -211,9 +211,10 @@ def check_taken_over(report: dict, seat: int = 1) -> None:
     assert later[0]["wall_s"] - left[0]["wall_s"] < 0.5, (later[0], left[0])
     assert all(t["master"] == 1 for t in later), later
     assert all(c == "computer" for c in report["controllers"]), report["controllers"]
-    assert len(later) >= 3, later
     # The rally goes on: the ball travels the court (a low hit skims the floor at 0.07-0.28 m
-    # while it crosses from one end to the other, so its height alone does not tell).
+    # while it crosses from one end to the other, so its height alone does not tell). Counting
+    # transfers does not tell: with both seats the server's, only a serve makes one, and one
+    # rally of the two computers lasted the 11 s the match had left.
     moving = [s for s in report["samples"] if s[0] > left[0]["wall_s"] + 1.0]
     travel = max((max(s[i] for s in moving) - min(s[i] for s in moving) for i in (2, 3, 4)),
                  default=0.0)

@@ -176,10 +176,11 @@ def test_the_server_forwards_to_the_other_client_only_what_it_accepted() -> None
         forwarded = server["forwarded"].get(f"{cheat} ball state", 0)
         taken = honest["states_from"].get(str(cheat), 0)
         # Of the cheat's states the honest client took only what the server forwarded (its
-        # honest ones, if it streamed any before forging), while the honest client's own
-        # states reached the cheat through the server.
+        # honest ones, if it streamed any before forging), while the honest client's poses
+        # reached the cheat through the server.
         assert taken <= forwarded, (taken, forwarded, server["forwarded"])
-        assert rogue["states_from"].get(str(honest["peer"]), 0) > 0, rogue["states_from"]
+        assert server["forwarded"].get(f"{honest['peer']} pose", 0) > 0, server["forwarded"]
+        assert rogue["poses"] > 0, rogue
         _no_engine_errors(peers[1])
         print(f"server forwarded {server['forwarded']}; refused {server['refused']}; the honest "
               f"client took {taken} of the cheat's states")
