@@ -76,6 +76,20 @@ size_t count(const std::vector<PongWitnessVerdict> &p_verdicts, WitnessVerdict p
 			[&](const PongWitnessVerdict &p_verdict) { return p_verdict.verdict == p_kind; }));
 }
 
+// An honest master's stream (a ball flying in territory 0), then a cheater's of p_ticks: a
+// ball of its own making bouncing in place in territory 1, its states consistent among
+// themselves.
+void honest_then_forged(const PongConfig &p_config, int p_ticks, Master &r_honest, Master &r_forged) {
+	r_honest.sim.configure(p_config);
+	r_honest.sim.set_input(idle_input());
+	r_honest.sim.apply(set_ball({ 0.2, 1.0, 1.2 }, { 0.0, 0.0, 0.5 }));
+	r_honest.run(200);
+	r_forged.sim.configure(p_config);
+	r_forged.sim.set_input(idle_input());
+	r_forged.sim.apply(set_ball({ 0.4, 1.2, -2.0 }, { 0.0, 0.0, 0.0 }));
+	r_forged.run(p_ticks);
+}
+
 double worst_miss(const std::vector<PongWitnessVerdict> &p_verdicts) {
 	double worst = 0.0;
 	for (const PongWitnessVerdict &verdict : p_verdicts) {
@@ -260,18 +274,10 @@ TEST_CASE("ball witness: while a new master's ball settles a jump in its own ter
 
 TEST_CASE("ball witness: the issue's forged ball bouncing in the opponent's territory is refused, bounces and all") {
 	PongConfig config;
+	// The cheater's ball bounces in territory 1 for 1.8 s (past WITNESS_MAX_GAP_S).
 	Master honest;
-	honest.sim.configure(config);
-	honest.sim.set_input(idle_input());
-	honest.sim.apply(set_ball({ 0.2, 1.0, 1.2 }, { 0.0, 0.0, 0.5 }));
-	honest.run(200);
-	// The cheater then sends a ball of its own making, bouncing in territory 1 for 1.8 s (past
-	// WITNESS_MAX_GAP_S), its states consistent among themselves.
 	Master forged;
-	forged.sim.configure(config);
-	forged.sim.set_input(idle_input());
-	forged.sim.apply(set_ball({ 0.4, 1.2, -2.0 }, { 0.0, 0.0, 0.0 }));
-	forged.run(1800);
+	honest_then_forged(config, 1800, honest, forged);
 	BallWitness witness;
 	judge(witness, honest, config);
 	const double shift = honest.sent.back().time_s + 0.008 - forged.sent.front().time_s;
@@ -291,18 +297,11 @@ TEST_CASE("ball witness: the issue's forged ball bouncing in the opponent's terr
 
 TEST_CASE("ball witness: a master back from a silence with the ball far from its territory is not anchored there") {
 	PongConfig config;
+	// Silent past WITNESS_MAX_GAP_S, then its forged ball: each state is old (not played, no
+	// anchor to forge from), however long it goes on.
 	Master honest;
-	honest.sim.configure(config);
-	honest.sim.set_input(idle_input());
-	honest.sim.apply(set_ball({ 0.2, 1.0, 1.2 }, { 0.0, 0.0, 0.5 }));
-	honest.run(200);
-	// Silent past WITNESS_MAX_GAP_S, then a ball of its own making in territory 1: each state
-	// is old (not played, no anchor to forge from), however long it goes on.
 	Master forged;
-	forged.sim.configure(config);
-	forged.sim.set_input(idle_input());
-	forged.sim.apply(set_ball({ 0.4, 1.2, -2.0 }, { 0.0, 0.0, 0.0 }));
-	forged.run(1000);
+	honest_then_forged(config, 1000, honest, forged);
 	BallWitness witness;
 	judge(witness, honest, config);
 	const double shift = honest.sent.back().time_s + WITNESS_MAX_GAP_S + 0.5 - forged.sent.front().time_s;
