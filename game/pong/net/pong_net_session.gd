@@ -143,7 +143,7 @@ func round_trip_s(peer: int) -> float:
 	if _peer == null or peer == multiplayer.get_unique_id():
 		return 0.0
 	if not is_server and peer != PongNetAuthority.SERVER_ID:
-		return 0.0  # Another client, reached through the server's relay: no path of ours.
+		return 0.0  # Another client, reached only through the server's forwards: no path of ours.
 	var packet_peer: ENetPacketPeer = _peer.get_peer(peer)
 	if packet_peer == null:
 		return 0.0

@@ -22,7 +22,7 @@ extends PongWeaponReferee
 ## in or next to its territory, a bullet whose flight crosses it; from the weapon's own
 ## message, so every peer judges alike) and hurts only once. A bad one is dropped and
 ## counted against its sender. A hurt may overtake its weapon: the two come from different
-## peers, each in order on its own path (a client's through the server's relay), so the
+## peers, each in order on its own path (a client's forwarded by the server), so the
 ## victim's word can come before a shot held up on the shooter's path by a lost packet. Such a
 ## hurt waits up to [constant PENDING_HURT_S] for its weapon.
 
