@@ -100,13 +100,18 @@ pong-demo: import
 ## Any failure fails the target; each suite's seconds are printed at the end. While the first
 ## suites run, test-ahead prepares what later ones need on the other core, and is done before
 ## the suites that measure time begin (tools/ci/run-suites.sh).
-TEST_SUITES := test-native test-godot lint test-schema test-analysis test-net test-export \
-	test-export-server test-dist test-windowed test-person test-addon test-editor test-kernel \
-	test-rt test-bare test-windows
-# The first suite that measures time (processes, sockets, windows): test-ahead is over by then.
-TEST_TIMED_FROM := test-net
+TEST_SUITES := test-native test-godot lint test-schema test-analysis export test-net \
+	test-windowed test-person test-rt
+# test-ahead is over before the export (it builds the release library the export bundles),
+# and so before the first suite that measures time (processes, sockets, windows). The export
+# comes first as the person plays it too. Then two lanes side by side: the VM tests (their bounds keep a core), and the packages' suites niced
+# beside them (they share the exports; none measures time).
+TEST_LANE_VM := test-kernel
+TEST_LANE_PACKAGES := test-export test-export-server test-dist test-addon test-editor test-bare \
+	test-windows
 test: import
-	@tools/ci/run-suites.sh --ahead test-ahead --timed-from $(TEST_TIMED_FROM) $(TEST_SUITES)
+	@tools/ci/run-suites.sh --ahead test-ahead --join-before export \
+		--lanes "$(TEST_LANE_VM)" "$(TEST_LANE_PACKAGES)" $(TEST_SUITES)
 	@echo "make test: all suites passed"
 
 ## test-ahead: the builds and downloads later suites need, made ahead
@@ -147,9 +152,9 @@ test-windows: build build-windows
 	@nice -n 19 tools/windows/test.sh
 
 ## test-godot: every GDScript suite, headless, with the real extension
+## Two runners side by side, each on every other file (tools/ci/godot-shards.sh).
 test-godot: import
-	@$(GODOT) --headless --path . res://tests/runner/runner.tscn -- --warnings-as-errors \
-		--junit=$(BUILD)/godot-tests.xml $(TEST_ARGS)
+	@tools/ci/godot-shards.sh 2 --warnings-as-errors $(TEST_ARGS)
 
 ## test-windowed: the game in a window (Xvfb) under its autopilot, then its menu
 ## A few seconds under the autopilot, then the product's main menu under its system check; fails

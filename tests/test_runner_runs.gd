@@ -156,6 +156,27 @@ func test_filters_select_files_and_tests() -> void:
 	)
 
 
+func test_shards_split_the_files_between_them() -> void:
+	var suites: Array[String] = ["test_fixture_failing::", "test_fixture_failing_before_all::"]
+	for shard: int in 2:
+		var run: Run = _run_runner(
+			["--dir=res://tests/fixtures/failing", "--shard=%d/2" % (shard + 1)]
+		)
+		assert_eq(run.exit_code, 1, run.describe())
+		for other: int in 2:
+			var lines: int = 0
+			for line: String in run.lines:
+				if line.contains(" " + suites[other]):
+					lines += 1
+			assert_eq(
+				lines > 0,
+				other == shard,
+				"shard %d, %s\n%s" % [shard + 1, suites[other], run.describe()]
+			)
+	var bad: Run = _run_runner(["--dir=res://tests/fixtures/failing", "--shard=3/2"])
+	assert_eq(bad.exit_code, 2, bad.describe())
+
+
 func test_no_test_run_is_a_failure() -> void:
 	var run: Run = _run_runner(["--dir=res://tests/fixtures/passing", "--test=no_such_test"])
 	assert_eq(run.exit_code, 1, run.describe())

@@ -76,12 +76,31 @@ OCR_VARIANTS = (("light", ["-colorspace", "Gray", "-threshold", "65%", "-negate"
                 ("gray3x", ["-colorspace", "Gray", "-negate", "-resize", "300%"], 3))
 
 
-def read_words(shot: Path, variant: tuple[str, list[str], int], scratch: Path) -> list[Word]:
-    """The words one look finds on a screenshot, with their boxes in screen pixels."""
+@dataclass
+class Region:
+    """A part of the screen a person glances at (where a text stood a moment ago)."""
+
+    left: int
+    top: int
+    width: int
+    height: int
+
+    @staticmethod
+    def around(box: Box, pad_x: int = 60, pad_y: int = 16) -> "Region":
+        left, top = max(0, box.left - pad_x), max(0, box.top - pad_y)
+        return Region(left, top, box.right + pad_x - left, box.bottom + pad_y - top)
+
+
+def read_words(shot: Path, variant: tuple[str, list[str], int], scratch: Path,
+               region: Region | None = None) -> list[Word]:
+    """The words one look finds on a screenshot (or on a region of it), with their boxes in
+    screen pixels."""
     label, args, scale = variant
     # An uncompressed picture: writing a PNG three times the screen's size took 1.5-3 s.
     prepared = scratch / f"ocr-{label}.pgm"
-    subprocess.run(["convert", str(shot), *args, str(prepared)], check=True, timeout=60)
+    crop = [] if region is None else [
+        "-crop", f"{region.width}x{region.height}+{region.left}+{region.top}", "+repage"]
+    subprocess.run(["convert", str(shot), *crop, *args, str(prepared)], check=True, timeout=60)
     # One thread: the machine is shared, and tesseract's threads gain nothing on a screen.
     out = subprocess.run(["tesseract", str(prepared), "-", "--psm", "11", "tsv"],
                          env={**os.environ, "OMP_THREAD_LIMIT": "1"}, check=True,
@@ -92,5 +111,7 @@ def read_words(shot: Path, variant: tuple[str, list[str], int], scratch: Path) -
         if len(cols) < 12 or not cols[11].strip() or float(cols[10]) < 40:
             continue
         left, top, width, height = (int(int(c) / scale) for c in cols[6:10])
+        if region is not None:
+            left, top = left + region.left, top + region.top
         words.append(Word(cols[11], left, top, width, height, float(cols[10])))
     return words

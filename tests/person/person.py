@@ -22,7 +22,7 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from ocr import OCR_VARIANTS, Box, Word, norm, phrase_boxes, read_words
+from ocr import OCR_VARIANTS, Box, Region, Word, norm, phrase_boxes, read_words
 
 ROOT = Path(__file__).resolve().parents[2]
 GODOT = ROOT / "tools" / "godot"
@@ -35,6 +35,9 @@ FIND_PATIENCE_S = 30.0
 EXIT_PATIENCE_S = 30.0
 # A window that takes no notice of Alt+F4 for this long gets a second press, as from a player.
 NOTICE_S = 10.0
+# Which look read each text last, for every person of this run: the same game draws a text
+# the same way on every screen.
+READ_BY: dict[str, str] = {}
 # What fails every run when the game prints it: an engine or script error, or an X error.
 ERROR_LINE = re.compile(r"^(ERROR|SCRIPT ERROR)|BadWindow|BadDrawable|X Error")
 
@@ -143,6 +146,8 @@ class Person:
     _count: int = 0
     _last_look: str = OCR_VARIANTS[0][0]
     _held: set[str] = field(default_factory=set)
+    # Where each text was last found, and by which look: a person glances back at that spot.
+    _seen: dict[str, tuple[Box, tuple[str, list[str], int]]] = field(default_factory=dict)
 
     def _x(self, *args: str) -> None:
         subprocess.run(["xdotool", *args], env=self.display.env(), check=True, timeout=30,
@@ -159,31 +164,37 @@ class Person:
         self._count += 1
         return self.grab(self.shots / f"{self._count:02d}-{name}.png")
 
-    def read_words(self, shot: Path, variant: tuple[str, list[str], int]) -> list[Word]:
+    def read_words(self, shot: Path, variant: tuple[str, list[str], int],
+                   region: Region | None = None) -> list[Word]:
         started = time.monotonic()
-        words = read_words(shot, variant, self.scratch)
+        words = read_words(shot, variant, self.scratch, region)
         self.ocr_seconds.append(time.monotonic() - started)
         return words
 
-    def read_screen(self, shot: Path | None = None) -> list[Word]:
-        """Every word either look finds on the screen (or on a screenshot given)."""
+    def read_screen(self, shot: Path | None = None, region: Region | None = None) -> list[Word]:
+        """Every word any look finds on the screen (or on a screenshot given, or in a region
+        of it)."""
         shot = shot or self.grab(self.scratch / "look.png")
-        return [w for v in OCR_VARIANTS for w in self.read_words(shot, v)]
+        return [w for v in OCR_VARIANTS for w in self.read_words(shot, v, region)]
 
     def find_text(self, text: str, patience: float = FIND_PATIENCE_S,
-                  below: int = 0) -> Box | None:
+                  below: int = 0, region: Region | None = None) -> Box | None:
         """Where `text` (one or more words on a line) is on the screen, looking again until the
         deadline; None if it never shows. `below` skips what is above that screen row (the
-        window's title bar names the game too)."""
+        window's title bar names the game too); a region is the only part looked at."""
         deadline = time.monotonic() + patience
         while True:
             shot = self.grab(self.scratch / "look.png")
-            # The look that found the last text first: screens come in runs of one kind.
-            for variant in sorted(OCR_VARIANTS, key=lambda v: v[0] != self._last_look):
-                boxes = [b for b in phrase_boxes(self.read_words(shot, variant), text)
+            # The look that read this text before first (on this screen or another person's),
+            # then the one that found the last text: screens come in runs of one kind.
+            known = READ_BY.get(text)
+            for variant in sorted(OCR_VARIANTS, key=lambda v: (v[0] != known, v[0] != self._last_look)):
+                boxes = [b for b in phrase_boxes(self.read_words(shot, variant, region), text)
                          if b.top >= below]
                 if boxes:
                     self._last_look = variant[0]
+                    self._seen[text] = (boxes[0], variant)
+                    READ_BY[text] = variant[0]
                     return boxes[0]
             if time.monotonic() > deadline:
                 return None
@@ -199,17 +210,28 @@ class Person:
                 return boxes
         return []
 
+    def still_shows(self, text: str, below: int = 24) -> bool:
+        """Whether `text` is on the screen now: a glance at where it was last found, read as it
+        was read then; only when it is not there, a look at the whole screen."""
+        if text in self._seen:
+            box, variant = self._seen[text]
+            shot = self.grab(self.scratch / "look.png")
+            if phrase_boxes(self.read_words(shot, variant, Region.around(box)), text):
+                return True
+        return self.find_text(text, 0.0, below) is not None
+
     def wait_gone(self, text: str, patience: float = FIND_PATIENCE_S, below: int = 24) -> bool:
         """Whether `text` has left the screen (looked at again until the deadline)."""
         deadline = time.monotonic() + patience
-        while self.find_text(text, 0.0, below) is not None:
+        while self.still_shows(text, below):
             if time.monotonic() > deadline:
                 return False
             time.sleep(0.3)
         return True
 
-    def wait_text(self, text: str, patience: float = FIND_PATIENCE_S, below: int = 24) -> Box:
-        box = self.find_text(text, patience, below)
+    def wait_text(self, text: str, patience: float = FIND_PATIENCE_S, below: int = 24,
+                  region: Region | None = None) -> Box:
+        box = self.find_text(text, patience, below, region)
         if box is None:
             shot = self.screenshot(f"missing-{norm(text) or 'text'}")
             raise AssertionError(f"{text!r} never showed on the screen within {patience:.0f} s "

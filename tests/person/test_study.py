@@ -14,6 +14,7 @@ import numpy as np
 from scipy import ndimage
 
 from maze_eyes import Way, goal_at, pixels_of
+from ocr import Region
 from person import Person
 from sub_eyes import chord_toward, sub_at
 
@@ -43,7 +44,8 @@ def choose_every_demographic(person: Person) -> int:
         person.click(*button.center)
         # The open list: its rows start under the button, their words where the button's
         # text starts; the first row repeats "Choose…", the second is the first answer.
-        rows = sorted((w for w in person.read_screen()
+        under = Region(max(0, button.left - 40), button.bottom, 480, 320)
+        rows = sorted((w for w in person.read_screen(region=under)
                        if w.top > button.bottom + 4 and abs(w.left - button.left) < 30),
                       key=lambda w: w.top)
         tops: list[int] = []
@@ -62,7 +64,7 @@ def hold_still_at_the_start(person: Person, scratch) -> float:
     still until the card goes; returns how long it took."""
     started = time.monotonic()
     while time.monotonic() - started < HOLD_PATIENCE_S:
-        if person.find_text("Hold still", patience=0.0) is None:
+        if not person.still_shows("Hold still"):
             return time.monotonic() - started
         pixels = pixels_of(person.grab(scratch / "gauge.png"))
         ring = np.argwhere(_near(pixels, ZONE_GREEN, 40))
@@ -100,7 +102,7 @@ def steer_through_the_maze(person: Person, scratch) -> float:
                     person.hold_only(chord_toward(sub, ahead))
             # The goal card shows a moment, then the ratings: a person reads the screen
             # when the sub is gone from it, and now and then.
-            if sub is None or looks % 8 == 0:
+            if sub is None or looks % 20 == 0:
                 person.hold_only([])
                 if person.find_text("Rate the method", patience=0.0) is not None:
                     return time.monotonic() - started
@@ -169,7 +171,8 @@ def test_a_participant_goes_through_the_maze_study(shipped_session) -> None:
         person.screenshot(f"method-{method}-maze")
         took = steer_through_the_maze(person, session.scratch)
         person.screenshot(f"method-{method}-goal")
-        print(f"person: study: method {method}: held still in {held:.1f} s, the maze in {took:.0f} s")
+        print(f"person: study: method {method}: held still in {held:.1f} s, the maze in {took:.0f} s "
+              f"({len(person.ocr_seconds)} OCR passes so far)")
         rate_everything(person, session.scratch)
     person.wait_text("Finish", patience=60.0)
     person.click_text("Method 1")

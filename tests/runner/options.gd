@@ -11,6 +11,7 @@ usage: tools/godot --headless --path . res://tests/runner/runner.tscn -- [option
   --junit=PATH          also write JUnit XML
   --warnings-as-errors  GDScript warnings enabled in the project fail a suite's load
   --quick               leave out the suites that declare const SLOW := true
+  --shard=K/N           only every Nth test file, from the Kth (two runners share a machine)
   --help                print this help"""
 const DEFAULT_ROOT: String = "res://tests"
 const DEFAULT_TIMEOUT_SECONDS: float = 30.0
@@ -30,6 +31,10 @@ var junit_path: String = ""
 var warnings_as_errors: bool = false
 ## Whether suites declaring [code]const SLOW := true[/code] are left out.
 var quick: bool = false
+## This runner's share of the files, [member shard] of [member shards] (1-based): every
+## [member shards]th file of the sorted list, from the [member shard]th.
+var shard: int = 1
+var shards: int = 1
 ## Whether --help was given.
 var help: bool = false
 ## Why the options are invalid; empty when they are fine.
@@ -59,11 +64,24 @@ static func parse(args: PackedStringArray) -> RunnerOptions:
 				options.warnings_as_errors = true
 			"--quick":
 				options.quick = true
+			"--shard":
+				var parts: PackedStringArray = value.split("/")
+				if (
+					parts.size() != 2
+					or not parts[0].is_valid_int()
+					or not parts[1].is_valid_int()
+					or parts[0].to_int() < 1
+					or parts[0].to_int() > parts[1].to_int()
+				):
+					options.error = "--shard needs K/N with 1 <= K <= N (--shard=1/2)"
+				else:
+					options.shard = parts[0].to_int()
+					options.shards = parts[1].to_int()
 			"--help", "-h":
 				options.help = true
 			_:
 				options.error = "unknown option " + arg
-		if (key in ["--dir", "--filter", "--test", "--junit"]) and value.is_empty():
+		if (key in ["--dir", "--filter", "--test", "--junit", "--shard"]) and value.is_empty():
 			options.error = "%s needs a value (%s=...)" % [key, key]
 	if options.roots.is_empty():
 		options.roots.append(DEFAULT_ROOT)

@@ -16,6 +16,8 @@ extends Node
 ## --timeout=SECONDS     Default timeout of each hook and each test (default 30).
 ## --junit=PATH          Also write JUnit XML; a relative PATH is taken from the caller's
 ##                       working directory.
+## --shard=K/N          Only every Nth test file of the list, from the Kth: N runners side
+##                       by side run each file once (make test-godot runs two).
 ## --quick              Leave out the suites that declare [code]const SLOW := true[/code]
 ##                       (they run whole scenes for seconds, or start other processes):
 ##                       make check's quick loop. They are counted on the summary line.
@@ -95,6 +97,11 @@ func _main() -> void:
 		for path: String in Discovery.discover(root):
 			if not files.has(path) and _matches_any(path, options.file_filters):
 				files.append(path)
+	var share: PackedStringArray = PackedStringArray()
+	for i: int in files.size():
+		if i % options.shards == options.shard - 1:
+			share.append(files[i])
+	files = share
 
 	if options.warnings_as_errors:
 		await _promote_warnings_to_errors()
