@@ -135,6 +135,8 @@ def test_rally(label: str, players: int) -> None:
         spread = divergences(reports, network.path_s + 0.1)
         assert len(spread) > 200
         bound = DIVERGENCE_P99_M[label] + (FOUR_PLAYER_MARGIN_M if players == 4 else 0.0)
+        print(f"rally {label}, {players} players: divergence p99 {quantile(spread, 0.99):.3f} m "
+              f"(bound {bound:.2f} m)")
         assert quantile(spread, 0.99) < bound, quantile(spread, 0.99)
         if network.loss > 0:
             assert relay["up"]["dropped"] > 0 and relay["down"]["reordered"] > 0, relay

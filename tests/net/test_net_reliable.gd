@@ -18,9 +18,14 @@ class Wire:
 	var dead: bool = false
 	var now_s: float = 0.0
 	var sent: int = 0
+	## Datagrams still to lose, whatever else the path does.
+	var lose_next: int = 0
 
 	func carry(packet: PackedByteArray) -> void:
 		sent += 1
+		if lose_next > 0:
+			lose_next -= 1
+			return
 		if dead or rng.randf() < loss:
 			return
 		var copies: int = 2 if rng.randf() < 0.05 else 1
@@ -108,6 +113,18 @@ func test_every_message_arrives_once_and_in_order_over_a_lossy_reordering_path()
 		expected.append(n)
 	assert_eq(_got, expected, "all 300, once each, in order, at 30 % loss each way")
 	assert_eq(ends[0].unacknowledged(B), 0, "and all acknowledged")
+
+
+func test_a_message_whose_first_datagram_is_lost_arrives_without_waiting_a_resend() -> void:
+	var wires: Array[Wire] = [Wire.new(), Wire.new()]
+	var ends: Array[PongNetReliable] = _pair(wires[0], wires[1])
+	# The path loses the first datagram of the message, and nothing after it.
+	wires[0].lose_next = 1
+	ends[0].send(B, _payload(5), 0.0)
+	var sent: Array[int] = [1]
+	_run(ends, wires, 0.0, PATH_S + 0.03, sent, 1)
+	assert_eq(_got, [5] as Array[int], "there within one path time, no resend waited")
+	assert_eq(wires[0].sent, 2, "two datagrams: the message and its copy, nothing resent")
 
 
 func test_a_path_dead_for_10_s_carries_the_backlog_within_a_second_of_its_return() -> void:

@@ -174,8 +174,10 @@ def test_the_field_is_typed_and_documented_on_both_sides(scratch):
 def built(scratch):
     """The engine-free libraries of the scratch copy, and a program on them."""
     build = scratch / ".build/scratch"
-    run(["cmake", "-S", "gdextension", "-B", build, "-G", "Ninja", "-DCMAKE_BUILD_TYPE=Release",
-         "-DHAPTICS_BUILD_EXTENSION=OFF", "-DHAPTICS_BUILD_TESTS=OFF", "-DHAPTICS_BUILD_BENCH=OFF"], scratch)
+    # Unoptimised, without debug records: the test asks only that the field compiles and
+    # carries its value, and this is the quickest build that shows it.
+    run(["cmake", "-S", "gdextension", "-B", build, "-G", "Ninja", "-DCMAKE_BUILD_TYPE=Debug",
+         "-DCMAKE_CXX_FLAGS_DEBUG=-O0", "-DHAPTICS_BUILD_EXTENSION=OFF", "-DHAPTICS_BUILD_TESTS=OFF", "-DHAPTICS_BUILD_BENCH=OFF"], scratch)
     run(["nice", "-n", "10", "cmake", "--build", build, "--target", "haptics_system", "-j", "2"], scratch,
         timeout=3600)
     program = scratch / "probe.cpp"

@@ -64,6 +64,10 @@ func send(peer: int, payload: PackedByteArray, now_s: float) -> void:
 	var unacked: Dictionary = _unacked.get_or_add(peer, {})
 	unacked[seq] = outgoing
 	_try(peer, outgoing, now_s)
+	# The first try goes twice: a lost one otherwise waits a resend (up to MAX_RESEND_S),
+	# and a transfer of the ball held that long let the players' balls fly apart that long.
+	# These are events, a few a second; the receiver takes a copy once.
+	transmit.call(peer, packet)
 
 
 ## Whether [param packet] is one of ours (a data packet or an acknowledgement).
