@@ -19,7 +19,7 @@ class RecordingRouter:
 	## What the server forwarded: [origin, message] each.
 	var forwards: Array[Array] = []
 
-	func send_all(message: PongNetMessage) -> void:
+	func send_all(message: PongNetMessage, _copies: int = 1) -> void:
 		sent.append(message)
 
 	func forward(origin: int, message: PongNetMessage) -> void:

@@ -115,12 +115,12 @@ func test_every_message_arrives_once_and_in_order_over_a_lossy_reordering_path()
 	assert_eq(ends[0].unacknowledged(B), 0, "and all acknowledged")
 
 
-func test_a_message_whose_first_datagram_is_lost_arrives_without_waiting_a_resend() -> void:
+func test_a_message_sent_twice_whose_first_datagram_is_lost_arrives_without_a_resend() -> void:
 	var wires: Array[Wire] = [Wire.new(), Wire.new()]
 	var ends: Array[PongNetReliable] = _pair(wires[0], wires[1])
 	# The path loses the first datagram of the message, and nothing after it.
 	wires[0].lose_next = 1
-	ends[0].send(B, _payload(5), 0.0)
+	ends[0].send(B, _payload(5), 0.0, 2)
 	var sent: Array[int] = [1]
 	_run(ends, wires, 0.0, PATH_S + 0.03, sent, 1)
 	assert_eq(_got, [5] as Array[int], "there within one path time, no resend waited")

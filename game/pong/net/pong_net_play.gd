@@ -230,7 +230,9 @@ func issue(
 	transfer.velocity = velocity
 	transfer.spin = spin
 	transfer.age_ms = age_ms
-	session.router.send_all(transfer)
+	# Twice at first: a transfer lost on a lossy path held the ball until the resend, while
+	# the new master's paddle struck it and the old one flew it on.
+	session.router.send_all(transfer, 2)
 	_on_transfer(authority.my_id, transfer)
 
 

@@ -51,8 +51,9 @@ class Outgoing:
 		packet = p_packet
 
 
-## Sends [param payload] to [param peer] reliably, at [param now_s].
-func send(peer: int, payload: PackedByteArray, now_s: float) -> void:
+## Sends [param payload] to [param peer] reliably, at [param now_s]; the first try as
+## [param copies] datagrams at once.
+func send(peer: int, payload: PackedByteArray, now_s: float, copies: int = 1) -> void:
 	var seq: int = _next.get(peer, 0)
 	_next[peer] = seq + 1
 	var packet: PackedByteArray = PackedByteArray()
@@ -64,10 +65,9 @@ func send(peer: int, payload: PackedByteArray, now_s: float) -> void:
 	var unacked: Dictionary = _unacked.get_or_add(peer, {})
 	unacked[seq] = outgoing
 	_try(peer, outgoing, now_s)
-	# The first try goes twice: a lost one otherwise waits a resend (up to MAX_RESEND_S),
-	# and a transfer of the ball held that long let the players' balls fly apart that long.
-	# These are events, a few a second; the receiver takes a copy once.
-	transmit.call(peer, packet)
+	# A lost try waits a resend (up to MAX_RESEND_S); the receiver takes a copy once.
+	for _copy: int in copies - 1:
+		transmit.call(peer, packet)
 
 
 ## Whether [param packet] is one of ours (a data packet or an acknowledgement).

@@ -83,8 +83,10 @@ func forget(listener: Object) -> void:
 			_handlers.erase(schema_id)
 
 
-## Sends [param message] to every other peer (a client's to the server, which forwards it).
-func send_all(message: PongNetMessage) -> void:
+## Sends [param message] to every other peer (a client's to the server, which forwards it);
+## a reliable one's first try as [param copies] datagrams (a message whose delay the players
+## see: the ball's transfer).
+func send_all(message: PongNetMessage, copies: int = 1) -> void:
 	if not _connected():
 		return
 	var each: bool = message.channel() == PongNetFacts.NET_CHANNEL_RELIABLE
@@ -94,7 +96,7 @@ func send_all(message: PongNetMessage) -> void:
 		_send(message, MultiplayerPeer.TARGET_PEER_BROADCAST)
 		return
 	for peer: int in multiplayer.get_peers():
-		_send(message, peer)
+		_send(message, peer, copies)
 
 
 ## Forgets what was heard from [param peer] (gone; 0: every peer, the session closed).
@@ -183,14 +185,16 @@ func _unwrap(sender: int, packet: PackedByteArray) -> void:
 	_dispatch(origin, inner)
 
 
-func _send(message: PongNetMessage, peer: int) -> void:
-	_send_packet(message.encode(), peer, message.channel(), message.transfer_mode())
+func _send(message: PongNetMessage, peer: int, copies: int = 1) -> void:
+	_send_packet(message.encode(), peer, message.channel(), message.transfer_mode(), copies)
 
 
-func _send_packet(packet: PackedByteArray, peer: int, channel: int, mode: int) -> void:
+func _send_packet(
+	packet: PackedByteArray, peer: int, channel: int, mode: int, copies: int = 1
+) -> void:
 	var api: SceneMultiplayer = multiplayer as SceneMultiplayer
 	if channel == PongNetFacts.NET_CHANNEL_RELIABLE and _heard.has(peer):
-		reliable.send(peer, packet, _now_s())
+		reliable.send(peer, packet, _now_s(), copies)
 	elif peer == MultiplayerPeer.TARGET_PEER_BROADCAST or _heard.has(peer):
 		api.send_bytes(packet, peer, mode, channel)
 	elif mode == MultiplayerPeer.TRANSFER_MODE_RELIABLE:
