@@ -96,7 +96,7 @@ play: import
 pong-demo: import
 	@$(GODOT) --headless --path . res://tests/drivers/pong_demo.tscn -- $(ARGS)
 
-## test: every suite: what CI runs (about 40 minutes)
+## test: every suite: what CI runs (about 50 minutes on this 2-core machine)
 ## Any failure fails the target; each suite's seconds are printed at the end. While the first
 ## suites run, test-ahead prepares what later ones need on the other core, and is done before
 ## the suites that measure time begin (tools/ci/run-suites.sh).
@@ -171,7 +171,7 @@ test-windowed: import
 ## serve within 5 s, a rally of six contacts); a network match of two people at two screens
 ## through the lobby (the host from source, the guest exported); the maze study from its start
 ## screen to the thank-you (the shipped build only). Fails on any error or X error line;
-## screenshots in .build/person/<test>/ (tests/person, about 8 minutes).
+## screenshots in .build/person/<test>/ (tests/person, about 11 minutes).
 test-person: import
 	@tools/analysis/run.sh -m pytest tests/person -q -rsx -p no:cacheprovider -s --durations=0
 
