@@ -34,6 +34,7 @@ def test_a_person_plays_pong_against_the_computer(session) -> None:
     hand = ClumsyMouseHand(rest, seed=7)
     watch = RallyWatch()
     looks = 0
+    first_seen = None
     unseen = 0
     rematches = 0
     while watch.longest < RALLY_CONTACTS and time.monotonic() - shown < RALLY_WITHIN_S:
@@ -43,6 +44,7 @@ def test_a_person_plays_pong_against_the_computer(session) -> None:
         if looks == 0 and ball is None:
             continue
         if looks == 0:
+            first_seen = t
             person.screenshot("match-start")
         looks += 1
         served_before = watch.served_at
@@ -64,8 +66,8 @@ def test_a_person_plays_pong_against_the_computer(session) -> None:
                 watch.restart()
                 person.move_mouse(*rest)
     person.screenshot("rally" if watch.longest >= RALLY_CONTACTS else "no-rally")
-    print(f"person: pong: {looks} looks in {time.monotonic() - shown:.0f} s; the ball first seen "
-          f"moving {watch.served_at or 0:.1f} s after the click; {watch.contacts} contacts, longest rally {watch.longest}, "
+    print(f"person: pong: {looks} looks in {time.monotonic() - shown:.0f} s; the ball first seen {first_seen or 0:.1f} s after the "
+          f"click, first seen moving {watch.served_at or 0:.1f} s after the click; {watch.contacts} contacts, longest rally {watch.longest}, "
           f"{watch.misses} misses, {rematches} matches lost and played again\n  " + "\n  ".join(watch.log))
 
     quit_s = person.close_and_see_it_exit(game)

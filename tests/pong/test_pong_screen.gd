@@ -139,3 +139,42 @@ func test_the_spin_paddle_changes_colour() -> void:
 	assert_almost_eq(Color(paddle.get_color(), 1.0), Color(PongPaddleView.SPIN_COLOR, 1.0), 1e-3)
 	paddle.show_modes(false, false, false)
 	assert_almost_eq(paddle.get_color(), plain, 1e-3, "and back")
+
+
+func test_the_setup_shows_the_chosen_court_and_the_match_replaces_it() -> void:
+	if not assert_true(PongServo.shared().is_available(), "the extension has the Pong renderer"):
+		return
+	(_main.get_screen() as MainMenu).pong_button.pressed.emit()
+	var pong: PongScreen = _main.get_screen() as PongScreen
+	await wait_process_frames(2)
+	var world: PongView = pong.world
+	# Headless, nothing is drawn: the court comes once the setup has been (on a display).
+	assert_eq(_count(world, "PongAvatarView"), 0, "nothing behind the setup before it shows")
+	RenderingServer.frame_post_draw.emit()
+	assert_eq(_count(world, "PongAvatarView"), 2, "two players stand on the court behind it")
+	# Then, a frame each: a mine, its flash, a bullet.
+	var shown: Array[String] = []
+	for frame: int in 4:
+		await wait_process_frames(1)
+		var mines: Array[Node] = world.find_children("*", "PongMineView", true, false)
+		if not mines.is_empty():
+			shown.append("flash" if (mines[0] as PongMineView).is_exploding() else "mine")
+		if world.get_node("Bullets").get_child_count() > 0:
+			shown.append("bullet")
+	assert_has(shown, "mine", "a mine drawn once behind the setup (%s)" % [shown])
+	assert_has(shown, "flash", "and a mine's flash")
+	assert_has(shown, "bullet", "and a bullet")
+	pong.setup.four_players_check.button_pressed = true
+	await wait_process_frames(2)
+	assert_eq(_count(world, "PongAvatarView"), 4, "ticking four players shows their court")
+	pong.setup.four_players_check.button_pressed = false
+	pong.setup.vs_computer_button.pressed.emit()
+	await wait_process_frames(2)
+	assert_true(pong.is_running(), "the match runs")
+	assert_eq(_count(world, "PongAvatarView"), 2, "the match's players replace the preview's")
+	assert_not_null(world.get_node_or_null("Avatar1"), "under their own names")
+	assert_eq(_count(world, "PongMineView"), 0, "no mine before one is placed")
+
+
+func _count(world: PongView, type: String) -> int:
+	return world.find_children("*", type, true, false).size()

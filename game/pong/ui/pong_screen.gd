@@ -71,6 +71,10 @@ func _ready() -> void:
 		return
 	if skip_setup:
 		start_match(mode, beginner)
+		return
+	setup.court_changed.connect(_preview)
+	# Once the setup is on the screen: the court's first frame takes a while to draw.
+	RenderingServer.frame_post_draw.connect(_preview_chosen, CONNECT_ONE_SHOT)
 
 
 func _process(delta: float) -> void:
@@ -118,6 +122,20 @@ func start_match(p_mode: PongMatch.Mode, p_beginner: bool) -> bool:
 		hud.flash("Beginner mode: send the ball into the target behind your opponent")
 	_running = true
 	return true
+
+
+func _preview_chosen() -> void:
+	_preview(setup.get_players(), setup.beginner_check.button_pressed)
+
+
+## The court of [param p_players] behind the setup, until a match starts.
+func _preview(p_players: int, p_beginner: bool) -> void:
+	if _running or not is_inside_tree():
+		return
+	var settings: PongSettings = PongServo.shared().get_settings()
+	settings.players = p_players
+	var court: PongCourt = PongCourt.from_settings(settings)
+	world.preview(court, Haptics.device.get_workspace_radius() * court.workspace_scale, p_beginner)
 
 
 func _on_setup_start(p_mode: PongMatch.Mode, p_beginner: bool) -> void:

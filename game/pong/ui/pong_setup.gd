@@ -11,6 +11,8 @@ signal start_requested(mode: PongMatch.Mode, beginner: bool)
 signal back_requested
 ## Open the network game's lobby.
 signal network_requested
+## The court chosen changed: [param players] (2 or 4), in beginner mode or not.
+signal court_changed(players: int, beginner: bool)
 
 ## Beginner mode starts ticked: the paper's starting point for novices, and the mode in
 ## which a first-time player rallies against the Easy computer (tests/pong/
@@ -40,6 +42,11 @@ func _ready() -> void:
 		difficulty_option.add_item(PongAiLevel.NAMES[level], level)
 	difficulty_option.select(PongAiLevel.Level.EASY)
 	beginner_check.button_pressed = BEGINNER_FIRST
+	for check: CheckBox in [beginner_check, four_players_check]:
+		check.toggled.connect(
+			func(_on: bool) -> void:
+				court_changed.emit(get_players(), beginner_check.button_pressed)
+		)
 	UiFocus.grab_later(vs_computer_button)
 
 

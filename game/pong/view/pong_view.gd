@@ -29,6 +29,8 @@ var _paddles: Array[PongPaddleView] = []
 var _avatars: Array[PongAvatarView] = []
 var _mine_views: Array[PongMineView] = []
 var _bullet_mesh: CapsuleMesh = CapsuleMesh.new()
+# What the preview draws next, one a frame.
+var _later: Array[Callable] = []
 
 @onready var camera: Camera3D = $Camera
 @onready var _sun: DirectionalLight3D = $Sun
@@ -56,6 +58,7 @@ func _ready() -> void:
 ## Builds the court, the avatars and the paddles for [param court]; [param reach] is how
 ## far a paddle reaches from its avatar; the camera sits behind [param viewer]'s side.
 func build(court: PongCourt, reach: float, beginner: bool, viewer: int = 0) -> void:
+	_clear()
 	_court = court
 	_court_view.build(court, beginner, viewer)
 	var sphere: SphereMesh = _ball.mesh as SphereMesh
@@ -77,6 +80,37 @@ func build(court: PongCourt, reach: float, beginner: bool, viewer: int = 0) -> v
 	_sun.look_at_from_position(
 		Vector3(court.half_width, court.wall_height * 3.0, court.half_length), Vector3.ZERO
 	)
+
+
+## The court of [param court] with its players standing ready, behind the setup. In the
+## frames after, it draws once each thing a match shows only later (a mine, a mine's
+## flash, a bullet), one a frame: the first frame that draws something compiles its
+## shaders, which takes seconds on a software renderer and would otherwise stall the
+## match's first frame or its first mine; one a frame, a click on the setup waits for one
+## of them at most. [method build] replaces it all.
+func preview(court: PongCourt, reach: float, beginner: bool) -> void:
+	build(court, reach, beginner)
+	for player: int in court.players:
+		_avatars[player].position = court.clamp_avatar(player, court.toward_back_wall(player, 0.5))
+		var forward: Vector3 = PongCourt.forward(player)
+		_paddles[player].place(_avatars[player].position + forward * reach * 0.5, forward)
+	_ball.position = Vector3(0.0, court.ball_radius, 0.0)
+	_shadow.position = Vector3(0.0, 0.004, 0.0)
+	var mine_at: Vector3 = court.toward_back_wall(1, 0.5)
+	_later = [
+		func() -> void: add_mine(PongMines.Mine.new(1, PongMines.KINDS[0], mine_at)),
+		func() -> void: explode_mine(_mine_views[0].mine),
+		func() -> void:
+			var bullets: PongBullets = PongBullets.new()
+			bullets.fire(0, Vector3(0.0, court.ball_radius * 3.0, 0.0), Vector3.FORWARD)
+			_show_bullets(bullets),
+	]
+
+
+func _process(_delta: float) -> void:
+	if not _later.is_empty():
+		var next: Callable = _later.pop_front()
+		next.call()
 
 
 ## Puts the camera behind and above [param player]'s back wall, looking across the court
@@ -171,3 +205,20 @@ func _show_bullets(bullets: PongBullets) -> void:
 			if along != Vector3.ZERO:
 				instance.basis = Basis(Quaternion(Vector3.UP, along))
 			instance.position = bullet.position - along * BULLET_LENGTH_M * 0.5
+
+
+# Frees what [method build] or [method preview] added (out of the tree at once: the new
+# avatars and paddles take their names).
+func _clear() -> void:
+	var added: Array[Node] = []
+	added.append_array(_avatars)
+	added.append_array(_paddles)
+	added.append_array(_mines.get_children())
+	added.append_array(_bullets.get_children())
+	for node: Node in added:
+		node.get_parent().remove_child(node)
+		node.queue_free()
+	_avatars.clear()
+	_paddles.clear()
+	_mine_views.clear()
+	_later.clear()
