@@ -112,10 +112,16 @@ CHORDS = {0: ["Right"], 45: ["Right", "Down"], 90: ["Down"], 135: ["Left", "Down
           180: ["Left"], -135: ["Left", "Up"], -90: ["Up"], -45: ["Right", "Up"]}
 
 
-def chord_toward(here: tuple[float, float], there: tuple[float, float]) -> list[str]:
-    """The arrow keys a person holds to go from here toward there (the nearest of eight)."""
+def chord_toward(here: tuple[float, float], there: tuple[float, float], lift: int = 0) -> list[str]:
+    """The arrow keys a person holds to go from here toward there (the nearest of eight),
+    turned `lift` eighths of a turn further up: a person stuck against the sand tries over it."""
     angle = math.degrees(math.atan2(there[1] - here[1], there[0] - here[0]))
     nearest = min(CHORDS, key=lambda a: abs((angle - a + 180) % 360 - 180))
+    for _ in range(lift):
+        if nearest == -90:
+            break
+        nearest += -45 if -90 < nearest <= 90 else 45
+        nearest = (nearest + 180) % 360 - 180 if nearest != 180 else 180
     return CHORDS[nearest]
 
 

@@ -24,6 +24,9 @@ PLAY_PATIENCE_S = 120.0
 # A person reads the screen when the sub has not moved for this many looks: the goal screen
 # stops the level (or the sub is stuck, and they look at what happened).
 STILL_LOOKS = 6
+# Stuck, a person steers an eighth of a turn further up each time, until they are this far
+# further along the route than where they got stuck.
+UNSTUCK_PX = 120.0
 
 
 def items_collected(person: Person) -> str:
@@ -48,22 +51,33 @@ def steer_to_the_goal(person: Person, scratch) -> tuple[bool, int]:
     started = time.monotonic()
     looks = 0
     still = 0
+    lift = 0
+    stuck_at = 0.0
     last = None
     shot_at = 0.0
+    trail = open(person.shots / "trail.csv", "w", encoding="utf-8")
+    trail.write("t_s,x,y,along,sub_x,sub_y,goal_x,goal_y,keys\n")
     try:
         while time.monotonic() - started < PLAY_PATIENCE_S:
             look = person.grab(scratch / "level.png")
             looks += 1
             here = where.look(look)
+            keys: list[str] = []
             if here is not None:
                 ahead = route.aim(here)
                 # The goal in view, a person heads straight for it; else along the route.
+                if lift and route.reached > stuck_at + UNSTUCK_PX:
+                    lift = 0
                 if where.sub is not None and where.goal is not None:
-                    person.hold_only(chord_toward(where.sub, where.goal))
+                    keys = chord_toward(where.sub, where.goal, lift)
                 else:
-                    person.hold_only(chord_toward(here, ahead))
+                    keys = chord_toward(here, ahead, lift)
+                person.hold_only(keys)
                 still = still + 1 if last is not None and math.dist(here, last) < 2.0 else 0
                 last = here
+            trail.write(",".join(f"{v:.0f}" if isinstance(v, float) else str(v) for v in (
+                time.monotonic() - started, *(here or ("", "")), route.reached,
+                *(where.sub or ("", "")), *(where.goal or ("", "")), "+".join(keys))) + "\n")
             if looks % 10 == 0:
                 print(f"person: look {looks}: at {here}, {route.reached:.0f} px along the route")
             if route.reached >= shot_at:
@@ -74,8 +88,13 @@ def steer_to_the_goal(person: Person, scratch) -> tuple[bool, int]:
                 if person.find_text("Goal reached", patience=0.0) is not None:
                     return True, looks
                 still = 0
+                lift = min(lift + 1, 3)
+                stuck_at = route.reached
+                print(f"person: stuck at {here} ({route.reached:.0f} px along): steering "
+                      f"{lift} eighth(s) of a turn higher")
     finally:
         person.hold_only([])
+        trail.close()
     return False, looks
 
 
@@ -118,9 +137,12 @@ def test_a_person_plays_level_1_with_keys(session) -> None:
     timings["playing"] = time.monotonic() - play_started
     if not reached:
         shot = person.screenshot("where-the-person-got")
+        # The CI keeps only the output: the way the person went, every 5th look.
+        rows = (person.shots / "trail.csv").read_text(encoding="utf-8").splitlines()
         raise AssertionError(
             f"the goal screen did not show within {PLAY_PATIENCE_S:.0f} s of steering by the "
-            f"screen ({looks} looks; items {items_collected(person)}; last screen: {shot})")
+            f"screen ({looks} looks; items {items_collected(person)}; last screen: {shot}); "
+            "the way they went:\n" + "\n".join(rows[:1] + rows[1::5]))
     person.screenshot("goal")
     print(f"person: level 1 with keys: the goal reached {timings['playing']:.0f} s after "
           f"resuming, {looks} looks ({timings['playing'] / looks:.2f} s each)")
