@@ -57,6 +57,15 @@ NET_ROW_PX = 120
 def paddle_at(shot, colour: str = "blue") -> tuple[float, float] | None:
     """The centre of the person's paddle's rim on the screen, None when it is not seen. The
     rim is near-white, tinted with the seat's colour: blue (seat 1) or orange (seat 2)."""
+    ys, xs = np.nonzero(paddle_rim(shot, colour))
+    if len(xs) < 20:
+        return None
+    return (float(xs.mean()), float(ys.mean()))
+
+
+def paddle_rim(shot, colour: str = "blue") -> np.ndarray:
+    """The pixels of the paddle's rim's tint about the net line (the avatar's head, in the
+    same tint, has a few at its edge)."""
     pixels, court = _court_pixels(shot)
     court[:NEAR_TOP] = False
     court[NEAR_BOTTOM:] = False
@@ -67,10 +76,7 @@ def paddle_at(shot, colour: str = "blue") -> tuple[float, float] | None:
         rim = court & (r > 225) & (g > 225) & (b > 130) & (b < 215)
     # The net line is drawn in the same light tint: rows the rim alone could not fill are it.
     rim[rim.sum(axis=1) > NET_ROW_PX] = False
-    ys, xs = np.nonzero(rim)
-    if len(xs) < 20:
-        return None
-    return (float(xs.mean()), float(ys.mean()))
+    return rim
 
 
 @dataclass

@@ -173,3 +173,38 @@ class Route:
         """Where to head from `here`; moves the furthest point reached on."""
         self.reached = max(self.reached, self._along(here))
         return self._point_at(self.reached + self.LOOKAHEAD_PX)
+
+
+class Approach:
+    """Closing in on something seen on the screen, as a person does with a floaty sub: they
+    aim where it will be a moment from now (the sub drifts on while they look again), let go
+    when that is on the target, and tap the keys rather than hold them once close."""
+
+    # How far ahead the person judges the drift: about one look and the sub's slowing.
+    LEAD_S = 0.8
+    ON_TARGET_PX = 40.0
+    CLOSE_PX = 260.0
+    TAP_S = 0.2
+
+    def __init__(self) -> None:
+        self._rel: tuple[float, float] | None = None
+        self._at = 0.0
+
+    def forget(self) -> None:
+        """The target is out of sight: the next sighting starts afresh."""
+        self._rel = None
+
+    def keys(self, sub: tuple[float, float], target: tuple[float, float], now: float,
+             lift: int = 0) -> tuple[list[str], float | None]:
+        """The keys to hold, and for how long (None: until the next look)."""
+        rel = (target[0] - sub[0], target[1] - sub[1])
+        rate = (0.0, 0.0)
+        if self._rel is not None and now > self._at:
+            dt = now - self._at
+            rate = ((rel[0] - self._rel[0]) / dt, (rel[1] - self._rel[1]) / dt)
+        self._rel, self._at = rel, now
+        aim = (rel[0] + rate[0] * self.LEAD_S, rel[1] + rate[1] * self.LEAD_S)
+        if math.hypot(*aim) < self.ON_TARGET_PX:
+            return [], None
+        tap = self.TAP_S if math.hypot(*rel) < self.CLOSE_PX else None
+        return chord_toward((0.0, 0.0), aim, lift), tap

@@ -17,12 +17,13 @@ import re
 import socket
 import time
 
+import numpy as np
 import pytest
 
 from conftest import skip_unless_playable
 from ocr import Region
 from person import EXPORTED, SCREEN, Person, Session
-from pong_eyes import ball_at, paddle_at
+from pong_eyes import paddle_rim
 
 NAMES = ("Ada", "Bo")
 # The match's HUD: the players' names and health bars along the top of the screen.
@@ -69,17 +70,21 @@ def health_numbers(person: Person, shot) -> list[str]:
 
 
 def paddle_follows(person: Person, colour: str, scratch) -> tuple[float, float]:
-    """Where the person's paddle is seen with the mouse held left, then right, of the middle."""
-    seen = []
+    """Where the person sees their paddle with the mouse held left, then right, of the
+    middle: what in the paddle's tint is there in one and not in the other (what stays put,
+    the avatar's head, is not the paddle), over three looks each (a ball or a flash passing
+    in one frame is outvoted)."""
+    rims = []
     for x in (400, 880):
         person.move_mouse(x, 370)
         time.sleep(1.0)
-        # A few looks, the middle one kept: the ball or a flash on the avatar passing the
-        # paddle's rim in one frame does not move where the person sees it.
-        spots = [paddle_at(person.grab(scratch / "paddle.png"), colour) for _ in range(3)]
-        xs = sorted(spot[0] for spot in spots if spot is not None)
-        seen.append(xs[len(xs) // 2] if xs else float("nan"))
+        looks = [paddle_rim(person.grab(scratch / "paddle.png"), colour) for _ in range(3)]
+        rims.append(np.sum(looks, axis=0) >= 2)
     person.move_mouse(640, 370)
+    seen = []
+    for here, there in ((rims[0], rims[1]), (rims[1], rims[0])):
+        xs = np.nonzero(here & ~there)[1]
+        seen.append(float(np.median(xs)) if len(xs) >= 10 else float("nan"))
     return seen[0], seen[1]
 
 

@@ -9,7 +9,7 @@ import re
 import time
 
 from person import Person
-from sub_eyes import Route, Whereabouts, chord_toward
+from sub_eyes import Approach, Route, Whereabouts, chord_toward
 
 # Level 1's way to the goal as a person who has played it learns it: where the sub goes, in
 # the level's pixels, from the start to the goal (the level's own path, game/levels/
@@ -48,6 +48,7 @@ def steer_to_the_goal(person: Person, scratch) -> tuple[bool, int]:
     whether the goal screen showed, and how many looks it took."""
     where = Whereabouts(ROUTE[0])
     route = Route(ROUTE)
+    approach = Approach()
     started = time.monotonic()
     looks = 0
     still = 0
@@ -65,14 +66,19 @@ def steer_to_the_goal(person: Person, scratch) -> tuple[bool, int]:
             keys: list[str] = []
             if here is not None:
                 ahead = route.aim(here)
-                # The goal in view, a person heads straight for it; else along the route.
+                # The goal in view, a person closes in on it; else they go along the route.
                 if lift and route.reached > stuck_at + UNSTUCK_PX:
                     lift = 0
+                tap = None
                 if where.sub is not None and where.goal is not None:
-                    keys = chord_toward(where.sub, where.goal, lift)
+                    keys, tap = approach.keys(where.sub, where.goal, time.monotonic(), lift)
                 else:
+                    approach.forget()
                     keys = chord_toward(here, ahead, lift)
                 person.hold_only(keys)
+                if tap is not None:
+                    time.sleep(tap)
+                    person.hold_only([])
                 still = still + 1 if last is not None and math.dist(here, last) < 2.0 else 0
                 last = here
             trail.write(",".join(f"{v:.0f}" if isinstance(v, float) else str(v) for v in (

@@ -9,6 +9,7 @@ const SLOW := true
 
 const MAIN_SCENE: PackedScene = preload("res://game/main/main.tscn")
 const PONG_SCENE: PackedScene = preload("res://game/pong/ui/pong.tscn")
+const WORLD_SCENE: PackedScene = preload("res://game/pong/view/pong_world.tscn")
 
 var _main: Main = null
 var _mode_before: StringName = &""
@@ -168,6 +169,15 @@ func test_the_setup_shows_the_chosen_court_and_the_match_replaces_it() -> void:
 	await wait_process_frames(2)
 	assert_eq(_count(world, "PongAvatarView"), 4, "ticking four players shows their court")
 	pong.setup.four_players_check.button_pressed = false
+	# The network lobby covers the setup and its court: a match it starts draws its own.
+	pong.setup.network_button.pressed.emit()
+	await wait_process_frames(1)
+	var lobby: PongLobby = pong.find_children("*", "PongLobby", false, false).front()
+	assert_eq(_count(world, "PongAvatarView"), 0, "no court behind the lobby")
+	assert_eq(world.get_node("Court").get_child_count(), 0, "not even its floor")
+	lobby.back_requested.emit()
+	await wait_process_frames(2)
+	assert_eq(_count(world, "PongAvatarView"), 2, "Back: the setup's court again")
 	pong.setup.vs_computer_button.pressed.emit()
 	await wait_process_frames(2)
 	assert_true(pong.is_running(), "the match runs")
@@ -178,3 +188,20 @@ func test_the_setup_shows_the_chosen_court_and_the_match_replaces_it() -> void:
 
 func _count(world: PongView, type: String) -> int:
 	return world.find_children("*", type, true, false).size()
+
+
+func test_each_seat_sees_the_court_through_its_own_back_wall() -> void:
+	var court: PongCourt = PongCourt.from_settings(PongSettings.new())
+	for viewer: int in 2:
+		var world: PongView = add_child_autofree(WORLD_SCENE.instantiate()) as PongView
+		world.build(court, 0.3, true, viewer)
+		var far: float = court.back_wall_z(PongCourt.opponent_of(viewer))
+		var glass: Node3D = world.get_node("Court/FarWall") as Node3D
+		assert_almost_eq(glass.position.z, far, 1e-4, "seat %d: glass on the far wall" % viewer)
+		var own: Node3D = world.get_node("Court/Target%d" % viewer) as Node3D
+		var other: Node3D = world.get_node("Court/Target%d" % (1 - viewer)) as Node3D
+		assert_lt(own.position.y, 0.01, "seat %d: its own target a strip on the floor" % viewer)
+		assert_lt(absf(own.position.z), court.half_length, "seat %d: in front of its wall" % viewer)
+		assert_gt(other.position.y, 0.1, "seat %d: the other's target on its wall" % viewer)
+		for post: Node in world.get_node("Court").find_children("TargetPost*", "", false, false):
+			assert_lt(absf((post as Node3D).position.z - far), 0.05, "seat %d: posts far" % viewer)

@@ -173,8 +173,15 @@ func rename_player(player: int, title: String) -> void:
 ## [param screen] leaves.
 func cover_setup(screen: Node) -> void:
 	setup.visible = false
-	screen.tree_exiting.connect(func() -> void: setup.visible = true)
+	# The court behind the setup goes with it: a match the lobby starts draws its own.
+	world.clear()
+	screen.tree_exiting.connect(_uncover_setup)
 	add_child(screen)
+
+
+func _uncover_setup() -> void:
+	setup.visible = true
+	_preview_chosen()
 
 
 func _is_own_scene() -> bool:

@@ -25,9 +25,7 @@ const TARGET_BAR_M: float = 0.04
 ## Builds the court (again: children from a previous build are removed). With four
 ## players, [param viewer] is the player the camera sits behind (its wall is left open).
 func build(court: PongCourt, beginner: bool, viewer: int = 0) -> void:
-	for child: Node in get_children():
-		remove_child(child)
-		child.queue_free()
+	clear()
 	if court.players == 4:
 		_build_square(court, beginner, viewer)
 		return
@@ -46,28 +44,37 @@ func build(court: PongCourt, beginner: bool, viewer: int = 0) -> void:
 	add_child(centre)
 	_glass_wall(Vector3(0.02, h, 2.0 * l), Vector3(-w, h * 0.5, 0.0), "LeftWall")
 	_glass_wall(Vector3(0.02, h, 2.0 * l), Vector3(w, h * 0.5, 0.0), "RightWall")
-	_glass_wall(Vector3(2.0 * w, h, 0.02), Vector3(0.0, h * 0.5, -l), "FarWall")
+	# The camera looks through the viewer's own back wall: glass only on the other's.
+	var far_z: float = court.back_wall_z(PongCourt.opponent_of(viewer))
+	_glass_wall(Vector3(2.0 * w, h, 0.02), Vector3(0.0, h * 0.5, far_z), "FarWall")
 	add_child(_frame(court))
 	if beginner:
 		for player: int in 2:
-			_target(court, player)
+			_target(court, player, player == viewer)
 
 
-# A target: the far one filled in on its wall between two posts; the near one (the camera
-# looks through its wall) outlined with lines, with a strip on the floor in front of it.
-func _target(court: PongCourt, player: int) -> void:
+## Removes the court.
+func clear() -> void:
+	for child: Node in get_children():
+		remove_child(child)
+		child.queue_free()
+
+
+# A target: the far one filled in on its wall between two posts; the [param near] one (the
+# camera looks through its wall) outlined with lines, with a strip on the floor in front of it.
+func _target(court: PongCourt, player: int, near: bool) -> void:
 	var w: float = court.target_half_width
 	var h: float = court.wall_height
 	var z: float = court.back_wall_z(player) * 0.995
 	var area: MeshInstance3D
-	if player == 1:
+	if not near:
 		for side: float in [-w, w]:
 			var post: MeshInstance3D = _box(
 				Vector3(TARGET_BAR_M, h, TARGET_BAR_M), TARGET_FRAME_COLOR, false, "TargetPost"
 			)
 			post.position = Vector3(side, h * 0.5, z)
 			add_child(post)
-		area = _box(Vector3(2.0 * w, h, 0.02), TARGET_COLOR, true, "Target1")
+		area = _box(Vector3(2.0 * w, h, 0.02), TARGET_COLOR, true, "Target%d" % player)
 		area.position = Vector3(0.0, h * 0.5, z)
 	else:
 		var outline: ImmediateMesh = ImmediateMesh.new()
@@ -75,9 +82,9 @@ func _target(court: PongCourt, player: int) -> void:
 		for corner: Vector2 in [Vector2(-w, 0.0), Vector2(-w, h), Vector2(w, h), Vector2(w, 0.0)]:
 			outline.surface_add_vertex(Vector3(corner.x, corner.y, z))
 		outline.surface_end()
-		add_child(_instance(outline, "TargetOutline0"))
-		area = _box(Vector3(2.0 * w, 0.006, 0.3), TARGET_COLOR, true, "Target0")
-		area.position = Vector3(0.0, 0.004, z - 0.15)
+		add_child(_instance(outline, "TargetOutline%d" % player))
+		area = _box(Vector3(2.0 * w, 0.006, 0.3), TARGET_COLOR, true, "Target%d" % player)
+		area.position = Vector3(0.0, 0.004, z - 0.15 * signf(z))
 	area.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
 	add_child(area)
 

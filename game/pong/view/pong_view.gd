@@ -58,7 +58,7 @@ func _ready() -> void:
 ## Builds the court, the avatars and the paddles for [param court]; [param reach] is how
 ## far a paddle reaches from its avatar; the camera sits behind [param viewer]'s side.
 func build(court: PongCourt, reach: float, beginner: bool, viewer: int = 0) -> void:
-	_clear()
+	clear()
 	_court = court
 	_court_view.build(court, beginner, viewer)
 	var sphere: SphereMesh = _ball.mesh as SphereMesh
@@ -207,9 +207,10 @@ func _show_bullets(bullets: PongBullets) -> void:
 			instance.position = bullet.position - along * BULLET_LENGTH_M * 0.5
 
 
-# Frees what [method build] or [method preview] added (out of the tree at once: the new
-# avatars and paddles take their names).
-func _clear() -> void:
+## Empties the picture: what [method build] or [method preview] added goes (out of the
+## tree at once: a build after it gives its avatars and paddles their names).
+func clear() -> void:
+	_court_view.clear()
 	var added: Array[Node] = []
 	added.append_array(_avatars)
 	added.append_array(_paddles)
