@@ -114,14 +114,18 @@ CHORDS = {0: ["Right"], 45: ["Right", "Down"], 90: ["Down"], 135: ["Left", "Down
 
 def chord_toward(here: tuple[float, float], there: tuple[float, float], lift: int = 0) -> list[str]:
     """The arrow keys a person holds to go from here toward there (the nearest of eight),
-    turned `lift` eighths of a turn further up: a person stuck against the sand tries over it."""
+    turned `lift` eighths of a turn further up (further down when negative): a person stuck
+    against the sand tries over it, and under a ledge they are pressed against."""
     angle = math.degrees(math.atan2(there[1] - here[1], there[0] - here[0]))
     nearest = min(CHORDS, key=lambda a: abs((angle - a + 180) % 360 - 180))
-    for _ in range(lift):
-        if nearest == -90:
+    toward = -90 if lift > 0 else 90
+    for _ in range(abs(lift)):
+        if nearest == toward:
             break
-        nearest += -45 if -90 < nearest <= 90 else 45
-        nearest = (nearest + 180) % 360 - 180 if nearest != 180 else 180
+        # Turn the short way round toward straight up (or down).
+        step = 45 if (toward - nearest) % 360 < 180 else -45
+        nearest = (nearest + step + 180) % 360 - 180
+        nearest = 180 if nearest == -180 else nearest
     return CHORDS[nearest]
 
 
@@ -194,8 +198,8 @@ class Approach:
         """The target is out of sight: the next sighting starts afresh."""
         self._rel = None
 
-    def keys(self, sub: tuple[float, float], target: tuple[float, float], now: float,
-             lift: int = 0) -> tuple[list[str], float | None]:
+    def keys(self, sub: tuple[float, float], target: tuple[float, float],
+             now: float) -> tuple[list[str], float | None]:
         """The keys to hold, and for how long (None: until the next look)."""
         rel = (target[0] - sub[0], target[1] - sub[1])
         rate = (0.0, 0.0)
@@ -207,4 +211,4 @@ class Approach:
         if math.hypot(*aim) < self.ON_TARGET_PX:
             return [], None
         tap = self.TAP_S if math.hypot(*rel) < self.CLOSE_PX else None
-        return chord_toward((0.0, 0.0), aim, lift), tap
+        return chord_toward((0.0, 0.0), aim), tap

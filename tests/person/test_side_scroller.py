@@ -24,9 +24,11 @@ PLAY_PATIENCE_S = 120.0
 # A person reads the screen when the sub has not moved for this many looks: the goal screen
 # stops the level (or the sub is stuck, and they look at what happened).
 STILL_LOOKS = 6
-# Stuck, a person steers an eighth of a turn further up each time, until they are this far
-# further along the route than where they got stuck.
-UNSTUCK_PX = 120.0
+# No further along the route than this in this long, a person is stuck: they try another
+# way, an eighth of a turn up, then down, then two up, two down... until they get on.
+STUCK_S = 5.0
+PROGRESS_PX = 60.0
+LIFTS = [1, -1, 2, -2, 3, -3]
 
 
 def items_collected(person: Person) -> str:
@@ -52,8 +54,8 @@ def steer_to_the_goal(person: Person, scratch) -> tuple[bool, int]:
     started = time.monotonic()
     looks = 0
     still = 0
-    lift = 0
-    stuck_at = 0.0
+    tries = 0
+    progress = (0.0, started)
     last = None
     shot_at = 0.0
     trail = open(person.shots / "trail.csv", "w", encoding="utf-8")
@@ -66,12 +68,18 @@ def steer_to_the_goal(person: Person, scratch) -> tuple[bool, int]:
             keys: list[str] = []
             if here is not None:
                 ahead = route.aim(here)
-                # The goal in view, a person closes in on it; else they go along the route.
-                if lift and route.reached > stuck_at + UNSTUCK_PX:
-                    lift = 0
+                now = time.monotonic()
+                if route.reached >= progress[0] + PROGRESS_PX:
+                    progress, tries = (route.reached, now), 0
+                elif now - progress[1] > STUCK_S and where.goal is None:
+                    progress, tries = (progress[0], now), tries + 1
+                    print(f"person: stuck at {here} ({route.reached:.0f} px along): trying "
+                          f"{LIFTS[(tries - 1) % len(LIFTS)]:+d} eighth(s) of a turn up")
+                lift = LIFTS[(tries - 1) % len(LIFTS)] if tries else 0
                 tap = None
+                # The goal in view, a person closes in on it; else they go along the route.
                 if where.sub is not None and where.goal is not None:
-                    keys, tap = approach.keys(where.sub, where.goal, time.monotonic(), lift)
+                    keys, tap = approach.keys(where.sub, where.goal, now)
                 else:
                     approach.forget()
                     keys = chord_toward(here, ahead, lift)
@@ -94,10 +102,6 @@ def steer_to_the_goal(person: Person, scratch) -> tuple[bool, int]:
                 if person.find_text("Goal reached", patience=0.0) is not None:
                     return True, looks
                 still = 0
-                lift = min(lift + 1, 3)
-                stuck_at = route.reached
-                print(f"person: stuck at {here} ({route.reached:.0f} px along): steering "
-                      f"{lift} eighth(s) of a turn higher")
     finally:
         person.hold_only([])
         trail.close()
