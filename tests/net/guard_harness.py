@@ -15,7 +15,7 @@ import struct
 import time
 from pathlib import Path
 
-from net_harness import DRIVER_SCENE, Peer, Relay, udp_ports
+from net_harness import DRIVER_SCENE, SERVER_PEER, TRANSFER_TAKEOVER, Peer, Relay, udp_ports
 
 ENET_MAXIMUM_PEER_ID = 0xFFF
 ENET_FLAG_SENT_TIME = 0x8000
@@ -32,8 +32,6 @@ CONNECT_BYTES = 52
 # the ball and it became the master.
 ROGUE_SCENE = "res://tests/net/rogue/rogue_peer.tscn"
 HIT_MARK = "PongNet rogue: my paddle hit the ball, I am the master"
-# PongNetAuthority's transfer kinds.
-TRANSFER_TAKEOVER = 2
 
 
 def connect_datagram(connect_id: int, data: int) -> bytes:
@@ -209,7 +207,7 @@ def check_taken_over(report: dict, seat: int = 1) -> None:
     later = [t for t in report["transfers"] if t["wall_s"] >= left[0]["wall_s"]]
     assert later and later[0]["kind"] == TRANSFER_TAKEOVER, later[:3]
     assert later[0]["wall_s"] - left[0]["wall_s"] < 0.5, (later[0], left[0])
-    assert all(t["master"] == 1 for t in later), later
+    assert all(t["master"] == SERVER_PEER for t in later), later
     assert all(c == "computer" for c in report["controllers"]), report["controllers"]
     # The rally goes on: the ball travels the court (a low hit skims the floor at 0.07-0.28 m
     # while it crosses from one end to the other, so its height alone does not tell). Counting

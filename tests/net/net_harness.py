@@ -272,7 +272,13 @@ def check_health(reports: list[dict]) -> None:
             report["peer"], report["health"], recounted_health(report))
 
 
+# PongNetAuthority.SERVER_ID, and PongNetFacts' transfer kind when the server takes the ball.
+SERVER_PEER = 1
+TRANSFER_TAKEOVER = 2
+
+
 def transfers(report: dict) -> list[tuple[int, int, int, int]]:
+    """A report's transfers: (epoch, kind, territory, master peer) each."""
     return [(t["epoch"], t["kind"], t["territory"], t["master"]) for t in report["transfers"]]
 
 
