@@ -17,5 +17,8 @@ void *open_dynamic_library(const char *p_path, bool &r_missing, char *r_error, s
 // The address of p_name, or null.
 void *dynamic_library_symbol(void *p_handle, const char *p_name);
 void close_dynamic_library(void *p_handle);
+// Keeps the library named p_name, when this process has it loaded, loaded until the process
+// ends whoever frees it; nothing when it is not loaded, or where there is no such thing (POSIX).
+void pin_loaded_library(const char *p_name);
 
 } // namespace haptics

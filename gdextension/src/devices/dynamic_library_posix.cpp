@@ -35,4 +35,6 @@ void close_dynamic_library(void *p_handle) {
 	dlclose(p_handle);
 }
 
+void pin_loaded_library(const char *) {}
+
 } // namespace haptics

@@ -59,4 +59,9 @@ void close_dynamic_library(void *p_handle) {
 	FreeLibrary(static_cast<HMODULE>(p_handle));
 }
 
+void pin_loaded_library(const char *p_name) {
+	HMODULE module = nullptr;
+	GetModuleHandleExA(GET_MODULE_HANDLE_EX_FLAG_PIN, p_name, &module);
+}
+
 } // namespace haptics

@@ -1,5 +1,7 @@
 #include "devices/sdl/sdl_runtime.h"
 
+#include "devices/dynamic_library.h"
+
 #include <cstdio>
 
 namespace haptics::sdl {
@@ -104,6 +106,12 @@ Status SdlRuntime::start_locked(bool p_joysticks, std::string &r_warning) {
 			return Status::error(StatusCode::DEVICE_ERROR, "SDL's haptic subsystem did not start: %s", error_text());
 		}
 		started_ |= SDL_INIT_HAPTIC;
+	}
+	// SDL loads XInput for both subsystems and frees it when a scan quits them. Wine's XInput
+	// runs a thread that outlives the library: it faulted there in 2 of 4 runs of the Windows
+	// suite. Kept loaded for the process, as it is anyway while SDL is up.
+	for (const char *xinput : { "xinput1_4.dll", "xinput1_3.dll", "xinput9_1_0.dll" }) {
+		pin_loaded_library(xinput);
 	}
 	return Status::success();
 }
