@@ -73,8 +73,9 @@ func _ready() -> void:
 		start_match(mode, beginner)
 		return
 	setup.court_changed.connect(_preview)
-	# Once the setup is on the screen: the court's first frame takes a while to draw.
-	RenderingServer.frame_post_draw.connect(_preview_chosen, CONNECT_ONE_SHOT)
+	# With the setup's first frame: the court's takes a while to draw, and a setup shown
+	# before it would look ready while its clicks waited.
+	_preview_chosen()
 
 
 func _process(delta: float) -> void:
