@@ -18,3 +18,9 @@ func _free_pong() -> void:
 	# would reach its match.
 	get_tree().paused = false
 	await wait_process_frames(2)
+
+
+## Waits, as a person does, until [param pong]'s setup offers its buttons (the court behind
+## it drawn); false if it never does.
+func _setup_offered(pong: PongScreen) -> bool:
+	return await wait_until(func() -> bool: return not pong.setup.is_preparing(), 5.0)

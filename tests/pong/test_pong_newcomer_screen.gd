@@ -13,7 +13,7 @@ const PONG_SCENE: PackedScene = preload("res://game/pong/ui/pong.tscn")
 func test_the_options_come_before_the_start_buttons() -> void:
 	_pong = PONG_SCENE.instantiate() as PongScreen
 	add_child(_pong)
-	await wait_process_frames(1)
+	await _setup_offered(_pong)
 	var setup: PongSetup = _pong.setup
 	var order: Array[Control] = [
 		setup.difficulty_option,

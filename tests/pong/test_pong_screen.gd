@@ -1,4 +1,4 @@
-extends TestSuite
+extends "res://tests/pong/pong_screen_suite.gd"
 ## The Pong screen as a player reaches it: the main menu's entry, the setup, a real-time
 ## match against the computer on the servo thread (the first serve, the HUD, a pause that
 ## holds the ball where it was), the spin paddle's colour, and the way back (Esc on the
@@ -33,8 +33,10 @@ func test_the_menu_entry_opens_the_setup_and_escape_goes_back() -> void:
 	var pong: PongScreen = _main.get_screen() as PongScreen
 	if not assert_not_null(pong, "the Pong screen"):
 		return
-	await wait_process_frames(1)
 	assert_true(pong.setup.visible, "it starts on the setup")
+	assert_true(pong.setup.is_preparing(), "which first says it prepares the court")
+	assert_false(pong.setup.vs_computer_button.is_visible_in_tree(), "with no button to start")
+	assert_true(await _setup_offered(pong), "then offers its buttons")
 	assert_false(pong.is_running())
 	assert_true(pong.setup.vs_computer_button.has_focus(), "keyboard and gamepad start there")
 	var cancel: InputEventAction = InputEventAction.new()
@@ -50,7 +52,7 @@ func test_the_network_lobby_starts_with_the_setup_court() -> void:
 		# The main scene opens the lobby (it is above Pong).
 		_main.show_pong()
 		var pong: PongScreen = _main.get_screen() as PongScreen
-		await wait_process_frames(1)
+		await _setup_offered(pong)
 		pong.setup.four_players_check.button_pressed = players == 4
 		pong.setup.network_button.pressed.emit()
 		await wait_process_frames(1)
@@ -69,6 +71,7 @@ func test_a_real_time_match_serves_and_quitting_restores_the_servo() -> void:
 		return
 	(_main.get_screen() as MainMenu).pong_button.pressed.emit()
 	var pong: PongScreen = _main.get_screen() as PongScreen
+	await _setup_offered(pong)
 	pong.setup.vs_computer_button.pressed.emit()
 	if not assert_true(pong.is_running(), "the match runs"):
 		return
@@ -148,19 +151,23 @@ func test_the_setup_shows_the_chosen_court_and_the_match_replaces_it() -> void:
 	(_main.get_screen() as MainMenu).pong_button.pressed.emit()
 	var pong: PongScreen = _main.get_screen() as PongScreen
 	var world: PongView = pong.world
-	assert_eq(_count(world, "PongAvatarView"), 2, "the setup shows with the court behind it")
-	# Then, a frame each: a mine, its flash, a bullet.
+	assert_eq(_count(world, "PongAvatarView"), 0, "the setup's own frame first")
+	# Then the court, and a frame each: a mine, its flash, a bullet; then the buttons.
 	var shown: Array[String] = []
-	for frame: int in 4:
+	for frame: int in 8:
 		await wait_process_frames(1)
+		if shown.is_empty() and _count(world, "PongAvatarView") == 2:
+			shown.append("court")
 		var mines: Array[Node] = world.find_children("*", "PongMineView", true, false)
 		if not mines.is_empty():
 			shown.append("flash" if (mines[0] as PongMineView).is_exploding() else "mine")
 		if world.get_node("Bullets").get_child_count() > 0:
 			shown.append("bullet")
-	assert_has(shown, "mine", "a mine drawn once behind the setup (%s)" % [shown])
+	assert_eq(shown.front(), "court", "the court first, behind the setup (%s)" % [shown])
+	assert_has(shown, "mine", "a mine drawn once behind the setup")
 	assert_has(shown, "flash", "and a mine's flash")
 	assert_has(shown, "bullet", "and a bullet")
+	assert_false(pong.setup.is_preparing(), "then the setup offers its buttons")
 	pong.setup.four_players_check.button_pressed = true
 	await wait_process_frames(2)
 	assert_eq(_count(world, "PongAvatarView"), 4, "ticking four players shows their court")

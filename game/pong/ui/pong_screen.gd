@@ -45,6 +45,7 @@ var viewer_seat: int = -1
 var seat_names: Dictionary[int, String] = {}
 
 var _running: bool = false
+var _frames_before_court: int = 2
 
 ## The match's sounds.
 @onready var sounds: PongSounds = $Sounds
@@ -73,9 +74,10 @@ func _ready() -> void:
 		start_match(mode, beginner)
 		return
 	setup.court_changed.connect(_preview)
-	# With the setup's first frame: the court's takes a while to draw, and a setup shown
-	# before it would look ready while its clicks waited.
-	_preview_chosen()
+	# The court's first frame takes seconds to draw (its shaders compile): the setup shows
+	# first, saying so, and offers its buttons once the preview's frames are drawn.
+	setup.set_preparing(true)
+	get_tree().process_frame.connect(_prepare_court)
 
 
 func _process(delta: float) -> void:
@@ -123,6 +125,22 @@ func start_match(p_mode: PongMatch.Mode, p_beginner: bool) -> bool:
 		hud.flash("Beginner mode: send the ball into the target behind your opponent")
 	_running = true
 	return true
+
+
+func _prepare_court() -> void:
+	# The second frame after the screen came: a click makes it before the first frame's
+	# processing, whose drawing would then carry the court with the setup's first look.
+	_frames_before_court -= 1
+	if _frames_before_court > 0:
+		return
+	get_tree().process_frame.disconnect(_prepare_court)
+	world.previewed.connect(_on_court_prepared, CONNECT_ONE_SHOT)
+	_preview_chosen()
+
+
+func _on_court_prepared() -> void:
+	# Drawn at the end of this frame; the next one starts after it.
+	get_tree().process_frame.connect(setup.set_preparing.bind(false), CONNECT_ONE_SHOT)
 
 
 func _preview_chosen() -> void:

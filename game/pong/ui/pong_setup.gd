@@ -19,6 +19,8 @@ signal court_changed(players: int, beginner: bool)
 ## test_pong_newcomer.gd; with gravity the same scripted player touches the ball but cannot
 ## keep it in play).
 const BEGINNER_FIRST: bool = true
+## Said in place of the buttons while the court behind them is drawn the first time.
+const PREPARING_TEXT: String = "Preparing the court..."
 
 @onready var vs_computer_button: Button = %VsComputerButton
 @onready var two_players_button: Button = %TwoPlayersButton
@@ -30,6 +32,7 @@ const BEGINNER_FIRST: bool = true
 @onready var back_button: Button = %BackButton
 @onready var _buttons: Control = %Buttons
 @onready var _subtitle: Label = %Subtitle
+@onready var _rules: String = _subtitle.text
 
 
 func _ready() -> void:
@@ -61,6 +64,19 @@ func show_offline(reason: String) -> void:
 	_subtitle.text = reason
 	_buttons.visible = false
 	UiFocus.grab_later(back_button)
+
+
+## While [param on], the setup says it is preparing the court and offers no button but
+## the way back: a click then would wait behind the court's first frame.
+func set_preparing(on: bool) -> void:
+	_subtitle.text = PREPARING_TEXT if on else _rules
+	_buttons.visible = not on
+	UiFocus.grab_later(back_button if on else vs_computer_button)
+
+
+## Whether the setup still says it is preparing the court.
+func is_preparing() -> bool:
+	return not _buttons.visible and _subtitle.text == PREPARING_TEXT
 
 
 ## How many players the court is set for: 2, or 4 when [member four_players_check] is on.

@@ -8,6 +8,9 @@ extends Node3D
 ## to the side). Physics interpolation is off for the whole view:
 ## the servo, not Godot's physics, moves these things.
 
+## The preview's last thing was drawn this frame: after it, no first frame stalls.
+signal previewed
+
 const PLAYER_COLORS: Array[Color] = [
 	Color(0.25, 0.75, 1.0), Color(1.0, 0.5, 0.2), Color(0.35, 0.9, 0.4), Color(0.85, 0.45, 1.0)
 ]
@@ -44,6 +47,8 @@ var _later: Array[Callable] = []
 
 func _ready() -> void:
 	physics_interpolation_mode = Node.PHYSICS_INTERPOLATION_MODE_OFF
+	# A viewport's first camera makes itself current: nothing 3D until the first build.
+	camera.clear_current(false)
 	# Thinner than the bullet's hit radius: a streak, its length along the flight (the
 	# capsule's axis, y, is turned onto the velocity).
 	_bullet_mesh.radius = PongBullets.RADIUS_M * 0.5
@@ -76,6 +81,9 @@ func build(court: PongCourt, reach: float, beginner: bool, viewer: int = 0) -> v
 		add_child(paddle)
 		_paddles.append(paddle)
 	view_from(viewer)
+	# Nothing 3D is drawn before the first build: its first frame compiles the sky's and
+	# the meshes' shaders, for seconds, and the screen over it shows only after that.
+	camera.make_current()
 	# High, a little behind and to the right of the near player: shadows fall forward-left.
 	_sun.look_at_from_position(
 		Vector3(court.half_width, court.wall_height * 3.0, court.half_length), Vector3.ZERO
@@ -111,6 +119,8 @@ func _process(_delta: float) -> void:
 	if not _later.is_empty():
 		var next: Callable = _later.pop_front()
 		next.call()
+		if _later.is_empty():
+			previewed.emit()
 
 
 ## Puts the camera behind and above [param player]'s back wall, looking across the court
