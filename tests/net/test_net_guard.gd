@@ -8,6 +8,8 @@ const PongTestCourt := preload("res://tests/pong/pong_test_court.gd")
 ## A point of each territory of the test court (territory 0: z >= 0).
 const NEAR: Vector3 = Vector3(0.3, 0.07, 1.5)
 const FAR: Vector3 = Vector3(0.3, 0.07, -1.5)
+## Past the longest a claim waits for its bounce, seconds after it arrived.
+const LATE_S: float = PongNetHurtJudge.STREAM_WAIT_S + 0.1
 
 # --- the heartbeat ---
 
@@ -163,10 +165,10 @@ func test_a_claim_is_accepted_for_one_bounce_in_the_victims_territory_once() -> 
 	assert_eq(judge.bounces().size(), 1, "the turn near the floor is one bounce")
 	assert_eq(judge.judge(10.1, 10.1, 1, 1)[0], accept, "the far seat's bounce, claimed")
 	assert_eq(judge.judge(10.2, 10.2, 1, 1)[0], wait, "a second claim waits for another bounce")
-	var again: Array = judge.judge(11.3, 10.2, 1, 1)
+	var again: Array = judge.judge(10.2 + LATE_S, 10.2, 1, 1)
 	assert_eq(again[0], refuse)
 	assert_true(str(again[1]).contains("charged already"), str(again[1]))
-	var forged: Array = judge.judge(11.3, 10.2, 0, 1)
+	var forged: Array = judge.judge(10.2 + LATE_S, 10.2, 0, 1)
 	assert_eq(forged[0], refuse, "no bounce in the near territory: the near seat loses nothing")
 	assert_true(str(forged[1]).contains("no floor bounce in territory 0"), str(forged[1]))
 
@@ -189,7 +191,7 @@ func test_a_forged_flood_is_refused_and_real_bounces_are_not_lost() -> void:
 		real += 1 if own[0] == PongNetHurtJudge.Verdict.ACCEPT else 0
 	assert_eq(forged, 0, "none of 120 forged hurts")
 	assert_eq(real, 12, "every real bounce, once")
-	assert_eq(judge.judge(33.5, 31.5, 1, 1)[0], PongNetHurtJudge.Verdict.REFUSE, "no 13th")
+	assert_eq(judge.judge(31.5 + LATE_S, 31.5, 1, 1)[0], PongNetHurtJudge.Verdict.REFUSE, "no 13th")
 
 
 func test_a_claim_may_come_before_our_copy_of_the_ball_bounces() -> void:
@@ -199,6 +201,25 @@ func test_a_claim_may_come_before_our_copy_of_the_ball_bounces() -> void:
 	assert_eq(judge.judge(5.3, 5.0, 0, 0)[0], PongNetHurtJudge.Verdict.ACCEPT)
 	var late: Array = judge.judge(5.5, 5.01, 0, 0)
 	assert_eq(late[0], PongNetHurtJudge.Verdict.WAIT, "no second bounce yet, still waiting")
+
+
+func test_a_claim_waits_for_the_masters_stream_to_catch_up_with_it() -> void:
+	var judge: PongNetHurtJudge = _judge()
+	var wait: int = PongNetHurtJudge.Verdict.WAIT
+	# After a hiccup the reliable claim came first: the newest state played is older.
+	judge.observe_master(4.80, Vector3(0.3, 0.5, -1.3), Vector3(0.0, -3.0, -1.0))
+	assert_eq(judge.judge(5.0 + PongNetHurtJudge.WAIT_S + 0.5, 5.0, 1, 1)[0], wait)
+	# The states either side of its bounce, and one after the claim, come.
+	judge.observe_master(4.95, Vector3(0.3, 0.1, -1.4), Vector3(0.0, 2.5, -1.0))
+	judge.observe_master(5.10, Vector3(0.3, 0.4, -1.5), Vector3(0.0, 1.0, -1.0))
+	assert_eq(judge.judge(6.6, 5.0, 1, 1)[0], PongNetHurtJudge.Verdict.ACCEPT, "its bounce")
+	# Caught up, and no bounce: refused after the least wait.
+	judge.observe_master(10.2, Vector3(0.3, 1.2, -1.5), Vector3(0.0, -1.0, -1.0))
+	var caught_up: Array = judge.judge(10.0 + PongNetHurtJudge.WAIT_S, 10.0, 1, 1)
+	assert_eq(caught_up[0], PongNetHurtJudge.Verdict.REFUSE, "no bounce in states past it")
+	# A stream that never comes back: refused after the longest.
+	assert_eq(judge.judge(20.0 + LATE_S - 0.2, 20.0, 1, 1)[0], wait)
+	assert_eq(judge.judge(20.0 + LATE_S, 20.0, 1, 1)[0], PongNetHurtJudge.Verdict.REFUSE)
 
 
 func test_a_turn_high_in_the_air_is_no_bounce() -> void:
@@ -240,9 +261,9 @@ func test_a_bounce_counts_only_within_the_claimants_epoch() -> void:
 	judge.observe_floor(4.0, NEAR)
 	# The near seat's ball bounced at 4.0 s. A master from 1.0 to 3.0 s, or from 5.0 s on,
 	# cannot have seen it.
-	var ended: Array = judge.judge(5.5, 4.2, 0, 0, 1.0, 3.0)
+	var ended: Array = judge.judge(4.2 + LATE_S, 4.2, 0, 0, 1.0, 3.0)
 	assert_eq(ended[0], PongNetHurtJudge.Verdict.REFUSE, "after the claimant's epoch ended")
-	var later: Array = judge.judge(6.5, 5.2, 0, 0, 5.0)
+	var later: Array = judge.judge(5.2 + LATE_S, 5.2, 0, 0, 5.0)
 	assert_eq(later[0], PongNetHurtJudge.Verdict.REFUSE, "before the claimant's epoch began")
 	var slack: Array = judge.judge(4.3, 4.2, 0, 0, 1.0, 3.8)
 	assert_eq(slack[0], PongNetHurtJudge.Verdict.ACCEPT, "a leg's slack at the epoch's end")
@@ -256,14 +277,14 @@ func test_the_master_trusts_its_servos_floor_events_not_turns_of_the_ball() -> v
 	assert_eq(judge.bounces(), [], "no floor event: no bounce")
 	judge.observe_floor(2.0, NEAR, true)
 	assert_eq(judge.bounces().size(), 1, "the servo's bounce, charged already")
-	assert_eq(judge.judge(3.5, 2.1, 0, 0)[0], PongNetHurtJudge.Verdict.REFUSE)
+	assert_eq(judge.judge(2.1 + LATE_S, 2.1, 0, 0)[0], PongNetHurtJudge.Verdict.REFUSE)
 
 
 func test_the_margin_is_only_for_the_territory_the_ball_was_in() -> void:
 	var judge: PongNetHurtJudge = _judge()
 	# Our copy bounced 0.4 m past the line into the near half; the master's, in the far.
 	judge.observe_floor(3.0, Vector3(0.0, 0.07, 0.4))
-	var strict: Array = judge.judge(4.2, 3.1, 1, 0)
+	var strict: Array = judge.judge(3.1 + LATE_S, 3.1, 1, 0)
 	assert_eq(strict[0], PongNetHurtJudge.Verdict.REFUSE, "the far seat, claimed at epoch near")
 	assert_eq(judge.judge(3.1, 3.1, 1, 1)[0], PongNetHurtJudge.Verdict.ACCEPT, "at epoch far")
 	judge.observe_floor(6.0, Vector3(0.0, 0.07, 0.4))
@@ -316,9 +337,11 @@ func test_the_host_charges_a_clients_claim_for_a_bounce_it_saw_and_no_forgery() 
 	var hurts: PongNetFloorHurts = play.floor_hurts
 	for i: int in 40:
 		_receive(CLIENT, _claim(1, 0))
+	var waiting: int = hurts.judge.max_waiting()
+	assert_eq(_refused("floor claim"), 40 - waiting, "no more wait than a ball bounces in it")
 	for i: int in 3:
 		hurts.on_claim(HOST, _claim(1, 1))
-	play.match_node.now += PongNetHurtJudge.WAIT_S + 0.1
+	play.match_node.now += LATE_S
 	hurts.observe(play.match_node.snapshot)
 	assert_eq(rules.get_health(0), start, "40 forged claims on the host's seat: nothing")
 	assert_eq(_refused("floor claim"), 43, "each refused and counted")

@@ -92,6 +92,8 @@ func on_claim(sender: int, claim: PongNetFloorClaimMessage) -> void:
 		reason = "epoch %d of %d" % [claim.epoch, _authority.epoch]
 	if reason.is_empty() and _authority.master_at(claim.epoch) != sender:
 		reason = "peer %d was not the master at epoch %d" % [sender, claim.epoch]
+	if reason.is_empty() and _pending.size() >= judge.max_waiting():
+		reason = "%d floor claims wait already, more than a ball bounces" % _pending.size()
 	if not reason.is_empty():
 		_reject.call(sender, PongNetFloorClaimMessage.LABEL, reason)
 		return

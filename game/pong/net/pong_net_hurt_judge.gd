@@ -29,8 +29,12 @@ enum Verdict { ACCEPT, WAIT, REFUSE }
 ## How far back before its arrival a claim may find its bounce: one leg and ENet's resends
 ## of a lost reliable packet on a slow lossy path, seconds.
 const LOOKBACK_S: float = 3.0
-## How long a claim may wait for its bounce to appear in our path, seconds.
+## How long a claim waits for its bounce to appear in our path at least, seconds.
 const WAIT_S: float = 1.0
+## How long it may wait for the master's stream to catch up with it: a claim is reliable and
+## resent, the states that show its bounce are not, and after a hiccup the claim may come
+## first, seconds.
+const STREAM_WAIT_S: float = LOOKBACK_S
 ## How far outside its epoch (as this peer applied the transfers) a bounce may lie: our copy
 ## of the ball and the transfers each come about a leg late, seconds.
 const EPOCH_SLACK_S: float = 0.3
@@ -62,6 +66,8 @@ var _bounces: Array[Array] = []
 var _last: Array = []
 # The last of the master's states played here: [time, position, velocity], or empty.
 var _last_master: Array = []
+# The newest time of the master's states played here (match seconds).
+var _master_newest: float = -INF
 var _tokens: PackedFloat64Array = PackedFloat64Array()
 var _tokens_at: PackedFloat64Array = PackedFloat64Array()
 
@@ -109,6 +115,7 @@ func observe_master(t: float, position: Vector3, velocity: Vector3) -> void:
 			_record(t0 + 0.5 * dt, (p0 + position) * 0.5, false)
 	if _last_master.is_empty() or t > _last_master[0]:
 		_last_master = [t, position, velocity]
+	_master_newest = maxf(_master_newest, t)
 	_forget_before(t - 2.0 * LOOKBACK_S)
 
 
@@ -159,11 +166,17 @@ func judge(
 			]
 		bounce[2] = true
 		return [Verdict.ACCEPT, ""]
-	if now - claimed_at < WAIT_S:
+	var waited: float = now - claimed_at
+	if waited < WAIT_S or (_master_newest < claimed_at and waited < STREAM_WAIT_S):
 		return [Verdict.WAIT, ""]
 	if charged_match:
 		return [Verdict.REFUSE, "its bounce in territory %d was charged already" % victim]
 	return [Verdict.REFUSE, "no floor bounce in territory %d in its epoch here" % victim]
+
+
+## How many claims may wait at once: as many as a ball can bounce in the longest wait.
+func max_waiting() -> int:
+	return ceili(rate_per_s * STREAM_WAIT_S + BURST)
 
 
 ## Bounces recorded and still remembered, [time, position, charged] each.
