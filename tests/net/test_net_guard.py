@@ -33,15 +33,18 @@ import pytest
 from flood_harness import flood_joins, missing_tools
 from guard_harness import (CONNECT_BYTES, HIT_MARK, ROGUE_SCENE, LogWatch, check_taken_over,
                            flood_connects, half_open_clients, kill_on_line, start_peer)
-from net_harness import (DRIVER_SCENE, ROUGH, START_PATIENCE_S, Network, Peer, Relay, check_health,
-                         detection_s, engine_errors, free_udp_port, killer, logs, run_match,
-                         workspace)
+from net_harness import (DRIVER_SCENE, ROUGH, SERVER_PEER, START_PATIENCE_S, TRANSFER_TAKEOVER,
+                         Network, Peer, Relay, check_health, detection_s, engine_errors,
+                         free_udp_port, killer, logs, run_match, transfers, workspace)
 
 # The promise (docs/pong-networking.md): a dead peer is noticed within this, on any path.
 NOTICE_BOUND_S = 3.0
 # A connection to a live server completes in a few round trips; ENet's connect gives up after
 # 3 s (PongNetProtocol.CONNECT_TIMEOUT_MAX_MS), so a player locked out fails instead.
 JOIN_BOUND_S = 3.0
+# A griefing master's stream runs dry after 2 s (PongNetStreamWatch.DRY_S): the ball then
+# changes hands; in an honest match it does every second or two.
+FREEZE_BOUND_S = 8.0
 # PongNetProtocol.MISBEHAVIOUR_BUDGET and HALF_OPEN_PER_ADDRESS.
 BUDGET = 16
 HALF_OPEN_PER_ADDRESS = 4
@@ -159,6 +162,33 @@ def test_a_master_forging_the_ball_gains_nothing_and_is_disconnected() -> None:
         assert report["refused"].get("ball state", 0) >= 1, report["refused"]
         print(f"{forged}; host's check {checked}; refused {report['refused']}; host health "
               f"{report['health']} of {report['start_health']}")
+
+
+def test_a_master_streaming_nothing_cannot_freeze_the_rally() -> None:
+    """The griefer: whenever it is the ball's master it streams nothing, its heartbeat going
+    on (before, the rally froze for everyone: the server followed a ball that never came, and
+    its referee saw it still moving). The server takes the ball and counts it each time, and
+    the ball goes on changing hands."""
+    with workspace() as work:
+        peers, _ = run_match(work, 2, NETWORKS["lan"], 14, client_args=(("--rogue=mute",),),
+                             client_scenes=(ROGUE_SCENE,))
+        host, rogue = peers
+        report = host.report
+        assert report["exit_code"] == 0, logs(peers)
+        _no_engine_errors(host)
+        muted = [line for line in rogue.log().splitlines() if "streaming nothing" in line]
+        assert muted, "the rogue never was the master:\n" + logs(peers)
+        taken = [t for t in report["transfers"]
+                 if t["kind"] == TRANSFER_TAKEOVER and t["master"] == SERVER_PEER]
+        assert taken, (transfers(report), logs(peers))
+        assert report["refused"].get("ball state", 0) >= len(taken), report["refused"]
+        assert "no state the server could play" in host.log(), logs(peers)
+        times = [t["wall_s"] for t in report["transfers"]]
+        longest = max(b - a for a, b in zip(times, times[1:]))
+        assert longest < FREEZE_BOUND_S, (longest, transfers(report))
+        print(f"{len(muted)} epochs muted; the server took the ball {len(taken)} times; "
+              f"refused {report['refused']}; the ball changed hands {len(times)} times, at most "
+              f"{longest:.1f} s apart")
 
 
 def test_the_server_forwards_to_the_other_client_only_what_it_accepted() -> None:

@@ -78,10 +78,14 @@ func check_request(sender: int, seen_epoch: int, new_territory: int) -> String:
 	return ""
 
 
-## Server side: the next transfer of [param kind] putting the ball in [param p_territory].
-func next_transfer(kind: int, p_territory: int) -> Dictionary:
+## Server side: the next transfer of [param kind] putting the ball in [param p_territory];
+## its master the territory's owner, or [param master] when given.
+func next_transfer(kind: int, p_territory: int, master: int = -1) -> Dictionary:
 	return {
-		"epoch": epoch + 1, "kind": kind, "territory": p_territory, "master": owner_of(p_territory)
+		"epoch": epoch + 1,
+		"kind": kind,
+		"territory": p_territory,
+		"master": master if master > 0 else owner_of(p_territory),
 	}
 
 

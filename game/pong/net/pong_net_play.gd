@@ -1,21 +1,20 @@
 class_name PongNetPlay
 extends Node
-## One networked match on this peer: the private haptic space. Every peer runs the servo
-## and simulates the ball; the owner of the territory the ball is in is its master
-## ([PongNetAuthority]): it sends the ball state on every new servo state (>= 60 Hz,
-## unreliable, its own channel), and its contact with the ball stays in its own servo at
-## 1 kHz whatever the latency. Followers play the received states out in order from a
-## jitter buffer, carry each forward to now, and the servo blends their ball onto it
-## ([PongNetBall]); the server first checks each against its own simulation
-## ([PongNetBallCheck]). Each peer sends the poses of the paddles it drives; other peers'
-## paddles are kinematic inputs of the local servo ([PongNetPoses]). Health changes come as
-## reliable messages: floor bounces from the server, which judges the master's claims
-## ([PongNetFloorHurts]), weapon hurts from the victim's peer ([PongNetWeapons]). Every
-## message comes and goes through the session's [PongNetRouter], which has checked its
-## fields; the node that owns its state checks it against the match, and a bad one is
-## dropped and counted against its sender ([method PongNetSession.misbehaved]). Messages are
-## aged by [PongNetLatency]. The node lives as long as the session; its handlers and those
-## of the match's parts are registered for each match.
+## One networked match on this peer: the private haptic space. Every peer runs the servo and
+## simulates the ball; the owner of the territory the ball is in is its master
+## ([PongNetAuthority]): it sends the ball state on every new servo state (>= 60 Hz, unreliable,
+## its own channel), and its contact with the ball stays in its own servo at 1 kHz whatever the
+## latency. Followers play the received states out in order from a jitter buffer, carry each
+## forward to now, and the servo blends their ball onto it ([PongNetBall]); the server first checks
+## each against its own simulation ([PongNetBallCheck]). Each peer sends the poses of the paddles
+## it drives; other peers' paddles are kinematic inputs of the local servo ([PongNetPoses]). Health
+## changes come as reliable messages: floor bounces from the server, which judges the master's
+## claims ([PongNetFloorHurts]), weapon hurts from the victim's peer ([PongNetWeapons]). Every
+## message comes and goes through the session's [PongNetRouter], which has checked its fields; the
+## node that owns its state checks it against the match, and a bad one is dropped and counted
+## against its sender ([method PongNetSession.misbehaved]). Messages are aged by [PongNetLatency].
+## The node lives as long as the session; its handlers and those of the match's parts are
+## registered for each match.
 
 ## Health changed on every peer the same way; the match is over on every peer.
 signal finished(winner: int)
@@ -49,8 +48,10 @@ var poses: PongNetPoses = null
 var floor_hurts: PongNetFloorHurts = null
 ## Our ball in the servo, as the network moves it.
 var ball: PongNetBall = PongNetBall.new()
-## Server: the check of the master's ball against its own simulation (null on a client).
+## Server: the check of the master's ball against its own simulation, and the watch on its
+## stream (null on a client).
 var ball_check: PongNetBallCheck = null
+var dry_watch: PongNetStreamWatch = null
 ## Who plays each seat; on the server, the computer standing in.
 var seats: PongNetSeats = PongNetSeats.new()
 ## Seats this peer drives (its player's, or on the server the computer's).
@@ -106,6 +107,7 @@ func begin(
 	if authority.my_id == PongNetAuthority.SERVER_ID:
 		ball_check = PongNetBallCheck.new(match_node.court, floor_hurts.judge, authority)
 		poses.pose_received.connect(ball_check.note_pose)
+		dry_watch = PongNetStreamWatch.new(authority, session.pulse.heartbeat, _reject, take_ball)
 	# The servo's clock may have started over with the match.
 	_last_sent_time = -INF
 	_last_pose_time = -INF
@@ -153,6 +155,7 @@ func frame(delta: float) -> void:
 	_last_now = match_node.now
 	if authority.my_id == PongNetAuthority.SERVER_ID:
 		_referee(sim_dt)
+		dry_watch.update(sim_dt, PongNetPulse.now_s())
 		var owed: PongNetBallCheck.Owed = ball_check.owed_hand_off(authority, match_node.now)
 		if owed != null:
 			var handoff: PongNetFacts.TransferKind = PongNetFacts.TransferKind.HANDOFF
@@ -185,9 +188,8 @@ func _referee(sim_dt: float) -> void:
 	var rules: PongRules = match_node.rules
 	var velocity: Vector3 = match_node.snapshot.ball_velocity
 	if not authority.is_master() and _master_velocity != Vector3.INF:
-		# A follower's ball falls between the master's states and is lifted back by each
-		# correction: at rest on the floor it never looked still here, and a ball that
-		# had rolled dead 150 ms away went unserved for five seconds.
+		# A follower's ball falls between the master's states, lifted back by each correction:
+		# at rest it never looked still here (a ball dead 150 ms away went unserved for 5 s).
 		velocity = _master_velocity
 	if rules.is_over() or not match_node.referee.update(sim_dt, velocity):
 		return
@@ -204,11 +206,11 @@ func _referee(sim_dt: float) -> void:
 
 
 ## Server: a takeover from the server's own ball; its master is the owner of the ball's
-## territory.
-func take_ball() -> void:
+## territory, or [param master] when given.
+func take_ball(master: int = -1) -> void:
 	var s: PongState = match_node.snapshot
 	var takeover: PongNetFacts.TransferKind = PongNetFacts.TransferKind.TAKEOVER
-	issue(takeover, s.territory, s.ball_position, s.ball_velocity, s.ball_spin, 0)
+	issue(takeover, s.territory, s.ball_position, s.ball_velocity, s.ball_spin, 0, master)
 
 
 ## Server: issues the next transfer to everyone, itself included.
@@ -218,9 +220,10 @@ func issue(
 	position: Vector3,
 	velocity: Vector3,
 	spin: Vector3,
-	age_ms: int
+	age_ms: int,
+	master: int = -1
 ) -> void:
-	var next: Dictionary = authority.next_transfer(kind, territory)
+	var next: Dictionary = authority.next_transfer(kind, territory, master)
 	var transfer: PongNetTransferMessage = PongNetTransferMessage.new()
 	transfer.epoch = next["epoch"]
 	transfer.kind = kind
@@ -304,6 +307,7 @@ func _on_ball(sender: int, state: PongNetBallMessage) -> void:
 			_reject(sender, PongNetBallMessage.LABEL, ball_check.reason)
 		if outcome != PongNetBallCheck.Outcome.PLAY:
 			return
+		dry_watch.fed()
 	session.router.forward(sender, state)
 	var buffered: PongNetBallBuffer.State = PongNetBallBuffer.State.new(
 		state.seq, state.time_s, [state.position, state.velocity, state.spin], arrival, age

@@ -17,6 +17,9 @@ extends "res://tests/net/driver/net_peer.gd"
 ## territory every [constant FORGED_BOUNCE_S] (states consistent among themselves, newer than
 ## the real stream's), and claims each bounce. The server's check of the ball must refuse
 ## every state and claim and disconnect it at the budget.
+## [br]- [code]mute[/code]: the griefer: whenever it is the ball's master it streams nothing
+## and never hands the ball over (its heartbeat goes on), printing [constant MUTE_MARK] once
+## an epoch. The server must take the ball and count it; the rally must go on.
 ## [br]- [code]mark[/code]: plays honestly and prints [constant HIT_MARK] each time its own
 ## paddle hits the ball while it is the master, once the match is past its loading stall:
 ## the test kills it right then.
@@ -37,6 +40,7 @@ const FORGED_PER_FRAME: int = 10
 const FORGED_BOUNCE_S: float = 0.6
 const FORGED_SPOT: Vector3 = Vector3(0.4, 0.0, 1.5)
 const HIT_MARK: String = "PongNet rogue: my paddle hit the ball, I am the master"
+const MUTE_MARK: String = "PongNet rogue: the ball's master, streaming nothing"
 ## Match seconds before a hit is marked: past the court's loading stall, and its first beat.
 const MARK_AFTER_S: float = 3.0
 ## Bad packets in the flood that ends each round.
@@ -51,6 +55,7 @@ var _forged: int = 0
 var _forging_s: float = -1.0
 var _forged_states: int = 0
 var _forged_time: float = -INF
+var _muted_epoch: int = -1
 
 
 func _ready() -> void:
@@ -74,6 +79,13 @@ func _process(delta: float) -> void:
 		_forge(cli.net.play)
 	elif _mode == "forge-ball":
 		_forge_ball(cli.net.play, delta)
+	elif _mode == "mute" and cli.net.play.authority.is_master():
+		# A private member of the play, on purpose: the griefer's own build would neither
+		# stream nor ask for the hand-off (the play does neither before it is settled).
+		cli.net.play._settle_until = INF
+		if cli.net.play.authority.epoch != _muted_epoch:
+			_muted_epoch = cli.net.play.authority.epoch
+			print("%s (epoch %d)" % [MUTE_MARK, _muted_epoch])
 	elif _mode == "bad" and _rounds < ROUNDS and _rogue_clock > FIRST_S + EVERY_S * _rounds:
 		_rounds += 1
 		attack(cli.net.play)
