@@ -138,6 +138,8 @@ func test_a_computer_match_runs_to_a_winner() -> void:
 	)
 	await wait_process_frames(2)
 	assert_true(_pong.winner_screen.visible, "the winner screen shows")
+	var loser: PongPlayerPanel = _pong.hud.get_panel(1 - winner)
+	assert_eq(loser.get_health_text(), "0", "the HUD under it shows the loser's last point lost")
 
 
 # The Pong screen in [param mode], stepped; the match is driven by the test unless

@@ -241,6 +241,8 @@ func _on_player_out(player: int) -> void:
 
 func _on_match_over(winner: int) -> void:
 	pause_menu.enabled = false
+	# The winner screen pauses the tree at once: the HUD shows the last hurt under it.
+	hud.refresh(match_node, 0.0)
 	var health: Array[int] = []
 	for player: int in match_node.court.players:
 		health.append(match_node.rules.get_health(player))
