@@ -27,8 +27,12 @@ func _tour() -> void:
 	add_child(_main)
 	await _shot("pong_menu", 1.0)
 	_main.show_pong()
-	await _shot("pong_setup", 0.6)
+	await _shot("pong_preparing", 0.3)
 	var pong: PongScreen = _main.get_screen() as PongScreen
+	# Its buttons come once the court behind it is drawn (seconds on a first launch).
+	while pong.setup.is_preparing():
+		await get_tree().process_frame
+	await _shot("pong_setup", 0.6)
 	if not pong.is_running() and not PongServo.shared().is_available():
 		print("no Pong renderer: ", pong.setup.get_message())
 		get_tree().quit(0)
