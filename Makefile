@@ -346,10 +346,11 @@ test-schema: engine
 
 ## test-net: the network tests: real peers through a relay on 127.0.0.1
 ## The UDP relay that gives loopback latency, jitter and loss, then networked Pong with headless
-## peers through it (tests/net, a few minutes).
+## peers through it (tests/net, about 8 minutes). Two tests at a time (pytest-xdist): most of a
+## match is waiting on real time, and every bound is one a loaded machine meets.
 test-net: import
 	@tools/analysis/run.sh -m pytest tools/net/tests tests/net -q -p no:cacheprovider --durations=15 \
-		--ignore=tests/net/test_exported_server.py
+		--ignore=tests/net/test_exported_server.py -n 2
 
 ## bench-net: networked Pong's numbers for each network setting
 ## networked Pong's bytes/s, hand-off gap, divergence, corrections, ball states
