@@ -102,22 +102,23 @@ void print_user_comparison(const ConditionResult &p_result) {
 		}
 		if (!header) {
 			std::printf("\n  The servo as an ordinary user [%s] against root's (SCHED_%s %d) in the same rounds: wake latency "
-						"p99 / p99.9 [95 %% interval] in us, %s over %llu ticks of root's; ratios to root's\n",
+						"p99 / p99.9 [95 %% interval] in us, %s over %llu ticks of root's; ratios to root's; steal: the "
+						"hypervisor's share of the CPUs while the row ran (host noise, not the servo's)\n",
 					p_result.name.c_str(), p_result.servo.stats.scheduler == SchedulerKind::REALTIME_FIFO ? "FIFO" : "OTHER",
 					p_result.servo.stats.realtime_priority, root.pooled ? "pooled" : "medians of rounds",
 					static_cast<unsigned long long>(root.count));
-			std::printf("  %-46s %8.1f %8.1f [%6.1f-%6.1f]               spin %3.0f us  CPU %4.1f %%\n", "root (as shipped)",
-					root.p99 * US, root.p999 * US, root.p999_low * US, root.p999_high * US,
-					p_result.servo.stats.spin_s * US, 100.0 * p_result.servo.cpu_fraction);
+			std::printf("  %-46s %8.1f %8.1f [%6.1f-%6.1f]               spin %3.0f us  CPU %4.1f %%  steal %.2f %%\n",
+					"root (as shipped)", root.p99 * US, root.p999 * US, root.p999_low * US, root.p999_high * US,
+					p_result.servo.stats.spin_s * US, 100.0 * p_result.servo.cpu_fraction, p_result.servo.steal_percent);
 			header = true;
 		}
 		const double r99 = root.p99 > 0.0 ? r.latency.p99 / root.p99 : 0.0;
 		const double r999 = root.p999 > 0.0 ? r.latency.p999 / root.p999 : 0.0;
 		const ServoStats &s = r.stats;
-		std::printf("  %-46s %8.1f %8.1f [%6.1f-%6.1f]  x%5.2f x%5.2f  spin %3.0f us%s  CPU %4.1f %%  (%s %d%s, "
-					"RealtimeKit: %s)\n",
+		std::printf("  %-46s %8.1f %8.1f [%6.1f-%6.1f]  x%5.2f x%5.2f  spin %3.0f us%s  CPU %4.1f %%  steal %.2f %%  (%s "
+					"%d%s, RealtimeKit: %s)\n",
 				label.c_str(), r.latency.p99 * US, r.latency.p999 * US, r.latency.p999_low * US, r.latency.p999_high * US, r99,
-				r999, s.spin_s * US, s.spin_learned ? " learned, last" : "", 100.0 * r.cpu_fraction,
+				r999, s.spin_s * US, s.spin_learned ? " learned, last" : "", 100.0 * r.cpu_fraction, r.steal_percent,
 				scheduler_kind_name(s.scheduler), s.realtime_priority, s.cpu_latency_held ? ", cpu_dma_latency held" : "",
 				rtkit_outcome_name(s.realtime_kit.outcome));
 		if (s.realtime_kit.rttime_usec > 0) {
