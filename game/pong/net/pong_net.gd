@@ -32,6 +32,8 @@ var dedicated: bool = false
 var autopilot: bool = false
 ## Step the servo here, paced by the wall clock (headless peers) instead of its thread.
 var stepped: bool = false
+## Whether the match's screen draws its view and HUD (false: a headless peer, seen by nobody).
+var draws_screen: bool = true
 var start_health: int = PongRules.DEFAULT_START_HEALTH
 ## Lobby, peer id -> {name, seat, ready}.
 var players: Dictionary[int, Dictionary] = {}
@@ -240,6 +242,7 @@ func _begin(owners: PackedInt64Array, health: int) -> void:
 	session.announce_stall()
 	screen = PONG_SCENE.instantiate() as PongScreen
 	screen.stepped = stepped
+	screen.drawn = draws_screen
 	screen.players = seats
 	screen.start_health = health
 	screen.viewer_seat = maxi(seat_here, 0)

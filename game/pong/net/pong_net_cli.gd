@@ -106,6 +106,7 @@ func _launch() -> void:
 	net.dedicated = role == "server"
 	net.autopilot = net.dedicated
 	net.stepped = DisplayServer.get_name() == "headless"
+	net.draws_screen = not net.stepped
 	net.seats = option("pong-net-seats", "2").to_int()
 	launched.emit(net)
 	if not PongNetProtocol.SEAT_COUNTS.has(net.seats):

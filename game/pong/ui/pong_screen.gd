@@ -43,6 +43,9 @@ const OLD_EXTENSION_TEXT: String = (
 var viewer_seat: int = -1
 ## Names by seat that replace the ones the controllers give (a network match: the lobby's).
 var seat_names: Dictionary[int, String] = {}
+## Whether anyone sees this screen: a headless peer's view and HUD are not refreshed (at its
+## 1000 frames a second they were a large share of its CPU, for nobody).
+var drawn: bool = true
 
 var _running: bool = false
 var _frames_before_court: int = 2
@@ -81,8 +84,10 @@ func _ready() -> void:
 
 
 func _process(delta: float) -> void:
-	if _running:
-		world.render(match_node)
+	if not _running or not drawn:
+		return
+	world.render(match_node)
+	if hud.visible:
 		hud.refresh(match_node, delta)
 
 
