@@ -53,6 +53,13 @@ func reset() -> void:
 	winner = -1
 
 
+## The match as it stands elsewhere: each player's [param health] (a player who rejoins a
+## running network match), within [0, start health]; no winner yet.
+func resume(health: PackedInt32Array) -> void:
+	for player: int in mini(health.size(), players):
+		_health[player] = clampi(health[player], 0, start_health)
+
+
 ## Whether [param player] is out of health (out of the match).
 func is_out(player: int) -> bool:
 	return _health[player] <= 0

@@ -251,15 +251,18 @@ def weapon_hurts(report: dict) -> list[tuple]:
     return [tuple(h) for h in report.get("extra", {}).get("weapons", {}).get("hurts", [])]
 
 
-def recounted_health(report: dict) -> list[int]:
+def recounted_health(report: dict, start: list[int] | None = None) -> list[int]:
     """The health the peer's own hurts give, floor bounces ([epoch, seat, cause]) and weapon
-    hurts ([seat, cause, weapon seat, weapon id]), by the rules its report names."""
+    hurts ([seat, cause, weapon seat, weapon id]), by the rules its report names, from the
+    start's health or each seat's [start] (a peer that joined the match as it stood)."""
     lost = [0] * len(report["health"])
     for _, seat, cause in floor_hurts(report):
         lost[seat] += report["damage"][cause]
     for seat, cause, _, _ in weapon_hurts(report):
         lost[seat] += report["damage"][cause]
-    return [max(report["start_health"] - x, 0) for x in lost]
+    if start is None:
+        start = [report["start_health"]] * len(lost)
+    return [max(s - x, 0) for s, x in zip(start, lost)]
 
 
 def check_health(reports: list[dict]) -> None:

@@ -257,19 +257,21 @@ func test_the_host_charges_a_clients_claim_for_a_bounce_it_saw_and_no_forgery() 
 	var rules: PongRules = play.match_node.rules
 	var start: int = rules.get_health(0)
 	var hurts: PongNetFloorHurts = play.floor_hurts
+	var clock: Array[float] = [100.0]
+	hurts.clock = func() -> float: return clock[0]
 	for i: int in 40:
 		_receive(CLIENT, _claim(1, 0))
 	var waiting: int = hurts.judge.max_waiting()
 	assert_eq(_refused("floor claim"), 40 - waiting, "no more wait than a ball bounces in it")
 	for i: int in 3:
 		hurts.on_claim(HOST, _claim(1, 1))
-	play.match_node.now += LATE_S
+	clock[0] += LATE_S
 	hurts.observe(play.match_node.snapshot)
 	assert_eq(rules.get_health(0), start, "40 forged claims on the host's seat: nothing")
 	assert_eq(_refused("floor claim"), 43, "each refused and counted")
 	assert_eq(play.session.budget.count_of(CLIENT), 40)
 	assert_eq(_router.sent_of(PongNetFloorHurtMessage.SCHEMA_ID), [], "nothing charged")
-	hurts.judge.observe_floor(play.match_node.now, FAR)
+	hurts.judge.observe_floor(hurts.now(), FAR)
 	_receive(CLIENT, _claim(1, 1))
 	assert_eq(rules.get_health(1), start - 1, "the client's own bounce costs it a point")
 	var charged: Array[PongNetMessage] = _router.sent_of(PongNetFloorHurtMessage.SCHEMA_ID)
@@ -278,6 +280,37 @@ func test_the_host_charges_a_clients_claim_for_a_bounce_it_saw_and_no_forgery() 
 		var hurt: PongNetFloorHurtMessage = charged[0]
 		assert_eq([hurt.epoch, hurt.victim], [1, 1])
 	assert_eq(_report.hurts, [[1, 1, "floor"]])
+
+
+func test_a_stall_of_the_host_does_not_slide_a_bounce_out_of_its_epoch() -> void:
+	# A windowed host's match time counts a 1.5 s stall as 0.1 s; the master's states that
+	# waited meanwhile are aged by this machine's clock. The client's honest claim of a
+	# bounce 0.2 s into its epoch was refused when the bounce was placed on match time.
+	var play: PongNetPlay = _open_play()
+	if play == null:
+		return
+	var rules: PongRules = play.match_node.rules
+	var start: int = rules.get_health(1)
+	var hurts: PongNetFloorHurts = play.floor_hurts
+	var clock: Array[float] = [100.0]
+	hurts.clock = func() -> float: return clock[0]
+	_client_master_at_epoch_one(play)
+	hurts.observe(play.match_node.snapshot)
+	clock[0] += 1.5
+	play.match_node.now += 0.1
+	# Played now, 1.3 s old: the master's ball either side of its bounce at 100.2 s.
+	var ball: Array[Array] = [
+		[Vector3(0.3, 0.11, -1.3), Vector3(0.0, -3.6, -1.0)],
+		[Vector3(0.3, 0.098, -1.35), Vector3(0.0, 2.9, -1.0)],
+	]
+	var states: Array[PongNetBallBuffer.State] = []
+	for i: int in ball.size():
+		var at: Array[Vector3] = [ball[i][0], ball[i][1], Vector3.ZERO]
+		states.append(PongNetBallBuffer.State.new(i + 1, 0.0, at, 50.0, 1.305 - 0.01 * i))
+	hurts.observe_master(states, 50.0)
+	_receive(CLIENT, _claim(1, 1))
+	assert_eq(rules.get_health(1), start - 1, "its bounce, in its epoch: charged")
+	assert_eq(_refused("floor claim"), 0)
 
 
 func test_only_the_server_charges_floor_hurts() -> void:

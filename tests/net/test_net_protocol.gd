@@ -87,6 +87,39 @@ func test_names_must_be_short_non_empty_strings() -> void:
 	assert_true(HapticsWireReader.last_error.contains("65535 bytes of text, at most 96"))
 
 
+func test_an_identity_is_up_to_32_hex_digits_and_each_peer_draws_its_own() -> void:
+	var drawn: String = PongNetRejoins.new(null).identity
+	assert_eq(drawn.length(), 32)
+	assert_true(PongNetProtocol.is_identity(drawn), drawn)
+	assert_ne(PongNetRejoins.new(null).identity, drawn, "128 random bits each")
+	for bad: String in ["", "+abc", "-abc", "xyz", "a".repeat(33), "0x12"]:
+		assert_false(PongNetProtocol.is_identity(bad), bad)
+	var hello: PongNetHelloMessage = PongNetHelloMessage.new()
+	hello.identity = "f".repeat(33)
+	assert_null(PongNetHelloMessage.decode(hello.encode()), "an oversized identity")
+
+
+func test_an_identity_lasts_in_its_file_and_a_bad_file_gets_a_new_one() -> void:
+	var path: String = "user://test_identity_%d.txt" % Time.get_ticks_usec()
+	var first: String = PongNetRejoins.lasting(path)
+	assert_true(PongNetProtocol.is_identity(first), first)
+	assert_eq(PongNetRejoins.lasting(path), first, "the same after a restart")
+	var file: FileAccess = FileAccess.open(path, FileAccess.WRITE)
+	file.store_string("not an identity")
+	file.close()
+	var fresh: String = PongNetRejoins.lasting(path)
+	assert_true(PongNetProtocol.is_identity(fresh) and fresh != first, fresh)
+	assert_eq(FileAccess.get_file_as_string(path), fresh, "written for the next start")
+	DirAccess.remove_absolute(ProjectSettings.globalize_path(path))
+
+
+func test_a_resumed_match_takes_each_seats_health_within_the_start() -> void:
+	var rules: PongRules = PongRules.new(99, 2)
+	rules.resume(PackedInt32Array([40, 120, 7]))
+	assert_eq([rules.get_health(0), rules.get_health(1)], [40, 99], "clamped; a third ignored")
+	assert_false(rules.is_over())
+
+
 func test_channels_are_distinct_and_the_streams_have_their_own() -> void:
 	var channels: Array[int] = [
 		PongNetFacts.NET_CHANNEL_BALL,

@@ -304,7 +304,8 @@ def value_class(schema_set, v):
             if f.fixed:
                 out += wrapped("\t\t", f"value.{f.name}[i] = ", item_read)
             else:
-                out += wrapped("\t\t", f"value.{f.name}.append(", item_read + ")")
+                # gdformat breaks the append's argument out first.
+                out += wrapped("\t\t", "", f"value.{f.name}.append({item_read})")
             out.append("\t\treader.leave()")
         elif t.container == "optional":
             out.append(f"\tif reader.present({name}):")

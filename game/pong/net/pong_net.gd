@@ -10,7 +10,8 @@ extends Node
 ## The server (peer 1) keeps the lobby: it gives each joining player the first free seat,
 ## starts the match when every player is ready (a dedicated server: by itself; a hosting
 ## player: on Start), and drives empty seats and the seats of players who left with the
-## computer player. A client that loses its server ends the match cleanly.
+## computer player. A client that loses its server ends the match cleanly; while its seat is
+## kept it may join again and take the seat back ([PongNetRejoins]).
 
 signal lobby_changed
 ## A line for the lobby's status (connection, refusal, who left).
@@ -44,6 +45,8 @@ var local_controller_factory: Callable = Callable()
 var session: PongNetSession = null
 var play: PongNetPlay = null
 var screen: PongScreen = null
+## This peer's identity, and on the server who presented which (a rejoin reclaims a seat).
+var rejoins: PongNetRejoins = null
 
 # Players silent for a while: their seats kept, the trouble shown.
 var _absences: PongNetAbsences = null
@@ -60,6 +63,7 @@ func _init() -> void:
 	play.session = session
 	play.seats.changed.connect(seats_changed)
 	add_child(play)
+	rejoins = PongNetRejoins.new(self)
 	session.connected.connect(_on_connected)
 	# Deferred: the session closes right after it fails, and the lobby shows it closed.
 	session.failed.connect(status_changed.emit, CONNECT_DEFERRED)
@@ -190,14 +194,15 @@ func _on_connected() -> void:
 	status_changed.emit("Connected; waiting for the host to start")
 	var hello: PongNetHelloMessage = PongNetHelloMessage.new()
 	hello.name = my_name
+	hello.identity = rejoins.identity
 	session.router.send_to(PongNetAuthority.SERVER_ID, hello)
 
 
 func _on_peer_left(peer: int) -> void:
-	var entry: Dictionary = players.get(peer, {})
-	var name_left: String = entry.get("name", "peer %d" % peer)
+	rejoins.forget(peer)
+	if players.has(peer):  # Not a connection a rejoin replaced.
+		status_changed.emit("%s left" % players[peer]["name"])
 	players.erase(peer)
-	status_changed.emit("%s left" % name_left)
 	seats_changed()
 	if session.is_server:
 		# At the end of the frame: ENet empties every peer whose goodbye came in the same
@@ -211,7 +216,7 @@ func _on_peer_left(peer: int) -> void:
 func _after_peer_left(peer: int) -> void:
 	if not session.is_server:
 		return
-	_broadcast_lobby()
+	broadcast_lobby()
 	if play.is_running():
 		play.seats.take_over(peer)
 
@@ -231,7 +236,9 @@ func _on_server_lost() -> void:
 	lobby_changed.emit()
 
 
-func _begin(owners: PackedInt64Array, health: int) -> void:
+func _begin(
+	owners: PackedInt64Array, health: int, now_health: PackedInt32Array = PackedInt32Array()
+) -> void:
 	_end_match(-1, "restart")
 	# A rematch started while this peer still shows the last winner screen.
 	close_screen()
@@ -260,6 +267,7 @@ func _begin(owners: PackedInt64Array, health: int) -> void:
 		status_changed.emit("No Pong renderer: build the extension")
 		return
 	screen.hud.visible = not dedicated
+	match_node.rules.resume(now_health)
 	var authority: PongNetAuthority = PongNetAuthority.new(me, owners)
 	play.stepped = stepped
 	play.ball.stepped = stepped
@@ -295,7 +303,7 @@ func close_screen() -> void:
 		screen = null
 
 
-func _broadcast_lobby() -> void:
+func broadcast_lobby() -> void:
 	var lobby: PongNetLobbyMessage = PongNetLobbyMessage.new()
 	lobby.seats = seats
 	for peer: int in players:
@@ -314,7 +322,7 @@ func _on_ready(peer: int, is_ready: bool) -> void:
 		session.misbehaved(peer, PongNetReadyMessage.LABEL, "not in the lobby")
 		return
 	players[peer]["ready"] = is_ready
-	_broadcast_lobby()
+	broadcast_lobby()
 
 
 func _free_seat() -> int:
@@ -337,14 +345,19 @@ func _on_hello(sender: int, hello: PongNetHelloMessage) -> void:
 	if not reason.is_empty():
 		session.misbehaved(sender, PongNetHelloMessage.LABEL, reason)
 		return
+	var old: int = rejoins.kept_for(hello.identity)
+	if old != 0:
+		rejoins.reclaim(sender, old)
+		return
 	var seat: int = _free_seat()
 	if play.is_running() or seat < 0:
 		session.refuse(sender, "a match is running" if play.is_running() else "the server is full")
 		return
+	rejoins.note(sender, hello.identity)
 	var unique: String = PongNetNames.unique(hello.name, players)
 	players[sender] = {"name": unique, "seat": seat, "ready": false}
 	status_changed.emit("%s joined (seat %d)" % [unique, seat + 1])
-	_broadcast_lobby()
+	broadcast_lobby()
 
 
 func _on_ready_message(sender: int, message: PongNetReadyMessage) -> void:
@@ -373,8 +386,12 @@ func _on_lobby(sender: int, lobby: PongNetLobbyMessage) -> void:
 
 
 func _on_start(sender: int, start: PongNetStartMessage) -> void:
+	var reason: String = ""
 	if start.owners.size() != seats:
-		var reason: String = "owners is not %d peer ids" % seats
+		reason = "owners is not %d peer ids" % seats
+	elif not start.now_health.is_empty() and start.now_health.size() != seats:
+		reason = "now_health is not %d seats' health" % seats
+	if not reason.is_empty():
 		session.misbehaved(sender, PongNetStartMessage.LABEL, reason)
 		return
-	_begin(start.owners, start.health)
+	_begin(start.owners, start.health, start.now_health)

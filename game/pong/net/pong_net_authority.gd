@@ -155,6 +155,14 @@ func stand_in(peer: int) -> PackedInt32Array:
 	return freed
 
 
+## Server: the seats kept for [param old] are kept for [param new_peer] (the same player,
+## rejoined under a new connection).
+func rekey_kept(old: int, new_peer: int) -> void:
+	for seat: int in kept.keys():
+		if kept[seat] == old:
+			kept[seat] = new_peer
+
+
 ## Server: the absent peer is back: the seats kept for it are its own again. Returns them.
 func give_back(peer: int) -> PackedInt32Array:
 	var back: PackedInt32Array = PackedInt32Array()

@@ -9,6 +9,7 @@ extends RefCounted
 ## played here. The floor bounces of that simulation are the ones a floor claim may match.
 ## A ball the master's states put in another territory is handed over by the server when
 ## the master has not asked for the hand-off itself within [constant LEFT_BEHIND_S].
+## Times are seconds of the clock messages are aged by ([member PongNetFloorHurts.clock]).
 
 ## What became of a state.
 enum Outcome { PLAY, REFUSE, DROP }
@@ -40,15 +41,15 @@ var worst_miss_m: float = 0.0
 var _court: PongCourt = null
 var _judge: PongNetHurtJudge = null
 var _authority: PongNetAuthority = null
-# The newest state played (null: none this epoch), when it arrived (match s) and its age then.
+# The newest state played (null: none this epoch), when it arrived (s) and its age then.
 var _newest: PongNetBallMessage = null
 var _newest_arrival: float = 0.0
 var _newest_age_s: float = 0.0
-# Since when (match seconds) the played states have shown the ball outside the master's
+# Since when (s) the played states have shown the ball outside the master's
 # territory (INF: they do not).
 var _out_since: float = INF
 # The ball the server handed over at the epoch's start ([position, velocity, spin]) and
-# when (match seconds); empty once it anchored the epoch's flight.
+# when (s); empty once it anchored the epoch's flight.
 var _handed: Array[Vector3] = []
 var _handed_at: float = 0.0
 var _new_match: bool = true
@@ -73,7 +74,7 @@ func note_pose(sender: int, pose: PongNetPoseMessage) -> void:
 
 
 ## Checks [param state] of the master's stream, [param age_s] old on arrival at
-## [param now] (match seconds): PLAY it, REFUSE it ([member reason] says why) or DROP it
+## [param now] (s): PLAY it, REFUSE it ([member reason] says why) or DROP it
 ## (older than every state of its epoch here: not judged).
 func admit(state: PongNetBallMessage, age_s: float, now: float) -> Outcome:
 	var age: float = clampf(age_s, 0.0, 10.0)
@@ -110,7 +111,7 @@ func admit(state: PongNetBallMessage, age_s: float, now: float) -> Outcome:
 
 
 ## A new epoch, its ball [param handed] ([position, velocity, spin]) as the server handed
-## it over at [param now] (match seconds): nothing of the old master's stream counts toward
+## it over at [param now] (s): nothing of the old master's stream counts toward
 ## a hand-off, and the new master's states are checked from that ball.
 func restart(handed: Array[Vector3], now: float) -> void:
 	_newest = null
@@ -144,7 +145,7 @@ func owed_hand_off(authority: PongNetAuthority, now: float) -> Owed:
 
 ## Server, following a master of [param territory]: the hand-off the server owes, when the
 ## master's states have shown the ball in another territory for [constant LEFT_BEHIND_S]
-## by [param now] (match seconds), or null.
+## by [param now] (s), or null.
 func left_behind(territory: int, now: float) -> Owed:
 	if _newest == null:
 		return null

@@ -7,6 +7,9 @@ extends Node
 ## [br][code]--pong-net=host|join --port=P --address=A --name=N [--pong-net-seats=2|4][/code]:
 ## a player without the menu, ready as soon as it is in the lobby; the host starts the match
 ## when every player is ready; the game quits when the match is over.
+## [br][code]--identity=HEX[/code]: the secret a player presents when it joins (by default one
+## drawn at start): a game restarted with the same one takes back the seat kept for it in a
+## running match.
 ## [br][code]--pong-net-max-seconds=S[/code]: quit (exit 0) after S seconds whatever happens:
 ## a server run for a while (a smoke test of an export, a supervised restart).
 ## [br]Exit codes: 0 done, 2 connection failed or refused, 3 no Pong renderer.
@@ -108,9 +111,13 @@ func _launch() -> void:
 	net.stepped = DisplayServer.get_name() == "headless"
 	net.draws_screen = not net.stepped
 	net.seats = option("pong-net-seats", "2").to_int()
+	net.rejoins.identity = option("identity", net.rejoins.identity)
 	launched.emit(net)
 	if not PongNetProtocol.SEAT_COUNTS.has(net.seats):
 		finish(2, "--pong-net-seats must be one of %s" % str(PongNetProtocol.SEAT_COUNTS))
+		return
+	if not PongNetProtocol.is_identity(net.rejoins.identity):
+		finish(2, "--identity must be 1 to %d hex digits" % PongNetFacts.NET_MAX_IDENTITY_BYTES)
 		return
 	if net.stepped:
 		# A stepped peer runs the servo by hand during a match; between matches nothing here

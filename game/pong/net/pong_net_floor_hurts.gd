@@ -10,11 +10,17 @@ extends RefCounted
 ## bounce charged already, faster than a ball can bounce, from a peer that was not the master
 ## at its epoch) is refused and counted against the sender. The server's own bounces as
 ## master are charged at once.
+## [br]Its times are on [member clock], the clock messages are aged by, not the match's: the
+## match's time stops growing while its process stalls (a frame counts for at most 0.1 s, a
+## stepped peer catches up 0.1 s at most), and a bounce placed by its age on it slid out of
+## its epoch (honest claims were refused so).
 
 ## A floor bounce cost [param victim] a point at [param epoch], here as on every peer.
 signal hurt_applied(epoch: int, victim: int)
 
 var judge: PongNetHurtJudge = null
+## The clock of the judge's times, seconds: this machine's ([method PongNetBall.clock_s]).
+var clock: Callable = func() -> float: return PongNetBall.clock_s()
 
 var _router: PongNetRouter = null
 var _match: PongMatch = null
@@ -50,7 +56,7 @@ func on_event(event: PongEvent) -> void:
 	var on_server: bool = _is_server()
 	var ours: bool = _authority.is_master() and territory >= 0 and territory < judge.seats
 	if on_server:
-		judge.observe_floor(_match.now, event.position, ours)
+		judge.observe_floor(now(), event.position, ours)
 	if not ours or _match.rules.is_over():
 		return
 	if on_server:
@@ -66,11 +72,12 @@ func on_event(event: PongEvent) -> void:
 func observe(snapshot: PongState) -> void:
 	if not _is_server():
 		return
+	var here: float = now()
 	for epoch: int in range(_seen_epoch + 1, _authority.epoch + 1):
-		_epoch_from[epoch] = _match.now
+		_epoch_from[epoch] = here
 	_seen_epoch = maxi(_seen_epoch, _authority.epoch)
 	var master: bool = _authority.is_master()
-	judge.observe(_match.now, snapshot.ball_position, snapshot.ball_velocity, master)
+	judge.observe(here, snapshot.ball_position, snapshot.ball_velocity, master)
 	_settle()
 
 
@@ -79,8 +86,9 @@ func observe(snapshot: PongState) -> void:
 func observe_master(states: Array[PongNetBallBuffer.State], now_s: float) -> void:
 	if not _is_server():
 		return
+	var here: float = now()
 	for state: PongNetBallBuffer.State in states:
-		judge.observe_master(_match.now - state.age_at(now_s), state.position, state.velocity)
+		judge.observe_master(here - state.age_at(now_s), state.position, state.velocity)
 
 
 ## Server: [param sender] claims that a floor bounce at its epoch cost its victim a point.
@@ -97,7 +105,7 @@ func on_claim(sender: int, claim: PongNetFloorClaimMessage) -> void:
 	if not reason.is_empty():
 		_reject.call(sender, PongNetFloorClaimMessage.LABEL, reason)
 		return
-	_pending.append([sender, claim.epoch, claim.victim, _match.now])
+	_pending.append([sender, claim.epoch, claim.victim, now()])
 	_settle()
 
 
@@ -110,6 +118,11 @@ func on_hurt(sender: int, hurt: PongNetFloorHurtMessage) -> void:
 		_reject.call(sender, PongNetFloorHurtMessage.LABEL, reason)
 		return
 	_apply(hurt.epoch, hurt.victim)
+
+
+## Now on [member clock].
+func now() -> float:
+	return clock.call()
 
 
 func _is_server() -> bool:
@@ -125,7 +138,7 @@ func _settle() -> void:
 		var arrived: float = claim[3]
 		var from: float = _epoch_from.get(epoch, -INF)
 		var to: float = _epoch_from.get(epoch + 1, INF)
-		var verdict: Array = judge.judge(_match.now, arrived, victim, territory, from, to)
+		var verdict: Array = judge.judge(now(), arrived, victim, territory, from, to)
 		match verdict[0]:
 			PongNetHurtJudge.Verdict.ACCEPT:
 				_charge(epoch, victim)

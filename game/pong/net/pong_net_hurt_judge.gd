@@ -16,7 +16,7 @@ extends RefCounted
 ## The fourth, and the surest: the bounces of the server's own simulation of the master's
 ## ball from the states it accepted ([PongNetBallCheck]); a forged state is refused before it
 ## reaches any of the others. While this peer is the master its servo's events are the whole
-## truth. Times are match seconds.
+## truth. Times are seconds of the clock messages are aged by ([member PongNetFloorHurts.clock]).
 ## [br]The rate is counted by the bounces' times: one bounce per claim, however the claims
 ## bunch on the way.
 ## [br]A claim of the territory the ball was in at the claim's epoch may match a bounce up to
@@ -66,7 +66,7 @@ var _bounces: Array[Array] = []
 var _last: Array = []
 # The last of the master's states played here: [time, position, velocity], or empty.
 var _last_master: Array = []
-# The newest time of the master's states played here (match seconds).
+# The newest time of the master's states played here (s).
 var _master_newest: float = -INF
 var _tokens: PackedFloat64Array = PackedFloat64Array()
 var _tokens_at: PackedFloat64Array = PackedFloat64Array()

@@ -156,7 +156,7 @@ func frame(delta: float) -> void:
 	if authority.my_id == PongNetAuthority.SERVER_ID:
 		_referee(sim_dt)
 		dry_watch.update(sim_dt, PongNetPulse.now_s())
-		var owed: PongNetBallCheck.Owed = ball_check.owed_hand_off(authority, match_node.now)
+		var owed: PongNetBallCheck.Owed = ball_check.owed_hand_off(authority, floor_hurts.now())
 		if owed != null:
 			var handoff: PongNetFacts.TransferKind = PongNetFacts.TransferKind.HANDOFF
 			issue(handoff, owed.territory, owed.position, owed.velocity, owed.spin, owed.age_ms)
@@ -302,7 +302,7 @@ func _on_ball(sender: int, state: PongNetBallMessage) -> void:
 		)
 		return
 	if ball_check != null:
-		var outcome: PongNetBallCheck.Outcome = ball_check.admit(state, age, match_node.now)
+		var outcome: PongNetBallCheck.Outcome = ball_check.admit(state, age, floor_hurts.now())
 		if outcome == PongNetBallCheck.Outcome.REFUSE:
 			_reject(sender, PongNetBallMessage.LABEL, ball_check.reason)
 		if outcome != PongNetBallCheck.Outcome.PLAY:
@@ -369,7 +369,7 @@ func _on_transfer(sender: int, transfer: PongNetTransferMessage) -> void:
 		_predictor, transfer.position, transfer.velocity, _gravity(), age
 	)
 	if ball_check != null:
-		ball_check.restart([target[0], target[1], transfer.spin], match_node.now)
+		ball_check.restart([target[0], target[1], transfer.spin], floor_hurts.now())
 	transferred.emit(authority.history[-1], (target[0] - ball.local()[0]).length())
 	var serve: bool = transfer.kind == PongNetFacts.TransferKind.SERVE
 	ball.transfer(serve, [target[0], target[1], transfer.spin], age, PongNetBall.clock_s())

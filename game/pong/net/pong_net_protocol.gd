@@ -174,6 +174,17 @@ static func heartbeat_timeout_s(rtt_s: float, jitter_s: float) -> float:
 
 ## Whether [param point] lies in [param territory] of a court of [param seats], or within
 ## [param margin] metres of it along the floor.
+## Whether [param identity] may be presented in a hello: 1 to
+## [constant PongNetFacts.NET_MAX_IDENTITY_BYTES] hex digits.
+static func is_identity(identity: String) -> bool:
+	if (
+		identity.length() > PongNetFacts.NET_MAX_IDENTITY_BYTES
+		or not identity.is_valid_hex_number()
+	):
+		return false
+	return identity[0] != "+" and identity[0] != "-"  # Godot's hex numbers may be signed.
+
+
 static func near_territory(point: Vector3, territory: int, seats: int, margin: float) -> bool:
 	if PongCourt.territory_of(point, seats) == territory:
 		return true

@@ -115,6 +115,7 @@ func _on_match_started() -> void:
 	_match_clock = 0.0
 	_seat = net.my_seat()
 	report.begin(net.play)
+	report.extra["health_at_start"] = _health(net)
 	var rate: float = option("pong-net-weapon-rate", "1").to_float()
 	for controller: PongController in net.play.match_node.controllers:
 		if controller is PongAi and rate > 0.0:

@@ -103,7 +103,10 @@ func _on_silence(silent_peer: int, silence_s: float, what: String) -> void:
 
 func _on_seats_given_back(back_peer: int, seats: PackedInt32Array) -> void:
 	var back: Array = extra.get_or_add("seats_back", [])
-	back.append({"peer": back_peer, "seats": Array(seats), "wall_s": now()})
+	var health: Array[int] = []
+	for seat: int in _play.authority.owners.size():
+		health.append(_play.match_node.rules.get_health(seat))
+	back.append({"peer": back_peer, "seats": Array(seats), "wall_s": now(), "health": health})
 
 
 ## The ball in this peer's servo [param snapshot]; [param master]: whether this peer

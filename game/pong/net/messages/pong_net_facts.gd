@@ -74,6 +74,9 @@ const NET_MAX_PADDLE_SPEED_M_PER_S: float = 40.0
 ## Longest player name, bytes of UTF-8: the lobby's 24 characters of up to 4 bytes.
 const NET_MAX_NAME_BYTES: int = 96
 
+## Longest identity a client presents, bytes (128 random bits as hex).
+const NET_MAX_IDENTITY_BYTES: int = 32
+
 ## Longest reason a server gives a client it refuses, bytes of UTF-8.
 const NET_MAX_REASON_BYTES: int = 200
 
@@ -101,10 +104,10 @@ const MESSAGE_LABELS: Dictionary[int, String] = {
 	0x84549a12: "bullet",
 	0x6accecd4: "mine",
 	0xa61a6813: "weapon hurt",
-	0x8a38cbf7: "hello",
+	0xfb5dd160: "hello",
 	0xd0f4a95d: "ready",
 	0x3a3a0abd: "lobby",
-	0x374a522a: "start",
+	0x7aff1d69: "start",
 	0xcd16db3a: "heartbeat",
 	0xfd7e4897: "stall notice",
 	0x93590218: "refusal",

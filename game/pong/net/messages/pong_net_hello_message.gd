@@ -6,7 +6,7 @@ extends PongNetMessage
 ## A client's first message once the version check passed: its player's name.
 
 ## This layout's id on the wire (docs/values.md): a change of any field changes it.
-const SCHEMA_ID: int = 0x8a38cbf7
+const SCHEMA_ID: int = 0xfb5dd160
 ## Words for people: what this message is (log lines, counts).
 const LABEL: String = "hello"
 ## The channel it travels on ([method SceneMultiplayer.send_bytes]).
@@ -20,6 +20,9 @@ const TO_SERVER: bool = true
 
 ## The player's name (the lobby takes 1 to 24 characters, not all blank).
 var name: String = ""
+## A secret the client drew for itself (hex): the one who presents it again while the seat it held
+## in a running match is kept gets that seat back (a rejoin). Empty: no rejoin.
+var identity: String = ""
 
 
 ## This value's bytes (docs/values.md): what the native library and the network take.
@@ -60,10 +63,12 @@ func to_server() -> bool:
 ## Writes the fields, in order (also as part of a value that holds this one).
 func write_to(writer: HapticsWireWriter) -> void:
 	writer.text(name)
+	writer.text(identity)
 
 
 ## Reads the fields, in order, checking each against the schema.
 static func read_from(reader: HapticsWireReader) -> PongNetHelloMessage:
 	var value: PongNetHelloMessage = PongNetHelloMessage.new()
 	value.name = reader.text(&"name", 96)
+	value.identity = reader.text(&"identity", 32)
 	return value

@@ -6,7 +6,7 @@ extends PongNetMessage
 ## The server starts a match.
 
 ## This layout's id on the wire (docs/values.md): a change of any field changes it.
-const SCHEMA_ID: int = 0x374a522a
+const SCHEMA_ID: int = 0x7aff1d69
 ## Words for people: what this message is (log lines, counts).
 const LABEL: String = "start"
 ## The channel it travels on ([method SceneMultiplayer.send_bytes]).
@@ -22,6 +22,9 @@ const TO_SERVER: bool = false
 var owners: PackedInt64Array = PackedInt64Array()
 ## Each player's health at the start. Range [1, 999].
 var health: int = 0
+## Each seat's health now, in seat order, for a player who rejoins the match while it runs; empty:
+## every seat has the start's. Range [-inf, 999]. At most PONG_MAX_PLAYERS (4).
+var now_health: PackedInt32Array = PackedInt32Array()
 
 
 ## This value's bytes (docs/values.md): what the native library and the network take.
@@ -65,6 +68,9 @@ func write_to(writer: HapticsWireWriter) -> void:
 	for item: int in owners:
 		writer.integer(item, 4)
 	writer.integer(health, 2)
+	writer.count(now_health.size())
+	for item: int in now_health:
+		writer.integer(item, 2)
 
 
 ## Reads the fields, in order, checking each against the schema.
@@ -75,4 +81,10 @@ static func read_from(reader: HapticsWireReader) -> PongNetStartMessage:
 		value.owners.append(reader.integer(&"", 4, false))
 		reader.leave()
 	value.health = reader.integer(&"health", 2, false, 1, PongNetFacts.NET_MAX_HEALTH)
+	for i: int in reader.count(&"now_health", PongServoFacts.PONG_MAX_PLAYERS):
+		reader.enter_item(&"now_health", i)
+		value.now_health.append(
+			reader.integer(&"", 2, false, -0x7FFFFFFFFFFFFFFF, PongNetFacts.NET_MAX_HEALTH)
+		)
+		reader.leave()
 	return value

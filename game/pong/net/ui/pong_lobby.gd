@@ -15,6 +15,9 @@ const SEAT_CHOICES: Array[int] = [2, 4]
 const HOST_NAME: String = "Host"
 const GUEST_NAME: String = "Guest"
 const STARTING_TEXT: String = "Starting the match…"
+## Where this player's identity is kept: a game restarted after a crash joins the running
+## match again in its old seat ([PongNetRejoins]).
+const IDENTITY_PATH: String = "user://pong_net_identity.txt"
 
 var net: PongNet = null
 
@@ -46,6 +49,7 @@ func _ready() -> void:
 		net = PongNet.new()
 		net.name = PongNet.NODE_NAME
 		get_tree().root.add_child.call_deferred(net)
+	net.rejoins.identity = PongNetRejoins.lasting(IDENTITY_PATH)
 	net.status_changed.connect(_on_status)
 	net.lobby_changed.connect(_refresh)
 	net.match_started.connect(_on_match_started)
