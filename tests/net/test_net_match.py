@@ -238,9 +238,11 @@ def test_killed_peer_is_taken_over_by_the_computer() -> None:
 
 def test_version_mismatch_is_refused_on_both_sides() -> None:
     with workspace() as work:
+        # The host lives until its deadline, long enough for a client whose start-up is slow
+        # on a loaded machine to reach it (with 6 s, one started after the host had gone).
         peers, _ = run_match(work, 2, NETWORKS["lan"], 3,
                              client_args=(("--pong-net-version=hbp-net-0",),),
-                             host_args=("--pong-net-max-seconds=6",))
+                             host_args=("--pong-net-max-seconds=20",))
         host, client = peers
         assert client.report["exit_code"] == 2, client.log()
         assert "refused" in client.report["error"] and "hbp-net-0" in client.report["error"]
