@@ -235,6 +235,13 @@ func _client_master_at_epoch_one(play: PongNetPlay) -> void:
 	assert_eq(play.authority.master_at(1), CLIENT)
 
 
+# The judge's clock, moved by hand: [0] is now.
+func _hand_clock(hurts: PongNetFloorHurts) -> Array[float]:
+	var clock: Array[float] = [100.0]
+	hurts.clock = func() -> float: return clock[0]
+	return clock
+
+
 func _claim(epoch: int, victim: int) -> PongNetFloorClaimMessage:
 	var claim: PongNetFloorClaimMessage = PongNetFloorClaimMessage.new()
 	claim.epoch = epoch
@@ -257,8 +264,7 @@ func test_the_host_charges_a_clients_claim_for_a_bounce_it_saw_and_no_forgery() 
 	var rules: PongRules = play.match_node.rules
 	var start: int = rules.get_health(0)
 	var hurts: PongNetFloorHurts = play.floor_hurts
-	var clock: Array[float] = [100.0]
-	hurts.clock = func() -> float: return clock[0]
+	var clock: Array[float] = _hand_clock(hurts)
 	for i: int in 40:
 		_receive(CLIENT, _claim(1, 0))
 	var waiting: int = hurts.judge.max_waiting()
@@ -292,8 +298,7 @@ func test_a_stall_of_the_host_does_not_slide_a_bounce_out_of_its_epoch() -> void
 	var rules: PongRules = play.match_node.rules
 	var start: int = rules.get_health(1)
 	var hurts: PongNetFloorHurts = play.floor_hurts
-	var clock: Array[float] = [100.0]
-	hurts.clock = func() -> float: return clock[0]
+	var clock: Array[float] = _hand_clock(hurts)
 	_client_master_at_epoch_one(play)
 	hurts.observe(play.match_node.snapshot)
 	clock[0] += 1.5
