@@ -173,7 +173,8 @@ def run_match(workdir: Path, peers: int, network: Network, seconds: float,
         started.append(host)
         assert host.wait_for_log("Hosting on port"), host.log()
         if network.impaired or force_relay:
-            relay = Relay(port, workdir, network, seed)
+            relay = Relay(port, workdir, network, seed,
+                          max_seconds=max(240.0, seconds + 25 + EXIT_PATIENCE_S))
         target = relay.port if relay is not None else port
         clients = players if dedicated else players - 1
         for i in range(clients):

@@ -114,14 +114,16 @@ class Relay:
     """tools/net/udp_relay.py in front of the server, taking commands on its stdin."""
 
     def __init__(self, server_port: int, workdir: Path, network: Network,
-                 seed: int = 1) -> None:
+                 seed: int = 1, max_seconds: float = 240.0) -> None:
+        """[max_seconds]: the relay's own deadline, past the longest run it serves (a 10-minute
+        soak once lost its relay at 240 s and took that for a dead path)."""
         self.stats_path = workdir / f"relay-{seed}.json"
         self._stderr_path = workdir / f"relay-{seed}.err"
         with open(self._stderr_path, "w") as stderr:
             self.proc = subprocess.Popen(
                 [sys.executable, str(RELAY), "--server", f"127.0.0.1:{server_port}",
                  "--listen-port", "0", *network.relay_args(), "--seed", str(seed),
-                 "--max-seconds", "240", "--stats", str(self.stats_path), "--control"],
+                 "--max-seconds", f"{max_seconds:g}", "--stats", str(self.stats_path), "--control"],
                 stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=stderr, text=True,
             )
         first = self.proc.stdout.readline()
