@@ -31,6 +31,9 @@ def soak(seconds: float, label: str) -> dict:
                                  client_args=((f"--pong-net-health={HEALTH}",),))
         reports = {p.name: p.report for p in peers}
         errors = {p.name: engine_errors(p)[:5] for p in peers}
+        # The budget logs a sender's first bad message of each kind with its reason.
+        said = {p.name: [line for line in p.log().splitlines() if "sent a bad" in line][:10]
+                for p in peers}
     row: dict = {"seconds": seconds, "network": label, "relay": relay, "peers": {}}
     for name, report in reports.items():
         extra = report.get("extra", {})
@@ -40,7 +43,7 @@ def soak(seconds: float, label: str) -> dict:
             "server_lost": extra.get("server_lost"),
             "refused": {k: v for k, v in report.get("refused", {}).items()
                         if not k.startswith("authority:")},
-            "health": report.get("health"), "errors": errors[name],
+            "health": report.get("health"), "errors": errors[name], "said": said[name],
         }
     row["ball_states"] = ball_state_use(list(reports.values()))
     try:
@@ -68,6 +71,8 @@ def main() -> int:
               f"seats taken over {taken}, server lost {peer['server_lost']}, refused "
               f"{peer['refused'] or 'nothing'}, health {peer['health']}, error lines "
               f"{len(peer['errors'])}")
+        for line in peer["said"]:
+            print(f"  {name} said: {line}")
     use = row["ball_states"]
     shares = ", ".join(f"{100 * p['used_share']:.1f} %" for p in use["per_peer"]
                        if p["used_share"] is not None)
