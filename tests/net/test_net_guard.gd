@@ -49,6 +49,24 @@ func test_the_budget_warns_once_then_counts_then_disconnects_once() -> void:
 	assert_eq(PongNetBudget.new().limit, PongNetProtocol.MISBEHAVIOUR_BUDGET)
 
 
+func test_a_rare_bad_message_is_forgiven_and_a_burst_is_not() -> void:
+	var budget: PongNetBudget = PongNetBudget.new()
+	var now: Array[float] = [0.0]
+	budget.clock = func() -> float: return now[0]
+	# An honest peer refused now and then over a long session: never given up on.
+	for i: int in 3 * PongNetProtocol.MISBEHAVIOUR_BUDGET:
+		assert_ne(budget.note(5), PongNetBudget.Verdict.DISCONNECT, "refusal %d" % i)
+		now[0] += PongNetProtocol.MISBEHAVIOUR_FORGIVEN_S * 1.5
+	assert_eq(budget.count_of(5), 3 * PongNetProtocol.MISBEHAVIOUR_BUDGET, "all counted")
+	# A forger's burst, in a second: given up on at the limit.
+	var verdicts: Array = []
+	for i: int in PongNetProtocol.MISBEHAVIOUR_BUDGET:
+		verdicts.append(budget.note(6))
+		now[0] += 1.0 / PongNetProtocol.MISBEHAVIOUR_BUDGET
+	assert_eq(verdicts.count(PongNetBudget.Verdict.DISCONNECT), 1)
+	assert_eq(verdicts[-1], PongNetBudget.Verdict.DISCONNECT)
+
+
 func test_one_address_holds_a_few_unauthenticated_connections_the_oldest_go() -> void:
 	var open: PongNetHalfOpen = PongNetHalfOpen.new(2)
 	assert_eq(open.add(10, "10.0.0.1", 1.0), [])

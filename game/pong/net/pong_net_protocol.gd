@@ -110,8 +110,13 @@ const HALF_OPEN_PER_ADDRESS: int = MAX_SEATS
 
 ## Bad messages (malformed, or impossible such as a forged hurt) a peer may send: the first
 ## is logged, the rest are counted, and the server disconnects a peer that reaches this
-## many. An honest peer sends none (races of the authority are not counted).
+## many within a while ([constant MISBEHAVIOUR_FORGIVEN_S]). An honest peer should send none
+## (races of the authority are not counted).
 const MISBEHAVIOUR_BUDGET: int = 16
+## Seconds after which one of a peer's bad messages no longer counts toward
+## [constant MISBEHAVIOUR_BUDGET] ([PongNetBudget]): a forger sends its 16 within a second, an
+## honest peer's rare refusal is forgiven before the next.
+const MISBEHAVIOUR_FORGIVEN_S: float = 30.0
 ## Stale but well-formed messages a peer may send in a second before they count as one bad
 ## message ([PongNetNoise]): a master streams at most [constant PongNetPlay.MAX_STREAM_HZ]
 ## states a second, and an honest hand-off request is one per transfer.
