@@ -34,6 +34,10 @@ COLOURS = ("blue", "orange")  # seat 1's and seat 2's, as the lobby and the HUD 
 CLOSE_BOUND_S = 10.0
 # How long the other side is watched carrying on after the first window closed.
 CARRY_ON_S = 3.0
+# The mouse 480 px left then right of the middle moves the paddle about 130 px on screen.
+PADDLE_TRAVEL_PX = 60
+# How long the person holds the mouse on each side before looking, then again if it lagged.
+DWELLS_S = (1.0, 3.0, 6.0)
 
 
 def free_udp_port() -> int:
@@ -69,15 +73,15 @@ def health_numbers(person: Person, shot) -> list[str]:
     return [left[0] if left else "?", right[0] if right else "?"]
 
 
-def paddle_follows(person: Person, colour: str, scratch) -> tuple[float, float]:
+def paddle_follows(person: Person, colour: str, scratch, dwell_s: float) -> tuple[float, float]:
     """Where the person sees their paddle with the mouse held left, then right, of the
-    middle: what in the paddle's tint is there in one and not in the other (what stays put,
-    the avatar's head, is not the paddle), over three looks each (a ball or a flash passing
-    in one frame is outvoted)."""
+    middle for `dwell_s` each: what in the paddle's tint is there in one and not in the
+    other (what stays put, the avatar's head, is not the paddle), over three looks each (a
+    ball or a flash passing in one frame is outvoted)."""
     rims = []
     for x in (400, 880):
         person.move_mouse(x, 370)
-        time.sleep(1.0)
+        time.sleep(dwell_s)
         looks = [paddle_rim(person.grab(scratch / "paddle.png"), colour) for _ in range(3)]
         rims.append(np.sum(looks, axis=0) >= 2)
     person.move_mouse(640, 370)
@@ -86,6 +90,19 @@ def paddle_follows(person: Person, colour: str, scratch) -> tuple[float, float]:
         xs = np.nonzero(here & ~there)[1]
         seen.append(float(np.median(xs)) if len(xs) >= 10 else float("nan"))
     return seen[0], seen[1]
+
+
+def paddle_travel(person: Person, colour: str, scratch) -> tuple[float, float]:
+    """The paddle's place with the mouse left and right, as a person finds it: one who sees
+    it lag on a slow machine moves the mouse again and waits longer (a loaded machine once
+    showed it a third of the way across after 1 s)."""
+    for dwell_s in DWELLS_S:
+        left, right = paddle_follows(person, colour, scratch, dwell_s)
+        print(f"person: paddle at x {left:.0f} with the mouse left, {right:.0f} with it right "
+              f"({dwell_s:.0f} s on each side)")
+        if right - left > PADDLE_TRAVEL_PX:
+            break
+    return left, right
 
 
 def bad_lines(session) -> list[str]:
@@ -134,13 +151,12 @@ def test_two_people_play_a_network_match(two) -> None:
     lap("names seen")
     # Each paddle follows its own player's mouse (and only it: the other hand rests).
     for s, colour in zip((host, guest), COLOURS):
-        left, right = paddle_follows(s.person, colour, s.scratch)
+        print(f"person: {s.shots.name}'s paddle:")
+        left, right = paddle_travel(s.person, colour, s.scratch)
         s.person.screenshot("paddle-moved")
-        print(f"person: {s.shots.name}: paddle at x {left:.0f} with the mouse left, "
-              f"{right:.0f} with it right")
-        assert right - left > 60, (f"{s.shots.name}: the paddle did not follow the mouse "
-                                   f"(x {left:.0f} then {right:.0f}; {s.shots}); "
-                                   f"bad messages: {bad_lines(host)[:2]} {bad_lines(guest)[:2]}")
+        assert right - left > PADDLE_TRAVEL_PX, (
+            f"{s.shots.name}: the paddle did not follow the mouse (x {left:.0f} then "
+            f"{right:.0f}; {s.shots}); bad messages: {bad_lines(host)[:2]} {bad_lines(guest)[:2]}")
     lap("paddles moved")
     # One match: both windows show the same health (read a few times: a goal may fall
     # between the two looks).
