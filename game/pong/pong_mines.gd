@@ -19,6 +19,9 @@ extends RefCounted
 ## A mine goes off when its victim's avatar stands within [constant TRIGGER_RADIUS_M] of
 ## it (floor distance); it is then gone. Only the opponent's mines go off under an avatar.
 
+## [param mine] was on the court when this peer rejoined a running match ([method restore]).
+signal restored(mine: Mine)
+
 
 ## A mine on the court.
 class Mine:
@@ -67,6 +70,11 @@ func left(player: int) -> int:
 ## What the players read for [param kind] (the kind itself when it has no name).
 static func kind_name(kind: String) -> String:
 	return KIND_NAMES.get(kind, kind)
+
+
+## How many mines [param player] has placed (on the court or set off).
+func used(player: int) -> int:
+	return _used[player]
 
 
 ## The kind of [param player]'s next mine ("" when none is left).
@@ -164,6 +172,17 @@ func put(owner: int, id: int, position: Vector3) -> Mine:
 	_used[owner] = id + 1
 	placed.append(mine)
 	return mine
+
+
+## Sets the court as another peer has it (a player who rejoins a running match):
+## [param used_counts] mines placed by each player, [param mines] lying on the court, each
+## of them then [signal restored].
+func restore(used_counts: PackedInt32Array, mines: Array[Mine]) -> void:
+	for player: int in mini(used_counts.size(), _used.size()):
+		_used[player] = clampi(used_counts[player], 0, KINDS.size())
+	placed = mines.duplicate()
+	for mine: Mine in placed:
+		restored.emit(mine)
 
 
 ## Removes [param owner]'s mine [param id] from the court; returns it, or null when it is

@@ -120,6 +120,15 @@ func test_a_resumed_match_takes_each_seats_health_within_the_start() -> void:
 	assert_false(rules.is_over())
 
 
+func test_the_mine_limits_are_the_games() -> void:
+	assert_eq(PongNetFacts.NET_MINES_PER_SEAT, PongMines.KINDS.size(), "one of each kind")
+	assert_eq(
+		PongNetFacts.NET_MAX_MINES,
+		PongNetFacts.NET_MINES_PER_SEAT * PongServoFacts.PONG_MAX_PLAYERS,
+		"every seat's at once"
+	)
+
+
 func test_channels_are_distinct_and_the_streams_have_their_own() -> void:
 	var channels: Array[int] = [
 		PongNetFacts.NET_CHANNEL_BALL,

@@ -201,6 +201,75 @@ func test_only_the_seats_this_peer_drives_are_judged_here() -> void:
 	assert_eq(shots.size(), 1, "the host's shot went out, the client's not back")
 
 
+func test_a_player_who_rejoins_learns_the_mines_on_the_court_and_what_each_seat_used() -> void:
+	if _open() == null:
+		return
+	var match_node: PongMatch = _play.match_node
+	# The host's first mine lands in the client's half; the client's second in the host's.
+	var mine: PongMines.Mine = match_node.mines.place(0, Vector3(0.3, 1.0, 1.5), match_node.court)
+	match_node.mine_placed.emit(mine)
+	_receive(CLIENT, _mine(1, 1, Vector3(0.3, 0.0, 1.5)))
+	var start: PongNetStartMessage = PongNetStartMessage.new()
+	start.owners = PackedInt64Array([HOST, CLIENT])
+	PongNetRejoins.as_it_stands(match_node, start)
+	var sent: PongNetStartMessage = PongNetStartMessage.decode(start.encode())
+	assert_not_null(sent, "the start decodes")
+	assert_eq(sent.mines_used, PackedInt32Array([1, 2]), "each seat's mines used")
+	assert_eq(sent.now_health, PackedInt32Array([99, 99]))
+	var rows: Array = sent.mines.map(func(r: PongNetMineRow) -> Array: return [r.seat, r.id])
+	assert_eq(rows, [[0, 0], [1, 1]], "both mines on the court")
+	assert_eq(PongNetRejoins.check_start(sent, 2), "", "an honest server's start")
+	# A start that cannot be: each refused with why.
+	var never: PongNetMineRow = _mine_row(1, 2, Vector3(0.3, 0.0, 1.0))
+	var own: PongNetMineRow = _mine_row(1, 0, Vector3(0.3, 0.0, -1.0))
+	var aloft: PongNetMineRow = _mine_row(0, 0, Vector3(0.3, 0.5, -1.5))
+	var cases: Array[Array] = [
+		[[never], "not one it placed"],
+		[[sent.mines[1], sent.mines[1]], "twice"],
+		[[own], "its owner's own territory"],
+		[[aloft], "off the floor"],
+	]
+	for case: Array in cases:
+		var bad: PongNetStartMessage = PongNetStartMessage.decode(start.encode())
+		var rows_sent: Array = case[0]
+		var expected: String = case[1]
+		bad.mines.assign(rows_sent)
+		var why: String = PongNetRejoins.check_start(bad, 2)
+		assert_true(why.contains(expected), "%s: %s" % [expected, why])
+	sent.mines_used = PackedInt32Array([1, 2, 0])
+	var reason: String = PongNetRejoins.check_start(sent, 2)
+	assert_true(reason.contains("one number per seat"), "three seats' counts: %s" % reason)
+
+
+func test_a_player_who_rejoins_takes_up_the_mines_and_sends_none_of_them_again() -> void:
+	var weapons: PongNetWeapons = _open()
+	if weapons == null:
+		return
+	var match_node: PongMatch = _play.match_node
+	var shown: Array[PongMines.Mine] = []
+	match_node.mines.restored.connect(shown.append)
+	var start: PongNetStartMessage = PongNetStartMessage.new()
+	start.owners = PackedInt64Array([HOST, CLIENT])
+	start.mines_used = PackedInt32Array([2, 1])
+	start.mines = [
+		_mine_row(0, 1, Vector3(0.3, 0.0, -1.5)), _mine_row(1, 0, Vector3(0.3, 0.0, 1.5))
+	]
+	PongNetRejoins.resume(match_node, start)
+	var mines: PongMines = match_node.mines
+	assert_eq([mines.placed.size(), shown.size()], [2, 2], "both on the court and shown")
+	assert_eq([mines.next_kind(0), mines.next_kind(1)], ["remote", "heavy"], "the next of each")
+	assert_eq(_router.sent_of(PongNetMineMessage.SCHEMA_ID).size(), 0, "none sent again")
+	# This peer knows the host's mine: the client's word that it went off counts at once.
+	_receive(CLIENT, _weapon_hurt(1, MINE, 0, 1))
+	var lost: int = PongRules.DAMAGE[PongRules.CAUSE_MINE]
+	assert_eq(match_node.rules.get_health(1), 99 - lost, "a known mine, not one waited for")
+	assert_eq(mines.placed.size(), 1)
+	# The client's numbers go on from its count: its first is spent, its second is new.
+	_receive(CLIENT, _mine(1, 0, Vector3(-0.5, 0.0, 1.5)))
+	_receive(CLIENT, _mine(1, 1, Vector3(-0.5, 0.0, 1.5)))
+	assert_eq([mines.placed.size(), _refused("mine")], [2, 1])
+
+
 func test_a_clients_age_of_another_clients_message_counts_the_senders_leg() -> void:
 	if _open() == null:
 		return
@@ -217,3 +286,11 @@ func test_a_clients_age_of_another_clients_message_counts_the_senders_leg() -> v
 
 func _now_s() -> float:
 	return Time.get_ticks_usec() / 1e6
+
+
+static func _mine_row(seat: int, id: int, position: Vector3) -> PongNetMineRow:
+	var row: PongNetMineRow = PongNetMineRow.new()
+	row.seat = seat
+	row.id = id
+	row.position = position
+	return row

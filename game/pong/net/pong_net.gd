@@ -236,9 +236,8 @@ func _on_server_lost() -> void:
 	lobby_changed.emit()
 
 
-func _begin(
-	owners: PackedInt64Array, health: int, now_health: PackedInt32Array = PackedInt32Array()
-) -> void:
+# [param resumed]: the server's start for a player who rejoins the running match.
+func _begin(owners: PackedInt64Array, health: int, resumed: PongNetStartMessage = null) -> void:
 	_end_match(-1, "restart")
 	# A rematch started while this peer still shows the last winner screen.
 	close_screen()
@@ -267,11 +266,12 @@ func _begin(
 		status_changed.emit("No Pong renderer: build the extension")
 		return
 	screen.hud.visible = not dedicated
-	match_node.rules.resume(now_health)
 	var authority: PongNetAuthority = PongNetAuthority.new(me, owners)
 	play.stepped = stepped
 	play.ball.stepped = stepped
 	play.begin(match_node, authority, PackedInt32Array())
+	if resumed != null:
+		PongNetRejoins.resume(match_node, resumed)
 	play.finished.connect(_on_finished, CONNECT_ONE_SHOT)
 	seats_changed()
 	match_started.emit()
@@ -386,12 +386,8 @@ func _on_lobby(sender: int, lobby: PongNetLobbyMessage) -> void:
 
 
 func _on_start(sender: int, start: PongNetStartMessage) -> void:
-	var reason: String = ""
-	if start.owners.size() != seats:
-		reason = "owners is not %d peer ids" % seats
-	elif not start.now_health.is_empty() and start.now_health.size() != seats:
-		reason = "now_health is not %d seats' health" % seats
+	var reason: String = PongNetRejoins.check_start(start, seats)
 	if not reason.is_empty():
 		session.misbehaved(sender, PongNetStartMessage.LABEL, reason)
 		return
-	_begin(start.owners, start.health, start.now_health)
+	_begin(start.owners, start.health, start)

@@ -77,6 +77,7 @@ func _init(
 	match_node.weapon_referee = self
 	match_node.bullet_fired.connect(_on_bullet_fired)
 	match_node.mine_placed.connect(_on_mine_placed)
+	match_node.mines.restored.connect(_take_mine)
 	router.handle(PongNetBulletMessage.SCHEMA_ID, on_bullet)
 	router.handle(PongNetMineMessage.SCHEMA_ID, on_mine)
 	router.handle(PongNetWeaponHurtMessage.SCHEMA_ID, on_hurt)

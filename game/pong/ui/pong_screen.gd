@@ -122,6 +122,7 @@ func start_match(p_mode: PongMatch.Mode, p_beginner: bool) -> bool:
 	sounds.listen(match_node)
 	match_node.served.connect(_on_served)
 	match_node.mine_placed.connect(world.add_mine)
+	match_node.mines.restored.connect(world.add_mine)
 	match_node.mine_exploded.connect(_on_mine_exploded)
 	match_node.bullet_hit.connect(_on_bullet_hit)
 	match_node.match_over.connect(_on_match_over)

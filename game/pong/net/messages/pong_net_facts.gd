@@ -86,6 +86,12 @@ const NET_MAX_PEER_ID: int = 2147483647
 ## Most health a match may start with.
 const NET_MAX_HEALTH: int = 999
 
+## Mines each seat holds at the start (one of each of PongMines.KINDS).
+const NET_MINES_PER_SEAT: int = 4
+
+## Most mines on the court at once: every seat's (NET_MINES_PER_SEAT times PONG_MAX_PLAYERS).
+const NET_MAX_MINES: int = 16
+
 ## The names of [enum TransferKind]'s values, in order.
 const TRANSFER_KIND_NAMES: PackedStringArray = ["serve", "handoff", "takeover"]
 
@@ -107,7 +113,7 @@ const MESSAGE_LABELS: Dictionary[int, String] = {
 	0xfb5dd160: "hello",
 	0xd0f4a95d: "ready",
 	0x3a3a0abd: "lobby",
-	0x7aff1d69: "start",
+	0x5e3a9558: "start",
 	0xcd16db3a: "heartbeat",
 	0xfd7e4897: "stall notice",
 	0x93590218: "refusal",

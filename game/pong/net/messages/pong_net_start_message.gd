@@ -6,7 +6,7 @@ extends PongNetMessage
 ## The server starts a match.
 
 ## This layout's id on the wire (docs/values.md): a change of any field changes it.
-const SCHEMA_ID: int = 0x7aff1d69
+const SCHEMA_ID: int = 0x5e3a9558
 ## Words for people: what this message is (log lines, counts).
 const LABEL: String = "start"
 ## The channel it travels on ([method SceneMultiplayer.send_bytes]).
@@ -25,6 +25,12 @@ var health: int = 0
 ## Each seat's health now, in seat order, for a player who rejoins the match while it runs; empty:
 ## every seat has the start's. Range [-inf, 999]. At most PONG_MAX_PLAYERS (4).
 var now_health: PackedInt32Array = PackedInt32Array()
+## How many mines each seat has placed so far, in seat order, for a player who rejoins; empty: none.
+## Range [-inf, 4]. At most PONG_MAX_PLAYERS (4).
+var mines_used: PackedInt32Array = PackedInt32Array()
+## The mines lying on the court now, for a player who rejoins; empty: none. At most NET_MAX_MINES
+## (16).
+var mines: Array[PongNetMineRow] = []
 
 
 ## This value's bytes (docs/values.md): what the native library and the network take.
@@ -71,6 +77,12 @@ func write_to(writer: HapticsWireWriter) -> void:
 	writer.count(now_health.size())
 	for item: int in now_health:
 		writer.integer(item, 2)
+	writer.count(mines_used.size())
+	for item: int in mines_used:
+		writer.integer(item, 2)
+	writer.count(mines.size())
+	for item: PongNetMineRow in mines:
+		item.write_to(writer)
 
 
 ## Reads the fields, in order, checking each against the schema.
@@ -86,5 +98,15 @@ static func read_from(reader: HapticsWireReader) -> PongNetStartMessage:
 		value.now_health.append(
 			reader.integer(&"", 2, false, -0x7FFFFFFFFFFFFFFF, PongNetFacts.NET_MAX_HEALTH)
 		)
+		reader.leave()
+	for i: int in reader.count(&"mines_used", PongServoFacts.PONG_MAX_PLAYERS):
+		reader.enter_item(&"mines_used", i)
+		value.mines_used.append(
+			reader.integer(&"", 2, false, -0x7FFFFFFFFFFFFFFF, PongNetFacts.NET_MINES_PER_SEAT)
+		)
+		reader.leave()
+	for i: int in reader.count(&"mines", PongNetFacts.NET_MAX_MINES):
+		reader.enter_item(&"mines", i)
+		value.mines.append(PongNetMineRow.read_from(reader))
 		reader.leave()
 	return value
