@@ -52,6 +52,18 @@ func fire(owner: int, origin: Vector3, axis: Vector3) -> Bullet:
 	return bullet
 
 
+## How many shots [param owner] has fired (its next shot's number).
+func fired(owner: int) -> int:
+	return _shots[owner]
+
+
+## Counts each player's shots from [param counts] on (a player who rejoins a running match
+## numbers its shots on from the match's).
+func restore(counts: PackedInt64Array) -> void:
+	for owner: int in mini(counts.size(), _shots.size()):
+		_shots[owner] = maxi(_shots[owner], counts[owner])
+
+
 ## Adds [param owner]'s shot [param id], fired elsewhere (a networked match), at
 ## [param position] flying along [param direction] (no cooldown: the firer kept it).
 func add(owner: int, id: int, position: Vector3, direction: Vector3) -> Bullet:

@@ -12,6 +12,7 @@ import bisect
 import json
 import math
 import os
+import re
 import shutil
 import signal
 import socket
@@ -35,6 +36,15 @@ FAILURES = ROOT / ".build" / "net-failures"
 # Generous bounds for a loaded 2-core machine (never timing assertions).
 START_PATIENCE_S = 30.0
 EXIT_PATIENCE_S = 40.0
+
+
+def protocol_seconds(name: str) -> float:
+    """PongNetProtocol's constant [name] (a float, seconds), read from its script: the tests
+    bound what the game promises by the game's own figure."""
+    text = (ROOT / "game" / "pong" / "net" / "pong_net_protocol.gd").read_text()
+    found = re.search(rf"^const {name}: float = ([0-9.]+)$", text, re.MULTILINE)
+    assert found, f"PongNetProtocol.{name} is not a float constant"
+    return float(found.group(1))
 
 
 def free_udp_port() -> int:

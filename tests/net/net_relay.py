@@ -155,6 +155,11 @@ class Relay:
     def restore(self, client: int | str) -> dict:
         return self._command(f"restore {client}")
 
+    def rebind(self, client: int | str) -> dict:
+        """[client]'s datagrams reach the server from a new port from now on (a NAT that
+        rebound it, a laptop on another network); the relay's answer."""
+        return self._command(f"rebind {client}")
+
     def _command(self, line: str) -> dict:
         self.proc.stdin.write(line + "\n")
         self.proc.stdin.flush()

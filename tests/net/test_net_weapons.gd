@@ -99,6 +99,25 @@ func test_a_shot_is_taken_once_from_its_seats_peer_and_keeps_the_cooldown() -> v
 	assert_eq(weapons.shots, [[1, 0], [1, 1]])
 
 
+func test_a_seats_new_peer_keeps_the_cooldown_and_the_numbers_of_its_own() -> void:
+	if _open() == null:
+		return
+	var bullets: PongBullets = _play.match_node.bullets
+	var origin: Vector3 = Vector3(0.0, 1.0, -2.0)
+	_receive(CLIENT, _bullet(1, 0, origin, Vector3.BACK, 40.0))
+	# Another peer drives the seat now (the computer standing in, a player rejoined on a new
+	# connection): its servo clock is its own, and a number the last peer spent on a shot
+	# that never arrived elsewhere is no reuse of its own.
+	var again: int = 43
+	_play.authority.owners[1] = again
+	_receive(again, _bullet(1, 0, origin, Vector3.BACK, 0.5))
+	assert_eq(bullets.flying.size(), 2, "its first shot: neither its number nor its clock clash")
+	_receive(again, _bullet(1, 0, origin, Vector3.BACK, 1.5))
+	_receive(again, _bullet(1, 1, origin, Vector3.BACK, 0.6))
+	assert_eq(bullets.flying.size(), 2, "its own reused number, and its next within the cooldown")
+	assert_eq(_refused("bullet"), 2)
+
+
 func test_a_mine_is_put_where_its_owner_put_it_once_and_only_from_its_peer() -> void:
 	var weapons: PongNetWeapons = _open()
 	if weapons == null:
@@ -209,35 +228,50 @@ func test_a_player_who_rejoins_learns_the_mines_on_the_court_and_what_each_seat_
 	var mine: PongMines.Mine = match_node.mines.place(0, Vector3(0.3, 1.0, 1.5), match_node.court)
 	match_node.mine_placed.emit(mine)
 	_receive(CLIENT, _mine(1, 1, Vector3(0.3, 0.0, 1.5)))
+	# The client's first two shots: one still flies.
+	_receive(CLIENT, _bullet(1, 0, Vector3(0.0, 1.0, 2.0), Vector3.FORWARD, 10.0))
+	_receive(CLIENT, _bullet(1, 1, Vector3(0.0, 1.0, 2.0), Vector3.FORWARD, 10.5))
+	match_node.bullets.take(1, 0)
 	var start: PongNetStartMessage = PongNetStartMessage.new()
 	start.owners = PackedInt64Array([HOST, CLIENT])
-	PongNetRejoins.as_it_stands(match_node, start)
+	PongNetResume.as_it_stands(match_node, start)
 	var sent: PongNetStartMessage = PongNetStartMessage.decode(start.encode())
 	assert_not_null(sent, "the start decodes")
 	assert_eq(sent.mines_used, PackedInt32Array([1, 2]), "each seat's mines used")
+	assert_eq(sent.bullets_fired, PackedInt64Array([0, 2]), "each seat's shots fired")
+	assert_eq([sent.bullets.size(), sent.bullets[0].seat, sent.bullets[0].id], [1, 1, 1])
 	assert_eq(sent.now_health, PackedInt32Array([99, 99]))
 	var rows: Array = sent.mines.map(func(r: PongNetMineRow) -> Array: return [r.seat, r.id])
 	assert_eq(rows, [[0, 0], [1, 1]], "both mines on the court")
-	assert_eq(PongNetRejoins.check_start(sent, 2), "", "an honest server's start")
+	assert_eq(PongNetResume.check(sent, 2), "", "an honest server's start")
 	# A start that cannot be: each refused with why.
 	var never: PongNetMineRow = _mine_row(1, 2, Vector3(0.3, 0.0, 1.0))
 	var own: PongNetMineRow = _mine_row(1, 0, Vector3(0.3, 0.0, -1.0))
 	var aloft: PongNetMineRow = _mine_row(0, 0, Vector3(0.3, 0.5, -1.5))
 	var cases: Array[Array] = [
-		[[never], "not one it placed"],
+		[[never], "not one it used"],
 		[[sent.mines[1], sent.mines[1]], "twice"],
 		[[own], "its owner's own territory"],
 		[[aloft], "off the floor"],
 	]
+	var unfired: PongNetBulletRow = PongNetBulletRow.new()
+	unfired.seat = 1
+	unfired.id = 2
+	unfired.direction = Vector3.FORWARD
+	cases.append([[unfired], "bullet 2 of seat 1 is not one it used"])
+	cases.append([[sent.bullets[0], sent.bullets[0]], "bullet 1 of seat 1 twice"])
 	for case: Array in cases:
 		var bad: PongNetStartMessage = PongNetStartMessage.decode(start.encode())
 		var rows_sent: Array = case[0]
 		var expected: String = case[1]
-		bad.mines.assign(rows_sent)
-		var why: String = PongNetRejoins.check_start(bad, 2)
+		if rows_sent[0] is PongNetBulletRow:
+			bad.bullets.assign(rows_sent)
+		else:
+			bad.mines.assign(rows_sent)
+		var why: String = PongNetResume.check(bad, 2)
 		assert_true(why.contains(expected), "%s: %s" % [expected, why])
 	sent.mines_used = PackedInt32Array([1, 2, 0])
-	var reason: String = PongNetRejoins.check_start(sent, 2)
+	var reason: String = PongNetResume.check(sent, 2)
 	assert_true(reason.contains("one number per seat"), "three seats' counts: %s" % reason)
 
 
@@ -251,18 +285,32 @@ func test_a_player_who_rejoins_takes_up_the_mines_and_sends_none_of_them_again()
 	var start: PongNetStartMessage = PongNetStartMessage.new()
 	start.owners = PackedInt64Array([HOST, CLIENT])
 	start.mines_used = PackedInt32Array([2, 1])
+	start.bullets_fired = PackedInt64Array([7, 3])
+	var flying: PongNetBulletRow = PongNetBulletRow.new()
+	flying.seat = 0
+	flying.id = 6
+	flying.position = Vector3(0.0, 1.0, 0.5)
+	flying.direction = Vector3.FORWARD  # Toward the client's half.
+	start.bullets = [flying]
 	start.mines = [
 		_mine_row(0, 1, Vector3(0.3, 0.0, -1.5)), _mine_row(1, 0, Vector3(0.3, 0.0, 1.5))
 	]
-	PongNetRejoins.resume(match_node, start)
+	PongNetResume.take_up(_play, start)
 	var mines: PongMines = match_node.mines
 	assert_eq([mines.placed.size(), shown.size()], [2, 2], "both on the court and shown")
 	assert_eq([mines.next_kind(0), mines.next_kind(1)], ["remote", "heavy"], "the next of each")
 	assert_eq(_router.sent_of(PongNetMineMessage.SCHEMA_ID).size(), 0, "none sent again")
+	var shots: Array[int] = [match_node.bullets.fired(0), match_node.bullets.fired(1)]
+	assert_eq(shots, [7, 3], "each seat's shots are numbered on from the match's")
+	assert_eq(match_node.bullets.flying.size(), 1, "the host's bullet flies here too")
+	# The client's word that it hit: a bullet known here, counted at once.
+	_receive(CLIENT, _weapon_hurt(1, BULLET, 0, 6))
+	var shot: int = PongRules.DAMAGE[PongRules.CAUSE_BULLET]
+	assert_eq(match_node.rules.get_health(1), 99 - shot, "a known bullet, not one waited for")
 	# This peer knows the host's mine: the client's word that it went off counts at once.
 	_receive(CLIENT, _weapon_hurt(1, MINE, 0, 1))
 	var lost: int = PongRules.DAMAGE[PongRules.CAUSE_MINE]
-	assert_eq(match_node.rules.get_health(1), 99 - lost, "a known mine, not one waited for")
+	assert_eq(match_node.rules.get_health(1), 99 - shot - lost, "a known mine, not waited for")
 	assert_eq(mines.placed.size(), 1)
 	# The client's numbers go on from its count: its first is spent, its second is new.
 	_receive(CLIENT, _mine(1, 0, Vector3(-0.5, 0.0, 1.5)))

@@ -22,7 +22,12 @@ Every lane has its own generator seeded from --seed: a run's fates are reproduci
 With --control it reads commands from stdin, one a line, and answers each with one JSON
 line on stdout: `blackhole CLIENT` drops everything on that client's path from now on, both
 ways, datagrams on their way included (a dead path; the other clients play on), `restore
-CLIENT` lets it through again; CLIENT is its number or its HOST:PORT as the relay sees it.
+CLIENT` lets it through again, `rebind CLIENT` sends that client's datagrams to the server
+from a new port from now on (a NAT that rebound it, a laptop on another network: the server
+sees a new address, and what it sends to the old one goes nowhere); CLIENT is its number or
+its HOST:PORT as the relay sees it. `blackhole new` cuts every client first seen from then
+on, until `restore new` restores them (a machine whose network is down: the new connection a
+game opens meanwhile from another port is as dead as its old one).
 --answers-lost-first-ms N drops everything the server sends for N ms from the first datagram
 any client sends (a join through a loss burst: the server's first answers never arrive, and a
 client that tries again from a new port meets the same burst).
@@ -125,6 +130,9 @@ class Relay(asyncio.DatagramProtocol):
         self._upstreams: dict[Address, _Upstream] = {}
         self._pending: dict[Address, list[bytes]] = {}
         self._lanes: dict[tuple[Address, str], Lane] = {}
+        # `blackhole new`: clients first seen from then on start cut (those cut so, in order).
+        self._cut_new = False
+        self._cut_as_new: list[Address] = []
 
     def connection_made(self, transport: asyncio.BaseTransport) -> None:
         self._front = cast(asyncio.DatagramTransport, transport)
@@ -169,13 +177,30 @@ class Relay(asyncio.DatagramProtocol):
     def command(self, p_text: str) -> dict:
         """Carries out one control line; the answer, an error that changed nothing included."""
         words = p_text.split()
-        if len(words) != 2 or words[0] not in ("blackhole", "restore"):
-            return {"error": f"unknown command {p_text[:80]!r}: expected 'blackhole CLIENT' "
-                             "or 'restore CLIENT'"}
+        if len(words) != 2 or words[0] not in ("blackhole", "restore", "rebind"):
+            return {"error": f"unknown command {p_text[:80]!r}: expected 'blackhole CLIENT', "
+                             "'restore CLIENT' or 'rebind CLIENT'"}
+        if words[1] == "new" and words[0] != "rebind":
+            self._cut_new = words[0] == "blackhole"
+            restored = [] if self._cut_new else self._cut_as_new
+            for cut_client in restored:
+                for direction in DIRECTIONS:
+                    self._lane(cut_client, direction).cut = False
+            self._cut_as_new = [] if not self._cut_new else self._cut_as_new
+            return {words[0]: "new", "clients": [self._clients.index(c) for c in restored]}
         client = self._find_client(words[1])
         if client is None:
             return {"error": f"no client {words[1][:80]!r} (clients: "
                              f"{[_text(c) for c in self._clients]})"}
+        if words[0] == "rebind":
+            old = self._upstreams.pop(client, None)
+            if old is None:
+                return {"error": f"client {words[1][:80]!r} has no port to the server yet"}
+            if old.transport is not None:
+                old.transport.close()
+            self._pending[client] = []
+            self._connect_upstream(client)
+            return {"rebind": self._clients.index(client), "address": _text(client)}
         for direction in DIRECTIONS:
             self._lane(client, direction).cut = words[0] == "blackhole"
         return {words[0]: self._clients.index(client), "address": _text(client)}
@@ -208,6 +233,15 @@ class Relay(asyncio.DatagramProtocol):
         if self._answers_from is None:
             self._answers_from = asyncio.get_running_loop().time() + self._answers_lost_s
         say({"client": len(self._clients) - 1, "address": _text(p_client)})
+        if self._cut_new:
+            for direction in DIRECTIONS:
+                self._lane(p_client, direction).cut = True
+            self._cut_as_new.append(p_client)
+        self._connect_upstream(p_client)
+
+    def _connect_upstream(self, p_client: Address) -> None:
+        """A new socket toward the server for [p_client]; what it sends meanwhile waits in
+        _pending."""
         upstream = _Upstream(lambda data: self._send_later(p_client, "down", data))
         loop = asyncio.get_running_loop()
 
@@ -235,7 +269,8 @@ class Relay(asyncio.DatagramProtocol):
         self, p_client: Address, p_direction: str, p_data: bytes, p_lane: Lane, p_sequence: int
     ) -> None:
         if p_direction == "up":
-            transport = self._upstreams[p_client].transport
+            upstream = self._upstreams.get(p_client)  # None while a rebind connects
+            transport = upstream.transport if upstream is not None else None
         else:
             transport = self._front
         if transport is None or transport.is_closing():

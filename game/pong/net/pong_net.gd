@@ -10,8 +10,9 @@ extends Node
 ## The server (peer 1) keeps the lobby: it gives each joining player the first free seat,
 ## starts the match when every player is ready (a dedicated server: by itself; a hosting
 ## player: on Start), and drives empty seats and the seats of players who left with the
-## computer player. A client that loses its server ends the match cleanly; while its seat is
-## kept it may join again and take the seat back ([PongNetRejoins]).
+## computer player. A client whose server falls silent in a match joins again and takes the
+## seat back while it is kept ([PongNetReconnect], [PongNetRejoins]); one that loses its
+## server ends the match cleanly.
 
 signal lobby_changed
 ## A line for the lobby's status (connection, refusal, who left).
@@ -47,6 +48,8 @@ var play: PongNetPlay = null
 var screen: PongScreen = null
 ## This peer's identity, and on the server who presented which (a rejoin reclaims a seat).
 var rejoins: PongNetRejoins = null
+## A client's own rejoin when its server falls silent in a match.
+var reconnect: PongNetReconnect = null
 
 # Players silent for a while: their seats kept, the trouble shown.
 var _absences: PongNetAbsences = null
@@ -64,6 +67,7 @@ func _init() -> void:
 	play.seats.changed.connect(seats_changed)
 	add_child(play)
 	rejoins = PongNetRejoins.new(self)
+	reconnect = PongNetReconnect.new(self)
 	session.connected.connect(_on_connected)
 	# Deferred: the session closes right after it fails, and the lobby shows it closed.
 	session.failed.connect(status_changed.emit, CONNECT_DEFERRED)
@@ -106,6 +110,7 @@ func host(port: int) -> String:
 ## Joins [param address]:[param port]. "" or the error.
 func join(address: String, port: int) -> String:
 	players.clear()
+	reconnect.server_at(address, port)
 	var error: String = session.join(address, port)
 	status_changed.emit(error if not error.is_empty() else "Connecting to %s:%d" % [address, port])
 	return error
@@ -271,8 +276,9 @@ func _begin(owners: PackedInt64Array, health: int, resumed: PongNetStartMessage 
 	play.ball.stepped = stepped
 	play.begin(match_node, authority, PackedInt32Array())
 	if resumed != null:
-		PongNetRejoins.resume(match_node, resumed)
-	play.finished.connect(_on_finished, CONNECT_ONE_SHOT)
+		PongNetResume.take_up(play, resumed)
+	if not play.finished.is_connected(_on_finished):  # A match cut short left it connected.
+		play.finished.connect(_on_finished, CONNECT_ONE_SHOT)
 	seats_changed()
 	match_started.emit()
 
@@ -296,9 +302,10 @@ func _end_match(winner: int, why: String) -> void:
 	match_ended.emit(winner, why)
 
 
-## Removes the match's screen (back to the lobby).
+## Removes the match's screen at once (its servo link leaves before a new screen's enters).
 func close_screen() -> void:
 	if screen != null:
+		remove_child(screen)
 		screen.queue_free()
 		screen = null
 
@@ -386,7 +393,7 @@ func _on_lobby(sender: int, lobby: PongNetLobbyMessage) -> void:
 
 
 func _on_start(sender: int, start: PongNetStartMessage) -> void:
-	var reason: String = PongNetRejoins.check_start(start, seats)
+	var reason: String = PongNetResume.check(start, seats)
 	if not reason.is_empty():
 		session.misbehaved(sender, PongNetStartMessage.LABEL, reason)
 		return

@@ -19,17 +19,30 @@ func _init(net: PongNet) -> void:
 	pulse.peer_absent.connect(_on_peer_absent)
 	pulse.peer_back.connect(_on_peer_back)
 	pulse.peer_lost.connect(_on_peer_lost)
+	# A rejoined match starts on a new connection, whose server was never silent.
+	net.match_started.connect(func() -> void: _trouble_since_s = INF)
 
 
-## One frame: the trouble on the screen, with how long the seat is kept.
+## One frame: a client silent for long reconnects; the trouble on the screen, with how long
+## the seat is kept.
 func frame() -> void:
+	var reconnect: PongNetReconnect = _net.reconnect
+	reconnect.frame()
+	var silence: float = PongNetPulse.now_s() - _trouble_since_s
+	var troubled: bool = _net.play.is_running() and is_finite(_trouble_since_s)
+	if troubled and silence >= PongNetProtocol.REJOIN_AFTER_S:
+		reconnect.start(_trouble_since_s)
 	if _net.screen == null:
 		return
 	var notice: String = ""
-	if is_finite(_trouble_since_s) and _net.play.is_running():
-		var silence: float = PongNetPulse.now_s() - _trouble_since_s
+	# Two short lines: the status line sits between the players' panels.
+	if reconnect.is_reconnecting():
+		notice = (
+			"Reconnecting: no word for %.0f s\nYour seat is kept %.0f s more"
+			% [silence, reconnect.seat_kept_s()]
+		)
+	elif troubled:
 		var left: float = maxf(PongNetProtocol.SEAT_GRACE_S - silence, 0.0)
-		# Two short lines: the status line sits between the players' panels.
 		notice = (
 			"Connection trouble: no word for %.0f s\nYour seat is kept %.0f s more"
 			% [silence, left]

@@ -124,7 +124,11 @@ func _launch() -> void:
 		# needs the autoload's 1 kHz thread.
 		Haptics.servo.stop()
 	net.status_changed.connect(func(text: String) -> void: print("PongNet: %s" % text))
-	net.session.failed.connect(func(_reason: String) -> void: finish(2, "failed"))
+	net.session.failed.connect(
+		func(_reason: String) -> void:
+			if not net.reconnect.is_reconnecting():  # A rejoin tries again.
+				finish(2, "failed")
+	)
 	net.session.server_lost.connect(finish.bind(0, "server lost"))
 	net.lobby_changed.connect(_on_lobby_changed)
 	net.match_started.connect(_on_match_started)

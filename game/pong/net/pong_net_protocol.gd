@@ -89,6 +89,12 @@ const LOAD_STALL_TIMEOUT_S: float = 10.0
 ## computer stands in (the rally goes on), and when packets return the player takes the
 ## seat back. After it the seat is given up. ENet's patience is past it.
 const SEAT_GRACE_S: float = 15.0
+## A client whose server has been silent this long in a match connects again and rejoins
+## ([PongNetRejoins]): its address may have changed (a laptop that roamed to another Wi-Fi, a
+## NAT that rebound its port), and then the old connection never hears the server again. A
+## hiccup shorter than this ends on the old connection; what is left of the grace is for the
+## new connection's handshake through whatever made the path silent.
+const REJOIN_AFTER_S: float = 8.0
 ## Seconds after a silent player is back during which what it sent while cut off (its shots,
 ## claims and hand-off requests, about a seat the computer played meanwhile) is refused but
 ## not counted against it: they arrive within a second of its return.

@@ -5,10 +5,9 @@ extends RefCounted
 ## identity of a player of the running match whose seats are kept for it (silent, within
 ## [constant PongNetProtocol.SEAT_GRACE_S]: a crashed game restarted, a laptop on another
 ## network) takes those seats over under its new connection: its row of the lobby, its seats,
-## the match as it stands (each seat's health, the mines used and those on the court), and the
-## ball from the server's own copy. The old connection is dropped. Anyone else is still
-## refused while a match runs, and a player who is still heard keeps its seat whoever presents
-## its identity.
+## the match as it stands ([PongNetResume]), and the ball from the server's own copy. The old
+## connection is dropped. Anyone else is still refused while a match runs, and a player who is
+## still heard keeps its seat whoever presents its identity.
 
 ## This peer's identity: 128 random bits as hex (a client may be given one to keep across
 ## restarts, [code]--identity[/code]).
@@ -79,7 +78,7 @@ func reclaim(sender: int, old: int) -> void:
 	for seat: int in play.authority.kept:
 		if play.authority.kept[seat] == sender:
 			start.owners[seat] = sender
-	as_it_stands(play.match_node, start)
+	PongNetResume.as_it_stands(play.match_node, start)
 	_net.session.router.send_to(sender, start)
 	var epoch: int = play.authority.epoch
 	play.seats.give_back(sender)
@@ -87,54 +86,3 @@ func reclaim(sender: int, old: int) -> void:
 		play.take_ball()  # The rejoined peer learns the epoch and the ball from it.
 	_net.session.drop_now(old)
 	_net.say("%s rejoined" % entry.get("name", "peer %d" % sender))
-
-
-## Client: what is wrong with [param start] for a court of [param seats], or "".
-static func check_start(start: PongNetStartMessage, seats: int) -> String:
-	if start.owners.size() != seats:
-		return "owners is not %d peer ids" % seats
-	for counts: PackedInt32Array in [start.now_health, start.mines_used]:
-		if not counts.is_empty() and counts.size() != seats:
-			return "%s is not one number per seat (%d)" % [counts, seats]
-	var named: Dictionary[int, bool] = {}
-	for row: PongNetMineRow in start.mines:
-		var reason: String = PongNetProtocol.check_seat(row.seat, seats)
-		if (
-			reason.is_empty()
-			and (start.mines_used.is_empty() or row.id >= start.mines_used[row.seat])
-		):
-			reason = "mine %d of seat %d is not one it placed" % [row.id, row.seat]
-		if reason.is_empty() and named.has(row.seat * PongMines.KINDS.size() + row.id):
-			reason = "mine %d of seat %d twice" % [row.id, row.seat]
-		if reason.is_empty() and absf(row.position.y) > PongNetProtocol.FLOOR_TOLERANCE_M:
-			reason = "a mine off the floor"
-		if reason.is_empty() and PongCourt.territory_of(row.position, seats) == row.seat:
-			reason = "a mine in its owner's own territory"
-		if not reason.is_empty():
-			return reason
-		named[row.seat * PongMines.KINDS.size() + row.id] = true
-	return ""
-
-
-## Client: [param match_node] takes up the match as [param start] says it stands (a player
-## who rejoins it); nothing for an ordinary start.
-static func resume(match_node: PongMatch, start: PongNetStartMessage) -> void:
-	match_node.rules.resume(start.now_health)
-	var on_court: Array[PongMines.Mine] = []
-	for row: PongNetMineRow in start.mines:
-		on_court.append(PongMines.Mine.new(row.seat, PongMines.KINDS[row.id], row.position, row.id))
-	match_node.mines.restore(start.mines_used, on_court)
-
-
-## Server: the match in [param match_node] as it stands, into [param start].
-static func as_it_stands(match_node: PongMatch, start: PongNetStartMessage) -> void:
-	start.health = match_node.rules.start_health
-	for seat: int in start.owners.size():
-		start.now_health.append(match_node.rules.get_health(seat))
-		start.mines_used.append(match_node.mines.used(seat))
-	for mine: PongMines.Mine in match_node.mines.placed:
-		var row: PongNetMineRow = PongNetMineRow.new()
-		row.seat = mine.owner
-		row.id = mine.id
-		row.position = mine.position
-		start.mines.append(row)

@@ -112,6 +112,13 @@ func _connect(address: String, port: int) -> String:
 	return ""
 
 
+## A client gives its server up: [param reason] is [member lost_reason]; [signal server_lost].
+func lose_server(reason: String) -> void:
+	lost_reason = reason
+	server_lost.emit()
+	close()
+
+
 ## Leaves: the other peers see us go at once (ENet says goodbye).
 func close() -> void:
 	var api: SceneMultiplayer = _api()
@@ -383,8 +390,7 @@ func _on_server_disconnected() -> void:
 		var silence: float = pulse.heartbeat.silence_s(PongNetAuthority.SERVER_ID, now)
 		var lost: bool = silence >= 2.0 / PongNetProtocol.HEARTBEAT_HZ
 		lost_reason = "no word from the server for %.1f s" % silence if lost else "the server left"
-	server_lost.emit()
-	close()
+	lose_server(lost_reason)
 
 
 func _fail(reason: String) -> String:

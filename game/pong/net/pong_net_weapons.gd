@@ -55,6 +55,9 @@ var _pending: Dictionary[int, Array] = {}
 # Per seat: the last shot's number and its sender's servo time.
 var _last_shot: PackedInt64Array = PackedInt64Array([-1, -1, -1, -1])
 var _last_shot_s: PackedFloat64Array = PackedFloat64Array([-INF, -INF, -INF, -INF])
+# Who fired each seat's last shot: its number and time (that peer's servo clock) are
+# comparable only with the same peer's (the computer standing in, a player back or rejoined).
+var _last_shooter: PackedInt64Array = PackedInt64Array([0, 0, 0, 0])
 var _reject: Callable = Callable()
 var _age_of: Callable = Callable()
 
@@ -116,7 +119,7 @@ func _on_bullet_fired(bullet: PongBullets.Bullet) -> void:
 	shot.origin = bullet.position
 	shot.direction = bullet.velocity.normalized()
 	shot.time_s = match_node.snapshot.time_s
-	_take_shot(shot)
+	_take_shot(shot, authority.my_id)
 	router.send_all(shot)
 
 
@@ -131,10 +134,24 @@ func _on_mine_placed(mine: PongMines.Mine) -> void:
 	router.send_all(placed)
 
 
-func _take_shot(shot: PongNetBulletMessage) -> void:
+## A player who rejoins the match takes up each seat's shots fired so far ([param fired],
+## by seat) and the bullets in flight ([param flying]): they fly here too, and a hurt that
+## names one is of a weapon known here.
+func take_up_shots(fired: PackedInt64Array, flying: Array[PongNetBulletRow]) -> void:
+	for seat: int in mini(fired.size(), _last_shot.size()):
+		_last_shot[seat] = fired[seat] - 1
+	for row: PongNetBulletRow in flying:
+		var key: int = _key(PongNetFacts.WeaponCause.BULLET, row.seat, row.id)
+		_known[key] = true
+		_where[key] = [row.position, row.direction]
+		match_node.bullets.add(row.seat, row.id, row.position, row.direction)
+
+
+func _take_shot(shot: PongNetBulletMessage, shooter: int) -> void:
 	var key: int = _key(PongNetFacts.WeaponCause.BULLET, shot.seat, shot.id)
 	_last_shot[shot.seat] = shot.id
 	_last_shot_s[shot.seat] = shot.time_s
+	_last_shooter[shot.seat] = shooter
 	_known[key] = true
 	_where[key] = [shot.origin, shot.direction]
 	shots.append([shot.seat, shot.id])
@@ -155,7 +172,7 @@ func on_bullet(sender: int, shot: PongNetBulletMessage) -> void:
 	if not reason.is_empty():
 		_reject.call(sender, PongNetBulletMessage.LABEL, reason)
 		return
-	_take_shot(shot)
+	_take_shot(shot, sender)
 	router.forward(sender, shot)
 	if _resolve_pending(_key(PongNetFacts.WeaponCause.BULLET, shot.seat, shot.id)):
 		return  # It has already hit its victim.
@@ -177,10 +194,12 @@ func _check_shot(sender: int, shot: PongNetBulletMessage) -> String:
 		return reason
 	if authority.owner_of(seat) != sender:
 		return "seat %d is not theirs" % seat
-	if shot.id <= _last_shot[seat]:
+	# A seat's numbers go on from its last shooter's: one standing in for a silent player may
+	# reuse a number the player's game spent meanwhile on a shot that never arrived.
+	if _last_shooter[seat] == sender and shot.id <= _last_shot[seat]:
 		return "bullet id %d of seat %d is not after %d" % [shot.id, seat, _last_shot[seat]]
 	var least: float = PongBullets.COOLDOWN_S * PongNetProtocol.COOLDOWN_SHARE
-	if shot.time_s - _last_shot_s[seat] < least:
+	if _last_shooter[seat] == sender and shot.time_s - _last_shot_s[seat] < least:
 		return "seat %d fired %.3f s after its last shot" % [seat, shot.time_s - _last_shot_s[seat]]
 	return ""
 

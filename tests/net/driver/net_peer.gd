@@ -112,10 +112,16 @@ func _on_match_started() -> void:
 		OS.delay_msec(roundi(stall_s * 1000.0))
 		stalled["to_wall_s"] = NetReport.now()
 		report.extra["load_stall"] = stalled
-	_match_clock = 0.0
+	var rejoined: bool = _match_clock >= 0.0  # The client rejoined its match by itself.
+	if not rejoined:
+		_match_clock = 0.0
 	_seat = net.my_seat()
-	report.begin(net.play)
-	report.extra["health_at_start"] = _health(net)
+	report.begin(net.play, rejoined)
+	if rejoined:
+		var entries: Array = report.extra.get_or_add("rejoined", [])
+		entries.append({"wall_s": NetReport.now(), "peer": report.peer, "health": _health(net)})
+	else:
+		report.extra["health_at_start"] = _health(net)
 	var rate: float = option("pong-net-weapon-rate", "1").to_float()
 	for controller: PongController in net.play.match_node.controllers:
 		if controller is PongAi and rate > 0.0:

@@ -56,7 +56,11 @@ func watch(play: PongNetPlay) -> void:
 
 
 ## A match began (after [method PongNetPlay.begin]): its poses, floor hurts and weapons.
-func begin(play: PongNetPlay) -> void:
+## [param rejoined]: the same match again on a new connection, whose start carried the
+## health: the hurts are counted from there (the weapons' lists are the new match's).
+func begin(play: PongNetPlay, rejoined: bool = false) -> void:
+	if rejoined:
+		hurts.clear()
 	peer = play.authority.my_id
 	_started = now()
 	play.poses.pose_taken.connect(func(_seat: int) -> void: poses += 1)

@@ -190,6 +190,58 @@ def test_blackhole_cuts_one_path_both_ways_while_the_other_flows(echo, tmp_path)
     assert all(balanced(path[d]) for path in stats["paths"] for d in ("up", "down"))
 
 
+def test_rebind_moves_a_client_to_a_new_port_and_the_old_one_reaches_nobody(echo, tmp_path):
+    relay = RelayProcess(echo.port, tmp_path / "stats.json", p_control=True)
+    a, b = client(relay.port), client(relay.port)
+    try:
+        for sock, name in ((a, b"a"), (b, b"b")):
+            send_numbered(sock, 5, 1.0, name)
+            assert len(collect(sock, 5, 2.0)) == 5
+        old = echo.sender_of(b"a")
+        assert relay.command("rebind 0") == {"rebind": 0, "address": address_of(a)}
+        send_numbered(a, 10, 1.0, b"A")
+        # The server hears the same client from a new port, and answers it there.
+        assert len(collect(a, 10, 2.0)) == 10
+        new = echo.sender_of(b"A")
+        assert new != old and new[0] == old[0], (old, new)
+        assert echo.sender_of(b"b") != new, "the other client keeps its own port"
+        # What the server sends to the old port goes nowhere.
+        echo.push(old, b"stale")
+        assert collect(a, 1, 0.5) == []
+        for bad in ("rebind 5", "rebind"):
+            assert set(relay.command(bad)) == {"error"}, bad
+    finally:
+        a.close()
+        b.close()
+        assert relay.stop() == 0
+    stats = stats_of(tmp_path / "stats.json")
+    assert stats["clients"] == 2, "a rebound client is still the one client"
+
+
+def test_blackhole_new_cuts_the_clients_that_come_meanwhile_until_restored(echo, tmp_path):
+    relay = RelayProcess(echo.port, tmp_path / "stats.json", p_control=True)
+    a, b, c = client(relay.port), client(relay.port), client(relay.port)
+    try:
+        send_numbered(a, 3, 1.0, b"a")
+        assert len(collect(a, 3, 2.0)) == 3
+        assert relay.command("blackhole new") == {"blackhole": "new", "clients": []}
+        send_numbered(b, 3, 1.0, b"b")
+        assert collect(b, 3, 0.5) == [] and echo.payloads(b"b") == [], "a new client, cut"
+        send_numbered(a, 3, 1.0, b"a")
+        assert len(collect(a, 3, 2.0)) == 3, "a client seen before still flows"
+        assert relay.command("restore new") == {"restore": "new", "clients": [1]}
+        send_numbered(b, 3, 1.0, b"B")
+        assert len(collect(b, 3, 2.0)) == 3
+        send_numbered(c, 3, 1.0, b"c")
+        assert len(collect(c, 3, 2.0)) == 3, "after the restore, new clients flow"
+    finally:
+        for sock in (a, b, c):
+            sock.close()
+        assert relay.stop() == 0
+    stats = stats_of(tmp_path / "stats.json")
+    assert stats["paths"][1]["up"]["blackholed"] == 3, stats["paths"][1]
+
+
 def test_bad_commands_are_answered_and_change_nothing(echo, tmp_path):
     relay = RelayProcess(echo.port, tmp_path / "stats.json", p_control=True)
     sock = client(relay.port)

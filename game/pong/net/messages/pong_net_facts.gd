@@ -89,6 +89,10 @@ const NET_MAX_HEALTH: int = 999
 ## Mines each seat holds at the start (one of each of PongMines.KINDS).
 const NET_MINES_PER_SEAT: int = 4
 
+## Most bullets in flight a rejoining player is told of (a shot every 0.4 s per seat, each in the
+## air about 2 s at most: about 20 on a four-seat court).
+const NET_MAX_BULLETS: int = 32
+
 ## Most mines on the court at once: every seat's (NET_MINES_PER_SEAT times PONG_MAX_PLAYERS).
 const NET_MAX_MINES: int = 16
 
@@ -113,7 +117,7 @@ const MESSAGE_LABELS: Dictionary[int, String] = {
 	0xfb5dd160: "hello",
 	0xd0f4a95d: "ready",
 	0x3a3a0abd: "lobby",
-	0x5e3a9558: "start",
+	0x552532f2: "start",
 	0xcd16db3a: "heartbeat",
 	0xfd7e4897: "stall notice",
 	0x93590218: "refusal",

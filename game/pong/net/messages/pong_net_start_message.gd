@@ -6,7 +6,7 @@ extends PongNetMessage
 ## The server starts a match.
 
 ## This layout's id on the wire (docs/values.md): a change of any field changes it.
-const SCHEMA_ID: int = 0x5e3a9558
+const SCHEMA_ID: int = 0x552532f2
 ## Words for people: what this message is (log lines, counts).
 const LABEL: String = "start"
 ## The channel it travels on ([method SceneMultiplayer.send_bytes]).
@@ -28,6 +28,12 @@ var now_health: PackedInt32Array = PackedInt32Array()
 ## How many mines each seat has placed so far, in seat order, for a player who rejoins; empty: none.
 ## Range [-inf, 4]. At most PONG_MAX_PLAYERS (4).
 var mines_used: PackedInt32Array = PackedInt32Array()
+## How many shots each seat has fired so far (its next shot's number), in seat order, for a player
+## who rejoins; empty: none. Range [-inf, 1073741824]. At most PONG_MAX_PLAYERS (4).
+var bullets_fired: PackedInt64Array = PackedInt64Array()
+## The bullets in flight now (the newest, when more), for a player who rejoins; empty: none. At most
+## NET_MAX_BULLETS (32).
+var bullets: Array[PongNetBulletRow] = []
 ## The mines lying on the court now, for a player who rejoins; empty: none. At most NET_MAX_MINES
 ## (16).
 var mines: Array[PongNetMineRow] = []
@@ -80,6 +86,12 @@ func write_to(writer: HapticsWireWriter) -> void:
 	writer.count(mines_used.size())
 	for item: int in mines_used:
 		writer.integer(item, 2)
+	writer.count(bullets_fired.size())
+	for item: int in bullets_fired:
+		writer.integer(item, 4)
+	writer.count(bullets.size())
+	for item: PongNetBulletRow in bullets:
+		item.write_to(writer)
 	writer.count(mines.size())
 	for item: PongNetMineRow in mines:
 		item.write_to(writer)
@@ -104,6 +116,16 @@ static func read_from(reader: HapticsWireReader) -> PongNetStartMessage:
 		value.mines_used.append(
 			reader.integer(&"", 2, false, -0x7FFFFFFFFFFFFFFF, PongNetFacts.NET_MINES_PER_SEAT)
 		)
+		reader.leave()
+	for i: int in reader.count(&"bullets_fired", PongServoFacts.PONG_MAX_PLAYERS):
+		reader.enter_item(&"bullets_fired", i)
+		value.bullets_fired.append(
+			reader.integer(&"", 4, false, -0x7FFFFFFFFFFFFFFF, PongNetFacts.NET_MAX_WEAPON_ID)
+		)
+		reader.leave()
+	for i: int in reader.count(&"bullets", PongNetFacts.NET_MAX_BULLETS):
+		reader.enter_item(&"bullets", i)
+		value.bullets.append(PongNetBulletRow.read_from(reader))
 		reader.leave()
 	for i: int in reader.count(&"mines", PongNetFacts.NET_MAX_MINES):
 		reader.enter_item(&"mines", i)
