@@ -175,8 +175,9 @@ def kill_on_line(index: int, text: str, killed_at: list[float], patience_s: floa
 
 def cut_on_line(index: int, text: str, cut_at: list[float], patience_s: float = 40.0):
     """An on_running hook for run_match: as soon as [text] shows in peer [index]'s log, the
-    relay cuts that peer's path both ways (the peer lives on, its datagrams vanish); appends
-    the wall time to [cut_at] (nothing if it never shows)."""
+    relay cuts that peer's path both ways (the peer lives on, its datagrams vanish), and any
+    new connection it opens (its machine is off the network: a rejoin gets nowhere either);
+    appends the wall time to [cut_at] (nothing if it never shows)."""
 
     def hook(peers: list[Peer], relay: Relay | None) -> None:
         assert relay is not None, "a path is cut in the relay: run the match through one"
@@ -185,6 +186,7 @@ def cut_on_line(index: int, text: str, cut_at: list[float], patience_s: float = 
         if LogWatch(target).wait([text], patience_s):
             address = next(a for a in relay.clients if int(a.rsplit(":", 1)[1]) in ports)
             relay.blackhole(address)
+            relay.blackhole("new")
             cut_at.append(time.time())
 
     return hook
