@@ -241,13 +241,13 @@ func test_a_player_who_rejoins_learns_the_mines_on_the_court_and_what_each_seat_
 	assert_eq(sent.bullets_fired, PackedInt64Array([0, 2]), "each seat's shots fired")
 	assert_eq([sent.bullets.size(), sent.bullets[0].seat, sent.bullets[0].id], [1, 1, 1])
 	assert_eq(sent.now_health, PackedInt32Array([99, 99]))
-	var rows: Array = sent.mines.map(func(r: PongNetMineRow) -> Array: return [r.seat, r.id])
+	var rows: Array = sent.mines.map(func(r: PongNetMineMessage) -> Array: return [r.seat, r.id])
 	assert_eq(rows, [[0, 0], [1, 1]], "both mines on the court")
 	assert_eq(PongNetResume.check(sent, 2), "", "an honest server's start")
 	# A start that cannot be: each refused with why.
-	var never: PongNetMineRow = _mine_row(1, 2, Vector3(0.3, 0.0, 1.0))
-	var own: PongNetMineRow = _mine_row(1, 0, Vector3(0.3, 0.0, -1.0))
-	var aloft: PongNetMineRow = _mine_row(0, 0, Vector3(0.3, 0.5, -1.5))
+	var never: PongNetMineMessage = _mine(1, 2, Vector3(0.3, 0.0, 1.0))
+	var own: PongNetMineMessage = _mine(1, 0, Vector3(0.3, 0.0, -1.0))
+	var aloft: PongNetMineMessage = _mine(0, 0, Vector3(0.3, 0.5, -1.5))
 	var cases: Array[Array] = [
 		[[never], "not one it used"],
 		[[sent.mines[1], sent.mines[1]], "twice"],
@@ -292,9 +292,7 @@ func test_a_player_who_rejoins_takes_up_the_mines_and_sends_none_of_them_again()
 	flying.position = Vector3(0.0, 1.0, 0.5)
 	flying.direction = Vector3.FORWARD  # Toward the client's half.
 	start.bullets = [flying]
-	start.mines = [
-		_mine_row(0, 1, Vector3(0.3, 0.0, -1.5)), _mine_row(1, 0, Vector3(0.3, 0.0, 1.5))
-	]
+	start.mines = [_mine(0, 1, Vector3(0.3, 0.0, -1.5)), _mine(1, 0, Vector3(0.3, 0.0, 1.5))]
 	PongNetResume.take_up(_play, start)
 	var mines: PongMines = match_node.mines
 	assert_eq([mines.placed.size(), shown.size()], [2, 2], "both on the court and shown")
@@ -334,11 +332,3 @@ func test_a_clients_age_of_another_clients_message_counts_the_senders_leg() -> v
 
 func _now_s() -> float:
 	return Time.get_ticks_usec() / 1e6
-
-
-static func _mine_row(seat: int, id: int, position: Vector3) -> PongNetMineRow:
-	var row: PongNetMineRow = PongNetMineRow.new()
-	row.seat = seat
-	row.id = id
-	row.position = position
-	return row

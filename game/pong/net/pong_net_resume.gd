@@ -15,7 +15,7 @@ static func as_it_stands(match_node: PongMatch, start: PongNetStartMessage) -> v
 		start.mines_used.append(match_node.mines.used(seat))
 		start.bullets_fired.append(match_node.bullets.fired(seat))
 	for mine: PongMines.Mine in match_node.mines.placed:
-		var row: PongNetMineRow = PongNetMineRow.new()
+		var row: PongNetMineMessage = PongNetMineMessage.new()
 		row.seat = mine.owner
 		row.id = mine.id
 		row.position = mine.position
@@ -40,7 +40,7 @@ static func check(start: PongNetStartMessage, seats: int) -> String:
 		if not counts.is_empty() and counts.size() != seats:
 			return "%s is not one number per seat (%d)" % [counts, seats]
 	var named: Dictionary[int, bool] = {}
-	for row: PongNetMineRow in start.mines:
+	for row: PongNetMineMessage in start.mines:
 		var reason: String = _check_weapon(row.seat, row.id, Array(start.mines_used), seats, "mine")
 		if reason.is_empty() and named.has(row.seat * PongMines.KINDS.size() + row.id):
 			reason = "mine %d of seat %d twice" % [row.id, row.seat]
@@ -70,7 +70,7 @@ static func take_up(play: PongNetPlay, start: PongNetStartMessage) -> void:
 	var match_node: PongMatch = play.match_node
 	match_node.rules.resume(start.now_health)
 	var on_court: Array[PongMines.Mine] = []
-	for row: PongNetMineRow in start.mines:
+	for row: PongNetMineMessage in start.mines:
 		on_court.append(PongMines.Mine.new(row.seat, PongMines.KINDS[row.id], row.position, row.id))
 	match_node.mines.restore(start.mines_used, on_court)
 	match_node.bullets.restore(start.bullets_fired)

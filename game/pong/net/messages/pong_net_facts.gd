@@ -117,7 +117,7 @@ const MESSAGE_LABELS: Dictionary[int, String] = {
 	0xfb5dd160: "hello",
 	0xd0f4a95d: "ready",
 	0x3a3a0abd: "lobby",
-	0x552532f2: "start",
+	0x78d8eb21: "start",
 	0xcd16db3a: "heartbeat",
 	0xfd7e4897: "stall notice",
 	0x93590218: "refusal",

@@ -6,7 +6,7 @@ extends PongNetMessage
 ## The server starts a match.
 
 ## This layout's id on the wire (docs/values.md): a change of any field changes it.
-const SCHEMA_ID: int = 0x552532f2
+const SCHEMA_ID: int = 0x78d8eb21
 ## Words for people: what this message is (log lines, counts).
 const LABEL: String = "start"
 ## The channel it travels on ([method SceneMultiplayer.send_bytes]).
@@ -34,9 +34,9 @@ var bullets_fired: PackedInt64Array = PackedInt64Array()
 ## The bullets in flight now (the newest, when more), for a player who rejoins; empty: none. At most
 ## NET_MAX_BULLETS (32).
 var bullets: Array[PongNetBulletRow] = []
-## The mines lying on the court now, for a player who rejoins; empty: none. At most NET_MAX_MINES
-## (16).
-var mines: Array[PongNetMineRow] = []
+## The mines lying on the court now (as placed), for a player who rejoins; empty: none. At most
+## NET_MAX_MINES (16).
+var mines: Array[PongNetMineMessage] = []
 
 
 ## This value's bytes (docs/values.md): what the native library and the network take.
@@ -93,7 +93,7 @@ func write_to(writer: HapticsWireWriter) -> void:
 	for item: PongNetBulletRow in bullets:
 		item.write_to(writer)
 	writer.count(mines.size())
-	for item: PongNetMineRow in mines:
+	for item: PongNetMineMessage in mines:
 		item.write_to(writer)
 
 
@@ -129,6 +129,6 @@ static func read_from(reader: HapticsWireReader) -> PongNetStartMessage:
 		reader.leave()
 	for i: int in reader.count(&"mines", PongNetFacts.NET_MAX_MINES):
 		reader.enter_item(&"mines", i)
-		value.mines.append(PongNetMineRow.read_from(reader))
+		value.mines.append(PongNetMineMessage.read_from(reader))
 		reader.leave()
 	return value
