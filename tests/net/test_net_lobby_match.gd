@@ -53,6 +53,15 @@ func _screen_right(screen: PongScreen) -> Vector3:
 	return Vector3(right.x, 0.0, right.z).normalized()
 
 
+# A local UDP port with nothing behind it (bound, then closed).
+func _port_nobody_answers() -> int:
+	var probe: PacketPeerUDP = PacketPeerUDP.new()
+	probe.bind(0, "127.0.0.1")
+	var port: int = probe.get_local_port()
+	probe.close()
+	return port
+
+
 func test_the_match_is_between_the_people_and_named_by_the_lobby() -> void:
 	var screen: PongScreen = _start(0)
 	if screen == null:
@@ -180,6 +189,34 @@ func test_a_player_whose_server_is_silent_sees_the_trouble_until_it_is_back() ->
 	pulse.peer_back.emit(PongNetAuthority.SERVER_ID, 2.5)
 	await wait_process_frames(2)
 	assert_eq(screen.hud.get_status_text(), "Connection back after 2.5 s")
+
+
+func test_a_player_whose_server_is_silent_for_long_reconnects_and_may_leave_meanwhile() -> void:
+	var screen: PongScreen = _start(0)
+	if screen == null:
+		return
+	_net.session.is_server = false
+	_net.reconnect.server_at("127.0.0.1", _port_nobody_answers())
+	var silence: float = PongNetProtocol.REJOIN_AFTER_S + 0.5
+	_net.session.pulse.peer_absent.emit(PongNetAuthority.SERVER_ID, silence)
+	await wait_process_frames(2)
+	assert_true(_net.reconnect.is_reconnecting(), "past the limit: joining again")
+	assert_false(_net.play.is_running(), "the match waits for the new connection")
+	assert_true(_net.session.is_open(), "a join under way")
+	var shown: String = screen.hud.get_status_text()
+	var notice: RegEx = RegEx.create_from_string(
+		"^Reconnecting: no word for (\\d+) s\nYour seat is kept (\\d+) s more$"
+	)
+	var found: RegExMatch = notice.search(shown)
+	assert_not_null(found, shown)
+	if found != null:
+		var total: int = int(found.get_string(1)) + int(found.get_string(2))
+		assert_almost_eq(float(total), PongNetProtocol.SEAT_GRACE_S, 1.0, "the seconds add up")
+	# The player goes back to the menu: no more tries.
+	_net.leave()
+	assert_false(_net.reconnect.is_reconnecting())
+	await wait_seconds(PongNetReconnect.RETRY_S + 0.5)
+	assert_false(_net.session.is_open(), "no join after leaving")
 
 
 func test_a_guest_silent_in_the_lobby_keeps_its_seat_and_no_match_starts_without_it() -> void:

@@ -24,8 +24,7 @@ signal match_ended(winner: int, why: String)
 const NODE_NAME: String = "PongNet"
 const PONG_SCENE: PackedScene = preload("res://game/pong/ui/pong.tscn")
 
-## Seats of a match (territories): 2, or 4 on a square court. The server's choice, set
-## before [method host]; a client takes the server's from the lobby.
+## Seats (territories): 2, or 4 on a square court; set before [method host], else the lobby's.
 var seats: int = 2
 var my_name: String = "Player"
 ## A dedicated server: it plays no seat and shows nothing.
@@ -116,8 +115,9 @@ func join(address: String, port: int) -> String:
 	return error
 
 
-## Leaves the lobby or the match.
+## Leaves the lobby or the match (a rejoin under way too).
 func leave() -> void:
+	reconnect.cancel()
 	_end_match(-1, "left")
 	session.close()
 	players.clear()

@@ -71,6 +71,12 @@ func frame() -> void:
 		_try()
 
 
+## The player left: no more tries.
+func cancel() -> void:
+	_until_s = -INF
+	_retry_at_s = INF
+
+
 func _try() -> void:
 	_retry_at_s = INF
 	_net.session.join(_address, _port)
