@@ -39,10 +39,11 @@ static func check(start: PongNetStartMessage, seats: int) -> String:
 	]:
 		if not counts.is_empty() and counts.size() != seats:
 			return "%s is not one number per seat (%d)" % [counts, seats]
-	var named: Dictionary[int, bool] = {}
+	# Each weapon by (seat, number), mines and bullets apart: listed once.
+	var named: Dictionary[Vector2i, bool] = {}
 	for row: PongNetMineMessage in start.mines:
 		var reason: String = _check_weapon(row.seat, row.id, Array(start.mines_used), seats, "mine")
-		if reason.is_empty() and named.has(row.seat * PongMines.KINDS.size() + row.id):
+		if reason.is_empty() and named.has(Vector2i(row.seat, row.id)):
 			reason = "mine %d of seat %d twice" % [row.id, row.seat]
 		if reason.is_empty() and absf(row.position.y) > PongNetProtocol.FLOOR_TOLERANCE_M:
 			reason = "a mine off the floor"
@@ -50,17 +51,17 @@ static func check(start: PongNetStartMessage, seats: int) -> String:
 			reason = "a mine in its owner's own territory"
 		if not reason.is_empty():
 			return reason
-		named[row.seat * PongMines.KINDS.size() + row.id] = true
-	var flown: Dictionary[String, bool] = {}
+		named[Vector2i(row.seat, row.id)] = true
+	var flown: Dictionary[Vector2i, bool] = {}
 	for row: PongNetBulletRow in start.bullets:
 		var reason: String = _check_weapon(
 			row.seat, row.id, Array(start.bullets_fired), seats, "bullet"
 		)
-		if reason.is_empty() and flown.has("%d/%d" % [row.seat, row.id]):
+		if reason.is_empty() and flown.has(Vector2i(row.seat, row.id)):
 			reason = "bullet %d of seat %d twice" % [row.id, row.seat]
 		if not reason.is_empty():
 			return reason
-		flown["%d/%d" % [row.seat, row.id]] = true
+		flown[Vector2i(row.seat, row.id)] = true
 	return ""
 
 
