@@ -254,6 +254,19 @@ def agree(lists: list[list], what: str) -> list:
     return max(lists, key=len)
 
 
+def misbehaviour(report: dict) -> dict:
+    """What a peer counted against the others as bad messages, by kind (not the states that
+    arrived late across a transfer, which the authority counts apart)."""
+    return {k: v for k, v in report["refused"].items() if not k.startswith("authority:")}
+
+
+def refusal_story(report: dict) -> str:
+    """A peer's refusals with their first reasons: a rare refusal is diagnosed from these."""
+    reasons = "; ".join(f"from peer {p}: {what}: {why}"
+                        for p, what, why in report.get("refusal_reasons", []))
+    return f"refused {report['refused']} ({reasons or 'no reasons kept'})"
+
+
 def floor_hurts(report: dict) -> list[tuple]:
     return [tuple(h) for h in report["hurts"]]
 

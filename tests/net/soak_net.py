@@ -17,7 +17,7 @@ import sys
 from pathlib import Path
 
 from bench_net import SETTINGS
-from net_harness import ROOT, check_health, engine_errors, run_match, workspace
+from net_harness import ROOT, check_health, engine_errors, misbehaviour, run_match, workspace
 from net_measure import ball_state_use
 
 # Enough health for ten minutes of autopilots (about 0.5-0.8 points a second are lost).
@@ -31,9 +31,6 @@ def soak(seconds: float, label: str) -> dict:
                                  client_args=((f"--pong-net-health={HEALTH}",),))
         reports = {p.name: p.report for p in peers}
         errors = {p.name: engine_errors(p)[:5] for p in peers}
-        # The budget logs a sender's first bad message of each kind with its reason.
-        said = {p.name: [line for line in p.log().splitlines() if "sent a bad" in line][:10]
-                for p in peers}
     row: dict = {"seconds": seconds, "network": label, "relay": relay, "peers": {}}
     for name, report in reports.items():
         extra = report.get("extra", {})
@@ -41,9 +38,10 @@ def soak(seconds: float, label: str) -> dict:
             "exit": report.get("exit"), "exit_code": report.get("exit_code"),
             "silences": extra.get("absent", []), "seats_taken": extra.get("peers_left", []),
             "server_lost": extra.get("server_lost"),
-            "refused": {k: v for k, v in report.get("refused", {}).items()
-                        if not k.startswith("authority:")},
-            "health": report.get("health"), "errors": errors[name], "said": said[name],
+            "refused": misbehaviour(report),
+            "health": report.get("health"), "errors": errors[name],
+            "said": [f"from peer {p}: {what}: {why}"
+                     for p, what, why in report.get("refusal_reasons", [])],
         }
     row["ball_states"] = ball_state_use(list(reports.values()))
     try:
@@ -72,7 +70,7 @@ def main() -> int:
               f"{peer['refused'] or 'nothing'}, health {peer['health']}, error lines "
               f"{len(peer['errors'])}")
         for line in peer["said"]:
-            print(f"  {name} said: {line}")
+            print(f"  {name} refused {line}")
     use = row["ball_states"]
     shares = ", ".join(f"{100 * p['used_share']:.1f} %" for p in use["per_peer"]
                        if p["used_share"] is not None)

@@ -14,8 +14,8 @@ from __future__ import annotations
 import pytest
 
 from net_harness import (Network, Peer, check_health, detection_s, divergences, engine_errors,
-                         free_udp_port, killer, logs, master_overlaps, quantile, run_match,
-                         transfers, workspace)
+                         free_udp_port, killer, logs, master_overlaps, misbehaviour, quantile,
+                         refusal_story, run_match, transfers, workspace)
 
 NETWORKS = {
     "lan": Network(0, 0, 0.0),
@@ -45,10 +45,6 @@ CONTACT_TOLERANCE = 0.10
 RALLY_SECONDS = 12
 
 
-def _validation_refusals(report: dict) -> dict:
-    return {k: v for k, v in report["refused"].items() if not k.startswith("authority:")}
-
-
 
 def _stream_story(peers: list[Peer], follower: dict, sent: int) -> str:
     """What each peer did with the ball stream, for a follower that took too few states:
@@ -69,8 +65,7 @@ def _check_consistent(peers: list[Peer], network: Network, min_handoffs: int = 3
     assert not errors, "engine errors:\n" + "\n".join(errors[:10]) + "\n" + logs(peers)
     for peer in peers:
         assert peer.report.get("exit_code") == 0, logs(peers)
-        dropped = [line for line in peer.log().splitlines() if "dropped" in line][:5]
-        assert _validation_refusals(peer.report) == {}, (peer.name, peer.report["refused"], dropped)
+        assert misbehaviour(peer.report) == {}, f"{peer.name}: {refusal_story(peer.report)}"
     # Every peer applied the same transfers in the same order. One that quit first may have
     # missed those the others applied in its last moments: each peer ends by its own clock,
     # and CI's run saw three hand-offs within the host's last 0.3 s, after the peer that

@@ -19,8 +19,8 @@ from __future__ import annotations
 
 import time
 
-from net_harness import (Network, Peer, engine_errors, logs, protocol_seconds,
-                         recounted_health, run_match, workspace)
+from net_harness import (Network, Peer, engine_errors, logs, misbehaviour, protocol_seconds,
+                         recounted_health, refusal_story, run_match, workspace)
 
 IDENTITY = "5eed" * 8
 STRANGER = "0bad" * 8
@@ -35,12 +35,6 @@ RECONNECT_AFTER_S = protocol_seconds("REJOIN_AFTER_S")
 # From the address change to the seat back: the silence, then a new handshake and the
 # court prepared again; generous for a loaded machine (the time taken is printed).
 RECONNECT_BOUND_S = RECONNECT_AFTER_S + 8.0
-
-
-def misbehaviour(report: dict) -> dict:
-    """What a peer counted against the others as bad messages (not the states that arrived
-    late across a transfer, which the authority counts apart)."""
-    return {k: v for k, v in report["refused"].items() if not k.startswith("authority")}
 
 
 def kill_and_rejoin(events: dict):
@@ -103,7 +97,7 @@ def test_a_player_whose_game_restarts_within_the_grace_takes_the_seat_back():
             again.report["health"], resumed)
         # The rejoined game's messages were good ones: its shots numbered on, its ball on the
         # epoch it was handed.
-        assert misbehaviour(host.report) == {}, host.report["refused"]
+        assert misbehaviour(host.report) == {}, refusal_story(host.report)
         lost = [a - b for a, b in zip(host.report["health"], again.report["health"])]
         in_flight = 2 * 10  # LAST_IN_FLIGHT hurts of the dearest cause.
         assert sum(abs(d) for d in lost) <= in_flight, (host.report["health"],
@@ -147,7 +141,7 @@ def test_a_player_whose_address_changes_mid_match_rejoins_by_itself():
         assert rejoined[0]["health"] == back[0]["health"], (rejoined, back)
         assert client.report["health"] == recounted_health(client.report,
                                                            rejoined[0]["health"])
-        assert misbehaviour(host.report) == {}, host.report["refused"]
+        assert misbehaviour(host.report) == {}, refusal_story(host.report)
         later = [t for t in client.report["transfers"] if t["wall_s"] > rejoined[0]["wall_s"]]
         assert len(later) >= 2, ("the rally went on after the rejoin", later)
         lost = [a - b for a, b in zip(host.report["health"], client.report["health"])]

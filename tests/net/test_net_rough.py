@@ -19,7 +19,7 @@ from __future__ import annotations
 
 from guard_harness import HIT_MARK, ROGUE_SCENE, check_taken_over, cut_on_line
 from net_harness import (logs, ROUGH, Peer, check_health, detection_s, engine_errors,
-                         run_match, transfers, workspace)
+                         misbehaviour, refusal_story, run_match, transfers, workspace)
 
 # The issue's bounds.
 USED_SHARE_MIN = 0.9
@@ -72,11 +72,11 @@ def test_a_match_on_the_rough_network_uses_the_states_that_arrive_and_never_jump
         # Honest play is never refused: no ball state the host's simulation could not reach,
         # no floor claim without its bounce (issue 36: a refused claim cost a real point).
         host = reports[0]
-        refused = {k: v for k, v in host["refused"].items() if not k.startswith("authority:")}
+        refused = misbehaviour(host)
         check = host["extra"].get("ball_check", {})
         lines.append(f"host's check of the client's ball {check.get('verdicts')}, worst miss "
                      f"when flown {1000 * check.get('worst_miss_m', 0.0):.2f} mm, refused "
-                     f"{refused}")
+                     f"{refused}: {refusal_story(host)}")
         print("rough network: " + "; ".join(lines))
         assert check.get("verdicts", {}).get("flown", 0) > 0, lines[-1]
         assert refused == {}, lines[-1]

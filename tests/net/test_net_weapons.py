@@ -21,7 +21,8 @@ from __future__ import annotations
 
 import pytest
 
-from net_harness import logs, Network, Peer, agree, check_health, run_match, workspace
+from net_harness import (logs, Network, Peer, agree, check_health, misbehaviour, refusal_story,
+                         run_match, workspace)
 
 WEAPONS_NETWORK = Network(50, 10, 0.05)
 REMOTE_NETWORK = Network(100, 0, 0.0)
@@ -44,10 +45,7 @@ def test_two_peers_with_weapons_agree_on_mines_hurts_and_health() -> None:
         reports = [p.report for p in peers]
         for peer in peers:
             assert peer.report.get("exit_code") == 0, logs(peers)
-            refused = {k: v for k, v in peer.report["refused"].items()
-                       if not k.startswith("authority:")}
-            dropped = [line for line in peer.log().splitlines() if "dropped" in line][:5]
-            assert refused == {}, (peer.name, refused, dropped)
+            assert misbehaviour(peer.report) == {}, f"{peer.name}: {refusal_story(peer.report)}"
         assert relay["up"]["dropped"] > 0, relay
         weapons = [r["extra"]["weapons"] for r in reports]
         mines = agree([[tuple(m) for m in w["mines"]] for w in weapons], "mines")
@@ -72,9 +70,8 @@ def _remote_run(work, passivity: bool) -> dict:
     assert client and "remote_mine" in client[0].report, logs(peers)
     measured = client[0].report["remote_mine"]
     assert measured["started"] and measured["complete"], (measured, logs(peers))
-    refused = {k: v for p in peers for k, v in p.report["refused"].items()
-               if not k.startswith("authority:")}
-    assert refused == {}, refused
+    for peer in peers:
+        assert misbehaviour(peer.report) == {}, f"{peer.name}: {refusal_story(peer.report)}"
     return measured
 
 

@@ -169,9 +169,14 @@ func judge(
 	var waited: float = now - claimed_at
 	if waited < WAIT_S or (_master_newest < claimed_at and waited < STREAM_WAIT_S):
 		return [Verdict.WAIT, ""]
+	var seen: String = _story(claimed_at, earliest, latest)
 	if charged_match:
-		return [Verdict.REFUSE, "its bounce in territory %d was charged already" % victim]
-	return [Verdict.REFUSE, "no floor bounce in territory %d in its epoch here" % victim]
+		return [
+			Verdict.REFUSE, "its bounce in territory %d was charged already; %s" % [victim, seen]
+		]
+	return [
+		Verdict.REFUSE, "no floor bounce in territory %d in its epoch here; %s" % [victim, seen]
+	]
 
 
 ## How many claims may wait at once: as many as a ball can bounce in the longest wait.
@@ -182,6 +187,33 @@ func max_waiting() -> int:
 ## Bounces recorded and still remembered, [time, position, charged] each.
 func bounces() -> Array[Array]:
 	return _bounces
+
+
+# What this peer saw around a refused claim that arrived at [param claimed_at], which looked
+# from [param earliest] to [param latest]: times are relative to its arrival (a rare honest
+# refusal is diagnosed from this alone).
+func _story(claimed_at: float, earliest: float, latest: float) -> String:
+	var seen: PackedStringArray = PackedStringArray()
+	for bounce: Array in _bounces:
+		var t: float = bounce[0]
+		if absf(t - claimed_at) <= 2.0 * LOOKBACK_S:
+			var at: Vector3 = bounce[1]
+			var mark: String = " charged" if bounce[2] else ""
+			seen.append(
+				(
+					"%+.2f s at (%.2f, %.2f) territory %d%s"
+					% [t - claimed_at, at.x, at.z, PongCourt.territory_of(at, seats), mark]
+				)
+			)
+	return (
+		"looked from %+.2f to %+.2f s, master's states to %+.2f s; bounces: %s"
+		% [
+			earliest - claimed_at,
+			latest - claimed_at,
+			_master_newest - claimed_at,
+			", ".join(seen) if not seen.is_empty() else "none"
+		]
+	)
 
 
 func _near(point: Vector3, territory: int, margin: float) -> bool:

@@ -7,6 +7,7 @@ extends RefCounted
 
 ## Seconds between trajectory samples.
 const SAMPLE_INTERVAL_S: float = 0.01
+const MAX_REASONS: int = 20
 
 var peer: int = 0
 var winner: int = -1
@@ -27,6 +28,8 @@ var handoff_corrections: PackedFloat32Array = PackedFloat32Array()
 var hurts: Array[Array] = []
 ## Messages dropped by the checks, by kind.
 var refused: Dictionary[String, int] = {}
+## The first [constant MAX_REASONS] of them: [peer, kind, why] (a flaky refusal is read here).
+var reasons: Array[Array] = []
 ## Extra entries (peer losses, contact profiles, ...).
 var extra: Dictionary = {}
 
@@ -77,8 +80,10 @@ static func now() -> float:
 	return Time.get_unix_time_from_system()
 
 
-func _on_bad_message(_peer: int, what: String, _reason: String) -> void:
+func _on_bad_message(sender: int, what: String, reason: String) -> void:
 	refused[what] = refused.get(what, 0) + 1
+	if reasons.size() < MAX_REASONS:
+		reasons.append([sender, what, reason])
 
 
 func _on_state_taken(sender: int, age_s: float) -> void:
@@ -172,5 +177,6 @@ func to_dict() -> Dictionary:
 		"samples": _samples,
 		"hurts": hurts,
 		"refused": all_refused,
+		"refusal_reasons": reasons,
 		"extra": extra,
 	}
