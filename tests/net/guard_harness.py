@@ -218,4 +218,8 @@ def check_taken_over(report: dict, seat: int = 1) -> None:
     moving = [s for s in report["samples"] if s[0] > left[0]["wall_s"] + 1.0]
     travel = max((max(s[i] for s in moving) - min(s[i] for s in moving) for i in (2, 3, 4)),
                  default=0.0)
-    assert travel > 1.0, f"the ball stopped: it moved {travel:.2f} m at most along any axis"
+    watched = moving[-1][0] - moving[0][0] if moving else 0.0
+    transfers_after = [(round(t["wall_s"] - left[0]["wall_s"], 2), t["kind"]) for t in later]
+    assert travel > 1.0, (f"the ball stopped: it moved {travel:.2f} m at most along any axis in "
+                          f"the {watched:.1f} s watched from 1 s after the seat was taken over "
+                          f"(transfers after it, s and kind: {transfers_after[:12]})")

@@ -140,7 +140,7 @@ def workspace():
         print(f"the failed match's logs and reports: {kept}", file=sys.stderr)
         raise
     finally:
-        if os.environ.get("NET_KEEP"):
+        if os.environ.get("NET_KEEP") and path.exists():  # A failure's was moved already.
             shutil.copytree(path, FAILURES / ("kept-" + path.name), dirs_exist_ok=True)
         shutil.rmtree(path, ignore_errors=True)
 

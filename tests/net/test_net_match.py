@@ -43,6 +43,9 @@ DIVERGENCE_P99_M = {
 DETECTION_BOUND_S = 6.0
 CONTACT_TOLERANCE = 0.10
 RALLY_SECONDS = 12
+# Each side follows the other's ball for about half a match; a loaded machine stalls a master's
+# samples (a gap is not compared), and 12 s once left the client 0.9 s of comparable following.
+ASYMMETRIC_SECONDS = 20
 
 
 
@@ -150,7 +153,7 @@ def test_an_asymmetric_path_ages_each_state_by_its_own_leg() -> None:
     medians: dict[str, dict[str, float]] = {}
     with workspace() as work:
         for name, network in (("symmetric", SYMMETRIC), ("asymmetric", ASYMMETRIC)):
-            peers, _ = run_match(work, 2, network, RALLY_SECONDS)
+            peers, _ = run_match(work, 2, network, ASYMMETRIC_SECONDS)
             _check_consistent(peers, network, min_handoffs=2)
             host, client = (p.report for p in peers)
             medians[name] = {"host": 0.0, "client": 0.0, "all": 0.0}

@@ -92,6 +92,8 @@ class RallyWatch:
     _y: float | None = None
     _extreme: float | None = None
     _coming: bool | None = None
+    _now: str = "nothing"
+    _before: str = "nothing"
     log: list[str] = field(default_factory=list)
 
     def restart(self) -> None:
@@ -101,6 +103,9 @@ class RallyWatch:
 
     def see(self, t: float, ball: tuple[float, float] | None,
             paddle: tuple[float, float] | None) -> None:
+        before = self._now
+        self._now = f"{t:.2f} s ball {_xy(ball)} paddle {_xy(paddle)}"
+        self._before = before
         if ball is None:
             return
         y = ball[1]
@@ -112,7 +117,13 @@ class RallyWatch:
         paddle_y = paddle[1] if paddle else None
         if (paddle_y is not None and y > paddle_y + PAST_PADDLE_PX) or y < PAST_COMPUTER_Y:
             if self.rally:
-                self.log.append(f"{t:.1f} s: past a paddle, rally of {self.rally} over")
+                # Where the ball and the paddle were, as the person saw them: a miss wide of
+                # the paddle is the hand's, a miss through it is the game's.
+                where = f"ball ({ball[0]:.0f}, {y:.0f})" + (
+                    f", paddle ({paddle[0]:.0f}, {paddle_y:.0f})" if paddle else ", paddle unseen")
+                side = "the computer's" if y < PAST_COMPUTER_Y else "the person's"
+                self.log.append(f"{t:.1f} s: past {side} paddle, rally of {self.rally} over: "
+                                f"{where}; a look before: {self._before}")
                 self.misses += 1
             self.rally = 0
             self._coming = None
@@ -135,6 +146,10 @@ class RallyWatch:
         elif (coming and y > self._extreme) or (not coming and y < self._extreme):
             self._extreme = y
         self._y = y
+
+
+def _xy(point: tuple[float, float] | None) -> str:
+    return "unseen" if point is None else f"({point[0]:.0f}, {point[1]:.0f})"
 
 
 class ClumsyMouseHand:

@@ -45,6 +45,20 @@ static func heartbeat_limit(path: ENetPacketPeer) -> float:
 	return PongNetProtocol.heartbeat_timeout_s(rtt_ms / 1000.0, jitter_ms / 1000.0)
 
 
+## Whether a packet to [param peer] can leave through [param api] now. Godot lists a peer until
+## it reports it gone, and it reports the peers that went in one poll one at a time: while a
+## handler of the first runs, the next may already be reset, and a send to it fails
+## ("Unable to send packet on channel 4, max channels: 0").
+static func can_send(api: MultiplayerAPI, peer: int) -> bool:
+	if not api.get_peers().has(peer):
+		return false
+	var enet: ENetMultiplayerPeer = api.multiplayer_peer as ENetMultiplayerPeer
+	if enet == null:
+		return true
+	var path: ENetPacketPeer = enet.get_peer(peer)
+	return path != null and path.get_state() == ENetPacketPeer.STATE_CONNECTED
+
+
 ## Drops [param peers] of [param enet] at once (no goodbye awaited), then polls [param api]
 ## once, which reports them gone: until its next poll Godot would still list them, and a
 ## message to all would fail on each ("Parameter "peer" is null"). SceneMultiplayer's own

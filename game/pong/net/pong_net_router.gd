@@ -96,7 +96,8 @@ func send_all(message: PongNetMessage, copies: int = 1) -> void:
 		_send(message, MultiplayerPeer.TARGET_PEER_BROADCAST)
 		return
 	for peer: int in multiplayer.get_peers():
-		_send(message, peer, copies)
+		if PongNetEnet.can_send(multiplayer, peer):
+			_send(message, peer, copies)
 
 
 ## Forgets what was heard from [param peer] (gone; 0: every peer, the session closed).
@@ -108,10 +109,10 @@ func forget_peer(peer: int) -> void:
 		_heard.erase(peer)
 
 
-## Sends [param message] to [param peer] while it is connected (a peer just gone is no longer
-## one of [method MultiplayerAPI.get_peers]: the engine would log an error).
+## Sends [param message] to [param peer] while it is connected (to a peer just gone the engine
+## would log an error: [method PongNetEnet.can_send]).
 func send_to(peer: int, message: PongNetMessage) -> void:
-	if _connected() and multiplayer.get_peers().has(peer):
+	if _connected() and PongNetEnet.can_send(multiplayer, peer):
 		_send(message, peer)
 
 
@@ -206,7 +207,7 @@ func _send_packet(
 # A peer just connected: one reliable beat behind Godot's "auth complete", so that it hears
 # from us even if nothing else is sent to it (see the class description).
 func _greet(peer: int) -> void:
-	if _connected() and multiplayer.get_peers().has(peer):
+	if _connected() and PongNetEnet.can_send(multiplayer, peer):
 		var beat: PongNetBeatMessage = PongNetBeatMessage.new()
 		beat.wall_s = PongNetLegs.wall_s()
 		(multiplayer as SceneMultiplayer).send_bytes(
@@ -224,7 +225,7 @@ func _round_trip_s(peer: int) -> float:
 
 # One of our reliable packets, unreliably, on the reliable channel.
 func _transmit(peer: int, packet: PackedByteArray) -> void:
-	if _connected() and multiplayer.get_peers().has(peer):
+	if _connected() and PongNetEnet.can_send(multiplayer, peer):
 		(multiplayer as SceneMultiplayer).send_bytes(
 			packet,
 			peer,
