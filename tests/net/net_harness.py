@@ -109,19 +109,10 @@ class Peer:
             self.proc.wait()
 
 
-# Godot's SceneMultiplayer tells the remaining clients of a departure on the reliable system
-# channel; when two clients' goodbyes reach the server in the same poll, ENet has already
-# emptied the second one, and the notice to it fails with this line. The peer is gone
-# anyway; nothing of ours sends it (ours wait for the end of the frame).
-DEPARTURE_NOTICE_TO_A_PEER_GONE = "ERROR: Unable to send packet on channel 0, max channels: 0"
-
-
 def engine_errors(peer: "Peer") -> list[str]:
-    """The engine and script error lines of [peer]'s log, but for the departure notice
-    above."""
+    """The engine and script error lines of [peer]'s log: none is accepted (issue 36)."""
     return [line for line in peer.log().splitlines()
-            if line.startswith(("ERROR", "SCRIPT ERROR"))
-            and line != DEPARTURE_NOTICE_TO_A_PEER_GONE]
+            if line.startswith(("ERROR", "SCRIPT ERROR"))]
 
 
 @contextmanager
