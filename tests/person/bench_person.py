@@ -89,7 +89,7 @@ def person_pong(name: str) -> dict:
             look = person.grab(session.scratch / "pong.png")
             ball, paddle = ball_at(look), paddle_at(look)
             watch.see(time.monotonic() - started, ball, paddle)
-            person.move_mouse(*hand.follow(ball, paddle))
+            hand.play(person, ball, paddle)
         person.close_and_see_it_exit(session.game)
         return {"contacts": watch.contacts, "longest_rally": watch.longest, "misses": watch.misses,
                 "seconds": PONG_SECONDS, **frame_ms(session.game.output())}

@@ -9,6 +9,7 @@ between its paddle and the ball, and wobbles."""
 from __future__ import annotations
 
 import random
+import time
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -153,19 +154,31 @@ def _xy(point: tuple[float, float] | None) -> str:
 
 
 class ClumsyMouseHand:
-    """Moves the mouse so the paddle seen on the screen goes part of the way to the ball seen,
-    across the screen only, with a newcomer's wobble."""
+    """A newcomer's hand on the mouse, held to tests/pong/pong_clumsy_player.gd's limits: it
+    looks at the screen every REACTION_S at the quickest (a slow machine's look takes
+    longer), moves the mouse across the screen by part of the gap it sees between its paddle
+    and the ball (not yet knowing that the paddle goes about 0.4 as far as the mouse), and
+    wobbles. It never walks: the computer's shots in beginner mode come at its target, the
+    middle of its back wall."""
 
+    REACTION_S = 0.3  # pong_clumsy_player.gd's
     GAIN = 0.6
     WOBBLE_PX = 18.0  # about half the paddle's drawn radius
 
     def __init__(self, rest: tuple[int, int], seed: int) -> None:
         self.x, self.y = rest
         self.rng = random.Random(seed)
+        self._looked = 0.0
 
-    def follow(self, ball: tuple[float, float] | None,
-               paddle: tuple[float, float] | None) -> tuple[int, int]:
+    def play(self, person, ball: tuple[float, float] | None,
+             paddle: tuple[float, float] | None) -> None:
+        """One look's answer, then the rest of the person's reaction time if the look took
+        less (a screenshot takes 35 ms here, the eyes on it about as long)."""
         if ball is not None and paddle is not None:
-            self.x += self.GAIN * (ball[0] - paddle[0]) + self.rng.gauss(0.0, self.WOBBLE_PX)
+            self.x += self.GAIN * (ball[0] - paddle[0])
             self.x = min(max(self.x, COURT[0]), COURT[2])
-        return (round(self.x), self.y)
+        # Placed shakily: a new wobble each look about where it means to be (the clumsy
+        # player's), not added up look after look.
+        person.move_mouse(round(self.x + self.rng.gauss(0.0, self.WOBBLE_PX)), self.y)
+        time.sleep(max(0.0, self._looked + self.REACTION_S - time.monotonic()))
+        self._looked = time.monotonic()

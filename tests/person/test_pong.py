@@ -62,7 +62,7 @@ def test_a_person_plays_pong_against_the_computer(session) -> None:
             person.screenshot("served")
         if watch.contacts != contacts_before and watch.contacts <= 3:
             person.screenshot(f"contact-{watch.contacts}")
-        person.move_mouse(*hand.follow(ball, paddle))
+        hand.play(person, ball, paddle)
         unseen = unseen + 1 if ball is None else 0
         if unseen >= UNSEEN_LOOKS:
             unseen = 0
