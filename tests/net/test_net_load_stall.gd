@@ -29,17 +29,25 @@ func test_a_peer_loading_a_court_is_waited_for_by_the_heartbeat_and_by_enet() ->
 	assert_gt(patience_s, PongNetProtocol.SEAT_GRACE_S, "and a kept seat's grace")
 
 
-func test_this_peers_own_stall_counts_against_no_one() -> void:
+func test_this_peers_own_stall_is_told_and_slow_frames_hide_no_silence() -> void:
 	var beat: PongNetHeartbeat = PongNetHeartbeat.new()
 	var limit: Callable = func(_peer: int) -> float: return 1.0
 	beat.watch(7, 0.0)
 	beat.heard(7, 1.5)
-	beat.frame(1.5)
-	assert_eq(beat.overdue(1.5, limit), [] as Array[Array])
-	beat.frame(6.6)  # The frame after the one that loaded the court: 5.1 s.
-	assert_eq(beat.overdue(6.6, limit), [] as Array[Array], "5.1 s of our own stall")
+	assert_false(beat.frame(1.5), "the first frame: no gap to judge")
+	assert_true(beat.frame(6.6), "the frame after the one that loaded a court: 5.1 s")
+	# The pulse then reads what came meanwhile (PongNetPulse.frame): a beat of the peer's.
+	beat.heard(7, 6.6)
+	assert_eq(beat.overdue(6.6, limit), [] as Array[Array], "heard after the stall")
 	for frame: int in 50:
-		beat.frame(6.6 + 0.02 * frame)  # Ordinary frames excuse nothing.
-	assert_eq(beat.overdue(7.6, limit), [] as Array[Array], "1.0 s of silence since")
-	beat.frame(7.7)
-	assert_eq(beat.overdue(7.7, limit).size(), 1, "then its silence counts as ever: 1.1 s")
+		assert_false(beat.frame(6.62 + 0.02 * frame), "ordinary frames are no stall")
+	# A game that draws three frames a second: every frame is a "stall", and the silence of a
+	# peer that is gone still counts (excusing each gap once hid a dead server for 9 s).
+	var now: float = 7.6
+	var found: float = -1.0
+	while now < 12.0 and found < 0.0:
+		now += 0.34
+		beat.frame(now)
+		if not beat.overdue(now, limit).is_empty():
+			found = now - 6.6
+	assert_true(found > 1.0 and found < 1.4, "overdue %.2f s after the last beat" % found)

@@ -5,6 +5,11 @@ player's chosen name, each paddle must follow its own player's mouse, both windo
 agree on the health, and closing either window must end that game, the guest's during the
 match while the host carries on against the computer.
 
+The guest joins through the test relay (tools/net/udp_relay.py, nothing in the way), which
+mid-match moves the guest to a new address, as a laptop that roams to another Wi-Fi: the
+guest's screen must say so and that its seat is kept, then get it back by itself, and the
+two windows agree on the health again.
+
 The two players run the two builds a person starts, as two friends may: the host `make play`
 (a debug build from source), the guest the exported release (the source tree as well where
 none is exported). One match covers both builds; a match for each took about 100 s more. The
@@ -15,7 +20,9 @@ from __future__ import annotations
 
 import re
 import socket
+import sys
 import time
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -24,6 +31,9 @@ from conftest import skip_unless_playable
 from ocr import Region
 from person import EXPORTED, SCREEN, Person, Session
 from pong_eyes import paddle_rim
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "net"))
+from net_relay import Network, Relay  # noqa: E402
 
 NAMES = ("Ada", "Bo")
 # The match's HUD: the players' names and health bars along the top of the screen.
@@ -38,6 +48,10 @@ CARRY_ON_S = 3.0
 PADDLE_TRAVEL_PX = 60
 # How long the person holds the mouse on each side before looking, then again if it lagged.
 DWELLS_S = (1.0, 3.0, 6.0)
+# How long the guest's screen is watched for each notice of its move to a new address: the
+# game reconnects after 8 s of silence (PongNetProtocol.REJOIN_AFTER_S) and the seat is kept
+# 15 s, so a generous bound on a loaded machine that still fails a game that never returns.
+ROAM_NOTICE_S = 25.0
 
 
 def free_udp_port() -> int:
@@ -115,9 +129,56 @@ def bad_lines(session) -> list[str]:
             or "disconnecting peer" in line or line.startswith("SCRIPT ERROR")]
 
 
+def agreed_health(host, guest) -> list[str]:
+    """The health both windows show alike (read a few times: a goal may fall between the
+    two looks); fails the test when they never agree."""
+    for _ in range(5):
+        # Both screens at (almost) the same moment, read afterwards.
+        shots = [s.person.grab(s.scratch / "health.png") for s in (host, guest)]
+        seen = [health_numbers(s.person, shot) for s, shot in zip((host, guest), shots)]
+        # The guest sees the host's panel on the left too (seat 1's panel is always left).
+        if seen[0] == seen[1] and "?" not in seen[0]:
+            print(f"person: health as both windows show it: {seen[0]}")
+            return seen[0]
+    raise AssertionError(f"the windows disagree on the health: {seen}")
+
+
+def roam(host, guest, relay: Relay) -> None:
+    """The guest's datagrams come from a new address from now on, as a laptop's that moved to
+    another Wi-Fi: its screen must tell the trouble and that its seat is kept, then the game
+    gets back in the match by itself (it reconnects after 8 s of silence; the "Reconnecting"
+    line shows only until the host answers, a moment when the first try works)."""
+    relay.rebind(0)
+    moved = time.monotonic()
+    guest.person.wait_text("Connection trouble", patience=ROAM_NOTICE_S, region=HUD_TOP)
+    print(f"person: the guest's screen said 'Connection trouble' {time.monotonic() - moved:.1f} s "
+          "after its address changed")
+    guest.person.screenshot("connection-trouble")
+    assert guest.person.find_text("seat is kept", patience=0.0, region=HUD_TOP), (
+        f"the guest was not told its seat is kept ({guest.shots})")
+    deadline = time.monotonic() + ROAM_NOTICE_S
+    while guest.person.find_text("no word for", patience=0.0, region=HUD_TOP):
+        assert time.monotonic() < deadline, f"never back in the match ({guest.shots})"
+        time.sleep(0.3)
+    print(f"person: the guest's trouble was over {time.monotonic() - moved:.1f} s after its "
+          "address changed")
+    guest.person.wait_text("Bo (you)", region=HUD_TOP)
+    guest.person.screenshot("back-in-the-match")
+    # The host's window has the player back, not the computer standing in.
+    host.person.wait_text("Bo", region=HUD_TOP)
+
+
 def test_two_people_play_a_network_match(two) -> None:
     host, guest = two
     port = str(free_udp_port())
+    relay = Relay(int(port), guest.scratch, Network(), max_seconds=900.0)
+    try:
+        play_the_match(host, guest, port, relay)
+    finally:
+        relay.stop()
+
+
+def play_the_match(host, guest, port: str, relay: Relay) -> None:
     started = time.monotonic()
     timings: dict[str, float] = {}
 
@@ -128,7 +189,7 @@ def test_two_people_play_a_network_match(two) -> None:
         p.click_text("Haptic Battle Pong", patience=90.0)
         p.click_text("Network game")
         p.type_into(p.wait_text("Your name"), name)
-        p.type_into(p.wait_text("Port"), port)
+        p.type_into(p.wait_text("Port"), port if s is host else str(relay.port))
         p.press("Tab")
         p.screenshot("lobby")
     lap("lobbies filled")
@@ -158,21 +219,12 @@ def test_two_people_play_a_network_match(two) -> None:
             f"{s.shots.name}: the paddle did not follow the mouse (x {left:.0f} then "
             f"{right:.0f}; {s.shots}); bad messages: {bad_lines(host)[:2]} {bad_lines(guest)[:2]}")
     lap("paddles moved")
-    # One match: both windows show the same health (read a few times: a goal may fall
-    # between the two looks).
-    agreed = None
-    for _ in range(5):
-        # Both screens at (almost) the same moment, read afterwards.
-        shots = [s.person.grab(s.scratch / "health.png") for s in (host, guest)]
-        seen = [health_numbers(s.person, shot) for s, shot in zip((host, guest), shots)]
-        # The guest sees the host's panel on the left too (seat 1's panel is always left).
-        if seen[0] == seen[1] and "?" not in seen[0]:
-            agreed = seen[0]
-            break
-    print(f"person: health as both windows show it: {agreed or seen}")
-    assert agreed is not None, f"the windows disagree on the health: {seen}"
-
+    # One match: both windows show the same health.
+    agreed_health(host, guest)
     lap("health read")
+    roam(host, guest, relay)
+    agreed_health(host, guest)
+    lap("roamed and back")
     # Closing the guest's window ends its game; the host's match goes on, the computer
     # standing in for the player who left.
     first, second = guest, host

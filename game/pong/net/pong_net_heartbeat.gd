@@ -118,16 +118,16 @@ func peers() -> Array[int]:
 	return _last_heard.keys()
 
 
-## A frame of this process at [param now_s]. A longer gap than [constant LOCAL_STALL_S] since
-## the last one is this process's own stall (a court loading, a hitch): nothing could be
-## heard meanwhile, so it counts against no peer. (A host whose court took 5 s to load found
-## its client 5 s silent in that very frame.)
-func frame(now_s: float) -> void:
+## A frame of this process at [param now_s]; true when a longer gap than
+## [constant LOCAL_STALL_S] since the last one makes it this process's own stall (a court
+## loading, a hitch): what the peers sent meanwhile may wait unread, and must be read before
+## anyone is judged silent (a host whose court took 5 s to load found its client 5 s silent
+## in that very frame). Excusing the gap instead hid a dead server for 9 s from a game that
+## drew 3 frames a second.
+func frame(now_s: float) -> bool:
 	var gap: float = now_s - _last_frame_s
 	_last_frame_s = now_s
-	if gap > LOCAL_STALL_S and is_finite(gap):
-		for peer: int in _last_heard.keys():
-			_last_heard[peer] += gap
+	return gap > LOCAL_STALL_S and is_finite(gap)
 
 
 ## The peers silent at [param now_s] for longer than their limit

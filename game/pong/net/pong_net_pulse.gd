@@ -32,12 +32,15 @@ func _init(router: PongNetRouter) -> void:
 	router.handle(PongNetStallMessage.SCHEMA_ID, _on_stall)
 
 
-## One frame of the session over [param enet]: our own stalls excused, beats when due, then
-## the verdicts (at most one lost peer on a client, whose session then closes).
+## One frame of the session over [param enet]: after a stall of our own what came meanwhile
+## read first, beats when due, then the verdicts (at most one lost peer on a client, whose
+## session then closes).
 func frame(enet: ENetMultiplayerPeer) -> void:
 	_enet = enet
 	var now: float = now_s()
-	heartbeat.frame(now)
+	if heartbeat.frame(now) and multiplayer.multiplayer_peer == enet:
+		multiplayer.poll()
+		now = now_s()
 	if enet.get_connection_status() != MultiplayerPeer.CONNECTION_CONNECTED:
 		return
 	if heartbeat.settling():
