@@ -112,7 +112,7 @@ func forget_peer(peer: int) -> void:
 ## Sends [param message] to [param peer] while it is connected (to a peer just gone the engine
 ## would log an error: [method PongNetEnet.can_send]).
 func send_to(peer: int, message: PongNetMessage) -> void:
-	if _connected() and PongNetEnet.can_send(multiplayer, peer):
+	if _reaches(peer):
 		_send(message, peer)
 
 
@@ -207,7 +207,7 @@ func _send_packet(
 # A peer just connected: one reliable beat behind Godot's "auth complete", so that it hears
 # from us even if nothing else is sent to it (see the class description).
 func _greet(peer: int) -> void:
-	if _connected() and PongNetEnet.can_send(multiplayer, peer):
+	if _reaches(peer):
 		var beat: PongNetBeatMessage = PongNetBeatMessage.new()
 		beat.wall_s = PongNetLegs.wall_s()
 		(multiplayer as SceneMultiplayer).send_bytes(
@@ -225,7 +225,7 @@ func _round_trip_s(peer: int) -> float:
 
 # One of our reliable packets, unreliably, on the reliable channel.
 func _transmit(peer: int, packet: PackedByteArray) -> void:
-	if _connected() and PongNetEnet.can_send(multiplayer, peer):
+	if _reaches(peer):
 		(multiplayer as SceneMultiplayer).send_bytes(
 			packet,
 			peer,
@@ -236,6 +236,11 @@ func _transmit(peer: int, packet: PackedByteArray) -> void:
 
 static func _now_s() -> float:
 	return Time.get_ticks_usec() / 1e6
+
+
+# Whether a packet to [param peer] leaves now: our session open and the peer still connected.
+func _reaches(peer: int) -> bool:
+	return _connected() and PongNetEnet.can_send(multiplayer, peer)
 
 
 func _connected() -> bool:
