@@ -71,6 +71,21 @@ func transfer(serve: bool, ball: Array[Vector3], age_s: float, now_s: float) -> 
 		ignored += 1
 
 
+## The stream's message of the ball in [param snapshot] (the corrected one: a correction
+## may still be gliding in), the [param seq]th of [param epoch], sent over a leg of
+## [param leg_ms] up.
+static func state_of(snapshot: PongState, epoch: int, seq: int, leg_ms: int) -> PongNetBallMessage:
+	var state: PongNetBallMessage = PongNetBallMessage.new()
+	state.epoch = epoch
+	state.seq = seq
+	state.time_s = snapshot.time_s
+	state.position = snapshot.ball_position + snapshot.ball_correction
+	state.velocity = snapshot.ball_velocity
+	state.spin = snapshot.ball_spin
+	state.leg_ms = leg_ms
+	return state
+
+
 ## This machine's clock, s (the one [PongNetLatency] ages messages by).
 static func clock_s() -> float:
 	return Time.get_ticks_usec() / 1e6

@@ -48,13 +48,19 @@ func _init(
 
 
 ## An event of our servo: a floor bounce is recorded (server) and, when we are the
-## master, charged (server) or claimed (client).
-func on_event(event: PongEvent) -> void:
+## master, charged (server) or claimed (client); [param before_transfer]: it happened
+## before the last transfer reached our servo, in an epoch we may not have mastered.
+func on_event(event: PongEvent, before_transfer: bool = false) -> void:
 	if event.type != PongServoFacts.PongEventType.FLOOR:
 		return
 	var territory: int = event.territory
 	var on_server: bool = _is_server()
-	var ours: bool = _authority.is_master() and territory >= 0 and territory < judge.seats
+	var ours: bool = (
+		_authority.is_master()
+		and not before_transfer
+		and territory >= 0
+		and territory < judge.seats
+	)
 	if on_server:
 		judge.observe_floor(now(), event.position, ours)
 	if not ours or _match.rules.is_over():

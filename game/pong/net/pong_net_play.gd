@@ -30,7 +30,8 @@ signal transferred(transfer: Dictionary, correction_m: float)
 
 ## Servo seconds after a transfer during which the servo's state is not trusted: the
 ## set_ball of the transfer reaches the servo a tick later (no hand-off request, no
-## stream from a state the transfer has not replaced yet).
+## stream from a state the transfer has not replaced yet); from the servo's time at the
+## transfer, as the frame's state may be a frame older (docs/pong-networking.md).
 const SETTLE_S: float = 0.02
 ## Seconds of simulation the game steps per chunk in stepped mode.
 const CHUNK_S: float = PongMatch.STEP_CHUNK_S
@@ -71,7 +72,8 @@ var _latency: PongNetLatency = null
 var _seq: int = 0
 var _last_sent_time: float = -INF
 var _last_pose_time: float = -INF
-var _settle_until: float = 0.0
+# The servo's time when the last transfer was applied (s).
+var _transferred_at: float = -INF
 var _owe_s: float = 0.0
 var _last_now: float = 0.0
 var _running: bool = false
@@ -160,23 +162,15 @@ func frame(delta: float) -> void:
 		if owed != null:
 			var handoff: PongNetFacts.TransferKind = PongNetFacts.TransferKind.HANDOFF
 			issue(handoff, owed.territory, owed.position, owed.velocity, owed.spin, owed.age_ms)
-	if authority.is_master() and snapshot.time_s > _settle_until:
-		if snapshot.territory != authority.territory:
-			_hand_off(snapshot)
-	var settled: bool = snapshot.time_s > _settle_until
+	var settled: bool = snapshot.time_s > _transferred_at + SETTLE_S
+	if authority.is_master() and settled and snapshot.territory != authority.territory:
+		_hand_off(snapshot)
 	var due: bool = snapshot.time_s - _last_sent_time >= 1.0 / MAX_STREAM_HZ
 	if authority.is_master() and settled and due:
 		_last_sent_time = snapshot.time_s
 		_seq += 1
-		var state: PongNetBallMessage = PongNetBallMessage.new()
-		state.epoch = authority.epoch
-		state.seq = _seq
-		state.time_s = snapshot.time_s
-		state.position = snapshot.ball_position + snapshot.ball_correction
-		state.velocity = snapshot.ball_velocity
-		state.spin = snapshot.ball_spin
-		state.leg_ms = _latency.up_ms()
-		session.router.send_all(state)
+		var leg_ms: int = _latency.up_ms()
+		session.router.send_all(PongNetBall.state_of(snapshot, authority.epoch, _seq, leg_ms))
 		ball_state_sent.emit()
 	if snapshot.time_s - _last_pose_time >= 1.0 / MAX_STREAM_HZ:
 		_last_pose_time = snapshot.time_s
@@ -373,12 +367,14 @@ func _on_transfer(sender: int, transfer: PongNetTransferMessage) -> void:
 	transferred.emit(authority.history[-1], (target[0] - ball.local()[0]).length())
 	var serve: bool = transfer.kind == PongNetFacts.TransferKind.SERVE
 	ball.transfer(serve, [target[0], target[1], transfer.spin], age, PongNetBall.clock_s())
-	_settle_until = match_node.snapshot.time_s + SETTLE_S
+	_transferred_at = PongServo.shared().get_state().time_s
 
 
+# An event from before the last transfer reached the servo (read up to a frame late) is
+# the epoch before's: not a new master's to claim.
 func _on_event(event: PongEvent) -> void:
 	if floor_hurts != null:
-		floor_hurts.on_event(event)
+		floor_hurts.on_event(event, event.time_s < _transferred_at + 1.5 * PongServo.TICK_S)
 
 
 func _on_match_over(winner: int) -> void:
