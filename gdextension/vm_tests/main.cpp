@@ -1,9 +1,13 @@
 // The test program tools/kernel/run.sh boots a VM for: runs the scenarios named on the command
 // line (all without arguments) against the VM's real kernel and prints KTEST lines
 // (ktest.h), then "KTEST-DONE failed=N". Exit status: the number of failed checks, capped.
+// With GODOT_SDL_ARG first it is instead the Godot-like SDL process of sdl_godot.h.
 
 #include "ktest.h"
 #include "scenarios.h"
+#if HAPTICS_SDL3
+#include "sdl_godot.h"
+#endif
 
 #include <chrono>
 #include <condition_variable>
@@ -29,6 +33,8 @@ constexpr Scenario SCENARIOS[] = {
 	{ "evdev-uinput", haptics::vm::run_evdev_uinput },
 #if HAPTICS_SDL3
 	{ "sdl", haptics::vm::run_sdl },
+	{ "godot-sdl-dualsense", haptics::vm::run_godot_sdl_dualsense },
+	{ "godot-sdl-wheel", haptics::vm::run_godot_sdl_wheel },
 #endif
 };
 
@@ -67,6 +73,11 @@ private:
 } // namespace
 
 int main(int p_argc, char **p_argv) {
+#if HAPTICS_SDL3
+	if (p_argc > 1 && std::strcmp(p_argv[1], haptics::vm::GODOT_SDL_ARG) == 0) {
+		return haptics::vm::run_godot_sdl(p_argc - 2, p_argv + 2);
+	}
+#endif
 	int failed = 0;
 	int ran = 0;
 	for (const Scenario &scenario : SCENARIOS) {

@@ -32,6 +32,11 @@ int run_dualsense();
 int run_evdev_uinput();
 // SDL 3's haptics over the kernel's drivers (sdl.cpp; built with HAPTICS_SDL3).
 int run_sdl();
+// Godot's own SDL (a second process running libSDL3 as Godot 4.6 does, sdl_godot.h) beside our
+// DualSense backend (sdl_beside_dualsense.cpp) and our evdev backend on a wheel
+// (sdl_beside_wheel.cpp); built with HAPTICS_SDL3.
+int run_godot_sdl_dualsense();
+int run_godot_sdl_wheel();
 
 // The DualSense scenario's evdev part (dualsense_evdev.cpp), on the plugged pad.
 void run_dualsense_evdev(Report &r_report, uhid::DualSenseUhidPad &p_pad);
