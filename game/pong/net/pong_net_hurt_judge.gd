@@ -68,8 +68,8 @@ var _last: Array = []
 var _last_master: Array = []
 # The newest time of the master's states played here (s).
 var _master_newest: float = -INF
-var _tokens: PackedFloat64Array = PackedFloat64Array()
-var _tokens_at: PackedFloat64Array = PackedFloat64Array()
+# Each victim's charged bounces' times, in order, as long as they are remembered.
+var _charged_at: Array[PackedFloat64Array] = []
 
 
 func _init(p_court: PongCourt, p_seats: int) -> void:
@@ -78,10 +78,8 @@ func _init(p_court: PongCourt, p_seats: int) -> void:
 	var slowest: float = court.settings.min_bounce_speed_m_per_s
 	if court.gravity > 0.0 and slowest > 0.0:
 		rate_per_s = court.gravity / (2.0 * slowest)
-	_tokens.resize(seats)
-	_tokens.fill(BURST)
-	_tokens_at.resize(seats)
-	_tokens_at.fill(-INF)
+	for seat: int in seats:
+		_charged_at.append(PackedFloat64Array())
 
 
 ## The ball at [param t]: [param position], [param velocity] (each frame); [param master]:
@@ -158,12 +156,15 @@ func judge(
 		if bounce[2]:
 			charged_match = true
 			continue
-		if _take_token(victim, t) < 1.0:
+		var tokens: float = _take_token(victim, t)
+		if tokens < 1.0:
 			bounce[2] = true  # Claimed, and refused: no later claim takes it.
-			return [
-				Verdict.REFUSE,
+			var why: String = (
 				"seat %d would lose more than %.1f floor points a second" % [victim, rate_per_s]
-			]
+			)
+			var story: String = _story(claimed_at, earliest, latest)
+			why += " (bounce at %+.2f s, %.2f tokens); %s" % [t - claimed_at, tokens, story]
+			return [Verdict.REFUSE, why]
 		bounce[2] = true
 		return [Verdict.ACCEPT, ""]
 	var waited: float = now - claimed_at
@@ -234,13 +235,23 @@ func _forget_before(t: float) -> void:
 		_bounces.pop_front()
 
 
-# Refills [param victim]'s tokens to the bounce's time [param at] and takes one if there is
-# one; returns the tokens there were. By the bounces' own times, not the claims': claims that
-# a hiccup held back arrive together, their bounces did not happen together (such honest
-# claims were refused after a hiccup).
+# Takes a token from [param victim]'s bucket for a bounce at [param at] when the bucket, filled
+# by the bounces' own times in their order, holds one at every charged bounce with it; returns
+# the fewest tokens it held at one. By the bounces' times, not the claims': a hiccup holds
+# claims back and they arrive together, and a claim may come before an earlier bounce's (both
+# were refused so).
 func _take_token(victim: int, at: float) -> float:
-	var since: float = maxf(at - _tokens_at[victim], 0.0)
-	var tokens: float = minf(BURST, _tokens[victim] + since * rate_per_s)
-	_tokens_at[victim] = maxf(_tokens_at[victim], at)
-	_tokens[victim] = tokens - 1.0 if tokens >= 1.0 else tokens
-	return tokens
+	var times: PackedFloat64Array = _charged_at[victim].duplicate()
+	times.append(at)
+	times.sort()
+	var tokens: float = BURST
+	var fewest: float = INF
+	for i: int in times.size():
+		if i > 0:
+			tokens = minf(BURST, tokens + (times[i] - times[i - 1]) * rate_per_s)
+		fewest = minf(fewest, tokens)
+		tokens -= 1.0
+	if fewest >= 1.0:
+		var keep_from: int = times.bsearch(times[-1] - 2.0 * LOOKBACK_S)
+		_charged_at[victim] = times.slice(keep_from)
+	return fewest
