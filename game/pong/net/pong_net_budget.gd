@@ -17,6 +17,10 @@ enum Verdict {
 	DISCONNECT,
 }
 
+## How much of a refusal's reason a log line keeps, characters: a floor claim's holds the
+## bounces the server saw, which a rare honest refusal is diagnosed from.
+const REASON_LOG_CHARS: int = 600
+
 ## Bad messages a peer may send; the one that reaches it disconnects the peer.
 var limit: int = PongNetProtocol.MISBEHAVIOUR_BUDGET
 ## Seconds after which one counted bad message no longer weighs toward the limit.
@@ -63,12 +67,12 @@ func log_line(verdict: Verdict, peer: int, what: String, reason: String) -> Stri
 					"PongNet: peer %d sent a bad %s (%s); its next bad messages are counted, "
 					+ "not logged, and %d disconnect it"
 				)
-				% [peer, what, reason.left(200), limit]
+				% [peer, what, reason.left(REASON_LOG_CHARS), limit]
 			)
 		Verdict.DISCONNECT:
 			return (
 				"PongNet: disconnecting peer %d: %d bad messages (the last: %s, %s)"
-				% [peer, limit, what, reason.left(200)]
+				% [peer, limit, what, reason.left(REASON_LOG_CHARS)]
 			)
 	return ""
 
