@@ -114,6 +114,11 @@ func start() -> bool:
 	_retarget()
 	_servo.enter(stepped)
 	PongServo.shared().set_ball(Vector3(0.0, court.ball_radius, 0.0), Vector3.ZERO)
+	# No state of this match yet, but the servo's clock runs on from match to match: what
+	# reads the state before the first update (a network play, earlier in the frame) reads
+	# its time, not 0.
+	snapshot = PongState.new()
+	snapshot.time_s = PongServo.shared().get_state().time_s
 	_send_input()
 	_wall_start_us = Time.get_ticks_usec()
 	_started = true

@@ -183,3 +183,22 @@ func _ball_in(territory: int) -> bool:
 # The device player's running effect of [param kind] in the servo, or null.
 func _servo_effect(kind: String) -> PongEffectState:
 	return PongServo.effect_in(PongServo.shared().get_state(), kind)
+
+
+func test_a_match_started_while_the_servo_runs_holds_its_state_before_the_first_update() -> void:
+	# The servo's clock runs on from match to match in a window: a guest who rejoined a
+	# network match streamed its first frame's pose stamped 0 s, the host aged it as the
+	# fastest path, refused every later stamp (73 s) as one its clock could not have made,
+	# and disconnected the player.
+	_pong = PongTestScreen.stepped()
+	_pong.stepped = false
+	add_child(_pong)
+	await get_tree().create_timer(1.0).timeout
+	await _free_pong()
+	var later: PongScreen = PongTestScreen.stepped()
+	later.stepped = false
+	_pong = later
+	add_child(later)
+	var servo_s: float = PongServo.shared().get_state().time_s
+	assert_gt(servo_s, 0.5, "the servo's clock ran on in real time")
+	assert_almost_eq(later.match_node.snapshot.time_s, servo_s, 0.1, "the new match's state")
