@@ -7,8 +7,10 @@
 // pad through HIDAPI and writes to it, never sets a trigger bit, and the triggers hold our
 // effect through SDL's open, a vibration the game asks Godot for, SDL's exit, and an SDL that
 // had the pad before our backend opened it; with SDL_JOYSTICK_HIDAPI_PS5=0 no report of SDL's
-// reaches the pad. The lightbar, player LEDs and motors, which both write, are reported in
-// numbers (docs/linux-kernel.md, "Godot's SDL beside ours").
+// reaches the pad. The motors are left to SDL while our backend has no rumble of its own: no
+// report of ours sets their bits, and the game's 1 s vibration is held by the pad for its
+// whole second. The lightbar and player LEDs, which both write, are reported in numbers
+// (docs/linux-kernel.md, "Godot's SDL beside ours").
 
 #include "dev_tools/uhid/dualsense_uhid.h"
 #include "devices/dualsense/dualsense_backend.h"
@@ -19,6 +21,7 @@
 #include "sdl_godot.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -47,6 +50,8 @@ struct Tally {
 	int sdl_lights = 0; // ... with the lightbar or player-LED bits.
 	int ours_motors_zero_after_sdl = 0; // Ours stating motors 0 after SDL's first rumble.
 	int ours_cutting_sdl = 0; // ... of those, before SDL's own next report (its rumble's end).
+	int ours_motor_bits = 0; // Ours with a motor valid bit (flag0 bits 0-1, flag2 bit 2).
+	int ours_motor_bits_in_sdl_rumble = 0; // ... between SDL's rumble and SDL's next report.
 	int ours_trigger = 0; // Ours with the trigger bits.
 	TriggerEffect our_block; // The R2 block of the newest of those.
 	uint8_t sdl_motor_left = 0;
@@ -69,6 +74,10 @@ Tally tally(const uhid::DualSenseUhidPad &p_pad) {
 		const bool motors = block[common::MOTOR_LEFT] != 0 || block[common::MOTOR_RIGHT] != 0;
 		if (report.size() != SDL_USB_REPORT_SIZE) {
 			++result.ours;
+			const bool motor_bits =
+					(flag0 & FLAG0_RUMBLE) != 0 || (block[common::VALID_FLAG2] & dualsense::FLAG2_COMPATIBLE_VIBRATION2) != 0;
+			result.ours_motor_bits += motor_bits;
+			result.ours_motor_bits_in_sdl_rumble += motor_bits && sdl_rumbled && !sdl_spoke_since;
 			const bool zeroes = sdl_rumbled && (flag0 & FLAG0_RUMBLE) != 0 && !motors;
 			result.ours_motors_zero_after_sdl += zeroes;
 			result.ours_cutting_sdl += zeroes && !sdl_spoke_since;
@@ -108,13 +117,13 @@ std::string describe(const Tally &p_tally) {
 	for (const std::string &flag : p_tally.sdl_flags) {
 		flags += (flags.empty() ? "" : " ") + flag;
 	}
-	char text[320];
+	char text[400];
 	std::snprintf(text, sizeof(text),
-			"%d of ours, %d of SDL's (valid flags 0/1/2: %s; with trigger bits %d, lights %d, rumble %d, motors up to %u/%u); "
-			"ours stating motors 0 after SDL's rumble %d, %d of them before SDL's own next report",
-			p_tally.ours, p_tally.sdl, flags.empty() ? "-" : flags.c_str(), p_tally.sdl_trigger, p_tally.sdl_lights,
-			p_tally.sdl_rumble, p_tally.sdl_motor_left, p_tally.sdl_motor_right, p_tally.ours_motors_zero_after_sdl,
-			p_tally.ours_cutting_sdl);
+			"%d of ours (%d with motor bits), %d of SDL's (valid flags 0/1/2: %s; with trigger bits %d, lights %d, rumble %d, "
+			"motors up to %u/%u); ours stating motors 0 after SDL's rumble %d, %d of them before SDL's own next report",
+			p_tally.ours, p_tally.ours_motor_bits, p_tally.sdl, flags.empty() ? "-" : flags.c_str(), p_tally.sdl_trigger,
+			p_tally.sdl_lights, p_tally.sdl_rumble, p_tally.sdl_motor_left, p_tally.sdl_motor_right,
+			p_tally.ours_motors_zero_after_sdl, p_tally.ours_cutting_sdl);
 	return text;
 }
 
@@ -166,6 +175,50 @@ bool start_godot_sdl(Report &r_report, GodotSdlProcess &r_sdl, HapticsSystem *p_
 					std::to_string(joypad.player) + ", rumble " + std::to_string(joypad.rumble) + ") " + started.message());
 }
 
+// Stands on the floor for p_seconds while stamping each report reaching the pad with when it
+// arrived (sampled every 5 ms): r_stamps[i] for p_pad.outputs()[i].
+void stand_stamping(uhid::DualSenseUhidPad &p_pad, HapticsSystem &r_system, double p_seconds, std::vector<double> &r_stamps) {
+	r_stamps.assign(p_pad.outputs().size(), 0.0);
+	std::atomic<bool> sampling{ true };
+	const auto start = std::chrono::steady_clock::now();
+	std::thread sampler([&] {
+		while (sampling.load(std::memory_order_acquire)) {
+			const size_t count = p_pad.outputs().size();
+			const double at = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+			r_stamps.resize(std::max(r_stamps.size(), count), at);
+			std::this_thread::sleep_for(std::chrono::milliseconds(5));
+		}
+	});
+	stand_on_floor(r_system, p_seconds);
+	sampling.store(false, std::memory_order_release);
+	sampler.join();
+}
+
+// How long SDL's first rumble held on the wire: from its report to the next that ends it (one
+// of SDL's without it, or one of ours with a motor bit); -1 when there was none. r_ended_by_ours: that report was ours.
+double sdl_rumble_on_wire_s(const std::vector<std::vector<uint8_t>> &p_outputs, const std::vector<double> &p_stamps,
+		bool &r_ended_by_ours) {
+	double began = -1.0;
+	for (size_t i = 0; i < p_outputs.size() && i < p_stamps.size(); ++i) {
+		const std::vector<uint8_t> &report = p_outputs[i];
+		if (report.size() < SDL_USB_REPORT_SIZE || report[0] != dualsense::USB_OUTPUT_REPORT_ID) {
+			continue;
+		}
+		const uint8_t *block = report.data() + dualsense::USB_COMMON_OFFSET;
+		const bool bits = (block[common::VALID_FLAG0] & FLAG0_RUMBLE) != 0 ||
+				(block[common::VALID_FLAG2] & dualsense::FLAG2_COMPATIBLE_VIBRATION2) != 0;
+		const bool sdl = report.size() == SDL_USB_REPORT_SIZE;
+		const bool rumbles = bits && block[common::MOTOR_LEFT] != 0;
+		if (began < 0.0) {
+			began = sdl && rumbles ? p_stamps[i] : began;
+		} else if (sdl ? !rumbles : bits) {
+			r_ended_by_ours = !sdl;
+			return p_stamps[i] - began;
+		}
+	}
+	return -1.0;
+}
+
 bool open_ours(Report &r_report, HapticsSystem &r_system, const std::string &p_when) {
 	DeviceInfo info;
 	double max_force_n = 0.0;
@@ -207,12 +260,23 @@ void ours_then_sdl(Report &r_report, uhid::DualSenseUhidPad &p_pad, HapticsSyste
 
 	p_pad.clear_outputs();
 	sdl.vibrate(dualsense::SONY_VENDOR_ID, dualsense::DUALSENSE_PRODUCT_ID, 0.5, 1.0, 1.0);
-	stand_on_floor(r_system, 2.5);
+	std::vector<double> stamps;
+	stand_stamping(p_pad, r_system, 2.5, stamps);
 	const Tally vibrated = tally(p_pad);
+	bool ended_by_ours = false;
+	const double on_wire_s = sdl_rumble_on_wire_s(p_pad.outputs(), stamps, ended_by_ours);
 	r_report.info("Input.start_joy_vibration(weak 0.5, strong 1.0, 1 s) through Godot's SDL, 2.5 s: " + describe(vibrated));
 	r_report.wire("vibration: SDL's first rumble report", vibrated.first_sdl_rumble);
 	r_report.check(vibrated.sdl_rumble >= 1 && vibrated.sdl_motor_left > 0,
 			"vibration: SDL's rumble reached the motors (strong motor byte " + std::to_string(vibrated.sdl_motor_left) + ")");
+	r_report.check(vibrated.ours >= 2 && vibrated.ours_motor_bits == 0 && vibrated.ours_motor_bits_in_sdl_rumble == 0 &&
+					vibrated.ours_cutting_sdl == 0,
+			"vibration: none of our " + std::to_string(vibrated.ours) +
+					" reports set a motor bit (our backend has no rumble of its own), so none cut SDL's short");
+	char length[96];
+	std::snprintf(length, sizeof(length), "%.3f s, ended by %s", on_wire_s, ended_by_ours ? "ours" : "SDL's own report");
+	r_report.check(on_wire_s >= 0.9 && on_wire_s <= 1.5 && !ended_by_ours,
+			std::string("vibration: SDL's rumble held on the wire for the second the game asked (") + length + ")");
 	triggers_ours(r_report, p_pad, vibrated, r_alone, "vibration");
 
 	p_pad.clear_outputs();

@@ -114,7 +114,7 @@ TEST_CASE("dualsense mapping: the planner sends everything first, then only chan
 	OutputPlanner planner;
 	OutputState state;
 	const ForceCommand idle{};
-	CHECK(planner.plan(idle, 0.0, 0.004, state) == FIELDS_STATE);
+	CHECK(planner.plan(idle, 0.0, 0.004, state) == FIELDS_HELD); // No rumble of ours: motors left alone.
 	CHECK(state.lightbar == LIGHTBAR_IDLE);
 	CHECK(state.player_leds == PLAYER_LEDS_SESSION);
 	CHECK(state.right_trigger == trigger_off());
@@ -149,8 +149,14 @@ TEST_CASE("dualsense mapping: the planner sends everything first, then only chan
 		resent = planner.plan(press, 0.0, 0.004, state);
 		quiet += resent == 0 ? 1 : 0;
 	}
-	CHECK(resent == FIELDS_STATE);
+	CHECK(resent == FIELDS_STATE); // The first keep-alive after a rumble states its stop again.
+	CHECK(state.motor_right == 0);
 	CHECK(quiet > 50); // 0.5 s keep-alive at 4 ms: about 125 - 40 quiet cycles.
+	resent = 0;
+	for (int i = 0; i < 200 && resent == 0; ++i) {
+		resent = planner.plan(press, 0.0, 0.004, state);
+	}
+	CHECK(resent == FIELDS_HELD); // The next leaves the motors alone.
 
 	// The impact share is not continuous force: a pure impact leaves the triggers off.
 	planner.reset();

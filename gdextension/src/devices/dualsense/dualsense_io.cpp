@@ -53,7 +53,8 @@ TransportIo DualSenseIo::send(const OutputState &p_state, uint32_t p_fields) {
 }
 
 TransportIo DualSenseIo::send_off() {
-	return send(OutputPlanner::off_state(), FIELDS_STATE);
+	// Stops our rumble if the pad holds one; a rumble of Godot's SDL is not ours to end.
+	return send(OutputPlanner::off_state(), planner_.rumble_on_pad() ? FIELDS_STATE : FIELDS_HELD);
 }
 
 DeviceIo DualSenseIo::fail(DeviceExchange &r_exchange, TransportIo p_io, const char *p_what) {

@@ -101,6 +101,7 @@ void OutputPlanner::reset() {
 	sent_ = OutputState{};
 	have_sent_ = false;
 	since_sent_s_ = 0.0;
+	stops_left_ = 0;
 }
 
 OutputState OutputPlanner::off_state() {
@@ -132,12 +133,10 @@ uint32_t OutputPlanner::plan(const ForceCommand &p_command, double p_impact_peak
 
 	since_sent_s_ += p_dt_s;
 	uint32_t fields = 0;
+	const bool motors_changed = next.motor_left != sent_.motor_left || next.motor_right != sent_.motor_right;
 	if (!have_sent_ || since_sent_s_ >= config_.keep_alive_s) {
-		fields = FIELDS_STATE;
+		fields = FIELDS_HELD;
 	} else {
-		if (next.motor_left != sent_.motor_left || next.motor_right != sent_.motor_right) {
-			fields |= FIELD_RUMBLE;
-		}
 		if (!(next.right_trigger == sent_.right_trigger)) {
 			fields |= FIELD_RIGHT_TRIGGER;
 		}
@@ -151,8 +150,20 @@ uint32_t OutputPlanner::plan(const ForceCommand &p_command, double p_impact_peak
 			fields |= FIELD_PLAYER_LEDS;
 		}
 	}
-	if (fields != 0) {
+	// Our rumble rides on every report while it is on, and the one that ends it states 0, as
+	// does the keep-alive after it (a lost Bluetooth report would leave the pad rumbling);
+	// otherwise the motor bits stay clear so a rumble of Godot's SDL is left alone.
+	const bool rumbling = next.motor_left != 0 || next.motor_right != 0;
+	if (motors_changed) {
+		stops_left_ = rumbling ? 0 : STOP_REPORTS;
+	}
+	if (motors_changed || (fields != 0 && (rumbling || stops_left_ > 0))) {
 		fields |= FIELD_RUMBLE;
+		if (!rumbling && stops_left_ > 0) {
+			--stops_left_;
+		}
+	}
+	if (fields != 0) {
 		sent_ = next;
 		have_sent_ = true;
 		since_sent_s_ = 0.0;

@@ -37,10 +37,14 @@
 //
 // Reports: the pad holds what it was told, so a report goes out only when a motor level, a
 // trigger block or the lightbar changed, or every keep_alive_s (re-asserting everything in
-// case a Bluetooth report was lost). Rumble bits ride on every report (each one states the
-// motor levels, zero included); trigger and light fields only when they changed or at the
-// keep-alive, so a rumble decay does not re-apply the trigger effect 250 times a second
+// case a Bluetooth report was lost). Trigger and light fields go only when they changed or at
+// the keep-alive, so a rumble decay does not re-apply the trigger effect 250 times a second
 // (whether re-sending an unchanged effect restarts it is unknown: a real pad would tell).
+// The motors are shared: Godot's SDL (HIDAPI PS5 driver) writes its own reports to the same
+// pad for Input.start_joy_vibration (docs/linux-kernel.md, "Godot's SDL beside ours"). So
+// the rumble bits ride on our reports only while our own rumble is non-zero, and on the
+// report that ends it and the next keep-alive (stating 0, to stop what we started);
+// otherwise they stay clear and the pad keeps whatever rumble SDL set.
 //
 // INPUT: the left stick is the input vector. x = (raw - 128) / 127, y = -(raw - 128) / 127
 // (the pad's y grows downward, ours up), clamped to [-1, 1], times the nominal radius, so
@@ -124,6 +128,9 @@ public:
 	// Motors off, both triggers off, lightbar idle, player LEDs off: what close, io_stop and
 	// errors leave the pad with.
 	static OutputState off_state();
+	// Whether the pad holds a non-zero rumble of ours (the last motor levels we sent): the
+	// closing report then stops it; otherwise it leaves the motors alone.
+	bool rumble_on_pad() const { return sent_.motor_left != 0 || sent_.motor_right != 0; }
 
 	const RumbleMapper &rumble() const { return rumble_; }
 	const TriggerMapper &trigger() const { return trigger_; }
@@ -134,6 +141,9 @@ private:
 	TriggerMapper trigger_;
 	OutputState sent_;
 	bool have_sent_ = false;
+	// Reports that state our rumble's end: the one that stops it and the next keep-alive.
+	static constexpr int STOP_REPORTS = 2;
+	int stops_left_ = 0;
 	double since_sent_s_ = 0.0;
 };
 

@@ -16,9 +16,10 @@
 // seed 0xA2) covers bytes 0..73 and sits at 74..77.
 //
 // The pad applies only the fields whose valid-flag bit is set; the others keep their state.
-// So a report here carries a set of OutputFields: rumble always (the motor bytes are applied
-// by every report that sets the rumble bits, zero included), the rest only when changed or
-// at the keep-alive (dualsense_mapping.h).
+// So a report here carries a set of OutputFields: rumble only while we render a rumble of our
+// own and once after it ends (the motor bytes are applied by every report that sets the
+// rumble bits, zero included, so a report stating zero would stop a rumble Godot's SDL set),
+// the rest only when changed or at the keep-alive (dualsense_mapping.h).
 
 #include "devices/dualsense/dualsense_triggers.h"
 
@@ -121,7 +122,9 @@ enum OutputField : uint32_t {
 	// Takes the lightbar from the firmware (on Bluetooth it runs its own animation until
 	// told; PS-K dualsense_reset_leds): flag2 bit 1 with LIGHT_OUT. Sent once at open.
 	FIELD_LIGHTBAR_SETUP = 1u << 5,
-	FIELDS_STATE = FIELD_RUMBLE | FIELD_RIGHT_TRIGGER | FIELD_LEFT_TRIGGER | FIELD_LIGHTBAR | FIELD_PLAYER_LEDS,
+	// Everything but the motors: what a keep-alive re-asserts while we have no rumble.
+	FIELDS_HELD = FIELD_RIGHT_TRIGGER | FIELD_LEFT_TRIGGER | FIELD_LIGHTBAR | FIELD_PLAYER_LEDS,
+	FIELDS_STATE = FIELD_RUMBLE | FIELDS_HELD,
 };
 
 // Fills the 47-byte common block (zeroed first) from p_state for p_fields.
