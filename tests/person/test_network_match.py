@@ -122,9 +122,9 @@ def paddle_travel(person: Person, colour: str, scratch) -> tuple[float, float]:
 
 def bad_lines(session) -> list[str]:
     """What a game's log says it refused of the other player's stream, a player disconnected,
-    or a script error: none between two honest players. (An honest floor claim is still
-    refused now and then, "no floor bounce ... in its epoch here": issue 36's server-side
-    ball check, open; printed, not failed.)"""
+    or a script error: none between two honest players. (A refused floor claim is printed,
+    not failed: one in each match until a window's frame order was fixed, none in the runs
+    since, not yet enough to hold every run to it.)"""
     return [line for line in session.game.output().splitlines()
             if "sent a bad ball state" in line or "sent a bad pose" in line
             or "disconnecting peer" in line or line.startswith("SCRIPT ERROR")]
