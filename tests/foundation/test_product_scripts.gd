@@ -1,11 +1,18 @@
 extends TestSuite
 ## Every script a player or a developer gets (the addon and the games), and the drivers that
-## run them in tests, compiles with the project's GDScript warnings raised to errors, the
+## run them in tests (the net suite's peers too, which only its processes load), compiles
+## with the project's GDScript warnings raised to errors, the
 ## scene scripts too, which other suites may load before warnings are raised. project.godot
 ## makes an unsafe property or method access an error already, so a misspelt member of a
 ## typed value does not parse.
 
-const FOLDERS: Array[String] = ["res://addons/haptics", "res://game", "res://tests/drivers"]
+const FOLDERS: Array[String] = [
+	"res://addons/haptics",
+	"res://game",
+	"res://tests/drivers",
+	"res://tests/net/driver",
+	"res://tests/net/rogue",
+]
 
 
 func test_every_product_script_compiles_without_warnings() -> void:

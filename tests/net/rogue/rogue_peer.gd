@@ -81,8 +81,9 @@ func _process(delta: float) -> void:
 		_forge_ball(cli.net.play, delta)
 	elif _mode == "mute" and cli.net.play.authority.is_master():
 		# A private member of the play, on purpose: the griefer's own build would neither
-		# stream nor ask for the hand-off (the play does neither before it is settled).
-		cli.net.play._settle_until = INF
+		# stream nor ask for the hand-off (the play does neither until a transfer has
+		# settled, and one dated at no time never does).
+		cli.net.play._transferred_at = INF
 		if cli.net.play.authority.epoch != _muted_epoch:
 			_muted_epoch = cli.net.play.authority.epoch
 			print("%s (epoch %d)" % [MUTE_MARK, _muted_epoch])
