@@ -9,6 +9,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cstring>
 
 using namespace haptics;
@@ -131,10 +132,13 @@ TEST_CASE("sdl joysticks: an XInput pad renders impacts through SDL_RumbleJoysti
 	hit(device, 1.0, 0.6); // Held: a third of full scale, below the large motor's knee.
 	const std::vector<ScriptedSdlCall> rumbles = calls_of(rig.sdl.calls(), Kind::JOYSTICK_RUMBLE);
 	REQUIRE(!rumbles.empty());
-	CHECK(rumbles.back().low == 0);
-	CHECK(rumbles.back().high == 2 * 10922); // round(1/3 * 0x7FFF), doubled.
-	// Sent again at each renewal while it lasts, and SDL's joysticks updated with it.
-	CHECK(rumbles.size() >= 2);
+	// The held level, round(1/3 * 0x7FFF) doubled, sent again at each renewal (0.25 s) while
+	// it lasts. Not the last call: a cycle that finds no new impact decays the level, as one
+	// between the hold's end and this look did on a loaded machine (Wine, 16732).
+	const auto held = std::count_if(rumbles.begin(), rumbles.end(),
+			[](const ScriptedSdlCall &p_call) { return p_call.low == 0 && p_call.high == 2 * 10922; });
+	CHECK(held >= 2);
+	// SDL's joysticks updated with it.
 	CHECK(calls_of(rig.sdl.calls(), Kind::JOYSTICK_UPDATE).size() >= 2);
 	uint16_t low = 1;
 	uint16_t high = 1;
