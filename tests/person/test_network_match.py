@@ -22,7 +22,6 @@ import re
 import socket
 import sys
 import time
-from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 import numpy as np
@@ -185,21 +184,14 @@ def play_the_match(host, guest, port: str, relay: Relay) -> None:
 
     def lap(name: str) -> None:
         timings[name] = time.monotonic() - started - sum(timings.values())
-    def fill_lobby(s, name: str, target: str) -> None:
+    for s, name in zip((host, guest), NAMES):
         p = s.person
         p.click_text("Haptic Battle Pong", patience=90.0)
         p.click_text("Network game")
         p.type_into(p.wait_text("Your name"), name)
-        p.type_into(p.wait_text("Port"), target)
+        p.type_into(p.wait_text("Port"), port if s is host else str(relay.port))
         p.press("Tab")
         p.screenshot("lobby")
-
-    # Two people at their own screens fill their lobbies at the same time.
-    with ThreadPoolExecutor(2) as people:
-        filled = [people.submit(fill_lobby, host, NAMES[0], port),
-                  people.submit(fill_lobby, guest, NAMES[1], str(relay.port))]
-        for done in filled:
-            done.result()
     lap("lobbies filled")
     host.person.click_text("Host")
     host.person.wait_text("Seat 1: Ada")
