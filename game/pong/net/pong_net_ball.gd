@@ -36,7 +36,7 @@ var _touched_at: float = -INF
 ## taken it yet, else the servo's state.
 func local() -> Array[Vector3]:
 	var state: PongState = PongServo.shared().get_state()
-	if not _commanded.is_empty() and state.time_s < _commanded_time + 1.5 * PongServo.TICK_S:
+	if not _commanded.is_empty() and state.time_s < _commanded_time + PongServo.COMMAND_LANDS_S:
 		return _commanded
 	_commanded = []
 	return [state.ball_position, state.ball_velocity, state.ball_spin]

@@ -374,7 +374,7 @@ func _on_transfer(sender: int, transfer: PongNetTransferMessage) -> void:
 # the epoch before's: not a new master's to claim.
 func _on_event(event: PongEvent) -> void:
 	if floor_hurts != null:
-		floor_hurts.on_event(event, event.time_s < _transferred_at + 1.5 * PongServo.TICK_S)
+		floor_hurts.on_event(event, event.time_s < _transferred_at + PongServo.COMMAND_LANDS_S)
 
 
 func _on_match_over(winner: int) -> void:

@@ -18,6 +18,9 @@ const NAME := &"pong"
 const RUMBLE_FREQUENCY_HZ: float = 180.0
 ## Servo period of [method step_ticks], seconds (the 1 kHz tick).
 const TICK_S: float = 0.001
+## How long after it is sent a command has surely reached the servo: at its next tick, or
+## the one after when it came during a tick, s. A state or event older than that predates it.
+const COMMAND_LANDS_S: float = 1.5 * TICK_S
 ## [method apply_effect]'s strength meaning "the servo's own for the kind" (slow: no cap on
 ## its viscous force; the others: their [code]pong.*_force_n[/code]).
 const DEFAULT_STRENGTH: float = -1.0
