@@ -3,7 +3,8 @@
 The sub is the one saturated orange body on the screen (its hull keeps that colour under the
 water's tint; sand and crates are paler). Where the sub is in the level a person judges from
 the scenery going by: here, how far the picture scrolled between two looks (phase
-correlation of the two screenshots, the HUD and the sub left out), added up from the start,
+correlation of the two screenshots, the HUD and the sub left out, its few best guesses judged
+by how well the two pictures then agree), added up from the start,
 plus the sub's own move on the screen. The way to the goal is the route a person who has
 played the level learnt (given in the level's pixels from its start)."""
 
@@ -53,27 +54,59 @@ def goal_at(pixels: np.ndarray) -> tuple[float, float] | None:
     return (float(np.median(xs)), float(np.median(ys)))
 
 
-def _scenery(pixels: np.ndarray, sub: tuple[float, float] | None) -> np.ndarray:
-    gray = pixels.mean(axis=2)[HUD_BOTTOM:, :]
-    if sub is not None:
-        x, y = int(sub[0]), int(sub[1]) - HUD_BOTTOM
-        gray[max(0, y - 40):max(0, y + 40), max(0, x - 50):x + 50] = gray.mean()
-    small = gray[::SCALE, ::SCALE]
-    small = small - small.mean()
-    window = np.outer(np.hanning(small.shape[0]), np.hanning(small.shape[1]))
-    return small * window
+# Phase correlation proposes this many scrolls; the one under which the two looks agree best
+# wins. The rock is one texture tiled about every 246 screen pixels, so a long scroll (the
+# sub leaping out of the water: 210 px between two looks) can correlate best one tile off,
+# where only the texture agrees, not the outlines, the water line or the light.
+CANDIDATES = 5
 
 
-def scroll_between(before: np.ndarray, after: np.ndarray) -> tuple[float, float]:
-    """How far the scenery moved on the screen from `before` to `after` (screen pixels)."""
-    cross = np.fft.fft2(after) * np.conj(np.fft.fft2(before))
+class Scenery:
+    """One look's scenery at half size: the HUD's bar cut off and the sub left out."""
+
+    def __init__(self, pixels: np.ndarray, sub: tuple[float, float] | None) -> None:
+        gray = pixels.mean(axis=2)[HUD_BOTTOM:, :]
+        seen = np.ones(gray.shape, dtype=bool)
+        if sub is not None:
+            x, y = int(sub[0]), int(sub[1]) - HUD_BOTTOM
+            seen[max(0, y - 40):max(0, y + 40), max(0, x - 50):x + 50] = False
+        self.gray = gray[::SCALE, ::SCALE]
+        self.seen = seen[::SCALE, ::SCALE]
+        # What phase correlation compares: the sub's box filled with the mean, tapered edges.
+        small = np.where(self.seen, self.gray, self.gray[self.seen].mean())
+        small = small - small.mean()
+        self.spectrum = np.fft.fft2(small * np.outer(np.hanning(small.shape[0]),
+                                                     np.hanning(small.shape[1])))
+
+    def agreement(self, after: "Scenery", dx: int, dy: int) -> float:
+        """How alike the two looks are where they overlap when `after` is this look moved by
+        (dx, dy) half-size pixels: the correlation coefficient of the pixels both saw."""
+        h, w = self.gray.shape
+        y0, y1, x0, x1 = max(0, -dy), min(h, h - dy), max(0, -dx), min(w, w - dx)
+        if y1 - y0 < 20 or x1 - x0 < 20:
+            return -1.0
+        both = self.seen[y0:y1, x0:x1] & after.seen[y0 + dy:y1 + dy, x0 + dx:x1 + dx]
+        a = self.gray[y0:y1, x0:x1][both]
+        b = after.gray[y0 + dy:y1 + dy, x0 + dx:x1 + dx][both]
+        a, b = a - a.mean(), b - b.mean()
+        return float((a * b).sum() / math.sqrt((a * a).sum() * (b * b).sum() + 1e-9))
+
+
+def scroll_between(before: Scenery, after: Scenery) -> tuple[float, float, float]:
+    """How far the scenery moved on the screen from `before` to `after` (screen pixels), and
+    how alike the two looks are under that move (1: the same picture moved)."""
+    cross = after.spectrum * np.conj(before.spectrum)
     cross /= np.abs(cross) + 1e-9
     corr = np.fft.ifft2(cross).real
-    peak_y, peak_x = np.unravel_index(np.argmax(corr), corr.shape)
     h, w = corr.shape
-    dy = peak_y - h if peak_y > h // 2 else peak_y
-    dx = peak_x - w if peak_x > w // 2 else peak_x
-    return (float(dx * SCALE), float(dy * SCALE))
+    peaks = np.flatnonzero(corr == ndimage.maximum_filter(corr, size=5, mode="wrap"))
+    best = (-2.0, 0, 0)
+    for flat in peaks[np.argsort(corr.flat[peaks])[::-1][:CANDIDATES]]:
+        peak_y, peak_x = divmod(int(flat), w)
+        dy = peak_y - h if peak_y > h // 2 else peak_y
+        dx = peak_x - w if peak_x > w // 2 else peak_x
+        best = max(best, (before.agreement(after, dx, dy), dx, dy))
+    return (float(best[1] * SCALE), float(best[2] * SCALE), best[0])
 
 
 class Whereabouts:
@@ -82,23 +115,26 @@ class Whereabouts:
     def __init__(self, start: tuple[float, float]) -> None:
         self.start = start
         self.camera = None  # the level point at the screen's top-left corner
-        self._scenery: np.ndarray | None = None
+        self._scenery: Scenery | None = None
         self.position: tuple[float, float] | None = None
         # What the last look saw on the screen: the sub and the goal (None: not seen).
         self.sub: tuple[float, float] | None = None
         self.goal: tuple[float, float] | None = None
+        # The last look's scroll of the scenery and how sure it was (for the trail).
+        self.scroll: tuple[float, float, float] = (0.0, 0.0, 1.0)
 
     def look(self, shot) -> tuple[float, float] | None:
         pixels = _pixels(shot)
         sub = sub_at(pixels)
         self.sub, self.goal = sub, goal_at(pixels)
-        scenery = _scenery(pixels, sub)
+        scenery = Scenery(pixels, sub)
         if self._scenery is None:
             if sub is None:
                 return None
             self.camera = (self.start[0] - sub[0], self.start[1] - sub[1])
         else:
-            dx, dy = scroll_between(self._scenery, scenery)
+            self.scroll = scroll_between(self._scenery, scenery)
+            dx, dy = self.scroll[0], self.scroll[1]
             # The scenery moving left on the screen is the camera moving right in the level.
             self.camera = (self.camera[0] - dx, self.camera[1] - dy)
         self._scenery = scenery

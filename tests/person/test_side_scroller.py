@@ -7,8 +7,11 @@ source tree's level is played by the autopilot suites."""
 from __future__ import annotations
 
 import math
+import os
 import re
+import shutil
 import time
+from pathlib import Path
 
 from person import Person
 from sub_eyes import Approach, Route, Whereabouts, chord_toward
@@ -31,6 +34,9 @@ STILL_LOOKS = 6
 STUCK_S = 5.0
 PROGRESS_PX = 60.0
 LIFTS = [1, -1, 2, -2, 3, -3]
+# A folder to keep every look in, numbered as the trail's rows (PERSON_KEEP_LOOKS; about
+# 1 MB a look): what the person saw when the way they went needs explaining.
+KEEP_LOOKS = os.environ.get("PERSON_KEEP_LOOKS", "")
 
 
 def items_collected(person: Person) -> str:
@@ -61,11 +67,13 @@ def steer_to_the_goal(person: Person, scratch) -> tuple[bool, int]:
     last = None
     shot_at = 0.0
     trail = open(person.shots / "trail.csv", "w", encoding="utf-8")
-    trail.write("t_s,x,y,along,sub_x,sub_y,goal_x,goal_y,keys\n")
+    trail.write("t_s,x,y,along,sub_x,sub_y,goal_x,goal_y,scroll_x,scroll_y,agreement,keys\n")
     try:
         while time.monotonic() - started < PLAY_PATIENCE_S:
             look = person.grab(scratch / "level.png")
             looks += 1
+            if KEEP_LOOKS:
+                shutil.copy(look, Path(KEEP_LOOKS) / f"{looks:04d}.png")
             here = where.look(look)
             keys: list[str] = []
             if here is not None:
@@ -92,8 +100,9 @@ def steer_to_the_goal(person: Person, scratch) -> tuple[bool, int]:
                 still = still + 1 if last is not None and math.dist(here, last) < 2.0 else 0
                 last = here
             trail.write(",".join(f"{v:.0f}" if isinstance(v, float) else str(v) for v in (
-                time.monotonic() - started, *(here or ("", "")), route.reached,
-                *(where.sub or ("", "")), *(where.goal or ("", "")), "+".join(keys))) + "\n")
+                f"{time.monotonic() - started:.2f}", *(here or ("", "")), route.reached,
+                *(where.sub or ("", "")), *(where.goal or ("", "")), *where.scroll[:2],
+                f"{where.scroll[2]:.3f}", "+".join(keys))) + "\n")
             if looks % 10 == 0:
                 print(f"person: look {looks}: at {here}, {route.reached:.0f} px along the route")
             if route.reached >= shot_at:
