@@ -147,6 +147,8 @@ func frame(delta: float) -> void:
 			match_node.run_until(func() -> bool: return false, (chunks - 0.5) * CHUNK_S)
 		if not _running:
 			return  # The match ended in those steps (end() let go of the poses and weapons).
+		if chunks == 0:
+			return  # Nothing moved since the last frame: the rest would see the same state.
 	# After the stepping: the target is carried to now, where the servo is.
 	if not authority.is_master() and ball.follow(PongNetBall.clock_s(), _predictor, _gravity()):
 		# Only the newest state played becomes a command to the servo (whose queue holds 64).
