@@ -300,6 +300,33 @@ def transfers(report: dict) -> list[tuple[int, int, int, int]]:
     return [(t["epoch"], t["kind"], t["territory"], t["master"]) for t in report["transfers"]]
 
 
+def transfers_missed(reports: list[dict], network: Network) -> list[str]:
+    """Every peer must have applied the same transfers in the same order. One that quit first
+    may have missed those the others applied in its last moments: each peer ends by its own
+    clock (CI saw three hand-offs within the host's last 0.3 s, after the peer that ended
+    first had 0.5 s to go), and the host takes over the ball of a client that has left. What
+    a peer missed must come after its end less a leg and its jitter, and a margin for a busy
+    machine. Returns what broke that, one line each (empty: nothing)."""
+    lists = [transfers(r) for r in reports]
+    longest = max(lists, key=len)
+    applied_at: dict[int, float] = {}
+    for report in reports:
+        for t in report["transfers"]:
+            applied_at[t["epoch"]] = min(applied_at.get(t["epoch"], t["wall_s"]), t["wall_s"])
+    slack_s = max(network.legs_ms) / 1000.0 + network.jitter_ms / 1000.0 + 0.5
+    problems = []
+    for report, seen in zip(reports, lists):
+        if seen != longest[: len(seen)]:
+            problems.append(f"peer {report['peer']} applied {seen}, another {longest}")
+            continue
+        ended = report["samples"][-1][0]
+        early = [t for t in longest[len(seen):] if applied_at[t[0]] < ended - slack_s]
+        if early:
+            problems.append(f"peer {report['peer']} ended at {ended:.2f} and missed transfers "
+                            f"applied before {ended - slack_s:.2f}: {early}")
+    return problems
+
+
 def master_overlaps(reports: list[dict]) -> list[float]:
     """Every stretch (s) during which two peers both believed they were the master."""
     overlaps = []
