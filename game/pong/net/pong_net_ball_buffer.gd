@@ -79,9 +79,13 @@ var late: int = 0
 var duplicates: int = 0
 ## Gaps given up (a state lost, late, or not waited for after a strike).
 var skipped: int = 0
+## Of the late states, those whose gap was given up for news (a strike), not for the wait.
+var late_after_news: int = 0
 
 var _pending: Dictionary[int, State] = {}
 var _seen: Dictionary[int, bool] = {}
+# The sequence numbers the play passed without them, each with whether news made it pass.
+var _passed_for_news: Dictionary[int, bool] = {}
 var _newest_seq: int = -1
 var _clock: PongNetClock = PongNetClock.new()
 var _excess: PackedFloat32Array = PackedFloat32Array()
@@ -96,6 +100,7 @@ var _fastest_offset: float = INF
 func restart() -> void:
 	_pending.clear()
 	_seen.clear()
+	_passed_for_news.clear()
 	_newest_seq = -1
 	played = null
 	just_played.clear()
@@ -112,6 +117,8 @@ func push(state: State) -> Taken:
 	_measure(state)  # A late state's delay is the jitter the wait is for.
 	if played != null and state.seq <= played.seq:
 		late += 1
+		if _passed_for_news.get(state.seq, false):
+			late_after_news += 1
 		return Taken.LATE
 	received += 1
 	_pending[state.seq] = state
@@ -139,6 +146,9 @@ func advance(now_s: float, agrees: Callable = Callable()) -> bool:
 			break  # The gap before it may still arrive.
 		if not in_order:
 			skipped += 1
+			if played != null:
+				for passed: int in range(played.seq + 1, next_seq):
+					_passed_for_news[passed] = give_up and not due
 		_pending.erase(next_seq)
 		played = next
 		just_played.append(next)
@@ -162,6 +172,7 @@ func to_dict() -> Dictionary:
 		"late": late,
 		"duplicates": duplicates,
 		"gaps_given_up": skipped,
+		"late_after_news": late_after_news,
 		"delay_s": delay_s,
 	}
 
@@ -183,3 +194,6 @@ func _forget_below(seq: int) -> void:
 	for old: int in _seen.keys():
 		if old < seq:
 			_seen.erase(old)
+	for old: int in _passed_for_news.keys():
+		if old < seq:
+			_passed_for_news.erase(old)
