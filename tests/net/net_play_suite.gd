@@ -49,8 +49,11 @@ func after_each() -> void:
 	await _free_pong()
 
 
-## The host's play, begun; null (and a failure) without the Pong renderer.
-func _open_play() -> PongNetPlay:
+## The host's play, begun; null (and a failure) without the Pong renderer. [param me] and
+## [param owners]: another peer's play (a client's, when [param me] is not the host).
+func _open_play(
+	me: int = HOST, owners: PackedInt64Array = PackedInt64Array([HOST, CLIENT])
+) -> PongNetPlay:
 	if not assert_true(PongServo.shared().is_available(), "the extension has the Pong renderer"):
 		return null
 	_pong = PongTestScreen.stepped()
@@ -62,7 +65,7 @@ func _open_play() -> PongNetPlay:
 	(match_node.controllers[0] as PongAi).use_weapons = false
 	_play = PongNetPlay.new()
 	var session: PongNetSession = PongNetSession.new()
-	session.is_server = true
+	session.is_server = me == HOST
 	_play.session = session
 	add_child(_play)
 	_play.add_child(session)
@@ -72,11 +75,11 @@ func _open_play() -> PongNetPlay:
 	session.router = _router
 	_report = NetReport.new()
 	_report.watch(_play)
-	_play.begin(
-		match_node,
-		PongNetAuthority.new(HOST, PackedInt64Array([HOST, CLIENT])),
-		PackedInt32Array([0])
-	)
+	var mine: PackedInt32Array = PackedInt32Array()
+	for seat: int in owners.size():
+		if owners[seat] == me:
+			mine.append(seat)
+	_play.begin(match_node, PongNetAuthority.new(me, owners), mine)
 	_report.begin(_play)
 	# These tests step the match's time by hand and stall nothing: the judge's clock is it.
 	var stepped_match: PongMatch = match_node

@@ -35,6 +35,9 @@ var history: Array[Dictionary] = []
 var refusals: Dictionary[String, int] = {}
 ## Server: the seats the computer plays for an absent player, seat -> that player's peer.
 var kept: Dictionary[int, int] = {}
+## Client: the seats the server drives now, each with the player it took the seat from, as
+## the owners messages told (seat -> peer).
+var taken_from: Dictionary[int, int] = {}
 
 var _last_seq: int = -1
 var _relinquished: bool = false
@@ -161,6 +164,21 @@ func rekey_kept(old: int, new_peer: int) -> void:
 	for seat: int in kept.keys():
 		if kept[seat] == old:
 			kept[seat] = new_peer
+
+
+## Client: who drives each seat now (the server's owners message). Returns the seats given
+## back to a player the server had taken them from.
+func set_owners(p_owners: PackedInt64Array) -> PackedInt32Array:
+	var back: PackedInt32Array = PackedInt32Array()
+	for seat: int in p_owners.size():
+		if p_owners[seat] == SERVER_ID:
+			if owners[seat] != SERVER_ID:
+				taken_from[seat] = owners[seat]
+		elif taken_from.has(seat):
+			taken_from.erase(seat)
+			back.append(seat)
+	owners = p_owners
+	return back
 
 
 ## Server: the absent peer is back: the seats kept for it are its own again. Returns them.

@@ -17,7 +17,7 @@ var _match: PongMatch = null
 var _authority: PongNetAuthority = null
 var _reject: Callable = Callable()
 var _take_ball: Callable = Callable()
-# Server: when each player that was absent came back (monotonic seconds).
+# When each player that was absent came back (monotonic seconds).
 var _back_at: Dictionary[int, float] = {}
 
 
@@ -67,10 +67,14 @@ func give_back(peer: int) -> void:
 		_take_ball.call()
 
 
-## Server: whether what [param peer] sent may be from a time it was cut off: its seat is kept
-## for it, or it came back within [constant PongNetProtocol.RETURN_SETTLE_S].
+## Whether what [param peer] sent may be from a time it was cut off: its seat is kept for it
+## (on the server), or was taken from it (a client, whose word that the seat is back may
+## still be on its way: a pose travels apart from the owners message and can overtake it), or
+## it came back within [constant PongNetProtocol.RETURN_SETTLE_S].
 func cut_off_lately(peer: int) -> bool:
 	if _authority != null and _authority.kept.values().has(peer):
+		return true
+	if _authority != null and _authority.taken_from.values().has(peer):
 		return true
 	var since: float = PongNetPulse.now_s() - _back_at.get(peer, -INF)
 	return since < PongNetProtocol.RETURN_SETTLE_S
@@ -101,5 +105,6 @@ func _on_owners(sender: int, owners: PongNetOwnersMessage) -> void:
 		var seats: Array[int] = [owners.owners.size(), _authority.owners.size()]
 		_reject.call(sender, PongNetOwnersMessage.LABEL, "%d seats, the match has %d" % seats)
 		return
-	_authority.owners = owners.owners
+	for seat: int in _authority.set_owners(owners.owners):
+		_back_at[_authority.owners[seat]] = PongNetPulse.now_s()
 	changed.emit()
