@@ -28,6 +28,23 @@ wine=$(command -v wine64 || command -v wine || echo /usr/lib/wine/wine64)
 export WINEPREFIX=${HAPTICS_WINEPREFIX:-$project/.build/wine} WINEDEBUG=-all WINEARCH=win64
 # No Mono or Gecko installer dialogs: the suite needs neither.
 export WINEDLLOVERRIDES="mscoree,mshtml="
+# Stop what this run started: the prefix's wineserver (it lingers a few seconds after the
+# last program), and the folder it leaves behind, /tmp/wine-XXXXXX/server-<dev>-<inode> of
+# the prefix in hex, which would otherwise pile up one per fresh prefix.
+stop_wine() {
+  [[ -d $WINEPREFIX ]] || return 0
+  local dev inode server_dir
+  read -r dev inode < <(stat -c '%d %i' "$WINEPREFIX")
+  server_dir=$(printf 'server-%x-%x' "$dev" "$inode")
+  WINEPREFIX=$WINEPREFIX timeout 30 "$(dirname "$(readlink -f "$wine")")/wineserver" -k 2>/dev/null || true
+  for dir in /tmp/wine-*/"$server_dir"; do
+    [[ -d $dir ]] || continue
+    rm -rf "$dir"
+    rmdir "$(dirname "$dir")" 2>/dev/null || true
+  done
+}
+trap stop_wine EXIT
+
 if [[ ! -f $WINEPREFIX/system.reg ]]; then
   echo "test-windows: making the Wine prefix $WINEPREFIX"
   timeout "$BOOT_SECONDS" "$wine" wineboot --init >/dev/null 2>&1 || die "wineboot failed or took over ${BOOT_SECONDS} s"
