@@ -36,7 +36,7 @@ stop_wine() {
   local dev inode server_dir
   read -r dev inode < <(stat -c '%d %i' "$WINEPREFIX")
   server_dir=$(printf 'server-%x-%x' "$dev" "$inode")
-  WINEPREFIX=$WINEPREFIX timeout 30 "$(dirname "$(readlink -f "$wine")")/wineserver" -k 2>/dev/null || true
+  timeout 30 "$(dirname "$(readlink -f "$wine")")/wineserver" -k 2>/dev/null || true
   for dir in /tmp/wine-*/"$server_dir"; do
     [[ -d $dir ]] || continue
     rm -rf "$dir"

@@ -72,9 +72,10 @@ func give_back(peer: int) -> void:
 ## still be on its way: a pose travels apart from the owners message and can overtake it), or
 ## it came back within [constant PongNetProtocol.RETURN_SETTLE_S].
 func cut_off_lately(peer: int) -> bool:
-	if _authority != null and _authority.kept.values().has(peer):
-		return true
-	if _authority != null and _authority.taken_from.values().has(peer):
+	if (
+		_authority != null
+		and (_authority.kept.values().has(peer) or _authority.taken_from.values().has(peer))
+	):
 		return true
 	var since: float = PongNetPulse.now_s() - _back_at.get(peer, -INF)
 	return since < PongNetProtocol.RETURN_SETTLE_S
