@@ -142,3 +142,14 @@ func test_channels_are_distinct_and_the_streams_have_their_own() -> void:
 	assert_eq(PongNetBallMessage.CHANNEL, PongNetFacts.NET_CHANNEL_BALL)
 	assert_eq(PongNetPoseMessage.CHANNEL, PongNetFacts.NET_CHANNEL_POSE)
 	assert_eq(PongNetHelloMessage.CHANNEL, PongNetFacts.NET_CHANNEL_HANDSHAKE)
+
+
+func test_nothing_on_the_heartbeat_channel_can_hold_a_beat_back() -> void:
+	# ENet hands an unreliable packet over only after the reliable ones sent before it on its
+	# channel: a reliable stall notice lost on the rough path held the beats for seconds.
+	var unreliable: MultiplayerPeer.TransferMode = MultiplayerPeer.TRANSFER_MODE_UNRELIABLE_ORDERED
+	assert_eq(PongNetBeatMessage.CHANNEL, PongNetFacts.NET_CHANNEL_BEAT)
+	assert_eq(PongNetStallMessage.CHANNEL, PongNetFacts.NET_CHANNEL_BEAT)
+	assert_eq(PongNetBeatMessage.TRANSFER_MODE, unreliable)
+	assert_eq(PongNetStallMessage.TRANSFER_MODE, unreliable, "ordered, so no older beat overtakes it")
+	assert_gt(PongNetHeartbeat.SETTLE_FRAMES, 1, "repeated, so one loss does not lose it")

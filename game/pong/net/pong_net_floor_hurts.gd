@@ -17,6 +17,8 @@ extends RefCounted
 
 ## A floor bounce cost [param victim] a point at [param epoch], here as on every peer.
 signal hurt_applied(epoch: int, victim: int)
+## This client, the master, claimed the floor bounce [param event] at [param epoch].
+signal claimed(epoch: int, event: PongEvent)
 
 var judge: PongNetHurtJudge = null
 ## The clock of the judge's times, seconds: this machine's ([method PongNetBall.clock_s]).
@@ -72,6 +74,7 @@ func on_event(event: PongEvent, before_transfer: bool = false) -> void:
 		claim.epoch = _authority.epoch
 		claim.victim = territory
 		_router.send_to(PongNetAuthority.SERVER_ID, claim)
+		claimed.emit(claim.epoch, event)
 
 
 ## Each frame on the server: the ball's path, and the claims that were waiting for it.

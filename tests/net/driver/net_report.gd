@@ -70,10 +70,18 @@ func begin(play: PongNetPlay, rejoined: bool = false) -> void:
 	play.floor_hurts.hurt_applied.connect(
 		func(epoch: int, victim: int) -> void: hurts.append([epoch, victim, "floor"])
 	)
+	play.floor_hurts.claimed.connect(_on_claimed)
 	var weapons: PongNetWeapons = play.weapons
 	extra["weapons"] = {
 		"shots": weapons.shots, "mines": weapons.mines_placed, "hurts": weapons.hurts
 	}
+
+
+# A refused claim is diagnosed from the claimant's side too: what its servo saw, and when.
+func _on_claimed(epoch: int, event: PongEvent) -> void:
+	var claims: Array = extra.get_or_add("claims", [])
+	var at: Vector3 = event.position
+	claims.append([now(), epoch, event.territory, at.x, at.y, at.z, event.speed, event.time_s])
 
 
 static func now() -> float:

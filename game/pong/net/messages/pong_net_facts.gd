@@ -32,7 +32,8 @@ const NET_CHANNEL_POSE: int = 2
 ## through the server's relay).
 const NET_CHANNEL_RELIABLE: int = 3
 
-## The heartbeat and the stall notice: nothing queues in front of them.
+## The heartbeat and the stall notice, both unreliable and ordered: nothing queues in front of them
+## (a reliable message here would hold every later beat while ENet resends it).
 const NET_CHANNEL_BEAT: int = 4
 
 ## Highest transfer epoch (a transfer a second: 34 years).

@@ -4,8 +4,11 @@
 class_name PongNetStallMessage
 extends PongNetMessage
 ## The sender is about to stall (it loads a match's court): its silence may last the heartbeat's
-## ceiling until its next beat. Reliable on the heartbeat's channel: no beat sent before it is
-## handed over after it.
+## ceiling until its next beat. Sent in several frames in a row, unreliable and ordered on the
+## heartbeat's channel: a beat sent before it is never handed over after it, and a lost notice holds
+## no beat back (reliable, one lost on a lossy path held every later beat for seconds of ENet's
+## resends while the partner allowed the stall's ceiling: a client cut off then went unnoticed for
+## 10 s).
 
 ## This layout's id on the wire (docs/values.md): a change of any field changes it.
 const SCHEMA_ID: int = 0xfd7e4897
@@ -14,7 +17,7 @@ const LABEL: String = "stall notice"
 ## The channel it travels on ([method SceneMultiplayer.send_bytes]).
 const CHANNEL: int = PongNetFacts.NET_CHANNEL_BEAT
 ## How it travels.
-const TRANSFER_MODE: MultiplayerPeer.TransferMode = MultiplayerPeer.TRANSFER_MODE_RELIABLE
+const TRANSFER_MODE: MultiplayerPeer.TransferMode = MultiplayerPeer.TRANSFER_MODE_UNRELIABLE_ORDERED
 ## Only the server sends it: from any other peer it is a bad message.
 const FROM_SERVER: bool = false
 ## Only the server takes it: on any other peer it is a bad message.
