@@ -151,5 +151,7 @@ func test_nothing_on_the_heartbeat_channel_can_hold_a_beat_back() -> void:
 	assert_eq(PongNetBeatMessage.CHANNEL, PongNetFacts.NET_CHANNEL_BEAT)
 	assert_eq(PongNetStallMessage.CHANNEL, PongNetFacts.NET_CHANNEL_BEAT)
 	assert_eq(PongNetBeatMessage.TRANSFER_MODE, unreliable)
-	assert_eq(PongNetStallMessage.TRANSFER_MODE, unreliable, "ordered, so no older beat overtakes it")
+	assert_eq(
+		PongNetStallMessage.TRANSFER_MODE, unreliable, "ordered, so no older beat overtakes it"
+	)
 	assert_gt(PongNetHeartbeat.SETTLE_FRAMES, 1, "repeated, so one loss does not lose it")
