@@ -116,6 +116,9 @@ def ball_state_use(reports: list[dict]) -> dict:
             "reached": reached,
             "used": stream.get("used", 0),
             "used_share": stream.get("used", 0) / reached if reached else None,
+            # Why the rest went unused: the buffer's own counts.
+            **{k: stream[k] for k in ("late", "late_after_news", "news", "gaps_given_up", "delay_s")
+               if k in stream},
         })
     offered_all = sum(p["offered"] for p in per_peer)
     reached_all = sum(p["reached"] for p in per_peer)

@@ -22,9 +22,9 @@ extends RefCounted
 enum Taken { NEWEST, FILLS_GAP, DUPLICATE, LATE }
 
 ## The share of states the wait is sized to catch.
-const JITTER_QUANTILE: float = 0.95
+const JITTER_QUANTILE: float = 0.99
 ## States whose delays size the wait (at 60-125 Hz, the last 0.5-1 s).
-const JITTER_WINDOW: int = 64
+const JITTER_WINDOW: int = 128
 ## The longest wait for a gap, s: a path worse than that is not waited for.
 const MAX_DELAY_S: float = 0.25
 ## Sequence numbers remembered below the play position, to tell duplicates from late states.
@@ -81,6 +81,8 @@ var duplicates: int = 0
 var skipped: int = 0
 ## Of the late states, those whose gap was given up for news (a strike), not for the wait.
 var late_after_news: int = 0
+## Plays that gave gaps up for news.
+var news: int = 0
 
 var _pending: Dictionary[int, State] = {}
 var _seen: Dictionary[int, bool] = {}
@@ -137,6 +139,8 @@ func advance(now_s: float, agrees: Callable = Callable()) -> bool:
 	just_played.clear()
 	if played != null and _newest_seq > played.seq and agrees.is_valid():
 		give_up = not agrees.call(played, _pending[_newest_seq])
+		if give_up and _pending.keys().min() != played.seq + 1:
+			news += 1
 	while not _pending.is_empty():
 		var next_seq: int = _pending.keys().min()
 		var next: State = _pending[next_seq]
@@ -173,6 +177,7 @@ func to_dict() -> Dictionary:
 		"duplicates": duplicates,
 		"gaps_given_up": skipped,
 		"late_after_news": late_after_news,
+		"news": news,
 		"delay_s": delay_s,
 	}
 
