@@ -74,6 +74,26 @@ func test_a_transfer_glides_the_ball_over_unless_our_paddle_touched_it_since() -
 		(state.ball_position - here).length() - 0.005,
 		"a state sent after the touch corrects it"
 	)
+	# Our pose takes 0.3 s to reach the master: a state sent 0.2 s after our touch, carried
+	# to now, would put back under our paddle a ball we had just returned.
+	PongServo.shared().step_ticks(300)  # The last correction glided in.
+	ball.touched(25.0, 0.3)
+	state = PongServo.shared().get_state()
+	var flown: Array[Vector3] = PongNetSmoother.extrapolate(
+		predictor, state.ball_position, state.ball_velocity, court.gravity, 20 * PongServo.TICK_S
+	)
+	ball.transfer(false, [here, Vector3.ZERO, Vector3.ZERO], 0.1, 25.3)
+	PongServo.shared().step_ticks(20)
+	state = PongServo.shared().get_state()
+	assert_lt((state.ball_position - flown[0]).length(), 0.005, "kept: the master did not know")
+	assert_eq(ball.ignored, 2)
+	ball.transfer(false, [here, Vector3.ZERO, Vector3.ZERO], 0.1, 25.45)
+	PongServo.shared().step_ticks(1)
+	assert_lt(
+		(PongServo.shared().get_state().ball_position - here).length(),
+		(state.ball_position - here).length() - 0.005,
+		"a state sent once our touch could have reached the master corrects it"
+	)
 	# A serve is put at once.
 	ball.transfer(true, [here, Vector3.ZERO, Vector3.ZERO], 0.0, 30.0)
 	PongServo.shared().step_ticks(1)

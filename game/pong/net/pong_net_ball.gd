@@ -23,13 +23,15 @@ var stepped: bool = false
 ## The court the ball stays in: an extrapolation can end past a wall or under the floor,
 ## where the servo refuses the ball.
 var court: PongCourt = null
-## States played that did not correct the ball: sent before our paddle touched it.
+## States played that did not correct the ball: sent before the master could know of our
+## paddle's touch.
 var ignored: int = 0
 
 var _commanded: Array[Vector3] = []
 var _commanded_time: float = 0.0
-# When a paddle this peer drives last touched the ball (this machine's clock, s).
-var _touched_at: float = -INF
+# Until when (this machine's clock, s) a state the master sent may not know of the last touch
+# of a paddle this peer drives.
+var _touch_unknown_until: float = -INF
 
 
 ## Our ball now, [position, velocity, spin]: the last [method put] while the servo has not
@@ -60,12 +62,12 @@ func correct(position: Vector3, velocity: Vector3, spin: Vector3) -> void:
 
 
 ## A transfer carried the ball's state, [param age_s] old, to now: [param ball]. A serve
-## puts it; any other transfer corrects ours, unless our paddle touched it since that state
-## was sent (our ball then knows more than the state does).
+## puts it; any other transfer corrects ours, unless that state was sent before the master
+## could know of our paddle's last touch (our ball then knows more than the state does).
 func transfer(serve: bool, ball: Array[Vector3], age_s: float, now_s: float) -> void:
 	if serve:
 		put(ball[0], ball[1], ball[2])
-	elif now_s - age_s > _touched_at:
+	elif now_s - age_s > _touch_unknown_until:
 		correct(ball[0], ball[1], ball[2])
 	else:
 		ignored += 1
@@ -94,8 +96,12 @@ static func clock_s() -> float:
 ## A paddle this peer drives touched the ball at [param now_s] ([method clock_s]). Not a
 ## remote paddle's touch here: its pose arrives a path late, and trusting it as a predicted
 ## hit made the divergence worse (issue 24's path: docs/pong-networking.md).
-func touched(now_s: float) -> void:
-	_touched_at = now_s
+## [param reach_s]: how long after it a state the master sends may still not know of it (our
+## pose's way to the master, and the jitter). The master's ball hits our paddle only when our
+## pose reaches it: a hand-off state sent in between, carried to now, put a ball our player
+## had just returned back under the paddle, and the new master claimed its bounce.
+func touched(now_s: float, reach_s: float = 0.0) -> void:
+	_touch_unknown_until = now_s + maxf(reach_s, 0.0)
 
 
 ## Takes a state of the current master into the buffer; what became of it.
@@ -119,7 +125,7 @@ func follow(now_s: float, predictor: PongPredictor, g: float) -> bool:
 		return false
 	var state: PongNetBallBuffer.State = buffer.played
 	var age: float = state.age_at(now_s)
-	if now_s - age <= _touched_at:
+	if now_s - age <= _touch_unknown_until:
 		ignored += 1
 		return true
 	# A threaded servo takes the command a tick later.

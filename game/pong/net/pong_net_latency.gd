@@ -27,6 +27,18 @@ func down_ms() -> int:
 	return roundi(_split(PongNetAuthority.SERVER_ID).y * 1000.0)
 
 
+## How long our paddle's pose may take to reach a master and its state to come back, s: a
+## round trip through the server (on the server, to the farthest client).
+func touch_reach_s() -> float:
+	var peers: PackedInt32Array = [PongNetAuthority.SERVER_ID]
+	if _session.is_server:
+		peers = _session.multiplayer.get_peers()
+	var most: float = 0.0
+	for peer: int in peers:
+		most = maxf(most, _session.round_trip_s(peer))
+	return most
+
+
 ## On the server: the delay from [param peer] to it, ms.
 func from_ms(peer: int) -> int:
 	return roundi(_split(peer).y * 1000.0)

@@ -387,7 +387,7 @@ func _on_match_over(winner: int) -> void:
 func _on_ball_touch(event: PongEvent) -> void:
 	var paddle: bool = event.type == PongServoFacts.PongEventType.PADDLE
 	if paddle and local_seats.has(event.player):
-		ball.touched(PongNetBall.clock_s())
+		ball.touched(PongNetBall.clock_s(), _latency.touch_reach_s() + ball.buffer.delay_s)
 
 
 func _gravity() -> float:
