@@ -32,6 +32,7 @@ func test_in_order_states_play_at_once_and_a_reordered_one_fills_its_gap() -> vo
 	assert_eq(buffer.push(_state(4, 0.024, 0.2)), PongNetBallBuffer.Taken.LATE)
 	assert_eq([buffer.received, buffer.used, buffer.late, buffer.duplicates], [4, 4, 1, 1])
 	assert_eq(buffer.late_after_news, 0, "4 was given up when the wait ran out")
+	assert_eq(buffer.news, 0)
 	# A new stream (a transfer) starts afresh: its first state plays whatever its number.
 	buffer.restart()
 	assert_eq(buffer.push(_state(2, 1.0, 1.1)), PongNetBallBuffer.Taken.NEWEST)
@@ -55,6 +56,7 @@ func test_a_gap_is_not_waited_for_past_a_strike() -> void:
 	assert_eq(buffer.skipped, 1, "the gap given up")
 	assert_eq(buffer.push(_state(2, 0.008, 0.13)), PongNetBallBuffer.Taken.LATE)
 	assert_eq(buffer.late_after_news, 1, "2 was given up for the news")
+	assert_eq(buffer.news, 1, "one play gave a gap up for news")
 
 
 func test_the_wait_is_sized_from_the_measured_jitter() -> void:

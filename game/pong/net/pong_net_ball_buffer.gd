@@ -81,7 +81,7 @@ var duplicates: int = 0
 var skipped: int = 0
 ## Of the late states, those whose gap was given up for news (a strike), not for the wait.
 var late_after_news: int = 0
-## Plays that gave gaps up for news.
+## Plays that gave a gap up for news before its wait ran out.
 var news: int = 0
 
 var _pending: Dictionary[int, State] = {}
@@ -139,8 +139,7 @@ func advance(now_s: float, agrees: Callable = Callable()) -> bool:
 	just_played.clear()
 	if played != null and _newest_seq > played.seq and agrees.is_valid():
 		give_up = not agrees.call(played, _pending[_newest_seq])
-		if give_up and _pending.keys().min() != played.seq + 1:
-			news += 1
+	var for_news: bool = false
 	while not _pending.is_empty():
 		var next_seq: int = _pending.keys().min()
 		var next: State = _pending[next_seq]
@@ -150,6 +149,7 @@ func advance(now_s: float, agrees: Callable = Callable()) -> bool:
 			break  # The gap before it may still arrive.
 		if not in_order:
 			skipped += 1
+			for_news = for_news or (give_up and not due)
 			if played != null:
 				for passed: int in range(played.seq + 1, next_seq):
 					_passed_for_news[passed] = give_up and not due
@@ -158,6 +158,8 @@ func advance(now_s: float, agrees: Callable = Callable()) -> bool:
 		just_played.append(next)
 		used += 1
 		moved = true
+	if for_news:
+		news += 1
 	if moved:
 		_forget_below(played.seq - SEEN_WINDOW)
 	return moved
