@@ -18,7 +18,8 @@ from pathlib import Path
 
 sys.dont_write_bytecode = True
 
-from person import GODOT, ROOT, SCREEN, Display, Session, tools_missing  # noqa: E402
+from desktop import GODOT, ROOT, SCREEN, Display, tools_missing  # noqa: E402
+from person import Session  # noqa: E402
 from pong_eyes import ClumsyMouseHand, RallyWatch, ball_at, paddle_at  # noqa: E402
 from test_side_scroller import steer_to_the_goal  # noqa: E402
 

@@ -9,7 +9,8 @@ import sys
 
 import pytest
 
-from person import EXPORTED, Session, tools_missing
+from desktop import tools_missing
+from person import EXPORTED, Session
 
 
 def _unwind(_signum, _frame):

@@ -1,23 +1,21 @@
 """A scripted person at the real windowed game: only the screen, the keys and the mouse.
 
-Everything a test does goes through the X server the game draws on (Xvfb, 1280x720, with
-openbox as the window manager and PulseAudio as the sound server, as on a desktop): screenshots
+Everything a test does goes through the X server the game draws on (the desktop of
+desktop.py): screenshots
 (the root window through Xlib, Pillow's ImageGrab: 35 ms where ImageMagick's `import` took
 450 ms, and a look at a game in motion is only as quick as its screenshot), words
 found on them by OCR (tesseract's word boxes), and input events (xdotool: mouse moves,
 clicks, key presses and releases, the window manager's close shortcut). Nothing reads the
 game's internals, and the game is started with a player's command line and no flag of ours.
 
-Every process is started here and stopped by its PID (the game, openbox, PulseAudio, Xvfb); every
+The game is started here and stopped by its PID; every
 screenshot of a key moment is kept in .build/person/<test>/NN-moment.png.
 """
 
 from __future__ import annotations
 
-import os
 import re
 import shutil
-import signal
 import subprocess
 import tempfile
 import time
@@ -26,13 +24,11 @@ from pathlib import Path
 
 from PIL import ImageGrab
 
+from desktop import GODOT, ROOT, Display, stop_process
 from ocr import OCR_VARIANTS, Box, Region, Word, norm, phrase_boxes, read_words
 
-ROOT = Path(__file__).resolve().parents[2]
-GODOT = ROOT / "tools" / "godot"
 EXPORTED = ROOT / ".export" / "linux" / "haptic-game"
 SHOTS = ROOT / ".build" / "person"
-SCREEN = (1280, 720)
 # Generous bounds for a loaded 2-core machine: they only stop a test that hangs.
 START_PATIENCE_S = 90.0
 FIND_PATIENCE_S = 30.0
@@ -44,99 +40,6 @@ NOTICE_S = 10.0
 READ_BY: dict[str, str] = {}
 # What fails every run when the game prints it: an engine or script error, or an X error.
 ERROR_LINE = re.compile(r"^(ERROR|SCRIPT ERROR)|BadWindow|BadDrawable|X Error")
-
-
-def tools_missing() -> list[str]:
-    return [t for t in ("Xvfb", "openbox", "pulseaudio", "xdotool", "convert", "tesseract")
-            if not shutil.which(t)]
-
-
-def _stop(proc: subprocess.Popen | None, patience: float = 10.0) -> None:
-    """Stops one process we started, by its PID: SIGTERM, then SIGKILL."""
-    if proc is None or proc.poll() is not None:
-        return
-    proc.send_signal(signal.SIGTERM)
-    try:
-        proc.wait(timeout=patience)
-    except subprocess.TimeoutExpired:
-        proc.kill()
-        proc.wait(timeout=patience)
-
-
-class Display:
-    """Xvfb on a free display (-displayfd, as tools/xvfb.sh), openbox on it, and a sound
-    server: a player's desktop has one, and the game's audio driver waits on it between mixes.
-    This machine has no sound card, so it plays into a null sink, which keeps a card's time
-    (ALSA's null device does not: Godot's audio thread then spins on a core of its own)."""
-
-    def __init__(self, scratch: Path) -> None:
-        self.scratch = scratch
-        self.xvfb: subprocess.Popen | None = None
-        self.wm: subprocess.Popen | None = None
-        self.sound: subprocess.Popen | None = None
-        self.name = ""
-
-    def start(self) -> None:
-        read_fd, write_fd = os.pipe()
-        with open(self.scratch / "xvfb.log", "wb") as log:
-            self.xvfb = subprocess.Popen(
-                ["Xvfb", "-displayfd", str(write_fd), "-screen", "0", f"{SCREEN[0]}x{SCREEN[1]}x24",
-                 "-nolisten", "tcp"],
-                pass_fds=(write_fd,), stdout=log, stderr=log)
-        os.close(write_fd)
-        number = b""
-        deadline = time.monotonic() + 30.0
-        with os.fdopen(read_fd, "rb", buffering=0) as pipe:
-            while not number.endswith(b"\n") and time.monotonic() < deadline:
-                chunk = pipe.read(16)
-                if not chunk:
-                    break
-                number += chunk
-        if not number.strip():
-            raise RuntimeError(f"Xvfb did not start: {(self.scratch / 'xvfb.log').read_text()}")
-        self.name = ":" + number.decode().strip()
-        with open(self.scratch / "openbox.log", "wb") as log:
-            self.wm = subprocess.Popen(["openbox"], env=self.env(), stdout=log, stderr=log)
-        self._start_sound()
-
-    def _start_sound(self) -> None:
-        socket = self.scratch / "pulse" / "native"
-        socket.parent.mkdir()
-        script = self.scratch / "pulse.pa"
-        script.write_text(f"load-module module-native-protocol-unix socket={socket} auth-anonymous=1\n"
-                          "load-module module-null-sink sink_name=speakers\n"
-                          "set-default-sink speakers\n")
-        env = {**self.env(), "HOME": str(self.scratch), "XDG_RUNTIME_DIR": str(socket.parent)}
-        with open(self.scratch / "pulseaudio.log", "wb") as log:
-            self.sound = subprocess.Popen(
-                ["pulseaudio", "-n", "-F", str(script), "--daemonize=no", "--exit-idle-time=-1",
-                 "--use-pid-file=no", "--disable-shm=yes"], env=env, stdout=log, stderr=log)
-        deadline = time.monotonic() + 30.0
-        while not socket.exists():
-            if self.sound.poll() is not None or time.monotonic() > deadline:
-                raise RuntimeError("PulseAudio did not start: "
-                                   + (self.scratch / "pulseaudio.log").read_text(errors="replace"))
-            time.sleep(0.1)
-
-    def env(self) -> dict[str, str]:
-        env = dict(os.environ)
-        env["DISPLAY"] = self.name
-        env.pop("WAYLAND_DISPLAY", None)
-        env["PULSE_SERVER"] = f"unix:{self.scratch / 'pulse' / 'native'}"
-        # A fresh player's folders: the exported game's XDG ones, and the root of those
-        # tools/godot gives the source build (make play's own). Two people are two players:
-        # two copies sharing one shader cache corrupted it ("shader_file_header").
-        for name in ("CONFIG", "DATA", "CACHE"):
-            folder = self.scratch / "home" / name.lower()
-            folder.mkdir(parents=True, exist_ok=True)
-            env[f"XDG_{name}_HOME"] = str(folder)
-        env["HAPTICS_XDG_ROOT"] = str(self.scratch / "home")
-        return env
-
-    def stop(self) -> None:
-        _stop(self.wm)
-        _stop(self.sound)
-        _stop(self.xvfb)
 
 
 @dataclass
@@ -396,7 +299,7 @@ class Game:
 
     def stop(self) -> None:
         # tools/godot execs the engine, so this PID is the game itself.
-        _stop(self.proc)
+        stop_process(self.proc)
 
 
 class Session:

@@ -173,6 +173,9 @@ class Route:
     # Only this far along the route ahead of the furthest point reached is a place a person
     # can believe they are (the level folds back on itself: the route passes near itself).
     WINDOW_PX = 600.0
+    # Further from the route than this, a person has left it (into a pocket beside the way,
+    # over a ledge that walls it): being level with a place further on is not being there.
+    OFF_ROUTE_PX = 120.0
 
     def __init__(self, points: list[tuple[float, float]]) -> None:
         self.points = points
@@ -180,6 +183,7 @@ class Route:
         for a, b in zip(points, points[1:]):
             self.lengths.append(self.lengths[-1] + math.dist(a, b))
         self.reached = 0.0
+        self.off = 0.0  # how far from the route the last look was
 
     @property
     def length(self) -> float:
@@ -194,7 +198,9 @@ class Route:
                 return (a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1]))
         return self.points[-1]
 
-    def _along(self, here: tuple[float, float]) -> float:
+    def _nearest(self, here: tuple[float, float]) -> tuple[float, float]:
+        """How far along the route its nearest point to `here` is (within the window ahead of
+        the furthest point reached), and how far `here` is from that point."""
         best, best_d = self.reached, math.inf
         for k in range(len(self.points) - 1):
             if self.lengths[k] > self.reached + self.WINDOW_PX or self.lengths[k + 1] < self.reached:
@@ -207,11 +213,15 @@ class Route:
             along = self.lengths[k] + f * (self.lengths[k + 1] - self.lengths[k])
             if d < best_d and along <= self.reached + self.WINDOW_PX:
                 best, best_d = along, d
-        return best
+        return best, best_d
 
     def aim(self, here: tuple[float, float]) -> tuple[float, float]:
-        """Where to head from `here`; moves the furthest point reached on."""
-        self.reached = max(self.reached, self._along(here))
+        """Where to head from `here`; moves the furthest point reached on while `here` is on
+        the route. Off it, a person heads back to where they left it."""
+        along, self.off = self._nearest(here)
+        if self.off > self.OFF_ROUTE_PX:
+            return self._point_at(self.reached)
+        self.reached = max(self.reached, along)
         return self._point_at(self.reached + self.LOOKAHEAD_PX)
 
 

@@ -29,7 +29,8 @@ import pytest
 
 from conftest import skip_unless_playable
 from ocr import Region
-from person import EXPORTED, SCREEN, Person, Session
+from desktop import SCREEN
+from person import EXPORTED, Person, Session
 from pong_eyes import paddle_rim
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "net"))

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import time
 
-from person import SCREEN
+from desktop import SCREEN
 from pong_eyes import ClumsyMouseHand, RallyWatch, ball_at, paddle_at
 
 ANSWER_WITHIN_S = 3.0

@@ -67,7 +67,7 @@ def steer_to_the_goal(person: Person, scratch) -> tuple[bool, int]:
     last = None
     shot_at = 0.0
     trail = open(person.shots / "trail.csv", "w", encoding="utf-8")
-    trail.write("t_s,x,y,along,sub_x,sub_y,goal_x,goal_y,scroll_x,scroll_y,agreement,keys\n")
+    trail.write("t_s,x,y,along,off,sub_x,sub_y,goal_x,goal_y,scroll_x,scroll_y,agreement,keys\n")
     try:
         while time.monotonic() - started < PLAY_PATIENCE_S:
             look = person.grab(scratch / "level.png")
@@ -100,7 +100,7 @@ def steer_to_the_goal(person: Person, scratch) -> tuple[bool, int]:
                 still = still + 1 if last is not None and math.dist(here, last) < 2.0 else 0
                 last = here
             trail.write(",".join(f"{v:.0f}" if isinstance(v, float) else str(v) for v in (
-                f"{time.monotonic() - started:.2f}", *(here or ("", "")), route.reached,
+                f"{time.monotonic() - started:.2f}", *(here or ("", "")), route.reached, route.off,
                 *(where.sub or ("", "")), *(where.goal or ("", "")), *where.scroll[:2],
                 f"{where.scroll[2]:.3f}", "+".join(keys))) + "\n")
             if looks % 10 == 0:
