@@ -71,6 +71,12 @@ class Person:
         self._count += 1
         return self.grab(self.shots / f"{self._count:02d}-{name}.png")
 
+    def keep_look(self, name: str) -> Path:
+        """Keeps the look the last text was found on as NN-name.png: the moment itself, which
+        may be over by the time a new screenshot is taken (a card read by OCR for a second)."""
+        self._count += 1
+        return Path(shutil.copy(self.scratch / "look.png", self.shots / f"{self._count:02d}-{name}.png"))
+
     def read_words(self, shot: Path, variant: tuple[str, list[str], int],
                    region: Region | None = None) -> list[Word]:
         started = time.monotonic()

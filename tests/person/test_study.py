@@ -166,7 +166,7 @@ def test_a_participant_goes_through_the_maze_study(shipped_session) -> None:
         if start is not None:
             person.click(*start.center)
         person.wait_text("Hold still", patience=30.0)
-        person.screenshot(f"method-{method}-hold-still")
+        person.keep_look(f"method-{method}-hold-still")
         held = hold_still_at_the_start(person, session.scratch)
         person.screenshot(f"method-{method}-maze")
         took = steer_through_the_maze(person, session.scratch)
