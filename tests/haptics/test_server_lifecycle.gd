@@ -32,6 +32,26 @@ func test_the_thread_runs_and_reports_its_statistics() -> void:
 	assert_false(door.servo.is_running())
 
 
+func test_a_device_closed_and_opened_again_renders_again() -> void:
+	# The game's settings close the device and open it again with other options: the forces
+	# and the simulated hand must come back (they stopped for good, and the keys no longer
+	# moved the sub).
+	assert_true(door.device.open("simulated"))
+	assert_true(door.servo.start())
+	door.device.close()
+	assert_false(door.servo.is_running(), "no device, no rendering")
+	assert_true(door.device.open("simulated"))
+	assert_true(door.servo.is_running(), "rendering again")
+	var ticks: int = door.servo.get_stats().ticks
+	await wait_seconds(0.2)
+	assert_gt(door.servo.get_stats().ticks, ticks)
+	# Stopped on purpose, a device opened after it does not start rendering.
+	door.servo.stop()
+	door.device.close()
+	assert_true(door.device.open("simulated"))
+	assert_false(door.servo.is_running(), "the game stopped rendering itself")
+
+
 func test_the_stats_say_which_realtime_techniques_were_granted() -> void:
 	assert_true(door.device.open("simulated"))
 	assert_true(door.servo.start())

@@ -17,6 +17,9 @@ var _servo: HapticsServo = null
 var _reconnect_countdown: float = 0.0
 # The options of the last open: a replugged device is opened again with them.
 var _options: HapticDeviceOpenOptions = null
+# Whether the servo rendered when the device was closed: the next open renders again (a game
+# that reopens its device with other options keeps its forces and its simulated hand).
+var _rendered_at_close: bool = false
 var _warnings: PackedStringArray = PackedStringArray()
 
 
@@ -44,27 +47,31 @@ func get_simulated_id() -> String:
 	return _backend.simulated_device_id()
 
 
-## Opens the device with this id and keeps rendering if the servo was. On failure the
-## current device stays open. [param options] says what the open may change on the device
-## (null: the defaults: the player's gain left alone, the centring spring turned off).
+## Opens the device with this id and keeps rendering if the servo was (or was when
+## [method close] closed the last device). On failure the current device stays open.
+## [param options] says what the open may change on the device (null: the defaults: the
+## player's gain left alone, the centring spring turned off).
 func open(id: String, options: HapticDeviceOpenOptions = null) -> bool:
 	if not _backend.is_native():
 		return false
-	var was_running: bool = _servo.is_running()
+	var was_running: bool = _servo.is_running() or _rendered_at_close
 	var asked: HapticDeviceOpenOptions = (
 		options if options != null else HapticDeviceOpenOptions.new()
 	)
 	var opened: bool = _backend.open_device(id, asked)
 	if opened:
 		_options = asked
+		_rendered_at_close = false
 	if opened and was_running:
 		_servo.start()
 	changed.emit()
 	return opened
 
 
-## Closes the open device (zero force first).
+## Closes the open device (zero force first); the next [method open] renders again if the
+## servo rendered now.
 func close() -> void:
+	_rendered_at_close = _rendered_at_close or _servo.is_running()
 	_backend.close_device()
 	changed.emit()
 
