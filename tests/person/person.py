@@ -1,15 +1,14 @@
 """A scripted person at the real windowed game: only the screen, the keys and the mouse.
 
-Everything a test does goes through the X server the game draws on (the desktop of
-desktop.py): screenshots
-(the root window through Xlib, Pillow's ImageGrab: 35 ms where ImageMagick's `import` took
-450 ms, and a look at a game in motion is only as quick as its screenshot), words
-found on them by OCR (tesseract's word boxes), and input events (xdotool: mouse moves,
+Everything a test does goes through the X server the game draws on (desktop.py's):
+screenshots (the root window through Xlib, Pillow's ImageGrab: 35 ms where ImageMagick's
+`import` took 450 ms, and a look at a game in motion is only as quick as its screenshot),
+words found on them by OCR (tesseract's word boxes), and input events (xdotool: mouse moves,
 clicks, key presses and releases, the window manager's close shortcut). Nothing reads the
 game's internals, and the game is started with a player's command line and no flag of ours.
 
-The game is started here and stopped by its PID; every
-screenshot of a key moment is kept in .build/person/<test>/NN-moment.png.
+The game is started here and stopped by its PID; every screenshot of a key moment is kept in
+.build/person/<test>/NN-moment.png.
 """
 
 from __future__ import annotations
