@@ -91,6 +91,9 @@ void stall(Report &r_report, gadget::HidGadget &r_stick, pid::ScriptedPidJoystic
 	if (!r_report.check(halted.ok(), p_when + ": the gadget halted its OUT endpoint " + halted.message())) {
 		return;
 	}
+	// A held force needs no report, so a halt shows at the next one the player needs: the
+	// hand moves now, and the status must follow within the bound from this moment.
+	r_joystick.set_stick(-0.2, 0.5);
 	const Clock::time_point start = Clock::now();
 	double failed_s = -1.0;
 	play_while(r_system, 1.5, [&] {
@@ -99,13 +102,15 @@ void stall(Report &r_report, gadget::HidGadget &r_stick, pid::ScriptedPidJoystic
 		}
 	});
 	const DeviceStatus status = r_system.device_status();
-	char text[260];
-	std::snprintf(text, sizeof(text), "%s: endpoint stalled: status %s after %.3f s (\"%s\"); kernel \"output irq status -32\" %d times",
+	char text[384];
+	std::snprintf(text, sizeof(text), "%s: endpoint stalled: the hand moved, status %s after %.3f s (\"%s\"); kernel \"output irq status -32\" %d times",
 			p_when.c_str(), DEVICE_IO_NAMES[static_cast<int>(status.io)], failed_s, static_cast<const char *>(status.reason),
 			kernel_log_count("output irq status -32") - irq_errors_before);
 	r_report.info(text);
 	if (!p_kernel_owns) {
-		r_report.check(failed_s >= 0.0 && status.reason[0] != '\0', p_when + ": the status says the device failed, and why");
+		// Emulation stretches time: the bound is generous; the note gives the number.
+		r_report.check(failed_s >= 0.0 && failed_s < 0.5 && status.reason[0] != '\0',
+				p_when + ": once the force changes, the status says the device failed, and why");
 		r_report.check(servo_stops(r_system, 2.0), p_when + ": the servo stops (zero force)");
 		r_report.check(std::strstr(status.reason, "reset it") != nullptr, p_when + ": the backend reset the device");
 		// What the game's reconnect does: list it again, open it, render.

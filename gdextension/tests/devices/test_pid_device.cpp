@@ -11,6 +11,7 @@
 
 #include <doctest/doctest.h>
 
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <functional>
@@ -220,6 +221,78 @@ TEST_CASE("pid device: unplugging stops the I/O with DISCONNECTED and a reason -
 	REQUIRE(device->open().ok());
 	CHECK(joystick->allocated_effects() == 1);
 	device->close();
+}
+
+namespace {
+
+// The scripted transport, but its OUT endpoint can be halted: writes then fail as a STALL
+// does, and clear_halt() notes what the device's status said when the repair began.
+class HaltingTransport final : public hid::HidTransport {
+public:
+	explicit HaltingTransport(std::shared_ptr<ScriptedPidJoystick> p_joystick) :
+			inner_(make_scripted_transport(std::move(p_joystick))) {}
+
+	Status open() override { return inner_->open(); }
+	void close() override { inner_->close(); }
+	bool is_open() const override { return inner_->is_open(); }
+	Status report_descriptor(std::vector<uint8_t> &r_bytes) override { return inner_->report_descriptor(r_bytes); }
+	DeviceIo write_output(std::span<const uint8_t> p_report) override {
+		if (halted) {
+			pending_ = true;
+			return DeviceIo::FAILED;
+		}
+		return inner_->write_output(p_report);
+	}
+	DeviceIo send_feature(std::span<const uint8_t> p_report) override { return inner_->send_feature(p_report); }
+	DeviceIo get_feature(std::span<uint8_t> p_buffer, size_t &r_length) override {
+		return inner_->get_feature(p_buffer, r_length);
+	}
+	DeviceIo read_input(std::span<uint8_t> p_buffer, size_t &r_length) override {
+		return inner_->read_input(p_buffer, r_length);
+	}
+	const char *last_error() const override {
+		return !halted ? inner_->last_error() : repaired_ ? "endpoint stalled; reset it, reopening"
+														  : "endpoint stalled; resetting it";
+	}
+	bool clear_halt() override {
+		if (!pending_ || device == nullptr) {
+			return false;
+		}
+		status_at_repair = device->status();
+		pending_ = false;
+		repaired_ = true;
+		return true;
+	}
+
+	std::atomic<bool> halted{ false };
+	const HapticDevice *device = nullptr;
+	DeviceStatus status_at_repair;
+
+private:
+	std::unique_ptr<hid::HidTransport> inner_;
+	bool pending_ = false;
+	bool repaired_ = false;
+};
+
+} // namespace
+
+TEST_CASE("pid device: a stalled endpoint is in the status before the slow repair starts, and the repair after it") {
+	auto joystick = std::make_shared<ScriptedPidJoystick>(ScriptedFirmware::AJ);
+	auto owned = std::make_unique<HaltingTransport>(joystick);
+	HaltingTransport &transport = *owned;
+	PidDevice device(std::move(owned), "halting stick");
+	transport.device = &device;
+	REQUIRE(device.open().ok());
+	REQUIRE(device.write_force({ Vec3{ 0.0, 1.0, 0.0 }, {} }) == DeviceIo::OK);
+	transport.halted = true;
+	(void)device.write_force({ Vec3{ 0.5, 0.5, 0.0 }, {} }); // A new force needs a report.
+	DeviceState state;
+	REQUIRE(eventually([&] { return device.read_state(state) == DeviceIo::FAILED; }));
+	REQUIRE(eventually([&] { return std::string(device.status().reason).find("reopening") != std::string::npos; }));
+	CHECK(transport.status_at_repair.io == DeviceIo::FAILED);
+	CHECK(std::string(transport.status_at_repair.reason) == "PID stick: force update failed: endpoint stalled; resetting it");
+	CHECK(std::string(device.status().reason) == "PID stick: force update failed: endpoint stalled; reset it, reopening");
+	device.close();
 }
 
 TEST_CASE("pid device: open failures are clean and explained") {

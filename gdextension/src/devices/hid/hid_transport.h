@@ -42,6 +42,10 @@ public:
 
 	// Why the last failed call failed; "" when none did.
 	virtual const char *last_error() const = 0;
+	// After a failure whose status is already published: clears what the failure found
+	// halted, if anything (a stalled endpoint), and says in last_error() how that went. True
+	// when there was something to clear. Slow (a bus reset), so it comes after the status.
+	virtual bool clear_halt() { return false; }
 };
 
 } // namespace haptics::hid

@@ -6,6 +6,7 @@
 
 #include <hidapi.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -26,6 +27,7 @@ Status HidapiTransport::open() {
 	const Status opened = open_hidraw_device(path_, "hid-pid", device_);
 	if (opened) {
 		error_[0] = '\0';
+		halted_ = false;
 	}
 	return opened;
 }
@@ -49,16 +51,29 @@ DeviceIo HidapiTransport::failed(const char *p_call, int p_errno) {
 	char message[128];
 	narrow_hid_text(device_ ? hid_error(device_) : nullptr, std::strerror(p_errno), message, sizeof(message));
 	if (p_errno == EPIPE) {
-		// A STALLed endpoint stays halted until someone clears it, and only a reset reaches
-		// it from here (hidraw_sysfs.h). The device starts over, so the game's reconnect opens
-		// it again, effects and all.
-		const Status reset = reset_usb_device_of(path_);
-		std::snprintf(error_, sizeof(error_), "%.24s on %.32s: endpoint stalled (%.32s); %.64s", p_call,
-				path_.c_str(), message, reset ? "reset it, reopening" : reset.message());
+		halted_ = true;
+		const int length = std::snprintf(error_, sizeof(error_), "%.24s on %.32s: endpoint stalled (%.32s)", p_call,
+				path_.c_str(), message);
+		halt_text_length_ = std::min(static_cast<size_t>(std::max(length, 0)), sizeof(error_) - 1);
+		std::snprintf(error_ + halt_text_length_, sizeof(error_) - halt_text_length_, "; resetting it");
 		return DeviceIo::FAILED;
 	}
 	std::snprintf(error_, sizeof(error_), "%s on %s: %s", p_call, path_.c_str(), message);
 	return hid_device_lost(p_errno, path_, message) ? DeviceIo::DISCONNECTED : DeviceIo::FAILED;
+}
+
+bool HidapiTransport::clear_halt() {
+	if (!halted_) {
+		return false;
+	}
+	halted_ = false;
+	// A STALLed endpoint stays halted until someone clears it, and only a reset reaches it
+	// from here (hidraw_sysfs.h). The device starts over, so the game's reconnect opens it
+	// again, effects and all.
+	const Status reset = reset_usb_device_of(path_);
+	std::snprintf(error_ + halt_text_length_, sizeof(error_) - halt_text_length_, "; %.64s",
+			reset ? "reset it, reopening" : reset.message());
+	return true;
 }
 
 DeviceIo HidapiTransport::write_output(std::span<const uint8_t> p_report) {

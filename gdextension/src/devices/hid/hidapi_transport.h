@@ -37,6 +37,7 @@ public:
 	DeviceIo get_feature(std::span<uint8_t> p_buffer, size_t &r_length) override;
 	DeviceIo read_input(std::span<uint8_t> p_buffer, size_t &r_length) override;
 	const char *last_error() const override { return error_; }
+	bool clear_halt() override;
 
 	const std::string &path() const { return path_; }
 
@@ -46,6 +47,8 @@ private:
 	std::string path_;
 	hid_device_ *device_ = nullptr;
 	char error_[192] = {};
+	bool halted_ = false; // The last failure was a STALL: clear_halt() resets the device.
+	size_t halt_text_length_ = 0; // error_'s part before what clear_halt() says.
 };
 
 } // namespace haptics::hid

@@ -214,7 +214,11 @@ DeviceIo PidDevice::io_cycle(DeviceExchange &r_exchange, double p_dt_s) {
 	reports_sent_.fetch_add(effect_.reports_sent() - sent_before, std::memory_order_relaxed);
 	bytes_sent_.store(effect_.bytes_sent(), std::memory_order_relaxed);
 	if (io != DeviceIo::OK) {
+		// The status first, so the player hears of it at once; then the slow repair, if any.
 		r_exchange.fail(io, "PID stick: force update failed: %s", transport_->last_error());
+		if (transport_->clear_halt()) {
+			r_exchange.fail(io, "PID stick: force update failed: %s", transport_->last_error());
+		}
 		return io;
 	}
 	return read_inputs(r_exchange);
