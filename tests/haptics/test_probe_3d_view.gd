@@ -1,9 +1,9 @@
 extends TestSuite
 ## The 3D probe's mapping and surfaces: vectors reach the device in the camera's heading (a
 ## wall in front of a turned camera still pushes back toward the player), a GridMap cell feels
-## like its item's material, a PhysicsMaterial stands in for a missing haptic one, a rigid
-## player driven by the README's line rolls the way the camera faces, and
-## [method HapticProbe3D.hit] plays a world-space hit in view axes.
+## like its item's material, a shape's own material wins over its body's, a PhysicsMaterial
+## stands in for a missing haptic one, a rigid player driven by the README's line rolls the
+## way the camera faces, and [method HapticProbe3D.hit] plays a world-space hit in view axes.
 
 ## Runs scenes for seconds: make check (--quick) leaves it out.
 const SLOW := true
@@ -119,6 +119,29 @@ func test_a_physics_material_stands_in_for_a_missing_haptic_one() -> void:
 	assert_eq(found, [expected] as Array[float])
 
 
+func test_a_shape_that_declares_its_own_material_wins_over_its_body() -> void:
+	# One body of two shapes, as an imported level makes: the wall pressed, and a pillar far
+	# off; the body, the wall and the pillar each declare a material.
+	var wall: StaticBody3D = stage.box(Vector3(6.0, 2.0, 0.5), Vector3(0.0, 1.0, -2.25))
+	wall.set_meta(&"haptic_material", _material(0.9))
+	var pressed: CollisionShape3D = wall.find_children("*", "CollisionShape3D", false, false)[0]
+	pressed.set_meta(&"haptic_material", _material(0.25))
+	var pillar: CollisionShape3D = CollisionShape3D.new()
+	pillar.shape = BoxShape3D.new()
+	pillar.position = Vector3(20.0, 0.0, 0.0)
+	pillar.set_meta(&"haptic_material", _material(0.5))
+	wall.add_child(pillar)
+	var walker: Explorer = stage.walker(door, Vector3(0.0, Stage3D.RADIUS, 0.0))
+	var probe: HapticProbe3D = Stage3D.probe_of(walker)
+	assert_true(door.device.set_hand_target_3d(Vector3(0.0, 0.0, -0.05)))
+	await _run_frames(90)
+	var found: Array[float] = []
+	for contact: HapticContact3D in probe.last_frame.contacts:
+		if contact.normal.distance_to(Vector3.BACK) < 0.02 and contact.material != null:
+			found.append(contact.material.friction_n)
+	assert_eq(found, [0.25] as Array[float], "the pressed shape's own")
+
+
 func test_a_hit_from_game_code_rings_in_view_axes() -> void:
 	var walker: Explorer = stage.walker(door, Vector3(0.0, Stage3D.RADIUS, 0.0))
 	await _run_frames(5)
@@ -160,3 +183,9 @@ func test_walking_across_grid_map_floor_cells_rings_only_the_landing() -> void:
 	await _run_frames(150)
 	assert_gt(walker.position.x - start_x, 4.0, "walked over more than four cells")
 	assert_eq(speeds.size(), 1, "no impact at the seams: %s" % [speeds])
+
+
+static func _material(friction: float) -> HapticMaterial:
+	var material: HapticMaterial = HapticMaterial.new()
+	material.friction = friction
+	return material

@@ -3,7 +3,7 @@ extends TestSuite
 ## the door of the test's own stepped at 1 kHz of device time ([DriveRig]): a kerb's ripple at
 ## the speed over its spacing, with its amplitude; one impact for one crash into the wall, none
 ## for the chassis striking the ground on a landing; a refused frame; the renderer taken and
-## given back.
+## given back; a ground body of two surfaces felt shape by shape.
 
 ## Runs scenes for seconds: make check (--quick) leaves it out.
 const SLOW := true
@@ -148,6 +148,51 @@ func test_a_drop_onto_the_ground_is_no_crash() -> void:
 	assert_almost_eq(_impact_peak, 0.0, 1e-9, "no impact on the wheel")
 
 
+func test_one_ground_body_of_two_surfaces_is_felt_shape_by_shape() -> void:
+	# An imported level's ground: the gravel's shape moved into the pad's body and the gravel
+	# declared on that shape only. The car drives straight from the asphalt onto it.
+	rig = DriveRig.new(self, door, Vector3(-20.0, 0.6, -52.0), 0.0, false)
+	var pad: StaticBody3D = rig.scene.get_node("Pad")
+	var patch: StaticBody3D = rig.scene.get_node("Gravel")
+	var shape: CollisionShape3D = patch.find_children("*", "CollisionShape3D", false, false)[0]
+	var gravel: HapticMaterial = patch.get_meta(&"haptic_material")
+	shape.reparent(pad)
+	shape.set_meta(&"haptic_material", gravel)
+	patch.remove_meta(&"haptic_material")
+	var steered: Array[VehicleWheel3D] = []
+	for child: Node in rig.car.get_children():
+		if child is VehicleWheel3D and (child as VehicleWheel3D).use_as_steering:
+			steered.append(child)
+	rig.target_speed = 6.0
+	var off: PackedFloat64Array = PackedFloat64Array()
+	var on: PackedFloat64Array = PackedFloat64Array()
+	for frame_index: int in 300:
+		await rig.drive(1)
+		var wheels: Array[HapticTyreContact] = rig.car.haptics.last_frame.wheels
+		for i: int in wheels.size():
+			var at: Vector3 = steered[i].get_contact_point()
+			var inside: bool = at.x > -29.5 and at.x < -10.5 and at.z > -39.5 and at.z < -10.5
+			var outside: bool = at.z < -40.5 or at.z > -9.5 or at.x < -30.5 or at.x > -9.5
+			if wheels[i].in_contact and inside:
+				on.append(wheels[i].grip)
+			elif wheels[i].in_contact and outside:
+				off.append(wheels[i].grip)
+	print(
+		(
+			"grip off the gravel %s, on it %s (%d, %d frames)"
+			% [_range(off), _range(on), off.size(), on.size()]
+		)
+	)
+	if not (
+		assert_gt(off.size(), 50, "on the asphalt first")
+		and assert_gt(on.size(), 50, "then on the gravel")
+	):
+		return
+	assert_almost_eq(_range(off).x, _range(off).y, 1e-9, "one grip on the asphalt")
+	assert_almost_eq(_range(on).x, _range(off).x * gravel.grip, 1e-6, "the gravel's on its shape")
+	assert_almost_eq(_range(on).y, _range(off).x * gravel.grip, 1e-6, "and only that")
+
+
 func test_a_touch_within_45_degrees_of_up_is_ground() -> void:
 	var body: RigidBody3D = autofree(RigidBody3D.new())
 	var gauge: HapticCrashGauge = HapticCrashGauge.new(body)
@@ -218,3 +263,11 @@ func _cycles(samples: PackedFloat64Array) -> int:
 		elif high and x < -HYSTERESIS_N:
 			high = false
 	return count
+
+
+# The smallest and largest of samples.
+func _range(samples: PackedFloat64Array) -> Vector2:
+	var out: Vector2 = Vector2(INF, -INF)
+	for x: float in samples:
+		out = Vector2(minf(out.x, x), maxf(out.y, x))
+	return out

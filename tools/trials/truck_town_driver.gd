@@ -7,7 +7,7 @@ extends Node
 ## Phases, each from a placement of the whole truck (its chain and towed car with it):
 ## turn (the hand 0.4 left at about 7.5 m/s on the flat ground outside the town), lock (full
 ## lock at about 8 m/s), crash (into House07's wall at about 9 m/s), grass (the town's grass,
-## its collider moved into a body of its own with gravel's road, see _split_grass), landing (a
+## its collider declaring gravel's road, see _declare_grass), landing (a
 ## drop of 2 m at 8 m/s with the hand 0.2 left, standing in for a hill: the load cap).
 ##
 ## Ground truth comes from the physics server: the chassis's contacts, a new collider (not
@@ -54,7 +54,7 @@ func _ready() -> void:
 	for child: Node in truck.get_children():
 		if child is RigidBody3D:
 			_bodies.append(child as RigidBody3D)
-	_split_grass(town.get_node(^"TownModel/Terrain") as StaticBody3D)
+	_declare_grass(town.get_node(^"TownModel/Terrain") as StaticBody3D)
 	Haptics.hand_follows_input = false
 	Haptics.device.set_hand_target(Vector2.ZERO)
 	var names: PackedStringArray = Haptics.servo.get_telemetry_columns()
@@ -123,17 +123,10 @@ func _step(
 
 
 # The demo's grass and road are shapes of one body (TownModel/Terrain, from the glTF's
-# OMI_physics_body), and a wheel reports only the body it touches: no material can tell them
-# apart without editing the demo. The trial moves the grass collider into a body of its own
-# with gravel's road (what a developer would do in the scene).
-func _split_grass(terrain: StaticBody3D) -> void:
-	var grass: CollisionShape3D = terrain.get_node(^"GrassCollider") as CollisionShape3D
-	var body: StaticBody3D = StaticBody3D.new()
-	body.name = "TrialGrass"
-	body.set_meta(&"haptic_material", load(GRAVEL))
-	terrain.get_parent().add_child(body)
-	body.global_transform = terrain.global_transform
-	grass.reparent(body)
+# OMI_physics_body). As a developer would in an import script, the grass collider declares
+# gravel's road as its own material; the body declares none.
+func _declare_grass(terrain: StaticBody3D) -> void:
+	terrain.get_node(^"GrassCollider").set_meta(&"haptic_material", load(GRAVEL))
 
 
 func _next_phase() -> void:

@@ -114,6 +114,30 @@ static func of(body: Object) -> HapticMaterial:
 	return null
 
 
+## The material declared on the node that owns shape [param shape_index] of [param body] (a
+## [CollisionShape3D], [CollisionShape2D] or collision polygon: its property or metadata, as
+## [method of] reads a body's), or [code]null[/code]. One body may so hold several surfaces,
+## as an imported level's ground often does (a road and a verge in one [StaticBody3D]); the
+## shape's own material comes before its body's.
+static func of_shape(body: Object, shape_index: int) -> HapticMaterial:
+	var owner: Object = null
+	if body is CollisionObject3D:
+		var body_3d: CollisionObject3D = body
+		var total: int = 0
+		for owner_id: int in body_3d.get_shape_owners():
+			total += body_3d.shape_owner_get_shape_count(owner_id)
+		if shape_index >= 0 and shape_index < total:
+			owner = body_3d.shape_owner_get_owner(body_3d.shape_find_owner(shape_index))
+	elif body is CollisionObject2D:
+		var body_2d: CollisionObject2D = body
+		var total: int = 0
+		for owner_id: int in body_2d.get_shape_owners():
+			total += body_2d.shape_owner_get_shape_count(owner_id)
+		if shape_index >= 0 and shape_index < total:
+			owner = body_2d.shape_owner_get_owner(body_2d.shape_find_owner(shape_index))
+	return of(owner) if owner != body else null
+
+
 ## The material of the tile at [param cell] of [param tiles]: the TileSet's
 ## [constant TILE_LAYER] custom data of the tile, else (an alternative tile) of its base
 ## tile, else the physics material of the first physics layer the tile has a collision

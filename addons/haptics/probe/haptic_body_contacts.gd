@@ -4,9 +4,10 @@ extends RefCounted
 ## bodies resting on top of it. Each entry is a [Dictionary]: [code]collider[/code],
 ## [code]normal[/code] (unit, from the surface toward the body), [code]id[/code] (the
 ## collider's instance id), [code]key[/code] (names the touched shape, or the tile of a
-## [TileMapLayer]: one collider holds every tile), [code]velocity[/code] (the collider's own
-## at the contact, pixels per second) and, on tiles, [code]cell[/code] and [code]tiles[/code]
-## (the [TileMapLayer] holding it: the collider, or the layer of a [TileMap] collider).
+## [TileMapLayer]: one collider holds every tile), [code]shape[/code] (the touched shape's
+## index in the collider), [code]velocity[/code] (the collider's own at the contact, pixels
+## per second) and, on tiles, [code]cell[/code] and [code]tiles[/code] (the [TileMapLayer]
+## holding it: the collider, or the layer of a [TileMap] collider).
 
 const HapticBodyShapes := preload("res://addons/haptics/probe/haptic_body_shapes.gd")
 ## An object above the body rests on it when its surface normal points at least this much
@@ -117,7 +118,11 @@ func entry(
 ) -> Dictionary:
 	var id: int = p_collider.get_instance_id() if p_collider != null else 0
 	var out: Dictionary = {
-		"collider": p_collider, "normal": p_normal, "id": id, "velocity": p_velocity
+		"collider": p_collider,
+		"normal": p_normal,
+		"id": id,
+		"velocity": p_velocity,
+		"shape": p_shape
 	}
 	# Half a pixel behind the surface lies the touched tile, whichever physics quadrant
 	# (body) holds its shape.

@@ -4,8 +4,9 @@ extends RefCounted
 ## bodies resting on top of it. Each entry is a [Dictionary]: [code]collider[/code],
 ## [code]normal[/code] (unit, world space, from the surface toward the body), [code]id[/code]
 ## (the collider's instance id), [code]key[/code] (names the touched shape, or the cell of a
-## [GridMap]: one collider holds every cell), [code]velocity[/code] (the collider's own at the
-## contact, m/s) and, on a [GridMap], [code]cell[/code].
+## [GridMap]: one collider holds every cell), [code]shape[/code] (the touched shape's index in
+## the collider), [code]velocity[/code] (the collider's own at the contact, m/s) and, on a
+## [GridMap], [code]cell[/code].
 
 ## An object above the body rests on it when its surface normal points at least this much
 ## down (60° from vertical): the floor under the feet is no load.
@@ -119,7 +120,11 @@ func entry(
 ) -> Dictionary:
 	var id: int = p_collider.get_instance_id() if p_collider != null else 0
 	var out: Dictionary = {
-		"collider": p_collider, "normal": p_normal.normalized(), "id": id, "velocity": p_velocity
+		"collider": p_collider,
+		"normal": p_normal.normalized(),
+		"id": id,
+		"velocity": p_velocity,
+		"shape": p_shape
 	}
 	var grid: GridMap = p_collider as GridMap
 	var cell: Vector3i = Vector3i.ZERO

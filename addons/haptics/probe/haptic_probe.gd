@@ -344,11 +344,14 @@ static func _load(normal: Vector2, mass_kg: float) -> HapticLoad:
 	return out
 
 
-# The collider's own HapticMaterial, else the touched tile's (HapticMaterial.of_tile), else
-# its PhysicsMaterial mapped (HapticMaterial.from_physics_material), else the default.
+# The touched shape's own HapticMaterial, else the collider's, else the touched tile's
+# (HapticMaterial.of_tile), else its PhysicsMaterial mapped
+# (HapticMaterial.from_physics_material), else the default.
 func _material_of(collision: Dictionary) -> HapticMaterial:
 	var collider: Object = collision["collider"]
-	var declared: HapticMaterial = HapticMaterial.of(collider)
+	var declared: HapticMaterial = HapticMaterial.of_shape(collider, collision.get("shape", -1))
+	if declared == null:
+		declared = HapticMaterial.of(collider)
 	if declared == null and collision.has("cell"):
 		var cell: Vector2i = collision["cell"]
 		declared = HapticMaterial.of_tile(collision["tiles"] as TileMapLayer, cell)

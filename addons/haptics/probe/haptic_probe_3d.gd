@@ -265,11 +265,13 @@ func _water_area() -> Object:
 	return null
 
 
-# The collider's own HapticMaterial, else the touched GridMap cell's, else its PhysicsMaterial
-# mapped, else the default.
+# The touched shape's own HapticMaterial, else the collider's, else the touched GridMap
+# cell's, else its PhysicsMaterial mapped, else the default.
 func _material_of(collision: Dictionary) -> HapticMaterial:
 	var collider: Object = collision["collider"]
-	var declared: HapticMaterial = HapticMaterial.of(collider)
+	var declared: HapticMaterial = HapticMaterial.of_shape(collider, collision.get("shape", -1))
+	if declared == null:
+		declared = HapticMaterial.of(collider)
 	if declared == null and collision.has("cell"):
 		declared = HapticMaterial.of_grid_cell(collider as GridMap, collision["cell"])
 	elif declared == null and collider is StaticBody3D:

@@ -31,6 +31,8 @@ const Haptics := preload("res://addons/haptics/door/haptics.gd")
 const HapticsLookup := preload("res://addons/haptics/door/haptics_lookup.gd")
 const HapticTyreGauge := preload("res://addons/haptics/vehicle/haptic_tyre_gauge.gd")
 const HapticCrashGauge := preload("res://addons/haptics/vehicle/haptic_crash_gauge.gd")
+## How far either side of a wheel's contact point its shape is looked for (m).
+const SHAPE_RAY_M := 0.05
 
 ## The road-wheel angle the device's full deflection steers (rad): the steer limit the game's
 ## steering is at with the wheel turned all the way.
@@ -49,8 +51,9 @@ var steer_lock: float = 0.5
 ## ([member HapticInputSettings.dead_zone]): a steering wheel's centre has no play, and a dead
 ## band there would steer nothing for the first degrees.
 @export var take_renderer: bool = true
-## The road under a wheel whose ground declares no [HapticMaterial] (a [CSGShape3D] or
-## [GridMap] ground has none to give); null: grip 1, smooth.
+## The road under a wheel whose ground declares no [HapticMaterial] (on the touched collision
+## shape's node, else on the body; a [CSGShape3D] or [GridMap] ground has none to give); null:
+## grip 1, smooth.
 @export var default_surface: HapticMaterial = null
 ## How a crash rings when what the chassis hit declares no [HapticMaterial]; null: the servo's
 ## default impact.
@@ -80,6 +83,7 @@ var _gauges: Array[HapticTyreGauge] = []
 var _crashes: HapticCrashGauge = null
 var _previous_mode: StringName = &""
 var _previous_dead_zone: float = -1.0
+var _ray: PhysicsRayQueryParameters3D = PhysicsRayQueryParameters3D.new()
 
 
 func _ready() -> void:
@@ -206,9 +210,29 @@ func reference_load_n() -> float:
 	)
 
 
+# The touched shape's material, else its body's, else default_surface.
 func _surface_under(wheel: VehicleWheel3D) -> HapticMaterial:
-	var ground: HapticMaterial = HapticMaterial.of(wheel.get_contact_body())
-	return ground if ground != null else default_surface
+	var ground: Node3D = wheel.get_contact_body()
+	var found: HapticMaterial = HapticMaterial.of_shape(ground, _shape_under(wheel, ground))
+	if found == null:
+		found = HapticMaterial.of(ground)
+	return found if found != null else default_surface
+
+
+# The index of ground's shape under wheel: VehicleWheel3D names only the body, so a body of
+# several shapes (an imported level's road and verge) is asked again along the wheel's ray.
+func _shape_under(wheel: VehicleWheel3D, ground: Node3D) -> int:
+	var body: CollisionObject3D = ground as CollisionObject3D
+	if body == null or body.get_shape_owners().size() < 2:
+		return 0 if body != null else -1
+	var point: Vector3 = wheel.get_contact_point()
+	var normal: Vector3 = wheel.get_contact_normal()
+	_ray.from = point + normal * SHAPE_RAY_M
+	_ray.to = point - normal * SHAPE_RAY_M
+	_ray.exclude = [_body.get_rid()]
+	_ray.collision_mask = _body.collision_mask
+	var hit: Dictionary = _body.get_world_3d().direct_space_state.intersect_ray(_ray)
+	return hit["shape"] if hit.get("collider") == ground else -1
 
 
 func _play_crashes() -> void:
