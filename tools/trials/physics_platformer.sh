@@ -17,44 +17,11 @@ cd "$(dirname "$0")/../.."
 ROOT="$PWD"
 
 usage() { sed -n '9,15p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
-[[ $# -ge 1 ]] || usage
-DEMO="$1"
-shift
-REV=""
-while [[ $# -gt 0 ]]; do
-	case "$1" in
-	--addon-rev) REV="${2:?--addon-rev needs a revision}"; shift 2 ;;
-	*) usage ;;
-	esac
-done
+source tools/trials/trial-copy.sh
+trial_args "$@"
 [[ -f "$DEMO/project.godot" && -f "$DEMO/player/player.gd" && -f "$DEMO/stage.tscn" ]] ||
 	{ echo "trial: $DEMO is not the physics_platformer demo (project.godot, player/player.gd, stage.tscn)" >&2; exit 2; }
-ls addons/haptics/bin/libhaptics.linux.template_debug.x86_64.so >/dev/null 2>&1 ||
-	{ echo "trial: no native library in addons/haptics/bin (make import)" >&2; exit 1; }
-
-LABEL="${REV:-worktree}"
-OUT="$ROOT/.build/trial"
-DEST="$OUT/physics_platformer-$LABEL"
-rm -rf "$DEST"
-mkdir -p "$DEST"
-cp -r "$DEMO/." "$DEST/"
-if [[ -n "$REV" ]]; then
-	git archive "$REV" addons/haptics | tar -x -C "$DEST"
-	cp -r addons/haptics/bin "$DEST/addons/haptics/"
-else
-	mkdir -p "$DEST/addons"
-	cp -r addons/haptics "$DEST/addons/"
-fi
-mkdir -p "$DEST/trial"
-cp tools/trials/physics_platformer_driver.gd "$DEST/trial/driver.gd"
-cat >"$DEST/trial/driver.tscn" <<'TSCN'
-[gd_scene load_steps=2 format=3]
-
-[ext_resource type="Script" path="res://trial/driver.gd" id="1_driver"]
-
-[node name="Trial" type="Node"]
-script = ExtResource("1_driver")
-TSCN
+trial_copy physics_platformer tools/trials/physics_platformer_driver.gd
 # The addon README's install without the editor: the autoload, the plugin, the extension
 # listed before the first import; the device's hand is fed into the demo's walk actions.
 cat >>"$DEST/project.godot" <<'CFG'
@@ -75,8 +42,6 @@ CFG
 mkdir -p "$DEST/.godot"
 echo "res://addons/haptics/haptics.gdextension" >"$DEST/.godot/extension_list.cfg"
 
-export XDG_CONFIG_HOME="$OUT/.xdg/config" XDG_DATA_HOME="$OUT/.xdg/data" XDG_CACHE_HOME="$OUT/.xdg/cache"
-GODOT="$ROOT/tools/godot"
 if ! timeout 300 "$GODOT" --headless --path "$DEST" --import >"$DEST/import.log" 2>&1; then
 	tail -n 30 "$DEST/import.log" >&2
 	echo "trial: the import failed (log: $DEST/import.log)" >&2

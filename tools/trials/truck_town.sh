@@ -18,51 +18,11 @@ cd "$(dirname "$0")/../.."
 ROOT="$PWD"
 
 usage() { sed -n '10,16p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
-[[ $# -ge 1 ]] || usage
-DEMO="$1"
-shift
-REV=""
-while [[ $# -gt 0 ]]; do
-	case "$1" in
-	--addon-rev) REV="${2:?--addon-rev needs a revision}"; shift 2 ;;
-	*) usage ;;
-	esac
-done
+source tools/trials/trial-copy.sh
+trial_args "$@"
 [[ -f "$DEMO/project.godot" && -f "$DEMO/vehicles/vehicle.gd" && -f "$DEMO/vehicles/tow_truck.tscn" && -f "$DEMO/town/town_scene.tscn" ]] ||
 	{ echo "trial: $DEMO is not the truck_town demo (project.godot, vehicles/vehicle.gd, vehicles/tow_truck.tscn, town/town_scene.tscn)" >&2; exit 2; }
-ls addons/haptics/bin/libhaptics.linux.template_debug.x86_64.so >/dev/null 2>&1 ||
-	{ echo "trial: no native library in addons/haptics/bin (make import)" >&2; exit 1; }
-
-LABEL="${REV:-worktree}"
-OUT="$ROOT/.build/trial"
-DEST="$OUT/truck_town-$LABEL"
-rm -rf "$DEST"
-mkdir -p "$DEST"
-cp -r "$DEMO/." "$DEST/"
-rm -rf "$DEST/.godot"  # a checkout's own import cache would not be a first import
-if [[ -n "$REV" ]]; then
-	git archive "$REV" addons/haptics | tar -x -C "$DEST"
-	cp -r addons/haptics/bin "$DEST/addons/haptics/"
-else
-	mkdir -p "$DEST/addons"
-	cp -r addons/haptics "$DEST/addons/"
-fi
-mkdir -p "$DEST/trial"
-cp tools/trials/truck_town_driver.gd "$DEST/trial/driver.gd"
-cat >"$DEST/trial/driver.tscn" <<'TSCN'
-[gd_scene load_steps=2 format=3]
-
-[ext_resource type="Script" path="res://trial/driver.gd" id="1_driver"]
-
-[node name="Trial" type="Node"]
-script = ExtResource("1_driver")
-TSCN
-
-# Hermetic: Godot's config, data and cache in .build (tools/godot honours HAPTICS_XDG_ROOT and
-# would otherwise put them in the repository's .xdg).
-export HAPTICS_XDG_ROOT="$OUT/.xdg"
-export XDG_CONFIG_HOME="$OUT/.xdg/config" XDG_DATA_HOME="$OUT/.xdg/data" XDG_CACHE_HOME="$OUT/.xdg/cache"
-GODOT="$ROOT/tools/godot"
+trial_copy truck_town tools/trials/truck_town_driver.gd
 
 # The addon README's install without the editor: its install script (the autoload, the plugin,
 # the extension listed before the first import), then its input setting: the demo's own

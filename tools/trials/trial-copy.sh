@@ -1,0 +1,53 @@
+# Sourced by the trials (physics_platformer.sh, truck_town.sh): what each does before its own
+# install: the arguments, the native library check, and a fresh copy of the demo with the
+# addon and the trial's driver scene in it.
+
+# trial_args "$@": DEMO and REV (--addon-rev) from the trial's arguments; the trial's own
+# usage() when they are wrong.
+trial_args() {
+	[[ $# -ge 1 ]] || usage
+	DEMO="$1"
+	shift
+	REV=""
+	while [[ $# -gt 0 ]]; do
+		case "$1" in
+		--addon-rev) REV="${2:?--addon-rev needs a revision}"; shift 2 ;;
+		*) usage ;;
+		esac
+	done
+}
+
+# trial_copy NAME DRIVER: DEST = .build/trial/NAME-<rev|worktree>, rebuilt from DEMO without
+# its import cache (a first import, as a developer's), with the addon (the worktree's, or its
+# scripts at REV beside the worktree's native library) and res://trial/driver.tscn running
+# DRIVER. OUT is .build/trial; GODOT runs hermetic in it (tools/godot points XDG_* into
+# HAPTICS_XDG_ROOT).
+trial_copy() {
+	ls addons/haptics/bin/libhaptics.linux.template_debug.x86_64.so >/dev/null 2>&1 ||
+		{ echo "trial: no native library in addons/haptics/bin (make import)" >&2; exit 1; }
+	OUT="$ROOT/.build/trial"
+	export HAPTICS_XDG_ROOT="$OUT/.xdg"
+	GODOT="$ROOT/tools/godot"
+	DEST="$OUT/$1-${REV:-worktree}"
+	rm -rf "$DEST"
+	mkdir -p "$DEST"
+	cp -r "$DEMO/." "$DEST/"
+	rm -rf "$DEST/.godot"
+	if [[ -n "$REV" ]]; then
+		git archive "$REV" addons/haptics | tar -x -C "$DEST"
+		cp -r addons/haptics/bin "$DEST/addons/haptics/"
+	else
+		mkdir -p "$DEST/addons"
+		cp -r addons/haptics "$DEST/addons/"
+	fi
+	mkdir -p "$DEST/trial"
+	cp "$2" "$DEST/trial/driver.gd"
+	cat >"$DEST/trial/driver.tscn" <<'TSCN'
+[gd_scene load_steps=2 format=3]
+
+[ext_resource type="Script" path="res://trial/driver.gd" id="1_driver"]
+
+[node name="Trial" type="Node"]
+script = ExtResource("1_driver")
+TSCN
+}
