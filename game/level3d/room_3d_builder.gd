@@ -152,13 +152,7 @@ func camera() -> Camera3D:
 
 ## The line of words at the top of the screen.
 func status_label() -> Label:
-	var layer: CanvasLayer = CanvasLayer.new()
-	var label: Label = Label.new()
-	label.position = Vector2(16.0, 12.0)
-	label.add_theme_font_size_override(&"font_size", 20)
-	layer.add_child(label)
-	_room.add_child(layer)
-	return label
+	return StatusLine.add_to(_room, 20)
 
 
 func _dress(body: CollisionObject3D, size: Vector3, color: Color) -> void:

@@ -1,8 +1,8 @@
 extends TestSuite
 ## The drive scene driven with the arrow keys through the default door (without a device of
 ## their own, the keys move the simulated wheel): Up drives forward, Left turns the car left,
-## the wheel comes back to the centre when the key is let go, and Down brakes it to a stop,
-## as a player at the menu's Drive without a wheel expects.
+## the wheel comes back to the centre when the key is let go, and Down brakes it to a stop
+## and then backs it slowly away, as a player at the menu's Drive without a wheel expects.
 
 const SLOW := true
 const DRIVE := preload("res://game/level3d/drive/drive.tscn")
@@ -66,17 +66,22 @@ func test_the_arrow_keys_drive_turn_and_brake_the_car() -> void:
 		if car.forward_speed() < 0.5:
 			stopped_after = i + 1
 			break
+	await _frames(rate * 3)  # Down still held: it backs away, slowly.
+	var reverse: float = car.forward_speed()
 	_key(KEY_DOWN, false)
 	print(
 		(
 			(
 				"drive by keys (steered by %s): %.1f m/s after 2 s of Up; Left %d frames: steering "
-				+ "%.2f rad, turned %.2f rad; centred %d frames after; Down stopped it in %d frames"
+				+ "%.2f rad, turned %.2f rad; centred %d frames after; Down stopped it in %d frames "
+				+ "and backed it at %.1f m/s 3 s later"
 			)
-			% [by, speed, LEFT_FRAMES, steered, turned, centred_after, stopped_after]
+			% [by, speed, LEFT_FRAMES, steered, turned, centred_after, stopped_after, reverse]
 		)
 	)
 	assert_gt(stopped_after, 0, "Down brakes it to a stop within 4 s")
+	assert_lt(reverse, -1.0, "Down held on: the car reverses (%.1f m/s)" % reverse)
+	assert_gt(reverse, -car.max_reverse_speed - 0.5, "no faster than its reverse speed")
 
 
 func _key(key: Key, pressed: bool) -> void:

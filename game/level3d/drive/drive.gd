@@ -59,21 +59,17 @@ func _ready() -> void:
 	add_child(_camera)
 	_camera.make_current()
 	_follow()
-	_status = Label.new()
-	_status.position = Vector2(16.0, 12.0)
-	_status.add_theme_font_size_override(&"font_size", 18)
-	var layer: CanvasLayer = CanvasLayer.new()
-	layer.add_child(_status)
-	add_child(layer)
+	_status = StatusLine.add_to(self, 18)
 
 
 func _process(_delta: float) -> void:
 	_follow()
 	var steering: String = "device" if car.haptics.device_steers() else "keys"
 	var state: HapticVehicleState = car.haptics.renderer().get_state()
+	var speed: float = car.forward_speed()
 	_status.text = (
-		"%.0f km/h   steering: %s   wheel pull %+.2f N   Arrows: drive   R: restart   Esc: leave"
-		% [absf(car.forward_speed()) * 3.6, steering, state.rim_force_n]
+		"%.0f km/h%s   steering: %s   wheel pull %+.2f N   Arrows: drive   R: restart   Esc: leave"
+		% [absf(speed) * 3.6, " reverse" if speed < -0.5 else "", steering, state.rim_force_n]
 	)
 
 

@@ -3,7 +3,8 @@ extends VehicleBody3D
 ## The drive scene's car, built in code: a 1200 kg hatchback on four [VehicleWheel3D]s, front
 ## wheels steered, rear wheels driven, with a [HapticVehicle3D] that makes its steering felt.
 ## It steers with the device (its x is the wheel: the arrow keys move the simulated one), or
-## with the arrow keys when there is no device to steer with; Up and Down drive and brake.
+## with the arrow keys when there is no device to steer with; Up drives, Down brakes and then
+## reverses slowly.
 ## [br][br]
 ## Its dimensions are a small car's: 2.5 m between the axles, 1.6 m between the wheels,
 ## wheels 0.31 m in radius, the suspension settling 6 cm under the car's weight (Godot's
@@ -21,6 +22,10 @@ const WHEEL_RADIUS := 0.31
 
 ## The engine's force at full throttle, N (about 0.35 g).
 @export var max_engine_force: float = 4000.0
+## Reversing, a share of that force, and a top speed backward (m/s): Down held to stop the
+## car must not fling it backward (at full force it made 135 km/h in reverse in 10 s).
+@export var reverse_force_share: float = 0.4
+@export var max_reverse_speed: float = 4.0
 ## The brakes' force at full brake (Godot's brake, per wheel).
 @export var max_brake: float = 60.0
 ## Read the arrow keys (off: [member throttle] and, without the device, [member steering] are
@@ -60,6 +65,10 @@ func _physics_process(delta: float) -> void:
 	if throttle < 0.0 and speed > 1.0:
 		engine_force = 0.0
 		brake = -throttle * max_brake
+	elif throttle < 0.0:
+		var reversing: bool = speed > -max_reverse_speed
+		engine_force = throttle * max_engine_force * reverse_force_share if reversing else 0.0
+		brake = 0.0
 	else:
 		engine_force = throttle * max_engine_force
 		brake = 0.0
