@@ -21,7 +21,7 @@ const KEYS: Array[Key] = [KEY_UP, KEY_LEFT, KEY_DOWN]
 
 func after_each() -> void:
 	for key: Key in KEYS:
-		_key(key, false)
+		TestKeyboard.send(key, false)
 
 
 func test_the_arrow_keys_drive_turn_and_brake_the_car() -> void:
@@ -32,16 +32,16 @@ func test_the_arrow_keys_drive_turn_and_brake_the_car() -> void:
 	await _frames(rate >> 1)  # Settled on its wheels: half a second.
 	var by: String = "the device" if car.haptics.device_steers() else "the keys"
 
-	_key(KEY_UP, true)
+	TestKeyboard.send(KEY_UP, true)
 	await _frames(rate * 2)
 	var speed: float = car.forward_speed()
 	assert_gt(speed, UNDER_WAY_M_PER_S, "Up for 2 s: %.1f m/s forward" % speed)
 
 	var heading: Vector3 = car.global_basis.z
-	_key(KEY_LEFT, true)
+	TestKeyboard.send(KEY_LEFT, true)
 	await _frames(LEFT_FRAMES)
 	var steered: float = car.steering
-	_key(KEY_LEFT, false)
+	TestKeyboard.send(KEY_LEFT, false)
 	var turned: float = heading.signed_angle_to(car.global_basis.z, Vector3.UP)
 	assert_gt(steered, 0.1, "Left steers left (steering %.2f rad, by %s)" % [steered, by])
 	assert_gt(turned, TURNED_LEAST_RAD, "and the car turned left: %.2f rad" % turned)
@@ -58,8 +58,8 @@ func test_the_arrow_keys_drive_turn_and_brake_the_car() -> void:
 		"Left let go: the wheels back to straight within 1 s (%.2f)" % car.steering
 	)
 
-	_key(KEY_UP, false)
-	_key(KEY_DOWN, true)
+	TestKeyboard.send(KEY_UP, false)
+	TestKeyboard.send(KEY_DOWN, true)
 	var stopped_after: int = -1
 	for i: int in rate * 4:
 		await get_tree().physics_frame
@@ -68,7 +68,7 @@ func test_the_arrow_keys_drive_turn_and_brake_the_car() -> void:
 			break
 	await _frames(rate * 3)  # Down still held: it backs away, slowly.
 	var reverse: float = car.forward_speed()
-	_key(KEY_DOWN, false)
+	TestKeyboard.send(KEY_DOWN, false)
 	print(
 		(
 			(
@@ -82,14 +82,6 @@ func test_the_arrow_keys_drive_turn_and_brake_the_car() -> void:
 	assert_gt(stopped_after, 0, "Down brakes it to a stop within 4 s")
 	assert_lt(reverse, -1.0, "Down held on: the car reverses (%.1f m/s)" % reverse)
 	assert_gt(reverse, -car.max_reverse_speed - 0.5, "no faster than its reverse speed")
-
-
-func _key(key: Key, pressed: bool) -> void:
-	var event: InputEventKey = InputEventKey.new()
-	event.keycode = key
-	event.physical_keycode = key
-	event.pressed = pressed
-	Input.parse_input_event(event)
 
 
 func _frames(count: int) -> void:

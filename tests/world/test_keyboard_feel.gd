@@ -22,7 +22,7 @@ const KEYS: Array[Key] = [KEY_RIGHT, KEY_UP, KEY_LEFT, KEY_DOWN]
 
 func after_each() -> void:
 	for key: Key in KEYS:
-		_key(key, false)
+		TestKeyboard.send(key, false)
 
 
 func test_a_key_let_go_stops_the_sub() -> void:
@@ -31,9 +31,9 @@ func test_a_key_let_go_stops_the_sub() -> void:
 	await _frames(50)  # Settled on the beach.
 	for key: Key in KEYS:
 		var start: Vector2 = player.global_position
-		_key(key, true)
+		TestKeyboard.send(key, true)
 		await _frames(HELD_FRAMES)
-		_key(key, false)
+		TestKeyboard.send(key, false)
 		var let_go: Vector2 = player.global_position
 		var stopped_after: int = -1
 		for i: int in STOP_FRAMES:
@@ -52,14 +52,6 @@ func test_a_key_let_go_stops_the_sub() -> void:
 		assert_lt(coast, COAST_MOST_PX, what)
 		assert_gt(stopped_after, 0, what + ": still moving %d frames after" % STOP_FRAMES)
 		await _frames(10)
-
-
-func _key(key: Key, pressed: bool) -> void:
-	var event: InputEventKey = InputEventKey.new()
-	event.keycode = key
-	event.physical_keycode = key
-	event.pressed = pressed
-	Input.parse_input_event(event)
 
 
 func _frames(count: int) -> void:

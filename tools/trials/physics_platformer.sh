@@ -42,15 +42,4 @@ CFG
 mkdir -p "$DEST/.godot"
 echo "res://addons/haptics/haptics.gdextension" >"$DEST/.godot/extension_list.cfg"
 
-if ! timeout 300 "$GODOT" --headless --path "$DEST" --import >"$DEST/import.log" 2>&1; then
-	tail -n 30 "$DEST/import.log" >&2
-	echo "trial: the import failed (log: $DEST/import.log)" >&2
-	exit 1
-fi
-set +e
-timeout 300 "$GODOT" --headless --path "$DEST" res://trial/driver.tscn >"$DEST/trial.log" 2>&1
-rc=$?
-set -e
-grep -E '^(TRIAL|HapticProbe)' "$DEST/trial.log" || true
-grep -E '^(ERROR|SCRIPT ERROR)' "$DEST/trial.log" | sort | uniq -c | head -n 20 >&2 || true
-[[ $rc -eq 0 ]] || { echo "trial: the run exited $rc (log: $DEST/trial.log)" >&2; exit 1; }
+trial_run "TRIAL|HapticProbe"

@@ -51,3 +51,20 @@ trial_copy() {
 script = ExtResource("1_driver")
 TSCN
 }
+
+# trial_run PATTERN [LINE]: imports the copy, runs its driver scene (each bounded), prints the
+# log's lines that start with PATTERN (an extended regular expression), then LINE, then any
+# ERROR lines; fails with the run's exit status.
+trial_run() {
+	if ! timeout 300 "$GODOT" --headless --path "$DEST" --import >"$DEST/import.log" 2>&1; then
+		tail -n 30 "$DEST/import.log" >&2
+		echo "trial: the import failed (log: $DEST/import.log)" >&2
+		exit 1
+	fi
+	local rc=0
+	timeout 300 "$GODOT" --headless --path "$DEST" res://trial/driver.tscn >"$DEST/trial.log" 2>&1 || rc=$?
+	grep -E "^($1)" "$DEST/trial.log" || true
+	[[ -z "${2:-}" ]] || echo "$2"
+	grep -E '^(ERROR|SCRIPT ERROR)' "$DEST/import.log" "$DEST/trial.log" | sort | uniq -c | head -n 20 >&2 || true
+	[[ $rc -eq 0 ]] || { echo "trial: the run exited $rc (log: $DEST/trial.log)" >&2; exit 1; }
+}

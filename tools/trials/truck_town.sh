@@ -88,16 +88,4 @@ for file in project.godot vehicles/tow_truck.tscn vehicles/vehicle.gd; do
 	added+="$file +$n -$m; "
 done
 
-if ! timeout 300 "$GODOT" --headless --path "$DEST" --import >"$DEST/import.log" 2>&1; then
-	tail -n 30 "$DEST/import.log" >&2
-	echo "trial: the import failed (log: $DEST/import.log)" >&2
-	exit 1
-fi
-set +e
-timeout 300 "$GODOT" --headless --path "$DEST" res://trial/driver.tscn >"$DEST/trial.log" 2>&1
-rc=$?
-set -e
-grep -E '^(TRIAL|HapticVehicle3D)' "$DEST/trial.log" || true
-echo "TRIAL lines the install changed in the demo's files: ${added% }"
-grep -E '^(ERROR|SCRIPT ERROR)' "$DEST/import.log" "$DEST/trial.log" | sort | uniq -c | head -n 20 >&2 || true
-[[ $rc -eq 0 ]] || { echo "trial: the run exited $rc (log: $DEST/trial.log)" >&2; exit 1; }
+trial_run "TRIAL|HapticVehicle3D" "TRIAL lines the install changed in the demo's files: ${added% }"
