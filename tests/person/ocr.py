@@ -41,8 +41,10 @@ def norm(word: str) -> str:
     return re.sub(r"[^0-9a-z/]", "", word.lower())
 
 
-def phrase_boxes(words: list[Word], phrase: str) -> list[Box]:
-    """Every place where the phrase's words stand in a row on one line."""
+def phrase_boxes(words: list[Word], phrase: str, alone: bool = False) -> list[Box]:
+    """Every place where the phrase's words stand in a row on one line; with `alone`, only
+    where no other word stands right before or after them on that line (a button's caption,
+    not the same word in a label or a sentence beside it: "Host" but not "Host address")."""
     wanted = [norm(w) for w in phrase.split() if norm(w)]
     usable = [w for w in words if norm(w.text)]
     rows = sorted(usable, key=lambda w: (w.top + w.height // 2, w.left))
@@ -60,10 +62,23 @@ def phrase_boxes(words: list[Word], phrase: str) -> list[Box]:
             if not nxt:
                 break
             chain.append(min(nxt, key=lambda w: w.left))
-        if len(chain) == len(wanted):
+        if len(chain) == len(wanted) and not (alone and _neighboured(usable, chain)):
             found.append(Box(phrase, min(w.left for w in chain), min(w.top for w in chain),
                              max(w.right for w in chain), max(w.top + w.height for w in chain)))
     return found
+
+
+def _neighboured(words: list[Word], chain: list[Word]) -> bool:
+    """Whether another word stands on the chain's line within a word gap of either end."""
+    first, last = chain[0], chain[-1]
+    mid = first.top + first.height / 2
+    gap = 3 * first.height
+    for w in words:
+        if w in chain or abs(w.top + w.height / 2 - mid) >= first.height * 0.7:
+            continue
+        if 0 <= w.left - last.right < gap or 0 <= first.left - w.right < gap:
+            return True
+    return False
 
 
 # Two looks at a screenshot: the light text alone (a gray threshold, black on white: the

@@ -90,10 +90,11 @@ class Person:
         return [w for v in OCR_VARIANTS for w in self.read_words(shot, v, region)]
 
     def find_text(self, text: str, patience: float = FIND_PATIENCE_S,
-                  below: int = 0, region: Region | None = None) -> Box | None:
+                  below: int = 0, region: Region | None = None, alone: bool = False) -> Box | None:
         """Where `text` (one or more words on a line) is on the screen, looking again until the
         deadline; None if it never shows. `below` skips what is above that screen row (the
-        window's title bar names the game too); a region is the only part looked at."""
+        window's title bar names the game too); a region is the only part looked at; `alone`
+        takes the text only where it stands by itself (a button, phrase_boxes)."""
         deadline = time.monotonic() + patience
         while True:
             shot = self.grab(self.scratch / "look.png")
@@ -101,7 +102,7 @@ class Person:
             # then the one that found the last text: screens come in runs of one kind.
             known = READ_BY.get(text)
             for variant in sorted(OCR_VARIANTS, key=lambda v: (v[0] != known, v[0] != self._last_look)):
-                boxes = [b for b in phrase_boxes(self.read_words(shot, variant, region), text)
+                boxes = [b for b in phrase_boxes(self.read_words(shot, variant, region), text, alone)
                          if b.top >= below]
                 if boxes:
                     self._last_look = variant[0]
@@ -142,8 +143,8 @@ class Person:
         return True
 
     def wait_text(self, text: str, patience: float = FIND_PATIENCE_S, below: int = 24,
-                  region: Region | None = None) -> Box:
-        box = self.find_text(text, patience, below, region)
+                  region: Region | None = None, alone: bool = False) -> Box:
+        box = self.find_text(text, patience, below, region, alone)
         if box is None:
             shot = self.screenshot(f"missing-{norm(text) or 'text'}")
             raise AssertionError(f"{text!r} never showed on the screen within {patience:.0f} s "
@@ -164,8 +165,9 @@ class Person:
         self._x("mouseup", "1")
         time.sleep(0.4)
 
-    def click_text(self, text: str, patience: float = FIND_PATIENCE_S, below: int = 24) -> Box:
-        box = self.wait_text(text, patience, below)
+    def click_text(self, text: str, patience: float = FIND_PATIENCE_S, below: int = 24,
+                   alone: bool = False) -> Box:
+        box = self.wait_text(text, patience, below, alone=alone)
         self.click(*box.center)
         return box
 
