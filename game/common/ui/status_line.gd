@@ -1,7 +1,7 @@
 class_name StatusLine
 extends RefCounted
 ## A scene's one line of status at the top left, on the HUD's dark panel: legible over any
-## sky or floor the camera shows (white text straight on a pale sky read at 1.9:1).
+## sky or floor the camera shows (white text straight on the pale sky was barely legible).
 
 const THEME := preload("res://assets/ui/theme.tres")
 

@@ -23,7 +23,7 @@ const WHEEL_RADIUS := 0.31
 ## The engine's force at full throttle, N (about 0.35 g).
 @export var max_engine_force: float = 4000.0
 ## Reversing, a share of that force, and a top speed backward (m/s): Down held to stop the
-## car must not fling it backward (at full force it made 135 km/h in reverse in 10 s).
+## car must not fling it backward at full force.
 @export var reverse_force_share: float = 0.4
 @export var max_reverse_speed: float = 4.0
 ## The brakes' force at full brake (Godot's brake, per wheel).
