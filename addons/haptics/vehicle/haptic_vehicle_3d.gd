@@ -112,6 +112,7 @@ func _ready() -> void:
 		)
 		_gauges.resize(HapticVehicleFacts.VEHICLE_MAX_STEERED_WHEELS)
 	_crashes = HapticCrashGauge.new(_body)
+	_ray.exclude = [_body.get_rid()]  # The shape under a wheel is never the car's own.
 	_renderer = HapticsVehicle.of(haptics)
 	if take_renderer and _renderer.is_available():
 		_previous_mode = haptics.get_render_mode()
@@ -229,7 +230,6 @@ func _shape_under(wheel: VehicleWheel3D, ground: Node3D) -> int:
 	var normal: Vector3 = wheel.get_contact_normal()
 	_ray.from = point + normal * SHAPE_RAY_M
 	_ray.to = point - normal * SHAPE_RAY_M
-	_ray.exclude = [_body.get_rid()]
 	_ray.collision_mask = _body.collision_mask
 	var hit: Dictionary = _body.get_world_3d().direct_space_state.intersect_ray(_ray)
 	return hit["shape"] if hit.get("collider") == ground else -1
